@@ -1,0 +1,46 @@
+#pragma once
+
+#include <QPointF>
+#include <QString>
+
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace toonface {
+
+class FaceModel;
+struct Pose;
+
+// The five emotion presets of thesis Fig. 5.12.
+enum class Emotion { Neutral, Smile, Sad, Angry, Surprise };
+
+inline constexpr std::array<Emotion, 5> kAllEmotions = {Emotion::Neutral, Emotion::Smile, Emotion::Sad,
+                                                        Emotion::Angry, Emotion::Surprise};
+
+QString emotionName(Emotion emotion); // "neutral", "smile", "sad", "angry", "surprise"
+std::optional<Emotion> emotionFromName(const QString &name);
+
+// An emotion at full intensity: displacements of control points in units of ES0, given for
+// the image-left side and the centre line; the image-right side mirrors them.
+struct EmotionPreset
+{
+    struct Move
+    {
+        const char *id;
+        QPointF offsetEs0;
+    };
+    std::vector<Move> moves;
+    double eyeOpenScale = 1.0; // multiplies the lid opening (1 = unchanged)
+};
+
+const EmotionPreset &emotionPreset(Emotion emotion);
+
+// The pose of `emotion` at `intensity` (0..1) on `face`: to be added to a speech pose.
+Pose emotionPose(const FaceModel &face, Emotion emotion, double intensity);
+
+// The image-right counterpart of an image-left point ID ("4.6" -> "4.5"), or the ID itself
+// for points on the centre line.
+const char *mirrorPointId(const char *id);
+
+} // namespace toonface
