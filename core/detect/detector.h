@@ -1,0 +1,54 @@
+#pragma once
+
+#include "face/facemodel.h"
+
+#include <QImage>
+#include <QMap>
+#include <QRect>
+#include <QString>
+
+#include <atomic>
+#include <functional>
+
+namespace toonface {
+
+enum class DetectionMethod { Auto, Classic, Landmarks };
+QString detectionMethodName(DetectionMethod m); // "auto", "classic", "landmarks"
+bool detectionMethodFromName(const QString &name, DetectionMethod *m);
+
+struct DetectOptions
+{
+    DetectionMethod method = DetectionMethod::Auto;
+    QString debugDir; // when set, intermediate images are written there as PNGs
+};
+
+enum class DetectStatus { Ok, NoFace, ModelMissing, Cancelled, BadImage };
+
+struct DetectionResult
+{
+    DetectStatus status = DetectStatus::NoFace;
+    QString error;            // a sentence for the user when status != Ok
+    FaceModel face;           // valid when status == Ok
+    QString method;           // the method that produced the points ("landmarks", "classic")
+    int faceCount = 0;        // faces seen in the image; the largest, most central one is used
+    QRect faceBox;            // the chosen face's box in image pixels
+    QMap<QString, double> timingMs; // per stage, plus "total" (model loading excluded)
+    QMap<QString, double> groupConfidence; // per point group name, 0..1
+};
+
+using ProgressFn = std::function<void(double fraction, const QString &stage)>;
+
+// Finds the face in `image` and places the 72 points.
+//
+// Thread safety: may be called from several threads at once; the landmark model is loaded
+// once per process and shared, the face detector is per thread.
+// requires: image is not null. Cancel is polled between stages.
+DetectionResult detectFace(const QImage &image, const DetectOptions &options = {},
+                           const ProgressFn &progress = {}, const std::atomic_bool *cancel = nullptr);
+
+// Loads the landmark model now (it is otherwise loaded on first use). Returns false with
+// *error when the model file is missing or unreadable. Thread-safe; loads only once.
+bool preloadLandmarkModel(QString *error = nullptr, double *loadMs = nullptr);
+QString landmarkModelPath(); // TOONFACE_LANDMARK_MODEL or Debian's libdlib-data file
+
+} // namespace toonface

@@ -1,0 +1,46 @@
+#pragma once
+
+#include "face/facemodel.h"
+#include "face/mouthshape.h"
+#include "render/style.h"
+
+#include <QJsonObject>
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+
+namespace toonface {
+
+// A Toonface project (.toonface): versioned JSON {format: "toonface.project", version: 1, ...}.
+// On disk the photo, audio and layer paths are relative to the project file; in memory they
+// are absolute.
+struct Project
+{
+    QString photoPath;
+    FaceModel face;
+    Style style;
+    MouthShapeSet mouthShapes;
+    QStringList layerPaths;   // extra SVG layers
+    QJsonObject timeline;     // owned by core/anim; stored verbatim until then
+    QString audioPath;
+    double audioOffset = 0;   // seconds
+    QString script;
+    QString scriptLanguage;   // "cmn", "en" or empty (detect)
+
+    bool operator==(const Project &) const = default;
+};
+
+inline constexpr int kProjectVersion = 1;
+
+// Writes atomically (QSaveFile): a failed save leaves the old file intact.
+bool saveProject(const Project &project, const QString &path, QString *error);
+
+// Validates every field; on failure returns nullopt with *error = "<file>: <json path>: <problem>",
+// e.g. "a.toonface: points[12].x: expected a number". A newer version is refused by name.
+std::optional<Project> loadProject(const QString &path, QString *error);
+
+QJsonObject projectToJson(const Project &project, const QString &projectDir);
+std::optional<Project> projectFromJson(const QJsonObject &json, const QString &projectDir, QString *error);
+
+} // namespace toonface

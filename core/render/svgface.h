@@ -1,0 +1,60 @@
+#pragma once
+
+#include "face/facemodel.h"
+#include "face/pose.h"
+#include "render/style.h"
+
+#include <QByteArray>
+#include <QImage>
+#include <QString>
+#include <QVector>
+
+namespace toonface {
+
+// One drawn component of a posed face: its SVG id, the element kind and its geometry as
+// SVG attribute values. The SMIL exporter animates these same attributes over time, so the
+// structure (element kinds, path command sequence) never depends on the pose.
+struct FacePart
+{
+    QString id;       // stable SVG id, e.g. "mouth-upper-lip"
+    QString layer;    // "static" or "dynamic"
+    QString element;  // "path", "circle", "polyline", "polygon"
+    QMap<QString, QString> geometry; // e.g. {"d": "M ..."} or {"cx","cy","r"}
+    QString styleKey; // key into Style::components
+    QString clipPath; // id of a clip path, or empty
+};
+
+// Writes a face in a pose as SVG 1.1. Thread-safe for concurrent const use.
+//
+// Layout: <svg viewBox="0 0 W H"> (W x H = the photo's size) holding
+//   <defs> clip paths (eyes), then <g id="head" transform=head motion> with
+//   <g id="static-layer"> hair, ears, face, nose, eyebrows and
+//   <g id="dynamic-layer"> eyes (eyeballs clipped by the eye outline), mouth, jaw,
+// and then the user's extra layers (<g id="layer-N">) in order.
+class SvgFace
+{
+public:
+    SvgFace(const FaceModel &face, const Style &style);
+
+    // Extra layers from user SVG files (clothing, accessories), drawn above the face.
+    // Returns false and sets *error when the file cannot be read or parsed.
+    bool addLayerFile(const QString &svgPath, QString *error = nullptr);
+    void addLayer(const QByteArray &svgContent);
+
+    QVector<FacePart> parts(const Pose &pose = {}) const;
+    QByteArray svg(const Pose &pose = {}) const;
+
+    const FaceModel &face() const { return m_face; }
+    const Style &style() const { return m_style; }
+
+private:
+    FaceModel m_face;
+    Style m_style;
+    QVector<QByteArray> m_layers;
+};
+
+// Renders SVG content to an image of `size` (aspect kept, centred, transparent outside)
+// through QSvgRenderer. Returns a null image when the SVG does not parse.
+QImage rasterizeSvg(const QByteArray &svg, QSize size, QColor background = Qt::white);
+
+} // namespace toonface
