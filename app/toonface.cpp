@@ -17,7 +17,7 @@ void installTranslations(QApplication &app)
 {
     auto *qt = new QTranslator(&app);
     if (qt->load(QLocale(), QStringLiteral("qtbase"), QStringLiteral("_"),
-                 QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+            QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
         QApplication::installTranslator(qt);
     auto *own = new QTranslator(&app);
     if (own->load(QLocale(), QStringLiteral("toonface"), QStringLiteral("_"), QStringLiteral(":/i18n")))
@@ -59,8 +59,7 @@ int main(int argc, char *argv[])
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addPositionalArgument(QStringLiteral("file"),
-                                 QApplication::translate("main", "A photo or a .toonface project to open."),
-                                 QStringLiteral("[file]"));
+        QApplication::translate("main", "A photo or a .toonface project to open."), QStringLiteral("[file]"));
     parser.process(app);
 
     toonface::MainWindow window;

@@ -11,6 +11,7 @@
 #include <QJsonObject>
 #include <QSaveFile>
 #include <QStandardPaths>
+#include <QUuid>
 
 #include <algorithm>
 
@@ -38,7 +39,10 @@ Autosaver::Autosaver(Document *document, const QString &directory, QObject *pare
     , m_directory(directory)
 {
     QDir().mkpath(m_directory);
-    const QString stem = QDir(m_directory).filePath(kRecoveryPrefix + QString::number(QCoreApplication::applicationPid()));
+    // A random part keeps the name unique even when the system reuses a crashed editor's pid.
+    const QString stem = QDir(m_directory)
+                             .filePath(kRecoveryPrefix + QString::number(QCoreApplication::applicationPid())
+                                 + QLatin1Char('-') + QUuid::createUuid().toString(QUuid::Id128).left(8));
     m_recoveryPath = stem + kProjectSuffix;
     m_lock = std::make_unique<QLockFile>(stem + kLockSuffix);
     m_lock->setStaleLockTime(0); // held for the editor's whole life: stale only when its owner is gone
@@ -50,7 +54,6 @@ Autosaver::Autosaver(Document *document, const QString &directory, QObject *pare
         if (what.testFlag(Change::FileState) && !m_document->isModified())
             discard();
     });
-    m_writtenRevision = m_document->revision();
 }
 
 Autosaver::~Autosaver() = default;
@@ -79,8 +82,8 @@ bool Autosaver::autosave(QString *error)
     info.insert(QStringLiteral("written"), QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs));
     QSaveFile infoFile(infoPath());
     QString message;
-    if (!infoFile.open(QIODevice::WriteOnly)
-        || infoFile.write(QJsonDocument(info).toJson()) < 0 || !infoFile.commit()) {
+    if (!infoFile.open(QIODevice::WriteOnly) || infoFile.write(QJsonDocument(info).toJson()) < 0
+        || !infoFile.commit()) {
         message = tr("%1: cannot write the recovery file: %2").arg(infoPath(), infoFile.errorString());
     } else if (!saveProject(m_document->project(), m_recoveryPath, &message)) {
         if (message.isEmpty())
@@ -135,7 +138,7 @@ QList<RecoveryFile> Autosaver::leftovers(const QString &directory)
         result.append(file);
     }
     std::sort(result.begin(), result.end(),
-              [](const RecoveryFile &a, const RecoveryFile &b) { return a.written > b.written; });
+        [](const RecoveryFile &a, const RecoveryFile &b) { return a.written > b.written; });
     return result;
 }
 

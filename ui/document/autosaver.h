@@ -17,7 +17,7 @@ struct LoadedFile;
 // A recovery file left by an editor that ended without cleaning up (a crash, a kill).
 struct RecoveryFile
 {
-    QString path;         // the recovery .toonface
+    QString path; // the recovery .toonface
     QString originalPath; // the project it was editing, or empty for an untitled one
     QDateTime written;
 };

@@ -5,14 +5,13 @@
 
 namespace toonface {
 
-ChangeStyleCommand::ChangeStyleCommand(Document *document, const Style &style,
-                                       const QString &text, QUndoCommand *parent)
+ChangeStyleCommand::ChangeStyleCommand(
+    Document *document, const Style &style, const QString &text, QUndoCommand *parent)
     : QUndoCommand(text, parent)
     , m_document(document)
     , m_oldStyle(document->style())
     , m_newStyle(style)
-{
-}
+{ }
 
 void ChangeStyleCommand::undo()
 {

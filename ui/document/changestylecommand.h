@@ -12,8 +12,7 @@ class Document;
 class ChangeStyleCommand : public QUndoCommand
 {
 public:
-    ChangeStyleCommand(Document *document, const Style &style, const QString &text,
-                       QUndoCommand *parent = nullptr);
+    ChangeStyleCommand(Document *document, const Style &style, const QString &text, QUndoCommand *parent = nullptr);
 
     void undo() override;
     void redo() override;

@@ -1,9 +1,9 @@
 #include "document/document.h"
 
 #include "document/changestylecommand.h"
+#include "document/loadedfile.h"
 #include "document/movepointcommand.h"
 #include "document/replacefacecommand.h"
-#include "document/loadedfile.h"
 
 #include <QFileInfo>
 #include <QUndoStack>

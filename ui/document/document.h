@@ -15,10 +15,10 @@ struct LoadedFile;
 
 // What a change touched, so that each view repaints only what it shows.
 enum class Change : unsigned {
-    Points = 0x01,    // one or more points moved (or their hand-placed flags changed)
-    Face = 0x02,      // the whole face was replaced or removed (implies Points)
-    Style = 0x04,     // the drawing style
-    Photo = 0x08,     // the photo (a new document)
+    Points = 0x01, // one or more points moved (or their hand-placed flags changed)
+    Face = 0x02, // the whole face was replaced or removed (implies Points)
+    Style = 0x04, // the drawing style
+    Photo = 0x08, // the photo (a new document)
     FileState = 0x10, // file path or modified state
 };
 Q_DECLARE_FLAGS(ChangeFlags, Change)

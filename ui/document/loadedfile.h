@@ -12,11 +12,11 @@ namespace toonface {
 // Document::open().
 struct LoadedFile
 {
-    QString path;         // absolute path of the opened file
+    QString path; // absolute path of the opened file
     bool isProject = false;
-    Project project;      // for a photo: photoPath set, the "normal" style preset
+    Project project; // for a photo: photoPath set, the "normal" style preset
     QImage photo;
-    QString error;        // non-empty: the file could not be opened, and why (names the file)
+    QString error; // non-empty: the file could not be opened, and why (names the file)
     QString photoWarning; // a project whose photo could not be read: why
 
     bool ok() const { return error.isEmpty(); }

@@ -7,8 +7,7 @@
 
 namespace toonface {
 
-MovePointCommand::MovePointCommand(Document *document, int index, QPointF newPos, bool commit,
-                                   QUndoCommand *parent)
+MovePointCommand::MovePointCommand(Document *document, int index, QPointF newPos, bool commit, QUndoCommand *parent)
     : QUndoCommand(parent)
     , m_document(document)
     , m_index(index)

@@ -13,8 +13,7 @@ class Document;
 class MovePointCommand : public QUndoCommand
 {
 public:
-    MovePointCommand(Document *document, int index, QPointF newPos, bool commit,
-                     QUndoCommand *parent = nullptr);
+    MovePointCommand(Document *document, int index, QPointF newPos, bool commit, QUndoCommand *parent = nullptr);
 
     void undo() override;
     void redo() override;

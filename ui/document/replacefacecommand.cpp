@@ -5,9 +5,8 @@
 
 namespace toonface {
 
-ReplaceFaceCommand::ReplaceFaceCommand(Document *document, const FaceModel &face,
-                                       bool keepHandPlaced, const QString &text,
-                                       QUndoCommand *parent)
+ReplaceFaceCommand::ReplaceFaceCommand(
+    Document *document, const FaceModel &face, bool keepHandPlaced, const QString &text, QUndoCommand *parent)
     : QUndoCommand(text, parent)
     , m_document(document)
     , m_oldFace(document->face())

@@ -14,8 +14,8 @@ class Document;
 class ReplaceFaceCommand : public QUndoCommand
 {
 public:
-    ReplaceFaceCommand(Document *document, const FaceModel &face, bool keepHandPlaced,
-                       const QString &text, QUndoCommand *parent = nullptr);
+    ReplaceFaceCommand(Document *document, const FaceModel &face, bool keepHandPlaced, const QString &text,
+        QUndoCommand *parent = nullptr);
 
     void undo() override;
     void redo() override;

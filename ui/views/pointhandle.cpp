@@ -185,7 +185,8 @@ void PointHandle::mouseReleaseEvent(QGraphicsSceneMouseEvent *event)
 void PointHandle::updateToolTip()
 {
     const PointInfo &info = pointTable()[m_index];
-    QString tip = QCoreApplication::translate("PointHandle", "Point %1 (%2)").arg(pointId(m_index), groupDisplayName(info.group));
+    QString tip = QCoreApplication::translate("PointHandle", "Point %1 (%2)")
+                      .arg(pointId(m_index), groupDisplayName(info.group));
     if (info.control)
         tip += QLatin1Char('\n') + QCoreApplication::translate("PointHandle", "Control point: animation moves it");
     if (m_handPlaced)

@@ -13,7 +13,7 @@ namespace toonface {
 namespace {
 
 constexpr double kFrameMargin = 0.08; // of the face's size, on each side
-constexpr int kCardMargin = 12;       // widget pixels around the drawing
+constexpr int kCardMargin = 12; // widget pixels around the drawing
 
 } // namespace
 
@@ -123,8 +123,7 @@ void PreviewView::renderCache()
     if (m_svg.isEmpty() || !m_renderer.isValid() || target.isEmpty()) {
         painter.setPen(palette().color(QPalette::PlaceholderText));
         painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap,
-                         m_document->photo().isNull() ? tr("Open a photo to draw its cartoon.")
-                                                      : tr("No face points yet."));
+            m_document->photo().isNull() ? tr("Open a photo to draw its cartoon.") : tr("No face points yet."));
         return;
     }
     painter.fillRect(target.translated(2, 3), QColor(0, 0, 0, 40));
@@ -139,8 +138,9 @@ void PreviewView::paintEvent(QPaintEvent *event)
     if (!m_cacheValid)
         renderCache();
     QPainter painter(this);
-    painter.drawImage(event->rect(), m_cache, QRectF(QPointF(event->rect().topLeft()) * m_cache.devicePixelRatio(),
-                                                      QSizeF(event->rect().size()) * m_cache.devicePixelRatio()));
+    painter.drawImage(event->rect(), m_cache,
+        QRectF(QPointF(event->rect().topLeft()) * m_cache.devicePixelRatio(),
+            QSizeF(event->rect().size()) * m_cache.devicePixelRatio()));
 }
 
 void PreviewView::resizeEvent(QResizeEvent *event)

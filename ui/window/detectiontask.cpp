@@ -13,8 +13,7 @@ constexpr int kProgressSteps = 1000;
 
 DetectionTask::DetectionTask(QObject *parent)
     : QObject(parent)
-{
-}
+{ }
 
 DetectionTask::~DetectionTask()
 {
@@ -26,14 +25,14 @@ void DetectionTask::start(const QImage &image, const DetectOptions &options)
     drop();
     auto cancelFlag = std::make_shared<std::atomic_bool>(false);
     m_cancel = cancelFlag;
-    QFuture<DetectionResult> future = QtConcurrent::run(
-        [image, options, cancelFlag](QPromise<DetectionResult> &promise) {
-            promise.setProgressRange(0, kProgressSteps);
-            const ProgressFn report = [&promise](double fraction, const QString &stage) {
-                promise.setProgressValueAndText(int(fraction * kProgressSteps), stage);
-            };
-            promise.addResult(detectFace(image, options, report, cancelFlag.get()));
-        });
+    QFuture<DetectionResult> future
+        = QtConcurrent::run([image, options, cancelFlag](QPromise<DetectionResult> &promise) {
+              promise.setProgressRange(0, kProgressSteps);
+              const ProgressFn report = [&promise](double fraction, const QString &stage) {
+                  promise.setProgressValueAndText(int(fraction * kProgressSteps), stage);
+              };
+              promise.addResult(detectFace(image, options, report, cancelFlag.get()));
+          });
 
     auto *watcher = new QFutureWatcher<DetectionResult>(this);
     m_watcher = watcher;

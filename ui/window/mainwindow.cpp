@@ -83,8 +83,7 @@ QString writeCartoon(const QByteArray &svg, QSize size, const QString &path)
 
 MainWindow::MainWindow(QWidget *parent)
     : MainWindow(Options(), parent)
-{
-}
+{ }
 
 MainWindow::MainWindow(const Options &options, QWidget *parent)
     : QMainWindow(parent)
@@ -96,12 +95,12 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
     setAcceptDrops(true);
     setWindowIcon(QIcon(QStringLiteral(":/toonface/icons/toonface.svg")));
 
-    const QString recoveryDir = m_options.recoveryDirectory.isEmpty() ? Autosaver::defaultDirectory()
-                                                                      : m_options.recoveryDirectory;
+    const QString recoveryDir
+        = m_options.recoveryDirectory.isEmpty() ? Autosaver::defaultDirectory() : m_options.recoveryDirectory;
     m_autosaver = new Autosaver(m_document, recoveryDir, this);
     m_autosaver->setInterval(Settings().autosaveInterval());
     connect(m_autosaver, &Autosaver::failed, this,
-            [this](const QString &error) { statusBar()->showMessage(error, kStatusTimeoutMs); });
+        [this](const QString &error) { statusBar()->showMessage(error, kStatusTimeoutMs); });
 
     m_photoView = new PhotoView(m_document);
     m_photoView->setObjectName(QStringLiteral("photoView"));
@@ -125,7 +124,7 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
     connect(m_document, &Document::changed, this, &MainWindow::onDocumentChanged);
     connect(m_photoView, &PhotoView::pointHovered, this, &MainWindow::showPointStatus);
     connect(m_photoView, &PhotoView::zoomChanged, this,
-            [this](double zoom) { m_zoomLabel->setText(tr("%1%").arg(qRound(zoom * 100))); });
+        [this](double zoom) { m_zoomLabel->setText(tr("%1%").arg(qRound(zoom * 100))); });
     connect(m_detection, &DetectionTask::progress, this, [this](double fraction, const QString &stage) {
         m_busyBar->setRange(0, 100);
         m_busyBar->setValue(qRound(fraction * 100));
@@ -141,8 +140,9 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
             watcher->deleteLater();
             const QString error = watcher->result();
             if (!error.isEmpty())
-                statusBar()->showMessage(tr("Landmark model unavailable (%1): the classic detector will be used.").arg(error),
-                                         kStatusTimeoutMs);
+                statusBar()->showMessage(
+                    tr("Landmark model unavailable (%1): the classic detector will be used.").arg(error),
+                    kStatusTimeoutMs);
         });
         watcher->setFuture(QtConcurrent::run([] {
             QString error;
@@ -187,11 +187,12 @@ void MainWindow::createActions()
     m_redoAction->setObjectName(QStringLiteral("actionRedo"));
     m_redoAction->setShortcut(QKeySequence::Redo);
     m_redoAction->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo")));
-    m_redetectAction = make(QStringLiteral("actionRedetect"), tr("Re-&detect Points"), QKeySequence(Qt::CTRL | Qt::Key_D));
+    m_redetectAction
+        = make(QStringLiteral("actionRedetect"), tr("Re-&detect Points"), QKeySequence(Qt::CTRL | Qt::Key_D));
     m_redetectAction->setToolTip(tr("Detect the face again and replace every point"));
     connect(m_redetectAction, &QAction::triggered, this, [this] { startDetection(false); });
     m_redetectKeepAction = make(QStringLiteral("actionRedetectKeep"), tr("Re-detect &Keeping My Points"),
-                                QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
     m_redetectKeepAction->setToolTip(tr("Detect the face again but keep the points placed by hand"));
     connect(m_redetectKeepAction, &QAction::triggered, this, [this] { startDetection(true); });
 
@@ -199,7 +200,8 @@ void MainWindow::createActions()
     connect(m_zoomInAction, &QAction::triggered, m_photoView, &PhotoView::zoomIn);
     m_zoomOutAction = make(QStringLiteral("actionZoomOut"), tr("Zoom &Out"), QKeySequence::ZoomOut);
     connect(m_zoomOutAction, &QAction::triggered, m_photoView, &PhotoView::zoomOut);
-    m_actualSizeAction = make(QStringLiteral("actionActualSize"), tr("&Actual Size"), QKeySequence(Qt::CTRL | Qt::Key_1));
+    m_actualSizeAction
+        = make(QStringLiteral("actionActualSize"), tr("&Actual Size"), QKeySequence(Qt::CTRL | Qt::Key_1));
     connect(m_actualSizeAction, &QAction::triggered, m_photoView, &PhotoView::zoomToActualSize);
     m_fitAction = make(QStringLiteral("actionFit"), tr("&Fit to Window"), QKeySequence(Qt::CTRL | Qt::Key_0));
     m_fitAction->setIcon(QIcon::fromTheme(QStringLiteral("zoom-fit-best")));
@@ -215,8 +217,8 @@ void MainWindow::createActions()
     m_aboutAction->setMenuRole(QAction::AboutRole);
     connect(m_aboutAction, &QAction::triggered, this, [this] {
         QMessageBox::about(this, tr("About Toonface"),
-                           tr("<h3>Toonface %1</h3><p>Personal talking cartoon faces from photos, drawn in SVG.</p>")
-                               .arg(QStringLiteral(TOONFACE_VERSION)));
+            tr("<h3>Toonface %1</h3><p>Personal talking cartoon faces from photos, drawn in SVG.</p>")
+                .arg(QStringLiteral(TOONFACE_VERSION)));
     });
 }
 
@@ -328,12 +330,12 @@ void MainWindow::startup(const QString &path)
         m_options.recoveryDirectory.isEmpty() ? Autosaver::defaultDirectory() : m_options.recoveryDirectory);
     if (!leftovers.isEmpty()) {
         const RecoveryFile &newest = leftovers.first();
-        const QString name = newest.originalPath.isEmpty() ? tr("an untitled project")
-                                                           : QFileInfo(newest.originalPath).fileName();
+        const QString name
+            = newest.originalPath.isEmpty() ? tr("an untitled project") : QFileInfo(newest.originalPath).fileName();
         QMessageBox box(QMessageBox::Question, tr("Restore Unsaved Work"),
-                        tr("Toonface did not close properly. Unsaved work on %1 from %2 was kept.")
-                            .arg(name, QLocale().toString(newest.written, QLocale::ShortFormat)),
-                        QMessageBox::NoButton, this);
+            tr("Toonface did not close properly. Unsaved work on %1 from %2 was kept.")
+                .arg(name, QLocale().toString(newest.written, QLocale::ShortFormat)),
+            QMessageBox::NoButton, this);
         box.setInformativeText(tr("Restore it? Discarding deletes the kept copy."));
         QPushButton *restore = box.addButton(tr("&Restore"), QMessageBox::AcceptRole);
         box.addButton(tr("&Discard"), QMessageBox::DestructiveRole);
@@ -358,8 +360,9 @@ void MainWindow::openFile(const QString &path)
 
 void MainWindow::openDialog()
 {
-    const QString filter = tr("Photos and projects (*.toonface %1);;Toonface projects (*.toonface);;Photos (%1);;All files (*)")
-                               .arg(photoFilter());
+    const QString filter
+        = tr("Photos and projects (*.toonface %1);;Toonface projects (*.toonface);;Photos (%1);;All files (*)")
+              .arg(photoFilter());
     const QString path = QFileDialog::getOpenFileName(this, tr("Open Photo or Project"), dialogDirectory(), filter);
     if (!path.isEmpty())
         openFile(path);
@@ -410,7 +413,7 @@ void MainWindow::onLoaded()
     }
     if (!file.photoWarning.isEmpty())
         QMessageBox::warning(this, tr("Photo Missing"),
-                             tr("The project opened, but its photo could not be read:\n%1").arg(file.photoWarning));
+            tr("The project opened, but its photo could not be read:\n%1").arg(file.photoWarning));
     Q_EMIT fileOpened(file.path);
     if (!m_document->hasFace() && !m_document->photo().isNull())
         startDetection(false);
@@ -447,12 +450,12 @@ void MainWindow::onDetectionFinished(const DetectionResult &result)
         stack->endMacro();
     } else {
         m_document->replaceFace(result.face, m_detectKeepsHandPlaced,
-                                m_detectKeepsHandPlaced ? tr("Re-detect keeping my points") : tr("Re-detect points"));
+            m_detectKeepsHandPlaced ? tr("Re-detect keeping my points") : tr("Re-detect points"));
     }
     statusBar()->showMessage(tr("Face found by the %1 method in %2 ms.")
                                  .arg(result.method)
                                  .arg(qRound(result.timingMs.value(QStringLiteral("total")))),
-                             kStatusTimeoutMs);
+        kStatusTimeoutMs);
     Q_EMIT detectionDone();
 }
 
@@ -466,9 +469,8 @@ void MainWindow::onDetectionCancelled()
 void MainWindow::offerAverageFace(const QString &reason)
 {
     QMessageBox box(QMessageBox::Information, tr("No Face Found"),
-                    tr("No face was found in %1.").arg(m_document->displayName()), QMessageBox::NoButton, this);
-    box.setInformativeText(
-        (reason.isEmpty() ? QString() : reason + QStringLiteral("\n\n"))
+        tr("No face was found in %1.").arg(m_document->displayName()), QMessageBox::NoButton, this);
+    box.setInformativeText((reason.isEmpty() ? QString() : reason + QStringLiteral("\n\n"))
         + tr("You can place an average face on the photo and drag its points into place by hand."));
     QPushButton *place = box.addButton(tr("&Place Average Face"), QMessageBox::AcceptRole);
     box.addButton(QMessageBox::Cancel);
@@ -529,8 +531,8 @@ bool MainWindow::saveAs()
         const QFileInfo photo(m_document->project().photoPath);
         suggested = QDir(photo.absolutePath()).filePath(photo.completeBaseName() + QStringLiteral(".toonface"));
     }
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Project"), suggested,
-                                                tr("Toonface projects (*.toonface)"));
+    QString path
+        = QFileDialog::getSaveFileName(this, tr("Save Project"), suggested, tr("Toonface projects (*.toonface)"));
     if (path.isEmpty())
         return false;
     if (!isProjectPath(path))
@@ -557,10 +559,11 @@ void MainWindow::exportCartoon()
     if (!m_document->hasFace())
         return;
     const QFileInfo base(m_document->filePath().isEmpty() ? m_document->project().photoPath : m_document->filePath());
-    const QString suggested = QDir(base.absolutePath()).filePath(base.completeBaseName() + QStringLiteral("-cartoon.svg"));
+    const QString suggested
+        = QDir(base.absolutePath()).filePath(base.completeBaseName() + QStringLiteral("-cartoon.svg"));
     QString selectedFilter;
-    QString path = QFileDialog::getSaveFileName(this, tr("Export Cartoon"), suggested,
-                                                tr("SVG image (*.svg);;PNG image (*.png)"), &selectedFilter);
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Export Cartoon"), suggested, tr("SVG image (*.svg);;PNG image (*.png)"), &selectedFilter);
     if (path.isEmpty())
         return;
     const QString suffix = QFileInfo(path).suffix().toLower();
@@ -585,8 +588,8 @@ bool MainWindow::maybeSave()
 {
     if (!m_document->isModified())
         return true;
-    const QMessageBox::StandardButton answer = QMessageBox::warning(
-        this, tr("Unsaved Changes"), tr("%1 has unsaved changes. Save them?").arg(m_document->displayName()),
+    const QMessageBox::StandardButton answer = QMessageBox::warning(this, tr("Unsaved Changes"),
+        tr("%1 has unsaved changes. Save them?").arg(m_document->displayName()),
         QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
     if (answer == QMessageBox::Save)
         return save();
@@ -713,7 +716,8 @@ void MainWindow::dropEvent(QDropEvent *event)
     event->acceptProposedAction();
     // Opening may ask about unsaved changes: not from inside the drop.
     const QString path = urls.first().toLocalFile();
-    QMetaObject::invokeMethod(this, [this, path] { openFile(path); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this, [this, path] { openFile(path); }, Qt::QueuedConnection);
 }
 
 } // namespace toonface

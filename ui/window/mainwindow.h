@@ -35,7 +35,7 @@ public:
     struct Options
     {
         bool preloadLandmarkModel = true; // load the detector's model in the background at start
-        QString recoveryDirectory;        // empty: Autosaver::defaultDirectory()
+        QString recoveryDirectory; // empty: Autosaver::defaultDirectory()
     };
 
     explicit MainWindow(QWidget *parent = nullptr);
