@@ -19,6 +19,7 @@
 #include <QTimer>
 #include <QUndoStack>
 #include <QUrl>
+#include <QXmlStreamReader>
 
 using namespace toonface;
 
@@ -264,6 +265,53 @@ private Q_SLOTS:
         QTRY_COMPARE(opened.size(), 1);
         QCOMPARE(m_window->document()->filePath(), m_projectPath);
         QVERIFY(Autosaver::leftovers(m_recoveryDir->path()).isEmpty());
+    }
+
+    void exportWritesSvgAndPng_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::newRow("svg") << QStringLiteral("cartoon.svg");
+        QTest::newRow("png") << QStringLiteral("cartoon.png");
+    }
+
+    void exportWritesSvgAndPng()
+    {
+        QFETCH(QString, name);
+        makeWindow();
+        openProject();
+        const QString path = m_dir.filePath(name);
+        QSignalSpy exported(m_window.get(), &MainWindow::exported);
+        m_window->exportTo(path);
+        QTRY_COMPARE(exported.size(), 1);
+        QVERIFY2(exported.first().at(1).toString().isEmpty(), qPrintable(exported.first().at(1).toString()));
+        if (name.endsWith(QLatin1StringView(".svg"))) {
+            QFile file(path);
+            QVERIFY(file.open(QIODevice::ReadOnly));
+            QXmlStreamReader xml(&file);
+            QVERIFY(xml.readNextStartElement());
+            QCOMPARE(xml.name(), QLatin1StringView("svg"));
+        } else {
+            const QImage image(path);
+            QCOMPARE(image.size(), fixture::kPhotoSize);
+        }
+    }
+
+    void cancelledDetectionLeavesNoFace()
+    {
+        makeWindow();
+        QSignalSpy opened(m_window.get(), &MainWindow::fileOpened);
+        QSignalSpy done(m_window.get(), &MainWindow::detectionDone);
+        m_window->openFile(m_photoPath);
+        QTRY_COMPARE(opened.size(), 1);
+        QVERIFY(m_window->isBusy()); // detecting
+        auto *cancel = m_window->findChild<QAbstractButton *>(QStringLiteral("cancelButton"));
+        QVERIFY(cancel && cancel->isVisible());
+        cancel->click();
+        QTRY_VERIFY_WITH_TIMEOUT(done.size() == 1, 60000);
+        QVERIFY(!m_window->isBusy());
+        QVERIFY(!cancel->isVisible());
+        QVERIFY(!m_window->document()->hasFace());
+        QCOMPARE(m_window->document()->undoStack()->count(), 0);
     }
 
     void photoWithoutFaceOffersTheAverageFace()

@@ -131,7 +131,7 @@ void PhotoView::zoomToActualSize()
 void PhotoView::fitToWindow()
 {
     m_fit = true;
-    const QRectF rect = fitRect();
+    const QRectF rect = sceneRect();
     if (!rect.isEmpty())
         fitInView(rect, Qt::KeepAspectRatio);
     Q_EMIT zoomChanged(zoom());
@@ -176,7 +176,7 @@ void PhotoView::syncPhoto()
     QRectF content = canvas;
     if (m_document->hasFace())
         content |= m_document->face().bounds();
-    const double margin = 0.1 * std::max(content.width(), content.height());
+    const double margin = 0.03 * std::max(content.width(), content.height());
     m_scene->setSceneRect(content.adjusted(-margin, -margin, margin, margin));
     if (m_fit)
         fitToWindow();
@@ -225,14 +225,6 @@ void PhotoView::setZoom(double zoom)
     m_fit = false;
     scale(zoom / current, zoom / current);
     Q_EMIT zoomChanged(this->zoom());
-}
-
-QRectF PhotoView::fitRect() const
-{
-    QRectF rect(QPointF(), QSizeF(m_document->canvasSize()));
-    if (m_document->hasFace())
-        rect |= m_document->face().bounds();
-    return rect;
 }
 
 } // namespace toonface

@@ -58,7 +58,6 @@ private:
     void syncPoints();
     void updateOutlines();
     void setZoom(double zoom);
-    QRectF fitRect() const;
 
     Document *m_document;
     QGraphicsScene *m_scene;

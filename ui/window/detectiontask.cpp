@@ -50,6 +50,11 @@ void DetectionTask::cancel()
         m_cancel->store(true);
 }
 
+void DetectionTask::abandon()
+{
+    drop();
+}
+
 bool DetectionTask::isRunning() const
 {
     return m_watcher != nullptr;

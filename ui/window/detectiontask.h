@@ -27,6 +27,8 @@ public:
     void start(const QImage &image, const DetectOptions &options = {});
     // Asks the running detection to stop; cancelled() follows.
     void cancel();
+    // Stops the running detection and reports nothing about it (its document is gone).
+    void abandon();
     bool isRunning() const;
 
 Q_SIGNALS:

@@ -370,7 +370,7 @@ void MainWindow::openDialog()
 
 void MainWindow::startLoading(const QString &path, const std::optional<RecoveryFile> &recovery)
 {
-    m_detection->cancel();
+    m_detection->abandon();
     if (m_loadWatcher) {
         m_loadWatcher->disconnect(this);
         m_loadWatcher->deleteLater();
@@ -430,7 +430,8 @@ void MainWindow::startDetection(bool keepHandPlaced)
 
 void MainWindow::onDetectionFinished(const DetectionResult &result)
 {
-    setBusy(Job::None, {});
+    if (m_job == Job::Detecting)
+        setBusy(Job::None, {});
     if (result.status != DetectStatus::Ok) {
         if (result.status == DetectStatus::NoFace || result.status == DetectStatus::ModelMissing)
             offerAverageFace(result.error);
@@ -461,7 +462,8 @@ void MainWindow::onDetectionFinished(const DetectionResult &result)
 
 void MainWindow::onDetectionCancelled()
 {
-    setBusy(Job::None, {});
+    if (m_job == Job::Detecting)
+        setBusy(Job::None, {});
     statusBar()->showMessage(tr("Detection cancelled."), kStatusTimeoutMs);
     Q_EMIT detectionDone();
 }
@@ -569,7 +571,15 @@ void MainWindow::exportCartoon()
     const QString suffix = QFileInfo(path).suffix().toLower();
     if (suffix != QLatin1StringView("svg") && suffix != QLatin1StringView("png"))
         path += selectedFilter.contains(QLatin1StringView("*.png")) ? QStringLiteral(".png") : QStringLiteral(".svg");
+    exportTo(path);
+}
 
+void MainWindow::exportTo(const QString &path)
+{
+    if (!m_document->hasFace())
+        return;
+    // The SVG is built here (fast, and the document is only read on the GUI thread); writing
+    // and rasterising happen in the background.
     const QByteArray svg = SvgFace(m_document->face(), m_document->style()).svg();
     const QSize size = m_document->canvasSize();
     auto *watcher = new QFutureWatcher<QString>(this);
@@ -580,6 +590,7 @@ void MainWindow::exportCartoon()
             statusBar()->showMessage(tr("Exported %1.").arg(QDir::toNativeSeparators(path)), kStatusTimeoutMs);
         else
             QMessageBox::warning(this, tr("Cannot Export"), error);
+        Q_EMIT exported(path, error);
     });
     watcher->setFuture(QtConcurrent::run([svg, size, path] { return writeCartoon(svg, size, path); }));
 }
@@ -695,7 +706,7 @@ void MainWindow::closeEvent(QCloseEvent *event)
         event->ignore();
         return;
     }
-    m_detection->cancel();
+    m_detection->abandon();
     m_autosaver->discard();
     saveSettings();
     event->accept();

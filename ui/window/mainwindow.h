@@ -54,6 +54,9 @@ public:
     // the open document has unsaved changes.
     void openFile(const QString &path);
     bool saveTo(const QString &path);
+    // Writes the cartoon in the background: .svg as drawn, .png rasterised at the photo's size.
+    // exported() follows.
+    void exportTo(const QString &path);
     // True while a file is being opened or a face detected.
     bool isBusy() const;
 
@@ -61,6 +64,7 @@ Q_SIGNALS:
     void fileOpened(const QString &path);
     void openFailed(const QString &error);
     void detectionDone();
+    void exported(const QString &path, const QString &error); // error empty on success
 
 protected:
     void closeEvent(QCloseEvent *event) override;
