@@ -1,5 +1,7 @@
 #include "io/jsonfield.h"
 
+#include <QLocale>
+
 #include <cmath>
 
 namespace toonface {
@@ -123,7 +125,7 @@ QString JsonField::describe(const QJsonValue &value)
     case QJsonValue::Bool:
         return value.toBool() ? QStringLiteral("found true") : QStringLiteral("found false");
     case QJsonValue::Double:
-        return QStringLiteral("found %1").arg(value.toDouble(), 0, 'g', 17);
+        return QStringLiteral("found ") + QString::number(value.toDouble(), 'g', QLocale::FloatingPointShortest);
     case QJsonValue::String: {
         QString s = value.toString();
         if (s.size() > 40)

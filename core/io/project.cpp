@@ -303,8 +303,10 @@ std::optional<Project> projectFromJson(const QJsonObject &json, const QString &p
     }
     const JsonField versionField = root.member("version");
     int version = 0;
-    if (!versionField.toInt(1, std::numeric_limits<int>::max(), &version, error))
+    if (!versionField.toInt(1, std::numeric_limits<int>::max(), &version, nullptr)) {
+        versionField.expected(QStringLiteral("a version number (1 or more)"), error);
         return std::nullopt;
+    }
     if (version > kProjectVersion) {
         *error = QStringLiteral("made by a newer Toonface (project version %1; this version reads up to %2)")
                      .arg(version)
@@ -392,13 +394,21 @@ bool saveProject(const Project &project, const QString &path, QString *error)
         *error = withFile(path, QStringLiteral("cannot save: ") + file.errorString());
         return false;
     }
-    if (file.write(bytes) != bytes.size()) {
-        *error = withFile(path, QStringLiteral("cannot save: ") + file.errorString());
+    const qint64 written = file.write(bytes);
+    if (written != bytes.size()) {
+        // A short write without an error code is what a full disk or a file size limit gives.
+        const QString why = file.error() != QFileDevice::NoError
+            ? file.errorString()
+            : QStringLiteral("only %1 of %2 bytes could be written (is the disk full?)").arg(qMax<qint64>(written, 0)).arg(bytes.size());
+        *error = withFile(path, QStringLiteral("cannot save: ") + why);
         file.cancelWriting();
         return false;
     }
     if (!file.commit()) {
-        *error = withFile(path, QStringLiteral("cannot save: ") + file.errorString());
+        const QString why = file.error() != QFileDevice::NoError
+            ? file.errorString()
+            : QStringLiteral("the file could not be completed (is the disk full?)");
+        *error = withFile(path, QStringLiteral("cannot save: ") + why);
         return false;
     }
     return true;
@@ -435,9 +445,14 @@ std::optional<Project> loadProject(const QString &path, QString *error)
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
-        *error = withFile(path, QStringLiteral("not a Toonface project: %1 at offset %2")
+        const QByteArray before = bytes.left(parseError.offset);
+        const qsizetype line = before.count('\n') + 1;
+        const qsizetype column = before.size() - before.lastIndexOf('\n');
+        *error = withFile(path, QStringLiteral("not a Toonface project: %1 at offset %2 (line %3, column %4)")
                                     .arg(parseError.errorString())
-                                    .arg(parseError.offset));
+                                    .arg(parseError.offset)
+                                    .arg(line)
+                                    .arg(column));
         return std::nullopt;
     }
     if (!doc.isObject()) {
