@@ -206,6 +206,10 @@ QImage loadPhoto(const QString &path, QString *error)
         *error = withFile(path, describeNonImage(data));
         return {};
     }
+    if (jpegEnd(data) == JpegEnd::Truncated) {
+        *error = withFile(path, QStringLiteral("the JPEG image is truncated (the file ends before the image data does)"));
+        return {};
+    }
     const QString format = QString::fromLatin1(reader.format()).toUpper();
     const QSize size = reader.size();
     if (size.isValid()) {
@@ -226,10 +230,6 @@ QImage loadPhoto(const QString &path, QString *error)
                                         .arg(kMaxPhotoPixels / 1000000));
             return {};
         }
-    }
-    if (reader.format() == "jpeg" && jpegEnd(data) == JpegEnd::Truncated) {
-        *error = withFile(path, QStringLiteral("the JPEG image is truncated (the file ends before the image data does)"));
-        return {};
     }
     const QImage image = reader.read();
     if (image.isNull()) {
