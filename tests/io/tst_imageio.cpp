@@ -319,6 +319,31 @@ private Q_SLOTS:
             QVERIFY2(error.contains(e), qPrintable(error));
     }
 
+    void everyCutOfAJpegIsRefused()
+    {
+        const QByteArray jpeg = encode(detailed(120, 90), "jpg", 90);
+        QVERIFY(jpeg.endsWith("\xff\xd9"));
+        for (qsizetype n = 1; n < jpeg.size() - 1; n += 37) {
+            const QString path = write(QStringLiteral("cut%1.jpg").arg(n), jpeg.left(n));
+            QString error;
+            QVERIFY2(loadPhoto(path, &error).isNull(), qPrintable(QString::number(n)));
+            QVERIFY2(error.startsWith(path + QStringLiteral(": ")), qPrintable(error));
+        }
+        QString error;
+        QVERIFY2(!loadPhoto(write(QStringLiteral("whole.jpg"), jpeg), &error).isNull(), qPrintable(error));
+    }
+
+    void everyCutOfAPngIsRefused()
+    {
+        const QByteArray png = encode(detailed(120, 90), "png");
+        for (qsizetype n = 1; n < png.size() - 12; n += 53) { // the last 12 bytes are IEND
+            const QString path = write(QStringLiteral("cut%1.png").arg(n), png.left(n));
+            QString error;
+            QVERIFY2(loadPhoto(path, &error).isNull(), qPrintable(QString::number(n)));
+            QVERIFY2(error.startsWith(path + QStringLiteral(": ")), qPrintable(error));
+        }
+    }
+
     void missingFileAndFolder()
     {
         const QString path = m_dir.filePath(QStringLiteral("nowhere.jpg"));

@@ -364,6 +364,46 @@ private Q_SLOTS:
         QVERIFY2(error.endsWith(where), qPrintable(error));
     }
 
+    void everyTruncationIsRefused()
+    {
+        QTemporaryDir tmp;
+        const QString good = tmp.filePath(QStringLiteral("good.toonface"));
+        QString error;
+        QVERIFY2(saveProject(richProject(tmp.path()), good, &error), qPrintable(error));
+        const QByteArray bytes = readAll(good);
+        const QString cut = tmp.filePath(QStringLiteral("cut.toonface"));
+        // The last byte is the trailing newline: cutting it still leaves a complete document.
+        for (qsizetype n = 0; n < bytes.size() - 1; n += 61) {
+            QVERIFY(writeFile(cut, bytes.left(n)));
+            QVERIFY2(!loadProject(cut, &error), qPrintable(QString::number(n)));
+            QVERIFY2(error.startsWith(cut + QStringLiteral(": ")), qPrintable(error));
+        }
+    }
+
+    void corruptedBytesNeverCrash()
+    {
+        QTemporaryDir tmp;
+        const QString good = tmp.filePath(QStringLiteral("good.toonface"));
+        QString error;
+        QVERIFY2(saveProject(richProject(tmp.path()), good, &error), qPrintable(error));
+        const QByteArray bytes = readAll(good);
+        const QString bad = tmp.filePath(QStringLiteral("bad.toonface"));
+        quint32 state = 12345;
+        auto next = [&state] { return state = state * 1664525u + 1013904223u; };
+        int refused = 0;
+        for (int round = 0; round < 300; ++round) {
+            QByteArray mutated = bytes;
+            for (int k = 0; k < 3; ++k)
+                mutated[qsizetype(next() % quint32(mutated.size()))] = char(next() >> 24);
+            QVERIFY(writeFile(bad, mutated));
+            if (!loadProject(bad, &error)) {
+                ++refused;
+                QVERIFY2(error.startsWith(bad + QStringLiteral(": ")), qPrintable(error));
+            }
+        }
+        QVERIFY(refused > 0);
+    }
+
     void missingFile()
     {
         QTemporaryDir tmp;
