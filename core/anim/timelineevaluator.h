@@ -69,9 +69,9 @@ public:
     //   or a product of moving factors (lid scale times blink); each quantity is still smooth,
     //   but an exporter has to sample inside the segment, e.g. at frame times.
     // A value jumps only at the edge of an emotion clip with no fade (fadeIn or fadeOut 0).
-    // An exporter animating the mouth or the eyes asks for the tracks that move them
-    // (Mouth | Emotion for the mouth; Blink | Emotion | Gaze for the eyes; Head for the head), so
-    // each element gets only its own key times.
+    // An exporter asks, per animated element, for the tracks that move it, so each element gets
+    // only its own key times: the mouth and jaw Mouth | Emotion, the lids Blink | Emotion, the
+    // eyeballs Gaze, the brows Emotion, the head transform Head.
     enum class Segment { Hold, Ease, Mixed };
     struct ExportKeys
     {
