@@ -18,8 +18,7 @@ namespace {
 Timeline tenMinuteTimeline()
 {
     constexpr double length = 600.0;
-    static const double fractions[4][4] = {
-        {0}, {0, 0.8095}, {0, 0.4337, 0.8312}, {0, 0.245, 0.4565, 0.7153}};
+    static const double fractions[4][4] = {{0}, {0, 0.8095}, {0, 0.4337, 0.8312}, {0, 0.245, 0.4565, 0.7153}};
     std::mt19937 rng(1);
     auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
     QVector<MouthCue> cues;
@@ -48,7 +47,7 @@ Timeline tenMinuteTimeline()
         timeline.addShake(s, s + 1.0);
         timeline.addNod(s + 20.0, s + 21.0);
     }
-    timeline.setAudio(AudioClip{QStringLiteral("speech.wav"), 0.0, length});
+    timeline.setAudio(AudioClip {QStringLiteral("speech.wav"), 0.0, length});
     return timeline;
 }
 
@@ -72,18 +71,17 @@ QJsonObject benchEvaluate()
             sink += evaluator.evaluate(time).offset[pt::idx("8.2")].y();
     });
     const int frames = timeline.frameCount();
-    const double allFramesMs = bench::medianMs([&] {
-        for (int f = 0; f < frames; ++f)
-            sink += evaluator.evaluate(f / timeline.frameRate()).leftEyeOpen;
-    }, 3);
+    const double allFramesMs = bench::medianMs(
+        [&] {
+            for (int f = 0; f < frames; ++f)
+                sink += evaluator.evaluate(f / timeline.frameRate()).leftEyeOpen;
+        },
+        3);
     const double exportKeysMs = bench::medianMs([&] { sink += evaluator.exportKeys().times.size(); }, 3);
     // Key times per animated element, as an SMIL exporter would ask for them.
     QJsonObject perElement;
-    const std::pair<const char *, Tracks> elements[] = {{"all", kAllTracks},
-                                                        {"mouth", Track::Mouth | Track::Emotion},
-                                                        {"lids", Track::Blink | Track::Emotion},
-                                                        {"eyeballs", Tracks(Track::Gaze)},
-                                                        {"head", Tracks(Track::Head)}};
+    const std::pair<const char *, Tracks> elements[] = {{"all", kAllTracks}, {"mouth", Track::Mouth | Track::Emotion},
+        {"lids", Track::Blink | Track::Emotion}, {"eyeballs", Tracks(Track::Gaze)}, {"head", Tracks(Track::Head)}};
     for (const auto &[name, tracks] : elements) {
         const auto keys = evaluator.exportKeys(tracks);
         int mixed = 0;

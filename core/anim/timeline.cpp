@@ -23,8 +23,8 @@ void sortByTime(QVector<T> &items, Time time)
 template<class T, class Time>
 void insertByTime(QVector<T> &items, const T &item, Time time)
 {
-    const auto at = std::upper_bound(items.begin(), items.end(), item,
-                                     [&](const T &a, const T &b) { return time(a) < time(b); });
+    const auto at
+        = std::upper_bound(items.begin(), items.end(), item, [&](const T &a, const T &b) { return time(a) < time(b); });
     items.insert(at, item);
 }
 
@@ -49,7 +49,9 @@ HeadKey lerpHead(const HeadKey &a, const HeadKey &b, double s)
 class PortableRandom
 {
 public:
-    explicit PortableRandom(quint32 seed) : m_engine(seed) {}
+    explicit PortableRandom(quint32 seed)
+        : m_engine(seed)
+    { }
 
     // In [0, 1), 53 random bits.
     double uniform()
@@ -112,7 +114,8 @@ void Timeline::addMouthCues(const QVector<MouthCue> &cues)
     if (cues.isEmpty())
         return;
     QVector<MouthCue> sorted = cues;
-    std::stable_sort(sorted.begin(), sorted.end(), [](const MouthCue &a, const MouthCue &b) { return a.start < b.start; });
+    std::stable_sort(
+        sorted.begin(), sorted.end(), [](const MouthCue &a, const MouthCue &b) { return a.start < b.start; });
     const double first = sorted.first().start;
     double last = first;
     for (const MouthCue &c : sorted)
@@ -219,7 +222,7 @@ void Timeline::addHeadKey(const HeadKey &key)
 HeadKey Timeline::headAt(double t) const
 {
     if (m_head.isEmpty())
-        return HeadKey{t, 0, {}, 1.0};
+        return HeadKey {t, 0, {}, 1.0};
     QVector<double> times;
     times.reserve(m_head.size());
     for (const HeadKey &k : m_head)

@@ -105,8 +105,8 @@ TimelineEvaluator::TimelineEvaluator(const Timeline &timeline, const FaceModel &
             fadeIn *= shrink;
             fadeOut *= shrink;
         }
-        m_clips.append({c.start, c.start + fadeIn, c.start + length - fadeOut, c.start + length, c.intensity,
-                        int(c.emotion)});
+        m_clips.append(
+            {c.start, c.start + fadeIn, c.start + length - fadeOut, c.start + length, c.intensity, int(c.emotion)});
         m_clipStarts.append(c.start);
         endsSoFar = std::max(endsSoFar, c.start + length);
         m_clipEndsSoFar.append(endsSoFar);
@@ -130,7 +130,7 @@ TimelineEvaluator::TimelineEvaluator(const Timeline &timeline, const FaceModel &
     }
     for (const HeadKey &h : timeline.headKeys()) {
         m_headTimes.append(h.time);
-        m_headValues.append(HeadPose{h.rotationDeg, h.translationEs0 * fapu.es0, h.scale});
+        m_headValues.append(HeadPose {h.rotationDeg, h.translationEs0 * fapu.es0, h.scale});
     }
 }
 
@@ -167,7 +167,7 @@ void TimelineEvaluator::buildMouth(const Timeline &timeline, const FaceModel &fa
     };
     QVector<Resolved> raw;
     raw.reserve(n);
-    Mouth previous{};
+    Mouth previous {};
     for (qsizetype i = 0; i < n; ++i) {
         const MouthKey &k = keys[i];
         const double soundEnd = k.time + std::max(0.0, k.duration.value_or(0.0));
@@ -182,7 +182,7 @@ void TimelineEvaluator::buildMouth(const Timeline &timeline, const FaceModel &fa
             value[Right] = previous[Right];
         }
         raw.append({k.time, value, holdEnd, silenceAfter});
-        previous = silenceAfter ? Mouth{} : value;
+        previous = silenceAfter ? Mouth {} : value;
     }
 
     // Minimum hold: a run of keys each shown shorter than minHold becomes one key at the run's
@@ -190,7 +190,7 @@ void TimelineEvaluator::buildMouth(const Timeline &timeline, const FaceModel &fa
     QVector<Resolved> keysHeld;
     for (qsizetype i = 0; i < n;) {
         const double start = raw[i].time;
-        Mouth sum{};
+        Mouth sum {};
         double weights = 0;
         qsizetype j = i;
         while (true) {
@@ -217,7 +217,7 @@ void TimelineEvaluator::buildMouth(const Timeline &timeline, const FaceModel &fa
         m_mouthTimes.append(t);
         m_mouthValues.append(v);
     };
-    const Mouth shut{};
+    const Mouth shut {};
     node(keysHeld.first().time - coart, shut);
     for (qsizetype r = 0; r < keysHeld.size(); ++r) {
         const Resolved &k = keysHeld[r];
@@ -299,7 +299,7 @@ TimelineEvaluator::ExportKeys TimelineEvaluator::exportKeys(Tracks tracks) const
     {
         double from, to;
     };
-    QVector<double> times{0.0, m_duration};
+    QVector<double> times {0.0, m_duration};
     QVector<Motion> motions;
     auto addCurve = [&](const QVector<double> &keyTimes, auto differs) {
         for (qsizetype i = 0; i < keyTimes.size(); ++i) {

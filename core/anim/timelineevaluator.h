@@ -100,7 +100,7 @@ private:
     };
     struct EmotionCache
     {
-        QVector<int> points;      // indices of the points the emotion moves
+        QVector<int> points; // indices of the points the emotion moves
         QVector<QPointF> offsets; // their displacement at full intensity, pixels
         double lidScaleDelta = 0; // lid scale at full intensity minus 1
     };
@@ -108,14 +108,14 @@ private:
     void buildMouth(const Timeline &timeline, const FaceModel &face, const MouthShapeSet &shapes);
 
     double m_duration = 0;
-    std::array<int, 4> m_mouthIndex{};
+    std::array<int, 4> m_mouthIndex {};
     QVector<double> m_mouthTimes;
     QVector<std::array<QPointF, 4>> m_mouthValues;
 
     std::array<EmotionCache, 5> m_emotionCache;
-    QVector<Envelope> m_clips;           // in the timeline's order (sorted by start)
+    QVector<Envelope> m_clips; // in the timeline's order (sorted by start)
     QVector<double> m_clipStarts;
-    QVector<double> m_clipEndsSoFar;     // the latest end among clips 0..i
+    QVector<double> m_clipEndsSoFar; // the latest end among clips 0..i
 
     QVector<Blink> m_blinks;
     QVector<double> m_blinkStarts;

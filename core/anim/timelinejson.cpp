@@ -23,8 +23,7 @@ public:
         : m_object(object)
         , m_path(std::move(path))
         , m_error(error)
-    {
-    }
+    { }
 
     bool ok() const { return m_ok; }
     QString pathOf(const char *field) const { return m_path.isEmpty() ? key(field) : m_path + u'.' + key(field); }
@@ -39,8 +38,7 @@ public:
 
     // A finite number; absent fields keep *out (or fail when required). `valid` checks the
     // value and returns the problem, or an empty string.
-    bool number(const char *field, double *out, bool required,
-                const std::function<QString(double)> &valid = {})
+    bool number(const char *field, double *out, bool required, const std::function<QString(double)> &valid = {})
     {
         const QJsonValue v = m_object.value(key(field));
         if (v.isUndefined())
@@ -92,7 +90,7 @@ QString unitInterval(double v)
 // Reads the array `field` of `json`, calling read(object, path) for each element; returns false
 // after setting *error on the first problem.
 bool readArray(const QJsonObject &json, const char *field, QString *error,
-               const std::function<bool(const QJsonObject &, const QString &)> &read)
+    const std::function<bool(const QJsonObject &, const QString &)> &read)
 {
     const QJsonValue v = json.value(key(field));
     if (v.isUndefined())
@@ -235,82 +233,71 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
             return std::nullopt;
     }
 
-    const bool tracksOk =
-        readArray(json, "mouth", error,
-                  [&](const QJsonObject &o, const QString &path) {
-                      FieldReader r(o, path, error);
-                      MouthKey k;
-                      QString shape;
-                      if (!r.number("time", &k.time, true) || !r.string("shape", &shape, true))
-                          return false;
-                      const auto parsed = mouthShapeFromName(shape);
-                      if (!parsed)
-                          return r.fail("shape", QStringLiteral("unknown mouth shape '%1'").arg(shape));
-                      k.shape = *parsed;
-                      double duration = 0;
-                      const bool hasDuration = o.contains(QStringLiteral("duration"));
-                      if (!r.number("weight", &k.weight, false, nonNegative)
-                          || !r.number("duration", &duration, false, nonNegative))
-                          return false;
-                      if (hasDuration)
-                          k.duration = duration;
-                      timeline.m_mouth.append(k);
-                      return true;
-                  })
-        && readArray(json, "emotion", error,
-                     [&](const QJsonObject &o, const QString &path) {
-                         FieldReader r(o, path, error);
-                         EmotionClip c;
-                         QString name;
-                         if (!r.number("start", &c.start, true) || !r.number("end", &c.end, true))
-                             return false;
-                         if (c.end < c.start)
-                             return r.fail("end", QStringLiteral("must not be before start"));
-                         if (!r.string("emotion", &name, true))
-                             return false;
-                         const auto parsed = emotionFromName(name);
-                         if (!parsed)
-                             return r.fail("emotion", QStringLiteral("unknown emotion '%1'").arg(name));
-                         c.emotion = *parsed;
-                         if (!r.number("intensity", &c.intensity, false, unitInterval)
-                             || !r.number("fadeIn", &c.fadeIn, false, nonNegative)
-                             || !r.number("fadeOut", &c.fadeOut, false, nonNegative))
-                             return false;
-                         timeline.m_emotion.append(c);
-                         return true;
-                     })
-        && readArray(json, "blink", error,
-                     [&](const QJsonObject &o, const QString &path) {
-                         FieldReader r(o, path, error);
-                         BlinkEvent b;
-                         if (!r.number("time", &b.time, true) || !r.number("duration", &b.duration, false, positive))
-                             return false;
-                         timeline.m_blinks.append(b);
-                         return true;
-                     })
-        && readArray(json, "gaze", error,
-                     [&](const QJsonObject &o, const QString &path) {
-                         FieldReader r(o, path, error);
-                         GazeKey g;
-                         double x = 0, y = 0;
-                         if (!r.number("time", &g.time, true) || !r.number("x", &x, false) || !r.number("y", &y, false))
-                             return false;
-                         g.offsetEs0 = {x, y};
-                         timeline.m_gaze.append(g);
-                         return true;
-                     })
-        && readArray(json, "head", error, [&](const QJsonObject &o, const QString &path) {
-               FieldReader r(o, path, error);
-               HeadKey h;
-               double x = 0, y = 0;
-               if (!r.number("time", &h.time, true) || !r.number("rotation", &h.rotationDeg, false)
-                   || !r.number("x", &x, false) || !r.number("y", &y, false)
-                   || !r.number("scale", &h.scale, false, positive))
-                   return false;
-               h.translationEs0 = {x, y};
-               timeline.m_head.append(h);
-               return true;
-           });
+    const bool tracksOk = readArray(json, "mouth", error, [&](const QJsonObject &o, const QString &path) {
+        FieldReader r(o, path, error);
+        MouthKey k;
+        QString shape;
+        if (!r.number("time", &k.time, true) || !r.string("shape", &shape, true))
+            return false;
+        const auto parsed = mouthShapeFromName(shape);
+        if (!parsed)
+            return r.fail("shape", QStringLiteral("unknown mouth shape '%1'").arg(shape));
+        k.shape = *parsed;
+        double duration = 0;
+        const bool hasDuration = o.contains(QStringLiteral("duration"));
+        if (!r.number("weight", &k.weight, false, nonNegative) || !r.number("duration", &duration, false, nonNegative))
+            return false;
+        if (hasDuration)
+            k.duration = duration;
+        timeline.m_mouth.append(k);
+        return true;
+    }) && readArray(json, "emotion", error, [&](const QJsonObject &o, const QString &path) {
+        FieldReader r(o, path, error);
+        EmotionClip c;
+        QString name;
+        if (!r.number("start", &c.start, true) || !r.number("end", &c.end, true))
+            return false;
+        if (c.end < c.start)
+            return r.fail("end", QStringLiteral("must not be before start"));
+        if (!r.string("emotion", &name, true))
+            return false;
+        const auto parsed = emotionFromName(name);
+        if (!parsed)
+            return r.fail("emotion", QStringLiteral("unknown emotion '%1'").arg(name));
+        c.emotion = *parsed;
+        if (!r.number("intensity", &c.intensity, false, unitInterval)
+            || !r.number("fadeIn", &c.fadeIn, false, nonNegative)
+            || !r.number("fadeOut", &c.fadeOut, false, nonNegative))
+            return false;
+        timeline.m_emotion.append(c);
+        return true;
+    }) && readArray(json, "blink", error, [&](const QJsonObject &o, const QString &path) {
+        FieldReader r(o, path, error);
+        BlinkEvent b;
+        if (!r.number("time", &b.time, true) || !r.number("duration", &b.duration, false, positive))
+            return false;
+        timeline.m_blinks.append(b);
+        return true;
+    }) && readArray(json, "gaze", error, [&](const QJsonObject &o, const QString &path) {
+        FieldReader r(o, path, error);
+        GazeKey g;
+        double x = 0, y = 0;
+        if (!r.number("time", &g.time, true) || !r.number("x", &x, false) || !r.number("y", &y, false))
+            return false;
+        g.offsetEs0 = {x, y};
+        timeline.m_gaze.append(g);
+        return true;
+    }) && readArray(json, "head", error, [&](const QJsonObject &o, const QString &path) {
+        FieldReader r(o, path, error);
+        HeadKey h;
+        double x = 0, y = 0;
+        if (!r.number("time", &h.time, true) || !r.number("rotation", &h.rotationDeg, false)
+            || !r.number("x", &x, false) || !r.number("y", &y, false) || !r.number("scale", &h.scale, false, positive))
+            return false;
+        h.translationEs0 = {x, y};
+        timeline.m_head.append(h);
+        return true;
+    });
     if (!tracksOk)
         return std::nullopt;
 

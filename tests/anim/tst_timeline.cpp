@@ -30,7 +30,7 @@ Timeline fullTimeline()
     t.addHeadKey({2.0, 3.5, {0.01, -0.02}, 1.05});
     t.addShake(3.0, 4.0);
     t.addNod(5.0, 6.0);
-    t.setAudio(AudioClip{QStringLiteral("/tmp/speech (1).wav"), 0.125, 11.9});
+    t.setAudio(AudioClip {QStringLiteral("/tmp/speech (1).wav"), 0.125, 11.9});
     return t;
 }
 
@@ -86,10 +86,10 @@ private Q_SLOTS:
         QCOMPARE(t.duration(), 2.5);
         t.addBlink({2.4, 0.2});
         QCOMPARE(t.duration(), 2.6);
-        t.setAudio(AudioClip{QStringLiteral("a.wav"), 0.5, 10.0});
+        t.setAudio(AudioClip {QStringLiteral("a.wav"), 0.5, 10.0});
         QCOMPARE(t.duration(), 10.5);
         QCOMPARE(t.frameCount(), 263); // ceil(10.5 * 25)
-        t.setAudio(AudioClip{QStringLiteral("a.wav"), 0.0, 10.0});
+        t.setAudio(AudioClip {QStringLiteral("a.wav"), 0.0, 10.0});
         QCOMPARE(t.frameCount(), 250);
         t.setFrameRate(30);
         QCOMPARE(t.frameCount(), 300);
@@ -113,9 +113,9 @@ private Q_SLOTS:
 
         const QVector<MouthCue> back = t.mouthCues();
         QCOMPARE(back.size(), 4);
-        QCOMPARE(back[0], (MouthCue{0.5, 1.0, MouthShape::E}));  // until the next key
-        QCOMPARE(back[1], (MouthCue{1.0, 1.0 + (1.3 - 1.0), MouthShape::A}));
-        QCOMPARE(back[3], (MouthCue{9.0, 9.3, MouthShape::O}));  // last: silenceHold
+        QCOMPARE(back[0], (MouthCue {0.5, 1.0, MouthShape::E})); // until the next key
+        QCOMPARE(back[1], (MouthCue {1.0, 1.0 + (1.3 - 1.0), MouthShape::A}));
+        QCOMPARE(back[3], (MouthCue {9.0, 9.3, MouthShape::O})); // last: silenceHold
 
         Timeline fromCues;
         fromCues.addMouthCues(cues);
@@ -156,12 +156,13 @@ private Q_SLOTS:
             QVERIFY(b.time >= 0);
             QVERIFY(b.time + b.duration <= duration);
             QVERIFY2(b.duration >= Timeline::kBlinkDurationMin && b.duration <= Timeline::kBlinkDurationMax,
-                     qPrintable(QString::number(b.duration)));
+                qPrintable(QString::number(b.duration)));
             if (i == 0)
                 continue;
             const double gap = b.time - (blinks[i - 1].time + blinks[i - 1].duration);
             const bool single = gap >= Timeline::kBlinkGapMin - 1e-12 && gap <= Timeline::kBlinkGapMax + 1e-12;
-            const bool second = gap >= Timeline::kDoubleBlinkGapMin - 1e-12 && gap <= Timeline::kDoubleBlinkGapMax + 1e-12;
+            const bool second
+                = gap >= Timeline::kDoubleBlinkGapMin - 1e-12 && gap <= Timeline::kDoubleBlinkGapMax + 1e-12;
             QVERIFY2(single || second, qPrintable(QStringLiteral("gap %1 before blink %2").arg(gap).arg(i)));
             doubles += second;
         }
@@ -269,7 +270,7 @@ private Q_SLOTS:
         const auto t = Timeline::fromJson(QJsonDocument::fromJson(text).object(), &error);
         QVERIFY2(t, qPrintable(error));
         QCOMPARE(t->mouthKeys().size(), 2);
-        QCOMPARE(t->mouthKeys()[0], (MouthKey{1.0, MouthShape::A, 0.5, std::nullopt}));
+        QCOMPARE(t->mouthKeys()[0], (MouthKey {1.0, MouthShape::A, 0.5, std::nullopt}));
         QVERIFY(!t->audio());
     }
 
@@ -277,10 +278,9 @@ private Q_SLOTS:
     {
         QTest::addColumn<QByteArray>("json");
         QTest::addColumn<QString>("error");
-        QTest::newRow("unknown shape")
-            << QByteArray(R"({"mouth": [{"time": 0, "shape": "a"}, {"time": 1, "shape": "i"},
+        QTest::newRow("unknown shape") << QByteArray(R"({"mouth": [{"time": 0, "shape": "a"}, {"time": 1, "shape": "i"},
                                        {"time": 2, "shape": "u"}, {"time": 3, "shape": "x"}]})")
-            << QStringLiteral("mouth[3].shape: unknown mouth shape 'x'");
+                                       << QStringLiteral("mouth[3].shape: unknown mouth shape 'x'");
         QTest::newRow("missing time") << QByteArray(R"({"mouth": [{"shape": "a"}]})")
                                       << QStringLiteral("mouth[0].time: missing");
         QTest::newRow("time not a number") << QByteArray(R"({"mouth": [{"time": "1", "shape": "a"}]})")
@@ -289,16 +289,14 @@ private Q_SLOTS:
                                             << QStringLiteral("mouth[0].shape: expected a string");
         QTest::newRow("negative weight") << QByteArray(R"({"mouth": [{"time": 1, "shape": "a", "weight": -1}]})")
                                          << QStringLiteral("mouth[0].weight: must not be negative");
-        QTest::newRow("track not an array") << QByteArray(R"({"mouth": {}})")
-                                            << QStringLiteral("mouth: expected an array");
-        QTest::newRow("key not an object") << QByteArray(R"({"blink": [{"time": 1}, 3]})")
-                                           << QStringLiteral("blink[1]: expected an object");
-        QTest::newRow("clip ends first")
-            << QByteArray(R"({"emotion": [{"start": 1, "end": 0.5, "emotion": "smile"}]})")
-            << QStringLiteral("emotion[0].end: must not be before start");
-        QTest::newRow("unknown emotion")
-            << QByteArray(R"({"emotion": [{"start": 0, "end": 1, "emotion": "bored"}]})")
-            << QStringLiteral("emotion[0].emotion: unknown emotion 'bored'");
+        QTest::newRow("track not an array")
+            << QByteArray(R"({"mouth": {}})") << QStringLiteral("mouth: expected an array");
+        QTest::newRow("key not an object")
+            << QByteArray(R"({"blink": [{"time": 1}, 3]})") << QStringLiteral("blink[1]: expected an object");
+        QTest::newRow("clip ends first") << QByteArray(R"({"emotion": [{"start": 1, "end": 0.5, "emotion": "smile"}]})")
+                                         << QStringLiteral("emotion[0].end: must not be before start");
+        QTest::newRow("unknown emotion") << QByteArray(R"({"emotion": [{"start": 0, "end": 1, "emotion": "bored"}]})")
+                                         << QStringLiteral("emotion[0].emotion: unknown emotion 'bored'");
         QTest::newRow("intensity above 1")
             << QByteArray(R"({"emotion": [{"start": 0, "end": 1, "emotion": "sad", "intensity": 1.5}]})")
             << QStringLiteral("emotion[0].intensity: must be between 0 and 1");

@@ -48,8 +48,8 @@ double distance(const Pose &a, const Pose &b)
     for (int i = 0; i < kPointCount; ++i)
         d = std::max(d, QLineF(a.offset[i], b.offset[i]).length());
     d = std::max({d, std::abs(a.leftEyeOpen - b.leftEyeOpen), std::abs(a.rightEyeOpen - b.rightEyeOpen),
-                  std::abs(a.head.rotationDeg - b.head.rotationDeg),
-                  QLineF(a.head.translation, b.head.translation).length(), std::abs(a.head.scale - b.head.scale)});
+        std::abs(a.head.rotationDeg - b.head.rotationDeg), QLineF(a.head.translation, b.head.translation).length(),
+        std::abs(a.head.scale - b.head.scale)});
     return d;
 }
 
@@ -72,7 +72,10 @@ class TestTimelineEvaluator : public QObject
     const FaceModel m_face = testFace();
     const MouthShapeSet m_shapes;
 
-    Mouth shape(MouthShape s, const Mouth *previous = nullptr) const { return m_shapes.displacements(s, m_face, previous); }
+    Mouth shape(MouthShape s, const Mouth *previous = nullptr) const
+    {
+        return m_shapes.displacements(s, m_face, previous);
+    }
 
 private Q_SLOTS:
     void easeIsSmoothstep()
@@ -98,7 +101,7 @@ private Q_SLOTS:
         QCOMPARE(e.evaluate(0.0), Pose());
         QCOMPARE(e.evaluate(3.0), Pose());
         QCOMPARE(e.duration(), 0.0);
-        QCOMPARE(e.keyTimes(), QVector<double>{0.0});
+        QCOMPARE(e.keyTimes(), QVector<double> {0.0});
     }
 
     void atKeyFramesTheShapeIsExact()
@@ -111,8 +114,8 @@ private Q_SLOTS:
         t.addMouthKey(key(1.8, MouthShape::O, 0.2));
         const TimelineEvaluator e(t, m_face, m_shapes);
         const Mouth eShape = shape(MouthShape::E);
-        const Mouth expected[] = {shape(MouthShape::A), shape(MouthShape::U), eShape,
-                                  shape(MouthShape::N, &eShape), shape(MouthShape::O)};
+        const Mouth expected[]
+            = {shape(MouthShape::A), shape(MouthShape::U), eShape, shape(MouthShape::N, &eShape), shape(MouthShape::O)};
         for (int i = 0; i < 5; ++i) {
             const double time = 1.0 + 0.2 * i;
             QVERIFY2(distance(e.mouthAt(time), expected[i]) < kTol, qPrintable(QString::number(time)));
@@ -177,7 +180,7 @@ private Q_SLOTS:
         Timeline t;
         t.addMouthKey(key(1.0, MouthShape::A, 0.5, 0.5));
         const TimelineEvaluator e(t, m_face, m_shapes);
-        QVERIFY(distance(e.mouthAt(1.2), mix(Mouth{}, shape(MouthShape::A), 0.5)) < kTol);
+        QVERIFY(distance(e.mouthAt(1.2), mix(Mouth {}, shape(MouthShape::A), 0.5)) < kTol);
     }
 
     void minimumHoldBlendsShortKeys()
@@ -217,8 +220,7 @@ private Q_SLOTS:
         const double span = distance(a, i);
         for (double time = 1.0; time < 1.24; time += 0.002) {
             const Mouth m = e.mouthAt(time);
-            QVERIFY2(distance(m, a) > 0.25 * span && distance(m, i) > 0.25 * span,
-                     qPrintable(QString::number(time)));
+            QVERIFY2(distance(m, a) > 0.25 * span && distance(m, i) > 0.25 * span, qPrintable(QString::number(time)));
         }
         // The runs [a i] at 1.00, 1.06 and 1.12 all blend to the same mix: the mouth stays still
         // instead of flickering (until it moves on to the last run, [a i] then silence).
@@ -234,13 +236,13 @@ private Q_SLOTS:
             Timeline t;
             t.addMouthCues({{1.0, 1.2, MouthShape::A}, {2.0, 2.3, MouthShape::O}});
             const TimelineEvaluator e(t, m_face, m_shapes);
-            QVERIFY(distance(e.mouthAt(0.5), Mouth{}) < kTol); // before speech
+            QVERIFY(distance(e.mouthAt(0.5), Mouth {}) < kTol); // before speech
             QVERIFY(distance(e.mouthAt(1.15), a) < kTol);
-            QVERIFY(distance(e.mouthAt(1.6), Mouth{}) < kTol);
+            QVERIFY(distance(e.mouthAt(1.6), Mouth {}) < kTol);
             QVERIFY(distance(e.mouthAt(2.0), o) < kTol);
-            QVERIFY(distance(e.mouthAt(2.5), Mouth{}) < kTol); // after speech
+            QVERIFY(distance(e.mouthAt(2.5), Mouth {}) < kTol); // after speech
             // Closing eases over `coarticulation` from the end of the sound.
-            QVERIFY(distance(e.mouthAt(1.25), mix(a, Mouth{}, 0.5)) < kTol);
+            QVERIFY(distance(e.mouthAt(1.25), mix(a, Mouth {}, 0.5)) < kTol);
         }
         {
             // A pause shorter than silenceHold keeps the shape.
@@ -260,10 +262,10 @@ private Q_SLOTS:
             const TimelineEvaluator e(t, m_face, m_shapes);
             QVERIFY(distance(e.mouthAt(1.0), a) < kTol);
             QVERIFY(distance(e.mouthAt(1.0 + t.smoothing().minHold), a) < kTol);
-            QVERIFY(distance(e.mouthAt(1.5), Mouth{}) < kTol);
+            QVERIFY(distance(e.mouthAt(1.5), Mouth {}) < kTol);
             QVERIFY(distance(e.mouthAt(2.1), o) < kTol);
             QVERIFY(distance(e.mouthAt(2.25), a) < kTol);
-            QVERIFY(distance(e.mouthAt(3.0), Mouth{}) < kTol);
+            QVERIFY(distance(e.mouthAt(3.0), Mouth {}) < kTol);
         }
         {
             // `n` after a silence has neutral corners.
@@ -407,7 +409,7 @@ private Q_SLOTS:
             one.addBlink({1.0, 0.4});
             two.addBlink({1.05, 0.1});
             const double expected = std::min(TimelineEvaluator(one, m_face, m_shapes).blinkOpenAt(time),
-                                             TimelineEvaluator(two, m_face, m_shapes).blinkOpenAt(time));
+                TimelineEvaluator(two, m_face, m_shapes).blinkOpenAt(time));
             QCOMPARE(e.blinkOpenAt(time), expected);
         }
     }
@@ -461,14 +463,14 @@ private Q_SLOTS:
     {
         Timeline t;
         t.addMouthCues({{0.5, 0.7, MouthShape::A}, {0.7, 0.8, MouthShape::I}, {0.8, 1.1, MouthShape::U},
-                        {2.0, 2.4, MouthShape::O}, {2.4, 2.6, MouthShape::N}});
+            {2.0, 2.4, MouthShape::O}, {2.4, 2.6, MouthShape::N}});
         t.addEmotionClip({1.5, 3.0, Emotion::Smile, 0.8, 0.3, 0.2});
         t.addBlink({1.2, 0.2});
         t.addBlink({2.7, 0.15});
         t.addGazeKey({0.0, {}});
         t.addGazeKey({1.3, {0.05, 0}});
         t.addShake(3.0, 3.5);
-        t.setAudio(AudioClip{QStringLiteral("x.wav"), 0.0, 4.0});
+        t.setAudio(AudioClip {QStringLiteral("x.wav"), 0.0, 4.0});
         const TimelineEvaluator e(t, m_face, m_shapes);
         const auto keys = e.exportKeys();
         QCOMPARE(keys.times.first(), 0.0);
