@@ -1,6 +1,7 @@
 #include "window/mainwindow.h"
 
 #include "document/autosaver.h"
+#include "document/undomacro.h"
 #include "face/averageface.h"
 #include "render/svgface.h"
 #include "views/photoview.h"
@@ -25,6 +26,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSaveFile>
+#include <QScreen>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QToolBar>
@@ -309,8 +311,10 @@ void MainWindow::createStatusBar()
 void MainWindow::restoreSettings()
 {
     Settings settings;
-    if (!restoreGeometry(settings.windowGeometry()))
-        resize(1280, 800);
+    if (!restoreGeometry(settings.windowGeometry())) {
+        const QSize available = screen()->availableSize();
+        resize(std::min(1280, available.width() * 9 / 10), std::min(820, available.height() * 9 / 10));
+    }
     restoreState(settings.windowState());
     m_splitter->restoreState(settings.splitterState());
     m_showIdsAction->setChecked(settings.showPointIds());
@@ -444,11 +448,9 @@ void MainWindow::onDetectionFinished(const DetectionResult &result)
         // The first face of a photo: its points and the colours sampled under them, one step.
         Style style = m_document->style();
         style.sampleColours(m_document->photo(), result.face);
-        QUndoStack *stack = m_document->undoStack();
-        stack->beginMacro(tr("Detect face"));
+        const UndoMacro step(m_document->undoStack(), tr("Detect face"));
         m_document->replaceFace(result.face, false, tr("Detect face"));
         m_document->changeStyle(style, tr("Sample colours"));
-        stack->endMacro();
     } else {
         m_document->replaceFace(result.face, m_detectKeepsHandPlaced,
             m_detectKeepsHandPlaced ? tr("Re-detect keeping my points") : tr("Re-detect points"));
