@@ -11,6 +11,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QFile>
+#include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QSignalSpy>
@@ -129,6 +130,31 @@ private Q_SLOTS:
         action("actionUndo")->trigger();
         QVERIFY(!m_window->isWindowModified());
         QCOMPARE(action("actionRedo")->text(), QStringLiteral("&Redo Move point 8.9"));
+    }
+
+    void openRecentListsAndOpensPersistedFiles()
+    {
+        Settings().addRecentFile(m_projectPath);
+        makeWindow();
+        auto *menu = m_window->findChild<QMenu *>(QStringLiteral("menuRecent"));
+        QVERIFY(menu);
+        Q_EMIT menu->aboutToShow();
+        const QList<QAction *> actions = menu->actions();
+        QVERIFY(actions.size() >= 2); // the file, a separator, "Clear Menu"
+        QCOMPARE(actions.first()->text(), QStringLiteral("portrait.toonface"));
+        actions.first()->trigger();
+        QTRY_COMPARE(m_window->document()->filePath(), m_projectPath);
+    }
+
+    void windowGeometryPersists()
+    {
+        makeWindow();
+        m_window->resize(900, 640);
+        QVERIFY(m_window->close());
+        QVERIFY(!Settings().windowGeometry().isEmpty());
+        m_window.reset();
+        makeWindow();
+        QCOMPARE(m_window->size(), QSize(900, 640));
     }
 
     void openFailureSaysWhichFile()
