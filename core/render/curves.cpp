@@ -82,8 +82,7 @@ QVector<QPointF> cornerCutPolyline(const QVector<QPointF> &points, int depth, bo
     for (qsizetype i = first; i <= last; ++i) {
         const QVector<QPointF> corner = cornerCut(mid(i - 1, i), points[i], mid(i, i + 1), depth);
         // Consecutive corners share the midpoint of the segment between them.
-        const qsizetype skip = out.isEmpty() ? 0 : 1;
-        out.append(corner.mid(skip));
+        out.append(i == first ? corner : corner.mid(1));
     }
     if (closed)
         out.removeLast(); // the last corner ends where the first began
@@ -100,27 +99,26 @@ QPointF CubicBezier::at(double t) const
 
 QPointF CubicBezier::r3() const
 {
-    const QPointF r1 = (q0 + q1) / 2.0;                 // eq. 4.5
-    const QPointF s2 = (q2 + q3) / 2.0;                 // eq. 4.6
-    const QPointF r2 = r1 / 2.0 + (q1 + q2) / 4.0;      // eq. 4.7
-    const QPointF s1 = s2 / 2.0 + (q1 + q2) / 4.0;      // eq. 4.8
-    return (r2 + s1) / 2.0;                             // eq. 4.9
+    const QPointF r1 = (q0 + q1) / 2.0; // eq. 4.5
+    const QPointF s2 = (q2 + q3) / 2.0; // eq. 4.6
+    const QPointF r2 = r1 / 2.0 + (q1 + q2) / 4.0; // eq. 4.7
+    const QPointF s1 = s2 / 2.0 + (q1 + q2) / 4.0; // eq. 4.8
+    return (r2 + s1) / 2.0; // eq. 4.9
 }
 
-CubicBezier fitBezierThrough(QPointF q0, QPointF target, QPointF q3, double spread, double tolerance,
-                             int *iterations)
+CubicBezier fitBezierThrough(QPointF q0, QPointF target, QPointF q3, double spread, double tolerance, int *iterations)
 {
     const QPointF mid = (q0 + q3) / 2.0;
     const QPointF half = (q3 - q0) * (std::max(0.0, spread) / 6.0);
-    CubicBezier b{q0, mid - half, mid + half, q3};
+    CubicBezier b {q0, mid - half, mid + half, q3};
     const int drags = dragTogether(&b, target, tolerance);
     if (iterations)
         *iterations = drags;
     return b;
 }
 
-QVector<CubicBezier> fitBezierChain(const QVector<QPointF> &anchors, const QVector<QPointF> &targets,
-                                    const BezierChainEnds &ends, double tolerance)
+QVector<CubicBezier> fitBezierChain(
+    const QVector<QPointF> &anchors, const QVector<QPointF> &targets, const BezierChainEnds &ends, double tolerance)
 {
     const qsizetype segments = targets.size();
     if (segments < 1 || anchors.size() != segments + 1)
@@ -138,8 +136,7 @@ QVector<CubicBezier> fitBezierChain(const QVector<QPointF> &anchors, const QVect
         const QPointF t = unit(targets.first() - targets.last());
         tangent.first() = t;
         tangent.last() = t;
-    }
-    else {
+    } else {
         const CubicBezier firstFit = fitBezierThrough(anchors[0], targets[0], anchors[1]);
         const CubicBezier lastFit = fitBezierThrough(anchors[n - 2], targets[segments - 1], anchors[n - 1]);
         tangent.first() = ends.startTangent.isNull() ? unit(firstFit.q1 - firstFit.q0) : unit(ends.startTangent);
@@ -178,7 +175,7 @@ QVector<CubicBezier> fitBezierChain(const QVector<QPointF> &anchors, const QVect
         const double hi = 1.5 * chord + length(w);
         ha = std::isfinite(ha) ? std::clamp(ha, lo, std::max(lo, hi)) : natural;
         hb = std::isfinite(hb) ? std::clamp(hb, lo, std::max(lo, hi)) : natural;
-        CubicBezier seg{a, a + u * ha, b - v * hb, b};
+        CubicBezier seg {a, a + u * ha, b - v * hb, b};
         dragTogether(&seg, targets[i], tolerance);
         chain.append(seg);
     }

@@ -29,15 +29,15 @@ struct CubicBezier
 // dragging Q1 and Q2 together (method A) until |R3 - target| < tolerance. `spread` places
 // the inner control points along the chord (method B: < 1 sharper, > 1 flatter; 1 = thirds).
 // Ensures: |result.r3() - target| < tolerance.
-CubicBezier fitBezierThrough(QPointF q0, QPointF target, QPointF q3, double spread = 1.0,
-                             double tolerance = 0.5, int *iterations = nullptr);
+CubicBezier fitBezierThrough(
+    QPointF q0, QPointF target, QPointF q3, double spread = 1.0, double tolerance = 0.5, int *iterations = nullptr);
 
 // How the ends of a fitBezierChain are shaped. A null tangent leaves that end free.
 struct BezierChainEnds
 {
     QPointF startTangent; // direction the chain leaves anchors.first()
-    QPointF endTangent;   // direction the chain arrives at anchors.last()
-    bool closed = false;  // anchors.last() == anchors.first(): one joint there, no ends
+    QPointF endTangent; // direction the chain arrives at anchors.last()
+    bool closed = false; // anchors.last() == anchors.first(): one joint there, no ends
 };
 
 // Cubic Beziers joined smoothly (G1): segment i runs from anchors[i] to anchors[i + 1] and passes
@@ -47,6 +47,6 @@ struct BezierChainEnds
 // Requires: anchors.size() == targets.size() + 1 >= 2, else returns an empty vector.
 // Ensures: |segment[i].r3() - targets[i]| < tolerance for finite input.
 QVector<CubicBezier> fitBezierChain(const QVector<QPointF> &anchors, const QVector<QPointF> &targets,
-                                    const BezierChainEnds &ends = {}, double tolerance = 0.5);
+    const BezierChainEnds &ends = {}, double tolerance = 0.5);
 
 } // namespace toonface

@@ -68,7 +68,9 @@ double rgbDistance(QColor a, QColor b)
 class PixelSampler
 {
 public:
-    explicit PixelSampler(const QImage &photo) : m_image(photo.convertToFormat(QImage::Format_RGB32)) {}
+    explicit PixelSampler(const QImage &photo)
+        : m_image(photo.convertToFormat(QImage::Format_RGB32))
+    { }
 
     std::vector<QRgb> disc(QPointF centre, double radius) const
     {
@@ -130,8 +132,8 @@ QColor medianColour(const std::vector<QColor> &colours)
 
 QColor mix(QColor a, QColor b, double t)
 {
-    return QColor::fromRgbF(float(a.redF() + (b.redF() - a.redF()) * t), float(a.greenF() + (b.greenF() - a.greenF()) * t),
-                            float(a.blueF() + (b.blueF() - a.blueF()) * t));
+    return QColor::fromRgbF(float(a.redF() + (b.redF() - a.redF()) * t),
+        float(a.greenF() + (b.greenF() - a.greenF()) * t), float(a.blueF() + (b.blueF() - a.blueF()) * t));
 }
 
 bool plausibleSkin(QColor c)
@@ -178,13 +180,11 @@ Style Style::preset(const QString &name, bool *ok)
     s.components = baseComponents();
     bool known = true;
     if (name == QLatin1StringView("normal")) {
-    }
-    else if (name == QLatin1StringView("soft")) {
+    } else if (name == QLatin1StringView("soft")) {
         // Thesis Fig. 7.8(b): Bezier eyebrows and a simpler nose.
         s.eyebrows = EyebrowVariant::Bezier;
         s.nose = NoseVariant::Simple;
-    }
-    else if (name == QLatin1StringView("bold")) {
+    } else if (name == QLatin1StringView("bold")) {
         s.eyebrows = EyebrowVariant::Thick;
         s.nose = NoseVariant::Simple;
         for (const char *key : {"face", "jaw", "ears", "eyes"})
@@ -192,16 +192,14 @@ Style Style::preset(const QString &name, bool *ok)
         s.components[QStringLiteral("hair")].strokeWidth = 3.0;
         s.components[QStringLiteral("nose")].strokeWidth = 3.0;
         s.components[QStringLiteral("lips")].strokeWidth = 2.4;
-    }
-    else if (name == QLatin1StringView("cute")) {
+    } else if (name == QLatin1StringView("cute")) {
         // Thesis Fig. 7.8(c): rounder, shorter jaw, larger eyeballs, smaller nose (by rule, see
         // SvgFace), softer brows.
         s.cute = true;
         s.eyebrows = EyebrowVariant::Bezier;
         s.nose = NoseVariant::Simple;
         s.components[QStringLiteral("cheeks")].visible = true;
-    }
-    else {
+    } else {
         known = false;
         s = Style();
     }
@@ -231,9 +229,8 @@ void Style::sampleColours(const QImage &photo, const FaceModel &face)
     const QPointF forehead = browMid + (p("11.1") - browMid) * 0.45;
     const QPointF bridge = (p("9.14") + p("9.13") + p("9.6") + p("9.7")) / 4.0;
     const QPointF chin = (p("8.2") + p("2.1") * 2.0) / 3.0;
-    const QColor skin = medianColour(std::vector<QColor>{regionMedian(leftCheek, rs), regionMedian(rightCheek, rs),
-                                                         regionMedian(forehead, rs), regionMedian(bridge, rs * 0.6),
-                                                         regionMedian(chin, rs * 0.6)});
+    const QColor skin = medianColour(std::vector<QColor> {regionMedian(leftCheek, rs), regionMedian(rightCheek, rs),
+        regionMedian(forehead, rs), regionMedian(bridge, rs * 0.6), regionMedian(chin, rs * 0.6)});
     const QColor skinUsed = plausibleSkin(skin) ? skin : components.value(QStringLiteral("face")).fill;
     if (plausibleSkin(skin)) {
         for (const char *key : {"face", "jaw", "ears"})
@@ -263,9 +260,8 @@ void Style::sampleColours(const QImage &photo, const FaceModel &face)
     const QColor background = medianColour(outside);
     bool hairOk = hair.isValid();
     if (hairOk && background.isValid()) {
-        const auto nearBackground = std::count_if(inside.begin(), inside.end(), [&](QRgb c) {
-            return rgbDistance(QColor(c), background) < 40.0;
-        });
+        const auto nearBackground = std::count_if(
+            inside.begin(), inside.end(), [&](QRgb c) { return rgbDistance(QColor(c), background) < 40.0; });
         hairOk = nearBackground * 2 < qsizetype(inside.size());
     }
     if (hairOk && rgbDistance(hair, skinUsed) < 30.0)
@@ -280,8 +276,8 @@ void Style::sampleColours(const QImage &photo, const FaceModel &face)
 
     // Lips: the middle of each lip.
     const double rl = std::max(1.0, 0.3 * std::min(f.upperLipH, f.lowerLipH));
-    const QColor lips = medianColour(std::vector<QColor>{
-        regionMedian((p("8.1") + p("2.2")) / 2.0, rl), regionMedian((p("2.3") + p("8.2")) / 2.0, rl),
+    const QColor lips = medianColour(std::vector<QColor> {regionMedian((p("8.1") + p("2.2")) / 2.0, rl),
+        regionMedian((p("2.3") + p("8.2")) / 2.0, rl),
         regionMedian(((p("8.9") + p("8.4")) / 2.0 + (p("8.4") + p("2.2")) / 2.0) / 2.0, rl)});
     const QColor lipUsed = plausibleLips(lips, skinUsed) ? lips : mix(skinUsed, QColor(0xc0, 0x50, 0x4d), 0.45);
     components[QStringLiteral("lips")].fill = lipUsed;

@@ -173,8 +173,7 @@ QRectF bezierBounds(const CubicBezier &b)
         if (std::abs(a) < 1e-12) {
             if (std::abs(bb) > 1e-12)
                 roots[count++] = -c / bb;
-        }
-        else {
+        } else {
             const double disc = bb * bb - 4 * a * c;
             if (disc >= 0) {
                 const double s = std::sqrt(disc);
@@ -189,8 +188,7 @@ QRectF bezierBounds(const CubicBezier &b)
                 if (isX) {
                     minX = std::min(minX, p.x());
                     maxX = std::max(maxX, p.x());
-                }
-                else {
+                } else {
                     minY = std::min(minY, p.y());
                     maxY = std::max(maxY, p.y());
                 }
@@ -221,16 +219,16 @@ struct Part
 // The proportions of the drawing, in ES0 (eye distance) units unless said otherwise.
 constexpr double kEyeballRadius = 0.105;
 constexpr double kCuteEyeballScale = 1.45;
-constexpr double kPupilRadius = 0.45;      // of the eyeball radius
-constexpr double kHighlightRadius = 0.24;  // of the eyeball radius
-constexpr double kCuteChinRaise = 0.22;    // of JawH
+constexpr double kPupilRadius = 0.45; // of the eyeball radius
+constexpr double kHighlightRadius = 0.24; // of the eyeball radius
+constexpr double kCuteChinRaise = 0.22; // of JawH
 constexpr double kCuteEyeScale = 1.3;
 constexpr double kCheekRadius = 0.12;
 constexpr double kCuteNoseScale = 0.6;
-constexpr double kJawOverlap = 3.0;        // thesis pixels (ES0/100) the jaw reaches up behind the face
+constexpr double kJawOverlap = 3.0; // thesis pixels (ES0/100) the jaw reaches up behind the face
 constexpr double kThickBrow = 0.085;
-constexpr double kLowerLipSpread = 1.5;   // method B: the lower lip rounder than thirds
-constexpr double kHairInset = 0.15;        // how far the hair's hidden closing runs inside the face
+constexpr double kLowerLipSpread = 1.5; // method B: the lower lip rounder than thirds
+constexpr double kHairInset = 0.15; // how far the hair's hidden closing runs inside the face
 
 struct Pt
 {
@@ -241,11 +239,11 @@ struct Pt
 // Everything about a face that does not depend on the pose.
 struct SvgFaceGeometry
 {
-    Points neutral;          // the neutral points with the style's rules applied
-    std::array<QPointF, kPointCount> ruleOffset{}; // what the style's rules add to every pose
-    double unit = 1;         // ES0 / 100: the thesis' pixel at its photo scale
+    Points neutral; // the neutral points with the style's rules applied
+    std::array<QPointF, kPointCount> ruleOffset {}; // what the style's rules add to every pose
+    double unit = 1; // ES0 / 100: the thesis' pixel at its photo scale
     double es0 = 100;
-    QPointF centre;          // head rotation centre
+    QPointF centre; // head rotation centre
     QPointF jawStartTangent; // the face contour's direction at 2.14 and 2.13, shared by face and jaw
     QPointF jawEndTangent;
     double eyeballRadius = 10;
@@ -258,17 +256,17 @@ struct SvgFaceGeometry
 // What the cute rules add to the points, from the neutral face: the same in every pose.
 std::array<QPointF, kPointCount> styleRuleOffsets(const FaceModel &face, const Style &style)
 {
-    std::array<QPointF, kPointCount> off{};
+    std::array<QPointF, kPointCount> off {};
     if (!style.cute)
         return off;
-    const Pt P{face.points()};
+    const Pt P {face.points()};
     const Fapu f = face.fapu();
     // A shorter, rounder jaw: the chin comes up, and the lower jaw points move onto the quarter
     // ellipses from the jaw sides (2.14, 2.13) to the raised chin.
     const QPointF chin = P("2.1") + QPointF(0, -kCuteChinRaise * f.jawH);
     off[pt::idx("2.1")] = chin - P("2.1");
     const double c = std::cos(std::numbers::pi / 4);
-    for (const auto &[lower, side] : {std::pair{"2.12", "2.14"}, std::pair{"2.11", "2.13"}}) {
+    for (const auto &[lower, side] : {std::pair {"2.12", "2.14"}, std::pair {"2.11", "2.13"}}) {
         const QPointF s = P(side);
         const QPointF centre(chin.x(), s.y());
         const QPointF onEllipse = centre + QPointF((s.x() - chin.x()) * c, (chin.y() - s.y()) * c);
@@ -289,7 +287,8 @@ void applyStyleRules(Points &p, const SvgFaceGeometry &g, const Style &style)
         p[i] += g.ruleOffset[i];
     if (!style.cute)
         return;
-    for (const auto &ids : {std::array{"3.12", "3.8", "3.2", "3.4", "3.6"}, std::array{"3.11", "3.7", "3.1", "3.3", "3.5"}}) {
+    for (const auto &ids :
+        {std::array {"3.12", "3.8", "3.2", "3.4", "3.6"}, std::array {"3.11", "3.7", "3.1", "3.3", "3.5"}}) {
         const QPointF mid = (p[pt::idx(ids[0])] + p[pt::idx(ids[1])]) / 2.0;
         for (const char *id : ids)
             p[pt::idx(id)] = mid + (p[pt::idx(id)] - mid) * kCuteEyeScale;
@@ -350,8 +349,7 @@ Part makeFace(const Pt &P, const SvgFaceGeometry &g)
     // Open path: the fill closes it with the straight line 2.13 -> 2.14 (where the jaw takes
     // over), the stroke does not.
     const QVector<CubicBezier> chain = fitBezierChain({P("2.14"), P("11.2"), P("11.3"), P("2.13")},
-                                                      {P("5.2"), P("11.1"), P("5.1")},
-                                                      {-g.jawStartTangent, -g.jawEndTangent});
+        {P("5.2"), P("11.1"), P("5.1")}, {-g.jawStartTangent, -g.jawEndTangent});
     PathData d;
     d.moveTo(P("2.14")).cubics(chain);
     return {"face", false, "path", {{"d", d.data()}}, "face"};
@@ -385,7 +383,7 @@ void makeNose(const Pt &P, NoseVariant variant, double es0, std::vector<Part> *o
         QPointF outward = perpendicular(nostril - start) * 0.3;
         if (QPointF::dotProduct(outward, wingPoint - tip) < 0)
             outward = -outward;
-        return std::pair{start, (start + nostril) / 2.0 + outward};
+        return std::pair {start, (start + nostril) / 2.0 + outward};
     };
     const auto [startL, bulgeL] = wing(wl, nl, P("9.14"));
     const auto [startR, bulgeR] = wing(wr, nr, P("9.13"));
@@ -443,8 +441,8 @@ void makeEyebrows(const Pt &P, const Style &style, double es0, std::vector<Part>
 Part makeJaw(const Pt &P, const SvgFaceGeometry &g)
 {
     const QPointF left = P("2.14"), right = P("2.13");
-    const QVector<CubicBezier> chain = fitBezierChain({left, P("2.1"), right}, {P("2.12"), P("2.11")},
-                                                      {g.jawStartTangent, g.jawEndTangent});
+    const QVector<CubicBezier> chain
+        = fitBezierChain({left, P("2.1"), right}, {P("2.12"), P("2.11")}, {g.jawStartTangent, g.jawEndTangent});
     // Starts and ends a little up the face's sides, along them, so the jaw's fill overlaps the
     // face's and no seam shows; the stroke there lies on the face's own.
     const double overlap = kJawOverlap * g.unit;
@@ -492,13 +490,13 @@ void makeEye(const Pt &P, const SvgFaceGeometry &g, bool left, std::vector<Part>
 
     out->push_back({left ? "eye-left" : "eye-right", true, "path", {{"d", eye}}, "eyes", FillOnly});
     auto circle = [&](const char *id, QPointF c, double radius, const char *key) {
-        out->push_back({id, true, "circle", {{"cx", number(c.x())}, {"cy", number(c.y())}, {"r", number(radius)}},
-                        key, FillAndStroke, clip});
+        out->push_back({id, true, "circle", {{"cx", number(c.x())}, {"cy", number(c.y())}, {"r", number(radius)}}, key,
+            FillAndStroke, clip});
     };
     circle(left ? "eyeball-left" : "eyeball-right", ball, r, "eyeballs");
     circle(left ? "pupil-left" : "pupil-right", ball, r * kPupilRadius, "pupils");
     circle(left ? "highlight-left" : "highlight-right", ball + QPointF(0.32 * r, -0.36 * r), r * kHighlightRadius,
-           "highlights");
+        "highlights");
 
     // The eyeballs are clipped by the eye outline (clip-path). Renderers without clipping
     // (QSvgRenderer before Qt 6.7) would show them outside the lids, so skin covers
@@ -511,7 +509,7 @@ void makeEye(const Pt &P, const SvgFaceGeometry &g, bool left, std::vector<Part>
     cover.moveTo(box.topLeft()).horizontalTo(box.right()).verticalTo(box.bottom()).horizontalTo(box.left()).close();
     QByteArray coverData = cover.data() + eye;
     out->push_back({left ? "eye-left-cover" : "eye-right-cover", true, "path",
-                    {{"d", coverData}, {"fill-rule", QByteArrayLiteral("evenodd")}}, "face", FillOnly});
+        {{"d", coverData}, {"fill-rule", QByteArrayLiteral("evenodd")}}, "face", FillOnly});
     out->push_back({left ? "eye-left-line" : "eye-right-line", true, "path", {{"d", eye}}, "eyes", StrokeOnly});
 }
 
@@ -594,15 +592,13 @@ bool layerFragment(const QByteArray &content, QByteArray *fragment, QString *err
             }
             ++depth;
             writer.writeCurrentToken(reader);
-        }
-        else if (token == QXmlStreamReader::EndElement) {
+        } else if (token == QXmlStreamReader::EndElement) {
             if (depth == 0)
                 continue; // the root's end
             --depth;
             writer.writeCurrentToken(reader);
-        }
-        else if (sawRoot && depth > 0
-                 && (token == QXmlStreamReader::Characters || token == QXmlStreamReader::EntityReference)) {
+        } else if (sawRoot && depth > 0
+            && (token == QXmlStreamReader::Characters || token == QXmlStreamReader::EntityReference)) {
             writer.writeCurrentToken(reader);
         }
     }
@@ -634,8 +630,7 @@ bool layerFragment(const QByteArray &content, QByteArray *fragment, QString *err
 SvgFace::SvgFace(const FaceModel &face, const Style &style)
     : m_face(face)
     , m_style(style)
-{
-}
+{ }
 
 namespace {
 
@@ -649,7 +644,7 @@ SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
     g.ruleOffset = styleRuleOffsets(face, style);
     g.neutral = face.points();
     applyStyleRules(g.neutral, g, style);
-    const Pt P{g.neutral};
+    const Pt P {g.neutral};
     g.centre = face.bounds(PointGroup::Contour).center();
     // The contour's direction where face and jaw meet, from the whole neutral outline, so the
     // static face and the moving jaw always join smoothly.
@@ -673,7 +668,7 @@ SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
             const QPointF c = left ? (P("3.4") + P("5.2") + P("9.2") + P("8.4")) / 4.0
                                    : (P("3.3") + P("5.1") + P("9.1") + P("8.3")) / 4.0;
             g.staticParts.push_back({left ? "cheek-left" : "cheek-right", false, "circle",
-                                     {{"cx", number(c.x())}, {"cy", number(c.y())}, {"r", number(r)}}, "cheeks"});
+                {{"cx", number(c.x())}, {"cy", number(c.y())}, {"r", number(r)}}, "cheeks"});
         }
     }
     if (visible("nose"))
@@ -685,7 +680,7 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
 {
     Points posed = posedPoints(face, pose);
     applyStyleRules(posed, g, style);
-    const Pt P{posed};
+    const Pt P {posed};
     std::vector<Part> parts = g.staticParts;
     parts.reserve(parts.size() + 24);
     if (componentStyle(style.components, "eyebrows").visible)
@@ -840,7 +835,8 @@ QImage rasterizeSvg(const QByteArray &svg, QSize size, QColor background)
     if (source.isEmpty())
         source = size;
     const QSizeF fitted = source.scaled(QSizeF(size), Qt::KeepAspectRatio);
-    const QRectF target(QPointF((size.width() - fitted.width()) / 2.0, (size.height() - fitted.height()) / 2.0), fitted);
+    const QRectF target(
+        QPointF((size.width() - fitted.width()) / 2.0, (size.height() - fitted.height()) / 2.0), fitted);
     QImage image(size, QImage::Format_ARGB32_Premultiplied);
     image.fill(Qt::transparent);
     QPainter painter(&image);
