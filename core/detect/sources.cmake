@@ -1,0 +1,2 @@
+list(APPEND TOONFACE_CORE_SOURCES
+  detect/landmarkmap.h detect/landmarkmap.cpp)
