@@ -189,56 +189,38 @@ FaceModel faceFromLandmarks68(const Ibug &p, QSize imageSize)
     set("2.12", jawL.atArcLength((jawL.arcLength(tL) + jawL.arcLength(8)) / 2));
     set("2.11", jawR.atArcLength((jawR.arcLength(tR) + jawR.arcLength(8)) / 2));
 
-    // Forehead, by the rule of thirds of face proportions: the hairline lies as far above the
-    // brow line as the nose base (iBUG 33) lies below it. 11.1 sits there on the face's
-    // midline (the top of the nose bridge, iBUG 27); the temples 11.2/11.3 lie on the
-    // quarter-ellipse from the cheek at eye level to 11.1, at 50 degrees above the eye line
-    // (each side with its own half-width, so a turned head keeps its asymmetry).
-    double browY = 0;
-    for (int i = 17; i <= 26; ++i)
-        browY += L(i).y() / 10;
-    const double noseBaseY = L(33).y();
-    const double third = std::max(noseBaseY - browY, 0.1 * es0);
-    const double hairlineY = browY - third;
-    const double midX = L(27).x();
-    const double cheekLX = f.toLocal(face.point("5.2")).x(), cheekRX = f.toLocal(face.point("5.1")).x();
-    const double halfL = std::max(midX - cheekLX, 0.1 * es0), halfR = std::max(cheekRX - midX, 0.1 * es0);
+    // Forehead: 11.1 on the hairline of headGeometry(), on the face's midline (the top of the
+    // nose bridge, iBUG 27); the temples 11.2/11.3 lie on the quarter-ellipse from the cheek at
+    // eye level to 11.1, at 50 degrees above the eye line (each side with its own half-width,
+    // so a turned head keeps its asymmetry).
+    const HeadGeometry g = headGeometry(face);
+    const double cheekLX = g.toLocal(face.point("5.2")).x(), cheekRX = g.toLocal(face.point("5.1")).x();
+    const double halfL = std::max(g.midX - cheekLX, 0.1 * es0), halfR = std::max(cheekRX - g.midX, 0.1 * es0);
     const double templeAngle = 50.0 * std::numbers::pi / 180.0;
-    set("11.1", {midX, hairlineY});
-    set("11.2", {midX - halfL * std::cos(templeAngle), hairlineY * std::sin(templeAngle)});
-    set("11.3", {midX + halfR * std::cos(templeAngle), hairlineY * std::sin(templeAngle)});
+    auto setG = [&](const char *id, QPointF local) { face.setPoint(pt::idx(id), g.toImage(local)); };
+    setG("11.1", {g.midX, g.hairlineY});
+    setG("11.2", {g.midX - halfL * std::cos(templeAngle), g.hairlineY * std::sin(templeAngle)});
+    setG("11.3", {g.midX + halfR * std::cos(templeAngle), g.hairlineY * std::sin(templeAngle)});
 
     // Ears, by the usual frontal proportions: the ear's top is at brow level and its lobe's
     // bottom at the nose base; it stands out of the head contour by up to a fifth of the
     // half-face width (10.4, outermost, a third of the way down), its top (10.2) and lobe
     // bottom (10.6) less; the lobe meets the cheek (10.10) on the contour just above the
     // lobe's bottom.
-    const double earH = std::max(noseBaseY - browY, 0.1 * es0);
+    const double earH = std::max(g.noseBaseY - g.browY, 0.1 * es0);
     auto ear = [&](const JawHalf &jaw, double half, double side, const char *top, const char *outer,
                    const char *lobe, const char *junction) {
         const double out = 0.2 * half * side;
-        set(top, jaw.atLevel(browY) + QPointF(0.3 * out, 0));
-        set(outer, jaw.atLevel(browY + 0.35 * earH) + QPointF(out, 0));
-        set(lobe, jaw.atLevel(noseBaseY) + QPointF(0.4 * out, 0));
-        set(junction, jaw.atLevel(noseBaseY - 0.12 * earH));
+        set(top, jaw.atLevel(g.browY) + QPointF(0.3 * out, 0));
+        set(outer, jaw.atLevel(g.browY + 0.35 * earH) + QPointF(out, 0));
+        set(lobe, jaw.atLevel(g.noseBaseY) + QPointF(0.4 * out, 0));
+        set(junction, jaw.atLevel(g.noseBaseY - 0.12 * earH));
     };
     ear(jawL, halfL, -1.0, "10.2", "10.4", "10.6", "10.10");
     ear(jawR, halfR, 1.0, "10.1", "10.3", "10.5", "10.9");
 
-    // Hair: an elliptical arc around the skull, centred between the cheeks at eye level.
-    // The eyes lie about halfway between the chin and the top of the skull, and the hair
-    // adds a tenth of that height on top and a tenth of the face width on each side. The
-    // arc runs from 10 degrees below the eye line on the image left, over the crown (h.10 at
-    // the top centre), to 10 degrees below it on the image right.
-    const double chinY = jawL.chin().y();
-    const double hairTopY = std::min(-1.1 * chinY, hairlineY - 0.15 * third);
-    const double centreX = (cheekLX + cheekRX) / 2;
-    const double ax = 1.1 * std::max((cheekRX - cheekLX) / 2, 0.2 * es0);
-    const double by = -hairTopY;
-    for (int i = 0; i < 19; ++i) {
-        const double a = (190.0 - i * (200.0 / 18.0)) * std::numbers::pi / 180.0;
-        face.setPoint(i, f.toImage({centreX + ax * std::cos(a), -by * std::sin(a)}));
-    }
+    for (int i = 0; i < 19; ++i)
+        face.setPoint(i, g.toImage(g.hairPoint(i)));
 
     if (imageSize.isValid()) {
         const QRectF box(0, 0, std::max(0, imageSize.width() - 1), std::max(0, imageSize.height() - 1));
@@ -254,6 +236,59 @@ FaceModel faceFromLandmarks68(const Ibug &p, QSize imageSize)
         }
     }
     return face;
+}
+
+QPointF HeadGeometry::toLocal(QPointF image) const
+{
+    const QPointF d = image - origin;
+    return {d.x() * ex.x() + d.y() * ex.y(), d.x() * ey.x() + d.y() * ey.y()};
+}
+
+QPointF HeadGeometry::toImage(QPointF local) const
+{
+    return origin + local.x() * ex + local.y() * ey;
+}
+
+// The hair arc runs from 10 degrees below the eye line on the image left, over the crown
+// (h.10 at the top centre), to 10 degrees below it on the image right.
+QPointF HeadGeometry::hairPoint(int i) const
+{
+    const double a = (190.0 - i * (200.0 / 18.0)) * std::numbers::pi / 180.0;
+    return {hairCentre.x() + hairAx * std::cos(a), hairCentre.y() - hairAy * std::sin(a)};
+}
+
+HeadGeometry headGeometry(const FaceModel &face)
+{
+    HeadGeometry g;
+    const QPointF eyeL = face.point("3.6"), eyeR = face.point("3.5");
+    g.origin = (eyeL + eyeR) / 2;
+    g.eyeDistance = QLineF(eyeL, eyeR).length();
+    if (g.eyeDistance > 1e-6) {
+        g.ex = (eyeR - eyeL) / g.eyeDistance;
+        g.ey = QPointF(-g.ex.y(), g.ex.x());
+    }
+    const double d = std::max(g.eyeDistance, 1e-6);
+    auto L = [&](const char *id) { return g.toLocal(face.point(id)); };
+
+    for (const char *id : {"4.6", "4.4a", "4.4", "4.2", "4.1", "4.3", "4.3a", "4.5"})
+        g.browY += L(id).y() / 8;
+    g.noseBaseY = L("9.15").y();
+    // Rule of thirds of face proportions: hairline-brows = brows-nose base = nose base-chin.
+    const double third = std::max(g.noseBaseY - g.browY, 0.1 * d);
+    g.hairlineY = g.browY - third;
+    // The midline at the brows: between the inner brow ends.
+    g.midX = (L("4.2").x() + L("4.1").x()) / 2;
+
+    // Hair: an ellipse around the skull, centred between the cheeks at eye level. The eyes
+    // lie about halfway between the chin and the top of the skull, and the hair adds a tenth
+    // of that height on top (at least a little above the hairline) and a tenth of the face
+    // width on each side.
+    const double cheekLX = L("5.2").x(), cheekRX = L("5.1").x();
+    const double chinY = L("2.1").y();
+    g.hairCentre = QPointF((cheekLX + cheekRX) / 2, 0);
+    g.hairAx = 1.1 * std::max((cheekRX - cheekLX) / 2, 0.2 * d);
+    g.hairAy = -std::min(-1.1 * chinY, g.hairlineY - 0.15 * third);
+    return g;
 }
 
 bool scoredReference(int pointIndex, const Ibug &ibug, QPointF *pos)
