@@ -44,6 +44,8 @@ QMap<QString, ComponentStyle> baseComponents()
     c.insert(QStringLiteral("highlights"), paint("#ffffff", nullptr, 0));
     c.insert(QStringLiteral("lips"), paint("#d67c74", "#94443d", 1.6));
     c.insert(QStringLiteral("mouth-inner"), paint("#5c2323", nullptr, 0));
+    c.insert(QStringLiteral("teeth"), paint("#fbf8f1", nullptr, 0));
+    c.insert(QStringLiteral("tongue"), paint("#c0585a", nullptr, 0));
     ComponentStyle cheeks = paint("#f07f7f", nullptr, 0);
     cheeks.fill.setAlphaF(0.3f);
     cheeks.visible = false;
@@ -118,6 +120,18 @@ QColor medianColour(const std::vector<QRgb> &px)
         b.push_back(qBlue(p));
     }
     return QColor(medianOf(r), medianOf(g), medianOf(b));
+}
+
+// Hair reads as the colour of its lit strands, not of the shadows between them: the median of
+// the pixels between the 40th and 90th percentile of brightness (which also drops glints).
+QColor litMedianColour(std::vector<QRgb> px)
+{
+    if (px.size() < 10)
+        return medianColour(px);
+    std::sort(px.begin(), px.end(), [](QRgb a, QRgb b) { return qGray(a) < qGray(b); });
+    const auto from = px.begin() + qsizetype(px.size() * 0.4);
+    const auto to = px.begin() + qsizetype(px.size() * 0.9);
+    return medianColour(std::vector<QRgb>(from, to));
 }
 
 QColor medianColour(const std::vector<QColor> &colours)
@@ -231,14 +245,18 @@ void Style::sampleColours(const QImage &photo, const FaceModel &face)
     const QPointF chin = (p("8.2") + p("2.1") * 2.0) / 3.0;
     const QColor skin = medianColour(std::vector<QColor> {regionMedian(leftCheek, rs), regionMedian(rightCheek, rs),
         regionMedian(forehead, rs), regionMedian(bridge, rs * 0.6), regionMedian(chin, rs * 0.6)});
-    const QColor skinUsed = plausibleSkin(skin) ? skin : components.value(QStringLiteral("face")).fill;
-    if (plausibleSkin(skin)) {
+    // A black-and-white photo says nothing about skin, lips or eyes: those keep the preset's
+    // colours, and only the hair takes its shade from the photo.
+    const bool monochrome = photo.allGray();
+    const bool skinOk = !monochrome && plausibleSkin(skin);
+    const QColor skinUsed = skinOk ? skin : components.value(QStringLiteral("face")).fill;
+    if (skinOk) {
         for (const char *key : {"face", "jaw", "ears"})
             components[QLatin1StringView(key)].fill = skin;
     }
 
-    // Hair: a band just inside the outline h.3..h.17, between it and the hairline; compared
-    // with a band just outside, so a hair outline drawn around background is noticed.
+    // Hair: a band inside the outline h.3..h.17, a quarter and half way to the hairline;
+    // compared with a band just outside, so a hair outline drawn around background is noticed.
     const QPointF centre = (p("11.1") + p("2.1")) / 2.0;
     const QPointF hairline[] = {p("11.2"), p("11.1"), p("11.3"), p("5.2"), p("5.1")};
     std::vector<QRgb> inside, outside;
@@ -248,15 +266,18 @@ void Style::sampleColours(const QImage &photo, const FaceModel &face)
         for (const QPointF &q : hairline)
             gap = std::min(gap, QLineF(h, q).length());
         const QPointF in = unitVector(centre - h);
-        const double depth = std::min(0.12 * es0, 0.35 * gap);
-        if (depth < 1.0)
+        const double thickness = std::min(gap, 0.5 * es0);
+        if (thickness < 3.0)
             continue;
-        const auto a = sampler.disc(h + in * depth, std::max(1.0, 0.4 * depth));
-        inside.insert(inside.end(), a.begin(), a.end());
-        const auto b = sampler.disc(h - in * (0.12 * es0), std::max(1.0, 0.4 * depth));
+        const double radius = std::max(1.0, 0.12 * thickness);
+        for (double depth : {0.25 * thickness, 0.5 * thickness}) {
+            const auto a = sampler.disc(h + in * depth, radius);
+            inside.insert(inside.end(), a.begin(), a.end());
+        }
+        const auto b = sampler.disc(h - in * (0.12 * es0), radius);
         outside.insert(outside.end(), b.begin(), b.end());
     }
-    const QColor hair = medianColour(inside);
+    const QColor hair = litMedianColour(inside);
     const QColor background = medianColour(outside);
     bool hairOk = hair.isValid();
     if (hairOk && background.isValid()) {
@@ -273,6 +294,9 @@ void Style::sampleColours(const QImage &photo, const FaceModel &face)
         components[QStringLiteral("eyebrows")].fill = brow;
         components[QStringLiteral("eyebrows")].stroke = brow;
     }
+
+    if (monochrome)
+        return;
 
     // Lips: the middle of each lip.
     const double rl = std::max(1.0, 0.3 * std::min(f.upperLipH, f.lowerLipH));

@@ -157,6 +157,13 @@ CubicBezier reversed(const CubicBezier &b)
     return {b.q3, b.q2, b.q1, b.q0};
 }
 
+// The curve whose control points are (1 - t) a + t b: at every parameter, the point that far
+// from a's point toward b's.
+CubicBezier blend(const CubicBezier &a, const CubicBezier &b, double t)
+{
+    return {lerp(a.q0, b.q0, t), lerp(a.q1, b.q1, t), lerp(a.q2, b.q2, t), lerp(a.q3, b.q3, t)};
+}
+
 // Exact bounding box of a cubic Bezier: its end points and the extrema where a coordinate's
 // derivative vanishes.
 QRectF bezierBounds(const CubicBezier &b)
@@ -228,6 +235,8 @@ constexpr double kCuteNoseScale = 0.6;
 constexpr double kJawOverlap = 3.0; // thesis pixels (ES0/100) the jaw reaches up behind the face
 constexpr double kThickBrow = 0.085;
 constexpr double kLowerLipSpread = 1.5; // method B: the lower lip rounder than thirds
+constexpr double kTeethHeight = 0.07;
+constexpr double kTongueHeight = 0.06;
 constexpr double kHairInset = 0.15; // how far the hair's hidden closing runs inside the face
 
 struct Pt
@@ -369,8 +378,8 @@ void makeNose(const Pt &P, NoseVariant variant, double es0, std::vector<Part> *o
     if (variant == NoseVariant::Full) {
         // One side of the bridge, the image-left one, lit from the right: a soft line from the
         // top of the nose region toward the wing.
-        const QPointF start = lerp(P("9.6"), P("9.14"), 0.6);
-        const QPointF end = lerp(P("9.14"), wl, 0.6);
+        const QPointF start = lerp(P("9.6"), P("9.14"), 0.7);
+        const QPointF end = lerp(P("9.14"), wl, 0.5);
         const QPointF bow = (start + end) / 2.0 + (P("9.14") - (start + end) / 2.0) * 0.6;
         PathData d;
         d.moveTo(start).cubic(fitBezierThrough(start, bow, end));
@@ -451,7 +460,7 @@ Part makeJaw(const Pt &P, const SvgFaceGeometry &g)
     return {"jaw", true, "path", {{"d", d.data()}}, "jaw"};
 }
 
-void makeMouth(const Pt &P, std::vector<Part> *out)
+void makeMouth(const Pt &P, double es0, std::vector<Part> *out)
 {
     const QPointF l = P("8.4"), r = P("8.3");
     const CubicBezier innerTop = fitBezierThrough(l, P("2.2"), r);
@@ -459,6 +468,21 @@ void makeMouth(const Pt &P, std::vector<Part> *out)
     PathData inner;
     inner.moveTo(l).cubic(innerTop).cubic(innerBottom).close();
     out->push_back({"mouth-inner", true, "path", {{"d", inner.data()}}, "mouth-inner", FillOnly});
+
+    // Tongue and upper teeth: each between one lip's inner edge and a blend of both edges.
+    // Blending control points blends the curves point by point, so they always stay inside
+    // the open mouth (no clipping needed) and vanish when it closes.
+    const CubicBezier innerBottomForward = reversed(innerBottom);
+    const double opening = length(P("2.3") - P("2.2"));
+    auto share = [&](double size, double most) { return opening > 1e-9 ? std::min(most, size * es0 / opening) : 0.0; };
+    const CubicBezier tongueTop = blend(innerBottomForward, innerTop, share(kTongueHeight, 0.45));
+    PathData tongue;
+    tongue.moveTo(l).cubic(innerBottomForward).cubic(reversed(tongueTop)).close();
+    out->push_back({"mouth-tongue", true, "path", {{"d", tongue.data()}}, "tongue", FillOnly});
+    const CubicBezier teethEdge = blend(innerTop, innerBottomForward, share(kTeethHeight, 0.4));
+    PathData teeth;
+    teeth.moveTo(l).cubic(innerTop).cubic(reversed(teethEdge)).close();
+    out->push_back({"mouth-teeth", true, "path", {{"d", teeth.data()}}, "teeth", FillOnly});
 
     PathData upper;
     upper.moveTo(l)
@@ -687,7 +711,7 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
         makeEyebrows(P, style, g.es0, &parts);
     if (componentStyle(style.components, "jaw").visible)
         parts.push_back(makeJaw(P, g));
-    makeMouth(P, &parts);
+    makeMouth(P, g.es0, &parts);
     makeEye(P, g, true, &parts);
     makeEye(P, g, false, &parts);
     std::erase_if(parts, [&](const Part &p) { return !componentStyle(style.components, p.styleKey).visible; });

@@ -248,6 +248,46 @@ QPolygonF pathPoints(const QString &d)
     return p;
 }
 
+// The paths this renderer writes: absolute M, L, H, V, C, Z.
+QPainterPath painterPath(const QString &d)
+{
+    QPainterPath path;
+    static const QRegularExpression token(QStringLiteral("([MLHVCZ])([^MLHVCZ]*)"));
+    auto it = token.globalMatch(d);
+    while (it.hasNext()) {
+        const auto m = it.next();
+        const QChar c = m.captured(1).at(0);
+        const QList<double> v = numbers(m.captured(2));
+        if (c == QLatin1Char('M'))
+            path.moveTo(v[0], v[1]);
+        else if (c == QLatin1Char('L'))
+            path.lineTo(v[0], v[1]);
+        else if (c == QLatin1Char('H'))
+            path.lineTo(v[0], path.currentPosition().y());
+        else if (c == QLatin1Char('V'))
+            path.lineTo(path.currentPosition().x(), v[0]);
+        else if (c == QLatin1Char('C'))
+            path.cubicTo(v[0], v[1], v[2], v[3], v[4], v[5]);
+        else
+            path.closeSubpath();
+    }
+    return path;
+}
+
+double area(const QPainterPath &path)
+{
+    double total = 0;
+    for (const QPolygonF &poly : path.toFillPolygons()) {
+        double a = 0;
+        for (qsizetype i = 0; i < poly.size(); ++i) {
+            const QPointF p = poly[i], q = poly[(i + 1) % poly.size()];
+            a += p.x() * q.y() - q.x() * p.y();
+        }
+        total += std::abs(a) / 2;
+    }
+    return total;
+}
+
 const FacePart *partById(const QVector<FacePart> &parts, const QString &id)
 {
     for (const FacePart &p : parts) {
@@ -415,6 +455,45 @@ private Q_SLOTS:
         // The eyes did not move.
         QCOMPARE(findId(b, QStringLiteral("eye-left"))->attribute(QStringLiteral("d")),
             findId(a, QStringLiteral("eye-left"))->attribute(QStringLiteral("d")));
+    }
+
+    void teethAndTongueStayInsideTheMouth_data()
+    {
+        QTest::addColumn<QString>("pose");
+        for (const QString &pose : namedPoses(testFace()).keys())
+            QTest::newRow(qPrintable(pose)) << pose;
+    }
+
+    void teethAndTongueStayInsideTheMouth()
+    {
+        QFETCH(QString, pose);
+        const FaceModel face = testFace();
+        const QVector<FacePart> parts = SvgFace(face, preset("normal")).parts(namedPoses(face).value(pose));
+        auto path = [&](const char *id) {
+            return painterPath(partById(parts, QLatin1StringView(id))->geometry.value(QStringLiteral("d")));
+        };
+        const QPainterPath inner = path("mouth-inner");
+        for (const char *id : {"mouth-teeth", "mouth-tongue"}) {
+            const QPainterPath part = path(id);
+            const double outside = area(part.subtracted(inner));
+            QVERIFY2(outside < 0.5 + 0.02 * area(part),
+                qPrintable(QStringLiteral("%1: %2 px² outside").arg(QLatin1StringView(id)).arg(outside)));
+        }
+        QVERIFY(area(path("mouth-teeth")) + area(path("mouth-tongue")) <= area(inner) + 1.0);
+    }
+
+    void teethShowOnlyWhenTheMouthOpens()
+    {
+        const FaceModel face = testFace();
+        const SvgFace svgFace(face, preset("normal"));
+        auto teethArea = [&](const Pose &pose) {
+            return area(painterPath(
+                partById(svgFace.parts(pose), QStringLiteral("mouth-teeth"))->geometry.value(QStringLiteral("d"))));
+        };
+        // f tucks the lower lip up against the upper: the lips touch, no teeth show.
+        QVERIFY(teethArea(mouthPose(face, MouthShapeSet(), MouthShape::F)) < 0.5);
+        const double open = teethArea(mouthPose(face, MouthShapeSet(), MouthShape::A));
+        QVERIFY(open > 0.02 * face.fapu().es0 * face.fapu().mw0);
     }
 
     void partStructureIsPoseIndependent_data()
