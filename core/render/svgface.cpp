@@ -549,37 +549,28 @@ ComponentStyle componentStyle(const QMap<QString, ComponentStyle> &components, c
     return defaults.value(k);
 }
 
-void appendColour(QByteArray &out, const char *attribute, const char *opacityAttribute, const QColor &c)
+using Attributes = std::vector<std::pair<const char *, QByteArray>>;
+
+void addColour(Attributes &out, const char *attribute, const char *opacityAttribute, const QColor &c)
 {
-    out += ' ';
-    out += attribute;
-    out += "=\"";
     if (!c.isValid()) {
-        out += "none\"";
+        out.emplace_back(attribute, QByteArrayLiteral("none"));
         return;
     }
-    out += c.name(QColor::HexRgb).toLatin1();
-    out += '"';
-    if (c.alpha() < 255) {
-        out += ' ';
-        out += opacityAttribute;
-        out += "=\"";
-        appendNumber(out, c.alphaF());
-        out += '"';
-    }
+    out.emplace_back(attribute, c.name(QColor::HexRgb).toLatin1());
+    if (c.alpha() < 255)
+        out.emplace_back(opacityAttribute, number(c.alphaF()));
 }
 
-QByteArray styleAttributes(const ComponentStyle &s, Paint paint, double unit)
+// The presentation attributes of a part: the same in every pose.
+Attributes paintAttributes(const ComponentStyle &s, Paint paint, double unit)
 {
-    QByteArray out;
-    appendColour(out, "fill", "fill-opacity", paint == StrokeOnly ? QColor() : s.fill);
+    Attributes out;
+    addColour(out, "fill", "fill-opacity", paint == StrokeOnly ? QColor() : s.fill);
     const bool stroked = paint != FillOnly && s.stroke.isValid() && s.strokeWidth > 0;
-    appendColour(out, "stroke", "stroke-opacity", stroked ? s.stroke : QColor());
-    if (stroked) {
-        out += " stroke-width=\"";
-        appendNumber(out, s.strokeWidth * unit);
-        out += '"';
-    }
+    addColour(out, "stroke", "stroke-opacity", stroked ? s.stroke : QColor());
+    if (stroked)
+        out.emplace_back("stroke-width", number(s.strokeWidth * unit));
     return out;
 }
 
@@ -718,7 +709,7 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
     return parts;
 }
 
-QByteArray headTransform(const SvgFaceGeometry &g, const HeadPose &head)
+QByteArray headTransformText(const SvgFaceGeometry &g, const HeadPose &head)
 {
     // translate(t) rotate(a, c) then scale about c; identity when neutral, always present.
     QByteArray t = "translate(";
@@ -777,11 +768,18 @@ QVector<FacePart> SvgFace::parts(const Pose &pose) const
         for (const auto &[name, value] : p.geometry)
             f.geometry.insert(latin1(name), QString::fromLatin1(value));
         f.styleKey = latin1(p.styleKey);
+        for (const auto &[name, value] : paintAttributes(componentStyle(g.components, p.styleKey), p.paint, g.unit))
+            f.paint.insert(latin1(name), QString::fromLatin1(value));
         if (p.clipPath)
             f.clipPath = latin1(p.clipPath);
         out.append(f);
     }
     return out;
+}
+
+QString SvgFace::headTransform(const HeadPose &head) const
+{
+    return QString::fromLatin1(headTransformText(buildGeometry(m_face, m_style), head));
 }
 
 QByteArray SvgFace::svg(const Pose &pose) const
@@ -807,7 +805,7 @@ QByteArray SvgFace::svg(const Pose &pose) const
     }
     out += "</defs>\n";
 
-    out += "<g id=\"head\" transform=\"" + headTransform(g, pose.head)
+    out += "<g id=\"head\" transform=\"" + headTransformText(g, pose.head)
         + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
     for (bool dynamic : {false, true}) {
         out += dynamic ? "<g id=\"dynamic-layer\">\n" : "<g id=\"static-layer\">\n";
@@ -831,7 +829,14 @@ QByteArray SvgFace::svg(const Pose &pose) const
                 out += p.clipPath;
                 out += ")\"";
             }
-            out += styleAttributes(componentStyle(g.components, p.styleKey), p.paint, g.unit);
+            for (const auto &[name, value] :
+                paintAttributes(componentStyle(g.components, p.styleKey), p.paint, g.unit)) {
+                out += ' ';
+                out += name;
+                out += "=\"";
+                out += value;
+                out += '"';
+            }
             out += "/>\n";
         }
         out += "</g>\n";

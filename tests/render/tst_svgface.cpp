@@ -777,8 +777,10 @@ private Q_SLOTS:
         const FaceModel face = testFace();
         Pose pose;
         pose.head = head;
-        const Node root = parsed(SvgFace(face, Style()).svg(pose));
+        const SvgFace svgFace(face, Style());
+        const Node root = parsed(svgFace.svg(pose));
         const QString attr = findId(root, QStringLiteral("head"))->attribute(QStringLiteral("transform"));
+        QCOMPARE(svgFace.headTransform(head), attr);
         // Apply the SVG transform list left to right, as SVG composes it.
         QTransform t;
         static const QRegularExpression item(QStringLiteral("(\\w+)\\(([^)]*)\\)"));
@@ -881,6 +883,20 @@ private Q_SLOTS:
             const QColor lip = s.components.value(QStringLiteral("lips")).fill;
             QVERIFY(colourDistance(lip, QColor(0, 220, 0)) > 60);
             QVERIFY(lip.red() > lip.green());
+        }
+        // A black-and-white photo: skin, lips and iris keep the preset's colours; the hair
+        // takes its shade.
+        {
+            Style s = base;
+            const QImage grey = syntheticPhoto(
+                face, QColor(180, 180, 180), QColor(90, 90, 90), QColor(140, 140, 140), QColor(60, 60, 60), true)
+                                    .convertToFormat(QImage::Format_Grayscale8);
+            QVERIFY(grey.allGray());
+            s.sampleColours(grey, face);
+            for (const char *key : {"face", "lips", "eyeballs"})
+                QCOMPARE(s.components.value(QLatin1StringView(key)).fill,
+                    base.components.value(QLatin1StringView(key)).fill);
+            QVERIFY(colourDistance(s.components.value(QStringLiteral("hair")).fill, QColor(90, 90, 90)) <= 3);
         }
         // A null photo changes nothing.
         {
