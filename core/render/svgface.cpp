@@ -786,7 +786,16 @@ QByteArray SvgFace::svg(const Pose &pose) const
 {
     const SvgFaceGeometry g = buildGeometry(m_face, m_style);
     const std::vector<Part> parts = buildParts(g, m_face, m_style, pose);
-    const QSize size = m_face.imageSize().isValid() ? m_face.imageSize() : QSize(512, 512);
+    // Without a photo (a face placed by hand), the frame holds the points with equal margins.
+    QSize size = m_face.imageSize();
+    if (!size.isValid() || size.isEmpty()) {
+        const QRectF b = m_face.bounds();
+        const double w = b.right() + std::max(0.0, b.left());
+        const double h = b.bottom() + std::max(0.0, b.top());
+        size = std::isfinite(w) && std::isfinite(h) && w >= 1 && h >= 1 && w < 1e5 && h < 1e5
+            ? QSize(int(std::ceil(w)), int(std::ceil(h)))
+            : QSize(512, 512);
+    }
 
     QByteArray out;
     out.reserve(12000);

@@ -373,6 +373,15 @@ private Q_SLOTS:
         QCOMPARE(root.attribute(QStringLiteral("version")), QStringLiteral("1.1"));
     }
 
+    void viewBoxWithoutAPhotoHoldsThePoints()
+    {
+        const FaceModel face = averageFace(QRectF(50, 60, 200, 220), QSize());
+        const QRectF b = face.bounds();
+        const Node root = parsed(SvgFace(face, Style()).svg());
+        QCOMPARE(root.attribute(QStringLiteral("viewBox")),
+            QStringLiteral("0 0 %1 %2").arg(std::ceil(b.right() + b.left())).arg(std::ceil(b.bottom() + b.top())));
+    }
+
     void layersAndComponentIds()
     {
         const Node root = parsed(SvgFace(testFace(), preset("normal")).svg());
