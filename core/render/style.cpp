@@ -189,12 +189,16 @@ QStringList Style::presetNames()
 
 Style Style::preset(const QString &name, bool *ok)
 {
+    const bool known = presetNames().contains(name);
+    if (ok)
+        *ok = known;
+    if (!known)
+        return Style();
+    // "normal" (thesis Fig. 7.8(a)): polyline eyebrows by corner cutting, the full nose.
     Style s;
     s.name = name;
     s.components = baseComponents();
-    bool known = true;
-    if (name == QLatin1StringView("normal")) {
-    } else if (name == QLatin1StringView("soft")) {
+    if (name == QLatin1StringView("soft")) {
         // Thesis Fig. 7.8(b): Bezier eyebrows and a simpler nose.
         s.eyebrows = EyebrowVariant::Bezier;
         s.nose = NoseVariant::Simple;
@@ -207,18 +211,13 @@ Style Style::preset(const QString &name, bool *ok)
         s.components[QStringLiteral("nose")].strokeWidth = 3.0;
         s.components[QStringLiteral("lips")].strokeWidth = 2.4;
     } else if (name == QLatin1StringView("cute")) {
-        // Thesis Fig. 7.8(c): rounder, shorter jaw, larger eyeballs, smaller nose (by rule, see
-        // SvgFace), softer brows.
+        // Thesis Fig. 7.8(c): rounder, shorter jaw, larger eyes and eyeballs, smaller nose (by
+        // rule, in SvgFace), softer brows and blushing cheeks.
         s.cute = true;
         s.eyebrows = EyebrowVariant::Bezier;
         s.nose = NoseVariant::Simple;
         s.components[QStringLiteral("cheeks")].visible = true;
-    } else {
-        known = false;
-        s = Style();
     }
-    if (ok)
-        *ok = known;
     return s;
 }
 
