@@ -22,7 +22,8 @@ struct DetectOptions
     QString debugDir; // when set, intermediate images are written there as PNGs
 };
 
-enum class DetectStatus { Ok, NoFace, ModelMissing, Cancelled, BadImage };
+// Unsupported: the requested method is not implemented in this build.
+enum class DetectStatus { Ok, NoFace, ModelMissing, Cancelled, BadImage, Unsupported };
 
 struct DetectionResult
 {

@@ -11,9 +11,10 @@ namespace toonface {
 
 class FaceModel;
 
-// How one drawn component looks. Component names are the SVG ids of SvgFace
-// ("hair", "face", "ears", "nose", "eyebrows", "eyes", "eyeballs", "lips", "mouth-inner",
-// "jaw", ...).
+// How one drawn component looks. Component names are the style keys of SvgFace's parts:
+// "hair", "ears", "face", "jaw", "cheeks", "nose", "eyebrows", "eyes", "eyeballs", "pupils",
+// "highlights", "lips", "mouth-inner", "teeth", "tongue". A key missing from a Style's map
+// is drawn as in the "normal" preset.
 struct ComponentStyle
 {
     QColor fill;          // invalid colour = no fill
