@@ -72,7 +72,7 @@ private Q_SLOTS:
 
     void fitShowsTheWholePhoto()
     {
-        QVERIFY(m_photo->isFitToWindow());
+        QCOMPARE(m_photo->fitMode(), PhotoView::Fit::Photo);
         const QRect photoInView = m_photo->mapFromScene(QRectF(QPointF(), QSizeF(fixture::kPhotoSize))).boundingRect();
         QVERIFY2(m_photo->viewport()->rect().adjusted(-1, -1, 1, 1).contains(photoInView),
             qPrintable(QStringLiteral("photo at %1,%2 %3x%4")
@@ -171,11 +171,29 @@ private Q_SLOTS:
             Qt::NoModifier, Qt::NoScrollPhase, false);
         QApplication::sendEvent(m_photo->viewport(), &wheel);
         QVERIFY(m_photo->zoom() > fitted * 1.2);
-        QVERIFY(!m_photo->isFitToWindow());
+        QCOMPARE(m_photo->fitMode(), PhotoView::Fit::None);
         m_photo->fitToWindow();
         QVERIFY(qAbs(m_photo->zoom() - fitted) < 1e-6);
         m_photo->zoomToActualSize();
         QCOMPARE(m_photo->zoom(), 1.0);
+    }
+
+    void zoomToFaceFramesThePoints()
+    {
+        const double photoZoom = m_photo->zoom();
+        m_photo->zoomToFace();
+        QCOMPARE(m_photo->fitMode(), PhotoView::Fit::Face);
+        QVERIFY(m_photo->zoom() > photoZoom);
+        const QRect face = m_photo->mapFromScene(m_doc->face().bounds()).boundingRect();
+        QVERIFY(m_photo->viewport()->rect().contains(face));
+
+        // The mode holds across a resize and a new face.
+        m_window->resize(1100, 800);
+        QTRY_VERIFY(m_photo->viewport()->rect().contains(m_photo->mapFromScene(m_doc->face().bounds()).boundingRect()));
+        m_doc->replaceFace(averageFace(QRectF(40, 40, 100, 120), fixture::kPhotoSize), false, QStringLiteral("Move"));
+        const QRect moved = m_photo->mapFromScene(m_doc->face().bounds()).boundingRect();
+        QVERIFY(m_photo->viewport()->rect().contains(moved));
+        QVERIFY(moved.width() > m_photo->viewport()->width() / 3 || moved.height() > m_photo->viewport()->height() / 3);
     }
 
     void handlesHiddenWithoutFace()

@@ -19,6 +19,7 @@ namespace {
 constexpr double kMinZoom = 0.02;
 constexpr double kMaxZoom = 32.0;
 constexpr double kZoomStep = 1.25;
+constexpr double kFaceMargin = 0.06; // around the face's points when zooming to the face
 
 // The feature outlines drawn under the handles, as chains of point IDs; `closed` joins the
 // last point to the first. They show which point is which part of the face.
@@ -130,8 +131,24 @@ void PhotoView::zoomToActualSize()
 
 void PhotoView::fitToWindow()
 {
-    m_fit = true;
-    const QRectF rect = sceneRect();
+    m_fit = Fit::Photo;
+    applyFit();
+}
+
+void PhotoView::zoomToFace()
+{
+    m_fit = Fit::Face;
+    applyFit();
+}
+
+void PhotoView::applyFit()
+{
+    QRectF rect = sceneRect();
+    if (m_fit == Fit::Face && m_document->hasFace()) {
+        const QRectF face = m_document->face().bounds();
+        const double margin = kFaceMargin * std::max(face.width(), face.height());
+        rect = face.adjusted(-margin, -margin, margin, margin);
+    }
     if (!rect.isEmpty())
         fitInView(rect, Qt::KeepAspectRatio);
     Q_EMIT zoomChanged(zoom());
@@ -151,8 +168,8 @@ void PhotoView::wheelEvent(QWheelEvent *event)
 void PhotoView::resizeEvent(QResizeEvent *event)
 {
     QGraphicsView::resizeEvent(event);
-    if (m_fit)
-        fitToWindow();
+    if (m_fit != Fit::None)
+        applyFit();
 }
 
 void PhotoView::onDocumentChanged(ChangeFlags what)
@@ -178,8 +195,8 @@ void PhotoView::syncPhoto()
         content |= m_document->face().bounds();
     const double margin = 0.03 * std::max(content.width(), content.height());
     m_scene->setSceneRect(content.adjusted(-margin, -margin, margin, margin));
-    if (m_fit)
-        fitToWindow();
+    if (m_fit != Fit::None)
+        applyFit();
 }
 
 void PhotoView::syncPoints()
@@ -222,7 +239,7 @@ void PhotoView::setZoom(double zoom)
     const double current = this->zoom();
     if (current <= 0 || zoom == current)
         return;
-    m_fit = false;
+    m_fit = Fit::None;
     scale(zoom / current, zoom / current);
     Q_EMIT zoomChanged(this->zoom());
 }

@@ -16,7 +16,9 @@ class PointHandle;
 // The photo with the 72 points as draggable handles, coloured by group, over thin outlines
 // of the features. Dragging a handle moves the point in the document (one undo step per drag);
 // the handles follow the document, never the other way round. The wheel zooms about the
-// cursor; fitToWindow() (the initial mode) keeps the photo fitted as the view resizes.
+// cursor. Two fit modes keep their target framed as the view resizes and the face changes:
+// fitToWindow() (the whole photo) and zoomToFace() (the initial mode: the face, where the
+// points are edited; the whole photo while there is no face).
 class PhotoView : public QGraphicsView
 {
     Q_OBJECT
@@ -30,7 +32,8 @@ public:
     PointHandle *handle(int index) const;
     // Current zoom: view pixels per photo pixel.
     double zoom() const;
-    bool isFitToWindow() const { return m_fit; }
+    enum class Fit { None, Photo, Face };
+    Fit fitMode() const { return m_fit; }
 
     // Called by the handles.
     void dragPoint(int index, QPointF pos, bool commit);
@@ -42,6 +45,7 @@ public Q_SLOTS:
     void zoomOut();
     void zoomToActualSize();
     void fitToWindow();
+    void zoomToFace();
 
 Q_SIGNALS:
     // A point came under the cursor (index), or none did any more (-1).
@@ -58,6 +62,7 @@ private:
     void syncPoints();
     void updateOutlines();
     void setZoom(double zoom);
+    void applyFit();
 
     Document *m_document;
     QGraphicsScene *m_scene;
@@ -66,7 +71,7 @@ private:
     QGraphicsPathItem *m_outlineItem;
     QVector<PointHandle *> m_handles;
     bool m_showIds = false;
-    bool m_fit = true;
+    Fit m_fit = Fit::Face;
 };
 
 } // namespace toonface

@@ -208,6 +208,9 @@ void MainWindow::createActions()
     m_fitAction = make(QStringLiteral("actionFit"), tr("&Fit to Window"), QKeySequence(Qt::CTRL | Qt::Key_0));
     m_fitAction->setIcon(QIcon::fromTheme(QStringLiteral("zoom-fit-best")));
     connect(m_fitAction, &QAction::triggered, m_photoView, &PhotoView::fitToWindow);
+    m_zoomFaceAction = make(QStringLiteral("actionZoomFace"), tr("Zoom to F&ace"), QKeySequence(Qt::CTRL | Qt::Key_2));
+    m_zoomFaceAction->setIcon(QIcon::fromTheme(QStringLiteral("zoom-in")));
+    connect(m_zoomFaceAction, &QAction::triggered, m_photoView, &PhotoView::zoomToFace);
     m_showIdsAction = make(QStringLiteral("actionShowIds"), tr("Show Point &IDs"), QKeySequence(Qt::CTRL | Qt::Key_I));
     m_showIdsAction->setCheckable(true);
     connect(m_showIdsAction, &QAction::toggled, this, [this](bool show) {
@@ -251,6 +254,7 @@ void MainWindow::createMenus()
     view->addAction(m_zoomOutAction);
     view->addAction(m_actualSizeAction);
     view->addAction(m_fitAction);
+    view->addAction(m_zoomFaceAction);
     view->addSeparator();
     view->addAction(m_showIdsAction);
 
@@ -286,6 +290,7 @@ void MainWindow::createToolBar()
     bar->addWidget(m_styleCombo);
     bar->addSeparator();
     bar->addAction(m_fitAction);
+    bar->addAction(m_zoomFaceAction);
 }
 
 void MainWindow::createStatusBar()
@@ -653,6 +658,7 @@ void MainWindow::updateActions()
     m_redetectAction->setEnabled(hasPhoto && !isBusy());
     m_redetectKeepAction->setEnabled(hasPhoto && hasFace && !isBusy() && m_document->face().handPlacedCount() > 0);
     m_styleCombo->setEnabled(hasFace);
+    m_zoomFaceAction->setEnabled(hasFace);
 }
 
 void MainWindow::onStyleActivated(int index)

@@ -133,6 +133,7 @@ private:
     QAction *m_zoomOutAction = nullptr;
     QAction *m_actualSizeAction = nullptr;
     QAction *m_fitAction = nullptr;
+    QAction *m_zoomFaceAction = nullptr;
     QAction *m_showIdsAction = nullptr;
     QAction *m_aboutAction = nullptr;
     QMenu *m_recentMenu = nullptr;
