@@ -477,10 +477,11 @@ void MainWindow::onDetectionCancelled()
 
 void MainWindow::offerAverageFace(const QString &reason)
 {
-    QMessageBox box(QMessageBox::Information, tr("No Face Found"),
-        tr("No face was found in %1.").arg(m_document->displayName()), QMessageBox::NoButton, this);
-    box.setInformativeText((reason.isEmpty() ? QString() : reason + QStringLiteral("\n\n"))
-        + tr("You can place an average face on the photo and drag its points into place by hand."));
+    // The detector's reason already says what was missing: say it once, naming the file.
+    const QString text = reason.isEmpty() ? tr("No face was found in %1.").arg(m_document->displayName())
+                                          : tr("%1: %2").arg(m_document->displayName(), reason);
+    QMessageBox box(QMessageBox::Information, tr("No Face Found"), text, QMessageBox::NoButton, this);
+    box.setInformativeText(tr("You can place an average face on the photo and drag its points into place by hand."));
     QPushButton *place = box.addButton(tr("&Place Average Face"), QMessageBox::AcceptRole);
     box.addButton(QMessageBox::Cancel);
     box.setDefaultButton(place);
