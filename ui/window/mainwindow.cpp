@@ -143,7 +143,8 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
             const QString error = watcher->result();
             if (!error.isEmpty())
                 statusBar()->showMessage(
-                    tr("Landmark model unavailable (%1): the classic detector will be used.").arg(error),
+                    tr("Landmark model unavailable (%1): detection may fail, but points can be placed by hand.")
+                        .arg(error),
                     kStatusTimeoutMs);
         });
         watcher->setFuture(QtConcurrent::run([] {
@@ -442,10 +443,11 @@ void MainWindow::onDetectionFinished(const DetectionResult &result)
     if (m_job == Job::Detecting)
         setBusy(Job::None, {});
     if (result.status != DetectStatus::Ok) {
-        if (result.status == DetectStatus::NoFace || result.status == DetectStatus::ModelMissing)
+        if (result.status == DetectStatus::BadImage || m_document->hasFace())
+            QMessageBox::warning(this, tr("Detection Failed"),
+                m_document->hasFace() ? tr("%1\nThe points are unchanged.").arg(result.error) : result.error);
+        else // no face, or no detector able to look for one: the user can still place the points
             offerAverageFace(result.error);
-        else
-            QMessageBox::warning(this, tr("Detection Failed"), result.error);
         Q_EMIT detectionDone();
         return;
     }
