@@ -8,6 +8,7 @@
 #include <QFileInfo>
 #include <QGuiApplication>
 #include <QPainter>
+#include <QSysInfo>
 
 #include <dlib/image_processing.h>
 #include <dlib/image_processing/frontal_face_detector.h>
@@ -152,6 +153,34 @@ QImage resizedGray(const QImage &gray, double scale)
     cv::Mat dst(h, w, CV_8UC1, out.bits(), size_t(out.bytesPerLine()));
     cv::resize(src, dst, dst.size(), 0, 0, scale < 1 ? cv::INTER_AREA : cv::INTER_LINEAR);
     return out;
+}
+
+// Grey levels by the usual luma weights (ITU-R BT.601), the same whatever the pixel format:
+// Qt's own conversions to Format_Grayscale8 differ between formats (RGB888 goes through a
+// colour-space-aware path), which would make the landmarks depend on how a photo was stored.
+QImage toGray(const QImage &image)
+{
+    if (image.format() == QImage::Format_Grayscale8)
+        return image;
+    if (image.format() == QImage::Format_Grayscale16)
+        return image.convertToFormat(QImage::Format_Grayscale8);
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+    QImage gray(rgb.size(), QImage::Format_Grayscale8);
+    const cv::Mat src(rgb.height(), rgb.width(), CV_8UC4, const_cast<uchar *>(rgb.constBits()),
+                      size_t(rgb.bytesPerLine()));
+    cv::Mat dst(gray.height(), gray.width(), CV_8UC1, gray.bits(), size_t(gray.bytesPerLine()));
+    // Format_RGB32 is 0xffRRGGBB per 32-bit word: B, G, R, A in memory on little-endian
+    // machines, A, R, G, B on big-endian ones.
+    if constexpr (QSysInfo::ByteOrder == QSysInfo::LittleEndian) {
+        cv::cvtColor(src, dst, cv::COLOR_BGRA2GRAY);
+    } else {
+        cv::Mat planes[4];
+        cv::split(src, planes);
+        cv::Mat bgr;
+        cv::merge(std::vector<cv::Mat>{planes[3], planes[2], planes[1]}, bgr);
+        cv::cvtColor(bgr, dst, cv::COLOR_BGR2GRAY);
+    }
+    return gray;
 }
 
 struct FaceBox
@@ -350,7 +379,7 @@ DetectionResult detectFace(const QImage &image, const DetectOptions &options, co
     };
 
     report(0.0, QStringLiteral("prepare"));
-    const QImage gray = image.convertToFormat(QImage::Format_Grayscale8);
+    const QImage gray = toGray(image);
     const double shortSide = std::min(gray.width(), gray.height());
     lap(QStringLiteral("prepare"));
     if (cancelled())
