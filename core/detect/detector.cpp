@@ -20,6 +20,7 @@
 #include <fstream>
 #include <memory>
 #include <mutex>
+#include <numbers>
 
 namespace toonface {
 
@@ -204,12 +205,22 @@ std::array<QPointF, kIbugPointCount> toPoints(const dlib::full_object_detection 
 // of 5/6) and ignores the head's roll, so after a first fit the face is cut out upright, in
 // the box the first fit's landmarks imply (fitMeanShape), and fitted again. On the shared
 // research photos this halves the error's spread over jittered detector boxes.
+//
+// When the implied box already matches the one the first fit started from (roll under 3
+// degrees, centre and size within 3% of the box), the re-fit would start where the first did,
+// and is skipped.
 std::array<QPointF, kIbugPointCount> fitUpright(const LandmarkModel &model, const GrayView &image,
+                                                const QRectF &startBox,
                                                 const std::array<QPointF, kIbugPointCount> &first)
 {
     const Similarity s = fitMeanShape(model.meanShape, first);
     const double box = s.scale();
     if (!(box > 8) || !std::isfinite(box))
+        return first;
+    const QPointF implied = s.map(QPointF(0.5, 0.5));
+    const double size = std::max(startBox.width(), 1.0);
+    if (std::abs(s.angle()) < 3.0 * std::numbers::pi / 180.0 && QLineF(implied, startBox.center()).length() < 0.03 * size
+        && std::abs(box / size - 1.0) < 0.03)
         return first;
     // The cut-out: twice the box around its centre, at most 600 px across (larger faces are
     // sampled down: the predictor needs no more detail than that).
@@ -522,7 +533,7 @@ DetectionResult detectFace(const QImage &image, const DetectOptions &options, co
     report(0.5, QStringLiteral("landmarks"));
     const GrayView view = viewOf(gray);
     const auto first = toPoints(model->predictor(view, toDlib(face.box)));
-    const std::array<QPointF, kIbugPointCount> ibug = fitUpright(*model, view, first);
+    const std::array<QPointF, kIbugPointCount> ibug = fitUpright(*model, view, face.box, first);
     const FaceModel geometric = faceFromLandmarks68(ibug, image.size());
     lap(QStringLiteral("landmarks"));
     if (cancelled())

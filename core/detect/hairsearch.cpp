@@ -47,7 +47,7 @@ namespace toonface {
 
 namespace {
 
-constexpr double kEyeDistance = 60.0; // working scale: pixels between the eyeball centres
+constexpr double kEyeDistance = 40.0; // working scale: pixels between the eyeball centres
 
 // A colour histogram over 8-bit Lab: 8 lightness bins, 16 bins for each of a and b over
 // their common range [64, 192), smoothed over neighbouring bins so that a few hundred samples
