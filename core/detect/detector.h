@@ -32,6 +32,8 @@ struct DetectionResult
     FaceModel face;           // valid when status == Ok
     QString method;           // the method that produced the points ("landmarks", "classic")
     int faceCount = 0;        // faces seen in the image; the largest, most central one is used
+                              // (the landmark method counts the faces of the size range that found one:
+                              // much smaller faces beside a large one are not looked for)
     QRect faceBox;            // the chosen face's box in image pixels
     QMap<QString, double> timingMs; // per stage, plus "total" (model loading excluded)
     QMap<QString, double> groupConfidence; // per point group name, 0..1

@@ -39,7 +39,7 @@
 //    take the neighbours' median; mirrored rays that disagree by more than 15% both take the
 //    one nearer the estimate; ratios stay within [0.75, 1.6]. With fewer than 7 rays found,
 //    the geometric outline stays.
-// 7. Ears: in rows of the face frame at ear height, the skin-coloured protrusion beyond the
+// 7. Ears: in rows of the face frame at ear height, the skin-like protrusion beyond the
 //    face contour; one of plausible width (0.12..0.45 eye distances) over a plausible height
 //    (half to one and a half ear heights) is the ear, otherwise the ear keeps its estimate.
 
@@ -47,7 +47,7 @@ namespace toonface {
 
 namespace {
 
-constexpr double kEyeDistance = 60.0; // working scale: pixels between the eyeball centres
+constexpr double kEyeDistance = 40.0; // working scale: pixels between the eyeball centres
 
 // A colour histogram over 8-bit Lab: 8 lightness bins, 16 bins for each of a and b over
 // their common range [64, 192), smoothed over neighbouring bins so that a few hundred samples
@@ -419,19 +419,25 @@ void refineFromPhoto(FaceModel *face, const QImage &image, HairSearchReport *rep
         std::vector<double> ys, widths;
         for (double y = browY - 0.25 * earH; y <= noseBaseY + 0.25 * earH; y += 1.0 / ws.scale) {
             const double cx = contourX(y, left);
+            // The skin must end within reach (a run of other pixels): skin-like colour that
+            // goes on is background, not an ear. Such rows count as no ear (width 0).
             double w = 0;
             int gap = 0;
-            for (double t = -0.05 * d; t <= 0.5 * d; t += 1.0 / ws.scale) {
+            bool ended = false;
+            for (double t = -0.05 * d; t <= 0.5 * d + run / ws.scale; t += 1.0 / ws.scale) {
                 const cv::Point p = ws.toWork(f.toImage(QPointF(cx + side * t, y)));
                 if (!ws.inside(p))
                     break;
-                if (ws.pSkin.at<float>(p) >= 0.5f) {
+                if (skinLike.at<float>(p) >= 0.5f) {
                     w = t;
                     gap = 0;
                 } else if (++gap >= run) {
+                    ended = true;
                     break;
                 }
             }
+            if (!ended)
+                w = 0;
             ys.push_back(y);
             widths.push_back(w);
         }

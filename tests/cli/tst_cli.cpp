@@ -128,7 +128,7 @@ private Q_SLOTS:
         QFETCH(QString, file);
         QFETCH(QByteArray, content);
         const QString p = path(file);
-        if (QTest::currentDataTag() != QLatin1StringView("missing")) {
+        if (qstrcmp(QTest::currentDataTag(), "missing") != 0) {
             QFile f(p);
             QVERIFY(f.open(QIODevice::WriteOnly));
             f.write(content);
