@@ -1,0 +1,2 @@
+list(APPEND TOONFACE_CORE_SOURCES
+  render/videoencoder.h render/videoencoder.cpp)
