@@ -346,17 +346,20 @@ private:
 
 // ---- GIF palette
 
-// One palette for the whole GIF, made by median cut of the first frame's colours (so flat
-// cartoon colours come out exact), plus a coarse 3x3x3 colour cube for colours that appear
-// later (an opening mouth), plus one transparent entry that lets the encoder skip unchanged
-// pixels. Pixels map to the nearest entry through a lazily filled 6-bit-per-channel table.
+// One palette for the whole GIF, made by median cut of the colours of the first frame and the
+// caller's samples (so flat cartoon colours come out exact), plus a coarse 3x3x3 colour cube
+// for colours that appear only later, plus one transparent entry that lets the encoder skip
+// unchanged pixels. (FFmpeg's GIF encoder writes every frame whose palette differs from the
+// first one whole, so the palette stays fixed.) Pixels map to the nearest entry through a lazily filled
+// 6-bit-per-channel table.
 class GifPalette
 {
 public:
     static constexpr int kAdaptive = 228;
     static constexpr int kTransparent = 255;
 
-    void build(const QImage &rgb32)
+    // requires: the images are RGB32
+    void build(const QVector<QImage> &images)
     {
         struct Bin
         {
@@ -364,15 +367,17 @@ public:
             quint64 r = 0, g = 0, b = 0;
         };
         std::vector<Bin> bins(1 << 15);
-        for (int y = 0; y < rgb32.height(); ++y) {
-            const auto *line = reinterpret_cast<const QRgb *>(rgb32.constScanLine(y));
-            for (int x = 0; x < rgb32.width(); ++x) {
-                const QRgb c = line[x];
-                Bin &bin = bins[((qRed(c) >> 3) << 10) | ((qGreen(c) >> 3) << 5) | (qBlue(c) >> 3)];
-                ++bin.count;
-                bin.r += qRed(c);
-                bin.g += qGreen(c);
-                bin.b += qBlue(c);
+        for (const QImage &rgb32 : images) {
+            for (int y = 0; y < rgb32.height(); ++y) {
+                const auto *line = reinterpret_cast<const QRgb *>(rgb32.constScanLine(y));
+                for (int x = 0; x < rgb32.width(); ++x) {
+                    const QRgb c = line[x];
+                    Bin &bin = bins[((qRed(c) >> 3) << 10) | ((qGreen(c) >> 3) << 5) | (qBlue(c) >> 3)];
+                    ++bin.count;
+                    bin.r += qRed(c);
+                    bin.g += qGreen(c);
+                    bin.b += qBlue(c);
+                }
             }
         }
         struct Entry
@@ -939,6 +944,7 @@ public:
         m_step = std::max(1, int(std::ceil(fps / std::max(1.0, options.gifMaxFps) - 1e-9)));
         m_outFps = fps / m_step;
         m_background = options.background;
+        m_paletteSamples = options.paletteSamples;
         if (!openOutput(path, "gif", error))
             return false;
         m_video.reset(avcodec_alloc_context3(gif));
@@ -985,8 +991,12 @@ protected:
         if (index % m_step != 0)
             return true;
         const QImage rgb = opaqueRgb32(frame, m_background);
-        if (m_written == 0)
-            m_palette.build(rgb);
+        if (m_written == 0) {
+            QVector<QImage> images = {rgb};
+            for (const QImage &sample : m_paletteSamples)
+                images.append(opaqueRgb32(sample, m_background));
+            m_palette.build(images);
+        }
         if (av_frame_make_writable(m_frame.get()) < 0)
             return fail(error, m_path, QStringLiteral("out of memory"));
         m_palette.map(rgb, m_frame->data[0], m_frame->linesize[0]);
@@ -1004,6 +1014,7 @@ private:
     double m_outFps = 25;
     QColor m_background;
     GifPalette m_palette;
+    QVector<QImage> m_paletteSamples;
     FramePtr m_frame;
     int m_input = 0;
     int64_t m_written = 0;

@@ -53,6 +53,10 @@ struct VideoOptions
     // A GIF keeps every k-th frame, k the smallest integer with fps / k <= gifMaxFps (GIF
     // delays are whole hundredths and browsers slow down delays under 0.02 s).
     double gifMaxFps = 25;
+    // GIF: one palette serves the whole file, made from the first frame and these images.
+    // Give frames showing colours the first frame lacks (the mouth wide open, the eyes shut);
+    // colours seen nowhere map to the nearest palette entry.
+    QVector<QImage> paletteSamples;
 };
 
 // Writes frames given as QImages at a fixed rate, with optional sound, as an MP4, an animated

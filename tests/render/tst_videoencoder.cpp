@@ -158,6 +158,7 @@ private Q_SLOTS:
     void gif_data();
     void gif();
     void gifColours();
+    void gifPaletteSamples();
 
     void pngSequence();
     void pngSequenceRemovesStaleFrames();
@@ -466,6 +467,36 @@ void TestVideoEncoder::gifColours()
         const double diff = meanDifference(*frame, movingShape(i, size));
         QVERIFY2(diff < 2.0, qPrintable(QStringLiteral("frame %1: mean difference %2").arg(i).arg(diff)));
     }
+}
+
+// A colour that shows only from frame 5 on is exact when a palette sample holds it.
+void TestVideoEncoder::gifPaletteSamples()
+{
+    const QSize size(96, 64);
+    auto frameAt = [size](int i) {
+        QImage image = movingShape(i, size);
+        if (i >= 5) {
+            QPainter p(&image);
+            p.fillRect(QRect(60, 8, 30, 30), QColor(0, 160, 90));
+        }
+        return image;
+    };
+    QTemporaryDir dir;
+    QString error;
+    const QRect square(60, 8, 30, 30);
+    double diff[2] = {0, 0};
+    for (int withSample : {0, 1}) {
+        const QString path = dir.filePath(QStringLiteral("s%1.gif").arg(withSample));
+        VideoOptions options;
+        if (withSample)
+            options.paletteSamples = {frameAt(9)};
+        QVERIFY2(writeVideo(path, VideoFormat::Gif, size, 25, 10, frameAt, {}, &error, options), qPrintable(error));
+        const auto frame = readVideoFrame(path, 7, &error);
+        QVERIFY2(frame, qPrintable(error));
+        diff[withSample] = meanDifference(*frame, frameAt(7), square);
+    }
+    QVERIFY2(diff[1] < 1.0, qPrintable(QString::number(diff[1])));
+    QVERIFY2(diff[0] > diff[1] + 5, qPrintable(QStringLiteral("%1 %2").arg(diff[0]).arg(diff[1])));
 }
 
 void TestVideoEncoder::pngSequence()
