@@ -571,6 +571,7 @@ public:
             cancel();
             return false;
         }
+        m_headerWritten = false; // the trailer is written once, whatever it returns
         int r = av_write_trailer(m_fmt);
         if (r >= 0)
             r = avio_closep(&m_fmt->pb);
@@ -594,6 +595,10 @@ public:
 
     void cancel() override
     {
+        // FFmpeg 5.1's GIF muxer holds the last packet (to learn its delay) and frees it only
+        // in its trailer.
+        if (m_fmt && m_headerWritten && m_trailerOnCancel)
+            av_write_trailer(m_fmt);
         closeAll();
         if (!m_temp.isEmpty()) {
             QFile::remove(m_temp);
@@ -644,6 +649,7 @@ protected:
         av_dict_free(options);
         if (r < 0)
             return fail(error, m_path, QStringLiteral("cannot write the header: %1").arg(avError(r)));
+        m_headerWritten = true;
         m_packet.reset(av_packet_alloc());
         return true;
     }
@@ -700,6 +706,7 @@ protected:
             avformat_free_context(m_fmt);
             m_fmt = nullptr;
         }
+        m_headerWritten = false;
         m_video.reset();
         m_audio.reset();
     }
@@ -713,6 +720,8 @@ protected:
     AVStream *m_audioStream = nullptr;
     PacketPtr m_packet;
     int64_t m_frameDuration = 1; // in the video encoder's time base
+    bool m_headerWritten = false;
+    bool m_trailerOnCancel = false;
 };
 
 AVRational frameRateOf(double fps)
@@ -945,6 +954,7 @@ public:
         m_outFps = fps / m_step;
         m_background = options.background;
         m_paletteSamples = options.paletteSamples;
+        m_trailerOnCancel = true;
         if (!openOutput(path, "gif", error))
             return false;
         m_video.reset(avcodec_alloc_context3(gif));

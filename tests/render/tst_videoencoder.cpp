@@ -331,6 +331,12 @@ void TestVideoEncoder::mp4AudioFromFile()
     const auto decoded = readAudio(wav, 44100, &error);
     QVERIFY2(decoded, qPrintable(error));
     QCOMPARE(decoded->size(), qsizetype(2.5 * 44100));
+    const auto wavInfo = probeMedia(wav, &error);
+    QVERIFY2(wavInfo, qPrintable(error));
+    QVERIFY(wavInfo->hasAudio);
+    QCOMPARE(wavInfo->audioChannels, 2);
+    QCOMPARE(wavInfo->audioDurationS, 2.5);
+    QCOMPARE(wavInfo->frameCount, 0);
 
     const QString path = dir.filePath(u"file.mp4"_qs);
     QVERIFY2(writeFrames(path, VideoFormat::Mp4, QSize(64, 64), 25, 50, AudioSource::fromFile(wav), &error),
