@@ -3,6 +3,7 @@
 #include "render/videoencoder.h"
 
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QPainter>
 #include <QPainterPath>
@@ -143,12 +144,20 @@ QJsonObject measure(VideoFormat format, const QString &name, const VideoOptions 
     return r;
 }
 
+// The machine's load while measuring (other work on the same cores slows the encoder down).
+QString loadAverage()
+{
+    QFile f(QStringLiteral("/proc/loadavg"));
+    return f.open(QIODevice::ReadOnly) ? QString::fromLatin1(f.readLine()).section(QLatin1Char(' '), 0, 2) : QString();
+}
+
 } // namespace
 
 // MP4 at 512x512 (the target: at least 5x real time on 2 cores), with its sound.
 TOONFACE_BENCHMARK("video.mp4", [] {
     QJsonObject r = measure(VideoFormat::Mp4, QStringLiteral("bench.mp4"), {}, true);
     r.insert(QStringLiteral("cores"), QThread::idealThreadCount());
+    r.insert(QStringLiteral("loadAverage"), loadAverage());
     VideoOptions oneThread;
     oneThread.threads = 1;
     r.insert(QStringLiteral("oneThread"), measure(VideoFormat::Mp4, QStringLiteral("bench1.mp4"), oneThread, true));

@@ -1236,9 +1236,11 @@ bool VideoWriter::finish(QString *error)
     if (!d->sink)
         return fail(
             error, d->path.isEmpty() ? QStringLiteral("video") : d->path, QStringLiteral("the writer is not open"));
-    if (d->failed) {
+    if (d->failed || d->frames == 0) {
         cancel();
-        return fail(error, d->path, QStringLiteral("an earlier frame failed; nothing was written"));
+        return fail(error, d->path,
+            d->failed ? QStringLiteral("an earlier frame failed; nothing was written")
+                      : QStringLiteral("no frames to write"));
     }
     const bool ok = d->sink->finish(error);
     if (!ok)

@@ -91,7 +91,8 @@ public:
     // Encodes the next frame. requires: open; frame.size() == the size given to open().
     bool addFrame(const QImage &frame, QString *error);
 
-    // Flushes the encoders, writes the file (or the last frame) and closes. A PNG sequence's
+    // Flushes the encoders, writes the file (or the last frame) and closes; fails (writing
+    // nothing) when no frame was added. A PNG sequence's
     // folder ends up holding exactly this export's frame_NNNNN.png files: frames of the same
     // pattern beyond this export's last (left by an earlier, longer export) are removed.
     bool finish(QString *error);

@@ -174,6 +174,8 @@ private Q_SLOTS:
     void errors();
     void unreadableAudio();
     void frameOfTheWrongSize();
+    void noFrames_data();
+    void noFrames();
     void unwritableFolder();
     void probeErrors();
 };
@@ -738,6 +740,23 @@ void TestVideoEncoder::frameOfTheWrongSize()
     QCOMPARE(writer.framesAdded(), 1);
     QVERIFY(writer.finish(&error));
     QCOMPARE(probeMedia(path, &error)->frameCount, 1);
+}
+
+void TestVideoEncoder::noFrames_data()
+{
+    cancelLeavesNothing_data();
+}
+
+void TestVideoEncoder::noFrames()
+{
+    QFETCH(VideoFormat, format);
+    QFETCH(QString, name);
+    QTemporaryDir dir;
+    const QString path = name.isEmpty() ? dir.path() : dir.filePath(name);
+    QString error;
+    QVERIFY(!writeFrames(path, format, QSize(32, 32), 25, 0, {}, &error));
+    QCOMPARE(error, QDir::toNativeSeparators(path) + u": no frames to write"_qs);
+    QCOMPARE(allEntries(dir.path()), QStringList());
 }
 
 void TestVideoEncoder::unwritableFolder()
