@@ -107,6 +107,7 @@ private Q_SLOTS:
     void readsRhubarbOutput();
     void readsPapagayoFile();
     void readsToonfaceJson();
+    void readsPapagayoMohoExport();
     void acceptsCrLfAndBom();
     void openLastCueLastsOneFrame();
 
@@ -437,6 +438,23 @@ void TestLipSyncFormats::readsToonfaceJson()
     QVERIFY2(t, qPrintable(error));
     compareCues(
         t->cues, {cue(0.1, 0.2, MouthShape::A), cue(0.2, 0.35, MouthShape::N)}, 1e-12, [](MouthShape s) { return s; });
+}
+
+// Papagayo's Moho export repeats "rest" on the frame before a pause ends, and leaves the last
+// phoneme open.
+void TestLipSyncFormats::readsPapagayoMohoExport()
+{
+    LipSyncOptions o;
+    o.fps = 24;
+    QString error;
+    const auto m = parseLipSync("MohoSwitch1\n3 etc\n5 E\n9 rest\n14 rest\n15 MBP\n17 O\n", LipSyncFormat::MohoSwitch,
+        u"papagayo.dat"_qs, o, &error);
+    QVERIFY2(m, qPrintable(error));
+    const double f = 1.0 / 24;
+    compareCues(m->cues,
+        {cue(2 * f, 4 * f, MouthShape::H), cue(4 * f, 8 * f, MouthShape::I), cue(14 * f, 16 * f, MouthShape::M),
+            cue(16 * f, 17 * f, MouthShape::O)},
+        1e-12, [](MouthShape s) { return s; });
 }
 
 void TestLipSyncFormats::acceptsCrLfAndBom()
