@@ -3,4 +3,5 @@ list(APPEND TOONFACE_CORE_SOURCES
   io/pointsjson.h io/pointsjson.cpp
   io/facejson.h io/facejson.cpp
   io/project.h io/project.cpp
-  io/imageio.h io/imageio.cpp)
+  io/imageio.h io/imageio.cpp
+  io/lipsyncformats.h io/lipsyncformats.cpp)
