@@ -52,7 +52,8 @@ int main(int argc, char *argv[])
     if (args.isEmpty())
         return fail(ExitUsage, QStringLiteral("no command given; try 'toonface-cli --help'"));
     const QString first = args.takeFirst();
-    if (first == QLatin1StringView("--help") || first == QLatin1StringView("-h") || first == QLatin1StringView("help")) {
+    if (first == QLatin1StringView("--help") || first == QLatin1StringView("-h")
+        || first == QLatin1StringView("help")) {
         printHelp();
         return ExitOk;
     }

@@ -78,8 +78,8 @@ bool readPts(const QString &path, std::array<QPointF, kIbugPointCount> *pts)
         return false;
     const QString text = QString::fromUtf8(file.readAll());
     const int open = text.indexOf(QLatin1Char('{')), close = text.indexOf(QLatin1Char('}'));
-    const QStringList nums = text.mid(open + 1, close - open - 1)
-                                 .split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts);
+    const QStringList nums
+        = text.mid(open + 1, close - open - 1).split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts);
     if (open < 0 || close < open || nums.size() != 2 * kIbugPointCount)
         return false;
     for (int i = 0; i < kIbugPointCount; ++i)
@@ -97,10 +97,11 @@ static QJsonObject benchModelLoad()
     const QFileInfo info(path);
     QJsonObject r;
     if (!info.isFile())
-        return QJsonObject{{QStringLiteral("skipped"), QStringLiteral("no model at %1").arg(path)}};
+        return QJsonObject {{QStringLiteral("skipped"), QStringLiteral("no model at %1").arg(path)}};
     const QByteArray old = qgetenv("TOONFACE_LANDMARK_MODEL");
     const bool had = qEnvironmentVariableIsSet("TOONFACE_LANDMARK_MODEL");
-    qputenv("TOONFACE_LANDMARK_MODEL", QFile::encodeName(info.absolutePath() + QStringLiteral("/./") + info.fileName()));
+    qputenv(
+        "TOONFACE_LANDMARK_MODEL", QFile::encodeName(info.absolutePath() + QStringLiteral("/./") + info.fileName()));
     double ms = 0;
     QString error;
     const bool ok = preloadLandmarkModel(&error, &ms);
@@ -120,7 +121,7 @@ static QJsonObject benchGrace640()
 {
     const QImage photo(kGrace);
     if (photo.isNull())
-        return QJsonObject{{QStringLiteral("skipped"), QStringLiteral("%1 missing").arg(kGrace)}};
+        return QJsonObject {{QStringLiteral("skipped"), QStringLiteral("%1 missing").arg(kGrace)}};
     return stageTimes(framed(photo, QSize(640, 480)));
 }
 
@@ -128,7 +129,7 @@ static QJsonObject benchGrace1080()
 {
     const QImage photo(kGrace);
     if (photo.isNull())
-        return QJsonObject{{QStringLiteral("skipped"), QStringLiteral("%1 missing").arg(kGrace)}};
+        return QJsonObject {{QStringLiteral("skipped"), QStringLiteral("%1 missing").arg(kGrace)}};
     return stageTimes(framed(photo, QSize(1920, 1080)));
 }
 
@@ -145,7 +146,7 @@ static QJsonObject benchNme()
 {
     const QString dataDir = bench::sharedDataDir();
     if (dataDir.isEmpty())
-        return QJsonObject{{QStringLiteral("skipped"), QStringLiteral("no shared data (TOONFACE_DATA_DIR)")}};
+        return QJsonObject {{QStringLiteral("skipped"), QStringLiteral("no shared data (TOONFACE_DATA_DIR)")}};
     const QDir dir(QDir(dataDir).filePath(QStringLiteral("faces")));
     QJsonArray rows;
     double sum = 0;
@@ -155,7 +156,7 @@ static QJsonObject benchNme()
         for (const char *ext : {".png", ".jpg"})
             if (QFileInfo::exists(dir.filePath(pts.completeBaseName() + QLatin1String(ext))))
                 imagePath = dir.filePath(pts.completeBaseName() + QLatin1String(ext));
-        std::array<QPointF, kIbugPointCount> truth{};
+        std::array<QPointF, kIbugPointCount> truth {};
         if (imagePath.isEmpty() || !readPts(pts.filePath(), &truth))
             continue;
         const QImage image(imagePath);

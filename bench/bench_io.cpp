@@ -5,8 +5,8 @@
 #include "io/project.h"
 
 #include <QFileInfo>
-#include <QJsonDocument>
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <QTemporaryDir>
 
 #include <random>
@@ -26,36 +26,31 @@ QJsonObject tenMinuteTimeline()
 
     QJsonArray mouth;
     for (double t = 0; t < duration;) {
-        mouth.append(QJsonObject{{QStringLiteral("t"), t}, {QStringLiteral("shape"), QLatin1StringView(shapes[rng() % 9])}});
+        mouth.append(
+            QJsonObject {{QStringLiteral("t"), t}, {QStringLiteral("shape"), QLatin1StringView(shapes[rng() % 9])}});
         t += unit(rng) < 0.02 ? 0.4 + unit(rng) : 1.0 / 12.0 * (0.5 + 0.6 * unit(rng));
     }
     QJsonArray blinks;
     for (double t = 1.0 + 2.0 * unit(rng); t < duration; t += 2.5 + 3.0 * unit(rng))
-        blinks.append(QJsonObject{{QStringLiteral("t"), t}, {QStringLiteral("duration"), 0.12 + 0.08 * unit(rng)}});
+        blinks.append(QJsonObject {{QStringLiteral("t"), t}, {QStringLiteral("duration"), 0.12 + 0.08 * unit(rng)}});
     QJsonArray emotions;
     const char *names[] = {"smile", "sad", "angry", "surprise"};
     for (int i = 0; i < 8; ++i) {
         const double start = 20.0 + i * 70.0 + 10.0 * unit(rng);
-        emotions.append(QJsonObject{{QStringLiteral("emotion"), QLatin1StringView(names[i % 4])},
-                                    {QStringLiteral("start"), start},
-                                    {QStringLiteral("end"), start + 5.0 + 20.0 * unit(rng)},
-                                    {QStringLiteral("intensity"), 0.4 + 0.6 * unit(rng)},
-                                    {QStringLiteral("fadeIn"), 0.3},
-                                    {QStringLiteral("fadeOut"), 0.5}});
+        emotions.append(QJsonObject {{QStringLiteral("emotion"), QLatin1StringView(names[i % 4])},
+            {QStringLiteral("start"), start}, {QStringLiteral("end"), start + 5.0 + 20.0 * unit(rng)},
+            {QStringLiteral("intensity"), 0.4 + 0.6 * unit(rng)}, {QStringLiteral("fadeIn"), 0.3},
+            {QStringLiteral("fadeOut"), 0.5}});
     }
     QJsonArray head;
     for (double t = 0; t < duration; t += 1.5 + unit(rng)) {
-        head.append(QJsonObject{{QStringLiteral("t"), t},
-                                {QStringLiteral("yaw"), 8.0 * (unit(rng) - 0.5)},
-                                {QStringLiteral("pitch"), 5.0 * (unit(rng) - 0.5)},
-                                {QStringLiteral("roll"), 3.0 * (unit(rng) - 0.5)},
-                                {QStringLiteral("easing"), QStringLiteral("inOutCubic")}});
+        head.append(QJsonObject {{QStringLiteral("t"), t}, {QStringLiteral("yaw"), 8.0 * (unit(rng) - 0.5)},
+            {QStringLiteral("pitch"), 5.0 * (unit(rng) - 0.5)}, {QStringLiteral("roll"), 3.0 * (unit(rng) - 0.5)},
+            {QStringLiteral("easing"), QStringLiteral("inOutCubic")}});
     }
-    QJsonObject tracks{{QStringLiteral("mouth"), mouth},
-                       {QStringLiteral("blink"), blinks},
-                       {QStringLiteral("emotion"), emotions},
-                       {QStringLiteral("head"), head}};
-    return QJsonObject{{QStringLiteral("duration"), duration}, {QStringLiteral("tracks"), tracks}};
+    QJsonObject tracks {{QStringLiteral("mouth"), mouth}, {QStringLiteral("blink"), blinks},
+        {QStringLiteral("emotion"), emotions}, {QStringLiteral("head"), head}};
+    return QJsonObject {{QStringLiteral("duration"), duration}, {QStringLiteral("tracks"), tracks}};
 }
 
 Project benchProject(const QString &dir)
@@ -86,7 +81,8 @@ TOONFACE_BENCHMARK("io.project10min", [] {
     // Where the time goes: building the JSON tree, and turning it into text.
     const double toJsonMs = bench::medianMs([&] { ok = !projectToJson(project, tmp.path()).isEmpty() && ok; });
     const QJsonObject json = projectToJson(project, tmp.path());
-    const double fromJsonMs = bench::medianMs([&] { ok = projectFromJson(json, tmp.path(), &error).has_value() && ok; });
+    const double fromJsonMs
+        = bench::medianMs([&] { ok = projectFromJson(json, tmp.path(), &error).has_value() && ok; });
     const double textMs = bench::medianMs([&] { ok = !QJsonDocument(json).toJson().isEmpty() && ok; });
     // The same bytes through a plain QFile: what the atomic save (temporary file, flush to disk,
     // rename) costs on top.

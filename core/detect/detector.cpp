@@ -41,17 +41,29 @@ GrayView viewOf(const QImage &gray)
     return {gray.constBits(), gray.height(), gray.width(), long(gray.bytesPerLine())};
 }
 
-long num_rows(const GrayView &v) { return v.rows; }
-long num_columns(const GrayView &v) { return v.cols; }
-const void *image_data(const GrayView &v) { return v.data; }
-long width_step(const GrayView &v) { return v.stride; }
+long num_rows(const GrayView &v)
+{
+    return v.rows;
+}
+long num_columns(const GrayView &v)
+{
+    return v.cols;
+}
+const void *image_data(const GrayView &v)
+{
+    return v.data;
+}
+long width_step(const GrayView &v)
+{
+    return v.stride;
+}
 
 } // namespace
 
 } // namespace toonface
 
 namespace dlib {
-template <>
+template<>
 struct image_traits<toonface::GrayView>
 {
     using pixel_type = unsigned char;
@@ -79,7 +91,7 @@ constexpr double kMaxPassPixels = 4.0e6;
 struct LandmarkModel
 {
     dlib::shape_predictor predictor;
-    std::array<QPointF, kIbugPointCount> meanShape{};
+    std::array<QPointF, kIbugPointCount> meanShape {};
 };
 
 struct LoadedModel
@@ -169,7 +181,8 @@ struct Similarity
     QPointF map(QPointF p) const { return {a * p.x() - b * p.y() + t.x(), b * p.x() + a * p.y() + t.y()}; }
 };
 
-Similarity fitMeanShape(const std::array<QPointF, kIbugPointCount> &mean, const std::array<QPointF, kIbugPointCount> &pts)
+Similarity fitMeanShape(
+    const std::array<QPointF, kIbugPointCount> &mean, const std::array<QPointF, kIbugPointCount> &pts)
 {
     QPointF cm, cp;
     for (int i = 0; i < kIbugPointCount; ++i) {
@@ -194,7 +207,7 @@ Similarity fitMeanShape(const std::array<QPointF, kIbugPointCount> &mean, const 
 
 std::array<QPointF, kIbugPointCount> toPoints(const dlib::full_object_detection &shape)
 {
-    std::array<QPointF, kIbugPointCount> p{};
+    std::array<QPointF, kIbugPointCount> p {};
     for (int i = 0; i < kIbugPointCount; ++i)
         p[i] = QPointF(shape.part(i).x(), shape.part(i).y());
     return p;
@@ -210,8 +223,7 @@ std::array<QPointF, kIbugPointCount> toPoints(const dlib::full_object_detection 
 // degrees, centre and size within 3% of the box), the re-fit would start where the first did,
 // and is skipped.
 std::array<QPointF, kIbugPointCount> fitUpright(const LandmarkModel &model, const GrayView &image,
-                                                const QRectF &startBox,
-                                                const std::array<QPointF, kIbugPointCount> &first)
+    const QRectF &startBox, const std::array<QPointF, kIbugPointCount> &first)
 {
     const Similarity s = fitMeanShape(model.meanShape, first);
     const double box = s.scale();
@@ -219,24 +231,25 @@ std::array<QPointF, kIbugPointCount> fitUpright(const LandmarkModel &model, cons
         return first;
     const QPointF implied = s.map(QPointF(0.5, 0.5));
     const double size = std::max(startBox.width(), 1.0);
-    if (std::abs(s.angle()) < 3.0 * std::numbers::pi / 180.0 && QLineF(implied, startBox.center()).length() < 0.03 * size
-        && std::abs(box / size - 1.0) < 0.03)
+    if (std::abs(s.angle()) < 3.0 * std::numbers::pi / 180.0
+        && QLineF(implied, startBox.center()).length() < 0.03 * size && std::abs(box / size - 1.0) < 0.03)
         return first;
     // The cut-out: twice the box around its centre, at most 600 px across (larger faces are
     // sampled down: the predictor needs no more detail than that).
     const QPointF centre = s.map(QPointF(0.5, 0.5));
     const long side = std::lround(std::min(2.0 * box, 600.0));
     const double zoom = side / (2.0 * box);
-    const dlib::chip_details chip(dlib::drectangle(centre.x() - box, centre.y() - box, centre.x() + box, centre.y() + box),
-                                  dlib::chip_dims(side, side), s.angle());
+    const dlib::chip_details chip(
+        dlib::drectangle(centre.x() - box, centre.y() - box, centre.x() + box, centre.y() + box),
+        dlib::chip_dims(side, side), s.angle());
     dlib::array2d<unsigned char> upright;
     dlib::extract_image_chip(image, chip, upright);
     const double inner = box * zoom;
-    const dlib::rectangle rect(std::lround(0.5 * inner), std::lround(0.5 * inner), std::lround(1.5 * inner) - 1,
-                               std::lround(1.5 * inner) - 1);
+    const dlib::rectangle rect(
+        std::lround(0.5 * inner), std::lround(0.5 * inner), std::lround(1.5 * inner) - 1, std::lround(1.5 * inner) - 1);
     const dlib::full_object_detection shape = model.predictor(upright, rect);
     const dlib::point_transform_affine back = dlib::inv(dlib::get_mapping_to_chip(chip));
-    std::array<QPointF, kIbugPointCount> p{};
+    std::array<QPointF, kIbugPointCount> p {};
     for (int i = 0; i < kIbugPointCount; ++i) {
         const dlib::dpoint q = back(dlib::dpoint(shape.part(i)));
         p[i] = QPointF(q.x(), q.y());
@@ -258,8 +271,8 @@ QImage resizedGray(const QImage &gray, double scale)
     const int w = std::max(1, int(std::lround(gray.width() * scale)));
     const int h = std::max(1, int(std::lround(gray.height() * scale)));
     QImage out(w, h, QImage::Format_Grayscale8);
-    const cv::Mat src(gray.height(), gray.width(), CV_8UC1, const_cast<uchar *>(gray.constBits()),
-                      size_t(gray.bytesPerLine()));
+    const cv::Mat src(
+        gray.height(), gray.width(), CV_8UC1, const_cast<uchar *>(gray.constBits()), size_t(gray.bytesPerLine()));
     cv::Mat dst(h, w, CV_8UC1, out.bits(), size_t(out.bytesPerLine()));
     cv::resize(src, dst, dst.size(), 0, 0, scale < 1 ? cv::INTER_AREA : cv::INTER_LINEAR);
     return out;
@@ -301,8 +314,7 @@ std::vector<FaceBox> findFaces(const QImage &gray, double scale)
     for (const auto &d : dets) {
         // dlib's rectangles are inclusive: pixel columns left..right of the scaled copy,
         // which cover [left / scale, (right + 1) / scale) of the photo.
-        const QRectF r(d.rect.left() / scale, d.rect.top() / scale, d.rect.width() / scale,
-                       d.rect.height() / scale);
+        const QRectF r(d.rect.left() / scale, d.rect.top() / scale, d.rect.width() / scale, d.rect.height() / scale);
         out.push_back({r, d.detection_confidence});
     }
     return out;
@@ -311,7 +323,7 @@ std::vector<FaceBox> findFaces(const QImage &gray, double scale)
 dlib::rectangle toDlib(const QRectF &box)
 {
     return dlib::rectangle(std::lround(box.left()), std::lround(box.top()), std::lround(box.left() + box.width()) - 1,
-                           std::lround(box.top() + box.height()) - 1);
+        std::lround(box.top() + box.height()) - 1);
 }
 
 // The face to use: the largest, preferring central ones. Size counts most (a passer-by in
@@ -341,8 +353,8 @@ double logistic(double x)
 }
 
 void writeDebugImages(const QString &dir, const QImage &image, const std::vector<FaceBox> &faces, int chosen,
-                      const std::array<QPointF, kIbugPointCount> &ibug, const FaceModel &geometric,
-                      const FaceModel &face, const HairSearchReport &hair)
+    const std::array<QPointF, kIbugPointCount> &ibug, const FaceModel &geometric, const FaceModel &face,
+    const HairSearchReport &hair)
 {
     if (!QDir().mkpath(dir))
         return;
@@ -441,8 +453,8 @@ bool preloadLandmarkModel(QString *error, double *loadMs)
     return bool(landmarkModel(error, loadMs));
 }
 
-DetectionResult detectFace(const QImage &image, const DetectOptions &options, const ProgressFn &progress,
-                           const std::atomic_bool *cancel)
+DetectionResult detectFace(
+    const QImage &image, const DetectOptions &options, const ProgressFn &progress, const std::atomic_bool *cancel)
 {
     DetectionResult result;
     result.method = detectionMethodName(DetectionMethod::Landmarks);
@@ -462,7 +474,8 @@ DetectionResult detectFace(const QImage &image, const DetectOptions &options, co
     if (options.method == DetectionMethod::Classic) {
         result.method = detectionMethodName(DetectionMethod::Classic);
         result.status = DetectStatus::Unsupported;
-        result.error = QStringLiteral("The classic detection method is not implemented yet; use \"landmarks\" or \"auto\".");
+        result.error
+            = QStringLiteral("The classic detection method is not implemented yet; use \"landmarks\" or \"auto\".");
         return result;
     }
     if (image.isNull()) {
@@ -516,14 +529,14 @@ DetectionResult detectFace(const QImage &image, const DetectOptions &options, co
     if (faces.empty()) {
         result.status = DetectStatus::NoFace;
         result.error = lastScale > 0
-                           ? QStringLiteral("No face was found in the image (%1 x %2 pixels). A frontal, upright "
-                                            "face at least %3 pixels wide is needed.")
-                                 .arg(image.width())
-                                 .arg(image.height())
-                                 .arg(std::ceil(kDetectorWindow / lastScale))
-                           : QStringLiteral("The image (%1 x %2 pixels) is too small to hold a face.")
-                                 .arg(image.width())
-                                 .arg(image.height());
+            ? QStringLiteral("No face was found in the image (%1 x %2 pixels). A frontal, upright "
+                             "face at least %3 pixels wide is needed.")
+                  .arg(image.width())
+                  .arg(image.height())
+                  .arg(std::ceil(kDetectorWindow / lastScale))
+            : QStringLiteral("The image (%1 x %2 pixels) is too small to hold a face.")
+                  .arg(image.width())
+                  .arg(image.height());
         return result;
     }
     const int chosen = chooseFace(faces, image.size());

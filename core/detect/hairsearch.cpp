@@ -67,7 +67,7 @@ public:
     // Normalises and smooths; after this density() answers.
     void finish()
     {
-        std::array<double, kL * kA * kB> smooth{};
+        std::array<double, kL * kA * kB> smooth {};
         for (int l = 0; l < kL; ++l)
             for (int a = 0; a < kA; ++a)
                 for (int b = 0; b < kB; ++b) {
@@ -103,8 +103,8 @@ private:
         return (l * kA + a) * kB + b;
     }
 
-    std::array<double, kL * kA * kB> m_bins{};
-    std::array<double, kL * kA * kB> m_density{};
+    std::array<double, kL * kA * kB> m_bins {};
+    std::array<double, kL * kA * kB> m_density {};
     int m_count = 0;
 };
 
@@ -113,9 +113,9 @@ struct Workspace
 {
     QPointF origin; // image position of the cut-out's (0, 0)
     double scale = 1;
-    cv::Mat lab;     // CV_8UC3
-    cv::Mat pBack;   // CV_32F posterior of background, smoothed
-    cv::Mat pSkin;   // CV_32F posterior of skin, smoothed
+    cv::Mat lab; // CV_8UC3
+    cv::Mat pBack; // CV_32F posterior of background, smoothed
+    cv::Mat pSkin; // CV_32F posterior of skin, smoothed
     QRectF imageBox; // the whole photo in cut-out pixels
 
     cv::Point toWork(QPointF image) const
@@ -178,11 +178,11 @@ void refineFromPhoto(FaceModel *face, const QImage &image, HairSearchReport *rep
     ws.origin = crop.topLeft();
     {
         const QImage rgb = image.copy(crop).convertToFormat(QImage::Format_RGB888);
-        const cv::Mat src(rgb.height(), rgb.width(), CV_8UC3, const_cast<uchar *>(rgb.constBits()),
-                          size_t(rgb.bytesPerLine()));
+        const cv::Mat src(
+            rgb.height(), rgb.width(), CV_8UC3, const_cast<uchar *>(rgb.constBits()), size_t(rgb.bytesPerLine()));
         cv::Mat small;
         const cv::Size size(std::max(1, int(std::lround(rgb.width() * ws.scale))),
-                            std::max(1, int(std::lround(rgb.height() * ws.scale))));
+            std::max(1, int(std::lround(rgb.height() * ws.scale))));
         cv::resize(src, small, size, 0, 0, cv::INTER_AREA);
         cv::cvtColor(small, ws.lab, cv::COLOR_RGB2Lab);
     }
@@ -319,13 +319,12 @@ void refineFromPhoto(FaceModel *face, const QImage &image, HairSearchReport *rep
     cv::GaussianBlur(ws.pBack, ws.pBack, cv::Size(0, 0), sigma);
     cv::GaussianBlur(ws.pSkin, ws.pSkin, cv::Size(0, 0), sigma);
 
-
     // 6. Hair rays.
     int hairFound = 0;
     if (haveBackground) {
         const QPointF centreImg = f.toImage(hairCentre);
-        std::array<double, 19> ratio{};
-        std::array<bool, 19> ok{};
+        std::array<double, 19> ratio {};
+        std::array<bool, 19> ok {};
         for (int i = 0; i < 19; ++i) {
             const QPointF geo = f.toImage(f.hairPoint(i));
             const QPointF dir = geo - centreImg;
@@ -357,8 +356,8 @@ void refineFromPhoto(FaceModel *face, const QImage &image, HairSearchReport *rep
             }
             if (boundary < 0 && leftImage && inHead >= run)
                 boundary = last; // the head goes on beyond the photo's edge
-            rep.rays.emplace_back(centreImg + dir * (r0 / rGeo),
-                                  centreImg + dir * ((boundary > 0 ? boundary : last) / rGeo));
+            rep.rays.emplace_back(
+                centreImg + dir * (r0 / rGeo), centreImg + dir * ((boundary > 0 ? boundary : last) / rGeo));
             if (boundary > 0) {
                 ratio[i] = boundary / rGeo;
                 ok[i] = true;
@@ -373,7 +372,7 @@ void refineFromPhoto(FaceModel *face, const QImage &image, HairSearchReport *rep
                 found.push_back(ratio[i]);
         if (found.size() >= 7) {
             const double overall = median(found);
-            std::array<double, 19> smooth{};
+            std::array<double, 19> smooth {};
             for (int i = 0; i < 19; ++i) {
                 std::vector<double> nb;
                 for (int k = std::max(0, i - 2); k <= std::min(18, i + 2); ++k)
@@ -484,8 +483,9 @@ void refineFromPhoto(FaceModel *face, const QImage &image, HairSearchReport *rep
             && i != pt::idx("11.3"))
             continue;
         const QPointF q = face->point(i);
-        face->setPoint(i, QPointF(std::clamp(q.x(), bounds.left(), bounds.right()),
-                                  std::clamp(q.y(), bounds.top(), bounds.bottom())));
+        face->setPoint(i,
+            QPointF(
+                std::clamp(q.x(), bounds.left(), bounds.right()), std::clamp(q.y(), bounds.top(), bounds.bottom())));
     }
 
     if (withDebugImages) {

@@ -34,13 +34,32 @@ struct Correspondence
 const std::vector<Correspondence> &correspondences()
 {
     static const std::vector<Correspondence> table = {
-        {"3.12", {36}}, {"3.7", {45}}, {"3.8", {39}}, {"3.11", {42}},
-        {"3.2", {37, 38}}, {"3.1", {43, 44}}, {"3.4", {40, 41}}, {"3.3", {46, 47}},
-        {"3.6", {36, 37, 38, 39, 40, 41}}, {"3.5", {42, 43, 44, 45, 46, 47}},
-        {"4.6", {17}}, {"4.5", {26}}, {"4.2", {21}}, {"4.1", {22}},
-        {"9.4", {31}}, {"9.5", {35}}, {"9.15", {33}}, {"2.1", {8}},
-        {"8.4", {48}}, {"8.3", {54}}, {"8.9", {50}}, {"8.10", {52}},
-        {"8.1", {51}}, {"8.2", {57}}, {"2.2", {62}}, {"2.3", {66}},
+        {"3.12", {36}},
+        {"3.7", {45}},
+        {"3.8", {39}},
+        {"3.11", {42}},
+        {"3.2", {37, 38}},
+        {"3.1", {43, 44}},
+        {"3.4", {40, 41}},
+        {"3.3", {46, 47}},
+        {"3.6", {36, 37, 38, 39, 40, 41}},
+        {"3.5", {42, 43, 44, 45, 46, 47}},
+        {"4.6", {17}},
+        {"4.5", {26}},
+        {"4.2", {21}},
+        {"4.1", {22}},
+        {"9.4", {31}},
+        {"9.5", {35}},
+        {"9.15", {33}},
+        {"2.1", {8}},
+        {"8.4", {48}},
+        {"8.3", {54}},
+        {"8.9", {50}},
+        {"8.10", {52}},
+        {"8.1", {51}},
+        {"8.2", {57}},
+        {"2.2", {62}},
+        {"2.3", {66}},
     };
     return table;
 }
@@ -51,8 +70,8 @@ const std::vector<Correspondence> &correspondences()
 struct FaceFrame
 {
     QPointF origin;
-    QPointF ex{1, 0};
-    QPointF ey{0, 1};
+    QPointF ex {1, 0};
+    QPointF ey {0, 1};
 
     QPointF toLocal(QPointF p) const
     {
@@ -208,8 +227,8 @@ FaceModel faceFromLandmarks68(const Ibug &p, QSize imageSize)
     // bottom (10.6) less; the lobe meets the cheek (10.10) on the contour just above the
     // lobe's bottom.
     const double earH = std::max(g.noseBaseY - g.browY, 0.1 * es0);
-    auto ear = [&](const JawHalf &jaw, double half, double side, const char *top, const char *outer,
-                   const char *lobe, const char *junction) {
+    auto ear = [&](const JawHalf &jaw, double half, double side, const char *top, const char *outer, const char *lobe,
+                   const char *junction) {
         const double out = 0.2 * half * side;
         set(top, jaw.atLevel(g.browY) + QPointF(0.3 * out, 0));
         set(outer, jaw.atLevel(g.browY + 0.35 * earH) + QPointF(out, 0));
@@ -226,13 +245,13 @@ FaceModel faceFromLandmarks68(const Ibug &p, QSize imageSize)
         const QRectF box(0, 0, std::max(0, imageSize.width() - 1), std::max(0, imageSize.height() - 1));
         for (int i = 0; i < kPointCount; ++i) {
             const PointGroup g = pointTable()[i].group;
-            const bool estimated = g == PointGroup::Hair || g == PointGroup::Ears
-                                   || i == pt::idx("11.1") || i == pt::idx("11.2") || i == pt::idx("11.3");
+            const bool estimated = g == PointGroup::Hair || g == PointGroup::Ears || i == pt::idx("11.1")
+                || i == pt::idx("11.2") || i == pt::idx("11.3");
             if (!estimated)
                 continue;
             const QPointF q = face.point(i);
-            face.setPoint(i, QPointF(std::clamp(q.x(), box.left(), box.right()),
-                                     std::clamp(q.y(), box.top(), box.bottom())));
+            face.setPoint(
+                i, QPointF(std::clamp(q.x(), box.left(), box.right()), std::clamp(q.y(), box.top(), box.bottom())));
         }
     }
     return face;

@@ -33,15 +33,15 @@ FaceModel faceFromLandmarks68(const std::array<QPointF, kIbugPointCount> &ibug, 
 struct HeadGeometry
 {
     QPointF origin;
-    QPointF ex{1, 0};
-    QPointF ey{0, 1};
+    QPointF ex {1, 0};
+    QPointF ey {0, 1};
     double eyeDistance = 0; // ES0
-    double browY = 0;       // mean height of the eight brow points
-    double noseBaseY = 0;   // the nose tip 9.15's height
-    double hairlineY = 0;   // rule of thirds: as far above the brows as the nose base is below
-    double midX = 0;        // the face's midline (11.1.x)
-    QPointF hairCentre;     // centre of the hair ellipse (between the cheeks, at eye level)
-    double hairAx = 0;      // its semi-axes
+    double browY = 0; // mean height of the eight brow points
+    double noseBaseY = 0; // the nose tip 9.15's height
+    double hairlineY = 0; // rule of thirds: as far above the brows as the nose base is below
+    double midX = 0; // the face's midline (11.1.x)
+    QPointF hairCentre; // centre of the hair ellipse (between the cheeks, at eye level)
+    double hairAx = 0; // its semi-axes
     double hairAy = 0;
 
     QPointF toLocal(QPointF image) const;

@@ -83,8 +83,8 @@ std::optional<FaceModel> faceFromJson(const QJsonObject &json, QString *error, Q
         static const QRegularExpression versioned(QStringLiteral("^toonface\\.face/(\\d+)$"));
         const auto m = versioned.match(format);
         if (m.hasMatch() && m.captured(1).toInt() > 1) {
-            formatField.fail(QStringLiteral("%1 was made by a newer Toonface (this version reads %2)").arg(format, want),
-                             error);
+            formatField.fail(
+                QStringLiteral("%1 was made by a newer Toonface (this version reads %2)").arg(format, want), error);
         } else {
             formatField.expected(QStringLiteral("\"%1\"").arg(want), error);
         }

@@ -23,7 +23,8 @@ QString withFile(const QString &path, const QString &message)
 
 bool startsWith(const QByteArray &data, qsizetype at, const char *magic)
 {
-    return data.size() >= at + qsizetype(std::strlen(magic)) && std::memcmp(data.constData() + at, magic, std::strlen(magic)) == 0;
+    return data.size() >= at + qsizetype(std::strlen(magic))
+        && std::memcmp(data.constData() + at, magic, std::strlen(magic)) == 0;
 }
 
 bool looksLikeText(const QByteArray &head)
@@ -207,7 +208,8 @@ QImage loadPhoto(const QString &path, QString *error)
         return {};
     }
     if (jpegEnd(data) == JpegEnd::Truncated) {
-        *error = withFile(path, QStringLiteral("the JPEG image is truncated (the file ends before the image data does)"));
+        *error
+            = withFile(path, QStringLiteral("the JPEG image is truncated (the file ends before the image data does)"));
         return {};
     }
     const QString format = QString::fromLatin1(reader.format()).toUpper();
@@ -215,25 +217,28 @@ QImage loadPhoto(const QString &path, QString *error)
     if (size.isValid()) {
         const qint64 pixels = qint64(size.width()) * size.height();
         if (pixels == 0) {
-            *error = withFile(path, QStringLiteral("the %1 image is empty (%2 × %3 pixels)")
-                                        .arg(format)
-                                        .arg(size.width())
-                                        .arg(size.height()));
+            *error = withFile(path,
+                QStringLiteral("the %1 image is empty (%2 × %3 pixels)")
+                    .arg(format)
+                    .arg(size.width())
+                    .arg(size.height()));
             return {};
         }
         if (pixels > kMaxPhotoPixels) {
-            *error = withFile(path, QStringLiteral("the image is too large: %1 × %2 pixels (%3 megapixels); "
-                                                   "the limit is %4 megapixels")
-                                        .arg(size.width())
-                                        .arg(size.height())
-                                        .arg(double(pixels) / 1e6, 0, 'f', 0)
-                                        .arg(kMaxPhotoPixels / 1000000));
+            *error = withFile(path,
+                QStringLiteral("the image is too large: %1 × %2 pixels (%3 megapixels); "
+                               "the limit is %4 megapixels")
+                    .arg(size.width())
+                    .arg(size.height())
+                    .arg(double(pixels) / 1e6, 0, 'f', 0)
+                    .arg(kMaxPhotoPixels / 1000000));
             return {};
         }
     }
     const QImage image = reader.read();
     if (image.isNull()) {
-        *error = withFile(path, QStringLiteral("the %1 image is corrupt or truncated (%2)").arg(format, reader.errorString()));
+        *error = withFile(
+            path, QStringLiteral("the %1 image is corrupt or truncated (%2)").arg(format, reader.errorString()));
         return {};
     }
     return toRgb32(image);

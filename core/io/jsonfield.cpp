@@ -54,7 +54,8 @@ bool JsonField::toBoundedNumber(double limit, double *out, QString *error) const
     if (!toNumber(&d, error))
         return false;
     if (std::abs(d) > limit)
-        return expected(QStringLiteral("a number between %1 and %2").arg(-limit, 0, 'g', 12).arg(limit, 0, 'g', 12), error);
+        return expected(
+            QStringLiteral("a number between %1 and %2").arg(-limit, 0, 'g', 12).arg(limit, 0, 'g', 12), error);
     *out = d;
     return true;
 }
@@ -118,12 +119,9 @@ bool JsonField::expected(const QString &expected, QString *error) const
 QString JsonField::describe(const QJsonValue &value)
 {
     switch (value.type()) {
-    case QJsonValue::Undefined:
-        return QStringLiteral("it is missing");
-    case QJsonValue::Null:
-        return QStringLiteral("found null");
-    case QJsonValue::Bool:
-        return value.toBool() ? QStringLiteral("found true") : QStringLiteral("found false");
+    case QJsonValue::Undefined: return QStringLiteral("it is missing");
+    case QJsonValue::Null: return QStringLiteral("found null");
+    case QJsonValue::Bool: return value.toBool() ? QStringLiteral("found true") : QStringLiteral("found false");
     case QJsonValue::Double:
         return QStringLiteral("found ") + QString::number(value.toDouble(), 'g', QLocale::FloatingPointShortest);
     case QJsonValue::String: {
@@ -132,10 +130,8 @@ QString JsonField::describe(const QJsonValue &value)
             s = s.left(37) + QStringLiteral("...");
         return QStringLiteral("found the string \"%1\"").arg(s);
     }
-    case QJsonValue::Array:
-        return QStringLiteral("found an array");
-    case QJsonValue::Object:
-        return QStringLiteral("found an object");
+    case QJsonValue::Array: return QStringLiteral("found an array");
+    case QJsonValue::Object: return QStringLiteral("found an object");
     }
     return {};
 }

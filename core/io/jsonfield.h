@@ -17,7 +17,10 @@ namespace toonface {
 class JsonField
 {
 public:
-    JsonField(const QJsonValue &value, const QString &path) : m_value(value), m_path(path) {}
+    JsonField(const QJsonValue &value, const QString &path)
+        : m_value(value)
+        , m_path(path)
+    { }
 
     const QString &path() const { return m_path; }
     const QJsonValue &value() const { return m_value; }

@@ -29,8 +29,7 @@ bool pointsFromJson(const JsonField &points, FaceModel *face, QString *error)
     if (!points.toArray(&array, error))
         return false;
     if (array.size() != kPointCount) {
-        return points.fail(QStringLiteral("expected %1 points, found %2").arg(kPointCount).arg(array.size()),
-                           error);
+        return points.fail(QStringLiteral("expected %1 points, found %2").arg(kPointCount).arg(array.size()), error);
     }
     const auto &table = pointTable();
     for (int i = 0; i < kPointCount; ++i) {
@@ -43,7 +42,8 @@ bool pointsFromJson(const JsonField &points, FaceModel *face, QString *error)
         if (!p.member("id").toString(&id, error))
             return false;
         if (id != wantId)
-            return p.member("id").expected(QStringLiteral("\"%1\" (points are listed in the order of the face model)").arg(wantId), error);
+            return p.member("id").expected(
+                QStringLiteral("\"%1\" (points are listed in the order of the face model)").arg(wantId), error);
         double x = 0;
         double y = 0;
         if (!p.member("x").toBoundedNumber(kMaxCoordinate, &x, error)

@@ -25,10 +25,10 @@ constexpr std::array<const char *, 4> kOffsetKeys = {"up", "dn", "lf", "rt"}; //
 
 // The variant names of the file format. They are spelled here rather than taken from
 // style.cpp so that the file format is fixed by the io code that reads and writes it.
-constexpr std::array<std::pair<EyebrowVariant, const char *>, 3> kEyebrowNames = {{
-    {EyebrowVariant::Polyline, "polyline"}, {EyebrowVariant::Bezier, "bezier"}, {EyebrowVariant::Thick, "thick"}}};
-constexpr std::array<std::pair<NoseVariant, const char *>, 3> kNoseNames = {{
-    {NoseVariant::Full, "full"}, {NoseVariant::Simple, "simple"}, {NoseVariant::Tip, "tip"}}};
+constexpr std::array<std::pair<EyebrowVariant, const char *>, 3> kEyebrowNames
+    = {{{EyebrowVariant::Polyline, "polyline"}, {EyebrowVariant::Bezier, "bezier"}, {EyebrowVariant::Thick, "thick"}}};
+constexpr std::array<std::pair<NoseVariant, const char *>, 3> kNoseNames
+    = {{{NoseVariant::Full, "full"}, {NoseVariant::Simple, "simple"}, {NoseVariant::Tip, "tip"}}};
 
 template<typename Enum, std::size_t N>
 QString enumName(const std::array<std::pair<Enum, const char *>, N> &names, Enum value)
@@ -41,8 +41,8 @@ QString enumName(const std::array<std::pair<Enum, const char *>, N> &names, Enum
 }
 
 template<typename Enum, std::size_t N>
-bool enumFromJson(const std::array<std::pair<Enum, const char *>, N> &names, const JsonField &field, Enum *out,
-                  QString *error)
+bool enumFromJson(
+    const std::array<std::pair<Enum, const char *>, N> &names, const JsonField &field, Enum *out, QString *error)
 {
     QString s;
     if (!field.toString(&s, error))
@@ -330,8 +330,7 @@ std::optional<Project> projectFromJson(const QJsonObject &json, const QString &p
             return std::nullopt;
         p.face.setImageSize(QSize(w, h));
     }
-    if (!pointsFromJson(root.member("points"), &p.face, error)
-        || !styleFromJson(root.member("style"), &p.style, error)
+    if (!pointsFromJson(root.member("points"), &p.face, error) || !styleFromJson(root.member("style"), &p.style, error)
         || !mouthShapesFromJson(root.member("mouthShapes"), &p.mouthShapes, error))
         return std::nullopt;
 
@@ -399,7 +398,9 @@ bool saveProject(const Project &project, const QString &path, QString *error)
         // A short write without an error code is what a full disk or a file size limit gives.
         const QString why = file.error() != QFileDevice::NoError
             ? file.errorString()
-            : QStringLiteral("only %1 of %2 bytes could be written (is the disk full?)").arg(qMax<qint64>(written, 0)).arg(bytes.size());
+            : QStringLiteral("only %1 of %2 bytes could be written (is the disk full?)")
+                  .arg(qMax<qint64>(written, 0))
+                  .arg(bytes.size());
         *error = withFile(path, QStringLiteral("cannot save: ") + why);
         file.cancelWriting();
         return false;
@@ -448,11 +449,12 @@ std::optional<Project> loadProject(const QString &path, QString *error)
         const QByteArray before = bytes.left(parseError.offset);
         const qsizetype line = before.count('\n') + 1;
         const qsizetype column = before.size() - before.lastIndexOf('\n');
-        *error = withFile(path, QStringLiteral("not a Toonface project: %1 at offset %2 (line %3, column %4)")
-                                    .arg(parseError.errorString())
-                                    .arg(parseError.offset)
-                                    .arg(line)
-                                    .arg(column));
+        *error = withFile(path,
+            QStringLiteral("not a Toonface project: %1 at offset %2 (line %3, column %4)")
+                .arg(parseError.errorString())
+                .arg(parseError.offset)
+                .arg(line)
+                .arg(column));
         return std::nullopt;
     }
     if (!doc.isObject()) {

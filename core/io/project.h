@@ -30,12 +30,12 @@ struct Project
     FaceModel face;
     Style style;
     MouthShapeSet mouthShapes;
-    QStringList layerPaths;   // extra SVG layers
-    QJsonObject timeline;     // owned by core/anim; stored verbatim until then
+    QStringList layerPaths; // extra SVG layers
+    QJsonObject timeline; // owned by core/anim; stored verbatim until then
     QString audioPath;
-    double audioOffset = 0;   // seconds
+    double audioOffset = 0; // seconds
     QString script;
-    QString scriptLanguage;   // "cmn", "en" or empty (detect)
+    QString scriptLanguage; // "cmn", "en" or empty (detect)
 
     bool operator==(const Project &) const = default;
 };

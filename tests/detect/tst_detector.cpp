@@ -40,8 +40,8 @@ bool readPts(const QString &path, std::array<QPointF, kIbugPointCount> *pts)
     const int open = text.indexOf(QLatin1Char('{')), close = text.indexOf(QLatin1Char('}'));
     if (open < 0 || close < open)
         return false;
-    const QStringList nums = text.mid(open + 1, close - open - 1)
-                                 .split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts);
+    const QStringList nums
+        = text.mid(open + 1, close - open - 1).split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts);
     if (nums.size() != 2 * kIbugPointCount)
         return false;
     for (int i = 0; i < kIbugPointCount; ++i)
@@ -53,7 +53,11 @@ bool readPts(const QString &path, std::array<QPointF, kIbugPointCount> *pts)
 class EnvGuard
 {
 public:
-    explicit EnvGuard(const char *name) : m_name(name), m_had(qEnvironmentVariableIsSet(name)), m_old(qgetenv(name)) {}
+    explicit EnvGuard(const char *name)
+        : m_name(name)
+        , m_had(qEnvironmentVariableIsSet(name))
+        , m_old(qgetenv(name))
+    { }
     ~EnvGuard()
     {
         if (m_had)
@@ -207,8 +211,7 @@ void TestDetector::graceHopper()
     QVERIFY(es0 > 0.25 * r.faceBox.width() && es0 < 0.6 * r.faceBox.width());
 
     for (const QString &g : {QStringLiteral("hair"), QStringLiteral("contour"), QStringLiteral("ears"),
-                             QStringLiteral("eyebrows"), QStringLiteral("eyes"), QStringLiteral("nose"),
-                             QStringLiteral("mouth")}) {
+             QStringLiteral("eyebrows"), QStringLiteral("eyes"), QStringLiteral("nose"), QStringLiteral("mouth")}) {
         QVERIFY2(r.groupConfidence.contains(g), qPrintable(g));
         QVERIFY(r.groupConfidence[g] > 0 && r.groupConfidence[g] <= 1);
     }
@@ -271,8 +274,8 @@ void TestDetector::progressAndTimings()
     QCOMPARE(fractions.front(), 0.0);
     QCOMPARE(fractions.back(), 1.0);
     double sum = 0;
-    for (const QString &stage : {QStringLiteral("prepare"), QStringLiteral("faces"), QStringLiteral("landmarks"),
-                                 QStringLiteral("hair")}) {
+    for (const QString &stage :
+        {QStringLiteral("prepare"), QStringLiteral("faces"), QStringLiteral("landmarks"), QStringLiteral("hair")}) {
         QVERIFY2(r.timingMs.contains(stage), qPrintable(stage));
         QVERIFY(r.timingMs[stage] >= 0);
         sum += r.timingMs[stage];
@@ -316,7 +319,7 @@ void TestDetector::cancelBeforeStart()
     const QImage image = grace();
     if (image.isNull())
         QSKIP("grace_hopper.jpg is not installed");
-    std::atomic_bool cancel{true};
+    std::atomic_bool cancel {true};
     const DetectionResult r = detectFace(image, {}, {}, &cancel);
     QCOMPARE(r.status, DetectStatus::Cancelled);
     QVERIFY(!r.error.isEmpty());
@@ -328,7 +331,7 @@ void TestDetector::cancelDuringDetection()
     if (image.isNull())
         QSKIP("grace_hopper.jpg is not installed");
     for (const QString &at : {QStringLiteral("faces"), QStringLiteral("landmarks"), QStringLiteral("hair")}) {
-        std::atomic_bool cancel{false};
+        std::atomic_bool cancel {false};
         QStringList seen;
         const DetectionResult r = detectFace(
             image, {},
@@ -431,7 +434,7 @@ void TestDetector::sharedDataNme()
     QFETCH(QString, pts);
     if (image.isEmpty())
         QSKIP("no research photos (set TOONFACE_DATA_DIR to the shared data folder)");
-    std::array<QPointF, kIbugPointCount> truth{};
+    std::array<QPointF, kIbugPointCount> truth {};
     QVERIFY2(readPts(pts, &truth), qPrintable(pts));
     const QImage photo(image);
     QVERIFY2(!photo.isNull(), qPrintable(image));

@@ -118,7 +118,8 @@ void TestHairSearch::drawnHead()
             if (!s.image.rect().contains(p))
                 continue;
             const QColor c = s.image.pixelColor(p);
-            if (std::abs(c.red() - back.red()) + std::abs(c.green() - back.green()) + std::abs(c.blue() - back.blue()) > 40)
+            if (std::abs(c.red() - back.red()) + std::abs(c.green() - back.green()) + std::abs(c.blue() - back.blue())
+                > 40)
                 return r;
         }
         return 0.0;

@@ -20,11 +20,32 @@ struct Row
     std::vector<int> ibug;
 };
 const std::vector<Row> kTable = {
-    {"3.12", {36}}, {"3.7", {45}}, {"3.8", {39}}, {"3.11", {42}}, {"3.2", {37, 38}},
-    {"3.1", {43, 44}}, {"3.4", {40, 41}}, {"3.3", {46, 47}}, {"3.6", {36, 37, 38, 39, 40, 41}},
-    {"3.5", {42, 43, 44, 45, 46, 47}}, {"4.6", {17}}, {"4.5", {26}}, {"4.2", {21}}, {"4.1", {22}},
-    {"9.4", {31}}, {"9.5", {35}}, {"9.15", {33}}, {"2.1", {8}}, {"8.4", {48}}, {"8.3", {54}},
-    {"8.9", {50}}, {"8.10", {52}}, {"8.1", {51}}, {"8.2", {57}}, {"2.2", {62}}, {"2.3", {66}},
+    {"3.12", {36}},
+    {"3.7", {45}},
+    {"3.8", {39}},
+    {"3.11", {42}},
+    {"3.2", {37, 38}},
+    {"3.1", {43, 44}},
+    {"3.4", {40, 41}},
+    {"3.3", {46, 47}},
+    {"3.6", {36, 37, 38, 39, 40, 41}},
+    {"3.5", {42, 43, 44, 45, 46, 47}},
+    {"4.6", {17}},
+    {"4.5", {26}},
+    {"4.2", {21}},
+    {"4.1", {22}},
+    {"9.4", {31}},
+    {"9.5", {35}},
+    {"9.15", {33}},
+    {"2.1", {8}},
+    {"8.4", {48}},
+    {"8.3", {54}},
+    {"8.9", {50}},
+    {"8.10", {52}},
+    {"8.1", {51}},
+    {"8.2", {57}},
+    {"2.2", {62}},
+    {"2.3", {66}},
 };
 
 } // namespace
@@ -136,8 +157,10 @@ void TestLandmarkMap::derivedOrder()
     // Hair: rising from the image-left end to h.10 above the forehead, falling to h.19;
     // the arc's ends lie outside the cheeks.
     for (int i = 0; i < 9; ++i) {
-        QVERIFY2(P(pointId(i).toLatin1().constData()).y() > P(pointId(i + 1).toLatin1().constData()).y(), qPrintable(pointId(i)));
-        QVERIFY2(P(pointId(18 - i).toLatin1().constData()).y() > P(pointId(17 - i).toLatin1().constData()).y(), qPrintable(pointId(18 - i)));
+        QVERIFY2(P(pointId(i).toLatin1().constData()).y() > P(pointId(i + 1).toLatin1().constData()).y(),
+            qPrintable(pointId(i)));
+        QVERIFY2(P(pointId(18 - i).toLatin1().constData()).y() > P(pointId(17 - i).toLatin1().constData()).y(),
+            qPrintable(pointId(18 - i)));
     }
     QVERIFY(Y("h.10") < Y("11.1"));
     QVERIFY(X("h.1") < X("5.2") && X("h.19") > X("5.1"));
@@ -156,7 +179,7 @@ void TestLandmarkMap::estimatedPointsClampedToImage()
             continue;
         const QPointF q = face.point(i);
         QVERIFY2(q.x() >= 0 && q.y() >= 0 && q.x() <= size.width() - 1 && q.y() <= size.height() - 1,
-                 qPrintable(pointId(i)));
+            qPrintable(pointId(i)));
     }
     QCOMPARE(face.point("h.10").y(), 0.0);
     // Measured points are not clamped: the chin stays where the landmarks put it.

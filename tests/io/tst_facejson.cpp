@@ -72,9 +72,9 @@ private Q_SLOTS:
         }
         const Fapu f = face.fapu();
         const QJsonObject fapu = json.value(QStringLiteral("fapu")).toObject();
-        const std::pair<const char *, double> expected[] = {
-            {"ES0", f.es0}, {"ENS0", f.ens0}, {"MNS0", f.mns0}, {"MW0", f.mw0}, {"LeftEyeH", f.leftEyeH},
-            {"RightEyeH", f.rightEyeH}, {"UpperLipH", f.upperLipH}, {"LowerLipH", f.lowerLipH}, {"JawH", f.jawH}};
+        const std::pair<const char *, double> expected[]
+            = {{"ES0", f.es0}, {"ENS0", f.ens0}, {"MNS0", f.mns0}, {"MW0", f.mw0}, {"LeftEyeH", f.leftEyeH},
+                {"RightEyeH", f.rightEyeH}, {"UpperLipH", f.upperLipH}, {"LowerLipH", f.lowerLipH}, {"JawH", f.jawH}};
         QCOMPARE(fapu.size(), 9);
         for (const auto &[name, value] : expected) {
             QVERIFY2(fapu.contains(QLatin1StringView(name)), name);
@@ -98,15 +98,16 @@ private Q_SLOTS:
         d.method = QStringLiteral("landmarks");
         d.faceCount = 2;
         d.faceBox = QRect(10, 20, 300, 320);
-        d.timingMs = {{QStringLiteral("detect"), 12.5}, {QStringLiteral("landmarks"), 3.25}, {QStringLiteral("total"), 15.75}};
+        d.timingMs
+            = {{QStringLiteral("detect"), 12.5}, {QStringLiteral("landmarks"), 3.25}, {QStringLiteral("total"), 15.75}};
         d.groupConfidence = {{QStringLiteral("eyes"), 0.9}, {QStringLiteral("hair"), 0.4}};
         const QJsonObject json = faceToJson(testFace(), QStringLiteral("me.jpg"), &d);
         QCOMPARE(json.value(QStringLiteral("method")).toString(), QStringLiteral("landmarks"));
         QCOMPARE(json.value(QStringLiteral("faceCount")).toInt(), 2);
         const QJsonObject box = json.value(QStringLiteral("faceBox")).toObject();
         QCOMPARE(QRect(box.value(QStringLiteral("x")).toInt(), box.value(QStringLiteral("y")).toInt(),
-                       box.value(QStringLiteral("width")).toInt(), box.value(QStringLiteral("height")).toInt()),
-                 d.faceBox);
+                     box.value(QStringLiteral("width")).toInt(), box.value(QStringLiteral("height")).toInt()),
+            d.faceBox);
         const QJsonObject timing = json.value(QStringLiteral("timingMs")).toObject();
         QCOMPARE(timing.size(), 3);
         QCOMPARE(timing.value(QStringLiteral("total")).toDouble(), 15.75);
@@ -144,7 +145,8 @@ private Q_SLOTS:
 
     void handPlacedIsOptional()
     {
-        const QJsonValue json = patched(faceToJson(testFace(), QString()), u"points[12].handPlaced", QJsonValue::Undefined);
+        const QJsonValue json
+            = patched(faceToJson(testFace(), QString()), u"points[12].handPlaced", QJsonValue::Undefined);
         QString error;
         const auto back = faceFromJson(json.toObject(), &error);
         QVERIFY2(back, qPrintable(error));
@@ -169,20 +171,25 @@ private Q_SLOTS:
         row("points object", "points", QJsonObject(), "points: expected an array, found an object");
         row("71 points", "points[71]", remove, "points: expected 72 points, found 71");
         row("point not object", "points[4]", 3, "points[4]: expected an object, found 3");
-        row("x string", "points[12].x", QStringLiteral("12"), "points[12].x: expected a number, found the string \"12\"");
+        row("x string", "points[12].x", QStringLiteral("12"),
+            "points[12].x: expected a number, found the string \"12\"");
         row("y missing", "points[70].y", remove, "points[70].y: expected a number, it is missing");
-        row("y huge", "points[1].y", -2e7, "points[1].y: expected a number between -10000000 and 10000000, found -2e+07");
+        row("y huge", "points[1].y", -2e7,
+            "points[1].y: expected a number between -10000000 and 10000000, found -2e+07");
         row("wrong id", "points[0].id", QStringLiteral("h.2"), "points[0].id: expected \"h.1\"");
         row("id number", "points[0].id", 1, "points[0].id: expected a string, found 1");
-        row("group mismatch", "points[19].group", QStringLiteral("hair"), "points[19].group: expected \"contour\", found the string \"hair\"");
+        row("group mismatch", "points[19].group", QStringLiteral("hair"),
+            "points[19].group: expected \"contour\", found the string \"hair\"");
         row("control mismatch", "points[0].control", true, "points[0].control: expected false, found true");
         row("control string", "points[0].control", QStringLiteral("no"), "points[0].control: expected true or false");
         row("handPlaced number", "points[3].handPlaced", 1, "points[3].handPlaced: expected true or false, found 1");
         row("image missing", "image", remove, "image: expected an object, it is missing");
         row("image path number", "image.path", 7, "image.path: expected a string, found 7");
         row("width negative", "image.width", -1, "image.width: expected an integer from 0 to 1000000, found -1");
-        row("width fractional", "image.width", 640.5, "image.width: expected an integer from 0 to 1000000, found 640.5");
-        row("height without width", "image.width", remove, "image.width: expected an integer from 0 to 1000000, it is missing");
+        row("width fractional", "image.width", 640.5,
+            "image.width: expected an integer from 0 to 1000000, found 640.5");
+        row("height without width", "image.width", remove,
+            "image.width: expected an integer from 0 to 1000000, it is missing");
     }
 
     void validation()

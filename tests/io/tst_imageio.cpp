@@ -62,13 +62,13 @@ QByteArray encode(const QImage &image, const char *format, int quality = -1)
 QByteArray exifOrientationSegment(quint16 orientation)
 {
     QByteArray tiff("MM\x00\x2a", 4);
-    tiff += be32(8);                                          // offset of IFD0
-    tiff += QByteArray("\x00\x01", 2);                        // one entry
-    tiff += QByteArray("\x01\x12\x00\x03", 4) + be32(1);      // Orientation, SHORT, count 1
+    tiff += be32(8); // offset of IFD0
+    tiff += QByteArray("\x00\x01", 2); // one entry
+    tiff += QByteArray("\x01\x12\x00\x03", 4) + be32(1); // Orientation, SHORT, count 1
     tiff += char(orientation >> 8);
     tiff += char(orientation & 0xFF);
-    tiff += QByteArray(2, 0);                                  // value padded to 4 bytes
-    tiff += be32(0);                                          // no next IFD
+    tiff += QByteArray(2, 0); // value padded to 4 bytes
+    tiff += be32(0); // no next IFD
     const QByteArray payload = QByteArray("Exif\x00\x00", 6) + tiff;
     const int length = int(payload.size()) + 2;
     return QByteArray("\xff\xe1", 2) + char(length >> 8) + char(length & 0xFF) + payload;
@@ -127,10 +127,7 @@ class TestImageIo : public QObject
     }
 
 private Q_SLOTS:
-    void initTestCase()
-    {
-        QVERIFY(m_dir.isValid());
-    }
+    void initTestCase() { QVERIFY(m_dir.isValid()); }
 
     void grayscalePng()
     {
@@ -153,9 +150,9 @@ private Q_SLOTS:
     {
         QImage rgba(4, 1, QImage::Format_ARGB32);
         rgba.setPixel(0, 0, qRgba(200, 10, 20, 255)); // opaque
-        rgba.setPixel(1, 0, qRgba(0, 0, 0, 0));       // fully transparent
-        rgba.setPixel(2, 0, qRgba(0, 0, 0, 128));     // half-transparent black
-        rgba.setPixel(3, 0, qRgba(0, 0, 255, 64));    // a quarter of blue
+        rgba.setPixel(1, 0, qRgba(0, 0, 0, 0)); // fully transparent
+        rgba.setPixel(2, 0, qRgba(0, 0, 0, 128)); // half-transparent black
+        rgba.setPixel(3, 0, qRgba(0, 0, 255, 64)); // a quarter of blue
         const QString path = writeImage(QStringLiteral("rgba.png"), rgba, "png");
         QVERIFY(QImageReader(path).read().hasAlphaChannel());
         QString error;
@@ -207,8 +204,8 @@ private Q_SLOTS:
         const QString plainPath = write(QStringLiteral("plain.jpg"), plain);
         // Orientation 6: the stored image must be turned 90 degrees clockwise to be upright,
         // so its left column becomes the top row.
-        const QString rotatedPath =
-            write(QStringLiteral("exif6.jpg"), plain.left(2) + exifOrientationSegment(6) + plain.mid(2));
+        const QString rotatedPath
+            = write(QStringLiteral("exif6.jpg"), plain.left(2) + exifOrientationSegment(6) + plain.mid(2));
 
         QString error;
         const QImage upright = loadPhoto(plainPath, &error);
@@ -260,7 +257,8 @@ private Q_SLOTS:
         // Multi-picture and motion-photo JPEGs carry more data after the end marker; stray
         // marker-like bytes there must not make the photo look truncated.
         const QByteArray jpeg = encode(detailed(64, 48), "jpg", 90);
-        const QString path = write(QStringLiteral("trailer.jpg"), jpeg + QByteArray("\xff\xda\x00\x08trailing video data", 24));
+        const QString path
+            = write(QStringLiteral("trailer.jpg"), jpeg + QByteArray("\xff\xda\x00\x08trailing video data", 24));
         QString error;
         const QImage image = loadPhoto(path, &error);
         QVERIFY2(!image.isNull(), qPrintable(error));
@@ -277,23 +275,27 @@ private Q_SLOTS:
         const QByteArray png = encode(detailed(400, 300), "png");
         // Cut inside the entropy-coded data: libjpeg would pad the rest with grey.
         QTest::newRow("truncated jpeg") << QStringLiteral("truncated.jpg") << jpeg.left(jpeg.size() / 2)
-                                        << QStringList{QStringLiteral("the JPEG image is truncated")};
+                                        << QStringList {QStringLiteral("the JPEG image is truncated")};
         QTest::newRow("jpeg cut in its header") << QStringLiteral("header.jpg") << jpeg.left(300)
-                                                << QStringList{QStringLiteral("the JPEG image is truncated")};
+                                                << QStringList {QStringLiteral("the JPEG image is truncated")};
         QTest::newRow("truncated png") << QStringLiteral("truncated.png") << png.left(png.size() / 2)
-                                       << QStringList{QStringLiteral("the PNG image is corrupt or truncated")};
-        QTest::newRow("text named .jpg")
-            << QStringLiteral("notes.jpg") << QByteArray("Dear diary,\nthis is not a photo.\n")
-            << QStringList{QStringLiteral("text, not an image"), QStringLiteral("Dear diary, this is not")};
+                                       << QStringList {QStringLiteral("the PNG image is corrupt or truncated")};
+        QTest::newRow("text named .jpg") << QStringLiteral("notes.jpg")
+                                         << QByteArray("Dear diary,\nthis is not a photo.\n")
+                                         << QStringList {QStringLiteral("text, not an image"),
+                                                QStringLiteral("Dear diary, this is not")};
         QTest::newRow("pdf") << QStringLiteral("scan.png") << QByteArray("%PDF-1.7\n%\xe2\xe3\xcf\xd3\n1 0 obj\n")
-                             << QStringList{QStringLiteral("a PDF document, not an image")};
-        QTest::newRow("binary noise") << QStringLiteral("noise.jpg") << QByteArray("\x00\x01\x02\x03\xfe\xfd\x10\x11\x12", 9)
-                                      << QStringList{QStringLiteral("unrecognised data starting with 00 01 02 03 fe fd 10 11")};
-        QTest::newRow("empty") << QStringLiteral("empty.jpg") << QByteArray() << QStringList{QStringLiteral("the file is empty")};
+                             << QStringList {QStringLiteral("a PDF document, not an image")};
+        QTest::newRow("binary noise") << QStringLiteral("noise.jpg")
+                                      << QByteArray("\x00\x01\x02\x03\xfe\xfd\x10\x11\x12", 9)
+                                      << QStringList {
+                                             QStringLiteral("unrecognised data starting with 00 01 02 03 fe fd 10 11")};
+        QTest::newRow("empty") << QStringLiteral("empty.jpg") << QByteArray()
+                               << QStringList {QStringLiteral("the file is empty")};
         QTest::newRow("png claiming 20000x20000")
             << QStringLiteral("huge.png") << pngClaiming(20000, 20000)
-            << QStringList{QStringLiteral("too large: 20000 × 20000 pixels (400 megapixels)"),
-                           QStringLiteral("the limit is 100 megapixels")};
+            << QStringList {QStringLiteral("too large: 20000 × 20000 pixels (400 megapixels)"),
+                   QStringLiteral("the limit is 100 megapixels")};
         QByteArray hugeJpeg = jpeg;
         const qsizetype sof = hugeJpeg.indexOf("\xff\xc0");
         QVERIFY(sof > 0);
@@ -302,7 +304,7 @@ private Q_SLOTS:
         hugeJpeg[sof + 7] = char(0x4e); // width 20000
         hugeJpeg[sof + 8] = char(0x20);
         QTest::newRow("jpeg claiming 20000x20000") << QStringLiteral("huge.jpg") << hugeJpeg
-                                                    << QStringList{QStringLiteral("too large: 20000 × 20000 pixels")};
+                                                   << QStringList {QStringLiteral("too large: 20000 × 20000 pixels")};
     }
 
     void badFiles()

@@ -55,18 +55,19 @@ Project richProject(const QString &dir)
     n.cornersFromPrevious = false;
     p.mouthShapes.setPreset(MouthShape::N, n);
 
-    p.layerPaths = {dir + QStringLiteral("/layers/hat.svg"),
-                    QDir::cleanPath(dir + QStringLiteral("/../elsewhere/glasses.svg"))};
+    p.layerPaths
+        = {dir + QStringLiteral("/layers/hat.svg"), QDir::cleanPath(dir + QStringLiteral("/../elsewhere/glasses.svg"))};
 
     QJsonObject timeline;
     timeline.insert(QStringLiteral("duration"), 12.345678901234567);
     QJsonArray mouth;
     for (int i = 0; i < 5; ++i)
-        mouth.append(QJsonObject{{QStringLiteral("t"), i / 12.0}, {QStringLiteral("shape"), QStringLiteral("a")}});
+        mouth.append(QJsonObject {{QStringLiteral("t"), i / 12.0}, {QStringLiteral("shape"), QStringLiteral("a")}});
     timeline.insert(QStringLiteral("mouth"), mouth);
     timeline.insert(QStringLiteral("notes"), QJsonValue::Null);
     timeline.insert(QStringLiteral("loop"), false);
-    timeline.insert(QStringLiteral("nested"), QJsonObject{{QStringLiteral("deep"), QJsonArray{1, 2.5, QStringLiteral("x")}}});
+    timeline.insert(
+        QStringLiteral("nested"), QJsonObject {{QStringLiteral("deep"), QJsonArray {1, 2.5, QStringLiteral("x")}}});
     p.timeline = timeline;
 
     p.audioPath = dir + QStringLiteral("/audio/voice.wav");
@@ -105,7 +106,7 @@ class DacOverrideDropped
 public:
     DacOverrideDropped()
     {
-        __user_cap_header_struct header{_LINUX_CAPABILITY_VERSION_3, 0};
+        __user_cap_header_struct header {_LINUX_CAPABILITY_VERSION_3, 0};
         if (syscall(SYS_capget, &header, m_saved) != 0)
             return;
         __user_cap_data_struct reduced[2] = {m_saved[0], m_saved[1]};
@@ -116,12 +117,12 @@ public:
     {
         if (!m_active)
             return;
-        __user_cap_header_struct header{_LINUX_CAPABILITY_VERSION_3, 0};
+        __user_cap_header_struct header {_LINUX_CAPABILITY_VERSION_3, 0};
         syscall(SYS_capset, &header, m_saved);
     }
 
 private:
-    __user_cap_data_struct m_saved[2]{};
+    __user_cap_data_struct m_saved[2] {};
     bool m_active = false;
 };
 #endif
@@ -201,9 +202,9 @@ private Q_SLOTS:
         QCOMPARE(json.value(QStringLiteral("photo")).toString(), QStringLiteral("photos/face.jpg"));
         QCOMPARE(json.value(QStringLiteral("layers")).toArray().at(0).toString(), QStringLiteral("layers/hat.svg"));
         QCOMPARE(json.value(QStringLiteral("layers")).toArray().at(1).toString(),
-                 QStringLiteral("../elsewhere/glasses.svg"));
+            QStringLiteral("../elsewhere/glasses.svg"));
         QCOMPARE(json.value(QStringLiteral("audio")).toObject().value(QStringLiteral("path")).toString(),
-                 QStringLiteral("audio/voice.wav"));
+            QStringLiteral("audio/voice.wav"));
         // Points in face-model order with their flags.
         const QJsonArray points = json.value(QStringLiteral("points")).toArray();
         QCOMPARE(points.size(), kPointCount);
@@ -212,13 +213,13 @@ private Q_SLOTS:
         QCOMPARE(points.at(12).toObject().value(QStringLiteral("handPlaced")).toBool(), true);
         QCOMPARE(points.at(13).toObject().value(QStringLiteral("handPlaced")).toBool(), false);
         // Colours: #rrggbb when opaque, #aarrggbb otherwise, "none" for no colour.
-        const QJsonObject components =
-            json.value(QStringLiteral("style")).toObject().value(QStringLiteral("components")).toObject();
+        const QJsonObject components
+            = json.value(QStringLiteral("style")).toObject().value(QStringLiteral("components")).toObject();
         const QJsonObject hair = components.value(QStringLiteral("hair")).toObject();
         QCOMPARE(hair.value(QStringLiteral("fill")).toString(), QStringLiteral("#33221a"));
         QCOMPARE(hair.value(QStringLiteral("stroke")).toString(), QStringLiteral("none"));
         QCOMPARE(components.value(QStringLiteral("eyeballs")).toObject().value(QStringLiteral("fill")).toString(),
-                 QStringLiteral("#cc1a1a1a"));
+            QStringLiteral("#cc1a1a1a"));
         // All nine mouth shapes by name.
         const QJsonObject shapes = json.value(QStringLiteral("mouthShapes")).toObject();
         QCOMPARE(shapes.size(), kMouthShapeCount);
@@ -290,7 +291,7 @@ private Q_SLOTS:
                 QVERIFY2(p->mouthShapes.isDefault(s), qPrintable(mouthShapeName(s)));
         }
         QCOMPARE(p->mouthShapes.preset(MouthShape::A).offsets[Down].dy.mns, 0.95);
-        QCOMPARE(p->layerPaths, QStringList{QDir::cleanPath(kData + QStringLiteral("/v1/layers/hat.svg"))});
+        QCOMPARE(p->layerPaths, QStringList {QDir::cleanPath(kData + QStringLiteral("/v1/layers/hat.svg"))});
         QCOMPARE(p->timeline.value(QStringLiteral("duration")).toDouble(), 2.5);
         QCOMPARE(p->audioOffset, 0.25);
         QCOMPARE(p->scriptLanguage, QStringLiteral("cmn"));
@@ -329,7 +330,8 @@ private Q_SLOTS:
         row("newer-version.toonface", "made by a newer Toonface (project version 3; this version reads up to 1)");
         row("version-string.toonface", "version: expected a version number (1 or more), found the string \"1\"");
         row("version-zero.toonface", "version: expected a version number (1 or more), found 0");
-        row("wrong-format.toonface", "not a Toonface project (format: expected \"toonface.project\", found the string \"toonface.face/1\")");
+        row("wrong-format.toonface",
+            "not a Toonface project (format: expected \"toonface.project\", found the string \"toonface.face/1\")");
         row("missing-format.toonface", "not a Toonface project (it has no \"format\" field)");
         row("top-level-array.toonface", "not a Toonface project (expected a JSON object");
         row("not-json.toonface", "not a Toonface project: illegal value at offset");
@@ -437,7 +439,7 @@ private Q_SLOTS:
         p.script = QStringLiteral("changed");
         QVERIFY2(saveProject(p, file, &error), qPrintable(error));
         QCOMPARE(loadProject(file, &error)->script, QStringLiteral("changed"));
-        QCOMPARE(entries(tmp.path()), QStringList{QStringLiteral("a.toonface")});
+        QCOMPARE(entries(tmp.path()), QStringList {QStringLiteral("a.toonface")});
     }
 
     void saveRefusesNonFiniteValues()
@@ -470,8 +472,9 @@ private Q_SLOTS:
         const QByteArray before = readAll(file);
         const QStringList filesBefore = entries(dir);
 
-        QVERIFY(QFile::setPermissions(dir, QFile::ReadOwner | QFile::ExeOwner | QFile::ReadGroup | QFile::ExeGroup
-                                               | QFile::ReadOther | QFile::ExeOther));
+        QVERIFY(QFile::setPermissions(dir,
+            QFile::ReadOwner | QFile::ExeOwner | QFile::ReadGroup | QFile::ExeGroup | QFile::ReadOther
+                | QFile::ExeOther));
         bool saved = false;
         bool folderWritable = false;
         {
@@ -507,7 +510,7 @@ private Q_SLOTS:
         QVERIFY(writeFile(file, QByteArrayLiteral("{\"the\": \"old project\"}\n")));
         const QByteArray before = readAll(file);
 
-        rlimit saved{};
+        rlimit saved {};
         QCOMPARE(getrlimit(RLIMIT_FSIZE, &saved), 0);
         rlimit small = saved;
         small.rlim_cur = 4096;
@@ -521,7 +524,7 @@ private Q_SLOTS:
         QVERIFY(!ok);
         QVERIFY2(error.startsWith(file + QStringLiteral(": cannot save: ")), qPrintable(error));
         QCOMPARE(readAll(file), before);
-        QCOMPARE(entries(tmp.path()), QStringList{QStringLiteral("a.toonface")});
+        QCOMPARE(entries(tmp.path()), QStringList {QStringLiteral("a.toonface")});
 #endif
     }
 };
