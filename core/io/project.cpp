@@ -23,37 +23,25 @@ constexpr qint64 kMaxProjectBytes = 256ll * 1024 * 1024;
 
 constexpr std::array<const char *, 4> kOffsetKeys = {"up", "dn", "lf", "rt"}; // MouthControl order
 
-// The variant names of the file format. They are spelled here rather than taken from
-// style.cpp so that the file format is fixed by the io code that reads and writes it.
-constexpr std::array<std::pair<EyebrowVariant, const char *>, 3> kEyebrowNames
-    = {{{EyebrowVariant::Polyline, "polyline"}, {EyebrowVariant::Bezier, "bezier"}, {EyebrowVariant::Thick, "thick"}}};
-constexpr std::array<std::pair<NoseVariant, const char *>, 3> kNoseNames
-    = {{{NoseVariant::Full, "full"}, {NoseVariant::Simple, "simple"}, {NoseVariant::Tip, "tip"}}};
-
-template<typename Enum, std::size_t N>
-QString enumName(const std::array<std::pair<Enum, const char *>, N> &names, Enum value)
-{
-    for (const auto &[v, name] : names) {
-        if (v == value)
-            return QString::fromLatin1(name);
-    }
-    return {};
-}
+// The variants a style may name; their spelling is style.h's (eyebrowVariantName, noseVariantName).
+constexpr std::array<EyebrowVariant, 3> kEyebrowVariants
+    = {EyebrowVariant::Polyline, EyebrowVariant::Bezier, EyebrowVariant::Thick};
+constexpr std::array<NoseVariant, 3> kNoseVariants = {NoseVariant::Full, NoseVariant::Simple, NoseVariant::Tip};
 
 template<typename Enum, std::size_t N>
 bool enumFromJson(
-    const std::array<std::pair<Enum, const char *>, N> &names, const JsonField &field, Enum *out, QString *error)
+    const std::array<Enum, N> &values, QString (*nameOf)(Enum), const JsonField &field, Enum *out, QString *error)
 {
     QString s;
     if (!field.toString(&s, error))
         return false;
     QStringList all;
-    for (const auto &[v, name] : names) {
-        if (s == QLatin1StringView(name)) {
+    for (Enum v : values) {
+        if (s == nameOf(v)) {
             *out = v;
             return true;
         }
-        all << QLatin1Char('"') + QString::fromLatin1(name) + QLatin1Char('"');
+        all << QLatin1Char('"') + nameOf(v) + QLatin1Char('"');
     }
     return field.expected(QStringLiteral("one of %1").arg(all.join(QStringLiteral(", "))), error);
 }
@@ -140,8 +128,8 @@ QJsonObject styleToJson(const Style &style)
     s.insert(QStringLiteral("name"), style.name);
     s.insert(QStringLiteral("cornerCutDepth"), style.cornerCutDepth);
     s.insert(QStringLiteral("cute"), style.cute);
-    s.insert(QStringLiteral("eyebrows"), enumName(kEyebrowNames, style.eyebrows));
-    s.insert(QStringLiteral("nose"), enumName(kNoseNames, style.nose));
+    s.insert(QStringLiteral("eyebrows"), eyebrowVariantName(style.eyebrows));
+    s.insert(QStringLiteral("nose"), noseVariantName(style.nose));
     QJsonObject components;
     for (auto it = style.components.cbegin(); it != style.components.cend(); ++it) {
         QJsonObject c;
@@ -161,8 +149,8 @@ bool styleFromJson(const JsonField &field, Style *style, QString *error)
     if (!field.toObject(&unused, error) || !field.member("name").toString(&style->name, error)
         || !field.member("cornerCutDepth").toInt(0, 8, &style->cornerCutDepth, error)
         || !field.member("cute").toBool(&style->cute, error)
-        || !enumFromJson(kEyebrowNames, field.member("eyebrows"), &style->eyebrows, error)
-        || !enumFromJson(kNoseNames, field.member("nose"), &style->nose, error))
+        || !enumFromJson(kEyebrowVariants, &eyebrowVariantName, field.member("eyebrows"), &style->eyebrows, error)
+        || !enumFromJson(kNoseVariants, &noseVariantName, field.member("nose"), &style->nose, error))
         return false;
     const JsonField components = field.member("components");
     QJsonObject all;

@@ -47,7 +47,7 @@ QMap<QString, ComponentStyle> baseComponents()
     c.insert(QStringLiteral("teeth"), paint("#fbf8f1", nullptr, 0));
     c.insert(QStringLiteral("tongue"), paint("#c0585a", nullptr, 0));
     ComponentStyle cheeks = paint("#f07f7f", nullptr, 0);
-    cheeks.fill.setAlphaF(0.3f);
+    cheeks.fill.setAlpha(77); // 30 %, in the 8 bits a project file keeps
     cheeks.visible = false;
     c.insert(QStringLiteral("cheeks"), cheeks);
     return c;

@@ -189,6 +189,22 @@ private Q_SLOTS:
         QVERIFY(*loaded == Project());
     }
 
+    // Presets are saved as they are: a project made with any preset loads back equal.
+    void everyStylePresetRoundTrips()
+    {
+        QTemporaryDir tmp;
+        for (const QString &name : Style::presetNames()) {
+            Project project;
+            project.style = Style::preset(name);
+            const QString file = tmp.filePath(name + QStringLiteral(".toonface"));
+            QString error;
+            QVERIFY2(saveProject(project, file, &error), qPrintable(error));
+            const auto loaded = loadProject(file, &error);
+            QVERIFY2(loaded, qPrintable(error));
+            QVERIFY2(loaded->style == project.style, qPrintable(name));
+        }
+    }
+
     void fileLayout()
     {
         QTemporaryDir tmp;
