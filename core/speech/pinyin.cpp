@@ -1,6 +1,5 @@
 #include "speech/pinyin.h"
 
-#include <QRegularExpression>
 #include <QSet>
 
 #include <functional>
@@ -189,55 +188,61 @@ std::optional<PinyinSyllable> parsePinyinSyllable(const QString &text)
     return PinyinSyllable{out, tone};
 }
 
-std::optional<QVector<PinyinSyllable>> splitPinyinWord(const QString &word)
+std::optional<QVector<PinyinSyllable>> splitPinyinWord(const QString &word, QVector<QPair<int, int>> *spans)
 {
     QVector<PinyinSyllable> result;
-    const QStringList parts = word.split(QRegularExpression(QStringLiteral("['’\\-]")), Qt::SkipEmptyParts);
-    for (const QString &part : parts) {
-        // Break after each tone digit first: "ni3hao3".
-        QStringList pieces;
-        QString cur;
-        for (const QChar c : part) {
-            cur.append(c);
-            if (c.isDigit()) {
-                pieces.append(cur);
-                cur.clear();
-            }
-        }
+    QVector<QPair<int, int>> where;
+    // Pieces between separators (' ’ -) and after tone digits, each with its offset.
+    QVector<QPair<int, QString>> pieces;
+    QString cur;
+    int curStart = 0;
+    auto flush = [&](int next) {
         if (!cur.isEmpty())
-            pieces.append(cur);
-        for (const QString &piece : pieces) {
-            // Longest valid first syllable whose rest also splits (depth-first).
-            std::function<bool(const QString &, QVector<PinyinSyllable> &)> split =
-                [&](const QString &p, QVector<PinyinSyllable> &acc) {
-                    if (p.isEmpty())
-                        return true;
-                    for (qsizetype len = std::min<qsizetype>(p.size(), 7); len >= 1; --len) {
-                        QString head = p.left(len);
-                        QString tail = p.mid(len);
-                        // A tone digit belongs to the syllable before it.
-                        if (!tail.isEmpty() && tail.at(0).isDigit()) {
-                            head += tail.at(0);
-                            tail.remove(0, 1);
-                        }
-                        const auto syl = parsePinyinSyllable(head);
-                        if (!syl)
-                            continue;
-                        acc.append(*syl);
-                        if (split(tail, acc))
-                            return true;
-                        acc.removeLast();
-                    }
-                    return false;
-                };
-            QVector<PinyinSyllable> acc;
-            if (!split(piece, acc))
-                return std::nullopt;
-            result += acc;
+            pieces.append({curStart, cur});
+        cur.clear();
+        curStart = next;
+    };
+    for (int i = 0; i < word.size(); ++i) {
+        const QChar c = word.at(i);
+        if (c == QLatin1Char('\'') || c == QChar(0x2019) || c == QLatin1Char('-')) {
+            flush(i + 1);
+            continue;
         }
+        cur.append(c);
+        if (c.isDigit())
+            flush(i + 1);
+    }
+    flush(int(word.size()));
+
+    for (const auto &[offset, piece] : pieces) {
+        // Longest valid first syllable whose rest also splits (depth-first).
+        std::function<bool(int)> split = [&](int from) {
+            if (from == piece.size())
+                return true;
+            for (int len = std::min<int>(int(piece.size()) - from, 8); len >= 1; --len) {
+                int end = from + len;
+                // A tone digit belongs to the syllable before it.
+                if (end < piece.size() && piece.at(end).isDigit())
+                    ++end;
+                const auto syl = parsePinyinSyllable(piece.mid(from, end - from));
+                if (!syl)
+                    continue;
+                result.append(*syl);
+                where.append({offset + from, end - from});
+                if (split(end))
+                    return true;
+                result.removeLast();
+                where.removeLast();
+            }
+            return false;
+        };
+        if (!split(0))
+            return std::nullopt;
     }
     if (result.isEmpty())
         return std::nullopt;
+    if (spans)
+        *spans = where;
     return result;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QPair>
 #include <QString>
 #include <QVector>
 
@@ -39,8 +40,10 @@ std::optional<PinyinSyllable> parsePinyinSyllable(const QString &text);
 
 // A written pinyin word of one or more syllables ("nǐhǎo", "ni3hao3", "Xi'an", "xian") →
 // its syllables; the longest first syllable that leaves a valid rest wins, so "xian" is one
-// syllable and "xi'an" two. nullopt when the word cannot be read as pinyin.
-std::optional<QVector<PinyinSyllable>> splitPinyinWord(const QString &word);
+// syllable and "xi'an" two. `spans`, when given, receives each syllable's {offset, length} in
+// `word`. nullopt when the word cannot be read as pinyin.
+std::optional<QVector<PinyinSyllable>> splitPinyinWord(const QString &word,
+                                                       QVector<QPair<int, int>> *spans = nullptr);
 
 // "lü" tone 4 → "lv4": the tone-number spelling espeak-ng's cmn-latn-pinyin voice reads.
 QString toneNumberSpelling(const PinyinSyllable &syllable);

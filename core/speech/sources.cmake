@@ -1,3 +1,6 @@
 list(APPEND TOONFACE_CORE_SOURCES
   speech/pinyin.h speech/pinyin.cpp
+  speech/pinyindictionary.h speech/pinyindictionary.cpp
+  speech/zhuyin.h speech/zhuyin.cpp
+  speech/script.h speech/script.cpp
   speech/syllableshapes.h speech/syllableshapes.cpp)
