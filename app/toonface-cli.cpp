@@ -1,7 +1,56 @@
-#include <QCoreApplication>
+#include "cli/command.h"
+
+#include <QGuiApplication>
+#include <QTextStream>
+
+#include <algorithm>
+
+using namespace toonface::cli;
+
+namespace {
+
+void printHelp()
+{
+    QTextStream out(stdout);
+    out << "Usage: toonface-cli COMMAND [OPTIONS]\n\n"
+           "Toonface turns a photo into a personal cartoon face drawn in SVG and makes it talk.\n"
+           "Every job of the editor, with no display.\n\nCommands:\n";
+    auto list = commands();
+    std::sort(list.begin(), list.end(), [](const Command &a, const Command &b) { return a.name < b.name; });
+    for (const Command &c : list)
+        out << "  " << c.usage << "\n      " << c.summary << "\n";
+    out << "\n  toonface-cli COMMAND --help   options of one command\n"
+           "  toonface-cli --version        the version\n\n"
+           "Exit codes: 0 success, 2 usage, 3 unreadable or invalid input, 4 no face found,\n"
+           "5 the audio and the script could not be aligned, 1 other failures.\n";
+}
+
+} // namespace
 
 int main(int argc, char *argv[])
 {
-    QCoreApplication app(argc, argv);
-    return 0;
+    // Rendering text and SVG needs a GUI application, but never a display.
+    if (!qEnvironmentVariableIsSet("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    QGuiApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("toonface-cli"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(TOONFACE_VERSION));
+
+    QStringList args = app.arguments().mid(1);
+    if (args.isEmpty())
+        return fail(ExitUsage, QStringLiteral("no command given; try 'toonface-cli --help'"));
+    const QString first = args.takeFirst();
+    if (first == QLatin1StringView("--help") || first == QLatin1StringView("-h") || first == QLatin1StringView("help")) {
+        printHelp();
+        return ExitOk;
+    }
+    if (first == QLatin1StringView("--version") || first == QLatin1StringView("-v")) {
+        QTextStream(stdout) << "toonface-cli " << TOONFACE_VERSION << Qt::endl;
+        return ExitOk;
+    }
+    for (const Command &c : commands()) {
+        if (c.name == first)
+            return c.run(c, args);
+    }
+    return fail(ExitUsage, QStringLiteral("unknown command '%1'; try 'toonface-cli --help'").arg(first));
 }

@@ -1,0 +1,66 @@
+#include "cli/command.h"
+#include "cli/faceinput.h"
+#include "io/facejson.h"
+
+#include <QDir>
+#include <QJsonDocument>
+#include <QTextStream>
+
+namespace toonface::cli {
+
+namespace {
+
+int runDetect(const Command &self, const QStringList &args)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption method(QStringLiteral("method"),
+                                    QStringLiteral("Detection method: auto, classic or landmarks."),
+                                    QStringLiteral("auto|classic|landmarks"), QStringLiteral("auto"));
+    const QCommandLineOption output(QStringList{QStringLiteral("o"), QStringLiteral("output")},
+                                    QStringLiteral("Write the face JSON here (default: stdout)."),
+                                    QStringLiteral("FACE.json"));
+    const QCommandLineOption debugDir(QStringLiteral("debug-dir"),
+                                      QStringLiteral("Write intermediate images of the detection here."),
+                                      QStringLiteral("DIR"));
+    parser.addOptions({method, output, debugDir});
+    parser.addPositionalArgument(QStringLiteral("IMAGE"), QStringLiteral("The photo."));
+    bool helped = false;
+    if (!parseArguments(parser, self, args, &helped))
+        return ExitUsage;
+    if (helped)
+        return ExitOk;
+    if (parser.positionalArguments().size() != 1)
+        return fail(ExitUsage, QStringLiteral("detect takes one IMAGE (usage: toonface-cli %1)").arg(self.usage));
+
+    DetectOptions options;
+    if (!detectionMethodFromName(parser.value(method), &options.method))
+        return fail(ExitUsage, QStringLiteral("unknown --method '%1' (auto, classic or landmarks)").arg(parser.value(method)));
+    if (parser.isSet(debugDir)) {
+        options.debugDir = parser.value(debugDir);
+        if (!QDir().mkpath(options.debugDir))
+            return fail(ExitFailed, QStringLiteral("cannot create the debug folder %1").arg(options.debugDir));
+    }
+    const QString image = parser.positionalArguments().constFirst();
+    FaceInput input;
+    if (const int code = loadFaceInput(image, options, &input); code != ExitOk)
+        return code;
+    const QByteArray json = QJsonDocument(faceToJson(input.face, input.photoPath, &input.detection))
+                                .toJson(QJsonDocument::Indented);
+    if (!parser.isSet(output)) {
+        QTextStream(stdout) << json;
+        return ExitOk;
+    }
+    QString error;
+    if (!writeFileAtomically(parser.value(output), json, &error))
+        return fail(ExitFailed, error);
+    return ExitOk;
+}
+
+const CommandRegistrar registrar({QStringLiteral("detect"),
+                                  QStringLiteral("Find the face in a photo and write its 72 points as JSON (toonface.face/1)."),
+                                  QStringLiteral("detect IMAGE [--method auto|classic|landmarks] [-o FACE.json] [--debug-dir DIR]"),
+                                  runDetect});
+
+} // namespace
+
+} // namespace toonface::cli

@@ -1,0 +1,63 @@
+#include "cli/command.h"
+
+#include <QSaveFile>
+#include <QTextStream>
+
+#include <cstdio>
+#include <unistd.h>
+
+namespace toonface::cli {
+
+std::vector<Command> &commands()
+{
+    static std::vector<Command> list;
+    return list;
+}
+
+int fail(int code, const QString &message)
+{
+    QTextStream(stderr) << "toonface-cli: error: " << message << Qt::endl;
+    return code;
+}
+
+void progress(const QString &message)
+{
+    if (isatty(fileno(stderr)) || qEnvironmentVariableIsSet("TOONFACE_PROGRESS"))
+        QTextStream(stderr) << "toonface-cli: " << message << Qt::endl;
+}
+
+bool parseArguments(QCommandLineParser &parser, const Command &command, const QStringList &args,
+                    bool *helped)
+{
+    *helped = false;
+    const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")},
+                                  QStringLiteral("Show this help."));
+    parser.addOption(help);
+    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    QStringList full = args;
+    full.prepend(QStringLiteral("toonface-cli ") + command.name);
+    if (!parser.parse(full)) {
+        fail(ExitUsage, parser.errorText() + QStringLiteral(" (usage: toonface-cli ") + command.usage
+                            + QLatin1Char(')'));
+        return false;
+    }
+    if (parser.isSet(help)) {
+        QTextStream out(stdout);
+        out << "Usage: toonface-cli " << command.usage << "\n\n" << command.summary << "\n\n";
+        out << parser.helpText().section(QLatin1Char('\n'), 2);
+        *helped = true;
+    }
+    return true;
+}
+
+bool writeFileAtomically(const QString &path, const QByteArray &data, QString *error)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(data) != data.size() || !file.commit()) {
+        *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+} // namespace toonface::cli

@@ -1,0 +1,52 @@
+#pragma once
+
+#include <QCommandLineParser>
+#include <QString>
+#include <QStringList>
+
+#include <functional>
+#include <vector>
+
+namespace toonface::cli {
+
+// Exit codes of the command-line contract (architecture.md).
+enum ExitCode {
+    ExitOk = 0,
+    ExitUsage = 2,       // bad arguments
+    ExitBadInput = 3,    // unreadable or invalid input
+    ExitNoFace = 4,      // no face found
+    ExitCannotAlign = 5, // audio and script could not be aligned
+    ExitFailed = 1,      // anything else (e.g. an output that cannot be written)
+};
+
+// One subcommand: its name, a one-line summary, its usage, and the function that runs it
+// with the arguments after the subcommand's name.
+struct Command
+{
+    QString name;
+    QString summary;
+    QString usage;
+    std::function<int(const Command &self, const QStringList &args)> run;
+};
+
+std::vector<Command> &commands();
+
+struct CommandRegistrar
+{
+    explicit CommandRegistrar(Command command) { commands().push_back(std::move(command)); }
+};
+
+// Prints "toonface-cli: error: <message>" on stderr and returns `code`.
+int fail(int code, const QString &message);
+// Prints a progress line on stderr (only when stderr is a terminal or --progress was given).
+void progress(const QString &message);
+
+// Parses `args` for `command` with `parser` (options already added). On failure prints the
+// error and returns false; the caller returns ExitUsage. `--help` prints help and sets *helped.
+bool parseArguments(QCommandLineParser &parser, const Command &command, const QStringList &args,
+                    bool *helped);
+
+// Writes `data` atomically to `path` (QSaveFile); on failure sets *error naming the file.
+bool writeFileAtomically(const QString &path, const QByteArray &data, QString *error);
+
+} // namespace toonface::cli

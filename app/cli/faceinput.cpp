@@ -1,0 +1,101 @@
+#include "cli/faceinput.h"
+
+#include "cli/command.h"
+#include "io/facejson.h"
+#include "io/imageio.h"
+#include "io/project.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonParseError>
+
+namespace toonface::cli {
+
+namespace {
+
+enum class InputKind { Photo, FaceJson, Project };
+
+InputKind kindOf(const QString &path)
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix == QLatin1StringView("toonface"))
+        return InputKind::Project;
+    if (suffix == QLatin1StringView("json"))
+        return InputKind::FaceJson;
+    return InputKind::Photo;
+}
+
+int detectionExitCode(DetectStatus status)
+{
+    switch (status) {
+    case DetectStatus::Ok: return ExitOk;
+    case DetectStatus::NoFace: return ExitNoFace;
+    case DetectStatus::BadImage: return ExitBadInput;
+    default: return ExitFailed;
+    }
+}
+
+} // namespace
+
+int loadFaceInput(const QString &path, const DetectOptions &options, FaceInput *out)
+{
+    QString error;
+    switch (kindOf(path)) {
+    case InputKind::Project: {
+        const auto project = loadProject(path, &error);
+        if (!project)
+            return fail(ExitBadInput, error);
+        out->face = project->face;
+        out->style = project->style;
+        out->hasProjectStyle = true;
+        out->photoPath = project->photoPath;
+        out->layerPaths = project->layerPaths;
+        if (!out->photoPath.isEmpty() && QFileInfo::exists(out->photoPath))
+            out->photo = loadPhoto(out->photoPath, &error);
+        return ExitOk;
+    }
+    case InputKind::FaceJson: {
+        QFile file(path);
+        if (!file.open(QIODevice::ReadOnly))
+            return fail(ExitBadInput, QStringLiteral("cannot read %1: %2").arg(path, file.errorString()));
+        QJsonParseError parseError;
+        const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
+        if (!doc.isObject())
+            return fail(ExitBadInput, QStringLiteral("%1: not a face JSON: %2 at offset %3")
+                                          .arg(path, parseError.errorString())
+                                          .arg(parseError.offset));
+        QString imagePath;
+        const auto face = faceFromJson(doc.object(), &error, &imagePath);
+        if (!face)
+            return fail(ExitBadInput, QStringLiteral("%1: %2").arg(path, error));
+        out->face = *face;
+        if (!imagePath.isEmpty()) {
+            const QString resolved = QFileInfo(imagePath).isAbsolute()
+                ? imagePath
+                : QFileInfo(path).absoluteDir().filePath(imagePath);
+            if (QFileInfo::exists(resolved)) {
+                out->photoPath = resolved;
+                out->photo = loadPhoto(resolved, &error);
+            }
+        }
+        return ExitOk;
+    }
+    case InputKind::Photo: {
+        out->photo = loadPhoto(path, &error);
+        if (out->photo.isNull())
+            return fail(ExitBadInput, error);
+        out->photoPath = QFileInfo(path).absoluteFilePath();
+        out->detection = detectFace(out->photo, options);
+        if (out->detection.status != DetectStatus::Ok)
+            return fail(detectionExitCode(out->detection.status),
+                        QStringLiteral("%1: %2").arg(path, out->detection.error));
+        out->face = out->detection.face;
+        return ExitOk;
+    }
+    }
+    return ExitFailed;
+}
+
+} // namespace toonface::cli

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "detect/detector.h"
+#include "face/facemodel.h"
+#include "render/style.h"
+
+#include <QImage>
+#include <QString>
+#include <QStringList>
+
+namespace toonface::cli {
+
+// A face to draw, from any of the inputs the CLI accepts: a photo (detected now), a face
+// JSON (toonface.face/1) or a project (.toonface).
+struct FaceInput
+{
+    FaceModel face;
+    Style style;            // the project's style, or the default preset
+    bool hasProjectStyle = false;
+    QImage photo;           // may be null (face JSON whose photo is gone)
+    QString photoPath;
+    QStringList layerPaths;
+    DetectionResult detection; // set when the input was a photo
+};
+
+// Reads `path` into *out. Returns ExitOk, or prints the error line and returns the exit code
+// of the contract (3 unreadable/invalid, 4 no face).
+int loadFaceInput(const QString &path, const DetectOptions &options, FaceInput *out);
+
+} // namespace toonface::cli

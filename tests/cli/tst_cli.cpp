@@ -1,0 +1,275 @@
+#include "face/averageface.h"
+#include "io/project.h"
+
+#include <QFile>
+#include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QXmlStreamReader>
+
+using namespace toonface;
+
+namespace {
+
+const QString kPortrait = QStringLiteral("/usr/share/matplotlib/mpl-data/sample_data/grace_hopper.jpg");
+
+struct Run
+{
+    int code = -1;
+    QByteArray out;
+    QByteArray err;
+};
+
+Run cli(const QStringList &args)
+{
+    QProcess p;
+    p.start(QStringLiteral(TOONFACE_CLI_PATH), args);
+    if (!p.waitForFinished(120000))
+        return {};
+    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
+            p.readAllStandardError()};
+}
+
+// The contract's error format: exactly one line "toonface-cli: error: ...".
+bool isOneErrorLine(const QByteArray &err)
+{
+    static const QRegularExpression re(QStringLiteral("^toonface-cli: error: [^\\n]+\\n$"));
+    return re.match(QString::fromUtf8(err)).hasMatch();
+}
+
+bool isWellFormedSvg(const QString &path, QString *viewBox)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return false;
+    QXmlStreamReader xml(&f);
+    bool sawSvg = false;
+    while (!xml.atEnd()) {
+        if (xml.readNext() == QXmlStreamReader::StartElement && !sawSvg) {
+            sawSvg = xml.name() == QLatin1StringView("svg");
+            *viewBox = xml.attributes().value(QLatin1StringView("viewBox")).toString();
+        }
+    }
+    return sawSvg && !xml.hasError();
+}
+
+} // namespace
+
+class TestCli : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+    QString path(const QString &name) const { return m_dir.filePath(name); }
+    void requirePortrait()
+    {
+        if (!QFile::exists(kPortrait))
+            QSKIP("grace_hopper.jpg is not installed (package python-matplotlib-data)");
+    }
+
+private Q_SLOTS:
+    void helpAndVersion()
+    {
+        Run r = cli({QStringLiteral("--help")});
+        QCOMPARE(r.code, 0);
+        QVERIFY(r.out.contains("detect IMAGE"));
+        QVERIFY(r.out.contains("cartoon IMAGE|FACE.json|PROJECT.toonface"));
+        r = cli({QStringLiteral("--version")});
+        QCOMPARE(r.code, 0);
+        QVERIFY(r.out.startsWith("toonface-cli "));
+        r = cli({QStringLiteral("cartoon"), QStringLiteral("--help")});
+        QCOMPARE(r.code, 0);
+        QVERIFY(r.out.contains("--emotion"));
+    }
+
+    void usageErrors_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::newRow("no command") << QStringList{};
+        QTest::newRow("unknown command") << QStringList{QStringLiteral("paint")};
+        QTest::newRow("detect without image") << QStringList{QStringLiteral("detect")};
+        QTest::newRow("detect two images") << QStringList{QStringLiteral("detect"), QStringLiteral("a.jpg"), QStringLiteral("b.jpg")};
+        QTest::newRow("unknown option") << QStringList{QStringLiteral("detect"), QStringLiteral("--colour"), QStringLiteral("a.jpg")};
+        QTest::newRow("bad method") << QStringList{QStringLiteral("detect"), QStringLiteral("a.jpg"), QStringLiteral("--method"), QStringLiteral("magic")};
+        QTest::newRow("cartoon without -o") << QStringList{QStringLiteral("cartoon"), QStringLiteral("a.jpg")};
+        QTest::newRow("bad emotion") << QStringList{QStringLiteral("cartoon"), QStringLiteral("a.jpg"), QStringLiteral("-o"), QStringLiteral("x.svg"), QStringLiteral("--emotion"), QStringLiteral("bored")};
+        QTest::newRow("bad style") << QStringList{QStringLiteral("cartoon"), QStringLiteral("a.jpg"), QStringLiteral("-o"), QStringLiteral("x.svg"), QStringLiteral("--style"), QStringLiteral("cubist")};
+        QTest::newRow("bad size") << QStringList{QStringLiteral("cartoon"), QStringLiteral("a.jpg"), QStringLiteral("-o"), QStringLiteral("x.svg"), QStringLiteral("--size"), QStringLiteral("huge")};
+    }
+
+    void usageErrors()
+    {
+        QFETCH(QStringList, args);
+        const Run r = cli(args);
+        QCOMPARE(r.code, 2);
+        QVERIFY2(isOneErrorLine(r.err), r.err.constData());
+    }
+
+    void unreadableInputs_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QByteArray>("content"); // empty = do not create
+        QTest::newRow("missing") << QStringLiteral("missing.jpg") << QByteArray();
+        QTest::newRow("not an image") << QStringLiteral("notes.jpg") << QByteArray("just some words\n");
+        QTest::newRow("empty") << QStringLiteral("empty.png") << QByteArray("\0", 0);
+        QTest::newRow("bad face json") << QStringLiteral("face.json") << QByteArray("{\"format\": \"toonface.face/1\", \"points\": 3}");
+        QTest::newRow("not json") << QStringLiteral("face2.json") << QByteArray("{points");
+        QTest::newRow("bad project") << QStringLiteral("p.toonface") << QByteArray("{\"format\": \"toonface.project\", \"version\": 1}");
+    }
+
+    void unreadableInputs()
+    {
+        QFETCH(QString, file);
+        QFETCH(QByteArray, content);
+        const QString p = path(file);
+        if (QTest::currentDataTag() != QLatin1StringView("missing")) {
+            QFile f(p);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(content);
+        }
+        for (const QString &cmd : {QStringLiteral("detect"), QStringLiteral("cartoon")}) {
+            if (cmd == QLatin1StringView("detect") && !file.endsWith(QLatin1StringView(".jpg"))
+                && !file.endsWith(QLatin1StringView(".png")))
+                continue;
+            const Run r = cli({cmd, p, QStringLiteral("-o"), path(QStringLiteral("out.svg"))});
+            QCOMPARE(r.code, 3);
+            QVERIFY2(isOneErrorLine(r.err), r.err.constData());
+            QVERIFY2(r.err.contains(file.toUtf8()), "the error names the file");
+        }
+    }
+
+    void truncatedPhoto()
+    {
+        requirePortrait();
+        QFile in(kPortrait);
+        QVERIFY(in.open(QIODevice::ReadOnly));
+        const QByteArray all = in.readAll();
+        QFile out(path(QStringLiteral("truncated.jpg")));
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(all.left(all.size() / 3));
+        out.close();
+        const Run r = cli({QStringLiteral("detect"), out.fileName()});
+        QCOMPARE(r.code, 3);
+        QVERIFY2(isOneErrorLine(r.err), r.err.constData());
+        QVERIFY(r.err.contains("truncated.jpg"));
+    }
+
+    void noFace()
+    {
+        QImage blank(640, 480, QImage::Format_RGB32);
+        blank.fill(QColor(200, 210, 220));
+        const QString p = path(QStringLiteral("blank.png"));
+        QVERIFY(blank.save(p));
+        Run r = cli({QStringLiteral("detect"), p});
+        QCOMPARE(r.code, 4);
+        QVERIFY2(isOneErrorLine(r.err), r.err.constData());
+        r = cli({QStringLiteral("cartoon"), p, QStringLiteral("-o"), path(QStringLiteral("blank.svg"))});
+        QCOMPARE(r.code, 4);
+        QVERIFY(!QFile::exists(path(QStringLiteral("blank.svg"))));
+    }
+
+    void detectPortrait()
+    {
+        requirePortrait();
+        const Run r = cli({QStringLiteral("detect"), kPortrait});
+        QCOMPARE(r.code, 0);
+        QVERIFY2(r.err.isEmpty(), r.err.constData());
+        const QJsonObject json = QJsonDocument::fromJson(r.out).object();
+        QCOMPARE(json.value(QLatin1StringView("format")).toString(), QStringLiteral("toonface.face/1"));
+        const QJsonArray points = json.value(QLatin1StringView("points")).toArray();
+        QCOMPARE(points.size(), 72);
+        QCOMPARE(points.first().toObject().value(QLatin1StringView("id")).toString(), QStringLiteral("h.1"));
+        QCOMPARE(points.last().toObject().value(QLatin1StringView("id")).toString(), QStringLiteral("2.3"));
+        for (const auto &v : points) {
+            const QJsonObject o = v.toObject();
+            for (const char *key : {"id", "x", "y", "group", "control"})
+                QVERIFY2(o.contains(QLatin1StringView(key)), key);
+        }
+        const QJsonObject image = json.value(QLatin1StringView("image")).toObject();
+        QCOMPARE(image.value(QLatin1StringView("width")).toInt(), 512);
+        QCOMPARE(image.value(QLatin1StringView("height")).toInt(), 600);
+        QVERIFY(json.value(QLatin1StringView("fapu")).toObject().value(QLatin1StringView("ES0")).toDouble() > 50);
+        QVERIFY(json.value(QLatin1StringView("timingMs")).toObject().contains(QLatin1StringView("total")));
+        QVERIFY(!json.value(QLatin1StringView("method")).toString().isEmpty());
+
+        const QString facePath = path(QStringLiteral("hopper.json"));
+        const Run saved = cli({QStringLiteral("detect"), kPortrait, QStringLiteral("-o"), facePath});
+        QCOMPARE(saved.code, 0);
+        QVERIFY(saved.out.isEmpty());
+        QVERIFY(QFile::exists(facePath));
+    }
+
+    void cartoonFromEveryInput()
+    {
+        requirePortrait();
+        // From the photo, with a PNG.
+        const QString svg = path(QStringLiteral("hopper.svg"));
+        const QString png = path(QStringLiteral("hopper.png"));
+        Run r = cli({QStringLiteral("cartoon"), kPortrait, QStringLiteral("-o"), svg, QStringLiteral("--png"), png,
+                     QStringLiteral("--size"), QStringLiteral("300")});
+        QCOMPARE(r.code, 0);
+        QString viewBox;
+        QVERIFY(isWellFormedSvg(svg, &viewBox));
+        QCOMPARE(viewBox, QStringLiteral("0 0 512 600"));
+        const QImage image(png);
+        QCOMPARE(std::max(image.width(), image.height()), 300);
+
+        // From the face JSON.
+        const QString facePath = path(QStringLiteral("face-for-cartoon.json"));
+        QCOMPARE(cli({QStringLiteral("detect"), kPortrait, QStringLiteral("-o"), facePath}).code, 0);
+        const QString svg2 = path(QStringLiteral("from-json.svg"));
+        r = cli({QStringLiteral("cartoon"), facePath, QStringLiteral("-o"), svg2});
+        QCOMPARE(r.code, 0);
+        QVERIFY(isWellFormedSvg(svg2, &viewBox));
+
+        // An emotion changes the drawing; a style too.
+        const QString smile = path(QStringLiteral("smile.svg"));
+        QCOMPARE(cli({QStringLiteral("cartoon"), facePath, QStringLiteral("-o"), smile, QStringLiteral("--emotion"),
+                      QStringLiteral("smile")}).code, 0);
+        QFile a(svg2), b(smile);
+        QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+        QVERIFY(a.readAll() != b.readAll());
+        const QString cute = path(QStringLiteral("cute.svg"));
+        QCOMPARE(cli({QStringLiteral("cartoon"), facePath, QStringLiteral("-o"), cute, QStringLiteral("--style"),
+                      QStringLiteral("cute")}).code, 0);
+    }
+
+    void cartoonFromProject()
+    {
+        Project project;
+        project.face = averageFace(QRectF(60, 80, 200, 240), QSize(320, 400));
+        project.style.name = QStringLiteral("normal");
+        const QString projectPath = path(QStringLiteral("mine.toonface"));
+        QString error;
+        QVERIFY2(saveProject(project, projectPath, &error), qPrintable(error));
+        const QString svg = path(QStringLiteral("project.svg"));
+        const Run r = cli({QStringLiteral("cartoon"), projectPath, QStringLiteral("-o"), svg});
+        QCOMPARE(r.code, 0);
+        QString viewBox;
+        QVERIFY(isWellFormedSvg(svg, &viewBox));
+        QCOMPARE(viewBox, QStringLiteral("0 0 320 400"));
+    }
+
+    void unwritableOutput()
+    {
+        Project project;
+        project.face = averageFace(QRectF(60, 80, 200, 240), QSize(320, 400));
+        const QString projectPath = path(QStringLiteral("w.toonface"));
+        QString error;
+        QVERIFY(saveProject(project, projectPath, &error));
+        const Run r = cli({QStringLiteral("cartoon"), projectPath, QStringLiteral("-o"),
+                           path(QStringLiteral("no/such/dir/out.svg"))});
+        QCOMPARE(r.code, 1);
+        QVERIFY2(isOneErrorLine(r.err), r.err.constData());
+        QVERIFY(r.err.contains("out.svg"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "tst_cli.moc"
