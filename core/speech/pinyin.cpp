@@ -20,9 +20,9 @@ const QSet<QString> &validFinals()
 {
     static const QSet<QString> finals = [] {
         QSet<QString> s;
-        for (const char *f : {"a", "o", "e", "ai", "ei", "ao", "ou", "an", "en", "ang", "eng", "ong",
-                              "er", "i", "ia", "io", "ie", "iao", "iou", "ian", "in", "iang", "ing",
-                              "iong", "u", "ua", "uo", "uai", "uei", "uan", "uen", "uang", "ueng"})
+        for (const char *f :
+            {"a", "o", "e", "ai", "ei", "ao", "ou", "an", "en", "ang", "eng", "ong", "er", "i", "ia", "io", "ie", "iao",
+                "iou", "ian", "in", "iang", "ing", "iong", "u", "ua", "uo", "uai", "uei", "uan", "uen", "uang", "ueng"})
             s.insert(QString::fromLatin1(f));
         s.insert(QString(kCircumflexE));
         for (const char *f : {"", "e", "an", "en"})
@@ -34,9 +34,8 @@ const QSet<QString> &validFinals()
 
 bool phonotacticallyValid(const QString &initial, const QString &final)
 {
-    static const QSet<QString> retroflexAndDental = {
-        QStringLiteral("zh"), QStringLiteral("ch"), QStringLiteral("sh"), QStringLiteral("r"),
-        QStringLiteral("z"), QStringLiteral("c"), QStringLiteral("s")};
+    static const QSet<QString> retroflexAndDental = {QStringLiteral("zh"), QStringLiteral("ch"), QStringLiteral("sh"),
+        QStringLiteral("r"), QStringLiteral("z"), QStringLiteral("c"), QStringLiteral("s")};
     static const QSet<QString> velar = {QStringLiteral("g"), QStringLiteral("k"), QStringLiteral("h")};
     const bool front = startsWithFront(final);
     const bool umlaut = final.startsWith(kUmlautU);
@@ -95,7 +94,7 @@ std::optional<PinyinParts> splitPinyinSyllable(const QString &toneless)
     QString s = toneless;
     for (const char *nasal : {"m", "n", "ng", "hm", "hng"}) {
         if (s == QLatin1String(nasal))
-            return PinyinParts{QString(), s, false};
+            return PinyinParts {QString(), s, false};
     }
     bool erhua = false;
     if (s.size() > 2 && s.endsWith(QLatin1Char('r'))) {
@@ -107,8 +106,7 @@ std::optional<PinyinParts> splitPinyinSyllable(const QString &toneless)
         if (s.startsWith(QLatin1String(two)))
             initial = QString::fromLatin1(two);
     }
-    if (initial.isEmpty() && !s.isEmpty()
-        && QStringLiteral("bpmfdtnlgkhjqxrzcsyw").contains(s.at(0)))
+    if (initial.isEmpty() && !s.isEmpty() && QStringLiteral("bpmfdtnlgkhjqxrzcsyw").contains(s.at(0)))
         initial = s.left(1);
     QString rest = s.mid(initial.size());
     if (rest.isEmpty())
@@ -141,7 +139,7 @@ std::optional<PinyinParts> splitPinyinSyllable(const QString &toneless)
         return std::nullopt;
     if (erhua && rest == QLatin1String("er"))
         return std::nullopt;
-    return PinyinParts{initial, rest, erhua};
+    return PinyinParts {initial, rest, erhua};
 }
 
 std::optional<PinyinSyllable> parsePinyinSyllable(const QString &text)
@@ -167,11 +165,8 @@ std::optional<PinyinSyllable> parsePinyinSyllable(const QString &text)
         case 0x030C: markTone = 3; continue;
         case 0x0300: markTone = 4; continue;
         case 0x0308:
-        case 0x0302:
-            out.append(c);
-            continue;
-        default:
-            break;
+        case 0x0302: out.append(c); continue;
+        default: break;
         }
         if (c < QLatin1Char('a') || c > QLatin1Char('z'))
             return std::nullopt;
@@ -185,7 +180,7 @@ std::optional<PinyinSyllable> parsePinyinSyllable(const QString &text)
         out[1] = QLatin1Char('u');
     if (!isMandarinSyllable(out))
         return std::nullopt;
-    return PinyinSyllable{out, tone};
+    return PinyinSyllable {out, tone};
 }
 
 std::optional<QVector<PinyinSyllable>> splitPinyinWord(const QString &word, QVector<QPair<int, int>> *spans)

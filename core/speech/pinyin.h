@@ -32,7 +32,10 @@ struct PinyinParts
 // requires: a toneless, normalised syllable (see PinyinSyllable). nullopt when it is not
 // spelled like a Mandarin syllable.
 std::optional<PinyinParts> splitPinyinSyllable(const QString &toneless);
-inline bool isMandarinSyllable(const QString &toneless) { return splitPinyinSyllable(toneless).has_value(); }
+inline bool isMandarinSyllable(const QString &toneless)
+{
+    return splitPinyinSyllable(toneless).has_value();
+}
 
 // One written syllable ("nǐ", "ni3", "NI3", "lv4", "lü", "nu:3", "ê") → normalised form, or
 // nullopt when it is not one valid syllable.
@@ -42,8 +45,7 @@ std::optional<PinyinSyllable> parsePinyinSyllable(const QString &text);
 // its syllables; the longest first syllable that leaves a valid rest wins, so "xian" is one
 // syllable and "xi'an" two. `spans`, when given, receives each syllable's {offset, length} in
 // `word`. nullopt when the word cannot be read as pinyin.
-std::optional<QVector<PinyinSyllable>> splitPinyinWord(const QString &word,
-                                                       QVector<QPair<int, int>> *spans = nullptr);
+std::optional<QVector<PinyinSyllable>> splitPinyinWord(const QString &word, QVector<QPair<int, int>> *spans = nullptr);
 
 // "lü" tone 4 → "lv4": the tone-number spelling espeak-ng's cmn-latn-pinyin voice reads.
 QString toneNumberSpelling(const PinyinSyllable &syllable);

@@ -30,7 +30,7 @@ QByteArray readMaybeCompressed(const QString &bz2Path, QString *error)
         return {};
     }
     const QByteArray packed = f.readAll();
-    bz_stream s{};
+    bz_stream s {};
     if (BZ2_bzDecompressInit(&s, 0, 0) != BZ_OK) {
         *error = QStringLiteral("cannot start bzip2 decompression of %1").arg(bz2Path);
         return {};
@@ -204,7 +204,8 @@ std::shared_ptr<const PinyinDictionary> PinyinDictionary::load(const QString &ro
     const QString readingsPath = root + QStringLiteral("/unicode/Unihan_Readings.txt.bz2");
     const QByteArray readings = readMaybeCompressed(readingsPath, &err);
     if (readings.isEmpty()) {
-        *error = QStringLiteral("Chinese character readings are missing (%1; install the Debian package unicode-data)").arg(err);
+        *error = QStringLiteral("Chinese character readings are missing (%1; install the Debian package unicode-data)")
+                     .arg(err);
         return nullptr;
     }
     // Field order decides which reading comes first: kMandarin is the usual one.
@@ -253,7 +254,9 @@ std::shared_ptr<const PinyinDictionary> PinyinDictionary::load(const QString &ro
     const QString terraPath = root + QStringLiteral("/rime-data/terra_pinyin.dict.yaml");
     QFile terra(terraPath);
     if (!terra.open(QIODevice::ReadOnly)) {
-        *error = QStringLiteral("the phrase dictionary %1 is missing (install the Debian package rime-data-terra-pinyin)").arg(terraPath);
+        *error
+            = QStringLiteral("the phrase dictionary %1 is missing (install the Debian package rime-data-terra-pinyin)")
+                  .arg(terraPath);
         return nullptr;
     }
     QHash<char32_t, QVector<QPair<PinyinSyllable, double>>> charWeights;
@@ -288,7 +291,8 @@ std::shared_ptr<const PinyinDictionary> PinyinDictionary::load(const QString &ro
         auto &weighted = it.value();
         if (weighted.size() < 2)
             continue;
-        std::stable_sort(weighted.begin(), weighted.end(), [](const auto &a, const auto &b) { return a.second > b.second; });
+        std::stable_sort(
+            weighted.begin(), weighted.end(), [](const auto &a, const auto &b) { return a.second > b.second; });
         QVector<PinyinSyllable> ordered;
         for (const auto &w : weighted)
             appendReading(ordered, w.first);
@@ -339,7 +343,8 @@ void PinyinDictionary::addPhrase(const QString &key, const QVector<PinyinSyllabl
     m_maxPhraseLength = std::max(m_maxPhraseLength, int(reading.size()));
 }
 
-std::optional<QVector<PinyinSyllable>> PinyinDictionary::phrase(const std::u32string &han, size_t from, size_t len) const
+std::optional<QVector<PinyinSyllable>> PinyinDictionary::phrase(
+    const std::u32string &han, size_t from, size_t len) const
 {
     const auto it = m_phrases.constFind(QString::fromUcs4(han.data() + from, qsizetype(len)));
     if (it == m_phrases.cend())
@@ -352,7 +357,13 @@ QVector<PinyinSyllable> PinyinDictionary::readRun(const std::u32string &han) con
     const size_t n = han.size();
     // best[i]: fewest words covering han[0, i), ties broken by the larger sum of squared
     // word lengths (longer phrases win); from[i]: where the last word starts.
-    struct Cell { int words = std::numeric_limits<int>::max(); int squares = 0; size_t from = 0; bool phrase = false; };
+    struct Cell
+    {
+        int words = std::numeric_limits<int>::max();
+        int squares = 0;
+        size_t from = 0;
+        bool phrase = false;
+    };
     std::vector<Cell> best(n + 1);
     best[0].words = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -363,7 +374,7 @@ QVector<PinyinSyllable> PinyinDictionary::readRun(const std::u32string &han) con
             const bool isPhrase = len > 1 && phrase(han, i, len).has_value();
             if (len > 1 && !isPhrase)
                 continue;
-            Cell c{best[i].words + 1, best[i].squares + int(len * len), i, isPhrase};
+            Cell c {best[i].words + 1, best[i].squares + int(len * len), i, isPhrase};
             Cell &t = best[i + len];
             if (c.words < t.words || (c.words == t.words && c.squares > t.squares))
                 t = c;
@@ -379,7 +390,8 @@ QVector<PinyinSyllable> PinyinDictionary::readRun(const std::u32string &han) con
                 out[qsizetype(k)] = reading[qsizetype(k - c.from)];
         } else {
             const auto r = m_readings.constFind(han[c.from]);
-            out[qsizetype(c.from)] = r != m_readings.cend() && !r->isEmpty() ? r->first() : PinyinSyllable{QString(), 5};
+            out[qsizetype(c.from)]
+                = r != m_readings.cend() && !r->isEmpty() ? r->first() : PinyinSyllable {QString(), 5};
         }
         end = c.from;
     }

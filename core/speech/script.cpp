@@ -13,8 +13,8 @@ namespace {
 struct CodePoint
 {
     char32_t c;
-    int pos;   // QString index
-    int len;   // 1 or 2 UTF-16 units
+    int pos; // QString index
+    int len; // 1 or 2 UTF-16 units
     int line;
     int column;
 };
@@ -127,7 +127,8 @@ ScriptParse parseScript(const QString &text, Language language)
             });
             // "lu:" keeps its colon.
             int end = j;
-            if (end < int(cps.size()) && cps[size_t(end)].c == U':' && (cps[size_t(end - 1)].c == U'u' || cps[size_t(end - 1)].c == U'U')
+            if (end < int(cps.size()) && cps[size_t(end)].c == U':'
+                && (cps[size_t(end - 1)].c == U'u' || cps[size_t(end - 1)].c == U'U')
                 && (end + 1 >= int(cps.size()) || !QChar::isLetter(cps[size_t(end + 1)].c)))
                 ++end;
             tokens.push_back({Kind::Word, i, end - i});
@@ -177,9 +178,7 @@ ScriptParse parseScript(const QString &text, Language language)
             if (!syllables.isEmpty())
                 syllables.back().phraseBreakAfter = true;
             break;
-        case Kind::Problem:
-            addProblem(t.first, 1, QStringLiteral("cannot be spoken"));
-            break;
+        case Kind::Problem: addProblem(t.first, 1, QStringLiteral("cannot be spoken")); break;
         case Kind::Han: {
             if (language == Language::English) {
                 addProblem(t.first, t.count, QStringLiteral("is not English"));
@@ -221,7 +220,7 @@ ScriptParse parseScript(const QString &text, Language language)
             int offset = cps[size_t(t.first)].pos;
             for (int k = 0; k < sylls->size(); ++k) {
                 syllables.append({run.mid(offset - cps[size_t(t.first)].pos, lengths[k]), sylls->at(k).pinyin,
-                                  sylls->at(k).tone, offset, lengths[k], false});
+                    sylls->at(k).tone, offset, lengths[k], false});
                 offset += lengths[k];
             }
             break;
@@ -239,13 +238,14 @@ ScriptParse parseScript(const QString &text, Language language)
                 bool number = true;
                 for (const QChar ch : word)
                     number = number && ch.isDigit();
-                addProblem(t.first, t.count, number ? QStringLiteral("is a number: write it in characters or pinyin")
-                                                    : QStringLiteral("is not Hanyu pinyin"));
+                addProblem(t.first, t.count,
+                    number ? QStringLiteral("is a number: write it in characters or pinyin")
+                           : QStringLiteral("is not Hanyu pinyin"));
                 break;
             }
             for (int k = 0; k < sylls->size(); ++k)
                 syllables.append({word.mid(spans[k].first, spans[k].second), sylls->at(k).pinyin, sylls->at(k).tone,
-                                  pos + spans[k].first, spans[k].second, false});
+                    pos + spans[k].first, spans[k].second, false});
             break;
         }
         }

@@ -16,11 +16,11 @@ std::optional<Language> languageFromCode(const QString &code);
 // syllable) or, in an English script, one word.
 struct ScriptSyllable
 {
-    QString text;         // as written in the script
-    QString pinyin;       // normalised toneless pinyin (see PinyinSyllable); empty for English
-    int tone = 5;         // 1-4, 5 neutral; 0 for English
-    int position = 0;     // where `text` starts in the script (QString index, UTF-16 units)
-    int length = 0;       // its length there
+    QString text; // as written in the script
+    QString pinyin; // normalised toneless pinyin (see PinyinSyllable); empty for English
+    int tone = 5; // 1-4, 5 neutral; 0 for English
+    int position = 0; // where `text` starts in the script (QString index, UTF-16 units)
+    int length = 0; // its length there
     bool phraseBreakAfter = false; // punctuation or a line break follows
     bool operator==(const ScriptSyllable &) const = default;
 };
@@ -35,8 +35,8 @@ struct Script
 struct ScriptProblem
 {
     int position = 0; // QString index
-    int line = 1;     // 1-based
-    int column = 1;   // 1-based, in characters (code points)
+    int line = 1; // 1-based
+    int column = 1; // 1-based, in characters (code points)
     QString text;
     QString reason;
 };
@@ -45,7 +45,7 @@ struct ScriptParse
 {
     Script script;
     QVector<ScriptProblem> problems; // every unknown or unreadable piece
-    QString error;                   // empty when the whole script was read
+    QString error; // empty when the whole script was read
     bool ok() const { return error.isEmpty(); }
 };
 

@@ -17,8 +17,7 @@ struct Token
 
 bool isVowel(MouthShape s)
 {
-    return s == MouthShape::A || s == MouthShape::E || s == MouthShape::I || s == MouthShape::O
-           || s == MouthShape::U;
+    return s == MouthShape::A || s == MouthShape::E || s == MouthShape::I || s == MouthShape::O || s == MouthShape::U;
 }
 
 } // namespace
@@ -44,8 +43,7 @@ QVector<MouthShape> syllableShapes(const QString &pinyin)
     QString final = parts->final;
     // The empty rime of zhi chi shi ri zi ci si is spelled ih.
     static const QStringList emptyRime = {QStringLiteral("zh"), QStringLiteral("ch"), QStringLiteral("sh"),
-                                          QStringLiteral("r"), QStringLiteral("z"), QStringLiteral("c"),
-                                          QStringLiteral("s")};
+        QStringLiteral("r"), QStringLiteral("z"), QStringLiteral("c"), QStringLiteral("s")};
     if (final == QLatin1String("i") && emptyRime.contains(ini))
         final = QStringLiteral("ih");
     // ao is pronounced toward u (also in iao).
@@ -69,8 +67,7 @@ QVector<MouthShape> syllableShapes(const QString &pinyin)
         case 'h': // the h of the empty rime ih, and of hm/hng
             tokens.append({MouthShape::H});
             break;
-        default:
-            return {};
+        default: return {};
         }
     }
 
@@ -95,10 +92,8 @@ QString shapeSpelling(const QVector<MouthShape> &shapes)
 
 double shapeStartFraction(int count, int k)
 {
-    static const double table[4][4] = {{0, 0, 0, 0},
-                                       {0, 0.8095, 0, 0},
-                                       {0, 0.4337, 0.4337 + 0.3975, 0},
-                                       {0, 0.245, 0.245 + 0.2115, 0.245 + 0.2115 + 0.2588}};
+    static const double table[4][4] = {{0, 0, 0, 0}, {0, 0.8095, 0, 0}, {0, 0.4337, 0.4337 + 0.3975, 0},
+        {0, 0.245, 0.245 + 0.2115, 0.245 + 0.2115 + 0.2588}};
     if (count <= 0 || k <= 0)
         return 0;
     if (count <= 4)

@@ -8,11 +8,10 @@ namespace {
 
 const QHash<char16_t, const char *> &initials()
 {
-    static const QHash<char16_t, const char *> m = {
-        {u'ㄅ', "b"}, {u'ㄆ', "p"}, {u'ㄇ', "m"}, {u'ㄈ', "f"}, {u'ㄉ', "d"}, {u'ㄊ', "t"},
-        {u'ㄋ', "n"}, {u'ㄌ', "l"}, {u'ㄍ', "g"}, {u'ㄎ', "k"}, {u'ㄏ', "h"}, {u'ㄐ', "j"},
-        {u'ㄑ', "q"}, {u'ㄒ', "x"}, {u'ㄓ', "zh"}, {u'ㄔ', "ch"}, {u'ㄕ', "sh"}, {u'ㄖ', "r"},
-        {u'ㄗ', "z"}, {u'ㄘ', "c"}, {u'ㄙ', "s"}};
+    static const QHash<char16_t, const char *> m
+        = {{u'ㄅ', "b"}, {u'ㄆ', "p"}, {u'ㄇ', "m"}, {u'ㄈ', "f"}, {u'ㄉ', "d"}, {u'ㄊ', "t"}, {u'ㄋ', "n"},
+            {u'ㄌ', "l"}, {u'ㄍ', "g"}, {u'ㄎ', "k"}, {u'ㄏ', "h"}, {u'ㄐ', "j"}, {u'ㄑ', "q"}, {u'ㄒ', "x"},
+            {u'ㄓ', "zh"}, {u'ㄔ', "ch"}, {u'ㄕ', "sh"}, {u'ㄖ', "r"}, {u'ㄗ', "z"}, {u'ㄘ', "c"}, {u'ㄙ', "s"}};
     return m;
 }
 
@@ -24,10 +23,9 @@ const QHash<char16_t, const char *> &medials()
 
 const QHash<char16_t, const char *> &rimes()
 {
-    static const QHash<char16_t, const char *> m = {
-        {u'ㄚ', "a"}, {u'ㄛ', "o"}, {u'ㄜ', "e"}, {u'ㄝ', "ê"}, {u'ㄞ', "ai"}, {u'ㄟ', "ei"},
-        {u'ㄠ', "ao"}, {u'ㄡ', "ou"}, {u'ㄢ', "an"}, {u'ㄣ', "en"}, {u'ㄤ', "ang"}, {u'ㄥ', "eng"},
-        {u'ㄦ', "er"}};
+    static const QHash<char16_t, const char *> m
+        = {{u'ㄚ', "a"}, {u'ㄛ', "o"}, {u'ㄜ', "e"}, {u'ㄝ', "ê"}, {u'ㄞ', "ai"}, {u'ㄟ', "ei"}, {u'ㄠ', "ao"},
+            {u'ㄡ', "ou"}, {u'ㄢ', "an"}, {u'ㄣ', "en"}, {u'ㄤ', "ang"}, {u'ㄥ', "eng"}, {u'ㄦ', "er"}};
     return m;
 }
 
@@ -52,10 +50,9 @@ QString spell(const QString &ini, const QString &med, QString rime)
         return ini + rime;
     }
     if (med == QLatin1String("i")) {
-        static const QHash<QString, QString> f = {
-            {QString(), QStringLiteral("i")}, {QStringLiteral("ê"), QStringLiteral("ie")},
-            {QStringLiteral("ou"), QStringLiteral("iu")}, {QStringLiteral("en"), QStringLiteral("in")},
-            {QStringLiteral("eng"), QStringLiteral("ing")}};
+        static const QHash<QString, QString> f = {{QString(), QStringLiteral("i")},
+            {QStringLiteral("ê"), QStringLiteral("ie")}, {QStringLiteral("ou"), QStringLiteral("iu")},
+            {QStringLiteral("en"), QStringLiteral("in")}, {QStringLiteral("eng"), QStringLiteral("ing")}};
         QString fin = f.value(rime, QStringLiteral("i") + rime);
         if (!ini.isEmpty())
             return ini + fin;
@@ -66,9 +63,9 @@ QString spell(const QString &ini, const QString &med, QString rime)
         return QStringLiteral("y") + fin.mid(1);
     }
     if (med == QLatin1String("u")) {
-        static const QHash<QString, QString> f = {
-            {QString(), QStringLiteral("u")}, {QStringLiteral("ei"), QStringLiteral("ui")},
-            {QStringLiteral("en"), QStringLiteral("un")}, {QStringLiteral("eng"), QStringLiteral("ong")}};
+        static const QHash<QString, QString> f
+            = {{QString(), QStringLiteral("u")}, {QStringLiteral("ei"), QStringLiteral("ui")},
+                {QStringLiteral("en"), QStringLiteral("un")}, {QStringLiteral("eng"), QStringLiteral("ong")}};
         const QString fin = f.value(rime, QStringLiteral("u") + rime);
         if (!ini.isEmpty())
             return ini + fin;
@@ -85,9 +82,9 @@ QString spell(const QString &ini, const QString &med, QString rime)
     // ü
     if (rime == QLatin1String("eng"))
         return ini.isEmpty() ? QStringLiteral("yong") : ini + QStringLiteral("iong");
-    static const QHash<QString, QString> f = {
-        {QString(), QStringLiteral("v")}, {QStringLiteral("ê"), QStringLiteral("ve")},
-        {QStringLiteral("an"), QStringLiteral("van")}, {QStringLiteral("en"), QStringLiteral("vn")}};
+    static const QHash<QString, QString> f
+        = {{QString(), QStringLiteral("v")}, {QStringLiteral("ê"), QStringLiteral("ve")},
+            {QStringLiteral("an"), QStringLiteral("van")}, {QStringLiteral("en"), QStringLiteral("vn")}};
     const QString fin = f.value(rime);
     if (fin.isEmpty())
         return QString();
@@ -98,8 +95,8 @@ QString spell(const QString &ini, const QString &med, QString rime)
 
 bool isZhuyinChar(char32_t c)
 {
-    return (c >= 0x3105 && c <= 0x312F) || (c >= 0x31A0 && c <= 0x31BF) || c == 0x02C9 || c == 0x02CA
-           || c == 0x02C7 || c == 0x02CB || c == 0x02D9;
+    return (c >= 0x3105 && c <= 0x312F) || (c >= 0x31A0 && c <= 0x31BF) || c == 0x02C9 || c == 0x02CA || c == 0x02C7
+        || c == 0x02CB || c == 0x02D9;
 }
 
 std::optional<QVector<PinyinSyllable>> zhuyinToPinyin(const QString &run, QVector<int> *lengths)

@@ -44,10 +44,14 @@ private Q_SLOTS:
         QTest::addColumn<QString>("pinyin");
         QTest::addColumn<int>("tone");
         QTest::newRow("mark") << QStringLiteral("hǎo") << "hao" << 3;
-        QTest::newRow("number") << "hao3" << "hao" << 3;
-        QTest::newRow("neutral 5") << "ma5" << "ma" << 5;
-        QTest::newRow("neutral 0") << "ma0" << "ma" << 5;
-        QTest::newRow("unmarked") << "ma" << "ma" << 5;
+        QTest::newRow("number") << "hao3"
+                                << "hao" << 3;
+        QTest::newRow("neutral 5") << "ma5"
+                                   << "ma" << 5;
+        QTest::newRow("neutral 0") << "ma0"
+                                   << "ma" << 5;
+        QTest::newRow("unmarked") << "ma"
+                                  << "ma" << 5;
         QTest::newRow("v") << "lv4" << QStringLiteral("lü") << 4;
         QTest::newRow("u:") << "nu:3" << QStringLiteral("nü") << 3;
         QTest::newRow("ü marked") << QStringLiteral("lǘ") << QStringLiteral("lü") << 2;
@@ -76,7 +80,8 @@ private Q_SLOTS:
         QTest::newRow("gui4") << "gui" << 4 << QStringLiteral("guì") << "gui4";
         QTest::newRow("liu2") << "liu" << 2 << QStringLiteral("liú") << "liu2";
         QTest::newRow("zhou1") << "zhou" << 1 << QStringLiteral("zhōu") << "zhou1";
-        QTest::newRow("de5") << "de" << 5 << "de" << "de5";
+        QTest::newRow("de5") << "de" << 5 << "de"
+                             << "de5";
     }
     void toneSpellings()
     {
@@ -94,13 +99,18 @@ private Q_SLOTS:
     {
         QTest::addColumn<QString>("word");
         QTest::addColumn<QString>("syllables");
-        QTest::newRow("numbers") << "ni3hao3" << "ni3 hao3";
+        QTest::newRow("numbers") << "ni3hao3"
+                                 << "ni3 hao3";
         QTest::newRow("marks") << QStringLiteral("nǐhǎo") << "ni3 hao3";
-        QTest::newRow("xian one") << "xian" << "xian5";
-        QTest::newRow("xi'an two") << "xi'an" << "xi5 an5";
+        QTest::newRow("xian one") << "xian"
+                                  << "xian5";
+        QTest::newRow("xi'an two") << "xi'an"
+                                   << "xi5 an5";
         QTest::newRow("Xī’ān") << QStringLiteral("Xī’ān") << "xi1 an1";
-        QTest::newRow("zhongguo") << "zhongguo" << "zhong5 guo5";
-        QTest::newRow("not pinyin") << "hello" << "";
+        QTest::newRow("zhongguo") << "zhongguo"
+                                  << "zhong5 guo5";
+        QTest::newRow("not pinyin") << "hello"
+                                    << "";
     }
     void pinyinWords()
     {
@@ -161,10 +171,11 @@ private Q_SLOTS:
         QTest::newRow("grow up") << QStringLiteral("长大") << "zhang3 da4";
         QTest::newRow("length") << QStringLiteral("长度") << "chang2 du4";
         QTest::newRow("length traditional") << QStringLiteral("長度") << "chang2 du4";
-        QTest::newRow("polyphone in sentence") << QStringLiteral("我去银行，他在行走")
-                                               << "wo3 qu4 yin2 hang2 | ta1 zai4 xing2 zou3";
+        QTest::newRow("polyphone in sentence")
+            << QStringLiteral("我去银行，他在行走") << "wo3 qu4 yin2 hang2 | ta1 zai4 xing2 zou3";
         QTest::newRow("pinyin marks") << QStringLiteral("Nǐ hǎo!") << "ni3 hao3 |";
-        QTest::newRow("pinyin numbers") << "ni3 hao3, shi4jie4" << "ni3 hao3 | shi4 jie4";
+        QTest::newRow("pinyin numbers") << "ni3 hao3, shi4jie4"
+                                        << "ni3 hao3 | shi4 jie4";
         QTest::newRow("zhuyin") << QStringLiteral("ㄋㄧˇ ㄏㄠˇ") << "ni3 hao3";
         QTest::newRow("mixed") << QStringLiteral("我爱 Běijīng，ㄋㄧˇㄏㄠˇ") << "wo3 ai4 bei3 jing1 | ni3 hao3";
         QTest::newRow("line break") << QStringLiteral("你好\n世界") << "ni3 hao3 | shi4 jie4";
@@ -190,8 +201,8 @@ private Q_SLOTS:
         for (const auto &s : p.script.syllables)
             toneless.append(s.pinyin);
         QCOMPARE(toneless.join(QLatin1Char(' ')),
-                 QStringLiteral("jing guang zhou ri bao bao dao hou cheng wei le she hui re dian"));
-        QCOMPARE(p.script.syllables[3].tone, 4);  // 日 rì
+            QStringLiteral("jing guang zhou ri bao bao dao hou cheng wei le she hui re dian"));
+        QCOMPARE(p.script.syllables[3].tone, 4); // 日 rì
         QCOMPARE(p.script.syllables[10].tone, 5); // 了 le
     }
 
