@@ -1,4 +1,6 @@
 list(APPEND TOONFACE_CORE_SOURCES
+  speech/progress.h
+  speech/audio.h speech/audio.cpp
   speech/pinyin.h speech/pinyin.cpp
   speech/pinyindictionary.h speech/pinyindictionary.cpp
   speech/zhuyin.h speech/zhuyin.cpp
