@@ -5,4 +5,5 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/pinyindictionary.h speech/pinyindictionary.cpp
   speech/zhuyin.h speech/zhuyin.cpp
   speech/script.h speech/script.cpp
+  speech/tts.h speech/tts.cpp
   speech/syllableshapes.h speech/syllableshapes.cpp)
