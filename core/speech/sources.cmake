@@ -6,4 +6,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/zhuyin.h speech/zhuyin.cpp
   speech/script.h speech/script.cpp
   speech/tts.h speech/tts.cpp
+  speech/features.h speech/features.cpp
+  speech/dtw.h speech/dtw.cpp
+  speech/aligner.h speech/aligner.cpp
   speech/syllableshapes.h speech/syllableshapes.cpp)

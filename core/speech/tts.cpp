@@ -120,6 +120,10 @@ TtsResult synthesize(
         espeak_SetSynthCallback(synthCallback);
     }
     const QString voice = ttsVoice(options, script.language);
+    // espeak-ng keeps a variant's changes when the same voice is chosen again without one:
+    // choosing another voice first makes it load the requested one afresh.
+    static const QString other = QStringLiteral("en");
+    espeak_SetVoiceByName(voice.startsWith(other) ? "de" : "en");
     if (espeak_SetVoiceByName(voice.toUtf8().constData()) != EE_OK) {
         result.error = QStringLiteral("espeak-ng has no voice '%1'").arg(voice);
         return result;
