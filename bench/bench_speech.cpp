@@ -217,6 +217,30 @@ TOONFACE_BENCHMARK("speech.alignReal", [] {
             files.append(o);
         }
     }
+    // GRID (English): word onsets, units of 1/25000 s.
+    {
+        QFile f(dir + QStringLiteral("/video/swwp2s.align"));
+        const AudioResult a = loadAudio(dir + QStringLiteral("/video/id2_vcd_swwp2s.mpg"));
+        if (f.open(QIODevice::ReadOnly) && a.ok()) {
+            QStringList words;
+            std::vector<double> truth;
+            for (const QString &line : QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+                const QStringList cols = line.trimmed().split(QLatin1Char(' '), Qt::SkipEmptyParts);
+                if (cols.size() == 3 && cols[2] != QLatin1String("sil")) {
+                    words.append(cols[2]);
+                    truth.push_back(cols[0].toDouble() / 25000.0);
+                }
+            }
+            const AlignResult r = alignScript(a.audio, parseScript(words.join(QLatin1Char(' '))).script);
+            Errors e;
+            for (int k = 0; r.ok() && k < r.syllables.size(); ++k)
+                e.add(r.syllables[k].start, truth[size_t(k)]);
+            QJsonObject o = e.json();
+            o.insert(QStringLiteral("file"),
+                QStringLiteral("id2_vcd_swwp2s.mpg (English words, not in the Mandarin figures)"));
+            files.append(o);
+        }
+    }
     out = all.json();
     out.insert(QStringLiteral("files"), files);
     return out;

@@ -44,7 +44,7 @@ enum class OnsetKind { Voiceless, Sonorant, Vowel, Any };
 OnsetKind onsetKind(const ScriptSyllable &s)
 {
     if (s.pinyin.isEmpty())
-        return OnsetKind::Any; // English words
+        return OnsetKind::Any; // English words: only a pause before them marks their onset
     const auto parts = splitPinyinSyllable(s.pinyin);
     if (!parts || parts->initial.isEmpty())
         return OnsetKind::Vowel;
@@ -176,7 +176,7 @@ public:
         case OnsetKind::Voiceless: e = knee(3.0, true); break;
         case OnsetKind::Sonorant: e = knee(1.5, false); break;
         case OnsetKind::Vowel: e = valley; break;
-        case OnsetKind::Any: e = std::max({knee(3.0, true), knee(1.5, false), valley}); break;
+        case OnsetKind::Any: e = 0; break; // English words end in consonants: no rule here
         }
         return std::max(e * voicedBefore, afterPause);
     }

@@ -1,7 +1,5 @@
 #include "speech/features.h"
 
-#include <QStringList>
-
 #include <opencv2/core.hpp>
 
 #include <algorithm>
@@ -65,17 +63,7 @@ float percentile(std::vector<float> v, double p)
 
 const FeatureWeights &featureWeights()
 {
-    static const FeatureWeights w = [] {
-        FeatureWeights fw;
-        const QStringList v = qEnvironmentVariable("TOONFACE_FW").split(QLatin1Char(','), Qt::SkipEmptyParts);
-        float *fields[] = {
-            &fw.cepstra, &fw.fineCepstra, &fw.delta, &fw.loudness, &fw.loudnessDelta, &fw.voicing, &fw.high, &fw.low};
-        for (int i = 0; i < v.size() && i < 8; ++i)
-            *fields[i] = v[i].toFloat();
-        if (v.size() > 8)
-            fw.broadCepstra = v[8].toInt();
-        return fw;
-    }();
+    static const FeatureWeights w;
     return w;
 }
 

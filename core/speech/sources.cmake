@@ -9,4 +9,5 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/features.h speech/features.cpp
   speech/dtw.h speech/dtw.cpp
   speech/aligner.h speech/aligner.cpp
+  speech/englishshapes.h speech/englishshapes.cpp
   speech/syllableshapes.h speech/syllableshapes.cpp)

@@ -108,6 +108,8 @@ TtsResult synthesize(
         return result;
     }
     QMutexLocker lock(&espeakMutex());
+    // Note: espeak-ng carries state from one synthesis to the next (its pitch flutter), so the
+    // same request gives slightly different audio depending on what was spoken before.
     static int sampleRate = 0;
     if (sampleRate <= 0) {
         sampleRate = espeak_Initialize(
@@ -120,10 +122,6 @@ TtsResult synthesize(
         espeak_SetSynthCallback(synthCallback);
     }
     const QString voice = ttsVoice(options, script.language);
-    // espeak-ng keeps a variant's changes when the same voice is chosen again without one:
-    // choosing another voice first makes it load the requested one afresh.
-    static const QString other = QStringLiteral("en");
-    espeak_SetVoiceByName(voice.startsWith(other) ? "de" : "en");
     if (espeak_SetVoiceByName(voice.toUtf8().constData()) != EE_OK) {
         result.error = QStringLiteral("espeak-ng has no voice '%1'").arg(voice);
         return result;
