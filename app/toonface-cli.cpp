@@ -9,6 +9,14 @@ using namespace toonface::cli;
 
 namespace {
 
+// Qt's own diagnostics (platform plugins, runtime dirs, fonts) would break the contract that
+// stderr carries one error line; they are shown only with TOONFACE_DEBUG set.
+void qtMessages(QtMsgType type, const QMessageLogContext &, const QString &message)
+{
+    if (type == QtFatalMsg || type == QtCriticalMsg || qEnvironmentVariableIsSet("TOONFACE_DEBUG"))
+        QTextStream(stderr) << "toonface-cli: qt: " << message << Qt::endl;
+}
+
 void printHelp()
 {
     QTextStream out(stdout);
@@ -29,6 +37,11 @@ void printHelp()
 
 int main(int argc, char *argv[])
 {
+    qInstallMessageHandler(qtMessages);
+    // Read the arguments before QGuiApplication consumes the ones it knows (--style among them).
+    QStringList args;
+    for (int i = 1; i < argc; ++i)
+        args << QString::fromLocal8Bit(argv[i]);
     // Rendering text and SVG needs a GUI application, but never a display.
     if (!qEnvironmentVariableIsSet("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
@@ -36,11 +49,11 @@ int main(int argc, char *argv[])
     QCoreApplication::setApplicationName(QStringLiteral("toonface-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(TOONFACE_VERSION));
 
-    QStringList args = app.arguments().mid(1);
     if (args.isEmpty())
         return fail(ExitUsage, QStringLiteral("no command given; try 'toonface-cli --help'"));
     const QString first = args.takeFirst();
-    if (first == QLatin1StringView("--help") || first == QLatin1StringView("-h") || first == QLatin1StringView("help")) {
+    if (first == QLatin1StringView("--help") || first == QLatin1StringView("-h")
+        || first == QLatin1StringView("help")) {
         printHelp();
         return ExitOk;
     }

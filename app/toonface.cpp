@@ -1,7 +1,74 @@
+#include "window/mainwindow.h"
+
 #include <QApplication>
+#include <QCommandLineParser>
+#include <QDir>
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QTimer>
+#include <QTranslator>
+
+#include <memory>
+
+namespace {
+
+// Qt's own strings (dialog buttons) and Toonface's, in the user's language when available.
+void installTranslations(QApplication &app)
+{
+    auto *qt = new QTranslator(&app);
+    if (qt->load(QLocale(), QStringLiteral("qtbase"), QStringLiteral("_"),
+            QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+        QApplication::installTranslator(qt);
+    auto *own = new QTranslator(&app);
+    if (own->load(QLocale(), QStringLiteral("toonface"), QStringLiteral("_"), QStringLiteral(":/i18n")))
+        QApplication::installTranslator(own);
+}
+
+// For looking at the window in headless runs: TOONFACE_SCREENSHOT=out.png saves the window
+// once it has been idle (nothing opening or detecting) for a moment, then quits.
+void scheduleScreenshot(toonface::MainWindow &window, const QString &path)
+{
+    auto *timer = new QTimer(&window);
+    timer->setInterval(500);
+    auto idleTicks = std::make_shared<int>(0);
+    QObject::connect(timer, &QTimer::timeout, &window, [&window, path, timer, idleTicks] {
+        *idleTicks = window.isBusy() ? 0 : *idleTicks + 1;
+        if (*idleTicks < 3)
+            return;
+        timer->stop();
+        window.grab().save(path);
+        QApplication::exit(0);
+    });
+    timer->start();
+}
+
+} // namespace
 
 int main(int argc, char *argv[])
 {
     QApplication app(argc, argv);
-    return 0;
+    QApplication::setOrganizationName(QStringLiteral("Toonface"));
+    QApplication::setApplicationName(QStringLiteral("toonface"));
+    QApplication::setApplicationDisplayName(QStringLiteral("Toonface"));
+    QApplication::setApplicationVersion(QStringLiteral(TOONFACE_VERSION));
+    QApplication::setDesktopFileName(QStringLiteral("toonface"));
+    installTranslations(app);
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QApplication::translate("main", "Toonface: personal cartoon faces from photos."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(QStringLiteral("file"),
+        QApplication::translate("main", "A photo or a .toonface project to open."), QStringLiteral("[file]"));
+    parser.process(app);
+
+    toonface::MainWindow window;
+    window.show();
+    const QStringList files = parser.positionalArguments();
+    window.startup(files.isEmpty() ? QString() : QDir::current().absoluteFilePath(files.first()));
+
+    const QString screenshot = qEnvironmentVariable("TOONFACE_SCREENSHOT");
+    if (!screenshot.isEmpty())
+        scheduleScreenshot(window, screenshot);
+    return app.exec();
 }

@@ -37,5 +37,5 @@ QString sharedDataDir();
 
 #define TOONFACE_BENCH_CONCAT2(a, b) a##b
 #define TOONFACE_BENCH_CONCAT(a, b) TOONFACE_BENCH_CONCAT2(a, b)
-#define TOONFACE_BENCHMARK(name, fn) \
+#define TOONFACE_BENCHMARK(name, fn)                                                                                   \
     static const toonface::bench::Registrar TOONFACE_BENCH_CONCAT(tfBench_, __LINE__)(name, fn)

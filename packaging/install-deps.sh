@@ -12,7 +12,8 @@ apt-get install -y -q --no-install-recommends \
   qt6-base-dev qt6-base-dev-tools qt6-svg-dev qt6-multimedia-dev qt6-tools-dev qt6-tools-dev-tools \
   qt6-l10n-tools qt6-qpa-plugins libqt6svg6 libgl-dev \
   libopencv-dev libdlib-dev libdlib-data libblas-dev liblapack-dev \
-  libespeak-ng-dev espeak-ng espeak-ng-data \
+  libespeak-ng-dev espeak-ng espeak-ng-data libbz2-dev \
+  unicode-data rime-data-terra-pinyin rime-data-pinyin-simp \
   libavcodec-dev libavformat-dev libavutil-dev libswresample-dev libswscale-dev \
   gstreamer1.0-plugins-good gstreamer1.0-libav \
   python-matplotlib-data fonts-wqy-microhei fonts-dejavu-core \

@@ -13,22 +13,21 @@ namespace {
 int runCartoon(const Command &self, const QStringList &args)
 {
     QCommandLineParser parser;
-    const QCommandLineOption output(QStringList{QStringLiteral("o"), QStringLiteral("output")},
-                                    QStringLiteral("The cartoon SVG to write."), QStringLiteral("OUT.svg"));
-    const QCommandLineOption png(QStringLiteral("png"), QStringLiteral("Also rasterize to this PNG."),
-                                 QStringLiteral("OUT.png"));
+    const QCommandLineOption output(QStringList {QStringLiteral("o"), QStringLiteral("output")},
+        QStringLiteral("The cartoon SVG to write."), QStringLiteral("OUT.svg"));
+    const QCommandLineOption png(
+        QStringLiteral("png"), QStringLiteral("Also rasterize to this PNG."), QStringLiteral("OUT.png"));
     const QCommandLineOption size(QStringLiteral("size"),
-                                  QStringLiteral("The PNG's longer side in pixels (default 512)."),
-                                  QStringLiteral("N"), QStringLiteral("512"));
+        QStringLiteral("The PNG's longer side in pixels (default 512)."), QStringLiteral("N"), QStringLiteral("512"));
     const QCommandLineOption style(QStringLiteral("style"),
-                                   QStringLiteral("Drawing style: %1.").arg(Style::presetNames().join(QStringLiteral(", "))),
-                                   QStringLiteral("NAME"));
+        QStringLiteral("Drawing style: %1.").arg(Style::presetNames().join(QStringLiteral(", "))),
+        QStringLiteral("NAME"));
     const QCommandLineOption emotion(QStringLiteral("emotion"),
-                                     QStringLiteral("Expression: neutral, smile, sad, angry or surprise."),
-                                     QStringLiteral("NAME"), QStringLiteral("neutral"));
+        QStringLiteral("Expression: neutral, smile, sad, angry or surprise."), QStringLiteral("NAME"),
+        QStringLiteral("neutral"));
     const QCommandLineOption method(QStringLiteral("method"),
-                                    QStringLiteral("Detection method for a photo: auto, classic or landmarks."),
-                                    QStringLiteral("auto|classic|landmarks"), QStringLiteral("auto"));
+        QStringLiteral("Detection method for a photo: auto, classic or landmarks."),
+        QStringLiteral("auto|classic|landmarks"), QStringLiteral("auto"));
     parser.addOptions({output, png, size, style, emotion, method});
     parser.addPositionalArgument(QStringLiteral("INPUT"), QStringLiteral("A photo, a face JSON or a project."));
     bool helped = false;
@@ -43,22 +42,26 @@ int runCartoon(const Command &self, const QStringList &args)
     bool sizeOk = false;
     const int pngSize = parser.value(size).toInt(&sizeOk);
     if (!sizeOk || pngSize < 16 || pngSize > 8192)
-        return fail(ExitUsage, QStringLiteral("--size takes a whole number from 16 to 8192, not '%1'").arg(parser.value(size)));
+        return fail(
+            ExitUsage, QStringLiteral("--size takes a whole number from 16 to 8192, not '%1'").arg(parser.value(size)));
     const auto expression = emotionFromName(parser.value(emotion));
     if (!expression)
-        return fail(ExitUsage, QStringLiteral("unknown --emotion '%1' (neutral, smile, sad, angry or surprise)")
-                                   .arg(parser.value(emotion)));
+        return fail(ExitUsage,
+            QStringLiteral("unknown --emotion '%1' (neutral, smile, sad, angry or surprise)")
+                .arg(parser.value(emotion)));
     Style chosenStyle;
     if (parser.isSet(style)) {
         bool ok = false;
         chosenStyle = Style::preset(parser.value(style), &ok);
         if (!ok)
-            return fail(ExitUsage, QStringLiteral("unknown --style '%1' (%2)")
-                                       .arg(parser.value(style), Style::presetNames().join(QStringLiteral(", "))));
+            return fail(ExitUsage,
+                QStringLiteral("unknown --style '%1' (%2)")
+                    .arg(parser.value(style), Style::presetNames().join(QStringLiteral(", "))));
     }
     DetectOptions options;
     if (!detectionMethodFromName(parser.value(method), &options.method))
-        return fail(ExitUsage, QStringLiteral("unknown --method '%1' (auto, classic or landmarks)").arg(parser.value(method)));
+        return fail(
+            ExitUsage, QStringLiteral("unknown --method '%1' (auto, classic or landmarks)").arg(parser.value(method)));
 
     FaceInput input;
     if (const int code = loadFaceInput(parser.positionalArguments().constFirst(), options, &input); code != ExitOk)
@@ -89,10 +92,10 @@ int runCartoon(const Command &self, const QStringList &args)
 }
 
 const CommandRegistrar registrar({QStringLiteral("cartoon"),
-                                  QStringLiteral("Draw the cartoon face of a photo, a face JSON or a project as SVG (and PNG)."),
-                                  QStringLiteral("cartoon IMAGE|FACE.json|PROJECT.toonface -o OUT.svg [--png OUT.png [--size N]] "
-                                                 "[--style NAME] [--emotion NAME]"),
-                                  runCartoon});
+    QStringLiteral("Draw the cartoon face of a photo, a face JSON or a project as SVG (and PNG)."),
+    QStringLiteral("cartoon IMAGE|FACE.json|PROJECT.toonface -o OUT.svg [--png OUT.png [--size N]] "
+                   "[--style NAME] [--emotion NAME]"),
+    runCartoon});
 
 } // namespace
 

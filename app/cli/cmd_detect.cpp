@@ -14,14 +14,12 @@ int runDetect(const Command &self, const QStringList &args)
 {
     QCommandLineParser parser;
     const QCommandLineOption method(QStringLiteral("method"),
-                                    QStringLiteral("Detection method: auto, classic or landmarks."),
-                                    QStringLiteral("auto|classic|landmarks"), QStringLiteral("auto"));
-    const QCommandLineOption output(QStringList{QStringLiteral("o"), QStringLiteral("output")},
-                                    QStringLiteral("Write the face JSON here (default: stdout)."),
-                                    QStringLiteral("FACE.json"));
+        QStringLiteral("Detection method: auto, classic or landmarks."), QStringLiteral("auto|classic|landmarks"),
+        QStringLiteral("auto"));
+    const QCommandLineOption output(QStringList {QStringLiteral("o"), QStringLiteral("output")},
+        QStringLiteral("Write the face JSON here (default: stdout)."), QStringLiteral("FACE.json"));
     const QCommandLineOption debugDir(QStringLiteral("debug-dir"),
-                                      QStringLiteral("Write intermediate images of the detection here."),
-                                      QStringLiteral("DIR"));
+        QStringLiteral("Write intermediate images of the detection here."), QStringLiteral("DIR"));
     parser.addOptions({method, output, debugDir});
     parser.addPositionalArgument(QStringLiteral("IMAGE"), QStringLiteral("The photo."));
     bool helped = false;
@@ -34,7 +32,8 @@ int runDetect(const Command &self, const QStringList &args)
 
     DetectOptions options;
     if (!detectionMethodFromName(parser.value(method), &options.method))
-        return fail(ExitUsage, QStringLiteral("unknown --method '%1' (auto, classic or landmarks)").arg(parser.value(method)));
+        return fail(
+            ExitUsage, QStringLiteral("unknown --method '%1' (auto, classic or landmarks)").arg(parser.value(method)));
     if (parser.isSet(debugDir)) {
         options.debugDir = parser.value(debugDir);
         if (!QDir().mkpath(options.debugDir))
@@ -44,8 +43,8 @@ int runDetect(const Command &self, const QStringList &args)
     FaceInput input;
     if (const int code = loadFaceInput(image, options, &input); code != ExitOk)
         return code;
-    const QByteArray json = QJsonDocument(faceToJson(input.face, input.photoPath, &input.detection))
-                                .toJson(QJsonDocument::Indented);
+    const QByteArray json
+        = QJsonDocument(faceToJson(input.face, input.photoPath, &input.detection)).toJson(QJsonDocument::Indented);
     if (!parser.isSet(output)) {
         QTextStream(stdout) << json;
         return ExitOk;
@@ -57,9 +56,8 @@ int runDetect(const Command &self, const QStringList &args)
 }
 
 const CommandRegistrar registrar({QStringLiteral("detect"),
-                                  QStringLiteral("Find the face in a photo and write its 72 points as JSON (toonface.face/1)."),
-                                  QStringLiteral("detect IMAGE [--method auto|classic|landmarks] [-o FACE.json] [--debug-dir DIR]"),
-                                  runDetect});
+    QStringLiteral("Find the face in a photo and write its 72 points as JSON (toonface.face/1)."),
+    QStringLiteral("detect IMAGE [--method auto|classic|landmarks] [-o FACE.json] [--debug-dir DIR]"), runDetect});
 
 } // namespace
 

@@ -26,19 +26,18 @@ void progress(const QString &message)
         QTextStream(stderr) << "toonface-cli: " << message << Qt::endl;
 }
 
-bool parseArguments(QCommandLineParser &parser, const Command &command, const QStringList &args,
-                    bool *helped)
+bool parseArguments(QCommandLineParser &parser, const Command &command, const QStringList &args, bool *helped)
 {
     *helped = false;
-    const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")},
-                                  QStringLiteral("Show this help."));
+    const QCommandLineOption help(
+        QStringList {QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Show this help."));
     parser.addOption(help);
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     QStringList full = args;
     full.prepend(QStringLiteral("toonface-cli ") + command.name);
     if (!parser.parse(full)) {
-        fail(ExitUsage, parser.errorText() + QStringLiteral(" (usage: toonface-cli ") + command.usage
-                            + QLatin1Char(')'));
+        fail(ExitUsage,
+            parser.errorText() + QStringLiteral(" (usage: toonface-cli ") + command.usage + QLatin1Char(')'));
         return false;
     }
     if (parser.isSet(help)) {

@@ -12,11 +12,11 @@ namespace toonface::cli {
 // Exit codes of the command-line contract (architecture.md).
 enum ExitCode {
     ExitOk = 0,
-    ExitUsage = 2,       // bad arguments
-    ExitBadInput = 3,    // unreadable or invalid input
-    ExitNoFace = 4,      // no face found
+    ExitUsage = 2, // bad arguments
+    ExitBadInput = 3, // unreadable or invalid input
+    ExitNoFace = 4, // no face found
     ExitCannotAlign = 5, // audio and script could not be aligned
-    ExitFailed = 1,      // anything else (e.g. an output that cannot be written)
+    ExitFailed = 1, // anything else (e.g. an output that cannot be written)
 };
 
 // One subcommand: its name, a one-line summary, its usage, and the function that runs it
@@ -43,8 +43,7 @@ void progress(const QString &message);
 
 // Parses `args` for `command` with `parser` (options already added). On failure prints the
 // error and returns false; the caller returns ExitUsage. `--help` prints help and sets *helped.
-bool parseArguments(QCommandLineParser &parser, const Command &command, const QStringList &args,
-                    bool *helped);
+bool parseArguments(QCommandLineParser &parser, const Command &command, const QStringList &args, bool *helped);
 
 // Writes `data` atomically to `path` (QSaveFile); on failure sets *error naming the file.
 bool writeFileAtomically(const QString &path, const QByteArray &data, QString *error);

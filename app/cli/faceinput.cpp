@@ -63,18 +63,18 @@ int loadFaceInput(const QString &path, const DetectOptions &options, FaceInput *
         QJsonParseError parseError;
         const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
         if (!doc.isObject())
-            return fail(ExitBadInput, QStringLiteral("%1: not a face JSON: %2 at offset %3")
-                                          .arg(path, parseError.errorString())
-                                          .arg(parseError.offset));
+            return fail(ExitBadInput,
+                QStringLiteral("%1: not a face JSON: %2 at offset %3")
+                    .arg(path, parseError.errorString())
+                    .arg(parseError.offset));
         QString imagePath;
         const auto face = faceFromJson(doc.object(), &error, &imagePath);
         if (!face)
             return fail(ExitBadInput, QStringLiteral("%1: %2").arg(path, error));
         out->face = *face;
         if (!imagePath.isEmpty()) {
-            const QString resolved = QFileInfo(imagePath).isAbsolute()
-                ? imagePath
-                : QFileInfo(path).absoluteDir().filePath(imagePath);
+            const QString resolved
+                = QFileInfo(imagePath).isAbsolute() ? imagePath : QFileInfo(path).absoluteDir().filePath(imagePath);
             if (QFileInfo::exists(resolved)) {
                 out->photoPath = resolved;
                 out->photo = loadPhoto(resolved, &error);
@@ -89,8 +89,8 @@ int loadFaceInput(const QString &path, const DetectOptions &options, FaceInput *
         out->photoPath = QFileInfo(path).absoluteFilePath();
         out->detection = detectFace(out->photo, options);
         if (out->detection.status != DetectStatus::Ok)
-            return fail(detectionExitCode(out->detection.status),
-                        QStringLiteral("%1: %2").arg(path, out->detection.error));
+            return fail(
+                detectionExitCode(out->detection.status), QStringLiteral("%1: %2").arg(path, out->detection.error));
         out->face = out->detection.face;
         return ExitOk;
     }

@@ -15,9 +15,9 @@ namespace toonface::cli {
 struct FaceInput
 {
     FaceModel face;
-    Style style;            // the project's style, or the default preset
+    Style style; // the project's style, or the default preset
     bool hasProjectStyle = false;
-    QImage photo;           // may be null (face JSON whose photo is gone)
+    QImage photo; // may be null (face JSON whose photo is gone)
     QString photoPath;
     QStringList layerPaths;
     DetectionResult detection; // set when the input was a photo

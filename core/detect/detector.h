@@ -22,16 +22,19 @@ struct DetectOptions
     QString debugDir; // when set, intermediate images are written there as PNGs
 };
 
-enum class DetectStatus { Ok, NoFace, ModelMissing, Cancelled, BadImage };
+// Unsupported: the requested method is not implemented in this build.
+enum class DetectStatus { Ok, NoFace, ModelMissing, Cancelled, BadImage, Unsupported };
 
 struct DetectionResult
 {
     DetectStatus status = DetectStatus::NoFace;
-    QString error;            // a sentence for the user when status != Ok
-    FaceModel face;           // valid when status == Ok
-    QString method;           // the method that produced the points ("landmarks", "classic")
-    int faceCount = 0;        // faces seen in the image; the largest, most central one is used
-    QRect faceBox;            // the chosen face's box in image pixels
+    QString error; // a sentence for the user when status != Ok
+    FaceModel face; // valid when status == Ok
+    QString method; // the method that produced the points ("landmarks", "classic")
+    int faceCount = 0; // faces seen in the image; the largest, most central one is used
+                       // (the landmark method counts the faces of the size range that found one:
+                       // much smaller faces beside a large one are not looked for)
+    QRect faceBox; // the chosen face's box in image pixels
     QMap<QString, double> timingMs; // per stage, plus "total" (model loading excluded)
     QMap<QString, double> groupConfidence; // per point group name, 0..1
 };
@@ -43,8 +46,8 @@ using ProgressFn = std::function<void(double fraction, const QString &stage)>;
 // Thread safety: may be called from several threads at once; the landmark model is loaded
 // once per process and shared, the face detector is per thread.
 // requires: image is not null. Cancel is polled between stages.
-DetectionResult detectFace(const QImage &image, const DetectOptions &options = {},
-                           const ProgressFn &progress = {}, const std::atomic_bool *cancel = nullptr);
+DetectionResult detectFace(const QImage &image, const DetectOptions &options = {}, const ProgressFn &progress = {},
+    const std::atomic_bool *cancel = nullptr);
 
 // Loads the landmark model now (it is otherwise loaded on first use). Returns false with
 // *error when the model file is missing or unreadable. Thread-safe; loads only once.

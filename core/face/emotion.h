@@ -15,8 +15,8 @@ struct Pose;
 // The five emotion presets of thesis Fig. 5.12.
 enum class Emotion { Neutral, Smile, Sad, Angry, Surprise };
 
-inline constexpr std::array<Emotion, 5> kAllEmotions = {Emotion::Neutral, Emotion::Smile, Emotion::Sad,
-                                                        Emotion::Angry, Emotion::Surprise};
+inline constexpr std::array<Emotion, 5> kAllEmotions
+    = {Emotion::Neutral, Emotion::Smile, Emotion::Sad, Emotion::Angry, Emotion::Surprise};
 
 QString emotionName(Emotion emotion); // "neutral", "smile", "sad", "angry", "surprise"
 std::optional<Emotion> emotionFromName(const QString &name);

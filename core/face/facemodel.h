@@ -21,7 +21,9 @@ class FaceModel
 {
 public:
     FaceModel() = default;
-    explicit FaceModel(QSize imageSize) : m_imageSize(imageSize) {}
+    explicit FaceModel(QSize imageSize)
+        : m_imageSize(imageSize)
+    { }
 
     QSize imageSize() const { return m_imageSize; }
     void setImageSize(QSize size) { m_imageSize = size; }
@@ -55,8 +57,8 @@ public:
 
 private:
     QSize m_imageSize;
-    std::array<QPointF, kPointCount> m_points{};
-    std::array<bool, kPointCount> m_handPlaced{};
+    std::array<QPointF, kPointCount> m_points {};
+    std::array<bool, kPointCount> m_handPlaced {};
 };
 
 } // namespace toonface

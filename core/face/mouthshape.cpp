@@ -27,7 +27,10 @@ double FapuTerm::evaluate(const Fapu &f) const
 
 namespace {
 
-FapuOffset dyMns(double k) { return {{}, {k, 0, 0, 0}}; }
+FapuOffset dyMns(double k)
+{
+    return {{}, {k, 0, 0, 0}};
+}
 
 } // namespace
 
@@ -36,8 +39,7 @@ MouthShapePreset MouthShapeSet::defaultPreset(MouthShape shape)
     MouthShapePreset p;
     auto &o = p.offsets;
     switch (shape) {
-    case MouthShape::M:
-        break;
+    case MouthShape::M: break;
     case MouthShape::F:
         // face-model.md note 1: the lower lip tucked up under the upper lip.
         o[Down] = {{}, {0, 0, -0.5, 0}};
@@ -88,8 +90,8 @@ MouthShapeSet::MouthShapeSet()
         m_presets[int(s)] = defaultPreset(s);
 }
 
-std::array<QPointF, 4> MouthShapeSet::displacements(MouthShape shape, const FaceModel &face,
-                                                    const std::array<QPointF, 4> *previous) const
+std::array<QPointF, 4> MouthShapeSet::displacements(
+    MouthShape shape, const FaceModel &face, const std::array<QPointF, 4> *previous) const
 {
     const Fapu f = face.fapu();
     const MouthShapePreset &p = preset(shape);
@@ -117,8 +119,8 @@ std::array<QPointF, 4> MouthShapeSet::displacements(MouthShape shape, const Face
 
 namespace toonface {
 
-Pose mouthPose(const FaceModel &face, const MouthShapeSet &shapes, MouthShape shape,
-               const std::array<QPointF, 4> *previous)
+Pose mouthPose(
+    const FaceModel &face, const MouthShapeSet &shapes, MouthShape shape, const std::array<QPointF, 4> *previous)
 {
     const auto d = shapes.displacements(shape, face, previous);
     Pose pose;

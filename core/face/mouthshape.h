@@ -16,11 +16,10 @@ struct Fapu;
 enum class MouthShape { M, F, H, A, I, U, E, O, N };
 
 inline constexpr int kMouthShapeCount = 9;
-inline constexpr std::array<MouthShape, kMouthShapeCount> kAllMouthShapes = {
-    MouthShape::M, MouthShape::F, MouthShape::H, MouthShape::A, MouthShape::I,
-    MouthShape::U, MouthShape::E, MouthShape::O, MouthShape::N};
+inline constexpr std::array<MouthShape, kMouthShapeCount> kAllMouthShapes = {MouthShape::M, MouthShape::F,
+    MouthShape::H, MouthShape::A, MouthShape::I, MouthShape::U, MouthShape::E, MouthShape::O, MouthShape::N};
 
-QString mouthShapeName(MouthShape shape);                   // "m", "f", ... "n"
+QString mouthShapeName(MouthShape shape); // "m", "f", ... "n"
 std::optional<MouthShape> mouthShapeFromName(const QString &name);
 
 // One coordinate of a displacement, as a sum of FAPU terms, so that a preset fits every face:
@@ -50,7 +49,7 @@ inline constexpr std::array<const char *, 4> kMouthControlIds = {"8.9", "8.2", "
 // A mouth shape as the displacement of the four mouth control points from neutral.
 struct MouthShapePreset
 {
-    std::array<FapuOffset, 4> offsets{};
+    std::array<FapuOffset, 4> offsets {};
     // `o`: the corners sit at the height midway between the moved 8.9 and 8.2.
     bool cornersAtLipMiddle = false;
     // `n`: the corners stay where the shape before put them.
@@ -72,8 +71,8 @@ public:
 
     // Pixel displacements of 8.9, 8.2, 8.4, 8.3 for `shape` on `face`. `previous` are the
     // displacements of the shape before (used by `n`; neutral when absent).
-    std::array<QPointF, 4> displacements(MouthShape shape, const FaceModel &face,
-                                         const std::array<QPointF, 4> *previous = nullptr) const;
+    std::array<QPointF, 4> displacements(
+        MouthShape shape, const FaceModel &face, const std::array<QPointF, 4> *previous = nullptr) const;
 
     bool operator==(const MouthShapeSet &) const = default;
 
@@ -87,5 +86,5 @@ namespace toonface {
 struct Pose;
 // The pose that holds `shape` (only the four mouth controls move).
 Pose mouthPose(const FaceModel &face, const MouthShapeSet &shapes, MouthShape shape,
-               const std::array<QPointF, 4> *previous = nullptr);
+    const std::array<QPointF, 4> *previous = nullptr);
 } // namespace toonface

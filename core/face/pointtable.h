@@ -12,9 +12,9 @@ enum class PointGroup { Hair, Contour, Ears, Eyebrows, Eyes, Nose, Mouth };
 
 struct PointInfo
 {
-    const char *id;     // the thesis' MPEG-4-style name, e.g. "8.9"
+    const char *id; // the thesis' MPEG-4-style name, e.g. "8.9"
     PointGroup group;
-    bool control;       // moved by animation; every other point follows by rule
+    bool control; // moved by animation; every other point follows by rule
 };
 
 inline constexpr int kPointCount = 72;

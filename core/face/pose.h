@@ -14,7 +14,7 @@ class FaceModel;
 struct HeadPose
 {
     double rotationDeg = 0; // positive turns clockwise on screen (y down)
-    QPointF translation;    // pixels
+    QPointF translation; // pixels
     double scale = 1.0;
 
     bool operator==(const HeadPose &) const = default;
@@ -25,7 +25,7 @@ struct HeadPose
 // 0 = shut) and the head motion. Poses compose: speech + emotion + blink + head.
 struct Pose
 {
-    std::array<QPointF, kPointCount> offset{};
+    std::array<QPointF, kPointCount> offset {};
     double leftEyeOpen = 1.0;
     double rightEyeOpen = 1.0;
     HeadPose head;

@@ -16,6 +16,10 @@ struct DetectionResult;
 // {format, points: [{id, x, y, group, control, handPlaced}] in face-model.md order, fapu {...},
 //  method, image {path, width, height}, timingMs {stage: ms, total}, faceCount, faceBox,
 //  groupConfidence}.
+// Without a detection, method is "none" and the detection fields (timingMs, faceCount, faceBox,
+// groupConfidence) are left out; image.width/height are left out when the face has no valid
+// image size. fapu, method and the detection fields are informative: faceFromJson does not
+// read them back.
 inline constexpr const char *kFaceFormat = "toonface.face/1";
 
 QJsonObject faceToJson(const FaceModel &face, const QString &imagePath, const DetectionResult *detection = nullptr);

@@ -15,25 +15,36 @@ namespace toonface {
 // A Toonface project (.toonface): versioned JSON {format: "toonface.project", version: 1, ...}.
 // On disk the photo, audio and layer paths are relative to the project file; in memory they
 // are absolute.
+//
+// Version 1 holds: photo, imageSize {width, height} (absent when unknown), points
+// [{id, x, y, handPlaced}] in face-model.md order, style {name, cornerCutDepth, cute, eyebrows,
+// nose, components {name: {fill, stroke, strokeWidth, visible}}}, mouthShapes {m, f, h, a, i, u,
+// e, o, n: {up, dn, lf, rt: {dx, dy: {mns, mw, lowerLip, px}}, cornersAtLipMiddle,
+// cornersFromPrevious}}, layers [path], timeline {...}, audio {path, offset}, script {text,
+// language}. Colours are "#rrggbb", "#aarrggbb" or "none" (8 bits a channel: an in-memory colour
+// round-trips when it is an 8-bit RGB colour). Numbers are written in their shortest exact form,
+// so a save and a load give back an equal Project.
 struct Project
 {
     QString photoPath;
     FaceModel face;
     Style style;
     MouthShapeSet mouthShapes;
-    QStringList layerPaths;   // extra SVG layers
-    QJsonObject timeline;     // owned by core/anim; stored verbatim until then
+    QStringList layerPaths; // extra SVG layers
+    QJsonObject timeline; // owned by core/anim; stored verbatim until then
     QString audioPath;
-    double audioOffset = 0;   // seconds
+    double audioOffset = 0; // seconds
     QString script;
-    QString scriptLanguage;   // "cmn", "en" or empty (detect)
+    QString scriptLanguage; // "cmn", "en" or empty (detect)
 
     bool operator==(const Project &) const = default;
 };
 
 inline constexpr int kProjectVersion = 1;
 
-// Writes atomically (QSaveFile): a failed save leaves the old file intact.
+// Writes atomically (QSaveFile): a failed save leaves the old file intact and no temporary
+// file behind. Refuses (error "<file>: not saved: ...") a project that loadProject would reject,
+// such as one with a non-finite coordinate.
 bool saveProject(const Project &project, const QString &path, QString *error);
 
 // Validates every field; on failure returns nullopt with *error = "<file>: <json path>: <problem>",

@@ -11,7 +11,10 @@ namespace toonface {
 QVector<QPointF> cornerCut(QPointF p0, QPointF p1, QPointF p2, int depth);
 
 // Corner-cutting of a whole polyline: every interior vertex is cut between the midpoints of
-// its two segments. Open polylines keep their end points; closed ones wrap around.
+// its two segments. Open polylines keep their end points; closed ones wrap around (the result
+// lists each point once, not repeating the first at the end). depth <= 0, or fewer than three
+// points, returns `points` unchanged. The number of points depends only on the input's
+// count, depth and closedness.
 QVector<QPointF> cornerCutPolyline(const QVector<QPointF> &points, int depth, bool closed);
 
 struct CubicBezier
@@ -26,7 +29,24 @@ struct CubicBezier
 // dragging Q1 and Q2 together (method A) until |R3 - target| < tolerance. `spread` places
 // the inner control points along the chord (method B: < 1 sharper, > 1 flatter; 1 = thirds).
 // Ensures: |result.r3() - target| < tolerance.
-CubicBezier fitBezierThrough(QPointF q0, QPointF target, QPointF q3, double spread = 1.0,
-                             double tolerance = 0.5, int *iterations = nullptr);
+CubicBezier fitBezierThrough(
+    QPointF q0, QPointF target, QPointF q3, double spread = 1.0, double tolerance = 0.5, int *iterations = nullptr);
+
+// How the ends of a fitBezierChain are shaped. A null tangent leaves that end free.
+struct BezierChainEnds
+{
+    QPointF startTangent; // direction the chain leaves anchors.first()
+    QPointF endTangent; // direction the chain arrives at anchors.last()
+    bool closed = false; // anchors.last() == anchors.first(): one joint there, no ends
+};
+
+// Cubic Beziers joined smoothly (G1): segment i runs from anchors[i] to anchors[i + 1] and passes
+// through targets[i] at its R3 (t = 1/2). At each joint both handles lie along one tangent,
+// parallel to the line between the neighbouring targets; the handle lengths are solved so that
+// R3 lands on the target, and method A takes up any remainder (then only that joint may bend).
+// Requires: anchors.size() == targets.size() + 1 >= 2, else returns an empty vector.
+// Ensures: |segment[i].r3() - targets[i]| < tolerance for finite input.
+QVector<CubicBezier> fitBezierChain(const QVector<QPointF> &anchors, const QVector<QPointF> &targets,
+    const BezierChainEnds &ends = {}, double tolerance = 0.5);
 
 } // namespace toonface

@@ -11,13 +11,14 @@ namespace toonface {
 
 class FaceModel;
 
-// How one drawn component looks. Component names are the SVG ids of SvgFace
-// ("hair", "face", "ears", "nose", "eyebrows", "eyes", "eyeballs", "lips", "mouth-inner",
-// "jaw", ...).
+// How one drawn component looks. Component names are the style keys of SvgFace's parts:
+// "hair", "ears", "face", "jaw", "cheeks", "nose", "eyebrows", "eyes", "eyeballs", "pupils",
+// "highlights", "lips", "mouth-inner", "teeth", "tongue". A key missing from a Style's map
+// is drawn as in the "normal" preset.
 struct ComponentStyle
 {
-    QColor fill;          // invalid colour = no fill
-    QColor stroke;        // invalid colour = no stroke
+    QColor fill; // invalid colour = no fill
+    QColor stroke; // invalid colour = no stroke
     double strokeWidth = 0; // in units of ES0/100 (the thesis' pixel at its photo scale)
     bool visible = true;
 
@@ -32,8 +33,8 @@ enum class NoseVariant { Full, Simple, Tip };
 struct Style
 {
     QString name = QStringLiteral("normal");
-    int cornerCutDepth = 2;        // corner-cutting depth for hair and eyebrows (thesis: 2)
-    bool cute = false;             // thesis Fig. 7.8c: rounder jaw, larger eyeballs, smaller nose
+    int cornerCutDepth = 2; // corner-cutting depth for hair and eyebrows (thesis: 2)
+    bool cute = false; // thesis Fig. 7.8c: rounder jaw, larger eyeballs, smaller nose
     EyebrowVariant eyebrows = EyebrowVariant::Polyline;
     NoseVariant nose = NoseVariant::Full;
     QMap<QString, ComponentStyle> components;

@@ -16,12 +16,13 @@ namespace toonface {
 // structure (element kinds, path command sequence) never depends on the pose.
 struct FacePart
 {
-    QString id;       // stable SVG id, e.g. "mouth-upper-lip"
-    QString layer;    // "static" or "dynamic"
-    QString element;  // "path", "circle", "polyline", "polygon"
+    QString id; // stable SVG id, e.g. "mouth-upper-lip"
+    QString layer; // "static" or "dynamic"
+    QString element; // "path", "circle", "polyline", "polygon"
     QMap<QString, QString> geometry; // e.g. {"d": "M ..."} or {"cx","cy","r"}
     QString styleKey; // key into Style::components
     QString clipPath; // id of a clip path, or empty
+    QMap<QString, QString> paint; // presentation attributes (fill, stroke, stroke-width, ...), pose-independent
 };
 
 // Writes a face in a pose as SVG 1.1. Thread-safe for concurrent const use.
@@ -30,7 +31,9 @@ struct FacePart
 //   <defs> clip paths (eyes), then <g id="head" transform=head motion> with
 //   <g id="static-layer"> hair, ears, face, nose, eyebrows and
 //   <g id="dynamic-layer"> eyes (eyeballs clipped by the eye outline), mouth, jaw,
-// and then the user's extra layers (<g id="layer-N">) in order.
+// and then the user's extra layers (<g id="layer-N">) in order. Because QSvgRenderer before
+// Qt 6.7 ignores clip-path, each eye also has a skin-coloured cover ("eye-left-cover") around
+// its opening, so the eyeballs stay hidden outside the lids in every renderer.
 class SvgFace
 {
 public:
@@ -41,8 +44,13 @@ public:
     bool addLayerFile(const QString &svgPath, QString *error = nullptr);
     void addLayer(const QByteArray &svgContent);
 
+    // The drawn components in drawing order (invisible components left out). svg() writes
+    // exactly these, each as <element id=... geometry... clip-path=... paint...>.
     QVector<FacePart> parts(const Pose &pose = {}) const;
     QByteArray svg(const Pose &pose = {}) const;
+    // The transform attribute of <g id="head">: the head motion about the face centre, always
+    // of the form "translate(x,y) rotate(a) scale(s) translate(-cx,-cy)".
+    QString headTransform(const HeadPose &head) const;
 
     const FaceModel &face() const { return m_face; }
     const Style &style() const { return m_style; }

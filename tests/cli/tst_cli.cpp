@@ -32,7 +32,7 @@ Run cli(const QStringList &args)
     if (!p.waitForFinished(120000))
         return {};
     return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
+        p.readAllStandardError()};
 }
 
 // The contract's error format: exactly one line "toonface-cli: error: ...".
@@ -91,16 +91,22 @@ private Q_SLOTS:
     void usageErrors_data()
     {
         QTest::addColumn<QStringList>("args");
-        QTest::newRow("no command") << QStringList{};
-        QTest::newRow("unknown command") << QStringList{QStringLiteral("paint")};
-        QTest::newRow("detect without image") << QStringList{QStringLiteral("detect")};
-        QTest::newRow("detect two images") << QStringList{QStringLiteral("detect"), QStringLiteral("a.jpg"), QStringLiteral("b.jpg")};
-        QTest::newRow("unknown option") << QStringList{QStringLiteral("detect"), QStringLiteral("--colour"), QStringLiteral("a.jpg")};
-        QTest::newRow("bad method") << QStringList{QStringLiteral("detect"), QStringLiteral("a.jpg"), QStringLiteral("--method"), QStringLiteral("magic")};
-        QTest::newRow("cartoon without -o") << QStringList{QStringLiteral("cartoon"), QStringLiteral("a.jpg")};
-        QTest::newRow("bad emotion") << QStringList{QStringLiteral("cartoon"), QStringLiteral("a.jpg"), QStringLiteral("-o"), QStringLiteral("x.svg"), QStringLiteral("--emotion"), QStringLiteral("bored")};
-        QTest::newRow("bad style") << QStringList{QStringLiteral("cartoon"), QStringLiteral("a.jpg"), QStringLiteral("-o"), QStringLiteral("x.svg"), QStringLiteral("--style"), QStringLiteral("cubist")};
-        QTest::newRow("bad size") << QStringList{QStringLiteral("cartoon"), QStringLiteral("a.jpg"), QStringLiteral("-o"), QStringLiteral("x.svg"), QStringLiteral("--size"), QStringLiteral("huge")};
+        QTest::newRow("no command") << QStringList {};
+        QTest::newRow("unknown command") << QStringList {QStringLiteral("paint")};
+        QTest::newRow("detect without image") << QStringList {QStringLiteral("detect")};
+        QTest::newRow("detect two images")
+            << QStringList {QStringLiteral("detect"), QStringLiteral("a.jpg"), QStringLiteral("b.jpg")};
+        QTest::newRow("unknown option") << QStringList {
+            QStringLiteral("detect"), QStringLiteral("--colour"), QStringLiteral("a.jpg")};
+        QTest::newRow("bad method") << QStringList {
+            QStringLiteral("detect"), QStringLiteral("a.jpg"), QStringLiteral("--method"), QStringLiteral("magic")};
+        QTest::newRow("cartoon without -o") << QStringList {QStringLiteral("cartoon"), QStringLiteral("a.jpg")};
+        QTest::newRow("bad emotion") << QStringList {QStringLiteral("cartoon"), QStringLiteral("a.jpg"),
+            QStringLiteral("-o"), QStringLiteral("x.svg"), QStringLiteral("--emotion"), QStringLiteral("bored")};
+        QTest::newRow("bad style") << QStringList {QStringLiteral("cartoon"), QStringLiteral("a.jpg"),
+            QStringLiteral("-o"), QStringLiteral("x.svg"), QStringLiteral("--style"), QStringLiteral("cubist")};
+        QTest::newRow("bad size") << QStringList {QStringLiteral("cartoon"), QStringLiteral("a.jpg"),
+            QStringLiteral("-o"), QStringLiteral("x.svg"), QStringLiteral("--size"), QStringLiteral("huge")};
     }
 
     void usageErrors()
@@ -118,9 +124,11 @@ private Q_SLOTS:
         QTest::newRow("missing") << QStringLiteral("missing.jpg") << QByteArray();
         QTest::newRow("not an image") << QStringLiteral("notes.jpg") << QByteArray("just some words\n");
         QTest::newRow("empty") << QStringLiteral("empty.png") << QByteArray("\0", 0);
-        QTest::newRow("bad face json") << QStringLiteral("face.json") << QByteArray("{\"format\": \"toonface.face/1\", \"points\": 3}");
+        QTest::newRow("bad face json") << QStringLiteral("face.json")
+                                       << QByteArray("{\"format\": \"toonface.face/1\", \"points\": 3}");
         QTest::newRow("not json") << QStringLiteral("face2.json") << QByteArray("{points");
-        QTest::newRow("bad project") << QStringLiteral("p.toonface") << QByteArray("{\"format\": \"toonface.project\", \"version\": 1}");
+        QTest::newRow("bad project") << QStringLiteral("p.toonface")
+                                     << QByteArray("{\"format\": \"toonface.project\", \"version\": 1}");
     }
 
     void unreadableInputs()
@@ -128,7 +136,7 @@ private Q_SLOTS:
         QFETCH(QString, file);
         QFETCH(QByteArray, content);
         const QString p = path(file);
-        if (QTest::currentDataTag() != QLatin1StringView("missing")) {
+        if (qstrcmp(QTest::currentDataTag(), "missing") != 0) {
             QFile f(p);
             QVERIFY(f.open(QIODevice::WriteOnly));
             f.write(content);
@@ -212,7 +220,7 @@ private Q_SLOTS:
         const QString svg = path(QStringLiteral("hopper.svg"));
         const QString png = path(QStringLiteral("hopper.png"));
         Run r = cli({QStringLiteral("cartoon"), kPortrait, QStringLiteral("-o"), svg, QStringLiteral("--png"), png,
-                     QStringLiteral("--size"), QStringLiteral("300")});
+            QStringLiteral("--size"), QStringLiteral("300")});
         QCOMPARE(r.code, 0);
         QString viewBox;
         QVERIFY(isWellFormedSvg(svg, &viewBox));
@@ -231,13 +239,17 @@ private Q_SLOTS:
         // An emotion changes the drawing; a style too.
         const QString smile = path(QStringLiteral("smile.svg"));
         QCOMPARE(cli({QStringLiteral("cartoon"), facePath, QStringLiteral("-o"), smile, QStringLiteral("--emotion"),
-                      QStringLiteral("smile")}).code, 0);
+                         QStringLiteral("smile")})
+                     .code,
+            0);
         QFile a(svg2), b(smile);
         QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
         QVERIFY(a.readAll() != b.readAll());
         const QString cute = path(QStringLiteral("cute.svg"));
         QCOMPARE(cli({QStringLiteral("cartoon"), facePath, QStringLiteral("-o"), cute, QStringLiteral("--style"),
-                      QStringLiteral("cute")}).code, 0);
+                         QStringLiteral("cute")})
+                     .code,
+            0);
     }
 
     void cartoonFromProject()
@@ -264,7 +276,7 @@ private Q_SLOTS:
         QString error;
         QVERIFY(saveProject(project, projectPath, &error));
         const Run r = cli({QStringLiteral("cartoon"), projectPath, QStringLiteral("-o"),
-                           path(QStringLiteral("no/such/dir/out.svg"))});
+            path(QStringLiteral("no/such/dir/out.svg"))});
         QCOMPARE(r.code, 1);
         QVERIFY2(isOneErrorLine(r.err), r.err.constData());
         QVERIFY(r.err.contains("out.svg"));

@@ -72,13 +72,19 @@ private Q_SLOTS:
     {
         FaceModel f(QSize(100, 100));
         auto set = [&](const char *id, double x, double y) { f.setPoint(pt::idx(id), {x, y}); };
-        set("3.6", 30, 40); set("3.5", 70, 40);
+        set("3.6", 30, 40);
+        set("3.5", 70, 40);
         set("9.15", 50, 60);
-        set("2.2", 50, 72); set("2.3", 50, 72);
-        set("8.1", 50, 68); set("8.2", 50, 77);
-        set("8.4", 38, 72); set("8.3", 62, 72);
-        set("3.2", 30, 37); set("3.4", 30, 43);
-        set("3.1", 70, 36); set("3.3", 70, 44);
+        set("2.2", 50, 72);
+        set("2.3", 50, 72);
+        set("8.1", 50, 68);
+        set("8.2", 50, 77);
+        set("8.4", 38, 72);
+        set("8.3", 62, 72);
+        set("3.2", 30, 37);
+        set("3.4", 30, 43);
+        set("3.1", 70, 36);
+        set("3.3", 70, 44);
         set("2.1", 51, 90);
         const Fapu fapu = f.fapu();
         QCOMPARE(fapu.es0, 40.0);
@@ -98,7 +104,7 @@ private Q_SLOTS:
     {
         const FaceModel f = testFace();
         QVERIFY(f.isValid());
-        QCOMPARE(posedPoints(f, Pose{}), f.points());
+        QCOMPARE(posedPoints(f, Pose {}), f.points());
     }
 
     void derivedPointsFollowMouthControls()
@@ -115,7 +121,7 @@ private Q_SLOTS:
         const double axis0 = (f.point("8.4").x() + f.point("8.3").x()) / 2;
         // 8.10 mirrors 8.9's motion about the (moving) mouth axis.
         QCOMPARE(p(q, "8.10").x() - axis,
-                 (f.point("8.10").x() - axis0) - ((p(q, "8.9").x() - axis) - (f.point("8.9").x() - axis0)));
+            (f.point("8.10").x() - axis0) - ((p(q, "8.9").x() - axis) - (f.point("8.9").x() - axis0)));
         QCOMPARE(p(q, "8.10").y(), f.point("8.10").y() - 4);
         // 8.1 keeps its neutral offset from 8.9.
         QVERIFY(near(p(q, "8.1") - p(q, "8.9"), f.point("8.1") - f.point("8.9")));
@@ -180,29 +186,28 @@ private Q_SLOTS:
         A expect;
         switch (*s) {
         case MouthShape::M: expect = {}; break;
-        case MouthShape::F: expect = A{QPointF(), QPointF(0, -0.5 * u.lowerLipH), QPointF(), QPointF()}; break;
+        case MouthShape::F: expect = A {QPointF(), QPointF(0, -0.5 * u.lowerLipH), QPointF(), QPointF()}; break;
         case MouthShape::H:
         case MouthShape::U:
-            expect = A{QPointF(0, -0.3 * u.mns0), QPointF(0, 0.3 * u.mns0), QPointF(0, -px), QPointF(0, -px)};
+            expect = A {QPointF(0, -0.3 * u.mns0), QPointF(0, 0.3 * u.mns0), QPointF(0, -px), QPointF(0, -px)};
             break;
         case MouthShape::A:
-            expect = A{QPointF(0, -0.3 * u.mns0), QPointF(0, 0.8 * u.mns0), QPointF(u.mw0 / 8, 0), QPointF(-u.mw0 / 8, 0)};
+            expect = A {
+                QPointF(0, -0.3 * u.mns0), QPointF(0, 0.8 * u.mns0), QPointF(u.mw0 / 8, 0), QPointF(-u.mw0 / 8, 0)};
             break;
         case MouthShape::I:
-            expect = A{QPointF(), QPointF(0, u.mns0 / 6), QPointF(-u.mw0 / 12, -3 * px), QPointF(u.mw0 / 12, -3 * px)};
+            expect = A {QPointF(), QPointF(0, u.mns0 / 6), QPointF(-u.mw0 / 12, -3 * px), QPointF(u.mw0 / 12, -3 * px)};
             break;
         case MouthShape::E:
-            expect = A{QPointF(), QPointF(0, u.mns0 / 2), QPointF(-u.mw0 / 12, -3 * px), QPointF(u.mw0 / 12, -3 * px)};
+            expect = A {QPointF(), QPointF(0, u.mns0 / 2), QPointF(-u.mw0 / 12, -3 * px), QPointF(u.mw0 / 12, -3 * px)};
             break;
         case MouthShape::O: {
             const double mid = (f.point("8.9").y() - 0.3 * u.mns0 + f.point("8.2").y() + 0.5 * u.mns0) / 2;
-            expect = A{QPointF(0, -0.3 * u.mns0), QPointF(0, 0.5 * u.mns0),
-                       QPointF(0.2 * u.mw0, mid - f.point("8.4").y()), QPointF(-0.2 * u.mw0, mid - f.point("8.3").y())};
+            expect = A {QPointF(0, -0.3 * u.mns0), QPointF(0, 0.5 * u.mns0),
+                QPointF(0.2 * u.mw0, mid - f.point("8.4").y()), QPointF(-0.2 * u.mw0, mid - f.point("8.3").y())};
             break;
         }
-        case MouthShape::N:
-            expect = A{QPointF(0, -0.25 * u.mns0), QPointF(0, 0.5 * u.mns0), prev[2], prev[3]};
-            break;
+        case MouthShape::N: expect = A {QPointF(0, -0.25 * u.mns0), QPointF(0, 0.5 * u.mns0), prev[2], prev[3]}; break;
         }
         for (int k = 0; k < 4; ++k)
             QVERIFY2(near(d[k], expect[k], 1e-9), kMouthControlIds[k]);
@@ -229,7 +234,7 @@ private Q_SLOTS:
             const Pose full = emotionPose(f, e, 1.0);
             const Pose half = emotionPose(f, e, 0.5);
             const Pose none = emotionPose(f, e, 0.0);
-            QCOMPARE(none, Pose{});
+            QCOMPARE(none, Pose {});
             for (int i = 0; i < kPointCount; ++i) {
                 QVERIFY(near(half.offset[i], full.offset[i] * 0.5, 1e-9));
                 // mirrored: left and right counterparts move with opposite x, same y

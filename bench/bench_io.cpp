@@ -1,0 +1,127 @@
+#include "benchmark.h"
+
+#include "face/averageface.h"
+#include "io/imageio.h"
+#include "io/project.h"
+
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QTemporaryDir>
+
+#include <random>
+
+using namespace toonface;
+
+namespace {
+
+// A synthetic but realistically dense 10-minute timeline: speech at about 12 mouth keys a
+// second with pauses, a blink every ~4 s, a few emotion clips and a head key every ~2 s.
+QJsonObject tenMinuteTimeline()
+{
+    std::mt19937 rng(20240611);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const char *shapes[] = {"m", "f", "h", "a", "i", "u", "e", "o", "n"};
+    const double duration = 600.0;
+
+    QJsonArray mouth;
+    for (double t = 0; t < duration;) {
+        mouth.append(
+            QJsonObject {{QStringLiteral("t"), t}, {QStringLiteral("shape"), QLatin1StringView(shapes[rng() % 9])}});
+        t += unit(rng) < 0.02 ? 0.4 + unit(rng) : 1.0 / 12.0 * (0.5 + 0.6 * unit(rng));
+    }
+    QJsonArray blinks;
+    for (double t = 1.0 + 2.0 * unit(rng); t < duration; t += 2.5 + 3.0 * unit(rng))
+        blinks.append(QJsonObject {{QStringLiteral("t"), t}, {QStringLiteral("duration"), 0.12 + 0.08 * unit(rng)}});
+    QJsonArray emotions;
+    const char *names[] = {"smile", "sad", "angry", "surprise"};
+    for (int i = 0; i < 8; ++i) {
+        const double start = 20.0 + i * 70.0 + 10.0 * unit(rng);
+        emotions.append(QJsonObject {{QStringLiteral("emotion"), QLatin1StringView(names[i % 4])},
+            {QStringLiteral("start"), start}, {QStringLiteral("end"), start + 5.0 + 20.0 * unit(rng)},
+            {QStringLiteral("intensity"), 0.4 + 0.6 * unit(rng)}, {QStringLiteral("fadeIn"), 0.3},
+            {QStringLiteral("fadeOut"), 0.5}});
+    }
+    QJsonArray head;
+    for (double t = 0; t < duration; t += 1.5 + unit(rng)) {
+        head.append(QJsonObject {{QStringLiteral("t"), t}, {QStringLiteral("yaw"), 8.0 * (unit(rng) - 0.5)},
+            {QStringLiteral("pitch"), 5.0 * (unit(rng) - 0.5)}, {QStringLiteral("roll"), 3.0 * (unit(rng) - 0.5)},
+            {QStringLiteral("easing"), QStringLiteral("inOutCubic")}});
+    }
+    QJsonObject tracks {{QStringLiteral("mouth"), mouth}, {QStringLiteral("blink"), blinks},
+        {QStringLiteral("emotion"), emotions}, {QStringLiteral("head"), head}};
+    return QJsonObject {{QStringLiteral("duration"), duration}, {QStringLiteral("tracks"), tracks}};
+}
+
+Project benchProject(const QString &dir)
+{
+    Project p;
+    p.photoPath = dir + QStringLiteral("/photo.jpg");
+    p.face = averageFace(QRectF(180.5, 220.25, 400.75, 480.125), QSize(960, 1280));
+    p.style.components.insert(QStringLiteral("face"), {QColor(242, 201, 160), QColor(90, 59, 34), 1.5, true});
+    p.style.components.insert(QStringLiteral("hair"), {QColor(51, 34, 26), QColor(), 0, true});
+    p.layerPaths = {dir + QStringLiteral("/layers/hat.svg")};
+    p.timeline = tenMinuteTimeline();
+    p.audioPath = dir + QStringLiteral("/voice.wav");
+    p.script = QString(3000, QChar(0x4f60));
+    p.scriptLanguage = QStringLiteral("cmn");
+    return p;
+}
+
+} // namespace
+
+TOONFACE_BENCHMARK("io.project10min", [] {
+    QTemporaryDir tmp;
+    const Project project = benchProject(tmp.path());
+    const QString file = tmp.filePath(QStringLiteral("talk.toonface"));
+    QString error;
+    bool ok = true;
+    const double saveMs = bench::medianMs([&] { ok = saveProject(project, file, &error) && ok; });
+    const double loadMs = bench::medianMs([&] { ok = loadProject(file, &error).has_value() && ok; });
+    // Where the time goes: building the JSON tree, and turning it into text.
+    const double toJsonMs = bench::medianMs([&] { ok = !projectToJson(project, tmp.path()).isEmpty() && ok; });
+    const QJsonObject json = projectToJson(project, tmp.path());
+    const double fromJsonMs
+        = bench::medianMs([&] { ok = projectFromJson(json, tmp.path(), &error).has_value() && ok; });
+    const double textMs = bench::medianMs([&] { ok = !QJsonDocument(json).toJson().isEmpty() && ok; });
+    // The same bytes through a plain QFile: what the atomic save (temporary file, flush to disk,
+    // rename) costs on top.
+    const QByteArray text = QJsonDocument(json).toJson();
+    const QString plain = tmp.filePath(QStringLiteral("plain.json"));
+    const double plainWriteMs = bench::medianMs([&] {
+        QFile f(plain);
+        ok = f.open(QIODevice::WriteOnly) && f.write(text) == text.size() && ok;
+    });
+    const auto tracks = project.timeline.value(QStringLiteral("tracks")).toObject();
+    QJsonObject r;
+    r.insert(QStringLiteral("saveMs"), saveMs);
+    r.insert(QStringLiteral("loadMs"), loadMs);
+    r.insert(QStringLiteral("projectToJsonMs"), toJsonMs);
+    r.insert(QStringLiteral("projectFromJsonMs"), fromJsonMs);
+    r.insert(QStringLiteral("jsonToTextMs"), textMs);
+    r.insert(QStringLiteral("plainWriteMs"), plainWriteMs);
+    r.insert(QStringLiteral("fileKB"), double(QFileInfo(file).size()) / 1024.0);
+    r.insert(QStringLiteral("mouthKeys"), tracks.value(QStringLiteral("mouth")).toArray().size());
+    r.insert(QStringLiteral("blinks"), tracks.value(QStringLiteral("blink")).toArray().size());
+    r.insert(QStringLiteral("headKeys"), tracks.value(QStringLiteral("head")).toArray().size());
+    r.insert(QStringLiteral("ok"), ok);
+    if (!ok)
+        r.insert(QStringLiteral("error"), error);
+    return r;
+});
+
+TOONFACE_BENCHMARK("io.loadPhoto", [] {
+    const QString path = QStringLiteral("/usr/share/matplotlib/mpl-data/sample_data/grace_hopper.jpg");
+    QJsonObject r;
+    if (!QFileInfo::exists(path)) {
+        r.insert(QStringLiteral("skipped"), QStringLiteral("grace_hopper.jpg is absent"));
+        return r;
+    }
+    QString error;
+    QSize size;
+    const double ms = bench::medianMs([&] { size = loadPhoto(path, &error).size(); });
+    r.insert(QStringLiteral("ms"), ms);
+    r.insert(QStringLiteral("width"), size.width());
+    r.insert(QStringLiteral("height"), size.height());
+    return r;
+});

@@ -1,0 +1,328 @@
+#include "anim/timeline.h"
+
+#include <QJsonArray>
+#include <QJsonValue>
+
+#include <cmath>
+#include <functional>
+
+namespace toonface {
+
+namespace {
+
+QString key(const char *name)
+{
+    return QString::fromLatin1(name);
+}
+
+// Reads fields of one JSON object, remembering the first problem as "<path>.<field>: <problem>".
+class FieldReader
+{
+public:
+    FieldReader(const QJsonObject &object, QString path, QString *error)
+        : m_object(object)
+        , m_path(std::move(path))
+        , m_error(error)
+    { }
+
+    bool ok() const { return m_ok; }
+    QString pathOf(const char *field) const { return m_path.isEmpty() ? key(field) : m_path + u'.' + key(field); }
+
+    bool fail(const char *field, const QString &problem)
+    {
+        if (m_ok && m_error)
+            *m_error = pathOf(field) + QStringLiteral(": ") + problem;
+        m_ok = false;
+        return false;
+    }
+
+    // A finite number; absent fields keep *out (or fail when required). `valid` checks the
+    // value and returns the problem, or an empty string.
+    bool number(const char *field, double *out, bool required, const std::function<QString(double)> &valid = {})
+    {
+        const QJsonValue v = m_object.value(key(field));
+        if (v.isUndefined())
+            return required ? fail(field, QStringLiteral("missing")) : m_ok;
+        if (!v.isDouble() || !std::isfinite(v.toDouble()))
+            return fail(field, QStringLiteral("expected a number"));
+        if (valid) {
+            const QString problem = valid(v.toDouble());
+            if (!problem.isEmpty())
+                return fail(field, problem);
+        }
+        *out = v.toDouble();
+        return m_ok;
+    }
+
+    bool string(const char *field, QString *out, bool required)
+    {
+        const QJsonValue v = m_object.value(key(field));
+        if (v.isUndefined())
+            return required ? fail(field, QStringLiteral("missing")) : m_ok;
+        if (!v.isString())
+            return fail(field, QStringLiteral("expected a string"));
+        *out = v.toString();
+        return m_ok;
+    }
+
+private:
+    QJsonObject m_object;
+    QString m_path;
+    QString *m_error;
+    bool m_ok = true;
+};
+
+QString nonNegative(double v)
+{
+    return v < 0 ? QStringLiteral("must not be negative") : QString();
+}
+
+QString positive(double v)
+{
+    return v <= 0 ? QStringLiteral("must be positive") : QString();
+}
+
+QString unitInterval(double v)
+{
+    return v < 0 || v > 1 ? QStringLiteral("must be between 0 and 1") : QString();
+}
+
+// Reads the array `field` of `json`, calling read(object, path) for each element; returns false
+// after setting *error on the first problem.
+bool readArray(const QJsonObject &json, const char *field, QString *error,
+    const std::function<bool(const QJsonObject &, const QString &)> &read)
+{
+    const QJsonValue v = json.value(key(field));
+    if (v.isUndefined())
+        return true;
+    if (!v.isArray()) {
+        if (error)
+            *error = key(field) + QStringLiteral(": expected an array");
+        return false;
+    }
+    const QJsonArray array = v.toArray();
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const QString path = key(field) + u'[' + QString::number(i) + u']';
+        if (!array[i].isObject()) {
+            if (error)
+                *error = path + QStringLiteral(": expected an object");
+            return false;
+        }
+        if (!read(array[i].toObject(), path))
+            return false;
+    }
+    return true;
+}
+
+QJsonObject pointFields(QJsonObject o, QPointF p)
+{
+    o.insert(QStringLiteral("x"), p.x());
+    o.insert(QStringLiteral("y"), p.y());
+    return o;
+}
+
+} // namespace
+
+QJsonObject Timeline::toJson() const
+{
+    QJsonObject json;
+    json.insert(QStringLiteral("version"), kJsonVersion);
+    json.insert(QStringLiteral("fps"), m_frameRate);
+
+    QJsonObject smoothing;
+    smoothing.insert(QStringLiteral("minHold"), m_smoothing.minHold);
+    smoothing.insert(QStringLiteral("coarticulation"), m_smoothing.coarticulation);
+    smoothing.insert(QStringLiteral("silenceHold"), m_smoothing.silenceHold);
+    json.insert(QStringLiteral("smoothing"), smoothing);
+
+    // Defaults are left out of the many mouth keys to keep long timelines small.
+    QJsonArray mouth;
+    for (const MouthKey &k : m_mouth) {
+        QJsonObject o;
+        o.insert(QStringLiteral("time"), k.time);
+        o.insert(QStringLiteral("shape"), mouthShapeName(k.shape));
+        if (k.weight != 1.0)
+            o.insert(QStringLiteral("weight"), k.weight);
+        if (k.duration)
+            o.insert(QStringLiteral("duration"), *k.duration);
+        mouth.append(o);
+    }
+    json.insert(QStringLiteral("mouth"), mouth);
+
+    QJsonArray emotion;
+    for (const EmotionClip &c : m_emotion) {
+        QJsonObject o;
+        o.insert(QStringLiteral("start"), c.start);
+        o.insert(QStringLiteral("end"), c.end);
+        o.insert(QStringLiteral("emotion"), emotionName(c.emotion));
+        o.insert(QStringLiteral("intensity"), c.intensity);
+        o.insert(QStringLiteral("fadeIn"), c.fadeIn);
+        o.insert(QStringLiteral("fadeOut"), c.fadeOut);
+        emotion.append(o);
+    }
+    json.insert(QStringLiteral("emotion"), emotion);
+
+    QJsonArray blink;
+    for (const BlinkEvent &b : m_blinks) {
+        QJsonObject o;
+        o.insert(QStringLiteral("time"), b.time);
+        o.insert(QStringLiteral("duration"), b.duration);
+        blink.append(o);
+    }
+    json.insert(QStringLiteral("blink"), blink);
+
+    QJsonArray gaze;
+    for (const GazeKey &g : m_gaze) {
+        QJsonObject o;
+        o.insert(QStringLiteral("time"), g.time);
+        gaze.append(pointFields(o, g.offsetEs0));
+    }
+    json.insert(QStringLiteral("gaze"), gaze);
+
+    QJsonArray head;
+    for (const HeadKey &h : m_head) {
+        QJsonObject o;
+        o.insert(QStringLiteral("time"), h.time);
+        o.insert(QStringLiteral("rotation"), h.rotationDeg);
+        o = pointFields(o, h.translationEs0);
+        o.insert(QStringLiteral("scale"), h.scale);
+        head.append(o);
+    }
+    json.insert(QStringLiteral("head"), head);
+
+    if (m_audio) {
+        QJsonObject audio;
+        audio.insert(QStringLiteral("path"), m_audio->path);
+        audio.insert(QStringLiteral("offset"), m_audio->offset);
+        audio.insert(QStringLiteral("duration"), m_audio->duration);
+        json.insert(QStringLiteral("audio"), audio);
+    }
+    return json;
+}
+
+std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *error)
+{
+    Timeline timeline;
+    FieldReader top(json, QString(), error);
+    double version = kJsonVersion;
+    if (!top.number("version", &version, false))
+        return std::nullopt;
+    if (version != std::floor(version) || version < 1) {
+        top.fail("version", QStringLiteral("expected a positive integer"));
+        return std::nullopt;
+    }
+    if (version > kJsonVersion) {
+        top.fail("version", QStringLiteral("%1 is newer than this Toonface reads (%2)").arg(version).arg(kJsonVersion));
+        return std::nullopt;
+    }
+    if (!top.number("fps", &timeline.m_frameRate, false, positive))
+        return std::nullopt;
+
+    const QJsonValue smoothingValue = json.value(QStringLiteral("smoothing"));
+    if (!smoothingValue.isUndefined()) {
+        if (!smoothingValue.isObject()) {
+            if (error)
+                *error = QStringLiteral("smoothing: expected an object");
+            return std::nullopt;
+        }
+        FieldReader r(smoothingValue.toObject(), QStringLiteral("smoothing"), error);
+        MouthSmoothing &s = timeline.m_smoothing;
+        if (!r.number("minHold", &s.minHold, false, nonNegative)
+            || !r.number("coarticulation", &s.coarticulation, false, nonNegative)
+            || !r.number("silenceHold", &s.silenceHold, false, nonNegative))
+            return std::nullopt;
+    }
+
+    const bool tracksOk = readArray(json, "mouth", error, [&](const QJsonObject &o, const QString &path) {
+        FieldReader r(o, path, error);
+        MouthKey k;
+        QString shape;
+        if (!r.number("time", &k.time, true) || !r.string("shape", &shape, true))
+            return false;
+        const auto parsed = mouthShapeFromName(shape);
+        if (!parsed)
+            return r.fail("shape", QStringLiteral("unknown mouth shape '%1'").arg(shape));
+        k.shape = *parsed;
+        double duration = 0;
+        const bool hasDuration = o.contains(QStringLiteral("duration"));
+        if (!r.number("weight", &k.weight, false, nonNegative) || !r.number("duration", &duration, false, nonNegative))
+            return false;
+        if (hasDuration)
+            k.duration = duration;
+        timeline.m_mouth.append(k);
+        return true;
+    }) && readArray(json, "emotion", error, [&](const QJsonObject &o, const QString &path) {
+        FieldReader r(o, path, error);
+        EmotionClip c;
+        QString name;
+        if (!r.number("start", &c.start, true) || !r.number("end", &c.end, true))
+            return false;
+        if (c.end < c.start)
+            return r.fail("end", QStringLiteral("must not be before start"));
+        if (!r.string("emotion", &name, true))
+            return false;
+        const auto parsed = emotionFromName(name);
+        if (!parsed)
+            return r.fail("emotion", QStringLiteral("unknown emotion '%1'").arg(name));
+        c.emotion = *parsed;
+        if (!r.number("intensity", &c.intensity, false, unitInterval)
+            || !r.number("fadeIn", &c.fadeIn, false, nonNegative)
+            || !r.number("fadeOut", &c.fadeOut, false, nonNegative))
+            return false;
+        timeline.m_emotion.append(c);
+        return true;
+    }) && readArray(json, "blink", error, [&](const QJsonObject &o, const QString &path) {
+        FieldReader r(o, path, error);
+        BlinkEvent b;
+        if (!r.number("time", &b.time, true) || !r.number("duration", &b.duration, false, positive))
+            return false;
+        timeline.m_blinks.append(b);
+        return true;
+    }) && readArray(json, "gaze", error, [&](const QJsonObject &o, const QString &path) {
+        FieldReader r(o, path, error);
+        GazeKey g;
+        double x = 0, y = 0;
+        if (!r.number("time", &g.time, true) || !r.number("x", &x, false) || !r.number("y", &y, false))
+            return false;
+        g.offsetEs0 = {x, y};
+        timeline.m_gaze.append(g);
+        return true;
+    }) && readArray(json, "head", error, [&](const QJsonObject &o, const QString &path) {
+        FieldReader r(o, path, error);
+        HeadKey h;
+        double x = 0, y = 0;
+        if (!r.number("time", &h.time, true) || !r.number("rotation", &h.rotationDeg, false)
+            || !r.number("x", &x, false) || !r.number("y", &y, false) || !r.number("scale", &h.scale, false, positive))
+            return false;
+        h.translationEs0 = {x, y};
+        timeline.m_head.append(h);
+        return true;
+    });
+    if (!tracksOk)
+        return std::nullopt;
+
+    const QJsonValue audioValue = json.value(QStringLiteral("audio"));
+    if (!audioValue.isUndefined() && !audioValue.isNull()) {
+        if (!audioValue.isObject()) {
+            if (error)
+                *error = QStringLiteral("audio: expected an object");
+            return std::nullopt;
+        }
+        FieldReader r(audioValue.toObject(), QStringLiteral("audio"), error);
+        AudioClip clip;
+        if (!r.string("path", &clip.path, true) || !r.number("offset", &clip.offset, false)
+            || !r.number("duration", &clip.duration, false, nonNegative))
+            return std::nullopt;
+        timeline.m_audio = clip;
+    }
+
+    // Files written by hand may list keys out of order; the tracks keep them sorted.
+    timeline.setMouthKeys(timeline.m_mouth);
+    timeline.setEmotionClips(timeline.m_emotion);
+    timeline.setBlinks(timeline.m_blinks);
+    timeline.setGazeKeys(timeline.m_gaze);
+    timeline.setHeadKeys(timeline.m_head);
+    return timeline;
+}
+
+} // namespace toonface

@@ -1,0 +1,585 @@
+#include "detect/detector.h"
+
+#include "detect/hairsearch.h"
+#include "detect/landmarkmap.h"
+
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QGuiApplication>
+#include <QPainter>
+
+#include <dlib/image_processing.h>
+#include <dlib/image_processing/frontal_face_detector.h>
+#include <dlib/image_transforms.h>
+#include <dlib/serialize.h>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <mutex>
+#include <numbers>
+
+namespace toonface {
+
+namespace {
+
+// A read-only 8-bit grey image as dlib's generic image interface wants it, viewing the
+// pixels of a QImage (Format_Grayscale8, rows padded to bytesPerLine) without copying.
+struct GrayView
+{
+    const uchar *data = nullptr;
+    long rows = 0;
+    long cols = 0;
+    long stride = 0;
+};
+
+GrayView viewOf(const QImage &gray)
+{
+    return {gray.constBits(), gray.height(), gray.width(), long(gray.bytesPerLine())};
+}
+
+long num_rows(const GrayView &v)
+{
+    return v.rows;
+}
+long num_columns(const GrayView &v)
+{
+    return v.cols;
+}
+const void *image_data(const GrayView &v)
+{
+    return v.data;
+}
+long width_step(const GrayView &v)
+{
+    return v.stride;
+}
+
+} // namespace
+
+} // namespace toonface
+
+namespace dlib {
+template<>
+struct image_traits<toonface::GrayView>
+{
+    using pixel_type = unsigned char;
+};
+} // namespace dlib
+
+namespace toonface {
+
+namespace {
+
+// The HOG detector's sliding window is 80x80 pixels; it finds faces from that size up.
+constexpr double kDetectorWindow = 80.0;
+// Detection runs in passes, each on a copy of the photo scaled so that faces of at least
+// a given fraction of its shorter side fill the window: first the large faces of portraits
+// and webcam frames (a quarter of the shorter side, so the copy's shorter side is 320 px
+// whatever the photo's resolution: cheap), then, only when nothing was found, smaller ones.
+// Each pass doubles the scale, so costs four times the one before.
+constexpr double kPassFaceFractions[] = {1.0 / 4.0, 1.0 / 8.0, 1.0 / 16.0};
+// Upsampling beyond 2x invents no detail; more than 4 megapixels costs too long.
+constexpr double kMaxUpsampling = 2.0;
+constexpr double kMaxPassPixels = 4.0e6;
+
+// The shape predictor and its mean shape: the 68 points as they lie, on average, in the
+// unit square of the face detector's box (the trainer's initial shape, first in the file).
+struct LandmarkModel
+{
+    dlib::shape_predictor predictor;
+    std::array<QPointF, kIbugPointCount> meanShape {};
+};
+
+struct LoadedModel
+{
+    QString path;
+    std::shared_ptr<const LandmarkModel> model;
+};
+
+std::mutex &modelMutex()
+{
+    static std::mutex m;
+    return m;
+}
+
+LoadedModel &loadedModel()
+{
+    static LoadedModel model;
+    return model;
+}
+
+// The model for landmarkModelPath(), loaded at most once per path (a test or the user may
+// point TOONFACE_LANDMARK_MODEL elsewhere). Failures are not cached, so a file that appears
+// later is found. The shared pointer keeps a model alive for detections still using it.
+std::shared_ptr<const LandmarkModel> landmarkModel(QString *error, double *loadMs)
+{
+    const QString path = landmarkModelPath();
+    std::lock_guard lock(modelMutex());
+    LoadedModel &loaded = loadedModel();
+    if (loadMs)
+        *loadMs = 0;
+    if (loaded.model && loaded.path == path)
+        return loaded.model;
+
+    QElapsedTimer timer;
+    timer.start();
+    const QFileInfo info(path);
+    if (!info.isFile() || !info.isReadable()) {
+        if (error)
+            *error = QStringLiteral("The landmark model %1 is missing (install the package libdlib-data, "
+                                    "or set TOONFACE_LANDMARK_MODEL to shape_predictor_68_face_landmarks.dat).")
+                         .arg(QDir::toNativeSeparators(path));
+        return {};
+    }
+    auto model = std::make_shared<LandmarkModel>();
+    const std::string file = QFile::encodeName(path).toStdString();
+    try {
+        dlib::deserialize(file) >> model->predictor;
+        // dlib keeps the initial shape private; it is the first thing serialised after the
+        // format version, so it is read from the file's start.
+        std::ifstream in(file, std::ios::binary);
+        int version = 0;
+        dlib::matrix<float, 0, 1> mean;
+        dlib::deserialize(version, in);
+        dlib::deserialize(mean, in);
+        if (mean.size() != 2 * kIbugPointCount)
+            throw dlib::serialization_error("unexpected initial shape");
+        for (int i = 0; i < kIbugPointCount; ++i)
+            model->meanShape[i] = QPointF(mean(2 * i), mean(2 * i + 1));
+    } catch (const std::exception &e) {
+        if (error)
+            *error = QStringLiteral("The landmark model %1 could not be read: %2")
+                         .arg(QDir::toNativeSeparators(path), QString::fromLocal8Bit(e.what()).trimmed());
+        return {};
+    }
+    if (model->predictor.num_parts() != kIbugPointCount) {
+        if (error)
+            *error = QStringLiteral("The landmark model %1 gives %2 points, not the 68 of the iBUG scheme.")
+                         .arg(QDir::toNativeSeparators(path))
+                         .arg(model->predictor.num_parts());
+        return {};
+    }
+    loaded.path = path;
+    loaded.model = model;
+    if (loadMs)
+        *loadMs = timer.nsecsElapsed() / 1e6;
+    return loaded.model;
+}
+
+// Where the landmarks put the detector's box: the similarity transform (scale, rotation,
+// translation; least squares) that carries the model's mean shape onto `pts`.
+struct Similarity
+{
+    double a = 1, b = 0; // scale * (cos, sin) of the rotation
+    QPointF t;
+    double scale() const { return std::hypot(a, b); }
+    double angle() const { return std::atan2(b, a); }
+    QPointF map(QPointF p) const { return {a * p.x() - b * p.y() + t.x(), b * p.x() + a * p.y() + t.y()}; }
+};
+
+Similarity fitMeanShape(
+    const std::array<QPointF, kIbugPointCount> &mean, const std::array<QPointF, kIbugPointCount> &pts)
+{
+    QPointF cm, cp;
+    for (int i = 0; i < kIbugPointCount; ++i) {
+        cm += mean[i] / kIbugPointCount;
+        cp += pts[i] / kIbugPointCount;
+    }
+    double sxx = 0, sdot = 0, scross = 0;
+    for (int i = 0; i < kIbugPointCount; ++i) {
+        const QPointF u = mean[i] - cm, v = pts[i] - cp;
+        sxx += u.x() * u.x() + u.y() * u.y();
+        sdot += u.x() * v.x() + u.y() * v.y();
+        scross += u.x() * v.y() - u.y() * v.x();
+    }
+    Similarity s;
+    if (sxx <= 0)
+        return s;
+    s.a = sdot / sxx;
+    s.b = scross / sxx;
+    s.t = cp - QPointF(s.a * cm.x() - s.b * cm.y(), s.b * cm.x() + s.a * cm.y());
+    return s;
+}
+
+std::array<QPointF, kIbugPointCount> toPoints(const dlib::full_object_detection &shape)
+{
+    std::array<QPointF, kIbugPointCount> p {};
+    for (int i = 0; i < kIbugPointCount; ++i)
+        p[i] = QPointF(shape.part(i).x(), shape.part(i).y());
+    return p;
+}
+
+// The predictor's accuracy depends on the box it starts from, and it was trained on upright
+// faces in boxes of the detector's making. The HOG box is coarse (8-pixel cells, pyramid steps
+// of 5/6) and ignores the head's roll, so after a first fit the face is cut out upright, in
+// the box the first fit's landmarks imply (fitMeanShape), and fitted again. On the shared
+// research photos this halves the error's spread over jittered detector boxes.
+//
+// When the implied box already matches the one the first fit started from (roll under 3
+// degrees, centre and size within 3% of the box), the re-fit would start where the first did,
+// and is skipped.
+std::array<QPointF, kIbugPointCount> fitUpright(const LandmarkModel &model, const GrayView &image,
+    const QRectF &startBox, const std::array<QPointF, kIbugPointCount> &first)
+{
+    const Similarity s = fitMeanShape(model.meanShape, first);
+    const double box = s.scale();
+    if (!(box > 8) || !std::isfinite(box))
+        return first;
+    const QPointF implied = s.map(QPointF(0.5, 0.5));
+    const double size = std::max(startBox.width(), 1.0);
+    if (std::abs(s.angle()) < 3.0 * std::numbers::pi / 180.0
+        && QLineF(implied, startBox.center()).length() < 0.03 * size && std::abs(box / size - 1.0) < 0.03)
+        return first;
+    // The cut-out: twice the box around its centre, at most 600 px across (larger faces are
+    // sampled down: the predictor needs no more detail than that).
+    const QPointF centre = s.map(QPointF(0.5, 0.5));
+    const long side = std::lround(std::min(2.0 * box, 600.0));
+    const double zoom = side / (2.0 * box);
+    const dlib::chip_details chip(
+        dlib::drectangle(centre.x() - box, centre.y() - box, centre.x() + box, centre.y() + box),
+        dlib::chip_dims(side, side), s.angle());
+    dlib::array2d<unsigned char> upright;
+    dlib::extract_image_chip(image, chip, upright);
+    const double inner = box * zoom;
+    const dlib::rectangle rect(
+        std::lround(0.5 * inner), std::lround(0.5 * inner), std::lround(1.5 * inner) - 1, std::lround(1.5 * inner) - 1);
+    const dlib::full_object_detection shape = model.predictor(upright, rect);
+    const dlib::point_transform_affine back = dlib::inv(dlib::get_mapping_to_chip(chip));
+    std::array<QPointF, kIbugPointCount> p {};
+    for (int i = 0; i < kIbugPointCount; ++i) {
+        const dlib::dpoint q = back(dlib::dpoint(shape.part(i)));
+        p[i] = QPointF(q.x(), q.y());
+        if (!std::isfinite(p[i].x()) || !std::isfinite(p[i].y()))
+            return first;
+    }
+    return p;
+}
+
+dlib::frontal_face_detector &threadDetector()
+{
+    // Not thread-safe (it keeps scratch buffers), so one per thread.
+    thread_local dlib::frontal_face_detector detector = dlib::get_frontal_face_detector();
+    return detector;
+}
+
+QImage resizedGray(const QImage &gray, double scale)
+{
+    const int w = std::max(1, int(std::lround(gray.width() * scale)));
+    const int h = std::max(1, int(std::lround(gray.height() * scale)));
+    QImage out(w, h, QImage::Format_Grayscale8);
+    const cv::Mat src(
+        gray.height(), gray.width(), CV_8UC1, const_cast<uchar *>(gray.constBits()), size_t(gray.bytesPerLine()));
+    cv::Mat dst(h, w, CV_8UC1, out.bits(), size_t(out.bytesPerLine()));
+    cv::resize(src, dst, dst.size(), 0, 0, scale < 1 ? cv::INTER_AREA : cv::INTER_LINEAR);
+    return out;
+}
+
+// Grey levels as dlib makes them from colour, (R + G + B) / 3, which is what its detector
+// and the landmark model were trained on; and the same whatever the pixel format (Qt's own
+// conversions to Format_Grayscale8 weigh the channels differently, and differently per
+// format, which would make the landmarks depend on how a photo was stored).
+QImage toGray(const QImage &image)
+{
+    if (image.format() == QImage::Format_Grayscale8)
+        return image;
+    if (image.format() == QImage::Format_Grayscale16)
+        return image.convertToFormat(QImage::Format_Grayscale8);
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+    QImage gray(rgb.size(), QImage::Format_Grayscale8);
+    for (int y = 0; y < rgb.height(); ++y) {
+        const QRgb *in = reinterpret_cast<const QRgb *>(rgb.constScanLine(y));
+        uchar *out = gray.scanLine(y);
+        for (int x = 0; x < rgb.width(); ++x)
+            out[x] = uchar((unsigned(qRed(in[x])) + unsigned(qGreen(in[x])) + unsigned(qBlue(in[x]))) / 3);
+    }
+    return gray;
+}
+
+struct FaceBox
+{
+    QRectF box; // in full-image pixels
+    double score = 0;
+};
+
+std::vector<FaceBox> findFaces(const QImage &gray, double scale)
+{
+    const QImage small = qFuzzyCompare(scale, 1.0) ? gray : resizedGray(gray, scale);
+    std::vector<dlib::rect_detection> dets;
+    threadDetector()(viewOf(small), dets);
+    std::vector<FaceBox> out;
+    for (const auto &d : dets) {
+        // dlib's rectangles are inclusive: pixel columns left..right of the scaled copy,
+        // which cover [left / scale, (right + 1) / scale) of the photo.
+        const QRectF r(d.rect.left() / scale, d.rect.top() / scale, d.rect.width() / scale, d.rect.height() / scale);
+        out.push_back({r, d.detection_confidence});
+    }
+    return out;
+}
+
+dlib::rectangle toDlib(const QRectF &box)
+{
+    return dlib::rectangle(std::lround(box.left()), std::lround(box.top()), std::lround(box.left() + box.width()) - 1,
+        std::lround(box.top() + box.height()) - 1);
+}
+
+// The face to use: the largest, preferring central ones. Size counts most (a passer-by in
+// the corner is smaller than the subject); a face at the image's corner weighs half as much
+// as the same face at its centre.
+int chooseFace(const std::vector<FaceBox> &faces, QSize imageSize)
+{
+    const QPointF centre(imageSize.width() / 2.0, imageSize.height() / 2.0);
+    const double halfDiag = std::hypot(imageSize.width(), imageSize.height()) / 2;
+    int best = -1;
+    double bestScore = -1;
+    for (int i = 0; i < int(faces.size()); ++i) {
+        const QRectF &b = faces[i].box;
+        const double off = QLineF(b.center(), centre).length() / std::max(halfDiag, 1.0);
+        const double score = b.width() * b.height() * (1.0 - 0.5 * std::min(off, 1.0));
+        if (score > bestScore) {
+            bestScore = score;
+            best = i;
+        }
+    }
+    return best;
+}
+
+double logistic(double x)
+{
+    return 1.0 / (1.0 + std::exp(-x));
+}
+
+void writeDebugImages(const QString &dir, const QImage &image, const std::vector<FaceBox> &faces, int chosen,
+    const std::array<QPointF, kIbugPointCount> &ibug, const FaceModel &geometric, const FaceModel &face,
+    const HairSearchReport &hair)
+{
+    if (!QDir().mkpath(dir))
+        return;
+    QImage canvas = image.convertToFormat(QImage::Format_RGB32);
+    QPainter p(&canvas);
+    p.setRenderHint(QPainter::Antialiasing);
+    const double unit = std::max(1.0, std::min(canvas.width(), canvas.height()) / 400.0);
+    for (int i = 0; i < int(faces.size()); ++i) {
+        p.setPen(QPen(i == chosen ? Qt::green : Qt::yellow, unit));
+        p.drawRect(faces[i].box);
+    }
+    p.setPen(Qt::NoPen);
+    p.setBrush(Qt::cyan);
+    for (const QPointF &q : ibug)
+        p.drawEllipse(q, unit, unit);
+    p.end();
+    canvas.save(QDir(dir).filePath(QStringLiteral("detect-landmarks.png")));
+
+    // The points on a crop around the head, enlarged to about 800 px, labelled with their IDs;
+    // the geometric estimates of hair and ears (before the photo search) in orange.
+    QRectF head = face.bounds().united(geometric.bounds());
+    head.adjust(-0.1 * head.width(), -0.1 * head.height(), 0.1 * head.width(), 0.1 * head.height());
+    const double zoom = 800.0 / std::max(head.width(), head.height());
+    QImage crop(QSize(std::lround(head.width() * zoom), std::lround(head.height() * zoom)), QImage::Format_RGB32);
+    crop.fill(Qt::black);
+    p.begin(&crop);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setRenderHint(QPainter::SmoothPixmapTransform);
+    p.scale(zoom, zoom);
+    p.translate(-head.topLeft());
+    p.drawImage(QPointF(0, 0), image);
+    p.setPen(QPen(QColor(255, 255, 255, 140), 1.0 / zoom));
+    for (const QLineF &ray : hair.rays)
+        p.drawLine(ray);
+    // Text needs fonts, which need a QGuiApplication; a command-line run gets unlabelled points.
+    const bool labels = qobject_cast<QGuiApplication *>(QCoreApplication::instance()) != nullptr;
+    if (labels) {
+        QFont font = p.font();
+        font.setPointSizeF(7.0 / zoom);
+        p.setFont(font);
+    }
+    const double r = 3.0 / zoom;
+    for (int i = 0; i < kPointCount; ++i) {
+        const PointGroup g = pointTable()[i].group;
+        p.setPen(Qt::NoPen);
+        if ((g == PointGroup::Hair || g == PointGroup::Ears) && geometric.point(i) != face.point(i)) {
+            p.setBrush(QColor(255, 140, 0));
+            p.drawEllipse(geometric.point(i), r, r);
+        }
+        p.setBrush(g == PointGroup::Hair ? Qt::magenta : g == PointGroup::Ears ? Qt::cyan : Qt::green);
+        p.drawEllipse(face.point(i), r, r);
+        if (labels) {
+            p.setPen(Qt::yellow);
+            p.drawText(face.point(i) + QPointF(r, -r), pointId(i));
+        }
+    }
+    p.end();
+    crop.save(QDir(dir).filePath(QStringLiteral("detect-points.png")));
+    if (!hair.regionMask.isNull())
+        hair.regionMask.save(QDir(dir).filePath(QStringLiteral("detect-hair-region.png")));
+}
+
+} // namespace
+
+QString detectionMethodName(DetectionMethod m)
+{
+    switch (m) {
+    case DetectionMethod::Auto: return QStringLiteral("auto");
+    case DetectionMethod::Classic: return QStringLiteral("classic");
+    case DetectionMethod::Landmarks: return QStringLiteral("landmarks");
+    }
+    return {};
+}
+
+bool detectionMethodFromName(const QString &name, DetectionMethod *m)
+{
+    for (DetectionMethod candidate : {DetectionMethod::Auto, DetectionMethod::Classic, DetectionMethod::Landmarks}) {
+        if (name == detectionMethodName(candidate)) {
+            *m = candidate;
+            return true;
+        }
+    }
+    return false;
+}
+
+QString landmarkModelPath()
+{
+    const QString env = qEnvironmentVariable("TOONFACE_LANDMARK_MODEL");
+    if (!env.isEmpty())
+        return env;
+    return QStringLiteral("/usr/share/dlib/shape_predictor_68_face_landmarks.dat");
+}
+
+bool preloadLandmarkModel(QString *error, double *loadMs)
+{
+    return bool(landmarkModel(error, loadMs));
+}
+
+DetectionResult detectFace(
+    const QImage &image, const DetectOptions &options, const ProgressFn &progress, const std::atomic_bool *cancel)
+{
+    DetectionResult result;
+    result.method = detectionMethodName(DetectionMethod::Landmarks);
+    auto report = [&](double fraction, const QString &stage) {
+        if (progress)
+            progress(fraction, stage);
+    };
+    auto cancelled = [&] {
+        if (cancel && cancel->load()) {
+            result.status = DetectStatus::Cancelled;
+            result.error = QStringLiteral("Face detection was cancelled.");
+            return true;
+        }
+        return false;
+    };
+
+    if (options.method == DetectionMethod::Classic) {
+        result.method = detectionMethodName(DetectionMethod::Classic);
+        result.status = DetectStatus::Unsupported;
+        result.error
+            = QStringLiteral("The classic detection method is not implemented yet; use \"landmarks\" or \"auto\".");
+        return result;
+    }
+    if (image.isNull()) {
+        result.status = DetectStatus::BadImage;
+        result.error = QStringLiteral("The image is empty.");
+        return result;
+    }
+
+    QString modelError;
+    const auto model = landmarkModel(&modelError, nullptr);
+    if (!model) {
+        result.status = DetectStatus::ModelMissing;
+        result.error = modelError;
+        return result;
+    }
+    if (cancelled())
+        return result;
+
+    QElapsedTimer total, stage;
+    total.start();
+    stage.start();
+    auto lap = [&](const QString &name) {
+        result.timingMs.insert(name, stage.nsecsElapsed() / 1e6);
+        stage.restart();
+    };
+
+    report(0.0, QStringLiteral("prepare"));
+    const QImage gray = toGray(image);
+    const double shortSide = std::min(gray.width(), gray.height());
+    lap(QStringLiteral("prepare"));
+    if (cancelled())
+        return result;
+
+    report(0.1, QStringLiteral("faces"));
+    std::vector<FaceBox> faces;
+    double lastScale = 0;
+    for (double fraction : kPassFaceFractions) {
+        double scale = std::min(kDetectorWindow / (fraction * shortSide), kMaxUpsampling);
+        scale = std::min(scale, std::sqrt(kMaxPassPixels / (double(gray.width()) * gray.height())));
+        if (scale < lastScale * 1.2 || shortSide * scale < kDetectorWindow)
+            continue;
+        faces = findFaces(gray, scale);
+        lastScale = scale;
+        if (!faces.empty() || cancelled())
+            break;
+    }
+    lap(QStringLiteral("faces"));
+    if (cancelled())
+        return result;
+    result.faceCount = int(faces.size());
+    if (faces.empty()) {
+        result.status = DetectStatus::NoFace;
+        result.error = lastScale > 0
+            ? QStringLiteral("No face was found in the image (%1 x %2 pixels). A frontal, upright "
+                             "face at least %3 pixels wide is needed.")
+                  .arg(image.width())
+                  .arg(image.height())
+                  .arg(std::ceil(kDetectorWindow / lastScale))
+            : QStringLiteral("The image (%1 x %2 pixels) is too small to hold a face.")
+                  .arg(image.width())
+                  .arg(image.height());
+        return result;
+    }
+    const int chosen = chooseFace(faces, image.size());
+    const FaceBox &face = faces[chosen];
+    result.faceBox = face.box.toAlignedRect().intersected(image.rect());
+
+    report(0.5, QStringLiteral("landmarks"));
+    const GrayView view = viewOf(gray);
+    const auto first = toPoints(model->predictor(view, toDlib(face.box)));
+    const std::array<QPointF, kIbugPointCount> ibug = fitUpright(*model, view, face.box, first);
+    const FaceModel geometric = faceFromLandmarks68(ibug, image.size());
+    lap(QStringLiteral("landmarks"));
+    if (cancelled())
+        return result;
+
+    report(0.7, QStringLiteral("hair"));
+    FaceModel refined = geometric;
+    HairSearchReport hair;
+    refineFromPhoto(&refined, image, &hair, !options.debugDir.isEmpty());
+    lap(QStringLiteral("hair"));
+    result.timingMs.insert(QStringLiteral("total"), total.nsecsElapsed() / 1e6);
+    if (cancelled())
+        return result;
+
+    // Confidence: the detector's margin (0 at its threshold) drives the measured groups; the
+    // contour's jaw comes from the landmarks too but its cheeks and forehead are partly rule;
+    // hair and ears are estimated, better when the photo search found the hair boundary.
+    const double base = 0.5 + 0.5 * logistic(2.0 * face.score);
+    result.groupConfidence.insert(groupName(PointGroup::Eyes), base);
+    result.groupConfidence.insert(groupName(PointGroup::Eyebrows), 0.95 * base);
+    result.groupConfidence.insert(groupName(PointGroup::Nose), 0.9 * base);
+    result.groupConfidence.insert(groupName(PointGroup::Mouth), base);
+    result.groupConfidence.insert(groupName(PointGroup::Contour), 0.75 * base);
+    result.groupConfidence.insert(groupName(PointGroup::Ears), (0.25 + 0.25 * hair.earFraction) * base);
+    result.groupConfidence.insert(groupName(PointGroup::Hair), (0.3 + 0.5 * hair.hairFraction) * base);
+
+    if (!options.debugDir.isEmpty())
+        writeDebugImages(options.debugDir, image, faces, chosen, ibug, geometric, refined, hair);
+
+    result.face = refined;
+    result.status = DetectStatus::Ok;
+    report(1.0, QStringLiteral("done"));
+    return result;
+}
+
+} // namespace toonface

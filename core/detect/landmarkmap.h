@@ -1,0 +1,65 @@
+#pragma once
+
+#include "face/facemodel.h"
+
+#include <QPointF>
+#include <QSize>
+
+#include <array>
+
+namespace toonface {
+
+inline constexpr int kIbugPointCount = 68;
+
+// Maps the 68 landmarks of the iBUG/300-W scheme (0-based, as dlib's shape_predictor gives
+// them; index 0 is the jaw's image-left end) onto the 72 points of face-model.md.
+//
+// Eyes, brow ends, nostrils, nose tip, mouth and chin follow the correspondence table of the
+// scoring protocol (shared/data/README.md); every other point is derived by a rule stated in
+// landmarkmap.cpp. The rules work in the face's own frame (x along the eye line, y down
+// perpendicular to it), so a tilted head gives a tilted model. Hair, forehead and ears are
+// not in the 68 points: they are a geometric estimate from the face's proportions, which
+// refineFromPhoto() (hairsearch.h) improves when the photo allows.
+//
+// requires: the 68 points are finite and the two eyes are apart.
+// ensures: all 72 points are finite; when imageSize is valid, the estimated points (hair,
+// forehead, ears) are clamped into the image, the measured ones are left as given.
+FaceModel faceFromLandmarks68(const std::array<QPointF, kIbugPointCount> &ibug, QSize imageSize);
+
+// The head's layout that the estimated points are built on, from a face's measured points
+// (eyes, brows, nose, mouth, cheeks, chin). Lengths in image pixels; positions in the face
+// frame: origin at EyeMid (between the eyeball centres), x along the eye line toward the
+// image-right eye, y perpendicular, down the face.
+struct HeadGeometry
+{
+    QPointF origin;
+    QPointF ex {1, 0};
+    QPointF ey {0, 1};
+    double eyeDistance = 0; // ES0
+    double browY = 0; // mean height of the eight brow points
+    double noseBaseY = 0; // the nose tip 9.15's height
+    double hairlineY = 0; // rule of thirds: as far above the brows as the nose base is below
+    double midX = 0; // the face's midline (11.1.x)
+    QPointF hairCentre; // centre of the hair ellipse (between the cheeks, at eye level)
+    double hairAx = 0; // its semi-axes
+    double hairAy = 0;
+
+    QPointF toLocal(QPointF image) const;
+    QPointF toImage(QPointF local) const;
+    // The geometric hair point h.(i+1), i = 0..18, in the face frame.
+    QPointF hairPoint(int i) const;
+};
+
+// requires: the eyes, brows, nose tip, cheeks 5.2/5.1 and chin 2.1 of `face` are placed.
+HeadGeometry headGeometry(const FaceModel &face);
+
+// The reverse of the table for the compared points: the iBUG reference position of a
+// Toonface point used in NME scoring, or false when the point is not scored.
+// `ibug` are the ground-truth landmarks; *pos receives the point to compare with.
+bool scoredReference(int pointIndex, const std::array<QPointF, kIbugPointCount> &ibug, QPointF *pos);
+
+// The 300-W normalised mean error of `face` against ground-truth landmarks: the mean distance
+// over the scored points divided by the distance between iBUG 36 and 45.
+double normalizedMeanError(const FaceModel &face, const std::array<QPointF, kIbugPointCount> &ibug);
+
+} // namespace toonface

@@ -1,0 +1,7 @@
+list(APPEND TOONFACE_CORE_SOURCES
+  detect/detector.h detect/detector.cpp
+  detect/hairsearch.h detect/hairsearch.cpp
+  detect/landmarkmap.h detect/landmarkmap.cpp)
+# dlib's detector and predictor are header templates: unoptimised they run ~40x slower, so
+# this file is optimised even in Debug builds.
+set_source_files_properties(detect/detector.cpp PROPERTIES COMPILE_OPTIONS "-O2")

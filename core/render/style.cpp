@@ -1,0 +1,360 @@
+#include "render/style.h"
+
+#include "face/facemodel.h"
+#include "face/fapu.h"
+
+#include <QImage>
+#include <QLineF>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace toonface {
+
+namespace {
+
+ComponentStyle paint(const char *fill, const char *stroke, double width)
+{
+    ComponentStyle s;
+    if (fill)
+        s.fill = QColor(QLatin1StringView(fill));
+    if (stroke)
+        s.stroke = QColor(QLatin1StringView(stroke));
+    s.strokeWidth = width;
+    return s;
+}
+
+// The colours and line weights every preset starts from; widths in ES0/100.
+QMap<QString, ComponentStyle> baseComponents()
+{
+    const char *skin = "#f3cfb3";
+    const char *outline = "#6b4430";
+    QMap<QString, ComponentStyle> c;
+    c.insert(QStringLiteral("hair"), paint("#3d2b1f", "#22170f", 2.0));
+    c.insert(QStringLiteral("ears"), paint(skin, outline, 2.2));
+    c.insert(QStringLiteral("face"), paint(skin, outline, 2.6));
+    c.insert(QStringLiteral("jaw"), paint(skin, outline, 2.6));
+    c.insert(QStringLiteral("nose"), paint(nullptr, "#a0664f", 2.2));
+    c.insert(QStringLiteral("eyebrows"), paint("#2f2119", "#2f2119", 4.5));
+    c.insert(QStringLiteral("eyes"), paint("#ffffff", "#2b1d16", 2.2));
+    c.insert(QStringLiteral("eyeballs"), paint("#6b4a2b", "#2b1d16", 0.8));
+    c.insert(QStringLiteral("pupils"), paint("#150e0b", nullptr, 0));
+    c.insert(QStringLiteral("highlights"), paint("#ffffff", nullptr, 0));
+    c.insert(QStringLiteral("lips"), paint("#d67c74", "#94443d", 1.6));
+    c.insert(QStringLiteral("mouth-inner"), paint("#5c2323", nullptr, 0));
+    c.insert(QStringLiteral("teeth"), paint("#fbf8f1", nullptr, 0));
+    c.insert(QStringLiteral("tongue"), paint("#c0585a", nullptr, 0));
+    ComponentStyle cheeks = paint("#f07f7f", nullptr, 0);
+    cheeks.fill.setAlpha(77); // 30 %, in the 8 bits a project file keeps
+    cheeks.visible = false;
+    c.insert(QStringLiteral("cheeks"), cheeks);
+    return c;
+}
+
+// ---- colour sampling ----
+
+double hueDistance(double a, double b)
+{
+    const double d = std::abs(a - b);
+    return std::min(d, 360.0 - d);
+}
+
+double rgbDistance(QColor a, QColor b)
+{
+    return std::hypot(a.red() - b.red(), a.green() - b.green(), a.blue() - b.blue());
+}
+
+// Pixels of the photo in a disc; clipped to the image.
+class PixelSampler
+{
+public:
+    explicit PixelSampler(const QImage &photo)
+        : m_image(photo.convertToFormat(QImage::Format_RGB32))
+    { }
+
+    std::vector<QRgb> disc(QPointF centre, double radius) const
+    {
+        std::vector<QRgb> px;
+        if (m_image.isNull() || !std::isfinite(centre.x()) || !std::isfinite(centre.y()))
+            return px;
+        const double r = std::max(radius, 1.0);
+        const int x0 = std::max(0, int(std::floor(centre.x() - r)));
+        const int x1 = std::min(m_image.width() - 1, int(std::ceil(centre.x() + r)));
+        const int y0 = std::max(0, int(std::floor(centre.y() - r)));
+        const int y1 = std::min(m_image.height() - 1, int(std::ceil(centre.y() + r)));
+        for (int y = y0; y <= y1; ++y) {
+            const auto *line = reinterpret_cast<const QRgb *>(m_image.constScanLine(y));
+            for (int x = x0; x <= x1; ++x) {
+                if (std::hypot(x + 0.5 - centre.x(), y + 0.5 - centre.y()) <= r)
+                    px.push_back(line[x]);
+            }
+        }
+        return px;
+    }
+
+private:
+    QImage m_image;
+};
+
+int medianOf(std::vector<int> v)
+{
+    auto mid = v.begin() + v.size() / 2;
+    std::nth_element(v.begin(), mid, v.end());
+    return *mid;
+}
+
+// Per-channel median; invalid colour for no pixels.
+QColor medianColour(const std::vector<QRgb> &px)
+{
+    if (px.empty())
+        return {};
+    std::vector<int> r, g, b;
+    r.reserve(px.size());
+    g.reserve(px.size());
+    b.reserve(px.size());
+    for (QRgb p : px) {
+        r.push_back(qRed(p));
+        g.push_back(qGreen(p));
+        b.push_back(qBlue(p));
+    }
+    return QColor(medianOf(r), medianOf(g), medianOf(b));
+}
+
+// Hair reads as the colour of its lit strands, not of the shadows between them: the median of
+// the pixels between the 40th and 90th percentile of brightness (which also drops glints).
+QColor litMedianColour(std::vector<QRgb> px)
+{
+    if (px.size() < 10)
+        return medianColour(px);
+    std::sort(px.begin(), px.end(), [](QRgb a, QRgb b) { return qGray(a) < qGray(b); });
+    const auto from = px.begin() + qsizetype(px.size() * 0.4);
+    const auto to = px.begin() + qsizetype(px.size() * 0.9);
+    return medianColour(std::vector<QRgb>(from, to));
+}
+
+QColor medianColour(const std::vector<QColor> &colours)
+{
+    std::vector<QRgb> px;
+    for (const QColor &c : colours) {
+        if (c.isValid())
+            px.push_back(c.rgb());
+    }
+    return medianColour(px);
+}
+
+QColor mix(QColor a, QColor b, double t)
+{
+    return QColor::fromRgbF(float(a.redF() + (b.redF() - a.redF()) * t),
+        float(a.greenF() + (b.greenF() - a.greenF()) * t), float(a.blueF() + (b.blueF() - a.blueF()) * t));
+}
+
+bool plausibleSkin(QColor c)
+{
+    if (!c.isValid())
+        return false;
+    const double h = c.hsvHueF() * 360.0;
+    const double s = c.hsvSaturationF();
+    const double v = c.valueF();
+    // Skin of any tone is a warm hue, never vivid, never near black.
+    return v > 0.12 && s < 0.75 && (s < 0.12 || hueDistance(h, 25.0) < 45.0);
+}
+
+bool plausibleLips(QColor c, QColor skin)
+{
+    if (!c.isValid())
+        return false;
+    const double h = c.hsvHueF() * 360.0;
+    return c.valueF() > 0.15 && hueDistance(h, 5.0) < 40.0 && rgbDistance(c, skin) > 10.0;
+}
+
+bool plausibleIris(QColor c)
+{
+    return c.isValid() && c.valueF() < 0.7;
+}
+
+QPointF unitVector(QPointF v)
+{
+    const double l = std::hypot(v.x(), v.y());
+    return l > 1e-9 ? v / l : QPointF();
+}
+
+} // namespace
+
+QStringList Style::presetNames()
+{
+    return {QStringLiteral("normal"), QStringLiteral("soft"), QStringLiteral("bold"), QStringLiteral("cute")};
+}
+
+Style Style::preset(const QString &name, bool *ok)
+{
+    const bool known = presetNames().contains(name);
+    if (ok)
+        *ok = known;
+    if (!known)
+        return Style();
+    // "normal" (thesis Fig. 7.8(a)): polyline eyebrows by corner cutting, the full nose.
+    Style s;
+    s.name = name;
+    s.components = baseComponents();
+    if (name == QLatin1StringView("soft")) {
+        // Thesis Fig. 7.8(b): Bezier eyebrows and a simpler nose.
+        s.eyebrows = EyebrowVariant::Bezier;
+        s.nose = NoseVariant::Simple;
+    } else if (name == QLatin1StringView("bold")) {
+        s.eyebrows = EyebrowVariant::Thick;
+        s.nose = NoseVariant::Simple;
+        for (const char *key : {"face", "jaw", "ears", "eyes"})
+            s.components[QLatin1StringView(key)].strokeWidth *= 1.5;
+        s.components[QStringLiteral("hair")].strokeWidth = 3.0;
+        s.components[QStringLiteral("nose")].strokeWidth = 3.0;
+        s.components[QStringLiteral("lips")].strokeWidth = 2.4;
+    } else if (name == QLatin1StringView("cute")) {
+        // Thesis Fig. 7.8(c): rounder, shorter jaw, larger eyes and eyeballs, smaller nose (by
+        // rule, in SvgFace), softer brows and blushing cheeks.
+        s.cute = true;
+        s.eyebrows = EyebrowVariant::Bezier;
+        s.nose = NoseVariant::Simple;
+        s.components[QStringLiteral("cheeks")].visible = true;
+    }
+    return s;
+}
+
+void Style::sampleColours(const QImage &photo, const FaceModel &face)
+{
+    if (photo.isNull())
+        return;
+    if (components.isEmpty())
+        components = baseComponents();
+    const PixelSampler sampler(photo);
+    const Fapu f = Fapu::measure(face);
+    const double es0 = f.es0 > 0 ? f.es0 : std::max(1.0, face.bounds().width() / 2.5);
+    auto p = [&](const char *id) { return face.point(id); };
+    auto regionMedian = [&](QPointF c, double r) { return medianColour(sampler.disc(c, r)); };
+
+    // Skin: the median of five region medians (cheeks, forehead, nose bridge, chin), so a fringe,
+    // a beard or a shadow on one of them does not decide.
+    const double rs = 0.07 * es0;
+    const QPointF leftCheek = (p("3.4") + p("8.4") + p("5.2") + p("9.2")) / 4.0;
+    const QPointF rightCheek = (p("3.3") + p("8.3") + p("5.1") + p("9.1")) / 4.0;
+    const QPointF browMid = (p("4.2") + p("4.1")) / 2.0;
+    const QPointF forehead = browMid + (p("11.1") - browMid) * 0.45;
+    const QPointF bridge = (p("9.14") + p("9.13") + p("9.6") + p("9.7")) / 4.0;
+    const QPointF chin = (p("8.2") + p("2.1") * 2.0) / 3.0;
+    const QColor skin = medianColour(std::vector<QColor> {regionMedian(leftCheek, rs), regionMedian(rightCheek, rs),
+        regionMedian(forehead, rs), regionMedian(bridge, rs * 0.6), regionMedian(chin, rs * 0.6)});
+    // A black-and-white photo says nothing about skin, lips or eyes: those keep the preset's
+    // colours, and only the hair takes its shade from the photo.
+    const bool monochrome = photo.allGray();
+    const bool skinOk = !monochrome && plausibleSkin(skin);
+    const QColor skinUsed = skinOk ? skin : components.value(QStringLiteral("face")).fill;
+    if (skinOk) {
+        for (const char *key : {"face", "jaw", "ears"})
+            components[QLatin1StringView(key)].fill = skin;
+    }
+
+    // Hair: a band inside the outline h.3..h.17, a quarter and half way to the hairline;
+    // compared with a band just outside, so a hair outline drawn around background is noticed.
+    const QPointF centre = (p("11.1") + p("2.1")) / 2.0;
+    const QPointF hairline[] = {p("11.2"), p("11.1"), p("11.3"), p("5.2"), p("5.1")};
+    std::vector<QRgb> inside, outside;
+    for (int k = 3; k <= 17; ++k) {
+        const QPointF h = face.point(pt::idx("h.1") + k - 1); // h.1..h.19 are consecutive
+        double gap = 1e300;
+        for (const QPointF &q : hairline)
+            gap = std::min(gap, QLineF(h, q).length());
+        const QPointF in = unitVector(centre - h);
+        const double thickness = std::min(gap, 0.5 * es0);
+        if (thickness < 3.0)
+            continue;
+        const double radius = std::max(1.0, 0.12 * thickness);
+        for (double depth : {0.25 * thickness, 0.5 * thickness}) {
+            const auto a = sampler.disc(h + in * depth, radius);
+            inside.insert(inside.end(), a.begin(), a.end());
+        }
+        const auto b = sampler.disc(h - in * (0.12 * es0), radius);
+        outside.insert(outside.end(), b.begin(), b.end());
+    }
+    const QColor hair = litMedianColour(inside);
+    const QColor background = medianColour(outside);
+    bool hairOk = hair.isValid();
+    if (hairOk && background.isValid()) {
+        const auto nearBackground = std::count_if(
+            inside.begin(), inside.end(), [&](QRgb c) { return rgbDistance(QColor(c), background) < 40.0; });
+        hairOk = nearBackground * 2 < qsizetype(inside.size());
+    }
+    if (hairOk && rgbDistance(hair, skinUsed) < 30.0)
+        hairOk = false; // bald or the band fell on the forehead
+    if (hairOk) {
+        components[QStringLiteral("hair")].fill = hair;
+        components[QStringLiteral("hair")].stroke = hair.darker(170);
+        const QColor brow = hair.valueF() > 0.45 ? hair.darker(150) : hair.darker(120);
+        components[QStringLiteral("eyebrows")].fill = brow;
+        components[QStringLiteral("eyebrows")].stroke = brow;
+    }
+
+    if (monochrome)
+        return;
+
+    // Lips: the middle of each lip.
+    const double rl = std::max(1.0, 0.3 * std::min(f.upperLipH, f.lowerLipH));
+    const QColor lips = medianColour(std::vector<QColor> {regionMedian((p("8.1") + p("2.2")) / 2.0, rl),
+        regionMedian((p("2.3") + p("8.2")) / 2.0, rl),
+        regionMedian(((p("8.9") + p("8.4")) / 2.0 + (p("8.4") + p("2.2")) / 2.0) / 2.0, rl)});
+    const QColor lipUsed = plausibleLips(lips, skinUsed) ? lips : mix(skinUsed, QColor(0xc0, 0x50, 0x4d), 0.45);
+    components[QStringLiteral("lips")].fill = lipUsed;
+    components[QStringLiteral("lips")].stroke = lipUsed.darker(150);
+
+    // Iris: a small disc at each eyeball centre.
+    std::vector<QRgb> irisPx = sampler.disc(p("3.6"), std::max(1.0, 0.25 * f.leftEyeH));
+    const auto right = sampler.disc(p("3.5"), std::max(1.0, 0.25 * f.rightEyeH));
+    irisPx.insert(irisPx.end(), right.begin(), right.end());
+    const QColor iris = medianColour(irisPx);
+    if (plausibleIris(iris))
+        components[QStringLiteral("eyeballs")].fill = iris;
+}
+
+QString eyebrowVariantName(EyebrowVariant v)
+{
+    switch (v) {
+    case EyebrowVariant::Polyline: return QStringLiteral("polyline");
+    case EyebrowVariant::Bezier: return QStringLiteral("bezier");
+    case EyebrowVariant::Thick: return QStringLiteral("thick");
+    }
+    return {};
+}
+
+bool eyebrowVariantFromName(const QString &name, EyebrowVariant *v)
+{
+    for (EyebrowVariant e : {EyebrowVariant::Polyline, EyebrowVariant::Bezier, EyebrowVariant::Thick}) {
+        if (eyebrowVariantName(e) == name) {
+            *v = e;
+            return true;
+        }
+    }
+    return false;
+}
+
+QString noseVariantName(NoseVariant v)
+{
+    switch (v) {
+    case NoseVariant::Full: return QStringLiteral("full");
+    case NoseVariant::Simple: return QStringLiteral("simple");
+    case NoseVariant::Tip: return QStringLiteral("tip");
+    }
+    return {};
+}
+
+bool noseVariantFromName(const QString &name, NoseVariant *v)
+{
+    for (NoseVariant n : {NoseVariant::Full, NoseVariant::Simple, NoseVariant::Tip}) {
+        if (noseVariantName(n) == name) {
+            *v = n;
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace toonface

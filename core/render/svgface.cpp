@@ -1,0 +1,888 @@
+#include "render/svgface.h"
+
+#include "face/fapu.h"
+#include "render/curves.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QPainter>
+#include <QSvgRenderer>
+#include <QXmlStreamReader>
+#include <QXmlStreamWriter>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+namespace toonface {
+
+namespace {
+
+using Points = std::array<QPointF, kPointCount>;
+
+// ---- compact SVG text ----
+
+// At most two decimals, no trailing zeros, no "-0".
+void appendNumber(QByteArray &out, double v)
+{
+    if (!std::isfinite(v))
+        v = 0;
+    v = std::clamp(v, -1e12, 1e12);
+    long long n = std::llround(v * 100.0);
+    if (n < 0) {
+        out += '-';
+        n = -n;
+    }
+    char buf[32];
+    int len = 0;
+    long long whole = n / 100;
+    do {
+        buf[len++] = char('0' + whole % 10);
+        whole /= 10;
+    } while (whole > 0);
+    while (len > 0)
+        out += buf[--len];
+    const int frac = int(n % 100);
+    if (frac != 0) {
+        out += '.';
+        out += char('0' + frac / 10);
+        if (frac % 10 != 0)
+            out += char('0' + frac % 10);
+    }
+}
+
+QByteArray number(double v)
+{
+    QByteArray s;
+    appendNumber(s, v);
+    return s;
+}
+
+void appendPoint(QByteArray &out, QPointF p)
+{
+    appendNumber(out, p.x());
+    out += ',';
+    appendNumber(out, p.y());
+}
+
+// An SVG path "d" built from absolute commands.
+class PathData
+{
+public:
+    PathData &moveTo(QPointF p) { return command('M', p); }
+    PathData &lineTo(QPointF p) { return command('L', p); }
+    PathData &cubic(const CubicBezier &b)
+    {
+        m_d += 'C';
+        appendPoint(m_d, b.q1);
+        m_d += ' ';
+        appendPoint(m_d, b.q2);
+        m_d += ' ';
+        appendPoint(m_d, b.q3);
+        return *this;
+    }
+    PathData &cubics(const QVector<CubicBezier> &chain)
+    {
+        for (const CubicBezier &b : chain)
+            cubic(b);
+        return *this;
+    }
+    PathData &horizontalTo(double x)
+    {
+        m_d += 'H';
+        appendNumber(m_d, x);
+        return *this;
+    }
+    PathData &verticalTo(double y)
+    {
+        m_d += 'V';
+        appendNumber(m_d, y);
+        return *this;
+    }
+    PathData &close()
+    {
+        m_d += 'Z';
+        return *this;
+    }
+    QByteArray data() const { return m_d; }
+
+private:
+    PathData &command(char c, QPointF p)
+    {
+        m_d += c;
+        appendPoint(m_d, p);
+        return *this;
+    }
+    QByteArray m_d;
+};
+
+QByteArray pointList(const QVector<QPointF> &points)
+{
+    QByteArray s;
+    s.reserve(points.size() * 12);
+    for (qsizetype i = 0; i < points.size(); ++i) {
+        if (i)
+            s += ' ';
+        appendPoint(s, points[i]);
+    }
+    return s;
+}
+
+// ---- geometry helpers ----
+
+double length(QPointF v)
+{
+    return std::hypot(v.x(), v.y());
+}
+
+QPointF unit(QPointF v)
+{
+    const double l = length(v);
+    return l > 1e-12 ? v / l : QPointF();
+}
+
+QPointF lerp(QPointF a, QPointF b, double t)
+{
+    return a + (b - a) * t;
+}
+
+QPointF perpendicular(QPointF v)
+{
+    return {-v.y(), v.x()};
+}
+
+CubicBezier reversed(const CubicBezier &b)
+{
+    return {b.q3, b.q2, b.q1, b.q0};
+}
+
+// The curve whose control points are (1 - t) a + t b: at every parameter, the point that far
+// from a's point toward b's.
+CubicBezier blend(const CubicBezier &a, const CubicBezier &b, double t)
+{
+    return {lerp(a.q0, b.q0, t), lerp(a.q1, b.q1, t), lerp(a.q2, b.q2, t), lerp(a.q3, b.q3, t)};
+}
+
+// Exact bounding box of a cubic Bezier: its end points and the extrema where a coordinate's
+// derivative vanishes.
+QRectF bezierBounds(const CubicBezier &b)
+{
+    double minX = std::min(b.q0.x(), b.q3.x()), maxX = std::max(b.q0.x(), b.q3.x());
+    double minY = std::min(b.q0.y(), b.q3.y()), maxY = std::max(b.q0.y(), b.q3.y());
+    auto extrema = [&](double p0, double p1, double p2, double p3, bool isX) {
+        // d/dt of the cubic = 3[(a t^2 + b t + c)] with:
+        const double a = -p0 + 3 * p1 - 3 * p2 + p3;
+        const double bb = 2 * (p0 - 2 * p1 + p2);
+        const double c = p1 - p0;
+        double roots[2];
+        int count = 0;
+        if (std::abs(a) < 1e-12) {
+            if (std::abs(bb) > 1e-12)
+                roots[count++] = -c / bb;
+        } else {
+            const double disc = bb * bb - 4 * a * c;
+            if (disc >= 0) {
+                const double s = std::sqrt(disc);
+                roots[count++] = (-bb + s) / (2 * a);
+                roots[count++] = (-bb - s) / (2 * a);
+            }
+        }
+        for (int i = 0; i < count; ++i) {
+            const double t = roots[i];
+            if (t > 0 && t < 1) {
+                const QPointF p = b.at(t);
+                if (isX) {
+                    minX = std::min(minX, p.x());
+                    maxX = std::max(maxX, p.x());
+                } else {
+                    minY = std::min(minY, p.y());
+                    maxY = std::max(maxY, p.y());
+                }
+            }
+        }
+    };
+    extrema(b.q0.x(), b.q1.x(), b.q2.x(), b.q3.x(), true);
+    extrema(b.q0.y(), b.q1.y(), b.q2.y(), b.q3.y(), false);
+    return QRectF(QPointF(minX, minY), QPointF(maxX, maxY));
+}
+
+// ---- parts ----
+
+enum Paint { FillAndStroke, FillOnly, StrokeOnly };
+
+// A part while it is being built; parts() and svg() both read these.
+struct Part
+{
+    const char *id;
+    bool dynamic;
+    const char *element;
+    std::vector<std::pair<const char *, QByteArray>> geometry; // in attribute order
+    const char *styleKey;
+    Paint paint = FillAndStroke;
+    const char *clipPath = nullptr;
+};
+
+// The proportions of the drawing, in ES0 (eye distance) units unless said otherwise.
+constexpr double kEyeballRadius = 0.105;
+constexpr double kCuteEyeballScale = 1.45;
+constexpr double kPupilRadius = 0.45; // of the eyeball radius
+constexpr double kHighlightRadius = 0.24; // of the eyeball radius
+constexpr double kCuteChinRaise = 0.22; // of JawH
+constexpr double kCuteEyeScale = 1.3;
+constexpr double kCheekRadius = 0.12;
+constexpr double kCuteNoseScale = 0.6;
+constexpr double kJawOverlap = 3.0; // thesis pixels (ES0/100) the jaw reaches up behind the face
+constexpr double kThickBrow = 0.085;
+constexpr double kLowerLipSpread = 1.5; // method B: the lower lip rounder than thirds
+constexpr double kTeethHeight = 0.07;
+constexpr double kTongueHeight = 0.06;
+constexpr double kHairInset = 0.15; // how far the hair's hidden closing runs inside the face
+
+struct Pt
+{
+    const Points &p;
+    QPointF operator()(const char *id) const { return p[pt::idx(id)]; }
+};
+
+// Everything about a face that does not depend on the pose.
+struct SvgFaceGeometry
+{
+    Points neutral; // the neutral points with the style's rules applied
+    std::array<QPointF, kPointCount> ruleOffset {}; // what the style's rules add to every pose
+    double unit = 1; // ES0 / 100: the thesis' pixel at its photo scale
+    double es0 = 100;
+    QPointF centre; // head rotation centre
+    QPointF jawStartTangent; // the face contour's direction at 2.14 and 2.13, shared by face and jaw
+    QPointF jawEndTangent;
+    double eyeballRadius = 10;
+    std::vector<Part> staticParts; // everything of the static layer but the eyebrows
+    QMap<QString, ComponentStyle> components;
+};
+
+// ---- the style's rules (cute) ----
+
+// What the cute rules add to the points, from the neutral face: the same in every pose.
+std::array<QPointF, kPointCount> styleRuleOffsets(const FaceModel &face, const Style &style)
+{
+    std::array<QPointF, kPointCount> off {};
+    if (!style.cute)
+        return off;
+    const Pt P {face.points()};
+    const Fapu f = face.fapu();
+    // A shorter, rounder jaw: the chin comes up, and the lower jaw points move onto the quarter
+    // ellipses from the jaw sides (2.14, 2.13) to the raised chin.
+    const QPointF chin = P("2.1") + QPointF(0, -kCuteChinRaise * f.jawH);
+    off[pt::idx("2.1")] = chin - P("2.1");
+    const double c = std::cos(std::numbers::pi / 4);
+    for (const auto &[lower, side] : {std::pair {"2.12", "2.14"}, std::pair {"2.11", "2.13"}}) {
+        const QPointF s = P(side);
+        const QPointF centre(chin.x(), s.y());
+        const QPointF onEllipse = centre + QPointF((s.x() - chin.x()) * c, (chin.y() - s.y()) * c);
+        off[pt::idx(lower)] = onEllipse - P(lower);
+    }
+    // A smaller nose, shrunk about its tip.
+    const QPointF tip = P("9.15");
+    for (const char *id : {"9.6", "9.7", "9.14", "9.13", "9.2", "9.1", "9.4", "9.5"})
+        off[pt::idx(id)] = (P(id) - tip) * (kCuteNoseScale - 1.0);
+    return off;
+}
+
+// Applies the style's rules to neutral or posed points: the offsets, then larger eyes, scaled
+// about the middle of their corners (which never move, so blinks still close on the corner line).
+void applyStyleRules(Points &p, const SvgFaceGeometry &g, const Style &style)
+{
+    for (int i = 0; i < kPointCount; ++i)
+        p[i] += g.ruleOffset[i];
+    if (!style.cute)
+        return;
+    for (const auto &ids :
+        {std::array {"3.12", "3.8", "3.2", "3.4", "3.6"}, std::array {"3.11", "3.7", "3.1", "3.3", "3.5"}}) {
+        const QPointF mid = (p[pt::idx(ids[0])] + p[pt::idx(ids[1])]) / 2.0;
+        for (const char *id : ids)
+            p[pt::idx(id)] = mid + (p[pt::idx(id)] - mid) * kCuteEyeScale;
+    }
+}
+
+// ---- static parts ----
+
+Part makeHair(const Pt &P, const SvgFaceGeometry &g, int depth)
+{
+    QVector<QPointF> outline;
+    outline.reserve(19);
+    for (int i = 0; i < 19; ++i)
+        outline.append(P.p[pt::idx("h.1") + i]);
+    // Closed behind the face: from h.19 back to h.1 along the inside of the face contour. The
+    // whole outline is cut, so the hair's lower ends round off too.
+    for (const char *id : {"5.1", "11.3", "11.1", "11.2", "5.2"})
+        outline.append(lerp(P(id), g.centre, kHairInset));
+    const QVector<QPointF> shape = cornerCutPolyline(outline, depth, true);
+    return {"hair", false, "polygon", {{"points", pointList(shape)}}, "hair"};
+}
+
+void makeEar(const Pt &P, const SvgFaceGeometry &g, bool left, std::vector<Part> *out)
+{
+    const QPointF top = P(left ? "10.2" : "10.1");
+    const QPointF outer = P(left ? "10.4" : "10.3");
+    const QPointF lobe = P(left ? "10.6" : "10.5");
+    const QPointF junction = P(left ? "10.10" : "10.9");
+    // The rim: from the top, round over to the outermost point, then down through the lobe's
+    // bottom (the middle of the lower rim) and back to the cheek, where it disappears behind
+    // the face.
+    const QPointF earCentre = (top + outer + lobe + junction) / 4.0;
+    QPointF bulge = perpendicular(outer - top) * 0.3;
+    if (QPointF::dotProduct(bulge, (top + outer) / 2.0 - earCentre) < 0)
+        bulge = -bulge;
+    const QVector<CubicBezier> rim = fitBezierChain({top, outer, junction}, {(top + outer) / 2.0 + bulge, lobe});
+    const QPointF inward = unit(junction - rim.last().q2);
+    // Open path: both ends continue a little into the face along the rim's own direction, so
+    // the fill closes out of sight behind the face and the stroke ends there too.
+    const double reach = 0.08 * g.es0;
+    PathData d;
+    d.moveTo(top - unit(rim.first().q1 - top) * reach).lineTo(top).cubics(rim).lineTo(junction + inward * reach);
+    out->push_back({left ? "ear-left" : "ear-right", false, "path", {{"d", d.data()}}, "ears"});
+
+    // The inner fold: a "(" inside the rim.
+    const QPointF chordMid = (top + junction) / 2.0;
+    const QPointF outward = outer - chordMid;
+    const QPointF a = lerp(top, junction, 0.22) + outward * 0.3;
+    const QPointF b = lerp(top, junction, 0.68) + outward * 0.22;
+    const CubicBezier fold = fitBezierThrough(a, (a + b) / 2.0 + outward * 0.3, b);
+    PathData f;
+    f.moveTo(a).cubic(fold);
+    out->push_back({left ? "ear-left-inner" : "ear-right-inner", false, "path", {{"d", f.data()}}, "ears", StrokeOnly});
+}
+
+Part makeFace(const Pt &P, const SvgFaceGeometry &g)
+{
+    // Open path: the fill closes it with the straight line 2.13 -> 2.14 (where the jaw takes
+    // over), the stroke does not.
+    const QVector<CubicBezier> chain = fitBezierChain({P("2.14"), P("11.2"), P("11.3"), P("2.13")},
+        {P("5.2"), P("11.1"), P("5.1")}, {-g.jawStartTangent, -g.jawEndTangent});
+    PathData d;
+    d.moveTo(P("2.14")).cubics(chain);
+    return {"face", false, "path", {{"d", d.data()}}, "face"};
+}
+
+void makeNose(const Pt &P, NoseVariant variant, double es0, std::vector<Part> *out)
+{
+    const QPointF tip = P("9.15");
+    const QPointF wl = P("9.2"), wr = P("9.1"), nl = P("9.4"), nr = P("9.5");
+    if (variant == NoseVariant::Tip) {
+        // Only the bottom between the nostrils, through the tip: a button nose.
+        PathData d;
+        d.moveTo(nl).cubic(fitBezierThrough(nl, tip + QPointF(0, 0.01 * es0), nr, 1.4));
+        out->push_back({"nose-tip", false, "path", {{"d", d.data()}}, "nose"});
+        return;
+    }
+    if (variant == NoseVariant::Full) {
+        // One side of the bridge, the image-left one, lit from the right: a soft line from the
+        // top of the nose region toward the wing.
+        const QPointF start = lerp(P("9.6"), P("9.14"), 0.7);
+        const QPointF end = lerp(P("9.14"), wl, 0.5);
+        const QPointF bow = (start + end) / 2.0 + (P("9.14") - (start + end) / 2.0) * 0.6;
+        PathData d;
+        d.moveTo(start).cubic(fitBezierThrough(start, bow, end));
+        out->push_back({"nose-bridge", false, "path", {{"d", d.data()}}, "nose"});
+    }
+    // The wings "(" and ")" bulge out above the nostrils and join the bottom, which runs
+    // through the tip: one smooth line.
+    auto wing = [&](QPointF wingPoint, QPointF nostril, QPointF top) {
+        const QPointF start = lerp(wingPoint, top, 0.3);
+        QPointF outward = perpendicular(nostril - start) * 0.3;
+        if (QPointF::dotProduct(outward, wingPoint - tip) < 0)
+            outward = -outward;
+        return std::pair {start, (start + nostril) / 2.0 + outward};
+    };
+    const auto [startL, bulgeL] = wing(wl, nl, P("9.14"));
+    const auto [startR, bulgeR] = wing(wr, nr, P("9.13"));
+    PathData d;
+    d.moveTo(startL).cubics(fitBezierChain({startL, nl, nr, startR}, {bulgeL, tip, bulgeR}));
+    out->push_back({"nose-bottom", false, "path", {{"d", d.data()}}, "nose"});
+}
+
+// ---- eyebrows (static layer, but they move with emotions) ----
+
+void makeEyebrows(const Pt &P, const Style &style, double es0, std::vector<Part> *out)
+{
+    for (bool left : {true, false}) {
+        const char *id = left ? "eyebrow-left" : "eyebrow-right";
+        const QPointF outer = P(left ? "4.6" : "4.5");
+        const QPointF a = P(left ? "4.4a" : "4.3a");
+        const QPointF b = P(left ? "4.4" : "4.3");
+        const QPointF inner = P(left ? "4.2" : "4.1");
+        switch (style.eyebrows) {
+        case EyebrowVariant::Polyline: {
+            const QVector<QPointF> line = cornerCutPolyline({outer, a, b, inner}, style.cornerCutDepth, false);
+            out->push_back({id, false, "polyline", {{"points", pointList(line)}}, "eyebrows", StrokeOnly});
+            break;
+        }
+        case EyebrowVariant::Bezier: {
+            PathData d;
+            d.moveTo(outer).cubic(fitBezierThrough(outer, (a + b) / 2.0, inner));
+            out->push_back({id, false, "path", {{"d", d.data()}}, "eyebrows", StrokeOnly});
+            break;
+        }
+        case EyebrowVariant::Thick: {
+            // A filled brow, pointed at the outer end, full at the inner end.
+            QPointF up = unit(perpendicular(inner - outer));
+            if (up.y() > 0)
+                up = -up;
+            const QPointF mid = (a + b) / 2.0;
+            const double t = kThickBrow * es0;
+            const QPointF innerTop = inner + up * (0.45 * t);
+            const QPointF innerBottom = inner - up * (0.45 * t);
+            PathData d;
+            d.moveTo(outer)
+                .cubic(fitBezierThrough(outer, mid + up * (0.5 * t), innerTop))
+                .lineTo(innerBottom)
+                .cubic(fitBezierThrough(innerBottom, mid - up * (0.5 * t), outer))
+                .close();
+            out->push_back({id, false, "path", {{"d", d.data()}}, "eyebrows", FillOnly});
+            break;
+        }
+        }
+    }
+}
+
+// ---- dynamic parts ----
+
+Part makeJaw(const Pt &P, const SvgFaceGeometry &g)
+{
+    const QPointF left = P("2.14"), right = P("2.13");
+    const QVector<CubicBezier> chain
+        = fitBezierChain({left, P("2.1"), right}, {P("2.12"), P("2.11")}, {g.jawStartTangent, g.jawEndTangent});
+    // Starts and ends a little up the face's sides, along them, so the jaw's fill overlaps the
+    // face's and no seam shows; the stroke there lies on the face's own.
+    const double overlap = kJawOverlap * g.unit;
+    PathData d;
+    d.moveTo(left - g.jawStartTangent * overlap).lineTo(left).cubics(chain).lineTo(right + g.jawEndTangent * overlap);
+    return {"jaw", true, "path", {{"d", d.data()}}, "jaw"};
+}
+
+void makeMouth(const Pt &P, double es0, std::vector<Part> *out)
+{
+    const QPointF l = P("8.4"), r = P("8.3");
+    const CubicBezier innerTop = fitBezierThrough(l, P("2.2"), r);
+    const CubicBezier innerBottom = fitBezierThrough(r, P("2.3"), l, kLowerLipSpread);
+    PathData inner;
+    inner.moveTo(l).cubic(innerTop).cubic(innerBottom).close();
+    out->push_back({"mouth-inner", true, "path", {{"d", inner.data()}}, "mouth-inner", FillOnly});
+
+    // Tongue and upper teeth: each between one lip's inner edge and a blend of both edges.
+    // Blending control points blends the curves point by point, so they always stay inside
+    // the open mouth (no clipping needed) and vanish when it closes.
+    const CubicBezier innerBottomForward = reversed(innerBottom);
+    const double opening = length(P("2.3") - P("2.2"));
+    auto share = [&](double size, double most) { return opening > 1e-9 ? std::min(most, size * es0 / opening) : 0.0; };
+    const CubicBezier tongueTop = blend(innerBottomForward, innerTop, share(kTongueHeight, 0.45));
+    PathData tongue;
+    tongue.moveTo(l).cubic(innerBottomForward).cubic(reversed(tongueTop)).close();
+    out->push_back({"mouth-tongue", true, "path", {{"d", tongue.data()}}, "tongue", FillOnly});
+    const CubicBezier teethEdge = blend(innerTop, innerBottomForward, share(kTeethHeight, 0.4));
+    PathData teeth;
+    teeth.moveTo(l).cubic(innerTop).cubic(reversed(teethEdge)).close();
+    out->push_back({"mouth-teeth", true, "path", {{"d", teeth.data()}}, "teeth", FillOnly});
+
+    PathData upper;
+    upper.moveTo(l)
+        .cubic(fitBezierThrough(l, P("8.9"), P("8.1")))
+        .cubic(fitBezierThrough(P("8.1"), P("8.10"), r))
+        .cubic(reversed(innerTop))
+        .close();
+    out->push_back({"mouth-upper-lip", true, "path", {{"d", upper.data()}}, "lips"});
+
+    PathData lower;
+    lower.moveTo(l).cubic(reversed(innerBottom)).cubic(fitBezierThrough(r, P("8.2"), l, kLowerLipSpread)).close();
+    out->push_back({"mouth-lower-lip", true, "path", {{"d", lower.data()}}, "lips"});
+}
+
+void makeEye(const Pt &P, const SvgFaceGeometry &g, bool left, std::vector<Part> *out)
+{
+    const QPointF a = P(left ? "3.12" : "3.11");
+    const QPointF upperLid = P(left ? "3.2" : "3.1");
+    const QPointF b = P(left ? "3.8" : "3.7");
+    const QPointF lowerLid = P(left ? "3.4" : "3.3");
+    const QPointF ball = P(left ? "3.6" : "3.5");
+    const CubicBezier upper = fitBezierThrough(a, upperLid, b);
+    const CubicBezier lower = fitBezierThrough(b, lowerLid, a);
+    PathData outline;
+    outline.moveTo(a).cubic(upper).cubic(lower).close();
+    const QByteArray eye = outline.data();
+    const char *clip = left ? "clip-eye-left" : "clip-eye-right";
+    const double r = g.eyeballRadius;
+
+    out->push_back({left ? "eye-left" : "eye-right", true, "path", {{"d", eye}}, "eyes", FillOnly});
+    auto circle = [&](const char *id, QPointF c, double radius, const char *key) {
+        out->push_back({id, true, "circle", {{"cx", number(c.x())}, {"cy", number(c.y())}, {"r", number(radius)}}, key,
+            FillAndStroke, clip});
+    };
+    circle(left ? "eyeball-left" : "eyeball-right", ball, r, "eyeballs");
+    circle(left ? "pupil-left" : "pupil-right", ball, r * kPupilRadius, "pupils");
+    circle(left ? "highlight-left" : "highlight-right", ball + QPointF(0.32 * r, -0.36 * r), r * kHighlightRadius,
+        "highlights");
+
+    // The eyeballs are clipped by the eye outline (clip-path). Renderers without clipping
+    // (QSvgRenderer before Qt 6.7) would show them outside the lids, so skin covers
+    // everything around the opening that the eyeball could reach: a box holding the eye and
+    // the eyeball, minus the eye outline (even-odd).
+    QRectF box = bezierBounds(upper).united(bezierBounds(lower));
+    box = box.united(QRectF(ball.x() - r, ball.y() - r, 2 * r, 2 * r));
+    box.adjust(-g.unit, -g.unit, g.unit, g.unit);
+    PathData cover;
+    cover.moveTo(box.topLeft()).horizontalTo(box.right()).verticalTo(box.bottom()).horizontalTo(box.left()).close();
+    QByteArray coverData = cover.data() + eye;
+    out->push_back({left ? "eye-left-cover" : "eye-right-cover", true, "path",
+        {{"d", coverData}, {"fill-rule", QByteArrayLiteral("evenodd")}}, "face", FillOnly});
+    out->push_back({left ? "eye-left-line" : "eye-right-line", true, "path", {{"d", eye}}, "eyes", StrokeOnly});
+}
+
+// ---- style attributes ----
+
+ComponentStyle componentStyle(const QMap<QString, ComponentStyle> &components, const char *key)
+{
+    static const QMap<QString, ComponentStyle> defaults = Style::preset(QStringLiteral("normal")).components;
+    const QString k = QLatin1StringView(key);
+    auto it = components.constFind(k);
+    if (it != components.constEnd())
+        return *it;
+    return defaults.value(k);
+}
+
+using Attributes = std::vector<std::pair<const char *, QByteArray>>;
+
+void addColour(Attributes &out, const char *attribute, const char *opacityAttribute, const QColor &c)
+{
+    if (!c.isValid()) {
+        out.emplace_back(attribute, QByteArrayLiteral("none"));
+        return;
+    }
+    out.emplace_back(attribute, c.name(QColor::HexRgb).toLatin1());
+    if (c.alpha() < 255)
+        out.emplace_back(opacityAttribute, number(c.alphaF()));
+}
+
+// The presentation attributes of a part: the same in every pose.
+Attributes paintAttributes(const ComponentStyle &s, Paint paint, double unit)
+{
+    Attributes out;
+    addColour(out, "fill", "fill-opacity", paint == StrokeOnly ? QColor() : s.fill);
+    const bool stroked = paint != FillOnly && s.stroke.isValid() && s.strokeWidth > 0;
+    addColour(out, "stroke", "stroke-opacity", stroked ? s.stroke : QColor());
+    if (stroked)
+        out.emplace_back("stroke-width", number(s.strokeWidth * unit));
+    return out;
+}
+
+QString latin1(const char *s)
+{
+    return QString::fromLatin1(s);
+}
+
+// Reads an SVG document and returns the children of its root element as a fragment in the
+// SVG namespace, for embedding in <g id="layer-N">.
+bool layerFragment(const QByteArray &content, QByteArray *fragment, QString *error)
+{
+    QXmlStreamReader reader(content);
+    QByteArray out;
+    QXmlStreamWriter writer(&out);
+    int depth = 0;
+    bool sawRoot = false;
+    while (!reader.atEnd()) {
+        const auto token = reader.readNext();
+        if (reader.hasError())
+            break;
+        if (token == QXmlStreamReader::StartElement) {
+            if (!sawRoot) {
+                sawRoot = true;
+                if (reader.name() != QLatin1StringView("svg")) {
+                    *error = QStringLiteral("the root element is <%1>, not <svg>").arg(reader.name());
+                    return false;
+                }
+                // Declared once on a wrapper so the copied elements need no prefixes.
+                writer.writeNamespace(QStringLiteral("http://www.w3.org/1999/xlink"), QStringLiteral("xlink"));
+                writer.writeDefaultNamespace(QStringLiteral("http://www.w3.org/2000/svg"));
+                writer.writeStartElement(QStringLiteral("http://www.w3.org/2000/svg"), QStringLiteral("g"));
+                continue;
+            }
+            ++depth;
+            writer.writeCurrentToken(reader);
+        } else if (token == QXmlStreamReader::EndElement) {
+            if (depth == 0)
+                continue; // the root's end
+            --depth;
+            writer.writeCurrentToken(reader);
+        } else if (sawRoot && depth > 0
+            && (token == QXmlStreamReader::Characters || token == QXmlStreamReader::EntityReference)) {
+            writer.writeCurrentToken(reader);
+        }
+    }
+    if (reader.hasError()) {
+        *error = QStringLiteral("line %1, column %2: %3")
+                     .arg(reader.lineNumber())
+                     .arg(reader.columnNumber())
+                     .arg(reader.errorString());
+        return false;
+    }
+    if (!sawRoot) {
+        *error = QStringLiteral("no root element");
+        return false;
+    }
+    writer.writeEndElement();
+    // Keep only the children: drop the wrapper's start and end tags.
+    const qsizetype open = out.indexOf('>');
+    const qsizetype close = out.lastIndexOf("</");
+    if (open < 0 || close < open) {
+        fragment->clear(); // an empty root: <g .../> with no children
+        return true;
+    }
+    *fragment = out.mid(open + 1, close - open - 1);
+    return true;
+}
+
+} // namespace
+
+SvgFace::SvgFace(const FaceModel &face, const Style &style)
+    : m_face(face)
+    , m_style(style)
+{ }
+
+namespace {
+
+SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
+{
+    SvgFaceGeometry g;
+    const Fapu f = face.fapu();
+    g.es0 = f.es0 > 0 && std::isfinite(f.es0) ? f.es0 : 100.0;
+    g.unit = g.es0 / 100.0;
+    g.components = style.components;
+    g.ruleOffset = styleRuleOffsets(face, style);
+    g.neutral = face.points();
+    applyStyleRules(g.neutral, g, style);
+    const Pt P {g.neutral};
+    g.centre = face.bounds(PointGroup::Contour).center();
+    // The contour's direction where face and jaw meet, from the whole neutral outline, so the
+    // static face and the moving jaw always join smoothly.
+    g.jawStartTangent = unit(P("2.12") - P("5.2"));
+    g.jawEndTangent = unit(P("5.1") - P("2.11"));
+    g.eyeballRadius = kEyeballRadius * g.es0 * (style.cute ? kCuteEyeballScale : 1.0);
+
+    auto visible = [&](const char *key) { return componentStyle(style.components, key).visible; };
+    if (visible("hair"))
+        g.staticParts.push_back(makeHair(P, g, style.cornerCutDepth));
+    if (visible("ears")) {
+        makeEar(P, g, true, &g.staticParts);
+        makeEar(P, g, false, &g.staticParts);
+    }
+    if (visible("face"))
+        g.staticParts.push_back(makeFace(P, g));
+    if (visible("cheeks")) {
+        // Blush on the cheeks, between the lower lid, the face side, the nose wing and the mouth.
+        const double r = kCheekRadius * g.es0;
+        for (bool left : {true, false}) {
+            const QPointF c = left ? (P("3.4") + P("5.2") + P("9.2") + P("8.4")) / 4.0
+                                   : (P("3.3") + P("5.1") + P("9.1") + P("8.3")) / 4.0;
+            g.staticParts.push_back({left ? "cheek-left" : "cheek-right", false, "circle",
+                {{"cx", number(c.x())}, {"cy", number(c.y())}, {"r", number(r)}}, "cheeks"});
+        }
+    }
+    if (visible("nose"))
+        makeNose(P, style.nose, g.es0, &g.staticParts);
+    return g;
+}
+
+std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, const Style &style, const Pose &pose)
+{
+    Points posed = posedPoints(face, pose);
+    applyStyleRules(posed, g, style);
+    const Pt P {posed};
+    std::vector<Part> parts = g.staticParts;
+    parts.reserve(parts.size() + 24);
+    if (componentStyle(style.components, "eyebrows").visible)
+        makeEyebrows(P, style, g.es0, &parts);
+    if (componentStyle(style.components, "jaw").visible)
+        parts.push_back(makeJaw(P, g));
+    makeMouth(P, g.es0, &parts);
+    makeEye(P, g, true, &parts);
+    makeEye(P, g, false, &parts);
+    std::erase_if(parts, [&](const Part &p) { return !componentStyle(style.components, p.styleKey).visible; });
+    return parts;
+}
+
+QByteArray headTransformText(const SvgFaceGeometry &g, const HeadPose &head)
+{
+    // translate(t) rotate(a, c) then scale about c; identity when neutral, always present.
+    QByteArray t = "translate(";
+    appendPoint(t, head.translation + g.centre);
+    t += ") rotate(";
+    appendNumber(t, head.rotationDeg);
+    t += ") scale(";
+    appendNumber(t, head.scale);
+    t += ") translate(";
+    appendPoint(t, -g.centre);
+    t += ')';
+    return t;
+}
+
+} // namespace
+
+bool SvgFace::addLayerFile(const QString &svgPath, QString *error)
+{
+    QFile file(svgPath);
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (error)
+            *error = QStringLiteral("cannot read layer file %1: %2").arg(svgPath, file.errorString());
+        return false;
+    }
+    QByteArray fragment;
+    QString why;
+    if (!layerFragment(file.readAll(), &fragment, &why)) {
+        if (error)
+            *error = QStringLiteral("layer file %1 is not a valid SVG file: %2").arg(svgPath, why);
+        return false;
+    }
+    m_layers.append(fragment);
+    return true;
+}
+
+void SvgFace::addLayer(const QByteArray &svgContent)
+{
+    QByteArray fragment;
+    QString why;
+    if (!layerFragment(svgContent, &fragment, &why))
+        fragment.clear(); // still numbered, so later layers keep their ids
+    m_layers.append(fragment);
+}
+
+QVector<FacePart> SvgFace::parts(const Pose &pose) const
+{
+    const SvgFaceGeometry g = buildGeometry(m_face, m_style);
+    const std::vector<Part> built = buildParts(g, m_face, m_style, pose);
+    QVector<FacePart> out;
+    out.reserve(qsizetype(built.size()));
+    for (const Part &p : built) {
+        FacePart f;
+        f.id = latin1(p.id);
+        f.layer = p.dynamic ? QStringLiteral("dynamic") : QStringLiteral("static");
+        f.element = latin1(p.element);
+        for (const auto &[name, value] : p.geometry)
+            f.geometry.insert(latin1(name), QString::fromLatin1(value));
+        f.styleKey = latin1(p.styleKey);
+        for (const auto &[name, value] : paintAttributes(componentStyle(g.components, p.styleKey), p.paint, g.unit))
+            f.paint.insert(latin1(name), QString::fromLatin1(value));
+        if (p.clipPath)
+            f.clipPath = latin1(p.clipPath);
+        out.append(f);
+    }
+    return out;
+}
+
+QString SvgFace::headTransform(const HeadPose &head) const
+{
+    return QString::fromLatin1(headTransformText(buildGeometry(m_face, m_style), head));
+}
+
+QByteArray SvgFace::svg(const Pose &pose) const
+{
+    const SvgFaceGeometry g = buildGeometry(m_face, m_style);
+    const std::vector<Part> parts = buildParts(g, m_face, m_style, pose);
+    // Without a photo (a face placed by hand), the frame holds the points with equal margins.
+    QSize size = m_face.imageSize();
+    if (!size.isValid() || size.isEmpty()) {
+        const QRectF b = m_face.bounds();
+        const double w = b.right() + std::max(0.0, b.left());
+        const double h = b.bottom() + std::max(0.0, b.top());
+        size = std::isfinite(w) && std::isfinite(h) && w >= 1 && h >= 1 && w < 1e5 && h < 1e5
+            ? QSize(int(std::ceil(w)), int(std::ceil(h)))
+            : QSize(512, 512);
+    }
+
+    QByteArray out;
+    out.reserve(12000);
+    out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+           "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" version=\"1.1\"";
+    out += " width=\"" + QByteArray::number(size.width()) + "\" height=\"" + QByteArray::number(size.height());
+    out += "\" viewBox=\"0 0 " + QByteArray::number(size.width()) + ' ' + QByteArray::number(size.height()) + "\">\n";
+
+    // Clip paths reuse the outline they clip by, so animating the outline animates the clip.
+    out += "<defs>";
+    for (const Part &p : parts) {
+        if (p.clipPath && std::strcmp(p.id, "eyeball-left") == 0)
+            out += QByteArray("<clipPath id=\"") + p.clipPath + "\"><use xlink:href=\"#eye-left\"/></clipPath>";
+        else if (p.clipPath && std::strcmp(p.id, "eyeball-right") == 0)
+            out += QByteArray("<clipPath id=\"") + p.clipPath + "\"><use xlink:href=\"#eye-right\"/></clipPath>";
+    }
+    out += "</defs>\n";
+
+    out += "<g id=\"head\" transform=\"" + headTransformText(g, pose.head)
+        + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+    for (bool dynamic : {false, true}) {
+        out += dynamic ? "<g id=\"dynamic-layer\">\n" : "<g id=\"static-layer\">\n";
+        for (const Part &p : parts) {
+            if (p.dynamic != dynamic)
+                continue;
+            out += '<';
+            out += p.element;
+            out += " id=\"";
+            out += p.id;
+            out += '"';
+            for (const auto &[name, value] : p.geometry) {
+                out += ' ';
+                out += name;
+                out += "=\"";
+                out += value;
+                out += '"';
+            }
+            if (p.clipPath) {
+                out += " clip-path=\"url(#";
+                out += p.clipPath;
+                out += ")\"";
+            }
+            for (const auto &[name, value] :
+                paintAttributes(componentStyle(g.components, p.styleKey), p.paint, g.unit)) {
+                out += ' ';
+                out += name;
+                out += "=\"";
+                out += value;
+                out += '"';
+            }
+            out += "/>\n";
+        }
+        out += "</g>\n";
+    }
+    out += "</g>\n";
+    for (qsizetype i = 0; i < m_layers.size(); ++i) {
+        out += "<g id=\"layer-" + QByteArray::number(i + 1) + "\">";
+        out += m_layers[i];
+        out += "</g>\n";
+    }
+    out += "</svg>\n";
+    return out;
+}
+
+QImage rasterizeSvg(const QByteArray &svg, QSize size, QColor background)
+{
+    if (size.isEmpty())
+        return {};
+    QSvgRenderer renderer(svg);
+    if (!renderer.isValid())
+        return {};
+    QSizeF source = renderer.viewBoxF().size();
+    if (source.isEmpty())
+        source = renderer.defaultSize();
+    if (source.isEmpty())
+        source = size;
+    const QSizeF fitted = source.scaled(QSizeF(size), Qt::KeepAspectRatio);
+    const QRectF target(
+        QPointF((size.width() - fitted.width()) / 2.0, (size.height() - fitted.height()) / 2.0), fitted);
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::transparent);
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.fillRect(target, background);
+    renderer.render(&painter, target);
+    painter.end();
+    return image;
+}
+
+} // namespace toonface

@@ -1,0 +1,155 @@
+#pragma once
+
+#include <QColor>
+#include <QImage>
+#include <QSize>
+#include <QString>
+#include <QVector>
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace toonface {
+
+enum class VideoFormat {
+    Mp4, // H.264 (libx264, yuv420p) + AAC, moov atom first (+faststart)
+    Gif, // animated GIF, one 255-colour palette for the whole file, looping
+    PngSequence, // a folder of frame_00001.png, frame_00002.png, ...
+};
+
+// .mp4 -> Mp4, .gif -> Gif (any case); a path ending in '/' or naming an existing folder ->
+// PngSequence; nullopt otherwise.
+std::optional<VideoFormat> videoFormatForPath(const QString &path);
+
+// The sound of a video: mono samples in memory, or a file that FFmpeg decodes (any format and
+// channel count it reads; channels are mixed down to mono). The sound starts `offset` seconds
+// into the video (a negative offset skips the sound's beginning).
+struct AudioSource
+{
+    QVector<float> samples; // in [-1, 1]
+    int sampleRate = 0;
+    QString path;
+    double offset = 0;
+
+    static AudioSource fromSamples(QVector<float> samples, int sampleRate, double offset = 0);
+    static AudioSource fromFile(const QString &path, double offset = 0);
+    bool isEmpty() const { return samples.isEmpty() && path.isEmpty(); }
+};
+
+struct VideoOptions
+{
+    // x264's constant rate factor (0 lossless .. 51; 18-23 look clean on flat cartoon colours)
+    // and speed preset.
+    int crf = 20;
+    QString preset = QStringLiteral("veryfast");
+    // Encoder threads; 0 lets the encoder use every core.
+    int threads = 0;
+    int audioBitRate = 96000;
+    // MP4 and GIF have no alpha: transparent pixels are composed over this colour. PNG frames
+    // keep their alpha.
+    QColor background = Qt::white;
+    // A GIF keeps every k-th frame, k the smallest integer with fps / k <= gifMaxFps (GIF
+    // delays are whole hundredths and browsers slow down delays under 0.02 s).
+    double gifMaxFps = 25;
+    // GIF: one palette serves the whole file, made from the first frame and these images.
+    // Give frames showing colours the first frame lacks (the mouth wide open, the eyes shut);
+    // colours seen nowhere map to the nearest palette entry.
+    QVector<QImage> paletteSamples;
+};
+
+// Writes frames given as QImages at a fixed rate, with optional sound, as an MP4, an animated
+// GIF or a PNG sequence.
+//
+// The output appears only on a successful finish(): MP4 and GIF are written to a hidden
+// temporary file next to the target and renamed over it at the end; PNG frames are written
+// one by one (each atomically) and removed again when the writer is cancelled. A writer that
+// is destroyed before finish() cancels.
+//
+// Encoding runs in the calling thread, inside addFrame() and finish(): run the export loop in
+// a worker thread (writeVideo() is that loop, with progress and cancellation). Not thread-safe:
+// use one writer from one thread at a time; separate writers are independent.
+class VideoWriter
+{
+public:
+    VideoWriter();
+    ~VideoWriter();
+    VideoWriter(const VideoWriter &) = delete;
+    VideoWriter &operator=(const VideoWriter &) = delete;
+
+    // Starts a video of frames of `size` at `fps` frames a second. MP4 needs an even size:
+    // an odd width or height is padded by one pixel (repeating the last column or row).
+    // The audio is encoded into MP4 only (GIF and PNG have no sound) and cut or padded with
+    // silence to the video's length (frames / fps). For a PNG sequence `path` is the folder,
+    // created when missing.
+    // On failure returns false and sets *error to "<path>: <problem>" (unwritable folder,
+    // unsupported size or rate, missing encoder, unreadable audio, ...).
+    bool open(const QString &path, VideoFormat format, QSize size, double fps, const AudioSource &audio, QString *error,
+        const VideoOptions &options = {});
+
+    // Encodes the next frame. requires: open; frame.size() == the size given to open().
+    bool addFrame(const QImage &frame, QString *error);
+
+    // Flushes the encoders, writes the file (or the last frame) and closes; fails (writing
+    // nothing) when no frame was added. A PNG sequence's
+    // folder ends up holding exactly this export's frame_NNNNN.png files: frames of the same
+    // pattern beyond this export's last (left by an earlier, longer export) are removed.
+    bool finish(QString *error);
+
+    // Discards everything written so far and closes; harmless when not open.
+    void cancel();
+
+    bool isOpen() const;
+    int framesAdded() const;
+    // The size of the encoded pictures: MP4 rounds each side up to even.
+    QSize encodedSize() const;
+    // Frames per second of the output (a GIF may drop frames, see VideoOptions::gifMaxFps).
+    double outputFps() const;
+
+private:
+    struct Private;
+    std::unique_ptr<Private> d;
+};
+
+// The whole export: renders frame i with renderFrame(i) for i in [0, frameCount), reports
+// progress(done, frameCount) after each frame, and stops when *cancel becomes true (the
+// output is then discarded and *error is "<path>: cancelled"). A plain function of its
+// arguments, to run with QtConcurrent::run or in a worker thread; progress is called in that
+// thread. `progress` and `cancel` may be null.
+bool writeVideo(const QString &path, VideoFormat format, QSize size, double fps, int frameCount,
+    const std::function<QImage(int)> &renderFrame, const AudioSource &audio, QString *error,
+    const VideoOptions &options = {}, const std::function<void(int, int)> &progress = {},
+    const std::atomic<bool> *cancel = nullptr);
+
+// What a media file holds, read back by decoding it with FFmpeg (or, for a folder, by counting
+// its frame_NNNNN.png files).
+struct MediaInfo
+{
+    QString container; // FFmpeg's demuxer name ("mov,mp4,m4a,3gp,3g2,mj2", "gif", ...) or "png sequence"
+    int frameCount = 0; // decoded video frames
+    double fps = 0; // the stream's average frame rate (0 when unknown)
+    int width = 0;
+    int height = 0;
+    double videoDurationS = 0; // from the first frame's start to the last frame's end
+    QString videoCodec; // "h264", "gif", "png"
+    QString pixelFormat; // "yuv420p", "pal8", ...
+    bool hasAudio = false;
+    double audioDurationS = 0; // decoded samples / sample rate
+    int audioSampleRate = 0;
+    int audioChannels = 0;
+    QString audioCodec; // "aac", ...
+};
+
+// On failure returns nullopt and sets *error to "<path>: <problem>".
+std::optional<MediaInfo> probeMedia(const QString &path, QString *error);
+
+// Frame `index` (0-based, in display order) of a video file as an RGB32 image; nullopt with
+// *error "<path>: <problem>" when the file cannot be decoded or has fewer frames.
+std::optional<QImage> readVideoFrame(const QString &path, int index, QString *error);
+
+// The sound of a file (audio, or a video's sound track) decoded, mixed down to mono and
+// resampled to `sampleRate`; nullopt with *error "<path>: <problem>" on failure.
+std::optional<QVector<float>> readAudio(const QString &path, int sampleRate, QString *error);
+
+} // namespace toonface

@@ -1,0 +1,449 @@
+#include "detect/detector.h"
+#include "detect/landmarkmap.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QPainter>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+using namespace toonface;
+
+namespace {
+
+const QString kGracePath = QStringLiteral("/usr/share/matplotlib/mpl-data/sample_data/grace_hopper.jpg");
+
+QImage grace()
+{
+    return QImage(kGracePath);
+}
+
+QString sharedFacesDir()
+{
+    const QString env = qEnvironmentVariable("TOONFACE_DATA_DIR");
+    return QDir(env.isEmpty() ? QStringLiteral(TOONFACE_SHARED_DATA) : env).filePath(QStringLiteral("faces"));
+}
+
+// Reads a 300-W .pts file (1-based pixel coordinates) into 0-based iBUG points.
+bool readPts(const QString &path, std::array<QPointF, kIbugPointCount> *pts)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
+        return false;
+    const QString text = QString::fromUtf8(file.readAll());
+    const int open = text.indexOf(QLatin1Char('{')), close = text.indexOf(QLatin1Char('}'));
+    if (open < 0 || close < open)
+        return false;
+    const QStringList nums
+        = text.mid(open + 1, close - open - 1).split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts);
+    if (nums.size() != 2 * kIbugPointCount)
+        return false;
+    for (int i = 0; i < kIbugPointCount; ++i)
+        (*pts)[i] = QPointF(nums[2 * i].toDouble() - 1, nums[2 * i + 1].toDouble() - 1);
+    return true;
+}
+
+// Restores an environment variable when the test ends, even when it fails.
+class EnvGuard
+{
+public:
+    explicit EnvGuard(const char *name)
+        : m_name(name)
+        , m_had(qEnvironmentVariableIsSet(name))
+        , m_old(qgetenv(name))
+    { }
+    ~EnvGuard()
+    {
+        if (m_had)
+            qputenv(m_name, m_old);
+        else
+            qunsetenv(m_name);
+    }
+
+private:
+    const char *m_name;
+    bool m_had;
+    QByteArray m_old;
+};
+
+} // namespace
+
+class TestDetector : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase();
+    void methodNames();
+    void classicIsUnsupported();
+    void nullImageIsBad();
+    void noFace_data();
+    void noFace();
+    void graceHopper();
+    void imageFormats_data();
+    void imageFormats();
+    void progressAndTimings();
+    void twoFacesLargerChosen_data();
+    void twoFacesLargerChosen();
+    void cancelBeforeStart();
+    void cancelDuringDetection();
+    void missingModel();
+    void debugImages();
+    void concurrentCalls();
+    void sharedDataNme_data();
+    void sharedDataNme();
+};
+
+void TestDetector::initTestCase()
+{
+    QString error;
+    double ms = -1;
+    if (!preloadLandmarkModel(&error, &ms))
+        QSKIP(qPrintable(QStringLiteral("landmark model unavailable: %1").arg(error)));
+    QVERIFY(ms >= 0);
+}
+
+void TestDetector::methodNames()
+{
+    for (DetectionMethod m : {DetectionMethod::Auto, DetectionMethod::Classic, DetectionMethod::Landmarks}) {
+        DetectionMethod back = DetectionMethod::Auto;
+        QVERIFY(detectionMethodFromName(detectionMethodName(m), &back));
+        QCOMPARE(back, m);
+    }
+    QCOMPARE(detectionMethodName(DetectionMethod::Landmarks), QStringLiteral("landmarks"));
+    DetectionMethod m = DetectionMethod::Landmarks;
+    QVERIFY(!detectionMethodFromName(QStringLiteral("neural"), &m));
+    QCOMPARE(m, DetectionMethod::Landmarks);
+}
+
+void TestDetector::classicIsUnsupported()
+{
+    DetectOptions options;
+    options.method = DetectionMethod::Classic;
+    const DetectionResult r = detectFace(QImage(64, 64, QImage::Format_RGB32), options);
+    QCOMPARE(r.status, DetectStatus::Unsupported);
+    QVERIFY(r.error.contains(QLatin1String("classic")));
+    QCOMPARE(r.method, QStringLiteral("classic"));
+}
+
+void TestDetector::nullImageIsBad()
+{
+    const DetectionResult r = detectFace(QImage());
+    QCOMPARE(r.status, DetectStatus::BadImage);
+    QVERIFY(!r.error.isEmpty());
+}
+
+void TestDetector::noFace_data()
+{
+    QTest::addColumn<QImage>("image");
+    QImage blank(640, 480, QImage::Format_RGB32);
+    blank.fill(QColor(128, 128, 128));
+    QTest::newRow("blank 640x480") << blank;
+    QImage one(1, 1, QImage::Format_RGB32);
+    one.fill(Qt::white);
+    QTest::newRow("1x1") << one;
+    QImage thin(2000, 3, QImage::Format_Grayscale8);
+    thin.fill(0);
+    QTest::newRow("2000x3") << thin;
+    QImage noise(320, 240, QImage::Format_Grayscale8);
+    for (int y = 0; y < noise.height(); ++y)
+        for (int x = 0; x < noise.width(); ++x)
+            noise.setPixel(x, y, uint((x * 7919 + y * 104729) % 251));
+    QTest::newRow("pattern 320x240") << noise;
+}
+
+void TestDetector::noFace()
+{
+    QFETCH(QImage, image);
+    const DetectionResult r = detectFace(image);
+    QCOMPARE(r.status, DetectStatus::NoFace);
+    QCOMPARE(r.faceCount, 0);
+    QVERIFY(r.error.contains(QStringLiteral("%1 x %2").arg(image.width()).arg(image.height())));
+}
+
+void TestDetector::graceHopper()
+{
+    const QImage image = grace();
+    if (image.isNull())
+        QSKIP("grace_hopper.jpg is not installed (package python-matplotlib-data)");
+    const DetectionResult r = detectFace(image);
+    QCOMPARE(r.status, DetectStatus::Ok);
+    QVERIFY(r.error.isEmpty());
+    QCOMPARE(r.method, QStringLiteral("landmarks"));
+    QCOMPARE(r.faceCount, 1);
+    const FaceModel &f = r.face;
+    QCOMPARE(f.imageSize(), image.size());
+    QVERIFY(f.isValid());
+    for (int i = 0; i < kPointCount; ++i) {
+        const QPointF p = f.point(i);
+        QVERIFY2(std::isfinite(p.x()) && std::isfinite(p.y()), qPrintable(pointId(i)));
+        QVERIFY2(p.x() >= 0 && p.y() >= 0 && p.x() < image.width() && p.y() < image.height(), qPrintable(pointId(i)));
+    }
+    QVERIFY(r.faceBox.contains(f.point("3.6").toPoint()) && r.faceBox.contains(f.point("3.5").toPoint()));
+
+    // Top to bottom: hair top, forehead, brows, eyes, nose tip, mouth, chin.
+    auto Y = [&](const char *id) { return f.point(id).y(); };
+    QVERIFY(Y("h.10") < Y("11.1"));
+    QVERIFY(Y("11.1") < std::min(Y("4.4"), Y("4.3")));
+    QVERIFY(std::max(Y("4.4"), Y("4.3")) < std::min(Y("3.2"), Y("3.1")));
+    QVERIFY(std::max(Y("3.4"), Y("3.3")) < Y("9.15"));
+    QVERIFY(Y("9.15") < Y("8.1"));
+    QVERIFY(Y("8.1") < Y("2.2") && Y("2.2") <= Y("2.3") && Y("2.3") < Y("8.2"));
+    QVERIFY(Y("8.2") < Y("2.1"));
+    // Left to right (the portrait is frontal and upright).
+    auto X = [&](const char *id) { return f.point(id).x(); };
+    QVERIFY(X("5.2") < X("3.12") && X("3.12") < X("3.6") && X("3.6") < X("3.8") && X("3.8") < X("3.11"));
+    QVERIFY(X("3.11") < X("3.5") && X("3.5") < X("3.7") && X("3.7") < X("5.1"));
+    QVERIFY(X("4.6") < X("4.4a") && X("4.4a") < X("4.4") && X("4.4") < X("4.2") && X("4.2") < X("4.1"));
+    QVERIFY(X("4.1") < X("4.3") && X("4.3") < X("4.3a") && X("4.3a") < X("4.5"));
+    QVERIFY(X("8.4") < X("8.9") && X("8.9") < X("8.1") && X("8.1") < X("8.10") && X("8.10") < X("8.3"));
+    QVERIFY(X("9.2") < X("9.15") && X("9.15") < X("9.1"));
+    QVERIFY(X("10.4") < X("5.2") && X("10.3") > X("5.1"));
+    QVERIFY(X("h.1") < X("h.10") && X("h.10") < X("h.19"));
+    // The FAPUs are those of a face of this size: ES0 is about a third of the face box.
+    const double es0 = QLineF(f.point("3.6"), f.point("3.5")).length();
+    QVERIFY(es0 > 0.25 * r.faceBox.width() && es0 < 0.6 * r.faceBox.width());
+
+    for (const QString &g : {QStringLiteral("hair"), QStringLiteral("contour"), QStringLiteral("ears"),
+             QStringLiteral("eyebrows"), QStringLiteral("eyes"), QStringLiteral("nose"), QStringLiteral("mouth")}) {
+        QVERIFY2(r.groupConfidence.contains(g), qPrintable(g));
+        QVERIFY(r.groupConfidence[g] > 0 && r.groupConfidence[g] <= 1);
+    }
+    QVERIFY(r.groupConfidence[QStringLiteral("hair")] < r.groupConfidence[QStringLiteral("eyes")]);
+    QVERIFY(r.groupConfidence[QStringLiteral("ears")] < r.groupConfidence[QStringLiteral("eyes")]);
+}
+
+void TestDetector::imageFormats_data()
+{
+    QTest::addColumn<int>("format");
+    QTest::newRow("RGB888") << int(QImage::Format_RGB888);
+    QTest::newRow("ARGB32") << int(QImage::Format_ARGB32);
+    QTest::newRow("RGBX8888") << int(QImage::Format_RGBX8888);
+    QTest::newRow("RGBA64") << int(QImage::Format_RGBA64);
+    QTest::newRow("Grayscale8") << int(QImage::Format_Grayscale8);
+}
+
+// The same pixels in any format give the same landmarks. The grey row holds the grey levels
+// the detector makes from colour, (R + G + B) / 3 as dlib does; only the measured points are
+// compared, the colour search for hair and ears seeing grey input differently by design.
+void TestDetector::imageFormats()
+{
+    QFETCH(int, format);
+    const QImage image = grace().convertToFormat(QImage::Format_RGB32);
+    if (image.isNull())
+        QSKIP("grace_hopper.jpg is not installed");
+    QImage input;
+    if (format == QImage::Format_Grayscale8) {
+        input = QImage(image.size(), QImage::Format_Grayscale8);
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QRgb c = image.pixel(x, y);
+                input.scanLine(y)[x] = uchar((qRed(c) + qGreen(c) + qBlue(c)) / 3);
+            }
+    } else {
+        input = image.convertToFormat(QImage::Format(format));
+    }
+    const DetectionResult ref = detectFace(image);
+    const DetectionResult r = detectFace(input);
+    QCOMPARE(r.status, DetectStatus::Ok);
+    for (const char *id : {"3.6", "3.5", "3.12", "3.7", "8.4", "8.3", "9.15", "2.1", "4.6", "4.5"})
+        QVERIFY2(r.face.point(id) == ref.face.point(id), id);
+}
+
+void TestDetector::progressAndTimings()
+{
+    const QImage image = grace();
+    if (image.isNull())
+        QSKIP("grace_hopper.jpg is not installed");
+    QList<double> fractions;
+    QStringList stages;
+    const DetectionResult r = detectFace(image, {}, [&](double f, const QString &stage) {
+        fractions << f;
+        stages << stage;
+    });
+    QCOMPARE(r.status, DetectStatus::Ok);
+    QVERIFY(fractions.size() >= 3);
+    for (int i = 1; i < fractions.size(); ++i)
+        QVERIFY(fractions[i] >= fractions[i - 1]);
+    QCOMPARE(fractions.front(), 0.0);
+    QCOMPARE(fractions.back(), 1.0);
+    double sum = 0;
+    for (const QString &stage :
+        {QStringLiteral("prepare"), QStringLiteral("faces"), QStringLiteral("landmarks"), QStringLiteral("hair")}) {
+        QVERIFY2(r.timingMs.contains(stage), qPrintable(stage));
+        QVERIFY(r.timingMs[stage] >= 0);
+        sum += r.timingMs[stage];
+    }
+    QVERIFY(r.timingMs.contains(QStringLiteral("total")));
+    QVERIFY(r.timingMs[QStringLiteral("total")] >= 0.99 * sum);
+}
+
+void TestDetector::twoFacesLargerChosen_data()
+{
+    QTest::addColumn<bool>("largeOnLeft");
+    QTest::newRow("large left") << true;
+    QTest::newRow("large right") << false;
+}
+
+void TestDetector::twoFacesLargerChosen()
+{
+    QFETCH(bool, largeOnLeft);
+    const QImage big = grace().convertToFormat(QImage::Format_RGB32);
+    if (big.isNull())
+        QSKIP("grace_hopper.jpg is not installed");
+    const QImage small = big.scaled(big.size() * 0.8, Qt::KeepAspectRatio, Qt::SmoothTransformation);
+    QImage canvas(big.width() + small.width(), big.height(), QImage::Format_RGB32);
+    canvas.fill(QColor(90, 120, 160));
+    QPainter p(&canvas);
+    const QRect bigRect(QPoint(largeOnLeft ? 0 : small.width(), 0), big.size());
+    const QRect smallRect(QPoint(largeOnLeft ? big.width() : 0, (big.height() - small.height()) / 2), small.size());
+    p.drawImage(bigRect, big);
+    p.drawImage(smallRect, small);
+    p.end();
+
+    const DetectionResult r = detectFace(canvas);
+    QCOMPARE(r.status, DetectStatus::Ok);
+    QCOMPARE(r.faceCount, 2);
+    QVERIFY(bigRect.contains(r.faceBox.center()));
+    QVERIFY(bigRect.contains(r.face.point("3.6").toPoint()));
+}
+
+void TestDetector::cancelBeforeStart()
+{
+    const QImage image = grace();
+    if (image.isNull())
+        QSKIP("grace_hopper.jpg is not installed");
+    std::atomic_bool cancel {true};
+    const DetectionResult r = detectFace(image, {}, {}, &cancel);
+    QCOMPARE(r.status, DetectStatus::Cancelled);
+    QVERIFY(!r.error.isEmpty());
+}
+
+void TestDetector::cancelDuringDetection()
+{
+    const QImage image = grace();
+    if (image.isNull())
+        QSKIP("grace_hopper.jpg is not installed");
+    for (const QString &at : {QStringLiteral("faces"), QStringLiteral("landmarks"), QStringLiteral("hair")}) {
+        std::atomic_bool cancel {false};
+        QStringList seen;
+        const DetectionResult r = detectFace(
+            image, {},
+            [&](double, const QString &stage) {
+                seen << stage;
+                if (stage == at)
+                    cancel = true;
+            },
+            &cancel);
+        QCOMPARE(r.status, DetectStatus::Cancelled);
+        QCOMPARE(seen.last(), at); // no stage after the cancelled one was started
+    }
+}
+
+void TestDetector::missingModel()
+{
+    EnvGuard guard("TOONFACE_LANDMARK_MODEL");
+    const QString missing = QStringLiteral("/nonexistent/toonface-test/landmarks.dat");
+    qputenv("TOONFACE_LANDMARK_MODEL", QFile::encodeName(missing));
+    QCOMPARE(landmarkModelPath(), missing);
+    QString error;
+    QVERIFY(!preloadLandmarkModel(&error));
+    QVERIFY(error.contains(missing));
+    QImage image(320, 240, QImage::Format_RGB32);
+    image.fill(Qt::gray);
+    const DetectionResult r = detectFace(image);
+    QCOMPARE(r.status, DetectStatus::ModelMissing);
+    QVERIFY(r.error.contains(missing));
+
+    // A file that is not a model is reported as unreadable, naming it.
+    QTemporaryDir dir;
+    const QString junk = dir.filePath(QStringLiteral("junk.dat"));
+    QFile f(junk);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("not a shape predictor");
+    f.close();
+    qputenv("TOONFACE_LANDMARK_MODEL", QFile::encodeName(junk));
+    const DetectionResult r2 = detectFace(image);
+    QCOMPARE(r2.status, DetectStatus::ModelMissing);
+    QVERIFY(r2.error.contains(junk));
+}
+
+void TestDetector::debugImages()
+{
+    const QImage image = grace();
+    if (image.isNull())
+        QSKIP("grace_hopper.jpg is not installed");
+    QTemporaryDir dir;
+    DetectOptions options;
+    options.debugDir = dir.filePath(QStringLiteral("debug"));
+    const DetectionResult r = detectFace(image, options);
+    QCOMPARE(r.status, DetectStatus::Ok);
+    for (const char *name : {"detect-landmarks.png", "detect-points.png", "detect-hair-region.png"}) {
+        const QImage png(QDir(options.debugDir).filePath(QLatin1String(name)));
+        QVERIFY2(!png.isNull(), name);
+    }
+}
+
+void TestDetector::concurrentCalls()
+{
+    const QImage image = grace();
+    if (image.isNull())
+        QSKIP("grace_hopper.jpg is not installed");
+    const DetectionResult ref = detectFace(image);
+    DetectionResult results[3];
+    std::thread threads[3];
+    for (int i = 0; i < 3; ++i)
+        threads[i] = std::thread([&, i] { results[i] = detectFace(image); });
+    for (auto &t : threads)
+        t.join();
+    for (const auto &r : results) {
+        QCOMPARE(r.status, DetectStatus::Ok);
+        QCOMPARE(r.face, ref.face);
+    }
+}
+
+void TestDetector::sharedDataNme_data()
+{
+    QTest::addColumn<QString>("image");
+    QTest::addColumn<QString>("pts");
+    const QDir dir(sharedFacesDir());
+    int rows = 0;
+    for (const QFileInfo &pts : dir.entryInfoList({QStringLiteral("*.pts")}, QDir::Files, QDir::Name)) {
+        for (const char *ext : {".png", ".jpg"}) {
+            const QString image = dir.filePath(pts.completeBaseName() + QLatin1String(ext));
+            if (QFileInfo::exists(image)) {
+                QTest::newRow(qPrintable(pts.completeBaseName())) << image << pts.filePath();
+                ++rows;
+                break;
+            }
+        }
+    }
+    if (rows == 0)
+        QTest::newRow("no data") << QString() << QString();
+}
+
+void TestDetector::sharedDataNme()
+{
+    QFETCH(QString, image);
+    QFETCH(QString, pts);
+    if (image.isEmpty())
+        QSKIP("no research photos (set TOONFACE_DATA_DIR to the shared data folder)");
+    std::array<QPointF, kIbugPointCount> truth {};
+    QVERIFY2(readPts(pts, &truth), qPrintable(pts));
+    const QImage photo(image);
+    QVERIFY2(!photo.isNull(), qPrintable(image));
+    const DetectionResult r = detectFace(photo);
+    QCOMPARE(r.status, DetectStatus::Ok);
+    const double nme = normalizedMeanError(r.face, truth);
+    qInfo("%s: NME %.4f (%d faces)", qPrintable(QFileInfo(image).fileName()), nme, r.faceCount);
+    QVERIFY2(nme <= 0.08, qPrintable(QStringLiteral("NME %1").arg(nme)));
+}
+
+QTEST_GUILESS_MAIN(TestDetector)
+#include "tst_detector.moc"

@@ -1,0 +1,150 @@
+#include "uifixture.h"
+
+#include "document/autosaver.h"
+#include "document/loadedfile.h"
+#include "io/project.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+using namespace toonface;
+
+class TestAutosave : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_photoDir;
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        fixture::isolateSettings();
+        QVERIFY(m_photoDir.isValid());
+    }
+
+    void writesOnlyAModifiedDocument()
+    {
+        QTemporaryDir dir;
+        Document doc;
+        fixture::fill(doc);
+        Autosaver saver(&doc, dir.path());
+        QVERIFY(saver.autosave());
+        QVERIFY(!QFile::exists(saver.recoveryPath())); // nothing to save
+
+        doc.movePoint(pt::idx("8.9"), QPointF(190, 320), true);
+        QString error;
+        QVERIFY2(saver.autosave(&error), qPrintable(error));
+        QVERIFY(QFile::exists(saver.recoveryPath()));
+        QVERIFY(saver.recoveryPath().startsWith(dir.path()));
+
+        const std::optional<Project> written = loadProject(saver.recoveryPath(), &error);
+        QVERIFY2(written, qPrintable(error));
+        QCOMPARE(written->face, doc.face());
+        // The document itself is still modified: autosave is not a save.
+        QVERIFY(doc.isModified());
+    }
+
+    void leftoverOnlyOnceTheEditorIsGone()
+    {
+        QTemporaryDir dir;
+        const QString photoPath = m_photoDir.filePath(QStringLiteral("a.png"));
+        QVERIFY(fixture::photo().save(photoPath));
+        const QString original = m_photoDir.filePath(QStringLiteral("original.toonface"));
+
+        Document doc;
+        fixture::fill(doc, photoPath);
+        QString error;
+        QVERIFY2(doc.save(original, &error), qPrintable(error));
+        doc.movePoint(pt::idx("2.1"), QPointF(200, 420), true);
+
+        auto saver = std::make_unique<Autosaver>(&doc, dir.path());
+        QVERIFY2(saver->autosave(&error), qPrintable(error));
+        QVERIFY(Autosaver::leftovers(dir.path()).isEmpty()); // its editor still runs
+
+        saver.reset(); // as if the editor had crashed: the file stays, the lock goes
+        const QList<RecoveryFile> leftovers = Autosaver::leftovers(dir.path());
+        QCOMPARE(leftovers.size(), 1);
+        QCOMPARE(leftovers.first().originalPath, original);
+
+        const LoadedFile loaded = Autosaver::load(leftovers.first());
+        QVERIFY2(loaded.ok(), qPrintable(loaded.error));
+        Document restored;
+        Autosaver::restoreInto(&restored, loaded);
+        QCOMPARE(restored.face(), doc.face());
+        QCOMPARE(restored.project().photoPath, photoPath);
+        QCOMPARE(restored.photo().size(), fixture::kPhotoSize);
+        QCOMPARE(restored.filePath(), original);
+        QVERIFY(restored.isModified());
+
+        Autosaver::remove(leftovers.first());
+        QVERIFY(Autosaver::leftovers(dir.path()).isEmpty());
+        QVERIFY(QDir(dir.path())
+                    .entryList({QStringLiteral("*.toonface"), QStringLiteral("*.json")}, QDir::Files)
+                    .isEmpty());
+    }
+
+    void savingRemovesTheRecoveryFile()
+    {
+        QTemporaryDir dir;
+        QTemporaryDir projectDir;
+        Document doc;
+        fixture::fill(doc);
+        Autosaver saver(&doc, dir.path());
+        doc.movePoint(0, QPointF(50, 60), true);
+        QVERIFY(saver.autosave());
+        QVERIFY(QFile::exists(saver.recoveryPath()));
+        QString error;
+        QVERIFY2(doc.save(projectDir.filePath(QStringLiteral("p.toonface")), &error), qPrintable(error));
+        QVERIFY(!QFile::exists(saver.recoveryPath()));
+    }
+
+    void undoingToCleanRemovesTheRecoveryFile()
+    {
+        QTemporaryDir dir;
+        Document doc;
+        fixture::fill(doc);
+        Autosaver saver(&doc, dir.path());
+        doc.movePoint(0, QPointF(50, 60), true);
+        QVERIFY(saver.autosave());
+        QVERIFY(QFile::exists(saver.recoveryPath()));
+        doc.undoStack()->undo();
+        QVERIFY(!QFile::exists(saver.recoveryPath()));
+    }
+
+    void timerWritesOnItsOwn()
+    {
+        QTemporaryDir dir;
+        Document doc;
+        fixture::fill(doc);
+        Autosaver saver(&doc, dir.path());
+        saver.setInterval(1);
+        QCOMPARE(saver.interval(), 1);
+        doc.movePoint(0, QPointF(50, 60), true);
+        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(saver.recoveryPath()), 10000);
+        saver.setInterval(0);
+        QCOMPARE(saver.interval(), 0);
+    }
+
+    void unwritableDirectoryReportsTheFile()
+    {
+        QTemporaryDir dir;
+        const QString blocked = dir.filePath(QStringLiteral("blocked"));
+        {
+            QFile f(blocked); // a file where the directory should be
+            QVERIFY(f.open(QIODevice::WriteOnly));
+        }
+        Document doc;
+        fixture::fill(doc);
+        Autosaver saver(&doc, blocked);
+        doc.movePoint(0, QPointF(50, 60), true);
+        QString error;
+        QVERIFY(!saver.autosave(&error));
+        QVERIFY2(error.contains(QStringLiteral("blocked")), qPrintable(error));
+    }
+};
+
+QTEST_MAIN(TestAutosave)
+#include "tst_autosave.moc"

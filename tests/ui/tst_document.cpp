@@ -1,0 +1,336 @@
+#include "uifixture.h"
+
+#include "document/changestylecommand.h"
+#include "document/document.h"
+#include "document/loadedfile.h"
+#include "document/movepointcommand.h"
+#include "io/project.h"
+
+#include <QFile>
+#include <QLineF>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+using namespace toonface;
+
+Q_DECLARE_METATYPE(toonface::ChangeFlags)
+
+namespace {
+
+bool near(QPointF a, QPointF b, double tol = 1e-9)
+{
+    return QLineF(a, b).length() <= tol;
+}
+
+ChangeFlags allChanges(const QSignalSpy &spy)
+{
+    ChangeFlags all;
+    for (const QList<QVariant> &args : spy)
+        all |= args.first().value<ChangeFlags>();
+    return all;
+}
+
+ChangeFlags lastChange(const QSignalSpy &spy)
+{
+    return spy.isEmpty() ? ChangeFlags() : spy.last().first().value<ChangeFlags>();
+}
+
+} // namespace
+
+class TestDocument : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        qRegisterMetaType<ChangeFlags>();
+        QVERIFY(m_dir.isValid());
+    }
+
+    void newDocumentIsEmptyAndUnmodified()
+    {
+        Document doc;
+        QVERIFY(!doc.hasFace());
+        QVERIFY(doc.photo().isNull());
+        QVERIFY(!doc.isModified());
+        QVERIFY(doc.filePath().isEmpty());
+        QCOMPARE(doc.displayName(), QStringLiteral("Untitled"));
+    }
+
+    void movePointMarksHandPlacedAndUndoes()
+    {
+        Document doc;
+        fixture::fill(doc);
+        const int i = pt::idx("8.9");
+        const QPointF before = doc.face().point(i);
+        QSignalSpy spy(&doc, &Document::changed);
+
+        doc.movePoint(i, before + QPointF(5, -3), true);
+        QVERIFY(near(doc.face().point(i), before + QPointF(5, -3)));
+        QVERIFY(doc.face().isHandPlaced(i));
+        QVERIFY(doc.isModified());
+        QVERIFY(allChanges(spy).testFlag(Change::Points));
+        QCOMPARE(doc.undoStack()->undoText(), QStringLiteral("Move point 8.9"));
+
+        spy.clear();
+        doc.undoStack()->undo();
+        QVERIFY(near(doc.face().point(i), before));
+        QVERIFY(!doc.face().isHandPlaced(i));
+        QVERIFY(!doc.isModified());
+        QVERIFY(allChanges(spy).testFlag(Change::Points));
+        QVERIFY(allChanges(spy).testFlag(Change::FileState));
+
+        doc.undoStack()->redo();
+        QVERIFY(near(doc.face().point(i), before + QPointF(5, -3)));
+        QVERIFY(doc.face().isHandPlaced(i));
+    }
+
+    void changeFlagsNameWhatChanged()
+    {
+        Document doc;
+        fixture::fill(doc);
+        QSignalSpy spy(&doc, &Document::changed);
+
+        doc.movePoint(0, QPointF(1, 2), false);
+        // The first edit also leaves the clean state: a Points change and a FileState change.
+        const ChangeFlags all = allChanges(spy);
+        QVERIFY(all.testFlag(Change::Points));
+        QVERIFY(all.testFlag(Change::FileState));
+        QVERIFY(!all.testFlag(Change::Style));
+        QVERIFY(!all.testFlag(Change::Photo));
+
+        spy.clear();
+        doc.changeStyle(Style::preset(QStringLiteral("normal")), QStringLiteral("style"));
+        QCOMPARE(spy.size(), 1);
+        QCOMPARE(lastChange(spy), ChangeFlags(Change::Style));
+    }
+
+    void oneDragIsOneUndoStep()
+    {
+        Document doc;
+        fixture::fill(doc);
+        const int i = pt::idx("3.6");
+        const QPointF start = doc.face().point(i);
+
+        for (int step = 1; step <= 10; ++step)
+            doc.movePoint(i, start + QPointF(step, step), false);
+        doc.movePoint(i, start + QPointF(12, 11), true);
+        QCOMPARE(doc.undoStack()->count(), 1);
+        QVERIFY(near(doc.face().point(i), start + QPointF(12, 11)));
+
+        // A second drag of the same point is a second step.
+        doc.movePoint(i, start + QPointF(20, 20), false);
+        doc.movePoint(i, start + QPointF(21, 20), true);
+        QCOMPARE(doc.undoStack()->count(), 2);
+
+        doc.undoStack()->undo();
+        QVERIFY(near(doc.face().point(i), start + QPointF(12, 11)));
+        doc.undoStack()->undo();
+        QVERIFY(near(doc.face().point(i), start));
+        QVERIFY(!doc.face().isHandPlaced(i));
+    }
+
+    void dragsOfDifferentPointsDoNotMerge()
+    {
+        Document doc;
+        fixture::fill(doc);
+        doc.movePoint(pt::idx("8.4"), QPointF(150, 330), false);
+        doc.movePoint(pt::idx("8.3"), QPointF(250, 330), false);
+        QCOMPARE(doc.undoStack()->count(), 2);
+    }
+
+    void replaceFaceKeepsHandPlacedPoints_data()
+    {
+        QTest::addColumn<bool>("keepHandPlaced");
+        QTest::newRow("keep my points") << true;
+        QTest::newRow("replace all") << false;
+    }
+
+    void replaceFaceKeepsHandPlacedPoints()
+    {
+        QFETCH(bool, keepHandPlaced);
+        Document doc;
+        fixture::fill(doc);
+        const int moved = pt::idx("2.1");
+        const QPointF placed = doc.face().point(moved) + QPointF(0, 15);
+        doc.movePoint(moved, placed, true);
+        const FaceModel beforeDetection = doc.face();
+
+        // A "detection" that puts every point somewhere else.
+        const FaceModel detected = averageFace(QRectF(120, 160, 180, 220), fixture::kPhotoSize);
+        doc.replaceFace(detected, keepHandPlaced, QStringLiteral("Re-detect"));
+        QCOMPARE(doc.undoStack()->count(), 2);
+
+        for (int i = 0; i < kPointCount; ++i) {
+            if (i == moved && keepHandPlaced) {
+                QVERIFY(near(doc.face().point(i), placed));
+                QVERIFY(doc.face().isHandPlaced(i));
+            } else {
+                QVERIFY2(near(doc.face().point(i), detected.point(i)), qPrintable(pointId(i)));
+                QVERIFY(!doc.face().isHandPlaced(i));
+            }
+        }
+
+        doc.undoStack()->undo();
+        QCOMPARE(doc.face(), beforeDetection);
+    }
+
+    void replaceFaceOnEmptyDocumentIsUndoable()
+    {
+        Document doc;
+        Project project;
+        project.face = FaceModel(fixture::kPhotoSize);
+        doc.reset(project, fixture::photo(), {}, false);
+        QVERIFY(!doc.hasFace());
+
+        doc.replaceFace(fixture::face(), true, QStringLiteral("Detect face"));
+        QVERIFY(doc.hasFace());
+        QCOMPARE(doc.face(), fixture::face());
+        QVERIFY(doc.isModified());
+
+        doc.undoStack()->undo();
+        QVERIFY(!doc.hasFace());
+        QVERIFY(!doc.isModified());
+    }
+
+    void changeStyleIsUndoable()
+    {
+        Document doc;
+        fixture::fill(doc);
+        const Style before = doc.style();
+        Style after = before;
+        after.name = QStringLiteral("other");
+        after.cornerCutDepth = before.cornerCutDepth + 1;
+        doc.changeStyle(after, QStringLiteral("Style"));
+        QCOMPARE(doc.style(), after);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.style(), before);
+    }
+
+    void saveLoadRoundTrip()
+    {
+        const QString photoPath = m_dir.filePath(QStringLiteral("portrait.png"));
+        QVERIFY(fixture::photo().save(photoPath));
+        Document doc;
+        fixture::fill(doc, photoPath);
+        doc.movePoint(pt::idx("8.2"), QPointF(205, 345), true);
+        QVERIFY(doc.isModified());
+        QCOMPARE(doc.displayName(), QStringLiteral("portrait.png"));
+
+        const QString projectPath = m_dir.filePath(QStringLiteral("round.toonface"));
+        QSignalSpy spy(&doc, &Document::changed);
+        QString error;
+        QVERIFY2(doc.save(projectPath, &error), qPrintable(error));
+        QVERIFY(!doc.isModified());
+        QCOMPARE(doc.filePath(), projectPath);
+        QCOMPARE(doc.displayName(), QStringLiteral("round.toonface"));
+        QVERIFY(lastChange(spy).testFlag(Change::FileState));
+
+        Document loaded;
+        QString photoWarning;
+        QVERIFY2(loaded.load(projectPath, &error, &photoWarning), qPrintable(error));
+        QVERIFY2(photoWarning.isEmpty(), qPrintable(photoWarning));
+        Project expected = doc.project();
+        QVERIFY(loaded.style() == expected.style);
+        expected.style = loaded.style();
+        QCOMPARE(loaded.project(), expected);
+        QVERIFY(loaded.face().isHandPlaced(pt::idx("8.2")));
+        QCOMPARE(loaded.photo().size(), fixture::kPhotoSize);
+        QVERIFY(loaded.hasFace());
+        QVERIFY(!loaded.isModified());
+        QCOMPARE(loaded.undoStack()->count(), 0);
+
+        // Saving again to the same path after an edit clears the modified flag again.
+        loaded.movePoint(0, QPointF(10, 10), true);
+        QVERIFY(loaded.isModified());
+        QVERIFY(loaded.save(projectPath, &error));
+        QVERIFY(!loaded.isModified());
+    }
+
+    void markModifiedWithoutHistory()
+    {
+        Document doc;
+        fixture::fill(doc);
+        QVERIFY(!doc.isModified());
+        doc.markModified();
+        QVERIFY(doc.isModified());
+        QCOMPARE(doc.undoStack()->count(), 0);
+    }
+
+    void projectWithMissingPhotoStillOpens()
+    {
+        const QString photoPath = m_dir.filePath(QStringLiteral("gone.png"));
+        QVERIFY(fixture::photo().save(photoPath));
+        Document doc;
+        fixture::fill(doc, photoPath);
+        const QString projectPath = m_dir.filePath(QStringLiteral("gone.toonface"));
+        QString error;
+        QVERIFY2(doc.save(projectPath, &error), qPrintable(error));
+        QVERIFY(QFile::remove(photoPath));
+
+        Document loaded;
+        QString photoWarning;
+        QVERIFY2(loaded.load(projectPath, &error, &photoWarning), qPrintable(error));
+        QVERIFY(loaded.photo().isNull());
+        QVERIFY2(photoWarning.contains(QStringLiteral("gone.png")), qPrintable(photoWarning));
+        QCOMPARE(loaded.face(), doc.face());
+        QCOMPARE(loaded.canvasSize(), fixture::kPhotoSize);
+    }
+
+    void loadFileErrorsNameTheFile_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<QByteArray>("content");
+        QTest::newRow("missing photo") << QStringLiteral("absent.jpg") << QByteArray();
+        QTest::newRow("not an image") << QStringLiteral("notes.png") << QByteArray("these are not pixels");
+        QTest::newRow("broken project") << QStringLiteral("broken.toonface") << QByteArray("{\"format\": 3");
+        QTest::newRow("wrong project field") << QStringLiteral(
+            "field.toonface") << QByteArray("{\"format\": \"toonface.project\", \"version\": 1, \"face\": 12}");
+    }
+
+    void loadFileErrorsNameTheFile()
+    {
+        QFETCH(QString, name);
+        QFETCH(QByteArray, content);
+        const QString path = m_dir.filePath(name);
+        if (!content.isEmpty()) {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(content);
+        }
+        const LoadedFile file = loadFile(path);
+        QVERIFY(!file.ok());
+        QVERIFY2(file.error.contains(name), qPrintable(file.error));
+
+        Document doc;
+        fixture::fill(doc);
+        QString error;
+        QVERIFY(!doc.load(path, &error));
+        QVERIFY2(error.contains(name), qPrintable(error));
+        QVERIFY(doc.hasFace()); // a failed load leaves the document alone
+    }
+
+    void loadPhotoStartsUntitledWithoutFace()
+    {
+        const QString photoPath = m_dir.filePath(QStringLiteral("fresh.png"));
+        QVERIFY(fixture::photo().save(photoPath));
+        Document doc;
+        QString error;
+        QVERIFY2(doc.load(photoPath, &error), qPrintable(error));
+        QVERIFY(!doc.hasFace());
+        QVERIFY(doc.filePath().isEmpty());
+        QCOMPARE(doc.project().photoPath, photoPath);
+        QCOMPARE(doc.photo().size(), fixture::kPhotoSize);
+        QCOMPARE(doc.displayName(), QStringLiteral("fresh.png"));
+        QVERIFY(!doc.isModified());
+    }
+};
+
+QTEST_MAIN(TestDocument)
+#include "tst_document.moc"

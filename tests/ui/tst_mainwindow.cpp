@@ -1,0 +1,399 @@
+#include "uifixture.h"
+
+#include "detect/detector.h"
+#include "document/autosaver.h"
+#include "views/photoview.h"
+#include "window/mainwindow.h"
+#include "window/settings.h"
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QFile>
+#include <QMenu>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QUndoStack>
+#include <QUrl>
+#include <QXmlStreamReader>
+
+using namespace toonface;
+
+namespace {
+
+const QString kPortrait = QStringLiteral("/usr/share/matplotlib/mpl-data/sample_data/grace_hopper.jpg");
+
+// Answers the next message box by clicking the button whose text contains `button`
+// (mnemonic ampersands ignored). Returns a flag that turns true once it has answered.
+std::shared_ptr<bool> answerNextMessageBox(const QString &button)
+{
+    auto answered = std::make_shared<bool>(false);
+    auto *timer = new QTimer;
+    timer->setInterval(20);
+    QObject::connect(timer, &QTimer::timeout, timer, [timer, button, answered] {
+        auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+        if (!box)
+            return;
+        const QList<QAbstractButton *> buttons = box->buttons();
+        for (QAbstractButton *b : buttons) {
+            if (b->text().remove(QLatin1Char('&')).contains(button)) {
+                *answered = true;
+                timer->deleteLater();
+                b->click();
+                return;
+            }
+        }
+    });
+    timer->start();
+    return answered;
+}
+
+} // namespace
+
+class TestMainWindow : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+    QString m_photoPath;
+    QString m_projectPath;
+    std::unique_ptr<QTemporaryDir> m_recoveryDir;
+    std::unique_ptr<MainWindow> m_window;
+
+    MainWindow *makeWindow()
+    {
+        MainWindow::Options options;
+        options.preloadLandmarkModel = false;
+        options.recoveryDirectory = m_recoveryDir->path();
+        m_window = std::make_unique<MainWindow>(options);
+        m_window->show();
+        return m_window.get();
+    }
+
+    QAction *action(const char *name) const { return m_window->findChild<QAction *>(QLatin1StringView(name)); }
+
+    void openProject()
+    {
+        QSignalSpy opened(m_window.get(), &MainWindow::fileOpened);
+        m_window->openFile(m_projectPath);
+        QTRY_COMPARE(opened.size(), 1);
+        QCOMPARE(m_window->document()->filePath(), m_projectPath);
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        fixture::isolateSettings();
+        QVERIFY(m_dir.isValid());
+        m_photoPath = m_dir.filePath(QStringLiteral("portrait.png"));
+        QVERIFY(fixture::photo().save(m_photoPath));
+        m_projectPath = m_dir.filePath(QStringLiteral("portrait.toonface"));
+        Document doc;
+        fixture::fill(doc, m_photoPath);
+        QString error;
+        QVERIFY2(doc.save(m_projectPath, &error), qPrintable(error));
+    }
+
+    void init()
+    {
+        QSettings().clear();
+        m_recoveryDir = std::make_unique<QTemporaryDir>();
+    }
+
+    void cleanup()
+    {
+        if (m_window)
+            m_window->document()->undoStack()->setClean(); // close without asking
+        m_window.reset();
+    }
+
+    void openProjectShowsItsNameAndModifiedMark()
+    {
+        makeWindow();
+        openProject();
+        Document *doc = m_window->document();
+        QVERIFY(doc->hasFace());
+        QVERIFY(m_window->windowTitle().contains(QStringLiteral("portrait.toonface")));
+        QVERIFY(!m_window->isWindowModified());
+        QCOMPARE(Settings().recentFiles().value(0), m_projectPath);
+        QVERIFY(action("actionSave")->isEnabled());
+
+        doc->movePoint(pt::idx("8.9"), QPointF(190, 320), true);
+        QVERIFY(m_window->isWindowModified());
+        QCOMPARE(action("actionUndo")->text(), QStringLiteral("&Undo Move point 8.9"));
+        action("actionUndo")->trigger();
+        QVERIFY(!m_window->isWindowModified());
+        QCOMPARE(action("actionRedo")->text(), QStringLiteral("&Redo Move point 8.9"));
+    }
+
+    void openRecentListsAndOpensPersistedFiles()
+    {
+        Settings().addRecentFile(m_projectPath);
+        makeWindow();
+        auto *menu = m_window->findChild<QMenu *>(QStringLiteral("menuRecent"));
+        QVERIFY(menu);
+        Q_EMIT menu->aboutToShow();
+        const QList<QAction *> actions = menu->actions();
+        QVERIFY(actions.size() >= 2); // the file, a separator, "Clear Menu"
+        QCOMPARE(actions.first()->text(), QStringLiteral("portrait.toonface"));
+        actions.first()->trigger();
+        QTRY_COMPARE(m_window->document()->filePath(), m_projectPath);
+    }
+
+    void windowGeometryPersists()
+    {
+        makeWindow();
+        m_window->resize(900, 640);
+        QVERIFY(m_window->close());
+        QVERIFY(!Settings().windowGeometry().isEmpty());
+        m_window.reset();
+        makeWindow();
+        QCOMPARE(m_window->size(), QSize(900, 640));
+    }
+
+    void openFailureSaysWhichFile()
+    {
+        makeWindow();
+        QSignalSpy failed(m_window.get(), &MainWindow::openFailed);
+        const auto answered = answerNextMessageBox(QStringLiteral("OK"));
+        m_window->openFile(m_dir.filePath(QStringLiteral("missing.toonface")));
+        QTRY_COMPARE(failed.size(), 1);
+        QVERIFY(*answered);
+        QVERIFY(failed.first().first().toString().contains(QStringLiteral("missing.toonface")));
+        QVERIFY(!m_window->document()->hasFace());
+    }
+
+    void dropOpensTheFile()
+    {
+        makeWindow();
+        QMimeData mime;
+        mime.setUrls({QUrl::fromLocalFile(m_projectPath)});
+        const QPoint at = m_window->rect().center();
+        QDragEnterEvent enter(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(m_window.get(), &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent drop(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(m_window.get(), &drop);
+        QTRY_COMPARE(m_window->document()->filePath(), m_projectPath);
+
+        QMimeData text;
+        text.setUrls({QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("notes.txt")))});
+        QDragEnterEvent refused(at, Qt::CopyAction, &text, Qt::LeftButton, Qt::NoModifier);
+        refused.setAccepted(false);
+        QApplication::sendEvent(m_window.get(), &refused);
+        QVERIFY(!refused.isAccepted());
+    }
+
+    void closingWithUnsavedChangesAsks()
+    {
+        makeWindow();
+        openProject();
+        m_window->document()->movePoint(0, QPointF(10, 10), true);
+
+        auto answered = answerNextMessageBox(QStringLiteral("Cancel"));
+        QVERIFY(!m_window->close());
+        QVERIFY(*answered);
+        QVERIFY(m_window->isVisible());
+
+        answered = answerNextMessageBox(QStringLiteral("Discard"));
+        QVERIFY(m_window->close());
+        QVERIFY(*answered);
+        // The project on disk is untouched.
+        Document onDisk;
+        QString error;
+        QVERIFY2(onDisk.load(m_projectPath, &error), qPrintable(error));
+        QCOMPARE(onDisk.face(), fixture::face());
+    }
+
+    void saveWritesTheProject()
+    {
+        makeWindow();
+        openProject();
+        const QString copy = m_dir.filePath(QStringLiteral("copy.toonface"));
+        m_window->document()->movePoint(pt::idx("2.1"), QPointF(200, 410), true);
+        QVERIFY(m_window->saveTo(copy));
+        QVERIFY(!m_window->isWindowModified());
+        QVERIFY(m_window->windowTitle().contains(QStringLiteral("copy.toonface")));
+        Document saved;
+        QString error;
+        QVERIFY2(saved.load(copy, &error), qPrintable(error));
+        QCOMPARE(saved.face(), m_window->document()->face());
+        QCOMPARE(Settings().recentFiles().value(0), copy);
+    }
+
+    void styleSelectorChangesTheStyleUndoably()
+    {
+        makeWindow();
+        openProject();
+        auto *combo = m_window->findChild<QComboBox *>(QStringLiteral("styleCombo"));
+        QVERIFY(combo);
+        if (combo->count() < 2)
+            QSKIP("only one style preset");
+        const QString before = m_window->document()->style().name;
+        QCOMPARE(combo->currentData().toString(), before);
+        const int other = combo->currentIndex() == 0 ? 1 : 0;
+        combo->setCurrentIndex(other);
+        Q_EMIT combo->activated(other);
+        QCOMPARE(m_window->document()->style().name, combo->itemData(other).toString());
+        QCOMPARE(m_window->document()->undoStack()->count(), 1);
+        m_window->document()->undoStack()->undo();
+        QCOMPARE(m_window->document()->style().name, before);
+        QCOMPARE(combo->currentData().toString(), before);
+    }
+
+    void startupOffersToRestoreALeftover()
+    {
+        const QString original = m_dir.filePath(QStringLiteral("crashed.toonface"));
+        {
+            Document doc;
+            fixture::fill(doc, m_photoPath);
+            QString error;
+            QVERIFY2(doc.save(original, &error), qPrintable(error));
+            doc.movePoint(pt::idx("3.5"), QPointF(240, 235), true);
+            Autosaver crashed(&doc, m_recoveryDir->path());
+            QVERIFY(crashed.autosave());
+        }
+        QCOMPARE(Autosaver::leftovers(m_recoveryDir->path()).size(), 1);
+
+        makeWindow();
+        const auto answered = answerNextMessageBox(QStringLiteral("Restore"));
+        m_window->startup(QString());
+        QVERIFY(*answered);
+        QTRY_VERIFY(m_window->document()->hasFace());
+        Document *doc = m_window->document();
+        QCOMPARE(doc->filePath(), original);
+        QVERIFY(doc->isModified());
+        QVERIFY(m_window->isWindowModified());
+        QCOMPARE(doc->face().point("3.5"), QPointF(240, 235));
+        QVERIFY(Autosaver::leftovers(m_recoveryDir->path()).isEmpty());
+    }
+
+    void startupDiscardDeletesTheLeftoverAndOpensTheFile()
+    {
+        {
+            Document doc;
+            fixture::fill(doc, m_photoPath);
+            doc.movePoint(0, QPointF(5, 5), true);
+            Autosaver crashed(&doc, m_recoveryDir->path());
+            QVERIFY(crashed.autosave());
+        }
+        makeWindow();
+        const auto answered = answerNextMessageBox(QStringLiteral("Discard"));
+        QSignalSpy opened(m_window.get(), &MainWindow::fileOpened);
+        m_window->startup(m_projectPath);
+        QVERIFY(*answered);
+        QTRY_COMPARE(opened.size(), 1);
+        QCOMPARE(m_window->document()->filePath(), m_projectPath);
+        QVERIFY(Autosaver::leftovers(m_recoveryDir->path()).isEmpty());
+    }
+
+    void exportWritesSvgAndPng_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::newRow("svg") << QStringLiteral("cartoon.svg");
+        QTest::newRow("png") << QStringLiteral("cartoon.png");
+    }
+
+    void exportWritesSvgAndPng()
+    {
+        QFETCH(QString, name);
+        makeWindow();
+        openProject();
+        const QString path = m_dir.filePath(name);
+        QSignalSpy exported(m_window.get(), &MainWindow::exported);
+        m_window->exportTo(path);
+        QTRY_COMPARE(exported.size(), 1);
+        QVERIFY2(exported.first().at(1).toString().isEmpty(), qPrintable(exported.first().at(1).toString()));
+        if (name.endsWith(QLatin1StringView(".svg"))) {
+            QFile file(path);
+            QVERIFY(file.open(QIODevice::ReadOnly));
+            QXmlStreamReader xml(&file);
+            QVERIFY(xml.readNextStartElement());
+            QCOMPARE(xml.name(), QLatin1StringView("svg"));
+        } else {
+            const QImage image(path);
+            QCOMPARE(image.size(), fixture::kPhotoSize);
+        }
+    }
+
+    void cancelledDetectionLeavesNoFace()
+    {
+        makeWindow();
+        QSignalSpy opened(m_window.get(), &MainWindow::fileOpened);
+        QSignalSpy done(m_window.get(), &MainWindow::detectionDone);
+        m_window->openFile(m_photoPath);
+        QTRY_COMPARE(opened.size(), 1);
+        QVERIFY(m_window->isBusy()); // detecting
+        auto *cancel = m_window->findChild<QAbstractButton *>(QStringLiteral("cancelButton"));
+        QVERIFY(cancel && cancel->isVisible());
+        cancel->click();
+        QTRY_VERIFY_WITH_TIMEOUT(done.size() == 1, 60000);
+        QVERIFY(!m_window->isBusy());
+        QVERIFY(!cancel->isVisible());
+        QVERIFY(!m_window->document()->hasFace());
+        QCOMPARE(m_window->document()->undoStack()->count(), 0);
+    }
+
+    void photoWithoutFaceOffersTheAverageFace()
+    {
+        QImage blank(320, 240, QImage::Format_RGB32);
+        blank.fill(QColor(128, 128, 128));
+        const QString blankPath = m_dir.filePath(QStringLiteral("blank.png"));
+        QVERIFY(blank.save(blankPath));
+
+        makeWindow();
+        QSignalSpy done(m_window.get(), &MainWindow::detectionDone);
+        const auto answered = answerNextMessageBox(QStringLiteral("Place Average Face"));
+        m_window->openFile(blankPath);
+        QTRY_VERIFY_WITH_TIMEOUT(done.size() == 1, 60000);
+        QVERIFY(*answered);
+        Document *doc = m_window->document();
+        QVERIFY(doc->hasFace());
+        QVERIFY(doc->filePath().isEmpty());
+        QCOMPARE(doc->displayName(), QStringLiteral("blank.png"));
+        QCOMPARE(doc->undoStack()->count(), 1);
+        QCOMPARE(doc->undoStack()->undoText(), QStringLiteral("Place average face"));
+        QVERIFY(QRectF(0, 0, 320, 240).contains(doc->face().bounds(PointGroup::Mouth)));
+    }
+
+    void photoIsDetectedInTheBackground()
+    {
+        if (!QFile::exists(kPortrait))
+            QSKIP("grace_hopper.jpg is not installed (package python-matplotlib-data)");
+        makeWindow();
+        QSignalSpy done(m_window.get(), &MainWindow::detectionDone);
+        m_window->openFile(kPortrait);
+        QTRY_VERIFY(m_window->isBusy() || done.size() == 1);
+        QTRY_VERIFY_WITH_TIMEOUT(done.size() == 1, 120000);
+        QVERIFY(!m_window->isBusy());
+        Document *doc = m_window->document();
+        if (!doc->hasFace())
+            QFAIL("no face found on the portrait");
+        // Points and sampled colours arrive as one undoable step.
+        QCOMPARE(doc->undoStack()->count(), 1);
+        QCOMPARE(doc->undoStack()->undoText(), QStringLiteral("Detect face"));
+        QVERIFY(doc->isModified());
+        doc->undoStack()->undo();
+        QVERIFY(!doc->hasFace());
+
+        // Re-detection keeping a hand-placed point.
+        doc->undoStack()->redo();
+        const int i = pt::idx("9.15");
+        const QPointF placed = doc->face().point(i) + QPointF(7, 0);
+        doc->movePoint(i, placed, true);
+        action("actionRedetectKeep")->trigger();
+        QVERIFY(m_window->isBusy());
+        QTRY_VERIFY_WITH_TIMEOUT(done.size() == 2, 120000);
+        QCOMPARE(doc->undoStack()->count(), 3);
+        QCOMPARE(doc->face().point(i), placed);
+    }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_mainwindow.moc"

@@ -1,0 +1,77 @@
+#pragma once
+
+#include "document/document.h"
+
+#include <QGraphicsView>
+#include <QVector>
+
+class QGraphicsPathItem;
+class QGraphicsPixmapItem;
+class QGraphicsRectItem;
+
+namespace toonface {
+
+class PointHandle;
+
+// The photo with the 72 points as draggable handles, coloured by group, over thin outlines
+// of the features. Dragging a handle moves the point in the document (one undo step per drag);
+// the handles follow the document, never the other way round. The wheel zooms about the
+// cursor. Two fit modes keep their target framed as the view resizes and the face changes:
+// fitToWindow() (the whole photo) and zoomToFace() (the initial mode: the face, where the
+// points are edited; the whole photo while there is no face).
+class PhotoView : public QGraphicsView
+{
+    Q_OBJECT
+
+public:
+    explicit PhotoView(Document *document, QWidget *parent = nullptr);
+    ~PhotoView() override;
+
+    bool showPointIds() const { return m_showIds; }
+    // The handle of point `index` (for tests and tools).
+    PointHandle *handle(int index) const;
+    // Current zoom: view pixels per photo pixel.
+    double zoom() const;
+    enum class Fit { None, Photo, Face };
+    Fit fitMode() const { return m_fit; }
+
+    // Called by the handles.
+    void dragPoint(int index, QPointF pos, bool commit);
+    void pointHoverChanged(int index, bool hovered);
+
+public Q_SLOTS:
+    void setShowPointIds(bool show);
+    void zoomIn();
+    void zoomOut();
+    void zoomToActualSize();
+    void fitToWindow();
+    void zoomToFace();
+
+Q_SIGNALS:
+    // A point came under the cursor (index), or none did any more (-1).
+    void pointHovered(int index);
+    void zoomChanged(double zoom);
+
+protected:
+    void wheelEvent(QWheelEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
+
+private:
+    void onDocumentChanged(ChangeFlags what);
+    void syncPhoto();
+    void syncPoints();
+    void updateOutlines();
+    void setZoom(double zoom);
+    void applyFit();
+
+    Document *m_document;
+    QGraphicsScene *m_scene;
+    QGraphicsPixmapItem *m_photoItem;
+    QGraphicsRectItem *m_canvasItem;
+    QGraphicsPathItem *m_outlineItem;
+    QVector<PointHandle *> m_handles;
+    bool m_showIds = false;
+    Fit m_fit = Fit::Face;
+};
+
+} // namespace toonface

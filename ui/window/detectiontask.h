@@ -1,0 +1,47 @@
+#pragma once
+
+#include "detect/detector.h"
+
+#include <QFutureWatcher>
+#include <QImage>
+#include <QObject>
+
+#include <atomic>
+#include <memory>
+
+namespace toonface {
+
+// Runs detectFace() off the GUI thread (QtConcurrent::run) and reports its progress and
+// result by signals on the thread that owns the task. One detection at a time: start()
+// cancels a running one, whose result is then dropped.
+class DetectionTask : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit DetectionTask(QObject *parent = nullptr);
+    // Cancels a running detection; the worker stops at its next stage and nothing is reported.
+    ~DetectionTask() override;
+
+    // image: a copy travels to the worker (QImage is implicitly shared and read-only there).
+    void start(const QImage &image, const DetectOptions &options = {});
+    // Asks the running detection to stop; cancelled() follows.
+    void cancel();
+    // Stops the running detection and reports nothing about it (its document is gone).
+    void abandon();
+    bool isRunning() const;
+
+Q_SIGNALS:
+    void progress(double fraction, const QString &stage);
+    void finished(const toonface::DetectionResult &result);
+    void cancelled();
+
+private:
+    void onFinished(QFutureWatcher<DetectionResult> *watcher);
+    void drop();
+
+    QFutureWatcher<DetectionResult> *m_watcher = nullptr;
+    std::shared_ptr<std::atomic_bool> m_cancel;
+};
+
+} // namespace toonface

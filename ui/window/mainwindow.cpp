@@ -1,0 +1,745 @@
+#include "window/mainwindow.h"
+
+#include "document/autosaver.h"
+#include "document/undomacro.h"
+#include "face/averageface.h"
+#include "render/svgface.h"
+#include "views/photoview.h"
+#include "views/pointhandle.h"
+#include "views/previewview.h"
+#include "window/detectiontask.h"
+#include "window/settings.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QImageReader>
+#include <QLabel>
+#include <QLocale>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QScreen>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QToolButton>
+#include <QUndoStack>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <utility>
+
+namespace toonface {
+
+namespace {
+
+constexpr int kStatusTimeoutMs = 6000;
+
+QString photoFilter()
+{
+    QStringList patterns;
+    const QList<QByteArray> formats = QImageReader::supportedImageFormats();
+    for (const QByteArray &format : formats)
+        patterns << QStringLiteral("*.") + QString::fromLatin1(format);
+    return patterns.join(QLatin1Char(' '));
+}
+
+bool isOpenablePath(const QString &path)
+{
+    if (isProjectPath(path))
+        return true;
+    const QByteArray suffix = QFileInfo(path).suffix().toLower().toLatin1();
+    return QImageReader::supportedImageFormats().contains(suffix);
+}
+
+// Writes the cartoon to `path` (.svg as is, anything else rasterised at `size`); returns an
+// error message or an empty string. Runs off the GUI thread.
+QString writeCartoon(const QByteArray &svg, QSize size, const QString &path)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return QCoreApplication::translate("MainWindow", "%1: cannot write: %2").arg(path, file.errorString());
+    if (QFileInfo(path).suffix().compare(QLatin1StringView("svg"), Qt::CaseInsensitive) == 0) {
+        if (file.write(svg) != svg.size())
+            return QCoreApplication::translate("MainWindow", "%1: cannot write: %2").arg(path, file.errorString());
+    } else {
+        const QImage image = rasterizeSvg(svg, size);
+        if (image.isNull())
+            return QCoreApplication::translate("MainWindow", "%1: the cartoon could not be drawn").arg(path);
+        if (!image.save(&file, QFileInfo(path).suffix().toLatin1().constData()))
+            return QCoreApplication::translate("MainWindow", "%1: cannot encode the image").arg(path);
+    }
+    if (!file.commit())
+        return QCoreApplication::translate("MainWindow", "%1: cannot write: %2").arg(path, file.errorString());
+    return {};
+}
+
+} // namespace
+
+MainWindow::MainWindow(QWidget *parent)
+    : MainWindow(Options(), parent)
+{ }
+
+MainWindow::MainWindow(const Options &options, QWidget *parent)
+    : QMainWindow(parent)
+    , m_options(options)
+    , m_document(new Document(this))
+    , m_detection(new DetectionTask(this))
+{
+    setObjectName(QStringLiteral("MainWindow"));
+    setAcceptDrops(true);
+    setWindowIcon(QIcon(QStringLiteral(":/toonface/icons/toonface.svg")));
+
+    const QString recoveryDir
+        = m_options.recoveryDirectory.isEmpty() ? Autosaver::defaultDirectory() : m_options.recoveryDirectory;
+    m_autosaver = new Autosaver(m_document, recoveryDir, this);
+    m_autosaver->setInterval(Settings().autosaveInterval());
+    connect(m_autosaver, &Autosaver::failed, this,
+        [this](const QString &error) { statusBar()->showMessage(error, kStatusTimeoutMs); });
+
+    m_photoView = new PhotoView(m_document);
+    m_photoView->setObjectName(QStringLiteral("photoView"));
+    m_previewView = new PreviewView(m_document);
+    m_previewView->setObjectName(QStringLiteral("previewView"));
+    m_splitter = new QSplitter(Qt::Horizontal);
+    m_splitter->setObjectName(QStringLiteral("splitter"));
+    m_splitter->addWidget(m_photoView);
+    m_splitter->addWidget(m_previewView);
+    m_splitter->setStretchFactor(0, 3);
+    m_splitter->setStretchFactor(1, 2);
+    m_splitter->setChildrenCollapsible(false);
+    setCentralWidget(m_splitter);
+
+    createActions();
+    createMenus();
+    createToolBar();
+    createStatusBar();
+    restoreSettings();
+
+    connect(m_document, &Document::changed, this, &MainWindow::onDocumentChanged);
+    connect(m_photoView, &PhotoView::pointHovered, this, &MainWindow::showPointStatus);
+    connect(m_photoView, &PhotoView::zoomChanged, this,
+        [this](double zoom) { m_zoomLabel->setText(tr("%1%").arg(qRound(zoom * 100))); });
+    connect(m_detection, &DetectionTask::progress, this, [this](double fraction, const QString &stage) {
+        m_busyBar->setRange(0, 100);
+        m_busyBar->setValue(qRound(fraction * 100));
+        if (!stage.isEmpty())
+            m_busyLabel->setText(tr("Detecting the face: %1").arg(stage));
+    });
+    connect(m_detection, &DetectionTask::finished, this, &MainWindow::onDetectionFinished);
+    connect(m_detection, &DetectionTask::cancelled, this, &MainWindow::onDetectionCancelled);
+
+    if (m_options.preloadLandmarkModel) {
+        auto *watcher = new QFutureWatcher<QString>(this);
+        connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
+            watcher->deleteLater();
+            const QString error = watcher->result();
+            if (!error.isEmpty())
+                statusBar()->showMessage(
+                    tr("Landmark model unavailable (%1): detection may fail, but points can be placed by hand.")
+                        .arg(error),
+                    kStatusTimeoutMs);
+        });
+        watcher->setFuture(QtConcurrent::run([] {
+            QString error;
+            return preloadLandmarkModel(&error) ? QString() : error;
+        }));
+    }
+
+    onDocumentChanged(Change::Photo | Change::Face | Change::Style | Change::FileState);
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createActions()
+{
+    auto make = [this](const QString &objectName, const QString &text, const QKeySequence &shortcut = {}) {
+        auto *action = new QAction(text, this);
+        action->setObjectName(objectName);
+        if (!shortcut.isEmpty())
+            action->setShortcut(shortcut);
+        return action;
+    };
+
+    m_openAction = make(QStringLiteral("actionOpen"), tr("&Open Photo or Project…"), QKeySequence::Open);
+    m_openAction->setIcon(QIcon::fromTheme(QStringLiteral("document-open")));
+    connect(m_openAction, &QAction::triggered, this, &MainWindow::openDialog);
+    m_saveAction = make(QStringLiteral("actionSave"), tr("&Save"), QKeySequence::Save);
+    m_saveAction->setIcon(QIcon::fromTheme(QStringLiteral("document-save")));
+    connect(m_saveAction, &QAction::triggered, this, &MainWindow::save);
+    m_saveAsAction = make(QStringLiteral("actionSaveAs"), tr("Save &As…"), QKeySequence::SaveAs);
+    connect(m_saveAsAction, &QAction::triggered, this, &MainWindow::saveAs);
+    m_exportAction = make(QStringLiteral("actionExport"), tr("&Export Cartoon…"), QKeySequence(Qt::CTRL | Qt::Key_E));
+    connect(m_exportAction, &QAction::triggered, this, &MainWindow::exportCartoon);
+    m_quitAction = make(QStringLiteral("actionQuit"), tr("&Quit"), QKeySequence::Quit);
+    m_quitAction->setMenuRole(QAction::QuitRole);
+    connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
+
+    m_undoAction = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    m_undoAction->setObjectName(QStringLiteral("actionUndo"));
+    m_undoAction->setShortcut(QKeySequence::Undo);
+    m_undoAction->setIcon(QIcon::fromTheme(QStringLiteral("edit-undo")));
+    m_redoAction = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    m_redoAction->setObjectName(QStringLiteral("actionRedo"));
+    m_redoAction->setShortcut(QKeySequence::Redo);
+    m_redoAction->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo")));
+    m_redetectAction
+        = make(QStringLiteral("actionRedetect"), tr("Re-&detect Points"), QKeySequence(Qt::CTRL | Qt::Key_D));
+    m_redetectAction->setToolTip(tr("Detect the face again and replace every point"));
+    connect(m_redetectAction, &QAction::triggered, this, [this] { startDetection(false); });
+    m_redetectKeepAction = make(QStringLiteral("actionRedetectKeep"), tr("Re-detect &Keeping My Points"),
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
+    m_redetectKeepAction->setToolTip(tr("Detect the face again but keep the points placed by hand"));
+    connect(m_redetectKeepAction, &QAction::triggered, this, [this] { startDetection(true); });
+
+    m_zoomInAction = make(QStringLiteral("actionZoomIn"), tr("Zoom &In"), QKeySequence::ZoomIn);
+    connect(m_zoomInAction, &QAction::triggered, m_photoView, &PhotoView::zoomIn);
+    m_zoomOutAction = make(QStringLiteral("actionZoomOut"), tr("Zoom &Out"), QKeySequence::ZoomOut);
+    connect(m_zoomOutAction, &QAction::triggered, m_photoView, &PhotoView::zoomOut);
+    m_actualSizeAction
+        = make(QStringLiteral("actionActualSize"), tr("&Actual Size"), QKeySequence(Qt::CTRL | Qt::Key_1));
+    connect(m_actualSizeAction, &QAction::triggered, m_photoView, &PhotoView::zoomToActualSize);
+    m_fitAction = make(QStringLiteral("actionFit"), tr("&Fit to Window"), QKeySequence(Qt::CTRL | Qt::Key_0));
+    m_fitAction->setIcon(QIcon::fromTheme(QStringLiteral("zoom-fit-best")));
+    connect(m_fitAction, &QAction::triggered, m_photoView, &PhotoView::fitToWindow);
+    m_zoomFaceAction = make(QStringLiteral("actionZoomFace"), tr("Zoom to F&ace"), QKeySequence(Qt::CTRL | Qt::Key_2));
+    m_zoomFaceAction->setIcon(QIcon::fromTheme(QStringLiteral("zoom-in")));
+    connect(m_zoomFaceAction, &QAction::triggered, m_photoView, &PhotoView::zoomToFace);
+    m_showIdsAction = make(QStringLiteral("actionShowIds"), tr("Show Point &IDs"), QKeySequence(Qt::CTRL | Qt::Key_I));
+    m_showIdsAction->setCheckable(true);
+    connect(m_showIdsAction, &QAction::toggled, this, [this](bool show) {
+        m_photoView->setShowPointIds(show);
+        Settings().setShowPointIds(show);
+    });
+
+    m_aboutAction = make(QStringLiteral("actionAbout"), tr("&About Toonface"));
+    m_aboutAction->setMenuRole(QAction::AboutRole);
+    connect(m_aboutAction, &QAction::triggered, this, [this] {
+        QMessageBox::about(this, tr("About Toonface"),
+            tr("<h3>Toonface %1</h3><p>Personal talking cartoon faces from photos, drawn in SVG.</p>")
+                .arg(QStringLiteral(TOONFACE_VERSION)));
+    });
+}
+
+void MainWindow::createMenus()
+{
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    file->addAction(m_openAction);
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    m_recentMenu->setObjectName(QStringLiteral("menuRecent"));
+    connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::fillRecentMenu);
+    fillRecentMenu();
+    file->addSeparator();
+    file->addAction(m_saveAction);
+    file->addAction(m_saveAsAction);
+    file->addAction(m_exportAction);
+    file->addSeparator();
+    file->addAction(m_quitAction);
+
+    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
+    edit->addAction(m_undoAction);
+    edit->addAction(m_redoAction);
+    edit->addSeparator();
+    edit->addAction(m_redetectAction);
+    edit->addAction(m_redetectKeepAction);
+
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    view->addAction(m_zoomInAction);
+    view->addAction(m_zoomOutAction);
+    view->addAction(m_actualSizeAction);
+    view->addAction(m_fitAction);
+    view->addAction(m_zoomFaceAction);
+    view->addSeparator();
+    view->addAction(m_showIdsAction);
+
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(m_aboutAction);
+}
+
+void MainWindow::createToolBar()
+{
+    QToolBar *bar = addToolBar(tr("Main"));
+    bar->setObjectName(QStringLiteral("mainToolBar"));
+    bar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    bar->addAction(m_openAction);
+    bar->addAction(m_saveAction);
+    bar->addSeparator();
+    bar->addAction(m_undoAction);
+    bar->addAction(m_redoAction);
+    bar->addSeparator();
+    bar->addAction(m_redetectAction);
+    bar->addSeparator();
+    bar->addWidget(new QLabel(tr("Style:") + QLatin1Char(' ')));
+    m_styleCombo = new QComboBox;
+    m_styleCombo->setObjectName(QStringLiteral("styleCombo"));
+    m_styleCombo->setToolTip(tr("Drawing style of the cartoon"));
+    const QStringList presets = Style::presetNames();
+    for (const QString &name : presets) {
+        QString label = name;
+        if (!label.isEmpty())
+            label[0] = label[0].toUpper();
+        m_styleCombo->addItem(label, name);
+    }
+    connect(m_styleCombo, &QComboBox::activated, this, &MainWindow::onStyleActivated);
+    bar->addWidget(m_styleCombo);
+    bar->addSeparator();
+    bar->addAction(m_fitAction);
+    bar->addAction(m_zoomFaceAction);
+}
+
+void MainWindow::createStatusBar()
+{
+    m_busyLabel = new QLabel;
+    m_busyBar = new QProgressBar;
+    m_busyBar->setMaximumWidth(160);
+    m_busyBar->setTextVisible(false);
+    m_cancelButton = new QToolButton;
+    m_cancelButton->setObjectName(QStringLiteral("cancelButton"));
+    m_cancelButton->setText(tr("Cancel"));
+    connect(m_cancelButton, &QToolButton::clicked, this, &MainWindow::cancelJob);
+    m_zoomLabel = new QLabel;
+    m_zoomLabel->setMinimumWidth(48);
+    m_zoomLabel->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    statusBar()->addPermanentWidget(m_busyLabel);
+    statusBar()->addPermanentWidget(m_busyBar);
+    statusBar()->addPermanentWidget(m_cancelButton);
+    statusBar()->addPermanentWidget(m_zoomLabel);
+    setBusy(Job::None, {});
+}
+
+void MainWindow::restoreSettings()
+{
+    Settings settings;
+    if (!restoreGeometry(settings.windowGeometry())) {
+        const QSize available = screen()->availableSize();
+        resize(std::min(1280, available.width() * 9 / 10), std::min(820, available.height() * 9 / 10));
+    }
+    restoreState(settings.windowState());
+    m_splitter->restoreState(settings.splitterState());
+    m_showIdsAction->setChecked(settings.showPointIds());
+}
+
+void MainWindow::saveSettings()
+{
+    Settings settings;
+    settings.setWindowGeometry(saveGeometry());
+    settings.setWindowState(saveState());
+    settings.setSplitterState(m_splitter->saveState());
+}
+
+void MainWindow::startup(const QString &path)
+{
+    const QList<RecoveryFile> leftovers = Autosaver::leftovers(
+        m_options.recoveryDirectory.isEmpty() ? Autosaver::defaultDirectory() : m_options.recoveryDirectory);
+    if (!leftovers.isEmpty()) {
+        const RecoveryFile &newest = leftovers.first();
+        const QString name
+            = newest.originalPath.isEmpty() ? tr("an untitled project") : QFileInfo(newest.originalPath).fileName();
+        QMessageBox box(QMessageBox::Question, tr("Restore Unsaved Work"),
+            tr("Toonface did not close properly. Unsaved work on %1 from %2 was kept.")
+                .arg(name, QLocale().toString(newest.written, QLocale::ShortFormat)),
+            QMessageBox::NoButton, this);
+        box.setInformativeText(tr("Restore it? Discarding deletes the kept copy."));
+        QPushButton *restore = box.addButton(tr("&Restore"), QMessageBox::AcceptRole);
+        box.addButton(tr("&Discard"), QMessageBox::DestructiveRole);
+        box.setDefaultButton(restore);
+        box.exec();
+        if (box.clickedButton() == restore) {
+            startLoading(newest.path, newest);
+            return;
+        }
+        Autosaver::remove(newest);
+    }
+    if (!path.isEmpty())
+        openFile(path);
+}
+
+void MainWindow::openFile(const QString &path)
+{
+    if (!maybeSave())
+        return;
+    startLoading(path, {});
+}
+
+void MainWindow::openDialog()
+{
+    const QString filter
+        = tr("Photos and projects (*.toonface %1);;Toonface projects (*.toonface);;Photos (%1);;All files (*)")
+              .arg(photoFilter());
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Photo or Project"), dialogDirectory(), filter);
+    if (!path.isEmpty())
+        openFile(path);
+}
+
+void MainWindow::startLoading(const QString &path, const std::optional<RecoveryFile> &recovery)
+{
+    m_detection->abandon();
+    if (m_loadWatcher) {
+        m_loadWatcher->disconnect(this);
+        m_loadWatcher->deleteLater();
+    }
+    m_recovering = recovery;
+    m_loadWatcher = new QFutureWatcher<LoadedFile>(this);
+    connect(m_loadWatcher, &QFutureWatcherBase::finished, this, &MainWindow::onLoaded);
+    if (recovery)
+        m_loadWatcher->setFuture(QtConcurrent::run([file = *recovery] { return Autosaver::load(file); }));
+    else
+        m_loadWatcher->setFuture(QtConcurrent::run([path] { return loadFile(path); }));
+    setBusy(Job::Opening, tr("Opening %1…").arg(QFileInfo(path).fileName()));
+}
+
+void MainWindow::onLoaded()
+{
+    QFutureWatcher<LoadedFile> *watcher = m_loadWatcher;
+    m_loadWatcher = nullptr;
+    watcher->deleteLater();
+    setBusy(Job::None, {});
+    const LoadedFile file = watcher->result();
+    const std::optional<RecoveryFile> recovery = std::exchange(m_recovering, std::nullopt);
+
+    if (!file.ok()) {
+        if (!recovery)
+            Settings().removeRecentFile(file.path);
+        QMessageBox::warning(this, tr("Cannot Open"), file.error);
+        Q_EMIT openFailed(file.error);
+        return;
+    }
+    if (recovery) {
+        Autosaver::restoreInto(m_document, file);
+        Autosaver::remove(*recovery);
+        statusBar()->showMessage(tr("Restored unsaved work on %1.").arg(m_document->displayName()), kStatusTimeoutMs);
+    } else {
+        m_document->open(file);
+        Settings settings;
+        settings.addRecentFile(file.path);
+        settings.setLastDirectory(QFileInfo(file.path).absolutePath());
+    }
+    if (!file.photoWarning.isEmpty())
+        QMessageBox::warning(this, tr("Photo Missing"),
+            tr("The project opened, but its photo could not be read:\n%1").arg(file.photoWarning));
+    Q_EMIT fileOpened(file.path);
+    if (!m_document->hasFace() && !m_document->photo().isNull())
+        startDetection(false);
+}
+
+void MainWindow::startDetection(bool keepHandPlaced)
+{
+    if (m_document->photo().isNull() || m_job == Job::Opening)
+        return;
+    m_detectKeepsHandPlaced = keepHandPlaced;
+    m_detection->start(m_document->photo());
+    setBusy(Job::Detecting, tr("Detecting the face…"));
+}
+
+void MainWindow::onDetectionFinished(const DetectionResult &result)
+{
+    if (m_job == Job::Detecting)
+        setBusy(Job::None, {});
+    if (result.status != DetectStatus::Ok) {
+        if (result.status == DetectStatus::BadImage || m_document->hasFace())
+            QMessageBox::warning(this, tr("Detection Failed"),
+                m_document->hasFace() ? tr("%1\nThe points are unchanged.").arg(result.error) : result.error);
+        else // no face, or no detector able to look for one: the user can still place the points
+            offerAverageFace(result.error);
+        Q_EMIT detectionDone();
+        return;
+    }
+    if (!m_document->hasFace()) {
+        // The first face of a photo: its points and the colours sampled under them, one step.
+        Style style = m_document->style();
+        style.sampleColours(m_document->photo(), result.face);
+        const UndoMacro step(m_document->undoStack(), tr("Detect face"));
+        m_document->replaceFace(result.face, false, tr("Detect face"));
+        m_document->changeStyle(style, tr("Sample colours"));
+    } else {
+        m_document->replaceFace(result.face, m_detectKeepsHandPlaced,
+            m_detectKeepsHandPlaced ? tr("Re-detect keeping my points") : tr("Re-detect points"));
+    }
+    statusBar()->showMessage(tr("Face found by the %1 method in %2 ms.")
+                                 .arg(result.method)
+                                 .arg(qRound(result.timingMs.value(QStringLiteral("total")))),
+        kStatusTimeoutMs);
+    Q_EMIT detectionDone();
+}
+
+void MainWindow::onDetectionCancelled()
+{
+    if (m_job == Job::Detecting)
+        setBusy(Job::None, {});
+    statusBar()->showMessage(tr("Detection cancelled."), kStatusTimeoutMs);
+    Q_EMIT detectionDone();
+}
+
+void MainWindow::offerAverageFace(const QString &reason)
+{
+    // The detector's reason already says what was missing: say it once, naming the file.
+    const QString text = reason.isEmpty() ? tr("No face was found in %1.").arg(m_document->displayName())
+                                          : tr("%1: %2").arg(m_document->displayName(), reason);
+    QMessageBox box(QMessageBox::Information, tr("No Face Found"), text, QMessageBox::NoButton, this);
+    box.setInformativeText(tr("You can place an average face on the photo and drag its points into place by hand."));
+    QPushButton *place = box.addButton(tr("&Place Average Face"), QMessageBox::AcceptRole);
+    box.addButton(QMessageBox::Cancel);
+    box.setDefaultButton(place);
+    box.exec();
+    if (box.clickedButton() != place)
+        return;
+    const QSizeF size = m_document->canvasSize();
+    const double width = 0.4 * std::min(size.width(), size.height());
+    QRectF faceBox(0, 0, width, 1.2 * width);
+    faceBox.moveCenter(QPointF(size.width() / 2, size.height() / 2));
+    m_document->replaceFace(averageFace(faceBox, m_document->canvasSize()), false, tr("Place average face"));
+}
+
+void MainWindow::cancelJob()
+{
+    if (m_job == Job::Detecting) {
+        m_detection->cancel();
+        m_busyLabel->setText(tr("Cancelling…"));
+    } else if (m_job == Job::Opening && m_loadWatcher) {
+        m_loadWatcher->disconnect(this);
+        m_loadWatcher->deleteLater();
+        m_loadWatcher = nullptr;
+        m_recovering.reset();
+        setBusy(Job::None, {});
+    }
+}
+
+void MainWindow::setBusy(Job job, const QString &text)
+{
+    m_job = job;
+    const bool busy = job != Job::None;
+    m_busyLabel->setText(text);
+    m_busyLabel->setVisible(busy);
+    m_busyBar->setRange(0, 0); // indeterminate until the job reports progress
+    m_busyBar->setVisible(busy);
+    m_cancelButton->setVisible(busy);
+    m_cancelButton->setToolTip(job == Job::Detecting ? tr("Stop detecting the face") : tr("Stop opening the file"));
+    updateActions();
+}
+
+bool MainWindow::isBusy() const
+{
+    return m_job != Job::None;
+}
+
+bool MainWindow::save()
+{
+    if (m_document->filePath().isEmpty())
+        return saveAs();
+    return saveTo(m_document->filePath());
+}
+
+bool MainWindow::saveAs()
+{
+    QString suggested = m_document->filePath();
+    if (suggested.isEmpty()) {
+        const QFileInfo photo(m_document->project().photoPath);
+        suggested = QDir(photo.absolutePath()).filePath(photo.completeBaseName() + QStringLiteral(".toonface"));
+    }
+    QString path
+        = QFileDialog::getSaveFileName(this, tr("Save Project"), suggested, tr("Toonface projects (*.toonface)"));
+    if (path.isEmpty())
+        return false;
+    if (!isProjectPath(path))
+        path += QStringLiteral(".toonface");
+    return saveTo(path);
+}
+
+bool MainWindow::saveTo(const QString &path)
+{
+    QString error;
+    if (!m_document->save(path, &error)) {
+        QMessageBox::warning(this, tr("Cannot Save"), error);
+        return false;
+    }
+    Settings settings;
+    settings.addRecentFile(path);
+    settings.setLastDirectory(QFileInfo(path).absolutePath());
+    statusBar()->showMessage(tr("Saved %1.").arg(QDir::toNativeSeparators(path)), kStatusTimeoutMs);
+    return true;
+}
+
+void MainWindow::exportCartoon()
+{
+    if (!m_document->hasFace())
+        return;
+    const QFileInfo base(m_document->filePath().isEmpty() ? m_document->project().photoPath : m_document->filePath());
+    const QString suggested
+        = QDir(base.absolutePath()).filePath(base.completeBaseName() + QStringLiteral("-cartoon.svg"));
+    QString selectedFilter;
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Export Cartoon"), suggested, tr("SVG image (*.svg);;PNG image (*.png)"), &selectedFilter);
+    if (path.isEmpty())
+        return;
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix != QLatin1StringView("svg") && suffix != QLatin1StringView("png"))
+        path += selectedFilter.contains(QLatin1StringView("*.png")) ? QStringLiteral(".png") : QStringLiteral(".svg");
+    exportTo(path);
+}
+
+void MainWindow::exportTo(const QString &path)
+{
+    if (!m_document->hasFace())
+        return;
+    // The SVG is built here (fast, and the document is only read on the GUI thread); writing
+    // and rasterising happen in the background.
+    const QByteArray svg = SvgFace(m_document->face(), m_document->style()).svg();
+    const QSize size = m_document->canvasSize();
+    auto *watcher = new QFutureWatcher<QString>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, path] {
+        watcher->deleteLater();
+        const QString error = watcher->result();
+        if (error.isEmpty())
+            statusBar()->showMessage(tr("Exported %1.").arg(QDir::toNativeSeparators(path)), kStatusTimeoutMs);
+        else
+            QMessageBox::warning(this, tr("Cannot Export"), error);
+        Q_EMIT exported(path, error);
+    });
+    watcher->setFuture(QtConcurrent::run([svg, size, path] { return writeCartoon(svg, size, path); }));
+}
+
+bool MainWindow::maybeSave()
+{
+    if (!m_document->isModified())
+        return true;
+    const QMessageBox::StandardButton answer = QMessageBox::warning(this, tr("Unsaved Changes"),
+        tr("%1 has unsaved changes. Save them?").arg(m_document->displayName()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save)
+        return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::fillRecentMenu()
+{
+    m_recentMenu->clear();
+    const QStringList files = Settings().recentFiles();
+    for (const QString &path : files) {
+        QAction *action = m_recentMenu->addAction(QFileInfo(path).fileName());
+        action->setToolTip(QDir::toNativeSeparators(path));
+        action->setStatusTip(QDir::toNativeSeparators(path));
+        connect(action, &QAction::triggered, this, [this, path] { openFile(path); });
+    }
+    if (!files.isEmpty())
+        m_recentMenu->addSeparator();
+    QAction *clear = m_recentMenu->addAction(tr("&Clear Menu"));
+    clear->setEnabled(!files.isEmpty());
+    connect(clear, &QAction::triggered, this, [] { Settings().clearRecentFiles(); });
+}
+
+void MainWindow::onDocumentChanged(ChangeFlags what)
+{
+    if (what & Change::Style)
+        syncStyleCombo();
+    if (what & (Change::FileState | Change::Photo))
+        updateTitle();
+    if (what & (Change::Points | Change::Face | Change::Photo | Change::FileState))
+        updateActions();
+}
+
+void MainWindow::updateTitle()
+{
+    setWindowTitle(tr("%1[*] — Toonface").arg(m_document->displayName()));
+    setWindowFilePath(m_document->filePath());
+    setWindowModified(m_document->isModified());
+}
+
+void MainWindow::updateActions()
+{
+    const bool hasFace = m_document->hasFace();
+    const bool hasPhoto = !m_document->photo().isNull();
+    m_saveAction->setEnabled(hasFace);
+    m_saveAsAction->setEnabled(hasFace);
+    m_exportAction->setEnabled(hasFace);
+    m_redetectAction->setEnabled(hasPhoto && !isBusy());
+    m_redetectKeepAction->setEnabled(hasPhoto && hasFace && !isBusy() && m_document->face().handPlacedCount() > 0);
+    m_styleCombo->setEnabled(hasFace);
+    m_zoomFaceAction->setEnabled(hasFace);
+}
+
+void MainWindow::onStyleActivated(int index)
+{
+    const QString name = m_styleCombo->itemData(index).toString();
+    if (name == m_document->style().name)
+        return;
+    bool ok = false;
+    Style style = Style::preset(name, &ok);
+    if (!ok)
+        return;
+    if (m_document->hasFace() && !m_document->photo().isNull())
+        style.sampleColours(m_document->photo(), m_document->face());
+    m_document->changeStyle(style, tr("Style “%1”").arg(m_styleCombo->itemText(index)));
+}
+
+void MainWindow::syncStyleCombo()
+{
+    const int index = m_styleCombo->findData(m_document->style().name);
+    const QSignalBlocker blocker(m_styleCombo);
+    m_styleCombo->setCurrentIndex(index);
+}
+
+void MainWindow::showPointStatus(int index)
+{
+    if (index < 0 || !m_document->hasFace()) {
+        statusBar()->clearMessage();
+        return;
+    }
+    const PointInfo &info = pointTable()[index];
+    const QPointF p = m_document->face().point(index);
+    QString text = tr("Point %1 (%2) at %3, %4")
+                       .arg(pointId(index), PointHandle::groupDisplayName(info.group))
+                       .arg(p.x(), 0, 'f', 1)
+                       .arg(p.y(), 0, 'f', 1);
+    if (info.control)
+        text += tr(" · control point");
+    if (m_document->face().isHandPlaced(index))
+        text += tr(" · placed by hand");
+    statusBar()->showMessage(text);
+}
+
+QString MainWindow::dialogDirectory() const
+{
+    if (!m_document->filePath().isEmpty())
+        return QFileInfo(m_document->filePath()).absolutePath();
+    return Settings().lastDirectory();
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    m_detection->abandon();
+    m_autosaver->discard();
+    saveSettings();
+    event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent *event)
+{
+    const QList<QUrl> urls = event->mimeData()->urls();
+    if (urls.size() == 1 && urls.first().isLocalFile() && isOpenablePath(urls.first().toLocalFile()))
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent *event)
+{
+    const QList<QUrl> urls = event->mimeData()->urls();
+    if (urls.isEmpty() || !urls.first().isLocalFile())
+        return;
+    event->acceptProposedAction();
+    // Opening may ask about unsaved changes: not from inside the drop.
+    const QString path = urls.first().toLocalFile();
+    QMetaObject::invokeMethod(
+        this, [this, path] { openFile(path); }, Qt::QueuedConnection);
+}
+
+} // namespace toonface

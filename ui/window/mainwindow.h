@@ -1,0 +1,148 @@
+#pragma once
+
+#include "document/autosaver.h"
+#include "document/document.h"
+#include "document/loadedfile.h"
+
+#include <QFutureWatcher>
+#include <QMainWindow>
+
+#include <optional>
+
+class QAction;
+class QComboBox;
+class QLabel;
+class QMenu;
+class QProgressBar;
+class QSplitter;
+class QToolButton;
+
+namespace toonface {
+
+class DetectionTask;
+class PhotoView;
+class PreviewView;
+struct DetectionResult;
+
+// The editor window: the photo with its points beside the live cartoon, the menus, and the
+// wiring of the long jobs (opening, detection, export) that run off the GUI thread and come
+// back as commands on the Document.
+class MainWindow : public QMainWindow
+{
+    Q_OBJECT
+
+public:
+    struct Options
+    {
+        bool preloadLandmarkModel = true; // load the detector's model in the background at start
+        QString recoveryDirectory; // empty: Autosaver::defaultDirectory()
+    };
+
+    explicit MainWindow(QWidget *parent = nullptr);
+    explicit MainWindow(const Options &options, QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    Document *document() const { return m_document; }
+    PhotoView *photoView() const { return m_photoView; }
+    PreviewView *previewView() const { return m_previewView; }
+    Autosaver *autosaver() const { return m_autosaver; }
+
+    // After show(): offers to restore a leftover recovery file; when none is restored, opens
+    // `path` (a photo or a project) if it is not empty.
+    void startup(const QString &path);
+    // Opens a photo (then detects its face) or a project, in the background; asks first when
+    // the open document has unsaved changes.
+    void openFile(const QString &path);
+    bool saveTo(const QString &path);
+    // Writes the cartoon in the background: .svg as drawn, .png rasterised at the photo's size.
+    // exported() follows.
+    void exportTo(const QString &path);
+    // True while a file is being opened or a face detected.
+    bool isBusy() const;
+
+Q_SIGNALS:
+    void fileOpened(const QString &path);
+    void openFailed(const QString &error);
+    void detectionDone();
+    void exported(const QString &path, const QString &error); // error empty on success
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+    void dragEnterEvent(QDragEnterEvent *event) override;
+    void dropEvent(QDropEvent *event) override;
+
+private:
+    enum class Job { None, Opening, Detecting };
+
+    void createActions();
+    void createMenus();
+    void createToolBar();
+    void createStatusBar();
+    void restoreSettings();
+    void saveSettings();
+
+    void onDocumentChanged(ChangeFlags what);
+    void updateTitle();
+    void updateActions();
+
+    void openDialog();
+    bool save();
+    bool saveAs();
+    void exportCartoon();
+    bool maybeSave();
+    void fillRecentMenu();
+
+    // With `recovery`, `path` is that leftover and loading restores it.
+    void startLoading(const QString &path, const std::optional<RecoveryFile> &recovery = std::nullopt);
+    void onLoaded();
+    void startDetection(bool keepHandPlaced);
+    void onDetectionFinished(const DetectionResult &result);
+    void onDetectionCancelled();
+    void offerAverageFace(const QString &reason);
+    void cancelJob();
+    void setBusy(Job job, const QString &text);
+
+    void onStyleActivated(int index);
+    void syncStyleCombo();
+    void showPointStatus(int index);
+    QString dialogDirectory() const;
+
+    Options m_options;
+    Document *m_document;
+    Autosaver *m_autosaver;
+    DetectionTask *m_detection;
+    PhotoView *m_photoView;
+    PreviewView *m_previewView;
+    QSplitter *m_splitter;
+
+    QFutureWatcher<LoadedFile> *m_loadWatcher = nullptr;
+    std::optional<RecoveryFile> m_recovering; // the leftover being restored, if any
+    Job m_job = Job::None;
+    bool m_detectKeepsHandPlaced = false;
+
+    QAction *m_openAction = nullptr;
+    QAction *m_saveAction = nullptr;
+    QAction *m_saveAsAction = nullptr;
+    QAction *m_exportAction = nullptr;
+    QAction *m_quitAction = nullptr;
+    QAction *m_undoAction = nullptr;
+    QAction *m_redoAction = nullptr;
+    QAction *m_redetectAction = nullptr;
+    QAction *m_redetectKeepAction = nullptr;
+    QAction *m_zoomInAction = nullptr;
+    QAction *m_zoomOutAction = nullptr;
+    QAction *m_actualSizeAction = nullptr;
+    QAction *m_fitAction = nullptr;
+    QAction *m_zoomFaceAction = nullptr;
+    QAction *m_showIdsAction = nullptr;
+    QAction *m_aboutAction = nullptr;
+    QMenu *m_recentMenu = nullptr;
+    QComboBox *m_styleCombo = nullptr;
+
+    QLabel *m_busyLabel = nullptr;
+    QProgressBar *m_busyBar = nullptr;
+    QToolButton *m_cancelButton = nullptr;
+    QLabel *m_zoomLabel = nullptr;
+};
+
+} // namespace toonface

@@ -1,0 +1,116 @@
+#include "window/settings.h"
+
+#include <QDir>
+#include <QFileInfo>
+
+namespace toonface {
+
+namespace {
+
+namespace key {
+const QString windowGeometry = QStringLiteral("window/geometry");
+const QString windowState = QStringLiteral("window/state");
+const QString splitterState = QStringLiteral("window/splitter");
+const QString recentFiles = QStringLiteral("files/recent");
+const QString lastDirectory = QStringLiteral("files/lastDirectory");
+const QString autosaveInterval = QStringLiteral("autosave/intervalSeconds");
+const QString showPointIds = QStringLiteral("view/showPointIds");
+} // namespace key
+
+constexpr int kDefaultAutosaveInterval = 60;
+
+} // namespace
+
+Settings::Settings() = default;
+
+QByteArray Settings::windowGeometry() const
+{
+    return m_settings.value(key::windowGeometry).toByteArray();
+}
+
+void Settings::setWindowGeometry(const QByteArray &geometry)
+{
+    m_settings.setValue(key::windowGeometry, geometry);
+}
+
+QByteArray Settings::windowState() const
+{
+    return m_settings.value(key::windowState).toByteArray();
+}
+
+void Settings::setWindowState(const QByteArray &state)
+{
+    m_settings.setValue(key::windowState, state);
+}
+
+QByteArray Settings::splitterState() const
+{
+    return m_settings.value(key::splitterState).toByteArray();
+}
+
+void Settings::setSplitterState(const QByteArray &state)
+{
+    m_settings.setValue(key::splitterState, state);
+}
+
+QStringList Settings::recentFiles() const
+{
+    return m_settings.value(key::recentFiles).toStringList();
+}
+
+void Settings::addRecentFile(const QString &path)
+{
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    QStringList files = recentFiles();
+    files.removeAll(absolute);
+    files.prepend(absolute);
+    while (files.size() > kMaxRecentFiles)
+        files.removeLast();
+    m_settings.setValue(key::recentFiles, files);
+}
+
+void Settings::removeRecentFile(const QString &path)
+{
+    QStringList files = recentFiles();
+    files.removeAll(QFileInfo(path).absoluteFilePath());
+    m_settings.setValue(key::recentFiles, files);
+}
+
+void Settings::clearRecentFiles()
+{
+    m_settings.remove(key::recentFiles);
+}
+
+QString Settings::lastDirectory() const
+{
+    return m_settings.value(key::lastDirectory, QDir::homePath()).toString();
+}
+
+void Settings::setLastDirectory(const QString &directory)
+{
+    m_settings.setValue(key::lastDirectory, directory);
+}
+
+int Settings::autosaveInterval() const
+{
+    bool ok = false;
+    const int seconds = m_settings.value(key::autosaveInterval, kDefaultAutosaveInterval).toInt(&ok);
+    return ok && seconds >= 0 ? seconds : kDefaultAutosaveInterval;
+}
+
+void Settings::setAutosaveInterval(int seconds)
+{
+    m_settings.setValue(key::autosaveInterval, seconds);
+}
+
+bool Settings::showPointIds() const
+{
+    return m_settings.value(key::showPointIds, false).toBool();
+}
+
+void Settings::setShowPointIds(bool show)
+{
+    m_settings.setValue(key::showPointIds, show);
+}
+
+} // namespace toonface

@@ -1,0 +1,50 @@
+#pragma once
+
+#include <QByteArray>
+#include <QSettings>
+#include <QString>
+#include <QStringList>
+
+namespace toonface {
+
+// The editor's persistent settings, typed, with every key in settings.cpp. QSettings
+// underneath (the application's organisation and name pick the file); cheap to construct,
+// so code makes one where it needs it. GUI thread only.
+class Settings
+{
+public:
+    Settings();
+
+    static constexpr int kMaxRecentFiles = 10;
+
+    QByteArray windowGeometry() const;
+    void setWindowGeometry(const QByteArray &geometry);
+    QByteArray windowState() const;
+    void setWindowState(const QByteArray &state);
+    QByteArray splitterState() const;
+    void setSplitterState(const QByteArray &state);
+
+    // Most recent first, absolute paths, no duplicates, at most kMaxRecentFiles.
+    QStringList recentFiles() const;
+    void addRecentFile(const QString &path);
+    void removeRecentFile(const QString &path);
+    void clearRecentFiles();
+
+    // The folder the file dialogs open in.
+    QString lastDirectory() const;
+    void setLastDirectory(const QString &directory);
+
+    // Seconds between autosaves of a modified project; 0 turns autosave off.
+    int autosaveInterval() const;
+    void setAutosaveInterval(int seconds);
+
+    bool showPointIds() const;
+    void setShowPointIds(bool show);
+
+    void sync() { m_settings.sync(); }
+
+private:
+    QSettings m_settings;
+};
+
+} // namespace toonface
