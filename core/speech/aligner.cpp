@@ -84,8 +84,14 @@ public:
         std::sort(sorted.begin(), sorted.end());
         const float level = sorted.empty() ? 0.0f : sorted[size_t(0.95 * double(sorted.size() - 1))];
         std::vector<bool> quiet(n);
-        for (size_t t = 0; t < n; ++t)
-            quiet[t] = maxLn(int(t) - 5, int(t) + 5) < level - 5.0;
+        // Or: 50 ms that are all silence by their whole-band energy (a recording whose noise
+        // floor sits less than 22 dB under its speech).
+        auto silent = [&](int t) { return f.silence[size_t(std::clamp(t, 0, int(n) - 1))] > 0.5f; };
+        for (size_t t = 0; t < n; ++t) {
+            const int u = int(t);
+            quiet[t] = maxLn(u - 5, u + 5) < level - 5.0
+                || (silent(u - 2) && silent(u - 1) && silent(u) && silent(u + 1) && silent(u + 2));
+        }
         m_pause.assign(n, 0.0f);
         for (size_t t = 0; t < n;) {
             if (!quiet[t]) {
@@ -95,17 +101,16 @@ public:
             size_t e = t;
             while (e < n && quiet[e])
                 ++e;
-            if (e - t >= 15 || t == 0 || e == n) {
-                // The ±50 ms look-around stops a pause short of the sound on either side;
-                // extend it over the frames that are silence by their whole-band energy (the
-                // frication of an initial is quiet in the mid band, not in the whole band).
-                size_t a = t, z = e;
-                while (a > 0 && f.silence[a - 1] > 0.5f)
-                    --a;
-                while (z < n && f.silence[z] > 0.5f)
-                    ++z;
+            // The ±50 ms look-around stops a pause short of the sound on either side; extend
+            // it over the frames that are silence by their whole-band energy (the frication
+            // of an initial is quiet in the mid band, not in the whole band).
+            size_t a = t, z = e;
+            while (a > 0 && f.silence[a - 1] > 0.5f)
+                --a;
+            while (z < n && f.silence[z] > 0.5f)
+                ++z;
+            if (z - a >= 15 || a == 0 || z == n)
                 std::fill(m_pause.begin() + qsizetype(a), m_pause.begin() + qsizetype(z), 1.0f);
-            }
             t = e;
         }
         // Valleys: local loudness minima with their depth under the highest frames within
@@ -131,7 +136,14 @@ public:
         m_sumSpeech = prefix(speech);
         m_sumPause = prefix(m_pause);
         m_maxNucleus = sparseMax(m_nucleus);
+        m_nextPause.assign(n + 1, int(n));
+        for (int t = int(n) - 1; t >= 0; --t)
+            m_nextPause[size_t(t)] = m_pause[size_t(t)] > 0.5f ? t : m_nextPause[size_t(t) + 1];
     }
+
+    double nucleus(int t) const { return m_nucleus[size_t(std::clamp(t, 0, m_frames - 1))]; }
+    // The first pause frame at or after t (frames() when none).
+    int nextPause(int t) const { return m_nextPause[size_t(std::clamp(t, 0, m_frames))]; }
 
     int frames() const { return m_frames; }
     bool isPause(int t) const { return t >= 0 && t < m_frames && m_pause[size_t(t)] > 0.5f; }
@@ -262,6 +274,7 @@ private:
     std::vector<float> m_ln, m_lnVoiced, m_loud, m_nucleus, m_pause;
     std::vector<double> m_sumLoud, m_sumNucleus, m_sumSpeech, m_sumPause;
     SparseMax m_maxNucleus;
+    std::vector<int> m_nextPause;
     struct Valley
     {
         int at, left, right;
@@ -308,7 +321,20 @@ std::vector<int> segmentSyllables(const Signals &sig, const std::vector<int> &pr
         // Two loud peaks inside with a valley of 3 ln units (13 dB) between them: a syllable
         // boundary missed.
         const double inside = std::clamp((sig.innerValley(from, to) - 1.0) / 2.0, 0.0, 1.0);
-        return kNucleus * sig.maxNucleus(from, to) - kDuration * r * r - kValley * inside;
+        // A pause may follow a syllable's nucleus, never come between its onset and its nucleus.
+        const int pause = sig.nextPause(from + 1);
+        // Its nucleus is a rise after the dip that follows the onset (the first frames after an
+        // onset still carry the falling end of the syllable before).
+        double beforePause = 0;
+        if (pause < to) {
+            int dip = from;
+            for (int t = from; t < std::min(from + 15, pause); ++t)
+                if (sig.nucleus(t) < sig.nucleus(dip))
+                    dip = t;
+            const double peak = sig.maxNucleus(dip, pause);
+            beforePause = peak < 0.3 || peak - sig.nucleus(dip) < 0.15 ? 1.0 : 0.0;
+        }
+        return kNucleus * sig.maxNucleus(from, to) - kDuration * r * r - kValley * (inside + beforePause);
     };
     constexpr double kNone = -1e18;
     std::vector<std::vector<double>> score(static_cast<size_t>(n));
@@ -516,7 +542,12 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         const double warped = mapTime(reference.units[k].start + kReferencePad, true);
         const double atWarped
             = sig.onsetEvidence(a.frameAt(warped + 0.5 * SpeechFeatures::kHop), kinds[size_t(k)], k == 0);
-        if (evidence[size_t(k)] - atWarped < 0.25)
+        // A pause between the two settles it for the segmentation, which knows that a
+        // syllable cannot begin before a pause and have its nucleus after it.
+        const int w0 = std::min(onsets[size_t(k)], a.frameAt(warped)),
+                  w1 = std::max(onsets[size_t(k)], a.frameAt(warped));
+        const bool pauseBetween = sig.pauseFrames(w0, w1) > 0;
+        if (evidence[size_t(k)] - atWarped < 0.25 && !pauseBetween)
             s.start = warped;
         else
             s.start = std::abs(refined - warped) <= 0.04 ? 0.5 * (refined + warped) : refined;

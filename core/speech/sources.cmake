@@ -10,4 +10,5 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/dtw.h speech/dtw.cpp
   speech/aligner.h speech/aligner.cpp
   speech/englishshapes.h speech/englishshapes.cpp
+  speech/lipsync.h speech/lipsync.cpp
   speech/syllableshapes.h speech/syllableshapes.cpp)
