@@ -252,18 +252,18 @@ namespace {
 // script; the sentences repeat.
 std::pair<Audio, Script> longRecording(double seconds)
 {
+    TtsOptions o;
+    o.voice = QStringLiteral("cmn-latn-pinyin+f2");
+    o.rate = 160;
+    QString round = sentences().join(QString());
+    const double perRound = synthesize(mandarin(round), o).audio.duration();
     QString text;
-    Script script;
-    Audio audio;
-    for (int round = 0; audio.duration() < seconds; ++round) {
-        text += sentences()[round % sentences().size()];
-        script = mandarin(text);
-        TtsOptions o;
-        o.voice = QStringLiteral("cmn-latn-pinyin+f2");
-        o.rate = 160;
-        audio = resampled(synthesize(script, o).audio, kSpeechSampleRate);
-    }
-    return {audio, script};
+    for (int k = 0; k < std::max(1, int(std::ceil(seconds / perRound))); ++k)
+        text += round;
+    if (seconds < perRound) // a prefix of the sentences
+        text = round.left(int(round.size() * seconds / perRound) + 1);
+    const Script script = mandarin(text);
+    return {resampled(synthesize(script, o).audio, kSpeechSampleRate), script};
 }
 
 const double kSpeedLengths[] = {10.0, 60.0, 600.0}; // seconds

@@ -351,7 +351,12 @@ std::vector<int> segmentSyllables(const Signals &sig, const std::vector<int> &pr
             }
             double best = kNone;
             int arg = -1;
-            for (int p = lo[size_t(k) - 1]; p <= std::min(hi[size_t(k) - 1], b - 3); ++p) {
+            // Syllables more than four times their expected length (pauses aside) are not
+            // considered: the search runs back from b and stops there.
+            const double longest = 4.0 * std::max(expected[size_t(k) - 1], 3.0) + 10.0;
+            for (int p = std::min(hi[size_t(k) - 1], b - 3); p >= lo[size_t(k) - 1]; --p) {
+                if ((b - p) - sig.pauseFrames(p, b) > longest)
+                    break;
                 const double prev = score[size_t(k) - 1][size_t(p - lo[size_t(k) - 1])];
                 if (prev <= kNone / 2)
                     continue;
@@ -611,26 +616,37 @@ AlignResult alignScript(const Audio &audio, const Script &script, const AlignOpt
     const bool matchRate = tts.rate <= 0;
     if (matchRate)
         tts.rate = kDefaultRate;
-    TtsResult reference = synthesize(script, tts, {}, cancel);
+    if (matchRate) {
+        // Speak the reference at the speaker's pace: less warping, fewer mistakes. The pace
+        // at the default rate is measured on (at most) the first 120 syllables.
+        Script probe = script;
+        if (probe.syllables.size() > 120)
+            probe.syllables.resize(120);
+        const TtsResult sample = synthesize(probe, tts, {}, cancel);
+        if (isCancelled(cancel))
+            return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
+        if (!sample.ok())
+            return failure(AlignStatus::BadInput, sample.error);
+        double spoken = 0;
+        for (const TtsUnit &u : sample.units)
+            spoken += u.end - u.start;
+        spoken *= double(script.syllables.size()) / double(probe.syllables.size());
+        const double ratio = a.speechDuration() / std::max(spoken, 0.01);
+        if (ratio > 0.3 && ratio < 6 && std::abs(std::log(ratio)) > std::log(1.15))
+            tts.rate = std::clamp(int(std::lround(kDefaultRate / ratio)), 80, 450);
+        else if (probe.syllables.size() == script.syllables.size()) {
+            if (progress)
+                progress(0.1, QStringLiteral("reference"));
+            return alignFeatures(a, script, sample, progress, cancel);
+        }
+    }
+    const TtsResult reference = synthesize(script, tts, {}, cancel);
     if (isCancelled(cancel))
         return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
     if (!reference.ok())
         return failure(AlignStatus::BadInput, reference.error);
     if (progress)
         progress(0.1, QStringLiteral("reference"));
-    if (matchRate) {
-        // Speak the reference at the speaker's pace: less warping, fewer mistakes.
-        double spoken = 0;
-        for (const TtsUnit &u : reference.units)
-            spoken += u.end - u.start;
-        const double ratio = a.speechDuration() / std::max(spoken, 0.01);
-        if (ratio > 0.3 && ratio < 6 && std::abs(std::log(ratio)) > std::log(1.15)) {
-            tts.rate = std::clamp(int(std::lround(kDefaultRate / ratio)), 80, 450);
-            TtsResult again = synthesize(script, tts, {}, cancel);
-            if (again.ok())
-                reference = std::move(again);
-        }
-    }
     return alignFeatures(a, script, reference, progress, cancel);
 }
 

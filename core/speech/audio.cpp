@@ -229,8 +229,14 @@ Audio resampled(const Audio &audio, int rate)
     out.sampleRate = rate;
     if (!swr)
         return out;
-    const uint8_t *in = reinterpret_cast<const uint8_t *>(audio.samples.constData());
-    convertInto(swr.get(), &in, int(audio.samples.size()), rate, audio.sampleRate, out.samples);
+    out.samples.reserve(qsizetype(double(audio.samples.size()) * rate / audio.sampleRate) + 64);
+    // In chunks: swr_convert sizes (and zeroes) its buffers by the input it is handed.
+    constexpr qsizetype kChunk = 1 << 15;
+    for (qsizetype at = 0; at < audio.samples.size(); at += kChunk) {
+        const uint8_t *in = reinterpret_cast<const uint8_t *>(audio.samples.constData() + at);
+        convertInto(
+            swr.get(), &in, int(std::min(kChunk, audio.samples.size() - at)), rate, audio.sampleRate, out.samples);
+    }
     convertInto(swr.get(), nullptr, 0, rate, audio.sampleRate, out.samples);
     return out;
 }
