@@ -1,0 +1,65 @@
+#include "cli/command.h"
+#include "speech/lipsync.h"
+
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QTextStream>
+
+namespace toonface::cli {
+
+namespace {
+
+int runLipsync(const Command &self, const QStringList &args)
+{
+    QCommandLineParser parser;
+    const QCommandLineOption audio(QStringLiteral("audio"),
+        QStringLiteral("The speech recording (WAV, FLAC, MP3, OGG, M4A or a video's sound)."), QStringLiteral("AUDIO"));
+    const QCommandLineOption script(QStringLiteral("script"),
+        QStringLiteral("What is said, as UTF-8 text: Chinese characters, pinyin, zhuyin, or English."),
+        QStringLiteral("SCRIPT"));
+    const QCommandLineOption lang(QStringLiteral("lang"),
+        QStringLiteral("Language of the script: cmn, en, or auto (from the script)."), QStringLiteral("cmn|en|auto"),
+        QStringLiteral("auto"));
+    const QCommandLineOption output(QStringList {QStringLiteral("o"), QStringLiteral("output")},
+        QStringLiteral("Write the result here: .tsv for Rhubarb-style cues, JSON otherwise (default: JSON on stdout)."),
+        QStringLiteral("OUT.json|OUT.tsv"));
+    parser.addOptions({audio, script, lang, output});
+    bool helped = false;
+    if (!parseArguments(parser, self, args, &helped))
+        return ExitUsage;
+    if (helped)
+        return ExitOk;
+    if (!parser.isSet(audio) || !parser.isSet(script) || !parser.positionalArguments().isEmpty())
+        return fail(
+            ExitUsage, QStringLiteral("lipsync needs --audio and --script (usage: toonface-cli %1)").arg(self.usage));
+    const auto language = languageFromCode(parser.value(lang));
+    if (!language)
+        return fail(ExitUsage, QStringLiteral("unknown --lang '%1' (cmn, en or auto)").arg(parser.value(lang)));
+
+    progress(QStringLiteral("aligning %1 with %2").arg(parser.value(audio), parser.value(script)));
+    const LipsyncOutcome out = lipsyncFiles(parser.value(audio), parser.value(script), *language);
+    if (out.status == LipsyncStatus::CannotAlign)
+        return fail(ExitCannotAlign, out.error);
+    if (!out.ok())
+        return fail(ExitBadInput, out.error);
+
+    const bool tsv = parser.isSet(output) && QFileInfo(parser.value(output)).suffix().toLower() == QLatin1String("tsv");
+    const QByteArray data
+        = tsv ? lipsyncToTsv(out.result) : QJsonDocument(lipsyncToJson(out.result)).toJson(QJsonDocument::Indented);
+    if (!parser.isSet(output)) {
+        QTextStream(stdout) << data;
+        return ExitOk;
+    }
+    QString error;
+    if (!writeFileAtomically(parser.value(output), data, &error))
+        return fail(ExitFailed, error);
+    return ExitOk;
+}
+
+const CommandRegistrar registrar({QStringLiteral("lipsync"),
+    QStringLiteral("Time a recording's syllables against its script and give the mouth shapes (toonface.lipsync/1)."),
+    QStringLiteral("lipsync --audio AUDIO --script SCRIPT [--lang cmn|en] [-o OUT.json|OUT.tsv]"), runLipsync});
+
+} // namespace
+
+} // namespace toonface::cli

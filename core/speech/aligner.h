@@ -1,0 +1,58 @@
+#pragma once
+
+#include "speech/audio.h"
+#include "speech/progress.h"
+#include "speech/script.h"
+#include "speech/tts.h"
+
+#include <QString>
+#include <QVector>
+
+namespace toonface {
+
+struct AlignOptions
+{
+    // The espeak-ng rendering the recording is warped against. rate 0 matches the speaker's
+    // rate automatically (a first rendering measures it).
+    TtsOptions reference {0, 50, 50, {}};
+};
+
+enum class AlignStatus { Ok, CannotAlign, BadInput, Cancelled };
+
+struct AlignedSyllable
+{
+    double start = 0; // seconds in the audio
+    double end = 0; // seconds; <= the next syllable's start
+    double confidence = 0; // 0..1: how well the recording matched the reference here
+    QVector<TtsPhoneme> phonemes; // the reference's phonemes, their starts mapped into the audio
+};
+
+struct AlignResult
+{
+    AlignStatus status = AlignStatus::BadInput;
+    QString error; // why, when status != Ok
+    QVector<AlignedSyllable> syllables; // one per script syllable when Ok
+    double speechStart = 0; // first and last moment of speech found in the audio
+    double speechEnd = 0;
+    bool ok() const { return status == AlignStatus::Ok; }
+};
+
+// Finds when each syllable of `script` is spoken in `audio` (any rate; mono).
+//
+// Method: MFCC, energy and voicing features of the recording are warped by multi-resolution
+// dynamic time warping onto those of an espeak-ng rendering of the same script whose syllable
+// times are known exactly from the library's events; pauses either side makes alone are
+// absorbed as silence. Each onset is then moved to the acoustic boundary nearby (the end of
+// a pause, or the energy valley or voicing change between two syllable nuclei) that best fits
+// its initial.
+// Fails with CannotAlign when the audio holds no speech, or far too little speech for the
+// script (or far too much). Thread-safe (the espeak-ng rendering is serialised).
+AlignResult alignScript(const Audio &audio, const Script &script, const AlignOptions &options = {},
+    const SpeechProgressFn &progress = {}, const std::atomic_bool *cancel = nullptr);
+
+// The same against a given reference rendering of the script (`reference.units` one per
+// syllable); alignScript renders it itself.
+AlignResult alignToReference(const Audio &audio, const Script &script, const TtsResult &reference,
+    const SpeechProgressFn &progress = {}, const std::atomic_bool *cancel = nullptr);
+
+} // namespace toonface

@@ -1,0 +1,425 @@
+#include "speech/audio.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QSaveFile>
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libavutil/channel_layout.h>
+#include <libavutil/opt.h>
+#include <libswresample/swresample.h>
+}
+
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+namespace toonface {
+
+namespace {
+
+// FFmpeg's own log would repeat each problem of a corrupt file on stderr; the errors this
+// file returns say it once. TOONFACE_FFMPEG_LOG=1 keeps FFmpeg's log for debugging.
+void quietFfmpegLog()
+{
+    static std::once_flag once;
+    std::call_once(once, [] {
+        if (qEnvironmentVariableIsEmpty("TOONFACE_FFMPEG_LOG"))
+            av_log_set_level(AV_LOG_FATAL);
+    });
+}
+
+QString avError(int code)
+{
+    char buf[AV_ERROR_MAX_STRING_SIZE] = {};
+    av_strerror(code, buf, sizeof buf);
+    return QString::fromUtf8(buf);
+}
+
+struct FormatInputDeleter
+{
+    void operator()(AVFormatContext *c) const { avformat_close_input(&c); }
+};
+struct CodecDeleter
+{
+    void operator()(AVCodecContext *c) const { avcodec_free_context(&c); }
+};
+struct SwrDeleter
+{
+    void operator()(SwrContext *c) const { swr_free(&c); }
+};
+struct FrameDeleter
+{
+    void operator()(AVFrame *f) const { av_frame_free(&f); }
+};
+struct PacketDeleter
+{
+    void operator()(AVPacket *p) const { av_packet_free(&p); }
+};
+
+using SwrPtr = std::unique_ptr<SwrContext, SwrDeleter>;
+
+// Appends everything `swr` gives for `in` (null = flush) as mono floats.
+void convertInto(SwrContext *swr, const uint8_t **in, int inCount, int outRate, int inRate, QVector<float> &out)
+{
+    const int room = int(av_rescale_rnd(swr_get_delay(swr, inRate) + inCount, outRate, inRate, AV_ROUND_UP)) + 32;
+    const qsizetype at = out.size();
+    out.resize(at + room);
+    uint8_t *dst = reinterpret_cast<uint8_t *>(out.data() + at);
+    const int got = swr_convert(swr, &dst, room, in, inCount);
+    out.resize(at + std::max(got, 0));
+}
+
+SwrPtr monoFloatResampler(AVChannelLayout *inLayout, AVSampleFormat inFormat, int inRate, int outRate)
+{
+    SwrContext *swr = nullptr;
+    AVChannelLayout mono = AV_CHANNEL_LAYOUT_MONO;
+    if (swr_alloc_set_opts2(&swr, &mono, AV_SAMPLE_FMT_FLT, outRate, inLayout, inFormat, inRate, 0, nullptr) < 0)
+        return nullptr;
+    SwrPtr p(swr);
+    // Channels are averaged (FFmpeg's own downmix adds them at -3 dB each, which clips).
+    // SoX's resampler when FFmpeg has it: several times faster than the default engine.
+    av_opt_set_int(swr, "resampler", SWR_ENGINE_SOXR, 0);
+    const int n = std::max(inLayout->nb_channels, 1);
+    std::vector<double> matrix(size_t(n), 1.0 / n);
+    if (n > 1 && swr_set_matrix(swr, matrix.data(), n) < 0)
+        return nullptr;
+    if (swr_init(swr) < 0) {
+        av_opt_set_int(swr, "resampler", SWR_ENGINE_SWR, 0);
+        if (swr_init(swr) < 0)
+            return nullptr;
+    }
+    return p;
+}
+
+} // namespace
+
+AudioResult loadAudio(const QString &path, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+{
+    AudioResult r;
+    auto fail = [&](AudioStatus status, const QString &what) {
+        r.status = status;
+        r.error = QStringLiteral("%1: %2").arg(path, what);
+        r.audio = {};
+        return r;
+    };
+    quietFfmpegLog();
+    if (!QFileInfo(path).isFile())
+        return fail(AudioStatus::Unreadable, QStringLiteral("no such file"));
+    if (QFileInfo(path).size() == 0)
+        return fail(AudioStatus::Empty, QStringLiteral("the file is empty"));
+
+    AVFormatContext *rawFmt = nullptr;
+    const QByteArray local = QFile::encodeName(path);
+    int rc = avformat_open_input(&rawFmt, local.constData(), nullptr, nullptr);
+    if (rc < 0)
+        return fail(
+            AudioStatus::Unreadable, QStringLiteral("not a readable sound or video file (%1)").arg(avError(rc)));
+    std::unique_ptr<AVFormatContext, FormatInputDeleter> fmt(rawFmt);
+    if ((rc = avformat_find_stream_info(fmt.get(), nullptr)) < 0)
+        return fail(AudioStatus::Unreadable, QStringLiteral("cannot read its streams (%1)").arg(avError(rc)));
+    const AVCodec *codec = nullptr;
+    const int stream = av_find_best_stream(fmt.get(), AVMEDIA_TYPE_AUDIO, -1, -1, &codec, 0);
+    if (stream < 0 || !codec)
+        return fail(AudioStatus::Unreadable,
+            stream == AVERROR_DECODER_NOT_FOUND ? QStringLiteral("no decoder for its sound track")
+                                                : QStringLiteral("it has no sound track"));
+    std::unique_ptr<AVCodecContext, CodecDeleter> dec(avcodec_alloc_context3(codec));
+    if (!dec || avcodec_parameters_to_context(dec.get(), fmt->streams[stream]->codecpar) < 0
+        || avcodec_open2(dec.get(), codec, nullptr) < 0)
+        return fail(
+            AudioStatus::Unreadable, QStringLiteral("cannot open the %1 decoder").arg(QString::fromUtf8(codec->name)));
+
+    if (dec->ch_layout.order == AV_CHANNEL_ORDER_UNSPEC) {
+        const int n = dec->ch_layout.nb_channels > 0 ? dec->ch_layout.nb_channels : 1;
+        av_channel_layout_uninit(&dec->ch_layout);
+        av_channel_layout_default(&dec->ch_layout, n);
+    }
+    SwrPtr swr;
+    int swrRate = 0;
+    AVSampleFormat swrFormat = AV_SAMPLE_FMT_NONE;
+
+    std::unique_ptr<AVPacket, PacketDeleter> packet(av_packet_alloc());
+    std::unique_ptr<AVFrame, FrameDeleter> frame(av_frame_alloc());
+    const int64_t fileSize = fmt->pb ? avio_size(fmt->pb) : -1;
+    QVector<float> &out = r.audio.samples;
+    int badPackets = 0;
+    int64_t decodedFrames = 0;
+    double lastReport = -1;
+
+    auto drain = [&]() -> bool {
+        while (avcodec_receive_frame(dec.get(), frame.get()) >= 0) {
+            if (!swr || frame->sample_rate != swrRate || frame->format != swrFormat) {
+                if (swr)
+                    convertInto(swr.get(), nullptr, 0, kSpeechSampleRate, swrRate, out);
+                AVChannelLayout layout;
+                if (frame->ch_layout.nb_channels > 0 && frame->ch_layout.order != AV_CHANNEL_ORDER_UNSPEC)
+                    av_channel_layout_copy(&layout, &frame->ch_layout);
+                else
+                    av_channel_layout_default(&layout, std::max(frame->ch_layout.nb_channels, 1));
+                swrRate = frame->sample_rate;
+                swrFormat = AVSampleFormat(frame->format);
+                swr = monoFloatResampler(&layout, swrFormat, swrRate, kSpeechSampleRate);
+                av_channel_layout_uninit(&layout);
+                if (!swr)
+                    return false;
+            }
+            convertInto(swr.get(), const_cast<const uint8_t **>(frame->extended_data), frame->nb_samples,
+                kSpeechSampleRate, swrRate, out);
+            r.sourceDuration += double(frame->nb_samples) / std::max(frame->sample_rate, 1);
+            ++decodedFrames;
+            av_frame_unref(frame.get());
+        }
+        return true;
+    };
+
+    while ((rc = av_read_frame(fmt.get(), packet.get())) >= 0) {
+        if (isCancelled(cancel))
+            return fail(AudioStatus::Cancelled, QStringLiteral("cancelled"));
+        if (packet->stream_index == stream) {
+            if (avcodec_send_packet(dec.get(), packet.get()) < 0)
+                ++badPackets;
+            if (!drain())
+                return fail(AudioStatus::Unreadable, QStringLiteral("cannot convert its samples"));
+        }
+        av_packet_unref(packet.get());
+        if (progress && fileSize > 0) {
+            const double f = double(avio_tell(fmt->pb)) / double(fileSize);
+            if (f - lastReport >= 0.05) {
+                progress(std::min(f, 1.0), QStringLiteral("decoding"));
+                lastReport = f;
+            }
+        }
+    }
+    avcodec_send_packet(dec.get(), nullptr);
+    drain();
+    if (swr)
+        convertInto(swr.get(), nullptr, 0, kSpeechSampleRate, swrRate, out);
+
+    if (out.isEmpty()) {
+        if (badPackets > 0 || decodedFrames == 0)
+            return fail(decodedFrames == 0 && badPackets == 0 ? AudioStatus::Empty : AudioStatus::Unreadable,
+                badPackets > 0 ? QStringLiteral("its sound track cannot be decoded (corrupt data)")
+                               : QStringLiteral("it holds no sound"));
+        return fail(AudioStatus::Empty, QStringLiteral("it holds no sound"));
+    }
+    float peak = 0;
+    for (float s : out)
+        peak = std::max(peak, std::abs(s));
+    if (peak < 1e-3f)
+        return fail(AudioStatus::Silent,
+            QStringLiteral("it is silent (peak %1 dBFS)").arg(peak > 0 ? 20 * std::log10(peak) : -999.0, 0, 'f', 0));
+    r.audio.sampleRate = kSpeechSampleRate;
+    r.status = AudioStatus::Ok;
+    if (progress)
+        progress(1.0, QStringLiteral("decoding"));
+    return r;
+}
+
+Audio resampled(const Audio &audio, int rate)
+{
+    if (audio.sampleRate == rate || audio.isEmpty())
+        return Audio {audio.samples, rate};
+    AVChannelLayout mono = AV_CHANNEL_LAYOUT_MONO;
+    SwrPtr swr = monoFloatResampler(&mono, AV_SAMPLE_FMT_FLT, audio.sampleRate, rate);
+    Audio out;
+    out.sampleRate = rate;
+    if (!swr)
+        return out;
+    out.samples.reserve(qsizetype(double(audio.samples.size()) * rate / audio.sampleRate) + 64);
+    // In chunks: swr_convert sizes (and zeroes) its buffers by the input it is handed.
+    constexpr qsizetype kChunk = 1 << 15;
+    for (qsizetype at = 0; at < audio.samples.size(); at += kChunk) {
+        const uint8_t *in = reinterpret_cast<const uint8_t *>(audio.samples.constData() + at);
+        convertInto(
+            swr.get(), &in, int(std::min(kChunk, audio.samples.size() - at)), rate, audio.sampleRate, out.samples);
+    }
+    convertInto(swr.get(), nullptr, 0, rate, audio.sampleRate, out.samples);
+    return out;
+}
+
+namespace {
+
+bool writeWav(const QString &path, const Audio &audio, QString *error)
+{
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) {
+        *error = QStringLiteral("cannot write %1: %2").arg(path, f.errorString());
+        return false;
+    }
+    const quint32 dataBytes = quint32(audio.samples.size() * 2);
+    QByteArray h;
+    auto u32 = [&](quint32 v) {
+        for (int k = 0; k < 4; ++k)
+            h.append(char((v >> (8 * k)) & 0xff));
+    };
+    auto u16 = [&](quint16 v) {
+        h.append(char(v & 0xff));
+        h.append(char(v >> 8));
+    };
+    h.append("RIFF");
+    u32(36 + dataBytes);
+    h.append("WAVEfmt ");
+    u32(16);
+    u16(1); // PCM
+    u16(1); // mono
+    u32(quint32(audio.sampleRate));
+    u32(quint32(audio.sampleRate * 2));
+    u16(2);
+    u16(16);
+    h.append("data");
+    u32(dataBytes);
+    QByteArray pcm(qsizetype(dataBytes), Qt::Uninitialized);
+    for (qsizetype i = 0; i < audio.samples.size(); ++i) {
+        const float s = std::clamp(audio.samples[i], -1.0f, 1.0f);
+        const qint16 v = qint16(std::lround(s * 32767.0f));
+        pcm[2 * i] = char(v & 0xff);
+        pcm[2 * i + 1] = char((v >> 8) & 0xff);
+    }
+    f.write(h);
+    f.write(pcm);
+    if (!f.commit()) {
+        *error = QStringLiteral("cannot write %1: %2").arg(path, f.errorString());
+        return false;
+    }
+    return true;
+}
+
+struct FormatOutputDeleter
+{
+    void operator()(AVFormatContext *c) const
+    {
+        if (c->pb && !(c->oformat->flags & AVFMT_NOFILE))
+            avio_closep(&c->pb);
+        avformat_free_context(c);
+    }
+};
+
+} // namespace
+
+bool writeAudio(const QString &path, const Audio &audio, QString *error)
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix == QLatin1String("wav"))
+        return writeWav(path, audio, error);
+    quietFfmpegLog();
+    auto fail = [&](const QString &what) {
+        *error = QStringLiteral("cannot write %1: %2").arg(path, what);
+        return false;
+    };
+    const AVCodec *codec = nullptr;
+    if (suffix == QLatin1String("flac"))
+        codec = avcodec_find_encoder(AV_CODEC_ID_FLAC);
+    else if (suffix == QLatin1String("mp3"))
+        codec = avcodec_find_encoder(AV_CODEC_ID_MP3);
+    else if (suffix == QLatin1String("ogg"))
+        codec = avcodec_find_encoder_by_name("libvorbis");
+    else if (suffix == QLatin1String("opus"))
+        codec = avcodec_find_encoder_by_name("libopus");
+    else if (suffix == QLatin1String("m4a") || suffix == QLatin1String("aac"))
+        codec = avcodec_find_encoder(AV_CODEC_ID_AAC);
+    else
+        return fail(QStringLiteral("unknown sound format '.%1' (use wav, flac, mp3, ogg, opus or m4a)").arg(suffix));
+    if (!codec)
+        return fail(QStringLiteral("this FFmpeg has no encoder for .%1").arg(suffix));
+
+    const QByteArray local = QFile::encodeName(path);
+    AVFormatContext *rawOut = nullptr;
+    if (avformat_alloc_output_context2(&rawOut, nullptr, nullptr, local.constData()) < 0 || !rawOut)
+        return fail(QStringLiteral("no container for .%1").arg(suffix));
+    std::unique_ptr<AVFormatContext, FormatOutputDeleter> oc(rawOut);
+    std::unique_ptr<AVCodecContext, CodecDeleter> enc(avcodec_alloc_context3(codec));
+    enc->sample_fmt = codec->sample_fmts ? codec->sample_fmts[0] : AV_SAMPLE_FMT_FLTP;
+    int rate = audio.sampleRate;
+    if (codec->supported_samplerates) {
+        int best = 0;
+        for (const int *r = codec->supported_samplerates; *r; ++r) {
+            if (best == 0 || (std::abs(*r - rate) < std::abs(best - rate)) || (*r >= rate && best < rate))
+                best = *r;
+        }
+        rate = best;
+    }
+    enc->sample_rate = rate;
+    AVChannelLayout mono = AV_CHANNEL_LAYOUT_MONO;
+    av_channel_layout_copy(&enc->ch_layout, &mono);
+    enc->time_base = AVRational {1, rate};
+    if (suffix != QLatin1String("flac"))
+        enc->bit_rate = 64000;
+    if (oc->oformat->flags & AVFMT_GLOBALHEADER)
+        enc->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+    int rc = avcodec_open2(enc.get(), codec, nullptr);
+    if (rc < 0)
+        return fail(QStringLiteral("cannot open the %1 encoder (%2)").arg(QString::fromUtf8(codec->name), avError(rc)));
+    AVStream *st = avformat_new_stream(oc.get(), nullptr);
+    if (!st || avcodec_parameters_from_context(st->codecpar, enc.get()) < 0)
+        return fail(QStringLiteral("cannot add a sound stream"));
+    st->time_base = enc->time_base;
+    if (!(oc->oformat->flags & AVFMT_NOFILE) && (rc = avio_open(&oc->pb, local.constData(), AVIO_FLAG_WRITE)) < 0)
+        return fail(avError(rc));
+    if ((rc = avformat_write_header(oc.get(), nullptr)) < 0)
+        return fail(avError(rc));
+
+    // All samples in the encoder's format and rate at once (mono: planar = packed).
+    SwrContext *rawSwr = nullptr;
+    if (swr_alloc_set_opts2(
+            &rawSwr, &mono, enc->sample_fmt, rate, &mono, AV_SAMPLE_FMT_FLT, audio.sampleRate, 0, nullptr)
+            < 0
+        || swr_init(rawSwr) < 0) {
+        swr_free(&rawSwr);
+        return fail(QStringLiteral("cannot convert the samples"));
+    }
+    SwrPtr swr(rawSwr);
+    const int bytesPerSample = av_get_bytes_per_sample(enc->sample_fmt);
+    const int capacity = int(av_rescale_rnd(audio.samples.size(), rate, audio.sampleRate, AV_ROUND_UP)) + 256;
+    QByteArray converted(qsizetype(capacity) * bytesPerSample, Qt::Uninitialized);
+    uint8_t *dst = reinterpret_cast<uint8_t *>(converted.data());
+    const uint8_t *src = reinterpret_cast<const uint8_t *>(audio.samples.constData());
+    int total = swr_convert(swr.get(), &dst, capacity, &src, int(audio.samples.size()));
+    if (total >= 0) {
+        uint8_t *tail = dst + qsizetype(total) * bytesPerSample;
+        const int more = swr_convert(swr.get(), &tail, capacity - total, nullptr, 0);
+        total += std::max(more, 0);
+    }
+    if (total < 0)
+        return fail(QStringLiteral("cannot convert the samples"));
+
+    std::unique_ptr<AVFrame, FrameDeleter> frame(av_frame_alloc());
+    std::unique_ptr<AVPacket, PacketDeleter> pkt(av_packet_alloc());
+    const int frameSize = enc->frame_size > 0 ? enc->frame_size : 1024;
+    auto writePackets = [&]() -> bool {
+        while (avcodec_receive_packet(enc.get(), pkt.get()) >= 0) {
+            av_packet_rescale_ts(pkt.get(), enc->time_base, st->time_base);
+            pkt->stream_index = st->index;
+            if (av_interleaved_write_frame(oc.get(), pkt.get()) < 0)
+                return false;
+        }
+        return true;
+    };
+    for (int at = 0; at < total; at += frameSize) {
+        const int n = std::min(frameSize, total - at);
+        av_frame_unref(frame.get());
+        // Encoders with a fixed frame size want full frames: the last one is padded with silence.
+        const int frameSamples = (codec->capabilities & AV_CODEC_CAP_VARIABLE_FRAME_SIZE) ? n : frameSize;
+        frame->nb_samples = frameSamples;
+        frame->format = enc->sample_fmt;
+        frame->sample_rate = rate;
+        av_channel_layout_copy(&frame->ch_layout, &mono);
+        if (av_frame_get_buffer(frame.get(), 0) < 0)
+            return fail(QStringLiteral("out of memory"));
+        memset(frame->data[0], 0, size_t(frameSamples) * size_t(bytesPerSample));
+        memcpy(
+            frame->data[0], converted.constData() + qsizetype(at) * bytesPerSample, size_t(n) * size_t(bytesPerSample));
+        frame->pts = at;
+        if (avcodec_send_frame(enc.get(), frame.get()) < 0 || !writePackets())
+            return fail(QStringLiteral("encoding failed"));
+    }
+    avcodec_send_frame(enc.get(), nullptr);
+    if (!writePackets() || av_write_trailer(oc.get()) < 0)
+        return fail(QStringLiteral("encoding failed"));
+    return true;
+}
+
+} // namespace toonface

@@ -1,0 +1,39 @@
+#pragma once
+
+#include "speech/progress.h"
+
+#include <utility>
+#include <vector>
+
+namespace toonface {
+
+// Dynamic time warping between two feature sequences, multi-resolution (FastDTW-style: a
+// full DTW on averaged frames, refined level by level inside a corridor around the coarser
+// path), so that ten minutes of speech cost about as much as a few seconds at full DTW.
+//
+// Steps are symmetric (diagonal counts the local cost twice). A frame that is silence in one
+// sequence may be held against any frame of the other for `silenceCost` instead of its
+// distance: pauses one speaker makes and the other does not are absorbed without bending the
+// path elsewhere.
+struct DtwSequence
+{
+    const float *vectors = nullptr; // frames × dim
+    const float *silence = nullptr; // frames, 0..1 (may be null)
+    int frames = 0;
+};
+
+struct DtwOptions
+{
+    int dim = 0;
+    float silenceCost = 1.0f;
+    long maxFullCells = 4'000'000; // the coarsest level is a full DTW of at most this many cells
+    int radius = 6; // corridor half-width, in frames of the finer level
+};
+
+// The warping path from (0, 0) to (a.frames-1, b.frames-1), as (i in a, j in b) pairs;
+// empty when cancelled or a sequence is empty. `meanCost` (optional) receives the mean local
+// cost along the path.
+std::vector<std::pair<int, int>> dtwPath(
+    const DtwSequence &a, const DtwSequence &b, const DtwOptions &options, const std::atomic_bool *cancel = nullptr);
+
+} // namespace toonface

@@ -1,0 +1,305 @@
+#include "speech/features.h"
+
+#include <opencv2/core.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace toonface {
+
+namespace {
+
+constexpr int kWindow = 400; // 25 ms
+constexpr int kHopSamples = 160;
+constexpr int kFft = 1024; // twice the window and more: the autocorrelation does not wrap
+constexpr int kBins = kFft / 2 + 1;
+constexpr int kMelBands = 24;
+
+struct MelBank
+{
+    struct Band
+    {
+        int from, to;
+        std::vector<float> weights;
+    };
+    std::vector<Band> bands;
+    std::array<std::array<float, kMelBands>, SpeechFeatures::kCepstra> dct;
+    MelBank()
+    {
+        auto mel = [](double hz) { return 2595.0 * std::log10(1.0 + hz / 700.0); };
+        auto hz = [](double m) { return 700.0 * (std::pow(10.0, m / 2595.0) - 1.0); };
+        const double lo = mel(80), hi = mel(7000);
+        std::array<double, kMelBands + 2> edges;
+        for (int k = 0; k < kMelBands + 2; ++k)
+            edges[size_t(k)] = hz(lo + (hi - lo) * k / (kMelBands + 1)) * kFft / kSpeechSampleRate;
+        for (int b = 0; b < kMelBands; ++b) {
+            Band band;
+            band.from = int(std::floor(edges[size_t(b)]));
+            band.to = int(std::ceil(edges[size_t(b + 2)]));
+            for (int k = band.from; k <= band.to; ++k) {
+                const double l = edges[size_t(b)], c = edges[size_t(b + 1)], r = edges[size_t(b + 2)];
+                const double w = k < c ? (k - l) / (c - l) : (r - k) / (r - c);
+                band.weights.push_back(float(std::max(0.0, w)));
+            }
+            bands.push_back(std::move(band));
+        }
+        for (int c = 0; c < SpeechFeatures::kCepstra; ++c)
+            for (int b = 0; b < kMelBands; ++b)
+                dct[size_t(c)][size_t(b)] = float(std::cos(M_PI * (c + 1) * (b + 0.5) / kMelBands));
+    }
+};
+
+float percentile(std::vector<float> v, double p)
+{
+    if (v.empty())
+        return 0;
+    const size_t k = std::min(v.size() - 1, size_t(p * double(v.size() - 1)));
+    std::nth_element(v.begin(), v.begin() + qsizetype(k), v.end());
+    return v[k];
+}
+
+} // namespace
+
+const FeatureWeights &featureWeights()
+{
+    static const FeatureWeights w;
+    return w;
+}
+
+int SpeechFeatures::frameAt(double seconds) const
+{
+    return std::clamp(int(std::lround((seconds - 0.0125) / kHop)), 0, std::max(frames - 1, 0));
+}
+
+double SpeechFeatures::speechDuration() const
+{
+    double n = 0;
+    for (float s : silence)
+        n += s < 0.5f;
+    return n * kHop;
+}
+
+SpeechFeatures computeSpeechFeatures(const Audio &audio, const std::atomic_bool *cancel)
+{
+    static const MelBank melBank;
+    static const std::array<float, kWindow> hamming = [] {
+        std::array<float, kWindow> w;
+        for (int i = 0; i < kWindow; ++i)
+            w[size_t(i)] = float(0.54 - 0.46 * std::cos(2 * M_PI * i / (kWindow - 1)));
+        return w;
+    }();
+
+    SpeechFeatures f;
+    const qsizetype n = audio.samples.size();
+    f.frames = n >= kWindow ? int((n - kWindow) / kHopSamples) + 1 : 0;
+    if (f.frames == 0)
+        return f;
+    const int frames = f.frames;
+    std::vector<float> cep(size_t(frames) * SpeechFeatures::kCepstra);
+    f.logEnergy.resize(size_t(frames));
+    std::vector<float> band(static_cast<size_t>(frames));
+    f.voicing.resize(size_t(frames));
+
+    const int bandLo = 300 * kFft / kSpeechSampleRate, bandHi = 3000 * kFft / kSpeechSampleRate;
+    const int highLo = 3500 * kFft / kSpeechSampleRate, lowHi = 400 * kFft / kSpeechSampleRate;
+    std::vector<float> hf(static_cast<size_t>(frames)), lf(static_cast<size_t>(frames));
+    const int lagLo = kSpeechSampleRate / 400, lagHi = kSpeechSampleRate / 70;
+    std::array<float, kBins> power;
+    std::array<float, kMelBands> logMel;
+    // Frames go through OpenCV's real DFT a block at a time (rows), forward for the spectrum
+    // and inverse of the power spectrum for the autocorrelation. Both are in OpenCV's packed
+    // real layout: Re0, Re1, Im1, ..., Re(N/2-1), Im(N/2-1), Re(N/2).
+    constexpr int kBlock = 256;
+    cv::Mat windows(kBlock, kFft, CV_32F), spectra, powers(kBlock, kFft, CV_32F), autocorr;
+    for (int first = 0; first < frames; first += kBlock) {
+        if (isCancelled(cancel))
+            return {};
+        const int count = std::min(kBlock, frames - first);
+        windows.setTo(0);
+        for (int r = 0; r < count; ++r) {
+            const float *s = audio.samples.constData() + qsizetype(first + r) * kHopSamples;
+            float mean = 0;
+            for (int i = 0; i < kWindow; ++i)
+                mean += s[i];
+            mean /= kWindow;
+            float *row = windows.ptr<float>(r);
+            for (int i = 0; i < kWindow; ++i)
+                row[i] = (s[i] - mean) * hamming[size_t(i)];
+        }
+        cv::dft(windows, spectra, cv::DFT_ROWS, count);
+        for (int r = 0; r < count; ++r) {
+            const int t = first + r;
+            const float *z = spectra.ptr<float>(r);
+            power[0] = z[0] * z[0];
+            for (int k = 1; k < kBins - 1; ++k)
+                power[size_t(k)] = z[2 * k - 1] * z[2 * k - 1] + z[2 * k] * z[2 * k];
+            power[kBins - 1] = z[kFft - 1] * z[kFft - 1];
+            double total = 0, mid = 0, high = 0, low = 0;
+            for (int k = 0; k < kBins; ++k) {
+                total += power[size_t(k)];
+                if (k >= bandLo && k <= bandHi)
+                    mid += power[size_t(k)];
+                if (k >= highLo)
+                    high += power[size_t(k)];
+                if (k <= lowHi)
+                    low += power[size_t(k)];
+            }
+            f.logEnergy[size_t(t)] = float(std::log(total + 1e-9));
+            band[size_t(t)] = float(std::log(mid + 1e-9));
+            hf[size_t(t)] = float(std::log(high + 1e-9) - std::log(total + 1e-9));
+            lf[size_t(t)] = float(std::log(low + 1e-9) - std::log(total + 1e-9));
+            for (int b = 0; b < kMelBands; ++b) {
+                const auto &bd = melBank.bands[size_t(b)];
+                double e = 0;
+                for (int k = bd.from; k <= bd.to && k < kBins; ++k)
+                    e += bd.weights[size_t(k - bd.from)] * power[size_t(k)];
+                logMel[size_t(b)] = float(std::log(e + 1e-8));
+            }
+            for (int c = 0; c < SpeechFeatures::kCepstra; ++c) {
+                float acc = 0;
+                for (int b = 0; b < kMelBands; ++b)
+                    acc += melBank.dct[size_t(c)][size_t(b)] * logMel[size_t(b)];
+                cep[size_t(t) * SpeechFeatures::kCepstra + size_t(c)] = acc;
+            }
+            float *p = powers.ptr<float>(r);
+            p[0] = power[0];
+            for (int k = 1; k < kBins - 1; ++k) {
+                p[2 * k - 1] = power[size_t(k)];
+                p[2 * k] = 0;
+            }
+            p[kFft - 1] = power[kBins - 1];
+        }
+        cv::dft(powers, autocorr, cv::DFT_ROWS | cv::DFT_INVERSE | cv::DFT_REAL_OUTPUT, count);
+        for (int r = 0; r < count; ++r) {
+            const float *ac = autocorr.ptr<float>(r);
+            const float r0 = ac[0];
+            float best = 0;
+            if (r0 > 0) {
+                for (int lag = lagLo; lag <= lagHi; ++lag) {
+                    // Unbias for the window's overlap at this lag.
+                    const float v = ac[lag] / r0 * float(kWindow) / float(kWindow - lag);
+                    best = std::max(best, v);
+                }
+            }
+            f.voicing[size_t(first + r)] = std::clamp(best, 0.0f, 1.0f);
+        }
+    }
+
+    // Loudness: the mid band smoothed over ±2 frames.
+    f.loudness.resize(size_t(frames));
+    for (int t = 0; t < frames; ++t) {
+        double acc = 0;
+        int cnt = 0;
+        for (int d = -2; d <= 2; ++d) {
+            const int u = t + d;
+            if (u >= 0 && u < frames) {
+                acc += band[size_t(u)];
+                ++cnt;
+            }
+        }
+        f.loudness[size_t(t)] = float(acc / cnt);
+    }
+
+    // Silence: below a threshold between the noise floor and the speech level, softly.
+    f.noiseFloor = percentile(f.logEnergy, 0.05);
+    f.speechLevel = percentile(f.logEnergy, 0.95);
+    const float range = std::max(f.speechLevel - f.noiseFloor, 1e-3f);
+    // Speech lies within ~35 dB (ln 10^3.5 ≈ 8) of its loud frames; noise sits near the floor.
+    const float threshold = std::max(f.noiseFloor + 0.25f * range, f.speechLevel - 8.0f);
+    const float width = std::max(0.05f * range, 0.2f);
+    f.silence.resize(size_t(frames));
+    for (int t = 0; t < frames; ++t)
+        f.silence[size_t(t)] = 1.0f / (1.0f + std::exp((f.logEnergy[size_t(t)] - threshold) / width));
+
+    // Cepstral mean and variance normalisation over the speech frames.
+    const int C = SpeechFeatures::kCepstra;
+    std::array<double, SpeechFeatures::kCepstra> mean {}, var {};
+    double weight = 0;
+    for (int t = 0; t < frames; ++t) {
+        const double w = 1.0 - f.silence[size_t(t)];
+        weight += w;
+        for (int c = 0; c < C; ++c)
+            mean[size_t(c)] += w * cep[size_t(t) * C + size_t(c)];
+    }
+    const bool useAll = weight < 5;
+    if (useAll)
+        weight = frames;
+    for (int c = 0; c < C; ++c) {
+        if (useAll) {
+            mean[size_t(c)] = 0;
+            for (int t = 0; t < frames; ++t)
+                mean[size_t(c)] += cep[size_t(t) * C + size_t(c)];
+        }
+        mean[size_t(c)] /= weight;
+    }
+    for (int t = 0; t < frames; ++t) {
+        const double w = useAll ? 1.0 : 1.0 - f.silence[size_t(t)];
+        for (int c = 0; c < C; ++c) {
+            const double d = cep[size_t(t) * C + size_t(c)] - mean[size_t(c)];
+            var[size_t(c)] += w * d * d;
+        }
+    }
+    std::array<float, SpeechFeatures::kCepstra> inv;
+    for (int c = 0; c < C; ++c)
+        inv[size_t(c)] = float(1.0 / std::sqrt(var[size_t(c)] / weight + 1e-6));
+
+    // Broad, speaker-robust channels: loudness between its floor and level, the share of
+    // high (> 3.5 kHz: frication) and low (< 400 Hz: voice bar, nasals) energy, z-scored.
+    const float loudFloor = percentile(f.loudness, 0.05), loudLevel = percentile(f.loudness, 0.95);
+    const float loudRange = std::max(loudLevel - loudFloor, 1e-3f);
+    auto zscore = [&](std::vector<float> &v) {
+        double m = 0, w = 0;
+        for (int t = 0; t < frames; ++t) {
+            const double k = 1.0 - f.silence[size_t(t)];
+            m += k * v[size_t(t)];
+            w += k;
+        }
+        m /= std::max(w, 1e-6);
+        double var = 0;
+        for (int t = 0; t < frames; ++t) {
+            const double k = 1.0 - f.silence[size_t(t)];
+            var += k * (v[size_t(t)] - m) * (v[size_t(t)] - m);
+        }
+        const double sd = std::sqrt(var / std::max(w, 1e-6)) + 1e-3;
+        for (float &x : v)
+            x = float(std::clamp((x - m) / sd, -4.0, 4.0));
+    };
+    zscore(hf);
+    zscore(lf);
+
+    const FeatureWeights &w = featureWeights();
+    f.vectors.assign(size_t(frames) * SpeechFeatures::kDim, 0.0f);
+    auto norm = [&](int t, int c) {
+        const int u = std::clamp(t, 0, frames - 1);
+        return (cep[size_t(u) * C + size_t(c)] - float(mean[size_t(c)])) * inv[size_t(c)];
+    };
+    f.loudnessNorm.resize(size_t(frames));
+    for (int t = 0; t < frames; ++t)
+        f.loudnessNorm[size_t(t)] = std::clamp((f.loudness[size_t(t)] - loudFloor) / loudRange, 0.0f, 1.0f);
+    auto loud = [&](int t) {
+        const int u = std::clamp(t, 0, frames - 1);
+        return std::clamp((f.loudness[size_t(u)] - loudFloor) / loudRange, -0.5f, 1.5f);
+    };
+    auto at = [&](const std::vector<float> &v, int t) { return v[size_t(std::clamp(t, 0, frames - 1))]; };
+    for (int t = 0; t < frames; ++t) {
+        float *v = f.vectors.data() + size_t(t) * SpeechFeatures::kDim;
+        for (int c = 0; c < C; ++c) {
+            const float cw = c < w.broadCepstra ? w.cepstra : w.fineCepstra;
+            v[c] = cw * norm(t, c);
+            // Delta over ±2 frames (regression slope).
+            v[C + c]
+                = cw * w.delta * (2 * (norm(t + 2, c) - norm(t - 2, c)) + (norm(t + 1, c) - norm(t - 1, c))) / 10.0f;
+        }
+        float *x = v + 2 * C;
+        x[0] = w.loudness * loud(t);
+        x[1] = w.loudnessDelta * (2 * (loud(t + 2) - loud(t - 2)) + (loud(t + 1) - loud(t - 1))) / 10.0f * 5.0f;
+        x[2] = w.voicing * f.voicing[size_t(t)];
+        x[3] = w.high * at(hf, t);
+        x[4] = w.high * w.delta * (2 * (at(hf, t + 2) - at(hf, t - 2)) + (at(hf, t + 1) - at(hf, t - 1))) / 10.0f;
+        x[5] = w.low * at(lf, t);
+    }
+    return f;
+}
+
+} // namespace toonface

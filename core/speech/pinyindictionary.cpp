@@ -1,0 +1,401 @@
+#include "speech/pinyindictionary.h"
+
+#include <QFile>
+#include <QMutex>
+#include <QMutexLocker>
+
+#include <bzlib.h>
+
+#include <limits>
+#include <string_view>
+#include <vector>
+
+namespace toonface {
+
+namespace {
+
+// The whole of a bzip2 file, or of the plain file beside it; empty on failure.
+QByteArray readMaybeCompressed(const QString &bz2Path, QString *error)
+{
+    QString plain = bz2Path;
+    plain.chop(4);
+    if (QFile::exists(plain)) {
+        QFile f(plain);
+        if (f.open(QIODevice::ReadOnly))
+            return f.readAll();
+    }
+    QFile f(bz2Path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        *error = QStringLiteral("cannot read %1").arg(bz2Path);
+        return {};
+    }
+    const QByteArray packed = f.readAll();
+    bz_stream s {};
+    if (BZ2_bzDecompressInit(&s, 0, 0) != BZ_OK) {
+        *error = QStringLiteral("cannot start bzip2 decompression of %1").arg(bz2Path);
+        return {};
+    }
+    QByteArray out;
+    out.resize(std::max<qsizetype>(packed.size() * 6, 1 << 16));
+    s.next_in = const_cast<char *>(packed.constData());
+    s.avail_in = unsigned(packed.size());
+    int rc = BZ_OK;
+    qsizetype used = 0;
+    while (rc == BZ_OK) {
+        if (used == out.size())
+            out.resize(out.size() * 2);
+        s.next_out = out.data() + used;
+        s.avail_out = unsigned(std::min<qsizetype>(out.size() - used, std::numeric_limits<int>::max()));
+        const unsigned before = s.avail_out;
+        rc = BZ2_bzDecompress(&s);
+        used += before - s.avail_out;
+        if (rc == BZ_OK && s.avail_in == 0 && before == s.avail_out)
+            break; // truncated input
+    }
+    BZ2_bzDecompressEnd(&s);
+    if (rc != BZ_STREAM_END) {
+        *error = QStringLiteral("%1 is not a valid bzip2 file").arg(bz2Path);
+        return {};
+    }
+    out.resize(used);
+    return out;
+}
+
+using std::string_view;
+
+std::vector<string_view> splitView(string_view s, char sep)
+{
+    std::vector<string_view> out;
+    size_t from = 0;
+    while (true) {
+        const size_t at = s.find(sep, from);
+        out.push_back(s.substr(from, at == string_view::npos ? string_view::npos : at - from));
+        if (at == string_view::npos)
+            return out;
+        from = at + 1;
+    }
+}
+
+// Calls fn(line) for each line of `data`, without its '\n' (and '\r').
+template<typename Fn>
+void forEachLine(const QByteArray &data, Fn fn)
+{
+    const string_view all(data.constData(), size_t(data.size()));
+    size_t from = 0;
+    while (from < all.size()) {
+        size_t at = all.find('\n', from);
+        if (at == string_view::npos)
+            at = all.size();
+        string_view line = all.substr(from, at - from);
+        if (!line.empty() && line.back() == '\r')
+            line.remove_suffix(1);
+        fn(line);
+        from = at + 1;
+    }
+}
+
+QString utf8(string_view v)
+{
+    return QString::fromUtf8(v.data(), qsizetype(v.size()));
+}
+
+char32_t parseCodePoint(string_view field) // "U+9280"
+{
+    if (!field.starts_with("U+"))
+        return 0;
+    bool ok = false;
+    const uint v = QByteArray(field.data() + 2, qsizetype(field.size() - 2)).toUInt(&ok, 16);
+    return ok ? char32_t(v) : 0;
+}
+
+// parsePinyinSyllable, remembered: the tables repeat a few thousand spellings many times.
+std::optional<PinyinSyllable> parseCached(const QString &text)
+{
+    thread_local QHash<QString, std::optional<PinyinSyllable>> memo;
+    const auto it = memo.constFind(text);
+    if (it != memo.cend())
+        return *it;
+    const auto s = parsePinyinSyllable(text);
+    memo.insert(text, s);
+    return s;
+}
+
+void appendReading(QVector<PinyinSyllable> &list, const PinyinSyllable &s)
+{
+    if (!list.contains(s))
+        list.append(s);
+}
+
+// One Unihan reading value → its syllables, e.g. "0442.080:háng 0443.050:hàng",
+// "20811.060:háng,xìng", "xíng(2943) háng(218)", "xíng".
+QVector<PinyinSyllable> unihanSyllables(const QString &value)
+{
+    QVector<PinyinSyllable> out;
+    for (QString item : value.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        const qsizetype colon = item.indexOf(QLatin1Char(':'));
+        if (colon >= 0)
+            item = item.mid(colon + 1);
+        const qsizetype paren = item.indexOf(QLatin1Char('('));
+        if (paren >= 0)
+            item.truncate(paren);
+        for (const QString &one : item.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+            if (const auto s = parseCached(one))
+                appendReading(out, *s);
+        }
+    }
+    return out;
+}
+
+// Lines of a Rime dictionary after its YAML header ("..."): text, code, optional weight.
+template<typename Fn>
+void forEachRimeEntry(const QByteArray &data, Fn fn)
+{
+    bool body = false;
+    forEachLine(data, [&](string_view line) {
+        if (!body) {
+            body = line.starts_with("...");
+            return;
+        }
+        if (line.empty() || line.starts_with('#'))
+            return;
+        const auto cols = splitView(line, '\t');
+        if (cols.size() < 2)
+            return;
+        fn(utf8(cols[0]), utf8(cols[1]), cols.size() > 2 ? utf8(cols[2]) : QString());
+    });
+}
+
+double rimeWeight(const QString &w) // "98%" → 98, "4221" → 4221, "" → -1
+{
+    if (w.isEmpty())
+        return -1;
+    QString v = w.trimmed();
+    if (v.endsWith(QLatin1Char('%')))
+        v.chop(1);
+    bool ok = false;
+    const double d = v.toDouble(&ok);
+    return ok ? d : -1;
+}
+
+} // namespace
+
+std::shared_ptr<const PinyinDictionary> PinyinDictionary::shared(QString *error)
+{
+    static QMutex mutex;
+    static std::shared_ptr<const PinyinDictionary> dict;
+    static QString loadError;
+    QMutexLocker lock(&mutex);
+    if (!dict && loadError.isEmpty()) {
+        QString root = qEnvironmentVariable("TOONFACE_DICT_ROOT");
+        if (root.isEmpty())
+            root = QStringLiteral("/usr/share");
+        dict = load(root, &loadError);
+    }
+    if (!dict && error)
+        *error = loadError;
+    return dict;
+}
+
+std::shared_ptr<const PinyinDictionary> PinyinDictionary::load(const QString &root, QString *error)
+{
+    QString err;
+    std::shared_ptr<PinyinDictionary> d(new PinyinDictionary);
+
+    const QString readingsPath = root + QStringLiteral("/unicode/Unihan_Readings.txt.bz2");
+    const QByteArray readings = readMaybeCompressed(readingsPath, &err);
+    if (readings.isEmpty()) {
+        *error = QStringLiteral("Chinese character readings are missing (%1; install the Debian package unicode-data)")
+                     .arg(err);
+        return nullptr;
+    }
+    // Field order decides which reading comes first: kMandarin is the usual one.
+    static const string_view fields[] = {"kMandarin", "kHanyuPinlu", "kTGHZ2013", "kXHC1983", "kHanyuPinyin"};
+    QHash<char32_t, std::array<QVector<PinyinSyllable>, 5>> perField;
+    forEachLine(readings, [&](string_view line) {
+        if (!line.starts_with("U+"))
+            return;
+        const auto cols = splitView(line, '\t');
+        if (cols.size() < 3)
+            return;
+        for (int f = 0; f < 5; ++f) {
+            if (cols[1] == fields[f]) {
+                if (const char32_t c = parseCodePoint(cols[0]))
+                    perField[c][f] = unihanSyllables(utf8(cols[2]));
+            }
+        }
+    });
+    for (auto it = perField.cbegin(); it != perField.cend(); ++it) {
+        QVector<PinyinSyllable> all;
+        for (const auto &list : it.value())
+            for (const auto &s : list)
+                appendReading(all, s);
+        if (!all.isEmpty())
+            d->m_readings.insert(it.key(), all);
+    }
+    if (d->m_readings.size() < 1000) {
+        *error = QStringLiteral("%1 holds no Mandarin readings").arg(readingsPath);
+        return nullptr;
+    }
+
+    QHash<char32_t, char32_t> simplified;
+    const QByteArray variants = readMaybeCompressed(root + QStringLiteral("/unicode/Unihan_Variants.txt.bz2"), &err);
+    forEachLine(variants, [&](string_view line) {
+        if (!line.starts_with("U+"))
+            return;
+        const auto cols = splitView(line, '\t');
+        if (cols.size() >= 3 && cols[1] == "kSimplifiedVariant") {
+            const char32_t from = parseCodePoint(cols[0]);
+            const char32_t to = parseCodePoint(splitView(cols[2], ' ').front());
+            if (from && to && from != to)
+                simplified.insert(from, to);
+        }
+    });
+
+    const QString terraPath = root + QStringLiteral("/rime-data/terra_pinyin.dict.yaml");
+    QFile terra(terraPath);
+    if (!terra.open(QIODevice::ReadOnly)) {
+        *error
+            = QStringLiteral("the phrase dictionary %1 is missing (install the Debian package rime-data-terra-pinyin)")
+                  .arg(terraPath);
+        return nullptr;
+    }
+    QHash<char32_t, QVector<QPair<PinyinSyllable, double>>> charWeights;
+    forEachRimeEntry(terra.readAll(), [&](const QString &text, const QString &code, const QString &weight) {
+        const std::u32string han = text.toStdU32String();
+        const QStringList codes = code.split(QLatin1Char(' '), Qt::SkipEmptyParts);
+        if (han.empty() || size_t(codes.size()) != han.size())
+            return;
+        QVector<PinyinSyllable> reading;
+        for (const QString &c : codes) {
+            const auto s = parseCached(c);
+            if (!s)
+                return;
+            reading.append(*s);
+        }
+        if (han.size() == 1) {
+            const double w = rimeWeight(weight);
+            if (w >= 0)
+                charWeights[han[0]].append({reading[0], w});
+            return;
+        }
+        d->addPhrase(text, reading, false);
+        std::u32string simp = han;
+        for (char32_t &c : simp)
+            c = simplified.value(c, c);
+        if (simp != han)
+            d->addPhrase(QString::fromStdU32String(simp), reading, false);
+    });
+    // Terra lists phrases only where its own usual readings would be wrong, so a character's
+    // usual reading must be terra's when terra weighs several.
+    for (auto it = charWeights.begin(); it != charWeights.end(); ++it) {
+        auto &weighted = it.value();
+        if (weighted.size() < 2)
+            continue;
+        std::stable_sort(
+            weighted.begin(), weighted.end(), [](const auto &a, const auto &b) { return a.second > b.second; });
+        QVector<PinyinSyllable> ordered;
+        for (const auto &w : weighted)
+            appendReading(ordered, w.first);
+        for (const auto &s : d->m_readings.value(it.key()))
+            appendReading(ordered, s);
+        d->m_readings.insert(it.key(), ordered);
+    }
+
+    QFile simp(root + QStringLiteral("/rime-data/pinyin_simp.dict.yaml"));
+    if (simp.open(QIODevice::ReadOnly)) {
+        QHash<QString, QPair<QVector<PinyinSyllable>, double>> best;
+        forEachRimeEntry(simp.readAll(), [&](const QString &text, const QString &code, const QString &weight) {
+            const std::u32string han = text.toStdU32String();
+            const QStringList codes = code.split(QLatin1Char(' '), Qt::SkipEmptyParts);
+            if (han.size() < 2 || size_t(codes.size()) != han.size())
+                return;
+            QVector<PinyinSyllable> reading;
+            for (size_t i = 0; i < han.size(); ++i) {
+                const auto toneless = parseCached(codes[qsizetype(i)]);
+                if (!toneless)
+                    return;
+                PinyinSyllable s = *toneless;
+                // The tone of the character's own reading with this spelling.
+                for (const auto &r : d->m_readings.value(han[i])) {
+                    if (r.pinyin == s.pinyin) {
+                        s.tone = r.tone;
+                        break;
+                    }
+                }
+                reading.append(s);
+            }
+            const double w = rimeWeight(weight);
+            auto it = best.find(text);
+            if (it == best.end() || it->second < w)
+                best.insert(text, {reading, w});
+        });
+        for (auto it = best.cbegin(); it != best.cend(); ++it)
+            d->addPhrase(it.key(), it.value().first, false);
+    }
+    return d;
+}
+
+void PinyinDictionary::addPhrase(const QString &key, const QVector<PinyinSyllable> &reading, bool replace)
+{
+    if (!replace && m_phrases.contains(key))
+        return;
+    m_phrases.insert(key, reading);
+    m_maxPhraseLength = std::max(m_maxPhraseLength, int(reading.size()));
+}
+
+std::optional<QVector<PinyinSyllable>> PinyinDictionary::phrase(
+    const std::u32string &han, size_t from, size_t len) const
+{
+    const auto it = m_phrases.constFind(QString::fromUcs4(han.data() + from, qsizetype(len)));
+    if (it == m_phrases.cend())
+        return std::nullopt;
+    return *it;
+}
+
+QVector<PinyinSyllable> PinyinDictionary::readRun(const std::u32string &han) const
+{
+    const size_t n = han.size();
+    // best[i]: fewest words covering han[0, i), ties broken by the larger sum of squared
+    // word lengths (longer phrases win); from[i]: where the last word starts.
+    struct Cell
+    {
+        int words = std::numeric_limits<int>::max();
+        int squares = 0;
+        size_t from = 0;
+        bool phrase = false;
+    };
+    std::vector<Cell> best(n + 1);
+    best[0].words = 0;
+    for (size_t i = 0; i < n; ++i) {
+        if (best[i].words == std::numeric_limits<int>::max())
+            continue;
+        const size_t maxLen = std::min(n - i, size_t(m_maxPhraseLength));
+        for (size_t len = 1; len <= maxLen; ++len) {
+            const bool isPhrase = len > 1 && phrase(han, i, len).has_value();
+            if (len > 1 && !isPhrase)
+                continue;
+            Cell c {best[i].words + 1, best[i].squares + int(len * len), i, isPhrase};
+            Cell &t = best[i + len];
+            if (c.words < t.words || (c.words == t.words && c.squares > t.squares))
+                t = c;
+        }
+    }
+    QVector<PinyinSyllable> out;
+    out.resize(qsizetype(n));
+    for (size_t end = n; end > 0;) {
+        const Cell &c = best[end];
+        if (c.phrase) {
+            const auto reading = *phrase(han, c.from, end - c.from);
+            for (size_t k = c.from; k < end; ++k)
+                out[qsizetype(k)] = reading[qsizetype(k - c.from)];
+        } else {
+            const auto r = m_readings.constFind(han[c.from]);
+            out[qsizetype(c.from)]
+                = r != m_readings.cend() && !r->isEmpty() ? r->first() : PinyinSyllable {QString(), 5};
+        }
+        end = c.from;
+    }
+    return out;
+}
+
+} // namespace toonface

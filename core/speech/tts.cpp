@@ -1,0 +1,232 @@
+#include "speech/tts.h"
+
+#include "speech/pinyin.h"
+
+#include <QMutex>
+#include <QMutexLocker>
+
+#include <espeak-ng/speak_lib.h>
+
+#include <cstring>
+
+namespace toonface {
+
+namespace {
+
+QMutex &espeakMutex()
+{
+    static QMutex m;
+    return m;
+}
+
+// What the synthesis callback fills; only touched under espeakMutex().
+struct Collector
+{
+    std::vector<short> samples;
+    struct Word
+    {
+        int textPosition; // 1-based character position in the input
+        double start;
+    };
+    std::vector<Word> words;
+    struct Phoneme
+    {
+        QString name;
+        double start;
+    };
+    std::vector<Phoneme> phonemes; // in order; pauses included
+    std::vector<int> phonemeWord; // index into words (-1 before the first word)
+    const std::atomic_bool *cancel = nullptr;
+    const SpeechProgressFn *progress = nullptr;
+    double expectedSeconds = 1;
+    int rate = 22050;
+};
+
+Collector *g_collector = nullptr;
+
+int synthCallback(short *wav, int count, espeak_EVENT *events)
+{
+    Collector *c = g_collector;
+    if (!c)
+        return 1;
+    if (wav && count > 0)
+        c->samples.insert(c->samples.end(), wav, wav + count);
+    for (espeak_EVENT *e = events; e && e->type != espeakEVENT_LIST_TERMINATED; ++e) {
+        if (e->type == espeakEVENT_WORD) {
+            c->words.push_back({e->text_position, e->audio_position / 1000.0});
+        } else if (e->type == espeakEVENT_PHONEME) {
+            char name[9] = {};
+            std::memcpy(name, e->id.string, 8);
+            c->phonemes.push_back({QString::fromUtf8(name), e->audio_position / 1000.0});
+            c->phonemeWord.push_back(int(c->words.size()) - 1);
+        }
+    }
+    if (c->progress && *c->progress)
+        (*c->progress)(
+            std::min(0.99, double(c->samples.size()) / c->rate / c->expectedSeconds), QStringLiteral("speaking"));
+    return isCancelled(c->cancel) ? 1 : 0;
+}
+
+bool isPause(const QString &phoneme)
+{
+    return phoneme.startsWith(QLatin1Char('_'));
+}
+
+} // namespace
+
+QString ttsVoice(const TtsOptions &options, Language language)
+{
+    if (!options.voice.isEmpty())
+        return options.voice;
+    return language == Language::English ? QStringLiteral("en") : QStringLiteral("cmn-latn-pinyin");
+}
+
+QString ttsInputText(const Script &script, QVector<int> *offsets)
+{
+    QString text;
+    if (offsets)
+        offsets->clear();
+    for (const ScriptSyllable &s : script.syllables) {
+        if (!text.isEmpty())
+            text += QLatin1Char(' ');
+        if (offsets)
+            offsets->append(int(text.size()));
+        text += script.language == Language::English ? s.text : toneNumberSpelling({s.pinyin, s.tone});
+        if (s.phraseBreakAfter)
+            text += QLatin1Char(',');
+    }
+    text += QLatin1Char('.');
+    return text;
+}
+
+TtsResult synthesize(
+    const Script &script, const TtsOptions &options, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+{
+    TtsResult result;
+    if (script.syllables.isEmpty()) {
+        result.error = QStringLiteral("nothing to speak");
+        return result;
+    }
+    QMutexLocker lock(&espeakMutex());
+    // Note: espeak-ng carries state from one synthesis to the next (its pitch flutter), so the
+    // same request gives slightly different audio depending on what was spoken before.
+    static int sampleRate = 0;
+    if (sampleRate <= 0) {
+        sampleRate = espeak_Initialize(
+            AUDIO_OUTPUT_SYNCHRONOUS, 0, nullptr, espeakINITIALIZE_PHONEME_EVENTS | espeakINITIALIZE_DONT_EXIT);
+        if (sampleRate <= 0) {
+            result.error = QStringLiteral("espeak-ng cannot start: its data is missing (install espeak-ng-data)");
+            sampleRate = 0;
+            return result;
+        }
+        espeak_SetSynthCallback(synthCallback);
+    }
+    const QString voice = ttsVoice(options, script.language);
+    if (espeak_SetVoiceByName(voice.toUtf8().constData()) != EE_OK) {
+        result.error = QStringLiteral("espeak-ng has no voice '%1'").arg(voice);
+        return result;
+    }
+    espeak_SetParameter(espeakRATE, std::clamp(options.rate, 80, 450), 0);
+    espeak_SetParameter(espeakPITCH, std::clamp(options.pitch, 0, 100), 0);
+    espeak_SetParameter(espeakRANGE, std::clamp(options.pitchRange, 0, 100), 0);
+    espeak_SetParameter(espeakPUNCTUATION, espeakPUNCT_NONE, 0);
+
+    QVector<int> offsets;
+    const QString text = ttsInputText(script, &offsets);
+    const QByteArray utf8 = text.toUtf8();
+    Collector collector;
+    collector.cancel = cancel;
+    collector.progress = &progress;
+    collector.rate = sampleRate;
+    collector.expectedSeconds = std::max(0.5, script.syllables.size() * 60.0 / std::max(options.rate, 80) * 1.3);
+    g_collector = &collector;
+    const espeak_ERROR rc = espeak_Synth(
+        utf8.constData(), size_t(utf8.size()) + 1, 0, POS_CHARACTER, 0, espeakCHARS_UTF8, nullptr, nullptr);
+    espeak_Synchronize();
+    g_collector = nullptr;
+    if (isCancelled(cancel)) {
+        result.error = QStringLiteral("cancelled");
+        return result;
+    }
+    if (rc != EE_OK || collector.samples.empty()) {
+        result.error = QStringLiteral("espeak-ng could not speak the script");
+        return result;
+    }
+
+    result.audio.sampleRate = sampleRate;
+    result.audio.samples.resize(qsizetype(collector.samples.size()));
+    for (size_t i = 0; i < collector.samples.size(); ++i)
+        result.audio.samples[qsizetype(i)] = collector.samples[i] / 32768.0f;
+    const double total = result.audio.duration();
+
+    // Word events → syllables by their position in the input (character positions count
+    // code points from 1; the input is ASCII but for English words with accents, so map
+    // through UTF-16 offsets of the code points).
+    QVector<int> cpToUtf16;
+    for (int i = 0; i < text.size(); ++i) {
+        if (!text.at(i).isLowSurrogate())
+            cpToUtf16.append(i);
+    }
+    const int n = int(script.syllables.size());
+    QVector<int> wordUnit(qsizetype(collector.words.size()), -1);
+    result.units.resize(n);
+    QVector<bool> seen(n, false);
+    for (size_t w = 0; w < collector.words.size(); ++w) {
+        const int cp = collector.words[w].textPosition - 1;
+        const int at = cp >= 0 && cp < cpToUtf16.size() ? cpToUtf16[cp] : -1;
+        int unit = -1;
+        for (int k = n - 1; k >= 0; --k) {
+            if (at >= offsets[k]) {
+                unit = k;
+                break;
+            }
+        }
+        if (unit < 0)
+            continue;
+        wordUnit[qsizetype(w)] = unit;
+        if (!seen[unit]) {
+            result.units[unit].start = collector.words[w].start;
+            seen[unit] = true;
+        }
+    }
+    // A syllable espeak-ng gave no event of its own (rare) starts where its neighbours allow.
+    for (int k = 0; k < n; ++k) {
+        if (seen[k])
+            continue;
+        int next = k + 1;
+        while (next < n && !seen[next])
+            ++next;
+        const double before = k > 0 ? result.units[k - 1].start : 0.0;
+        const double after = next < n ? result.units[next].start : total;
+        result.units[k].start = before + (after - before) * (k > 0 ? 0.5 : 0.0);
+        seen[k] = true;
+    }
+    // Phonemes to their syllable; a syllable ends at the first pause after its last phoneme.
+    QVector<double> lastSound(n, -1), pauseAfter(n, -1);
+    for (size_t p = 0; p < collector.phonemes.size(); ++p) {
+        const int w = collector.phonemeWord[p];
+        const int unit = w >= 0 ? wordUnit[w] : -1;
+        if (unit < 0)
+            continue;
+        const auto &ph = collector.phonemes[p];
+        if (isPause(ph.name)) {
+            if (lastSound[unit] >= 0 && pauseAfter[unit] < 0)
+                pauseAfter[unit] = ph.start;
+            continue;
+        }
+        result.units[unit].phonemes.append({ph.name, ph.start});
+        lastSound[unit] = ph.start;
+        pauseAfter[unit] = -1;
+    }
+    for (int k = 0; k < n; ++k) {
+        const double next = k + 1 < n ? result.units[k + 1].start : total;
+        double end = pauseAfter[k] >= 0 ? pauseAfter[k] : next;
+        end = std::min(end, next);
+        result.units[k].end = std::max(end, result.units[k].start);
+    }
+    if (progress)
+        progress(1.0, QStringLiteral("speaking"));
+    return result;
+}
+
+} // namespace toonface

@@ -1,0 +1,278 @@
+#include "speech/aligner.h"
+#include "speech/audio.h"
+#include "speech/script.h"
+#include "speech/tts.h"
+
+#include <QFile>
+#include <QRandomGenerator>
+#include <QRegularExpression>
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace toonface;
+
+namespace {
+
+Script mandarin(const QString &text)
+{
+    return parseScript(text, Language::Mandarin).script;
+}
+
+QString sharedData()
+{
+    const QString env = qEnvironmentVariable("TOONFACE_DATA_DIR");
+    return env.isEmpty() ? QStringLiteral(TOONFACE_SHARED_DATA) : env;
+}
+
+// Median and 90th percentile of absolute onset errors, in ms.
+std::pair<double, double> onsetErrors(const AlignResult &r, const std::vector<double> &truth)
+{
+    std::vector<double> e;
+    for (int k = 0; k < r.syllables.size() && size_t(k) < truth.size(); ++k)
+        e.push_back(std::abs(r.syllables[k].start - truth[size_t(k)]) * 1000);
+    std::sort(e.begin(), e.end());
+    if (e.empty())
+        return {1e9, 1e9};
+    return {e[e.size() / 2], e[std::min(e.size() - 1, size_t(0.9 * double(e.size() - 1) + 0.5))]};
+}
+
+// The script spoken in another voice with leading and trailing silence, one pause the script
+// does not mark, and white noise `snrDb` under the speech; `truth` gets the onsets.
+Audio recording(const Script &script, const TtsOptions &voice, double snrDb, quint32 seed, std::vector<double> *truth)
+{
+    const TtsResult r = synthesize(script, voice);
+    const Audio spoken = resampled(r.audio, kSpeechSampleRate);
+    QRandomGenerator rng(seed);
+    const double lead = 0.4 + 0.4 * rng.generateDouble(), trail = 0.3 + 0.4 * rng.generateDouble();
+    const int pauseAfter = 2 + int(rng.bounded(std::max(1, int(script.syllables.size()) - 4)));
+    const double pause = 0.3;
+    const qsizetype cut = qsizetype(r.units[pauseAfter].start * kSpeechSampleRate);
+    Audio out;
+    out.samples.fill(0.0f, qsizetype(lead * kSpeechSampleRate));
+    out.samples += spoken.samples.mid(0, cut);
+    out.samples += QVector<float>(qsizetype(pause * kSpeechSampleRate), 0.0f);
+    out.samples += spoken.samples.mid(cut);
+    out.samples += QVector<float>(qsizetype(trail * kSpeechSampleRate), 0.0f);
+    double power = 0;
+    for (float s : spoken.samples)
+        power += double(s) * s;
+    power /= double(spoken.samples.size());
+    const double sigma = std::sqrt(power / std::pow(10.0, snrDb / 10));
+    for (float &s : out.samples) {
+        const double u1 = std::max(rng.generateDouble(), 1e-12), u2 = rng.generateDouble();
+        s += float(sigma * std::sqrt(-2 * std::log(u1)) * std::cos(2 * M_PI * u2));
+    }
+    truth->clear();
+    for (int k = 0; k < r.units.size(); ++k)
+        truth->push_back(lead + r.units[k].start + (k >= pauseAfter ? pause : 0.0));
+    return out;
+}
+
+struct Interval
+{
+    double start;
+    QString text;
+};
+
+// The intervals of tier `tier` of a Praat TextGrid (short or long text format).
+QVector<Interval> textGridTier(const QString &path, const QString &tier)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    QString text = QString::fromUtf8(f.readAll());
+    text.remove(QRegularExpression(QStringLiteral("\\[\\d+\\]")));
+    QStringList tokens;
+    const QRegularExpression tok(QStringLiteral("\"((?:[^\"]|\"\")*)\"|(-?\\d+(?:\\.\\d+)?(?:[eE][-+]?\\d+)?)"));
+    for (auto it = tok.globalMatch(text); it.hasNext();) {
+        const auto m = it.next();
+        tokens.append(m.capturedStart(1) >= 0 ? QStringLiteral("\"") + m.captured(1) : m.captured(2));
+    }
+    QVector<Interval> out;
+    for (int i = 0; i + 4 < tokens.size(); ++i) {
+        if (tokens[i] != QLatin1String("\"IntervalTier") || tokens[i + 1].mid(1) != tier)
+            continue;
+        const int count = tokens[i + 4].toInt();
+        for (int k = 0; k < count && i + 5 + 3 * k + 2 < tokens.size(); ++k)
+            out.append({tokens[i + 5 + 3 * k].toDouble(), tokens[i + 5 + 3 * k + 2].mid(1)});
+        break;
+    }
+    return out;
+}
+
+void checkWellFormed(const AlignResult &r, int n, double duration)
+{
+    QCOMPARE(r.syllables.size(), n);
+    for (int k = 0; k < n; ++k) {
+        const AlignedSyllable &s = r.syllables[k];
+        QVERIFY(s.start >= 0 && s.end <= duration + 0.02);
+        QVERIFY(s.end > s.start);
+        QVERIFY(s.confidence >= 0 && s.confidence <= 1);
+        if (k > 0)
+            QVERIFY(s.start >= r.syllables[k - 1].end - 1e-9);
+    }
+}
+
+} // namespace
+
+class TestAligner : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void syntheticSpeech_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("voice");
+        QTest::addColumn<int>("rate");
+        QTest::addColumn<int>("pitch");
+        QTest::addColumn<double>("snr");
+        // Voices, rates and pitches other than the reference's (cmn-latn-pinyin, matched rate).
+        QTest::newRow("female slow") << QStringLiteral("今天天气很好，我们去公园散步吧。") << "cmn-latn-pinyin+f2"
+                                     << 130 << 75 << 30.0;
+        QTest::newRow("male fast") << QStringLiteral("这个问题很难回答，请你再说一遍。") << "cmn-latn-pinyin+m3" << 220
+                                   << 35 << 25.0;
+        QTest::newRow("klatt noisy") << QStringLiteral("小明每天早上六点起床，然后去学校上课。")
+                                     << "cmn-latn-pinyin+klatt" << 150 << 50 << 15.0;
+    }
+    void syntheticSpeech()
+    {
+        QFETCH(QString, text);
+        QFETCH(QString, voice);
+        QFETCH(int, rate);
+        QFETCH(int, pitch);
+        QFETCH(double, snr);
+        const Script script = mandarin(text);
+        TtsOptions o;
+        o.voice = voice;
+        o.rate = rate;
+        o.pitch = pitch;
+        std::vector<double> truth;
+        const Audio rec = recording(script, o, snr, quint32(rate + pitch), &truth);
+        const AlignResult r = alignScript(rec, script);
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        checkWellFormed(r, int(script.syllables.size()), rec.duration());
+        const auto [median, p90] = onsetErrors(r, truth);
+        // Tolerances: the bench's synthetic set has a median of about 25 ms; one file may be
+        // worse, a broken aligner is far worse (hundreds of ms).
+        QVERIFY2(median <= 45, qPrintable(QStringLiteral("median onset error %1 ms").arg(median)));
+        QVERIFY2(p90 <= 200, qPrintable(QStringLiteral("90th percentile %1 ms").arg(p90)));
+        // Speech found where it is: not in the leading or trailing silence.
+        QVERIFY(r.speechStart > truth.front() - 0.1);
+        QVERIFY(r.speechEnd < rec.duration() - 0.2);
+    }
+
+    void longSpeechUsesTheCoarseToFinePath()
+    {
+        // 40 s: more DTW cells than one full matrix allows.
+        QString text;
+        for (int i = 0; i < 6; ++i)
+            text += QStringLiteral(
+                "春眠不觉晓，处处闻啼鸟。夜来风雨声，花落知多少。银行的工作人员说，明天下午三点以后可以来取钱。");
+        const Script script = mandarin(text);
+        TtsOptions o;
+        o.voice = QStringLiteral("cmn-latn-pinyin+f4");
+        o.rate = 150;
+        std::vector<double> truth;
+        const Audio rec = recording(script, o, 30, 5, &truth);
+        QVERIFY(rec.duration() > 35);
+        const AlignResult r = alignScript(rec, script);
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        checkWellFormed(r, int(script.syllables.size()), rec.duration());
+        const auto [median, p90] = onsetErrors(r, truth);
+        QVERIFY2(median <= 45 && p90 <= 200, qPrintable(QStringLiteral("%1 / %2 ms").arg(median).arg(p90)));
+    }
+
+    void realMandarin()
+    {
+        const QString dir = sharedData() + QStringLiteral("/speech/");
+        if (!QFile::exists(dir + QStringLiteral("SSB00050015_16k.wav")))
+            QSKIP("shared data (speech/SSB00050015_16k.wav) not present");
+        QString text;
+        std::vector<double> truth;
+        for (const Interval &w : textGridTier(dir + QStringLiteral("SSB00050015.TextGrid"), QStringLiteral("words"))) {
+            if (w.text.isEmpty() || w.text.startsWith(QLatin1Char('[')))
+                continue;
+            text += w.text;
+            truth.push_back(w.start);
+        }
+        QCOMPARE(int(truth.size()), 15);
+        const AudioResult audio = loadAudio(dir + QStringLiteral("SSB00050015_16k.wav"));
+        QVERIFY(audio.ok());
+        const Script script = mandarin(text);
+        const AlignResult r = alignScript(audio.audio, script);
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        checkWellFormed(r, 15, audio.audio.duration());
+        const auto [median, p90] = onsetErrors(r, truth);
+        // The targets of the speech issue for real Mandarin.
+        QVERIFY2(median <= 30, qPrintable(QStringLiteral("median %1 ms").arg(median)));
+        QVERIFY2(p90 <= 80, qPrintable(QStringLiteral("p90 %1 ms").arg(p90)));
+    }
+
+    void silenceCannotBeAligned()
+    {
+        Audio quiet;
+        for (int i = 0; i < 3 * kSpeechSampleRate; ++i)
+            quiet.samples.append(float(1e-4 * std::sin(i * 0.37)));
+        const AlignResult r = alignScript(quiet, mandarin(QStringLiteral("你好")));
+        QCOMPARE(r.status, AlignStatus::CannotAlign);
+        QVERIFY2(r.error.contains(QStringLiteral("no speech")), qPrintable(r.error));
+    }
+
+    void scriptFarTooLongForTheAudio()
+    {
+        const Script shortScript = mandarin(QStringLiteral("你好"));
+        const Audio spoken = resampled(synthesize(shortScript).audio, kSpeechSampleRate);
+        QString text;
+        for (int i = 0; i < 10; ++i)
+            text += QStringLiteral("今天天气很好我们去公园散步吧");
+        const AlignResult r = alignScript(spoken, mandarin(text));
+        QCOMPARE(r.status, AlignStatus::CannotAlign);
+        QVERIFY2(r.error.contains(QStringLiteral("far too long")), qPrintable(r.error));
+    }
+
+    void emptyInputs()
+    {
+        QCOMPARE(alignScript(Audio {}, mandarin(QStringLiteral("你好"))).status, AlignStatus::BadInput);
+        Audio some;
+        some.samples.fill(0.1f, 16000);
+        QCOMPARE(alignScript(some, Script {}).status, AlignStatus::BadInput);
+    }
+
+    void progressAndCancel()
+    {
+        const Script script = mandarin(QStringLiteral("今天天气很好"));
+        const Audio spoken = resampled(synthesize(script).audio, kSpeechSampleRate);
+        double last = -1;
+        bool monotone = true;
+        const AlignResult ok = alignScript(spoken, script, {}, [&](double f, const QString &) {
+            monotone = monotone && f >= last;
+            last = f;
+        });
+        QVERIFY(ok.ok());
+        QVERIFY(monotone);
+        QCOMPARE(last, 1.0);
+        std::atomic_bool cancel {true};
+        QCOMPARE(alignScript(spoken, script, {}, {}, &cancel).status, AlignStatus::Cancelled);
+    }
+
+    void referencePhonemesAreMappedInsideTheirSyllable()
+    {
+        const Script script = mandarin(QStringLiteral("喵喵"));
+        TtsOptions o;
+        o.voice = QStringLiteral("cmn-latn-pinyin+f3");
+        const Audio spoken = resampled(synthesize(script, o).audio, kSpeechSampleRate);
+        const AlignResult r = alignScript(spoken, script);
+        QVERIFY(r.ok());
+        for (const AlignedSyllable &s : r.syllables) {
+            QVERIFY(!s.phonemes.isEmpty());
+            for (const TtsPhoneme &p : s.phonemes)
+                QVERIFY(p.start >= s.start - 1e-9 && p.start <= s.end + 1e-9);
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(TestAligner)
+#include "tst_aligner.moc"
