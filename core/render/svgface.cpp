@@ -238,6 +238,11 @@ constexpr double kLowerLipSpread = 1.5; // method B: the lower lip rounder than 
 constexpr double kTeethHeight = 0.07;
 constexpr double kTongueHeight = 0.06;
 constexpr double kHairInset = 0.15; // how far the hair's hidden closing runs inside the face
+// Curves of moving parts are fitted through their targets to this tolerance (pixels), not the
+// fitting functions' default 0.5 px: with a loose tolerance a control point jumps by up to 2/3 px
+// when the fitting error crosses it, so an animated mouth or lid would pop between frames and
+// its geometry would not follow the pose continuously (which SMIL interpolation relies on).
+constexpr double kMovingFitTolerance = 1e-3;
 
 struct Pt
 {
@@ -419,7 +424,7 @@ void makeEyebrows(const Pt &P, const Style &style, double es0, std::vector<Part>
         }
         case EyebrowVariant::Bezier: {
             PathData d;
-            d.moveTo(outer).cubic(fitBezierThrough(outer, (a + b) / 2.0, inner));
+            d.moveTo(outer).cubic(fitBezierThrough(outer, (a + b) / 2.0, inner, 1.0, kMovingFitTolerance));
             out->push_back({id, false, "path", {{"d", d.data()}}, "eyebrows", StrokeOnly});
             break;
         }
@@ -434,9 +439,9 @@ void makeEyebrows(const Pt &P, const Style &style, double es0, std::vector<Part>
             const QPointF innerBottom = inner - up * (0.45 * t);
             PathData d;
             d.moveTo(outer)
-                .cubic(fitBezierThrough(outer, mid + up * (0.5 * t), innerTop))
+                .cubic(fitBezierThrough(outer, mid + up * (0.5 * t), innerTop, 1.0, kMovingFitTolerance))
                 .lineTo(innerBottom)
-                .cubic(fitBezierThrough(innerBottom, mid - up * (0.5 * t), outer))
+                .cubic(fitBezierThrough(innerBottom, mid - up * (0.5 * t), outer, 1.0, kMovingFitTolerance))
                 .close();
             out->push_back({id, false, "path", {{"d", d.data()}}, "eyebrows", FillOnly});
             break;
@@ -450,8 +455,8 @@ void makeEyebrows(const Pt &P, const Style &style, double es0, std::vector<Part>
 Part makeJaw(const Pt &P, const SvgFaceGeometry &g)
 {
     const QPointF left = P("2.14"), right = P("2.13");
-    const QVector<CubicBezier> chain
-        = fitBezierChain({left, P("2.1"), right}, {P("2.12"), P("2.11")}, {g.jawStartTangent, g.jawEndTangent});
+    const QVector<CubicBezier> chain = fitBezierChain(
+        {left, P("2.1"), right}, {P("2.12"), P("2.11")}, {g.jawStartTangent, g.jawEndTangent}, kMovingFitTolerance);
     // Starts and ends a little up the face's sides, along them, so the jaw's fill overlaps the
     // face's and no seam shows; the stroke there lies on the face's own.
     const double overlap = kJawOverlap * g.unit;
@@ -463,8 +468,8 @@ Part makeJaw(const Pt &P, const SvgFaceGeometry &g)
 void makeMouth(const Pt &P, double es0, std::vector<Part> *out)
 {
     const QPointF l = P("8.4"), r = P("8.3");
-    const CubicBezier innerTop = fitBezierThrough(l, P("2.2"), r);
-    const CubicBezier innerBottom = fitBezierThrough(r, P("2.3"), l, kLowerLipSpread);
+    const CubicBezier innerTop = fitBezierThrough(l, P("2.2"), r, 1.0, kMovingFitTolerance);
+    const CubicBezier innerBottom = fitBezierThrough(r, P("2.3"), l, kLowerLipSpread, kMovingFitTolerance);
     PathData inner;
     inner.moveTo(l).cubic(innerTop).cubic(innerBottom).close();
     out->push_back({"mouth-inner", true, "path", {{"d", inner.data()}}, "mouth-inner", FillOnly});
@@ -486,14 +491,17 @@ void makeMouth(const Pt &P, double es0, std::vector<Part> *out)
 
     PathData upper;
     upper.moveTo(l)
-        .cubic(fitBezierThrough(l, P("8.9"), P("8.1")))
-        .cubic(fitBezierThrough(P("8.1"), P("8.10"), r))
+        .cubic(fitBezierThrough(l, P("8.9"), P("8.1"), 1.0, kMovingFitTolerance))
+        .cubic(fitBezierThrough(P("8.1"), P("8.10"), r, 1.0, kMovingFitTolerance))
         .cubic(reversed(innerTop))
         .close();
     out->push_back({"mouth-upper-lip", true, "path", {{"d", upper.data()}}, "lips"});
 
     PathData lower;
-    lower.moveTo(l).cubic(reversed(innerBottom)).cubic(fitBezierThrough(r, P("8.2"), l, kLowerLipSpread)).close();
+    lower.moveTo(l)
+        .cubic(reversed(innerBottom))
+        .cubic(fitBezierThrough(r, P("8.2"), l, kLowerLipSpread, kMovingFitTolerance))
+        .close();
     out->push_back({"mouth-lower-lip", true, "path", {{"d", lower.data()}}, "lips"});
 }
 
@@ -504,8 +512,8 @@ void makeEye(const Pt &P, const SvgFaceGeometry &g, bool left, std::vector<Part>
     const QPointF b = P(left ? "3.8" : "3.7");
     const QPointF lowerLid = P(left ? "3.4" : "3.3");
     const QPointF ball = P(left ? "3.6" : "3.5");
-    const CubicBezier upper = fitBezierThrough(a, upperLid, b);
-    const CubicBezier lower = fitBezierThrough(b, lowerLid, a);
+    const CubicBezier upper = fitBezierThrough(a, upperLid, b, 1.0, kMovingFitTolerance);
+    const CubicBezier lower = fitBezierThrough(b, lowerLid, a, 1.0, kMovingFitTolerance);
     PathData outline;
     outline.moveTo(a).cubic(upper).cubic(lower).close();
     const QByteArray eye = outline.data();
