@@ -235,8 +235,12 @@ constexpr double kCuteNoseScale = 0.6;
 constexpr double kJawOverlap = 3.0; // thesis pixels (ES0/100) the jaw reaches up behind the face
 constexpr double kThickBrow = 0.085;
 constexpr double kLowerLipSpread = 1.5; // method B: the lower lip rounder than thirds
-constexpr double kTeethHeight = 0.07;
-constexpr double kTongueHeight = 0.06;
+// The upper teeth and the tongue take fixed shares of the mouth opening (of the distance
+// between the lips' inner edges). Fixed shares keep them linear in the pose like the rest of the
+// mouth, so they ease exactly with it and an SMIL export interpolates them between key frames
+// (a fixed height would need many more key frames).
+constexpr double kTeethShare = 0.3;
+constexpr double kTongueShare = 0.28;
 constexpr double kHairInset = 0.15; // how far the hair's hidden closing runs inside the face
 // Curves of moving parts are fitted through their targets to this tolerance (pixels), not the
 // fitting functions' default 0.5 px: with a loose tolerance a control point jumps by up to 2/3 px
@@ -465,7 +469,7 @@ Part makeJaw(const Pt &P, const SvgFaceGeometry &g)
     return {"jaw", true, "path", {{"d", d.data()}}, "jaw"};
 }
 
-void makeMouth(const Pt &P, double es0, std::vector<Part> *out)
+void makeMouth(const Pt &P, std::vector<Part> *out)
 {
     const QPointF l = P("8.4"), r = P("8.3");
     const CubicBezier innerTop = fitBezierThrough(l, P("2.2"), r, 1.0, kMovingFitTolerance);
@@ -478,13 +482,11 @@ void makeMouth(const Pt &P, double es0, std::vector<Part> *out)
     // Blending control points blends the curves point by point, so they always stay inside
     // the open mouth (no clipping needed) and vanish when it closes.
     const CubicBezier innerBottomForward = reversed(innerBottom);
-    const double opening = length(P("2.3") - P("2.2"));
-    auto share = [&](double size, double most) { return opening > 1e-9 ? std::min(most, size * es0 / opening) : 0.0; };
-    const CubicBezier tongueTop = blend(innerBottomForward, innerTop, share(kTongueHeight, 0.45));
+    const CubicBezier tongueTop = blend(innerBottomForward, innerTop, kTongueShare);
     PathData tongue;
     tongue.moveTo(l).cubic(innerBottomForward).cubic(reversed(tongueTop)).close();
     out->push_back({"mouth-tongue", true, "path", {{"d", tongue.data()}}, "tongue", FillOnly});
-    const CubicBezier teethEdge = blend(innerTop, innerBottomForward, share(kTeethHeight, 0.4));
+    const CubicBezier teethEdge = blend(innerTop, innerBottomForward, kTeethShare);
     PathData teeth;
     teeth.moveTo(l).cubic(innerTop).cubic(reversed(teethEdge)).close();
     out->push_back({"mouth-teeth", true, "path", {{"d", teeth.data()}}, "teeth", FillOnly});
@@ -710,7 +712,7 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
         makeEyebrows(P, style, g.es0, &parts);
     if (componentStyle(style.components, "jaw").visible)
         parts.push_back(makeJaw(P, g));
-    makeMouth(P, g.es0, &parts);
+    makeMouth(P, &parts);
     makeEye(P, g, true, &parts);
     makeEye(P, g, false, &parts);
     std::erase_if(parts, [&](const Part &p) { return !componentStyle(style.components, p.styleKey).visible; });
