@@ -652,11 +652,6 @@ bool layerFragment(const QByteArray &content, QByteArray *fragment, QString *err
 
 } // namespace
 
-SvgFace::SvgFace(const FaceModel &face, const Style &style)
-    : m_face(face)
-    , m_style(style)
-{ }
-
 namespace {
 
 SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
@@ -701,13 +696,17 @@ SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
     return g;
 }
 
-std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, const Style &style, const Pose &pose)
+// The parts in drawing order; only those that depend on the pose unless `withStatic`.
+std::vector<Part> buildParts(
+    const SvgFaceGeometry &g, const FaceModel &face, const Style &style, const Pose &pose, bool withStatic = true)
 {
     Points posed = posedPoints(face, pose);
     applyStyleRules(posed, g, style);
     const Pt P {posed};
-    std::vector<Part> parts = g.staticParts;
-    parts.reserve(parts.size() + 24);
+    std::vector<Part> parts;
+    parts.reserve(g.staticParts.size() + 24);
+    if (withStatic)
+        parts = g.staticParts;
     if (componentStyle(style.components, "eyebrows").visible)
         makeEyebrows(P, style, g.es0, &parts);
     if (componentStyle(style.components, "jaw").visible)
@@ -717,6 +716,22 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
     makeEye(P, g, false, &parts);
     std::erase_if(parts, [&](const Part &p) { return !componentStyle(style.components, p.styleKey).visible; });
     return parts;
+}
+
+FacePart facePart(const Part &p, const SvgFaceGeometry &g)
+{
+    FacePart f;
+    f.id = latin1(p.id);
+    f.layer = p.dynamic ? QStringLiteral("dynamic") : QStringLiteral("static");
+    f.element = latin1(p.element);
+    for (const auto &[name, value] : p.geometry)
+        f.geometry.insert(latin1(name), QString::fromLatin1(value));
+    f.styleKey = latin1(p.styleKey);
+    for (const auto &[name, value] : paintAttributes(componentStyle(g.components, p.styleKey), p.paint, g.unit))
+        f.paint.insert(latin1(name), QString::fromLatin1(value));
+    if (p.clipPath)
+        f.clipPath = latin1(p.clipPath);
+    return f;
 }
 
 QByteArray headTransformText(const SvgFaceGeometry &g, const HeadPose &head)
@@ -735,6 +750,25 @@ QByteArray headTransformText(const SvgFaceGeometry &g, const HeadPose &head)
 }
 
 } // namespace
+
+struct SvgFace::Geometry
+{
+    SvgFaceGeometry g;
+    QVector<FacePart> staticParts; // g.staticParts that are visible, for parts()
+};
+
+SvgFace::SvgFace(const FaceModel &face, const Style &style)
+    : m_face(face)
+    , m_style(style)
+{
+    auto geometry = std::make_shared<Geometry>();
+    geometry->g = buildGeometry(face, style);
+    for (const Part &p : geometry->g.staticParts) {
+        if (componentStyle(style.components, p.styleKey).visible)
+            geometry->staticParts.append(facePart(p, geometry->g));
+    }
+    m_geometry = std::move(geometry);
+}
 
 bool SvgFace::addLayerFile(const QString &svgPath, QString *error)
 {
@@ -766,35 +800,23 @@ void SvgFace::addLayer(const QByteArray &svgContent)
 
 QVector<FacePart> SvgFace::parts(const Pose &pose) const
 {
-    const SvgFaceGeometry g = buildGeometry(m_face, m_style);
-    const std::vector<Part> built = buildParts(g, m_face, m_style, pose);
-    QVector<FacePart> out;
-    out.reserve(qsizetype(built.size()));
-    for (const Part &p : built) {
-        FacePart f;
-        f.id = latin1(p.id);
-        f.layer = p.dynamic ? QStringLiteral("dynamic") : QStringLiteral("static");
-        f.element = latin1(p.element);
-        for (const auto &[name, value] : p.geometry)
-            f.geometry.insert(latin1(name), QString::fromLatin1(value));
-        f.styleKey = latin1(p.styleKey);
-        for (const auto &[name, value] : paintAttributes(componentStyle(g.components, p.styleKey), p.paint, g.unit))
-            f.paint.insert(latin1(name), QString::fromLatin1(value));
-        if (p.clipPath)
-            f.clipPath = latin1(p.clipPath);
-        out.append(f);
-    }
+    const SvgFaceGeometry &g = m_geometry->g;
+    const std::vector<Part> posed = buildParts(g, m_face, m_style, pose, false);
+    QVector<FacePart> out = m_geometry->staticParts;
+    out.reserve(out.size() + qsizetype(posed.size()));
+    for (const Part &p : posed)
+        out.append(facePart(p, g));
     return out;
 }
 
 QString SvgFace::headTransform(const HeadPose &head) const
 {
-    return QString::fromLatin1(headTransformText(buildGeometry(m_face, m_style), head));
+    return QString::fromLatin1(headTransformText(m_geometry->g, head));
 }
 
 QByteArray SvgFace::svg(const Pose &pose) const
 {
-    const SvgFaceGeometry g = buildGeometry(m_face, m_style);
+    const SvgFaceGeometry &g = m_geometry->g;
     const std::vector<Part> parts = buildParts(g, m_face, m_style, pose);
     // Without a photo (a face placed by hand), the frame holds the points with equal margins.
     QSize size = m_face.imageSize();
