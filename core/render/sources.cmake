@@ -1,4 +1,6 @@
 list(APPEND TOONFACE_CORE_SOURCES
   render/curves.h render/curves.cpp
   render/style.h render/style.cpp
-  render/svgface.h render/svgface.cpp)
+  render/svgface.h render/svgface.cpp
+  render/smilexport.h render/smilexport.cpp
+  render/framerenderer.h render/framerenderer.cpp)
