@@ -1243,7 +1243,8 @@ QByteArray playerScript(QSizeF canvas)
     if (t >= length) { stop(); return; }
     if (audible(t)) {
       if (audio.paused) startAudio(t);
-      else if (Math.abs(audio.currentTime + offset - t) > 0.03) svg.setCurrentTime(audio.currentTime + offset);
+      // Put the animation back on the audio clock when it drifts more than a frame.
+      else if (Math.abs(audio.currentTime + offset - t) > 0.04) svg.setCurrentTime(audio.currentTime + offset);
     }
     requestAnimationFrame(tick);
   }
@@ -1581,117 +1582,22 @@ bool framesDocument(const Drawing &d, const TimelineEvaluator &evaluator, const 
     return true;
 }
 
-enum class Output { Svg, Html };
-
-QByteArray exportAnimation(const FaceModel &face, const Style &style, const Timeline &timeline,
-    const MouthShapeSet &shapes, const AnimationExportOptions &options, Output output, QString *error)
+struct Prepared
 {
-    QString why;
-    auto fail = [&](const QString &message) {
-        if (error)
-            *error = message;
-        return QByteArray();
-    };
-    const TimelineEvaluator evaluator(timeline, face, shapes);
-    Drawing d {SvgFace(face, style), {}, {}, {}};
-    if (!prepareDrawing(timeline, shapes, evaluator, options, &d, &why))
-        return fail(why);
+    TimelineEvaluator evaluator;
+    Drawing drawing;
     AudioSource audio;
-    if (!resolveAudio(timeline, evaluator.duration(), options, &audio, &why))
-        return fail(why);
+};
+
+std::optional<Prepared> prepare(const FaceModel &face, const Style &style, const Timeline &timeline,
+    const MouthShapeSet &shapes, const AnimationExportOptions &options, QString *error)
+{
+    Prepared p {TimelineEvaluator(timeline, face, shapes), {SvgFace(face, style), {}, {}, {}}, {}};
+    if (!prepareDrawing(timeline, shapes, p.evaluator, options, &p.drawing, error)
+        || !resolveAudio(timeline, p.evaluator.duration(), options, &p.audio, error))
+        return std::nullopt;
     report(options, 0.0);
-
-    QByteArray out;
-    if (output == Output::Svg) {
-        const bool ok = options.mode == AnimationExportOptions::Mode::Frames
-            ? framesDocument(d, evaluator, timeline, audio, options, &out, &why)
-            : smilDocument(d, evaluator, timeline, audio, true, options, &out, &why);
-        if (!ok)
-            return fail(why);
-        report(options, 1.0);
-        return out;
-    }
-
-    QByteArray svg;
-    if (!smilDocument(d, evaluator, timeline, audio, false, options, &svg, &why))
-        return fail(why);
-    out += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-           "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-           "<title>Toonface animation</title>\n<style>\n"
-           "body { margin: 0; background: #eee; font-family: sans-serif; }\n"
-           "#tf-stage { display: flex; flex-direction: column; align-items: center; gap: 8px; padding: 8px; }\n"
-           "#tf-stage > svg { display: block; width: auto; height: calc(100vh - 80px); max-width: 100%; background: "
-           "#fff; }\n"
-           "#tf-controls { display: flex; gap: 8px; align-items: center; width: min(100%, 640px); }\n"
-           "#tf-controls > audio, #tf-seek { flex: 1; }\n"
-           "</style>\n</head>\n<body>\n<div id=\"tf-stage\">\n";
-    out += svg;
-    out += "<div id=\"tf-controls\">";
-    if (!audio.uri.isEmpty()) {
-        out += "<audio id=\"tf-audio\" controls preload=\"auto\" src=\"";
-        appendEscaped(out, audio.uri, true);
-        out += "\"></audio>";
-    } else {
-        out += "<button id=\"tf-toggle\" type=\"button\">Play</button>"
-               "<input id=\"tf-seek\" type=\"range\" min=\"0\" step=\"0.01\" value=\"0\" max=\"";
-        appendFixed(out, quantize(evaluator.duration(), 3), 3);
-        out += "\">";
-    }
-    out += "</div>\n</div>\n<script>\n(function () {\n  var offset = ";
-    appendFixed(out, quantize(audio.offset, 6), 6);
-    out += ";\n  var length = ";
-    appendFixed(out, quantize(evaluator.duration(), 6), 6);
-    out += R"(;
-  var svg = document.querySelector('#tf-stage > svg');
-  var audio = document.getElementById('tf-audio');
-  svg.pauseAnimations();
-  svg.setCurrentTime(0);
-  if (audio) {
-    // The audio clock leads: the animation follows it on play, pause, seek and every frame.
-    var lock = function () {
-      var t = audio.currentTime + offset;
-      if (Math.abs(svg.getCurrentTime() - t) > 0.02) svg.setCurrentTime(t);
-    };
-    var tick = function () {
-      if (audio.paused) return;
-      lock();
-      requestAnimationFrame(tick);
-    };
-    audio.addEventListener('play', function () { lock(); svg.unpauseAnimations(); requestAnimationFrame(tick); });
-    audio.addEventListener('pause', function () { svg.pauseAnimations(); lock(); });
-    audio.addEventListener('ended', function () { if (length > audio.currentTime + offset) svg.unpauseAnimations(); });
-    ['seeking', 'seeked', 'timeupdate', 'loadedmetadata'].forEach(function (e) { audio.addEventListener(e, lock); });
-    return;
-  }
-  var toggle = document.getElementById('tf-toggle');
-  var seek = document.getElementById('tf-seek');
-  var playing = false;
-  var show = function () { seek.value = svg.getCurrentTime(); toggle.textContent = playing ? 'Pause' : 'Play'; };
-  var tick = function () {
-    if (!playing) return;
-    if (svg.getCurrentTime() >= length) { playing = false; svg.pauseAnimations(); }
-    show();
-    requestAnimationFrame(tick);
-  };
-  toggle.addEventListener('click', function () {
-    playing = !playing;
-    if (playing) {
-      if (svg.getCurrentTime() >= length) svg.setCurrentTime(0);
-      svg.unpauseAnimations();
-      requestAnimationFrame(tick);
-    } else {
-      svg.pauseAnimations();
-    }
-    show();
-  });
-  seek.addEventListener('input', function () { svg.setCurrentTime(parseFloat(seek.value)); });
-})();
-</script>
-</body>
-</html>
-)";
-    report(options, 1.0);
-    return out;
+    return p;
 }
 
 } // namespace
@@ -1699,13 +1605,38 @@ QByteArray exportAnimation(const FaceModel &face, const Style &style, const Time
 QByteArray exportSmilSvg(const FaceModel &face, const Style &style, const Timeline &timeline,
     const MouthShapeSet &shapes, const AnimationExportOptions &options, QString *error)
 {
-    return exportAnimation(face, style, timeline, shapes, options, Output::Svg, error);
+    QString why;
+    QByteArray out;
+    const std::optional<Prepared> p = prepare(face, style, timeline, shapes, options, &why);
+    const bool ok = p
+        && (options.mode == AnimationExportOptions::Mode::Frames
+                ? framesDocument(p->drawing, p->evaluator, timeline, p->audio, options, &out, &why)
+                : smilDocument(p->drawing, p->evaluator, timeline, p->audio, true, options, &out, &why));
+    if (!ok) {
+        if (error)
+            *error = why;
+        return {};
+    }
+    report(options, 1.0);
+    return out;
 }
 
-QByteArray exportHtmlPlayer(const FaceModel &face, const Style &style, const Timeline &timeline,
+std::optional<SmilElement> exportSmilElement(const FaceModel &face, const Style &style, const Timeline &timeline,
     const MouthShapeSet &shapes, const AnimationExportOptions &options, QString *error)
 {
-    return exportAnimation(face, style, timeline, shapes, options, Output::Html, error);
+    QString why;
+    SmilElement e;
+    const std::optional<Prepared> p = prepare(face, style, timeline, shapes, options, &why);
+    if (!p || !smilDocument(p->drawing, p->evaluator, timeline, p->audio, false, options, &e.svg, &why)) {
+        if (error)
+            *error = why;
+        return std::nullopt;
+    }
+    e.audioUri = p->audio.uri;
+    e.audioOffset = p->audio.offset;
+    e.duration = p->evaluator.duration();
+    report(options, 1.0);
+    return e;
 }
 
 } // namespace toonface

@@ -3,4 +3,5 @@ list(APPEND TOONFACE_CORE_SOURCES
   render/style.h render/style.cpp
   render/svgface.h render/svgface.cpp
   render/smilexport.h render/smilexport.cpp
+  render/htmlplayer.h render/htmlplayer.cpp
   render/framerenderer.h render/framerenderer.cpp)

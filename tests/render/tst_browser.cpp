@@ -4,6 +4,7 @@
 #include "face/facemodel.h"
 #include "face/fapu.h"
 #include "render/framerenderer.h"
+#include "render/htmlplayer.h"
 #include "render/smilexport.h"
 #include "render/svgface.h"
 

@@ -3,6 +3,7 @@
 #include "anim/timeline.h"
 #include "anim/timelineevaluator.h"
 #include "face/pose.h"
+#include "render/htmlplayer.h"
 #include "render/smilexport.h"
 #include "render/style.h"
 #include "render/svgface.h"
