@@ -5,6 +5,7 @@
 #include "face/emotion.h"
 #include "io/project.h"
 #include "render/framerenderer.h"
+#include "render/htmlplayer.h"
 #include "render/smilexport.h"
 #include "render/svgface.h"
 #include "render/videoencoder.h"
@@ -28,8 +29,8 @@ bool outputKind(const QString &path, OutputKind *kind)
         return true;
     }
     const QString suffix = QFileInfo(path).suffix().toLower();
-    static const std::pair<const char *, OutputKind> kinds[] = {{"svg", OutputKind::Svg},
-        {"html", OutputKind::Html}, {"htm", OutputKind::Html}, {"mp4", OutputKind::Mp4}, {"gif", OutputKind::Gif}};
+    static const std::pair<const char *, OutputKind> kinds[] = {{"svg", OutputKind::Svg}, {"html", OutputKind::Html},
+        {"htm", OutputKind::Html}, {"mp4", OutputKind::Mp4}, {"gif", OutputKind::Gif}};
     for (const auto &[name, k] : kinds) {
         if (suffix == QLatin1StringView(name)) {
             *kind = k;
@@ -92,26 +93,28 @@ int writeVideoOutput(const QString &path, OutputKind kind, const SvgFace &face, 
 int runAnimate(const Command &self, const QStringList &args)
 {
     QCommandLineParser parser;
-    const QCommandLineOption audio(QStringLiteral("audio"), QStringLiteral("The speech recording."), QStringLiteral("A"));
+    const QCommandLineOption audio(
+        QStringLiteral("audio"), QStringLiteral("The speech recording."), QStringLiteral("A"));
     const QCommandLineOption script(
         QStringLiteral("script"), QStringLiteral("The recording's script (a UTF-8 text file)."), QStringLiteral("S"));
     const QCommandLineOption say(
         QStringLiteral("say"), QStringLiteral("Speak this text with the built-in voice."), QStringLiteral("TEXT"));
     const QCommandLineOption video(
         QStringLiteral("video"), QStringLiteral("Drive the face by a video of the person."), QStringLiteral("CLIP"));
-    const QCommandLineOption lang(
-        QStringLiteral("lang"), QStringLiteral("Language of the script: cmn or en (default: detected)."), QStringLiteral("cmn|en"));
+    const QCommandLineOption lang(QStringLiteral("lang"),
+        QStringLiteral("Language of the script: cmn or en (default: detected)."), QStringLiteral("cmn|en"));
     const QCommandLineOption emotion(QStringLiteral("emotion"),
         QStringLiteral("Expression while speaking: neutral, smile, sad, angry or surprise."), QStringLiteral("NAME"),
         QStringLiteral("neutral"));
     const QCommandLineOption noBlink(QStringLiteral("no-blink"), QStringLiteral("Do not blink."));
-    const QCommandLineOption fps(
-        QStringLiteral("fps"), QStringLiteral("Frames per second (default 25)."), QStringLiteral("N"), QStringLiteral("25"));
+    const QCommandLineOption fps(QStringLiteral("fps"), QStringLiteral("Frames per second (default 25)."),
+        QStringLiteral("N"), QStringLiteral("25"));
     const QCommandLineOption style(QStringLiteral("style"),
-        QStringLiteral("Drawing style: %1.").arg(Style::presetNames().join(QStringLiteral(", "))), QStringLiteral("NAME"));
-    const QCommandLineOption projectOut(
-        QStringLiteral("project"), QStringLiteral("Also save the result as a project."), QStringLiteral("OUT.toonface"));
-    const QCommandLineOption output(QStringList{QStringLiteral("o"), QStringLiteral("output")},
+        QStringLiteral("Drawing style: %1.").arg(Style::presetNames().join(QStringLiteral(", "))),
+        QStringLiteral("NAME"));
+    const QCommandLineOption projectOut(QStringLiteral("project"), QStringLiteral("Also save the result as a project."),
+        QStringLiteral("OUT.toonface"));
+    const QCommandLineOption output(QStringList {QStringLiteral("o"), QStringLiteral("output")},
         QStringLiteral("OUT.svg, OUT.html, OUT.mp4, OUT.gif, or DIR/ for PNG frames."), QStringLiteral("OUT"));
     parser.addOptions({audio, script, say, video, lang, emotion, noBlink, fps, style, projectOut, output});
     parser.addPositionalArgument(QStringLiteral("INPUT"), QStringLiteral("A photo or a project."));
@@ -121,7 +124,8 @@ int runAnimate(const Command &self, const QStringList &args)
     if (helped)
         return ExitOk;
     if (parser.positionalArguments().size() != 1)
-        return fail(ExitUsage, QStringLiteral("animate takes one photo or project (usage: toonface-cli %1)").arg(self.usage));
+        return fail(
+            ExitUsage, QStringLiteral("animate takes one photo or project (usage: toonface-cli %1)").arg(self.usage));
     if (!parser.isSet(output))
         return fail(ExitUsage, QStringLiteral("animate needs -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"));
     OutputKind kind;
@@ -129,9 +133,11 @@ int runAnimate(const Command &self, const QStringList &args)
         return fail(ExitUsage,
             QStringLiteral("cannot tell the output type of '%1': use .svg, .html, .mp4, .gif or a folder ending in /")
                 .arg(parser.value(output)));
-    const int sources = int(parser.isSet(audio) || parser.isSet(script)) + int(parser.isSet(say)) + int(parser.isSet(video));
+    const int sources
+        = int(parser.isSet(audio) || parser.isSet(script)) + int(parser.isSet(say)) + int(parser.isSet(video));
     if (sources != 1)
-        return fail(ExitUsage, QStringLiteral("animate needs exactly one of --audio with --script, --say TEXT or --video CLIP"));
+        return fail(ExitUsage,
+            QStringLiteral("animate needs exactly one of --audio with --script, --say TEXT or --video CLIP"));
     if (parser.isSet(audio) != parser.isSet(script))
         return fail(ExitUsage, QStringLiteral("--audio and --script go together"));
     if (parser.isSet(video))
@@ -143,7 +149,8 @@ int runAnimate(const Command &self, const QStringList &args)
     const auto expression = emotionFromName(parser.value(emotion));
     if (!expression)
         return fail(ExitUsage,
-            QStringLiteral("unknown --emotion '%1' (neutral, smile, sad, angry or surprise)").arg(parser.value(emotion)));
+            QStringLiteral("unknown --emotion '%1' (neutral, smile, sad, angry or surprise)")
+                .arg(parser.value(emotion)));
     QString language = parser.value(lang);
     if (!language.isEmpty() && language != QLatin1StringView("cmn") && language != QLatin1StringView("en"))
         return fail(ExitUsage, QStringLiteral("unknown --lang '%1' (cmn or en)").arg(language));
@@ -159,7 +166,8 @@ int runAnimate(const Command &self, const QStringList &args)
 
     const QString inputPath = parser.positionalArguments().constFirst();
     if (QFileInfo(inputPath).suffix().toLower() == QLatin1StringView("json"))
-        return fail(ExitUsage, QStringLiteral("animate takes a photo or a project, not a face JSON (%1)").arg(inputPath));
+        return fail(
+            ExitUsage, QStringLiteral("animate takes a photo or a project, not a face JSON (%1)").arg(inputPath));
     FaceInput input;
     if (const int code = loadFaceInput(inputPath, DetectOptions {}, &input); code != ExitOk)
         return code;
@@ -233,9 +241,11 @@ int runAnimate(const Command &self, const QStringList &args)
 }
 
 const CommandRegistrar registrar({QStringLiteral("animate"),
-    QStringLiteral("Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF or PNG frames)."),
-    QStringLiteral("animate IMAGE|PROJECT (--audio A --script S | --say TEXT | --video CLIP) [--emotion NAME] "
-                   "[--no-blink] [--fps N] [--style NAME] [--project OUT.toonface] -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"),
+    QStringLiteral(
+        "Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF or PNG frames)."),
+    QStringLiteral(
+        "animate IMAGE|PROJECT (--audio A --script S | --say TEXT | --video CLIP) [--emotion NAME] "
+        "[--no-blink] [--fps N] [--style NAME] [--project OUT.toonface] -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"),
     runAnimate});
 
 } // namespace

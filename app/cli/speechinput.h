@@ -10,11 +10,11 @@ namespace toonface::cli {
 // Where the speech of an animation comes from: a recording with its script, or text to say.
 struct SpeechRequest
 {
-    QString audioPath;  // with scriptPath
+    QString audioPath; // with scriptPath
     QString scriptPath;
-    QString sayText;    // or this, spoken by the built-in voice
-    QString language;   // "cmn", "en" or empty (detected from the script)
-    QString workDir;    // where a synthesized recording is written
+    QString sayText; // or this, spoken by the built-in voice
+    QString language; // "cmn", "en" or empty (detected from the script)
+    QString workDir; // where a synthesized recording is written
     QString outputBase; // the file name (without folder and suffix) a synthesized recording takes
 };
 

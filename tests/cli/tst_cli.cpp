@@ -1,5 +1,6 @@
 #include "face/averageface.h"
 #include "io/project.h"
+#include "render/videoencoder.h"
 
 #include <QFile>
 #include <QImage>
@@ -266,6 +267,112 @@ private Q_SLOTS:
         QString viewBox;
         QVERIFY(isWellFormedSvg(svg, &viewBox));
         QCOMPARE(viewBox, QStringLiteral("0 0 320 400"));
+    }
+
+    void animateUsageErrors_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        const QString in = QStringLiteral("face.toonface");
+        QTest::newRow("no output") << QStringList {
+            QStringLiteral("animate"), in, QStringLiteral("--say"), QStringLiteral("ni3 hao3")};
+        QTest::newRow("no speech") << QStringList {
+            QStringLiteral("animate"), in, QStringLiteral("-o"), QStringLiteral("a.svg")};
+        QTest::newRow("two speeches") << QStringList {QStringLiteral("animate"), in, QStringLiteral("--say"),
+            QStringLiteral("ni3"), QStringLiteral("--audio"), QStringLiteral("a.wav"), QStringLiteral("--script"),
+            QStringLiteral("s.txt"), QStringLiteral("-o"), QStringLiteral("a.svg")};
+        QTest::newRow("audio without script") << QStringList {QStringLiteral("animate"), in, QStringLiteral("--audio"),
+            QStringLiteral("a.wav"), QStringLiteral("-o"), QStringLiteral("a.svg")};
+        QTest::newRow("unknown output type") << QStringList {QStringLiteral("animate"), in, QStringLiteral("--say"),
+            QStringLiteral("ni3"), QStringLiteral("-o"), QStringLiteral("a.avi")};
+        QTest::newRow("bad fps") << QStringList {QStringLiteral("animate"), in, QStringLiteral("--say"),
+            QStringLiteral("ni3"), QStringLiteral("--fps"), QStringLiteral("0"), QStringLiteral("-o"),
+            QStringLiteral("a.svg")};
+        QTest::newRow("video not available") << QStringList {QStringLiteral("animate"), in, QStringLiteral("--video"),
+            QStringLiteral("clip.mpg"), QStringLiteral("-o"), QStringLiteral("a.svg")};
+    }
+
+    void animateUsageErrors()
+    {
+        QFETCH(QStringList, args);
+        const Run r = cli(args);
+        QCOMPARE(r.code, 2);
+        QVERIFY2(isOneErrorLine(r.err), r.err.constData());
+    }
+
+    // The main job: a face talks from text alone, as SMIL SVG, HTML and MP4 with sound.
+    void animateSaysText()
+    {
+        Project project;
+        project.face = averageFace(QRectF(60, 80, 200, 240), QSize(320, 400));
+        const QString projectPath = path(QStringLiteral("talker.toonface"));
+        QString error;
+        QVERIFY2(saveProject(project, projectPath, &error), qPrintable(error));
+
+        const QString svg = path(QStringLiteral("talk.svg"));
+        const QString saved = path(QStringLiteral("talk-project.toonface"));
+        Run r = cli({QStringLiteral("animate"), projectPath, QStringLiteral("--say"),
+            QStringLiteral("ni3 hao3, shi4 jie4"), QStringLiteral("--emotion"), QStringLiteral("smile"),
+            QStringLiteral("--project"), saved, QStringLiteral("-o"), svg});
+        QCOMPARE(r.code, 0);
+        QString viewBox;
+        QVERIFY(isWellFormedSvg(svg, &viewBox));
+        QFile svgFile(svg);
+        QVERIFY(svgFile.open(QIODevice::ReadOnly));
+        const QByteArray content = svgFile.readAll();
+        QVERIFY(content.contains("<animate "));
+        QVERIFY(content.contains("data:audio/"));
+        QVERIFY2(QFile::exists(path(QStringLiteral("talk.wav"))), "the spoken recording is kept beside the output");
+        const auto reloaded = loadProject(saved, &error);
+        QVERIFY2(reloaded, qPrintable(error));
+        QVERIFY(!reloaded->timeline.isEmpty());
+        QCOMPARE(reloaded->script, QStringLiteral("ni3 hao3, shi4 jie4"));
+
+        const QString html = path(QStringLiteral("talk.html"));
+        QCOMPARE(cli({QStringLiteral("animate"), saved, QStringLiteral("--say"), QStringLiteral("ni3 hao3"),
+                         QStringLiteral("-o"), html})
+                     .code,
+            0);
+        QFile htmlFile(html);
+        QVERIFY(htmlFile.open(QIODevice::ReadOnly));
+        QVERIFY(htmlFile.readAll().contains("<audio"));
+
+        const QString mp4 = path(QStringLiteral("talk.mp4"));
+        r = cli({QStringLiteral("animate"), projectPath, QStringLiteral("--say"), QStringLiteral("ni3 hao3"),
+            QStringLiteral("--fps"), QStringLiteral("20"), QStringLiteral("-o"), mp4});
+        QCOMPARE(r.code, 0);
+        const auto info = probeMedia(mp4, &error);
+        QVERIFY2(info, qPrintable(error));
+        QVERIFY(info->hasAudio);
+        QCOMPARE(info->fps, 20.0);
+        QVERIFY(info->audioDurationS > 0.3);
+        QVERIFY2(std::abs(info->frameCount / 20.0 - info->audioDurationS) < 0.1, "frames span the sound");
+    }
+
+    void animateCannotAlign()
+    {
+        Project project;
+        project.face = averageFace(QRectF(60, 80, 200, 240), QSize(320, 400));
+        const QString projectPath = path(QStringLiteral("aligner.toonface"));
+        QString error;
+        QVERIFY(saveProject(project, projectPath, &error));
+        // One spoken syllable against a script of forty.
+        const QString wav = path(QStringLiteral("one.wav"));
+        QCOMPARE(cli({QStringLiteral("say"), QStringLiteral("hao3"), QStringLiteral("-o"), wav}).code, 0);
+        const QString script = path(QStringLiteral("long.txt"));
+        QFile f(script);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(
+            QStringLiteral("我们今天一起去公园散步然后回家吃饭我们今天一起去公园散步然后回家吃饭我们今天一起去公园散步")
+                .toUtf8());
+        f.close();
+        Run r = cli({QStringLiteral("animate"), projectPath, QStringLiteral("--audio"), wav, QStringLiteral("--script"),
+            script, QStringLiteral("-o"), path(QStringLiteral("x.svg"))});
+        QCOMPARE(r.code, 5);
+        QVERIFY2(isOneErrorLine(r.err), r.err.constData());
+        r = cli({QStringLiteral("animate"), projectPath, QStringLiteral("--audio"), path(QStringLiteral("nope.wav")),
+            QStringLiteral("--script"), script, QStringLiteral("-o"), path(QStringLiteral("x.svg"))});
+        QCOMPARE(r.code, 3);
+        QVERIFY(r.err.contains("nope.wav"));
     }
 
     void unwritableOutput()
