@@ -7,4 +7,5 @@ list(APPEND TOONFACE_CORE_SOURCES
 set_source_files_properties(detect/detector.cpp PROPERTIES COMPILE_OPTIONS "-O2")
 list(APPEND TOONFACE_CORE_SOURCES
   detect/tsai.h detect/tsai.cpp
-  detect/regions.h detect/regions.cpp)
+  detect/regions.h detect/regions.cpp
+  detect/classic.h detect/classic.cpp)

@@ -33,15 +33,15 @@ TsaiThreshold tsaiThreshold(const std::vector<double> &histogram)
     if (t.z1 - t.z0 <= 0)
         return t;
     t.p0 = (t.z1 - t.m1) / (t.z1 - t.z0);
-    // The p0-tile: the first level whose cumulative share reaches p0 (a relative tolerance
-    // keeps an exact two-level image on its lower level despite rounding).
-    double cumulative = 0;
-    t.threshold = int(histogram.size()) - 1;
+    // The p0-tile of a discrete histogram: the level whose cumulative share is nearest p0
+    // (the first such level on a tie), so a bin that straddles p0 goes to the side that
+    // holds most of it.
+    double cumulative = 0, bestGap = 2;
     for (size_t j = 0; j < histogram.size(); ++j) {
         cumulative += histogram[j] / n;
-        if (cumulative >= t.p0 - 1e-9) {
+        if (histogram[j] > 0 && std::abs(cumulative - t.p0) < bestGap - 1e-12) {
+            bestGap = std::abs(cumulative - t.p0);
             t.threshold = int(j);
-            break;
         }
     }
     t.valid = true;

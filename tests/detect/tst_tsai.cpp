@@ -57,10 +57,12 @@ void TestTsai::knownHistogram_data()
     QTest::newRow("ramp") << std::vector<double> {1, 2, 3, 4, 5, 6, 7, 8};
     QTest::newRow("bimodal") << std::vector<double> {9, 20, 9, 1, 0, 0, 2, 10, 30, 12, 3};
     QTest::newRow("skewed") << std::vector<double> {50, 10, 5, 2, 1, 1, 1};
+    // Sparse edges: most pixels flat, the p0-tile falls inside the edge bin's lower part.
+    QTest::newRow("sparse edges") << std::vector<double> {970, 0, 0, 0, 0, 25, 0, 5};
 }
 
 // Against the closed form written out here from the moments (Tsai 1985, eqs. for c0, c1,
-// z0, z1, p0), with the threshold as the p0-tile.
+// z0, z1, p0), with the threshold as the p0-tile (the occupied level nearest p0).
 void TestTsai::knownHistogram()
 {
     QFETCH(std::vector<double>, histogram);
@@ -83,11 +85,13 @@ void TestTsai::knownHistogram()
     QVERIFY(std::abs(p0 * z0 * z0 + (1 - p0) * z1 * z1 - m2) < 1e-9 * std::max(1.0, m2));
     QVERIFY(std::abs(p0 * z0 * z0 * z0 + (1 - p0) * z1 * z1 * z1 - m3) < 1e-8 * std::max(1.0, m3));
     int expected = -1;
-    double cumulative = 0;
-    for (size_t j = 0; j < histogram.size() && expected < 0; ++j) {
+    double cumulative = 0, gap = 2;
+    for (size_t j = 0; j < histogram.size(); ++j) {
         cumulative += histogram[j] / n;
-        if (cumulative >= p0 - 1e-9)
+        if (histogram[j] > 0 && std::abs(cumulative - p0) < gap - 1e-12) {
+            gap = std::abs(cumulative - p0);
             expected = int(j);
+        }
     }
 
     const TsaiThreshold t = tsaiThreshold(histogram);
