@@ -1,8 +1,10 @@
 #include "detect/classic.h"
+#include "detect/detector.h"
 
 #include <QDir>
 #include <QPainter>
 #include <QRandomGenerator>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <cmath>
@@ -81,6 +83,7 @@ private Q_SLOTS:
     void verticalCut();
     void drawnFace();
     void graceHopper();
+    void throughDetector();
 };
 
 void TestClassic::score_data()
@@ -356,6 +359,30 @@ void TestClassic::graceHopper()
     QVERIFY(f.point("3.6").y() < f.point("9.15").y());
     QVERIFY(f.point("9.15").y() < f.point("8.2").y());
     QVERIFY(f.point("8.2").y() < f.point("2.1").y());
+}
+
+// detectFace(method classic) gives the pipeline's points and writes the thesis' figures.
+void TestClassic::throughDetector()
+{
+    const DrawnFace f = drawFace();
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    DetectOptions options;
+    options.method = DetectionMethod::Classic;
+    options.debugDir = dir.filePath(QStringLiteral("debug"));
+    const DetectionResult r = detectFace(f.image, options);
+    QCOMPARE(r.status, DetectStatus::Ok);
+    QCOMPARE(r.method, QStringLiteral("classic"));
+    QCOMPARE(r.faceCount, 1);
+    QVERIFY(QLineF(r.face.point("3.6"), f.eyeL).length() < 2);
+    QVERIFY(r.faceBox.contains(f.mouth.center().toPoint()));
+    QVERIFY(r.timingMs.contains(QStringLiteral("total")));
+    QCOMPARE(r.groupConfidence.size(), 7);
+    for (const char *name : {"classic-b1", "classic-b2", "classic-b3", "classic-face-hair", "classic-eye-pairs",
+             "classic-eyeballs", "classic-edges", "classic-feature-regions", "classic-points"}) {
+        const QImage img(QDir(options.debugDir).filePath(QLatin1StringView(name) + QStringLiteral(".png")));
+        QVERIFY2(img.size() == f.image.size(), name);
+    }
 }
 
 QTEST_MAIN(TestClassic)
