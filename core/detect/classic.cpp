@@ -737,6 +737,12 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages)
     }
     face.setImageSize(input.size());
     res.face = face;
+    if (!face.isValid()) {
+        res.error = QStringLiteral("The classic method found an eye pair but could not place a face around it "
+                                   "(a feature collapsed to nothing).");
+        res.timingMs.insert(QStringLiteral("total"), total.nsecsElapsed() / 1e6);
+        return res;
+    }
     res.timingMs.insert(QStringLiteral("total"), total.nsecsElapsed() / 1e6);
     res.ok = true;
     return res;

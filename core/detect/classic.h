@@ -33,7 +33,7 @@ struct EyePairRules
     double maxDistanceInWidths = 8.0;
     double minAspect = 0.6; // region width / height
     double maxAspect = 8.0;
-    double minFill = 0.25; // area / box area
+    double minFill = 0.15; // area / box area
     double maxWidthFraction = 0.2; // region width / image width
     double minAreaFraction = 2e-5; // region area / image area
 };

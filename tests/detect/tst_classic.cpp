@@ -1,7 +1,11 @@
 #include "detect/classic.h"
 #include "detect/detector.h"
+#include "detect/landmarkmap.h"
 
 #include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QRegularExpression>
 #include <QPainter>
 #include <QRandomGenerator>
 #include <QTemporaryDir>
@@ -65,6 +69,35 @@ DrawnFace drawFace()
 } // namespace
 
 
+namespace {
+
+QString sharedFacesDir()
+{
+    const QString env = qEnvironmentVariable("TOONFACE_DATA_DIR");
+    return QDir(env.isEmpty() ? QStringLiteral(TOONFACE_SHARED_DATA) : env).filePath(QStringLiteral("faces"));
+}
+
+// Reads a 300-W .pts file (1-based pixel coordinates) into 0-based iBUG points.
+bool readPts(const QString &path, std::array<QPointF, kIbugPointCount> *pts)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
+        return false;
+    const QString text = QString::fromUtf8(file.readAll());
+    const int open = text.indexOf(QLatin1Char('{')), close = text.indexOf(QLatin1Char('}'));
+    if (open < 0 || close < open)
+        return false;
+    const QStringList nums
+        = text.mid(open + 1, close - open - 1).split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts);
+    if (nums.size() != 2 * kIbugPointCount)
+        return false;
+    for (int i = 0; i < kIbugPointCount; ++i)
+        (*pts)[i] = QPointF(nums[2 * i].toDouble() - 1, nums[2 * i + 1].toDouble() - 1);
+    return true;
+}
+
+} // namespace
+
 Q_DECLARE_METATYPE(std::vector<QRect>)
 
 class TestClassic : public QObject
@@ -84,6 +117,8 @@ private Q_SLOTS:
     void drawnFace();
     void graceHopper();
     void throughDetector();
+    void sharedDataNme_data();
+    void sharedDataNme();
 };
 
 void TestClassic::score_data()
@@ -383,6 +418,57 @@ void TestClassic::throughDetector()
         const QImage img(QDir(options.debugDir).filePath(QLatin1StringView(name) + QStringLiteral(".png")));
         QVERIFY2(img.size() == f.image.size(), name);
     }
+}
+
+void TestClassic::sharedDataNme_data()
+{
+    QTest::addColumn<QString>("image");
+    QTest::addColumn<QString>("pts");
+    const QDir dir(sharedFacesDir());
+    int rows = 0;
+    for (const QFileInfo &pts : dir.entryInfoList({QStringLiteral("*.pts")}, QDir::Files, QDir::Name)) {
+        for (const char *ext : {".png", ".jpg"}) {
+            const QString image = dir.filePath(pts.completeBaseName() + QLatin1String(ext));
+            if (QFileInfo::exists(image)) {
+                QTest::newRow(qPrintable(pts.completeBaseName())) << image << pts.filePath();
+                ++rows;
+                break;
+            }
+        }
+    }
+    if (rows == 0)
+        QTest::newRow("no data") << QString() << QString();
+}
+
+// Measures, with no accuracy bound: the classic method assumes a plain background and a
+// large frontal face, which these photos do not promise. It must either place a valid face
+// or say why not.
+void TestClassic::sharedDataNme()
+{
+    QFETCH(QString, image);
+    QFETCH(QString, pts);
+    if (image.isEmpty())
+        QSKIP("no research photos (set TOONFACE_DATA_DIR to the shared data folder)");
+    std::array<QPointF, kIbugPointCount> truth {};
+    QVERIFY2(readPts(pts, &truth), qPrintable(pts));
+    const QImage photo(image);
+    QVERIFY2(!photo.isNull(), qPrintable(image));
+    const ClassicResult r = detectClassic(photo, true);
+    const QString dir = qEnvironmentVariable("TOONFACE_CLASSIC_DEBUG");
+    if (!dir.isEmpty())
+        for (auto it = r.debugImages.begin(); it != r.debugImages.end(); ++it)
+            it.value().save(dir + QLatin1Char('/') + QFileInfo(image).completeBaseName() + QLatin1Char('-') + it.key()
+                + QStringLiteral(".png"));
+    if (!r.ok) {
+        QVERIFY(!r.error.isEmpty());
+        qInfo("%s: classic found no face: %s", qPrintable(QFileInfo(image).fileName()), qPrintable(r.error));
+        return;
+    }
+    QVERIFY(r.face.isValid());
+    const double nme = normalizedMeanError(r.face, truth);
+    QVERIFY(std::isfinite(nme));
+    qInfo("%s: classic NME %.4f, %.1f ms", qPrintable(QFileInfo(image).fileName()), nme,
+        r.timingMs.value(QStringLiteral("total")));
 }
 
 QTEST_MAIN(TestClassic)
