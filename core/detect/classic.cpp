@@ -272,7 +272,7 @@ QImage maskImage(const Mask &m, QColor on, QColor off)
 
 } // namespace
 
-ClassicResult detectClassic(const QImage &input, bool withDebugImages)
+ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect faceHint)
 {
     ClassicResult res;
     QElapsedTimer total, stage;
@@ -298,13 +298,18 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages)
 
     const Plane I = intensityPlane(image);
     const Plane H = huePlane(image);
-    const QRect rect = centralRect(size);
+    const QRectF hint = faceHint.isValid()
+        ? QRectF(faceHint.x() * scale, faceHint.y() * scale, faceHint.width() * scale, faceHint.height() * scale)
+        : QRectF();
+    const QRect rect = hint.isValid()
+        ? QRectF(hint.x() + hint.width() / 4, hint.y() + hint.height() / 4, hint.width() / 2, hint.height() / 2)
+              .toAlignedRect()
+              .intersected(QRect(QPoint(0, 0), size))
+        : centralRect(size);
     lap("hsi");
 
     const FirstLevel first = firstLevelThreshold(I, rect);
     res.t1 = first.t1;
-    std::vector<int> darkLabels;
-    const std::vector<Region> dark = growRegions(first.b1, 0, &darkLabels);
     const SecondLevel second = secondLevelThreshold(H, first.b1, rect);
     const RefinedRegions refined = refineRegions(first.b1, second.b2);
     lap("regions");
@@ -320,26 +325,48 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages)
         res.debugImages.insert(QStringLiteral("classic-face-hair"), fh);
     }
 
-    auto candidates = eyePairCandidates(dark, size);
-    // Knowledge beyond eq. (3.5): brows pair as well as eyes do and are larger, so a pair
-    // with another candidate pair just below it (within d/2 .. d, horizontally aligned) is a
-    // brow pair and gives way.
-    std::vector<EyePairCandidate> eyes;
-    for (const auto &c : candidates) {
-        const QPointF a = dark[c.left].centroid, b = dark[c.right].centroid;
-        const double dist = QLineF(a, b).length();
-        bool hasBelow = false;
-        for (const auto &o : candidates) {
-            const QPointF oa = dark[o.left].centroid, ob = dark[o.right].centroid;
-            auto below = [&](QPointF top, QPointF bottom) {
-                return bottom.y() - top.y() > 0.1 * dist && bottom.y() - top.y() < 0.7 * dist
-                    && std::abs(bottom.x() - top.x()) < 0.3 * dist;
-            };
-            if (below(a, oa) && below(b, ob))
-                hasBelow = true;
+    // Eye pairs on B1 of eq. (3.3) first; where the eyes merge with brows or hair there (real
+    // photos, dark make-up), again on stricter darkness levels t = m1 - k s1, k = 1.5, 2, 2.5:
+    // the eyes are the darkest features of a face and separate first.
+    std::vector<int> darkLabels;
+    std::vector<Region> dark;
+    std::vector<EyePairCandidate> candidates, eyes;
+    Mask eyeB1 = first.b1;
+    for (double k : {1.0, 1.5, 2.0, 2.5}) {
+        if (k > 1.0)
+            eyeB1 = firstLevelThreshold(I, rect, k).b1;
+        dark = growRegions(eyeB1, 0, &darkLabels);
+        candidates = eyePairCandidates(dark, size);
+        if (hint.isValid()) {
+            const QRectF upper(hint.x(), hint.y(), hint.width(), 0.6 * hint.height());
+            std::erase_if(candidates, [&](const EyePairCandidate &c) {
+                return !upper.contains(dark[c.left].centroid) || !upper.contains(dark[c.right].centroid);
+            });
         }
-        if (!hasBelow)
-            eyes.push_back(c);
+        // Knowledge beyond eq. (3.5): brows pair as well as eyes do and are larger, so a pair
+        // with another candidate pair just below it (within d/2 .. d, horizontally aligned) is a
+        // brow pair and gives way.
+        eyes.clear();
+        for (const auto &c : candidates) {
+            const QPointF a = dark[c.left].centroid, b = dark[c.right].centroid;
+            const double dist = QLineF(a, b).length();
+            bool hasBelow = false;
+            for (const auto &o : candidates) {
+                const QPointF oa = dark[o.left].centroid, ob = dark[o.right].centroid;
+                auto below = [&](QPointF top, QPointF bottom) {
+                    return bottom.y() - top.y() > 0.1 * dist && bottom.y() - top.y() < 0.7 * dist
+                        && std::abs(bottom.x() - top.x()) < 0.3 * dist;
+                };
+                if (below(a, oa) && below(b, ob))
+                    hasBelow = true;
+            }
+            if (!hasBelow)
+                eyes.push_back(c);
+        }
+        if (!eyes.empty()) {
+            res.eyeLevelK = k;
+            break;
+        }
     }
     res.candidateCount = int(candidates.size());
     if (withDebugImages) {

@@ -70,6 +70,7 @@ struct ClassicResult
     QString error;
     FaceModel face;
     double t1 = 0; // the first-level threshold
+    double eyeLevelK = 1; // the k of t = m1 - k s1 on which the eye pair was found
     QRectF eyeRegions[2]; // the chosen pair's boxes, image-left first
     int candidateCount = 0;
     Eyeball eyeballs[2]; // image-left first
@@ -84,7 +85,11 @@ struct ClassicResult
     QMap<QString, QImage> debugImages; // name -> picture, when asked for
 };
 
+// `faceHint`, when valid, is a face box from elsewhere (a face detector, the previous video
+// frame): Algorithm 4.1's central rectangle becomes the middle of that box instead of the
+// middle of the image, and eye pairs must lie in its upper part. Without it the thesis'
+// assumption holds: a large frontal face in the middle of the picture.
 // requires: image is not null.
-ClassicResult detectClassic(const QImage &image, bool withDebugImages = false);
+ClassicResult detectClassic(const QImage &image, bool withDebugImages = false, QRect faceHint = {});
 
 } // namespace toonface

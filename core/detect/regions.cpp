@@ -82,12 +82,12 @@ void meanStd(const Plane &plane, QRect rect, double *mean, double *sd)
 
 } // namespace
 
-FirstLevel firstLevelThreshold(const Plane &intensity, QRect rect)
+FirstLevel firstLevelThreshold(const Plane &intensity, QRect rect, double k)
 {
     FirstLevel f;
     f.rect = rect.intersected(QRect(QPoint(0, 0), intensity.size));
     meanStd(intensity, f.rect, &f.m1, &f.s1);
-    f.t1 = f.m1 - f.s1;
+    f.t1 = f.m1 - k * f.s1;
     f.b1 = {intensity.size, std::vector<std::uint8_t>(intensity.values.size())};
     for (size_t i = 0; i < intensity.values.size(); ++i)
         f.b1.values[i] = intensity.values[i] > f.t1 ? 1 : 0;

@@ -54,8 +54,9 @@ struct FirstLevel
     double m1 = 0, s1 = 0, t1 = 0;
     Mask b1;
 };
+// `k` generalises eq. (3.3) to t1 = m1 - k s1 (the thesis: k = 1).
 // requires: rect intersects the plane and holds at least two pixels.
-FirstLevel firstLevelThreshold(const Plane &intensity, QRect rect);
+FirstLevel firstLevelThreshold(const Plane &intensity, QRect rect, double k = 1.0);
 
 // Algorithm 4.3: m2, s2 of the hue in `rect` (eqs. 3.6-3.7); B2 = 1 (background) where
 // |H - m2| > s2 (eqs. 3.8-3.9), 0 (face) where |H - m2| <= s2 and B1 = 1. Dark pixels

@@ -119,6 +119,8 @@ private Q_SLOTS:
     void throughDetector();
     void sharedDataNme_data();
     void sharedDataNme();
+    void sharedDataNmeWithFaceBox_data();
+    void sharedDataNmeWithFaceBox();
 };
 
 void TestClassic::score_data()
@@ -469,6 +471,44 @@ void TestClassic::sharedDataNme()
     QVERIFY(std::isfinite(nme));
     qInfo("%s: classic NME %.4f, %.1f ms", qPrintable(QFileInfo(image).fileName()), nme,
         r.timingMs.value(QStringLiteral("total")));
+}
+
+// The same, with the central rectangle taken from the landmark detector's face box.
+void TestClassic::sharedDataNmeWithFaceBox_data()
+{
+    sharedDataNme_data();
+}
+
+void TestClassic::sharedDataNmeWithFaceBox()
+{
+    QFETCH(QString, image);
+    QFETCH(QString, pts);
+    if (image.isEmpty())
+        QSKIP("no research photos (set TOONFACE_DATA_DIR to the shared data folder)");
+    if (!preloadLandmarkModel())
+        QSKIP("the landmark model (libdlib-data) is not installed; no face box to seed with");
+    std::array<QPointF, kIbugPointCount> truth {};
+    QVERIFY2(readPts(pts, &truth), qPrintable(pts));
+    const QImage photo(image);
+    QVERIFY2(!photo.isNull(), qPrintable(image));
+    const DetectionResult box = detectFace(photo, {});
+    QCOMPARE(box.status, DetectStatus::Ok);
+    const ClassicResult r = detectClassic(photo, true, box.faceBox);
+    const QString dir = qEnvironmentVariable("TOONFACE_CLASSIC_DEBUG");
+    if (!dir.isEmpty())
+        for (auto it = r.debugImages.begin(); it != r.debugImages.end(); ++it)
+            it.value().save(dir + QLatin1Char('/') + QFileInfo(image).completeBaseName() + QStringLiteral("-boxed-")
+                + it.key() + QStringLiteral(".png"));
+    if (!r.ok) {
+        QVERIFY(!r.error.isEmpty());
+        qInfo("%s: classic in the face box found no face: %s", qPrintable(QFileInfo(image).fileName()), qPrintable(r.error));
+        return;
+    }
+    QVERIFY(r.face.isValid());
+    const double nme = normalizedMeanError(r.face, truth);
+    QVERIFY(std::isfinite(nme));
+    qInfo("%s: classic in the face box NME %.4f (landmarks %.4f), %.1f ms", qPrintable(QFileInfo(image).fileName()), nme,
+        normalizedMeanError(box.face, truth), r.timingMs.value(QStringLiteral("total")));
 }
 
 QTEST_MAIN(TestClassic)
