@@ -150,6 +150,30 @@ int centralVerticalCut(const Plane &I, QRect region)
     return bestX;
 }
 
+void cheekOffset(const Mask &F, QPointF mid, double d, double *left, double *right)
+{
+    const QSize size = F.size;
+    const int y0 = std::max(0, int(mid.y() - d / 2)), y1 = std::min(size.height() - 1, int(mid.y() + 1.5 * d));
+    std::vector<double> proj(size.width(), 0.0);
+    for (int y = y0; y <= y1; ++y)
+        for (int x = 0; x < size.width(); ++x)
+            proj[x] += F.at(x, y);
+    auto sym = [&](int k) {
+        const int xl = int(std::lround(mid.x())) - k, xr = int(std::lround(mid.x())) + k;
+        return (xl >= 0 && xl < size.width() ? proj[xl] : 0.0) + (xr >= 0 && xr < size.width() ? proj[xr] : 0.0);
+    };
+    const double reference = sym(int(0.5 * d));
+    int bestK = int(1.5 * d);
+    for (int k = int(0.5 * d); k <= int(1.5 * d); ++k) {
+        if (sym(k) <= 0.5 * reference) {
+            bestK = k;
+            break;
+        }
+    }
+    *left = std::lround(mid.x()) - bestK;
+    *right = std::lround(mid.x()) + bestK;
+}
+
 namespace {
 
 // The pixels of the edge components that reach into `seedRect`, kept inside `clip`.
@@ -590,33 +614,8 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
     }
     lap("featurePoints");
 
-    // Section 3.5: cheek boundaries from the vertical projection of F_final, made symmetric by
-    // adding the mirrored right side to the left.
     const Mask &F = refined.face;
-    {
-        const int y0 = std::max(0, int(mid.y() - d / 2)), y1 = std::min(size.height() - 1, int(mid.y() + 1.5 * d));
-        std::vector<double> proj(size.width(), 0.0);
-        for (int y = y0; y <= y1; ++y)
-            for (int x = 0; x < size.width(); ++x)
-                proj[x] += F.at(x, y);
-        auto sym = [&](int k) {
-            const int xl = int(std::lround(mid.x())) - k, xr = int(std::lround(mid.x())) + k;
-            return (xl >= 0 ? proj[xl] : 0.0) + (xr < size.width() ? proj[xr] : 0.0);
-        };
-        // The face narrows toward its sides while ears add only short columns: the cheek is
-        // the first offset beyond the eyes where the symmetric projection has fallen to half
-        // its value at half an eye distance from the midline.
-        const double reference = sym(int(0.5 * d));
-        int bestK = int(1.5 * d);
-        for (int k = int(0.5 * d); k <= int(1.5 * d); ++k) {
-            if (sym(k) <= 0.5 * reference) {
-                bestK = k;
-                break;
-            }
-        }
-        res.cheekLeft = mid.x() - bestK;
-        res.cheekRight = mid.x() + bestK;
-    }
+    cheekOffset(F, mid, d, &res.cheekLeft, &res.cheekRight);
     // Section 4.3.2 A: jaw and face points by searching out of F_final.
     {
         const int far = int(2 * d);

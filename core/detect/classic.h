@@ -63,6 +63,13 @@ Plane sobelEdges(const Plane &intensity);
 // are clamped.
 int centralVerticalCut(const Plane &intensity, QRect region);
 
+// Section 3.5: the cheek boundaries x = mid.x -+ k from the vertical projection of the face
+// region F over the rows mid.y - d/2 .. mid.y + 1.5 d, made symmetric by adding the mirrored
+// right side to the left. The face narrows toward its sides while ears add only short
+// columns: k is the first offset from d/2 on where the symmetric projection has fallen to
+// half its value at d/2 (1.5 d when it never does).
+void cheekOffset(const Mask &face, QPointF mid, double d, double *left, double *right);
+
 // Everything the pipeline found, in the pixels of the image given to detectClassic().
 struct ClassicResult
 {

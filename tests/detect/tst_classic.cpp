@@ -114,6 +114,8 @@ private Q_SLOTS:
     void sobel();
     void verticalCut_data();
     void verticalCut();
+    void cheeks_data();
+    void cheeks();
     void drawnFace();
     void graceHopper();
     void throughDetector();
@@ -272,6 +274,39 @@ void TestClassic::verticalCut()
         }
     }
     QCOMPARE(centralVerticalCut(I, region), axis);
+}
+
+void TestClassic::cheeks_data()
+{
+    QTest::addColumn<int>("halfWidth"); // the face column's half width
+    QTest::addColumn<int>("earWidth"); // 0: no ears
+    QTest::addColumn<int>("shift"); // the face's midline off the given one (mirror symmetry still used)
+    QTest::newRow("no ears") << 100 << 0 << 0;
+    QTest::newRow("ears") << 100 << 20 << 0;
+    QTest::newRow("narrow face, ears") << 70 << 15 << 0;
+}
+
+// A face rectangle 300 rows high with ear tabs 50 rows high at eye level: the cheeks are the
+// face's sides, not the ears' outer edges.
+void TestClassic::cheeks()
+{
+    QFETCH(int, halfWidth);
+    QFETCH(int, earWidth);
+    QFETCH(int, shift);
+    Mask m {QSize(400, 400), std::vector<std::uint8_t>(size_t(400) * 400, 0)};
+    const int cx = 200 + shift;
+    for (int y = 50; y < 350; ++y)
+        for (int x = cx - halfWidth; x < cx + halfWidth; ++x)
+            m.at(x, y) = 1;
+    for (int y = 120; y < 170; ++y)
+        for (int k = 0; k < earWidth; ++k) {
+            m.at(cx - halfWidth - 1 - k, y) = 1;
+            m.at(cx + halfWidth + k, y) = 1;
+        }
+    double left = 0, right = 0;
+    cheekOffset(m, QPointF(200, 130), 90, &left, &right);
+    QVERIFY2(std::abs(left - (cx - halfWidth)) <= 2, qPrintable(QString::number(left)));
+    QVERIFY2(std::abs(right - (cx + halfWidth)) <= 2, qPrintable(QString::number(right)));
 }
 
 namespace {
