@@ -367,9 +367,9 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
                 return !upper.contains(dark[c.left].centroid) || !upper.contains(dark[c.right].centroid);
             });
         }
-        // Knowledge beyond eq. (3.5): brows pair as well as eyes do and are larger, so a pair
-        // with another candidate pair just below it (within d/2 .. d, horizontally aligned) is a
-        // brow pair and gives way.
+        // Knowledge beyond eq. (3.5): brows and spectacle rims pair as well as eyes do and are
+        // larger, so a pair gives way to a pair as wide apart (0.7 .. 1.3 times) that lies just
+        // below it (0.1 d .. 0.7 d lower, horizontally aligned) or inside its two boxes.
         eyes.clear();
         for (const auto &c : candidates) {
             const QPointF a = dark[c.left].centroid, b = dark[c.right].centroid;
@@ -381,7 +381,11 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
                     return bottom.y() - top.y() > 0.1 * dist && bottom.y() - top.y() < 0.7 * dist
                         && std::abs(bottom.x() - top.x()) < 0.3 * dist;
                 };
-                if (below(a, oa) && below(b, ob))
+                const double ratio = QLineF(oa, ob).length() / std::max(dist, 1e-9);
+                if (&o == &c || ratio < 0.7 || ratio > 1.3)
+                    continue;
+                const bool inside = QRectF(dark[c.left].box).contains(oa) && QRectF(dark[c.right].box).contains(ob);
+                if ((below(a, oa) && below(b, ob)) || inside)
                     hasBelow = true;
             }
             if (!hasBelow)
