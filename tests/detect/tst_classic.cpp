@@ -12,6 +12,7 @@
 #include <QTest>
 
 #include <cmath>
+#include <numbers>
 
 using namespace toonface;
 
@@ -147,20 +148,24 @@ void TestClassic::score()
 void TestClassic::eyePair_data()
 {
     QTest::addColumn<std::vector<QRect>>("distractors");
-    QTest::newRow("alone") << std::vector<QRect> {};
-    // A pair tilted by about 14 degrees, a pair of very unequal blobs, a long bar, a pair of
-    // smaller blobs lower down (nostrils), and a brow pair above the eyes.
-    QTest::newRow("tilted pair") << std::vector<QRect> {QRect(40, 300, 16, 12), QRect(120, 320, 16, 12)};
-    QTest::newRow("unequal pair") << std::vector<QRect> {QRect(40, 300, 30, 24), QRect(120, 300, 8, 6)};
-    QTest::newRow("bar") << std::vector<QRect> {QRect(140, 400, 200, 10)};
-    QTest::newRow("nostrils") << std::vector<QRect> {QRect(230, 280, 8, 5), QRect(250, 280, 8, 5)};
-    QTest::newRow("brows") << std::vector<QRect> {QRect(170, 190, 46, 9), QRect(264, 190, 46, 9)};
+    QTest::addColumn<bool>("mayPair"); // whether the distractors may form candidate pairs
+    QTest::newRow("alone") << std::vector<QRect> {} << false;
+    // A pair tilted by about 14 degrees, a pair of very unequal blobs, a long bar: never pairs.
+    QTest::newRow("tilted pair") << std::vector<QRect> {QRect(40, 300, 16, 12), QRect(120, 320, 16, 12)} << false;
+    QTest::newRow("unequal pair") << std::vector<QRect> {QRect(40, 300, 30, 24), QRect(120, 300, 8, 6)} << false;
+    QTest::newRow("bar") << std::vector<QRect> {QRect(140, 400, 200, 10)} << false;
+    // Nostrils and brows pair, but score below the eyes (nostrils) or give way to them in the
+    // pipeline (brows, see drawnFace).
+    QTest::newRow("nostrils") << std::vector<QRect> {QRect(230, 280, 8, 5), QRect(250, 280, 8, 5)} << true;
+    QTest::newRow("brows") << std::vector<QRect> {QRect(170, 190, 46, 9), QRect(264, 190, 46, 9)} << true;
 }
 
-// Dark eye blobs at (180..210, 224..236) and (270..300, 224..236) among distractors.
+// Dark eye blobs at (180..209, 224..235) and (270..299, 224..235) among distractors: the best
+// candidate below the brow line is the eye pair.
 void TestClassic::eyePair()
 {
     QFETCH(std::vector<QRect>, distractors);
+    QFETCH(bool, mayPair);
     QImage img(480, 480, QImage::Format_Grayscale8);
     img.fill(220);
     QPainter p(&img);
@@ -175,10 +180,6 @@ void TestClassic::eyePair()
             m.at(x, y) = qGray(img.pixel(x, y)) > 100;
     const auto dark = growRegions(m, 0);
     const auto pairs = eyePairCandidates(dark, img.size());
-    QVERIFY(!pairs.empty());
-    // Brows pair too (they are dropped later by the pipeline's brow rule), but score below
-    // larger equal blobs only when smaller: here the eye pair must be among the candidates
-    // and be the best one that is not the brow pair.
     int best = -1;
     for (int i = 0; i < int(pairs.size()) && best < 0; ++i)
         if (dark[pairs[i].left].box.top() > 200)
@@ -187,15 +188,16 @@ void TestClassic::eyePair()
     QCOMPARE(dark[pairs[best].left].box, QRect(180, 224, 30, 12));
     QCOMPARE(dark[pairs[best].right].box, QRect(270, 224, 30, 12));
     for (const auto &c : pairs) {
-        // No candidate is skewed by more than 10 degrees or made of the unequal blobs.
         const QPointF delta = dark[c.right].centroid - dark[c.left].centroid;
-        QVERIFY(std::abs(delta.y()) <= std::tan(10.0 * M_PI / 180.0) * delta.x() + 1e-9);
-        QVERIFY(dark[c.left].box.width() < 100 && dark[c.right].box.width() < 100);
+        QVERIFY(delta.x() > 0);
+        QVERIFY(std::abs(delta.y()) <= std::tan(10.0 * std::numbers::pi / 180.0) * delta.x() + 1e-9);
+        if (!mayPair) {
+            QCOMPARE(dark[c.left].box.top(), 224);
+            QCOMPARE(dark[c.right].box.top(), 224);
+        }
     }
-    if (distractors.size() == 2 && distractors[0].top() == 300 && distractors[0].width() == 16) {
-        for (const auto &c : pairs)
-            QVERIFY(dark[c.left].box.top() != 300);
-    }
+    for (size_t i = 1; i < pairs.size(); ++i)
+        QVERIFY(pairs[i - 1].score >= pairs[i].score);
 }
 
 void TestClassic::eyeball_data()
