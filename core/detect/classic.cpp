@@ -766,6 +766,10 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
         for (double *v : {&res.divEE, &res.divEN, &res.divNM, &res.noseCut, &res.mouthCut, &res.cheekLeft, &res.cheekRight})
             *v *= k;
     }
+    // Searches that end on the image's edge may round just outside it.
+    for (int i = 0; i < kPointCount; ++i)
+        face.setPoint(i, QPointF(std::clamp(face.point(i).x(), 0.0, input.width() - 1.0),
+                             std::clamp(face.point(i).y(), 0.0, input.height() - 1.0)));
     face.setImageSize(input.size());
     res.face = face;
     if (!face.isValid()) {

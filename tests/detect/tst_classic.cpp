@@ -119,6 +119,7 @@ private Q_SLOTS:
     void cheeks();
     void drawnFace();
     void graceHopper();
+    void greyAndTiny();
     void throughDetector();
     void sharedDataNme_data();
     void sharedDataNme();
@@ -433,6 +434,29 @@ void TestClassic::graceHopper()
     QVERIFY(f.point("3.6").y() < f.point("9.15").y());
     QVERIFY(f.point("9.15").y() < f.point("8.2").y());
     QVERIFY(f.point("8.2").y() < f.point("2.1").y());
+}
+
+// A grey photo has no hue, so no face region from eq. (3.9): the inner features are still
+// found and the outline falls back to its rules. A tiny image is refused with a reason.
+void TestClassic::greyAndTiny()
+{
+    const DrawnFace f = drawFace();
+    const ClassicResult r = detectClassic(f.image.convertToFormat(QImage::Format_Grayscale8));
+    QVERIFY2(r.ok, qPrintable(r.error));
+    QVERIFY(r.face.isValid());
+    QVERIFY(QLineF(r.face.point("3.6"), f.eyeL).length() <= 2);
+    QVERIFY(QLineF(r.face.point("3.5"), f.eyeR).length() <= 2);
+    QVERIFY(QLineF(r.face.point("8.4"), QPointF(f.mouth.left(), f.mouth.center().y())).length() <= 9);
+    for (int i = 0; i < kPointCount; ++i)
+        QVERIFY2(QRectF(0, 0, 480, 480).contains(r.face.point(i)), qPrintable(pointId(i)));
+
+    for (const QSize size : {QSize(1, 1), QSize(15, 200)}) {
+        QImage tiny(size, QImage::Format_RGB32);
+        tiny.fill(Qt::gray);
+        const ClassicResult t = detectClassic(tiny);
+        QVERIFY(!t.ok);
+        QVERIFY(t.error.contains(QLatin1String("too small")));
+    }
 }
 
 // detectFace(method classic) gives the pipeline's points and writes the thesis' figures.
