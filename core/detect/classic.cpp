@@ -38,7 +38,8 @@ bool passesFilter(const Region &r, QSize size, const EyePairRules &rules)
 
 } // namespace
 
-std::vector<EyePairCandidate> eyePairCandidates(const std::vector<Region> &dark, QSize imageSize, const EyePairRules &rules)
+std::vector<EyePairCandidate> eyePairCandidates(
+    const std::vector<Region> &dark, QSize imageSize, const EyePairRules &rules)
 {
     std::vector<int> kept;
     for (int i = 0; i < int(dark.size()); ++i)
@@ -118,7 +119,8 @@ Plane sobelEdges(const Plane &I)
             const float z1 = I.at(x - 1, y - 1), z2 = I.at(x, y - 1), z3 = I.at(x + 1, y - 1);
             const float z4 = I.at(x - 1, y), z6 = I.at(x + 1, y);
             const float z7 = I.at(x - 1, y + 1), z8 = I.at(x, y + 1), z9 = I.at(x + 1, y + 1);
-            s.at(x, y) = std::abs((z7 + 2 * z8 + z9) - (z1 + 2 * z2 + z3)) + std::abs((z3 + 2 * z6 + z9) - (z1 + 2 * z4 + z7));
+            s.at(x, y)
+                = std::abs((z7 + 2 * z8 + z9) - (z1 + 2 * z2 + z3)) + std::abs((z3 + 2 * z6 + z9) - (z1 + 2 * z4 + z7));
         }
     }
     return s;
@@ -314,11 +316,11 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
     // The pipeline works on a copy at most 640 pixels on its longer side; points go back to
     // the input's pixels at the end.
     const double scale = std::min(1.0, 640.0 / std::max(input.width(), input.height()));
-    const QImage image = (scale < 1.0 ? input.scaled(QSize(std::lround(input.width() * scale),
-                                                          std::lround(input.height() * scale)),
-                                            Qt::IgnoreAspectRatio, Qt::SmoothTransformation)
-                                      : input)
-                             .convertToFormat(QImage::Format_RGB32);
+    const QImage image
+        = (scale < 1.0 ? input.scaled(QSize(std::lround(input.width() * scale), std::lround(input.height() * scale)),
+               Qt::IgnoreAspectRatio, Qt::SmoothTransformation)
+                       : input)
+              .convertToFormat(QImage::Format_RGB32);
     const QSize size = image.size();
 
     const Plane I = intensityPlane(image);
@@ -502,19 +504,26 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
     // Algorithm 4.6 with the restrictions: inside the square; nose and mouth between the
     // eyeball centres; each feature kept between its division lines.
     const double hL = std::max(ebL.height(), 2.0);
-    const QRectF eyeInit(QPointF(ebL.centre.x() - hL, ebL.centre.y() - 0.5 * hL), QPointF(ebL.centre.x() + hL, ebL.centre.y() + 0.5 * hL));
+    const QRectF eyeInit(QPointF(ebL.centre.x() - hL, ebL.centre.y() - 0.5 * hL),
+        QPointF(ebL.centre.x() + hL, ebL.centre.y() + 0.5 * hL));
     const double browH = std::max(eyeInit.height(), d / 3);
     const QRectF browInit(QPointF(eyeInit.left(), res.divEE - browH), QPointF(eyeInit.right(), res.divEE));
-    const QRectF noseInit(QPointF(ebL.centre.x(), res.divEN), QPointF(ebR.centre.x(), res.divEN + 0.7 * (res.divNM - res.divEN)));
+    const QRectF noseInit(
+        QPointF(ebL.centre.x(), res.divEN), QPointF(ebR.centre.x(), res.divEN + 0.7 * (res.divNM - res.divEN)));
     const QRectF mouthInit(QPointF(ebL.centre.x(), res.divNM), QPointF(ebR.centre.x(), res.divNM + d / 3));
     auto rows = [&](double top, double bottom, double left, double right) {
-        return QRect(QPoint(int(std::ceil(left)), int(std::ceil(top))), QPoint(int(std::floor(right)), int(std::floor(bottom))))
+        return QRect(
+            QPoint(int(std::ceil(left)), int(std::ceil(top))), QPoint(int(std::floor(right)), int(std::floor(bottom))))
             .intersected(square);
     };
-    const FeatureRegion eye = growFeature(edges, eyeInit.toAlignedRect(), rows(res.divEE + 1, res.divEN, square.left(), mid.x()));
-    const FeatureRegion brow = growFeature(edges, browInit.toAlignedRect(), rows(square.top(), res.divEE, square.left(), mid.x()));
-    const FeatureRegion nose = growFeature(edges, noseInit.toAlignedRect(), rows(res.divEN, res.divNM, ebL.centre.x(), ebR.centre.x()));
-    const FeatureRegion mouth = growFeature(edges, mouthInit.toAlignedRect(), rows(res.divNM, square.bottom(), ebL.centre.x(), ebR.centre.x()));
+    const FeatureRegion eye
+        = growFeature(edges, eyeInit.toAlignedRect(), rows(res.divEE + 1, res.divEN, square.left(), mid.x()));
+    const FeatureRegion brow
+        = growFeature(edges, browInit.toAlignedRect(), rows(square.top(), res.divEE, square.left(), mid.x()));
+    const FeatureRegion nose
+        = growFeature(edges, noseInit.toAlignedRect(), rows(res.divEN, res.divNM, ebL.centre.x(), ebR.centre.x()));
+    const FeatureRegion mouth = growFeature(
+        edges, mouthInit.toAlignedRect(), rows(res.divNM, square.bottom(), ebL.centre.x(), ebR.centre.x()));
     res.eyeRegion = eye.box;
     res.browRegion = brow.box;
     res.noseRegion = nose.box;
@@ -551,8 +560,10 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
         const QRect b = brow.box;
         const int w = endColumns(b);
         const QPointF fallback = QRectF(b).center();
-        const QPointF p46 = averageOf(brow.pixels, [&](QPoint p) { return p.x() < b.left() + w; }, QPointF(b.left(), fallback.y()));
-        const QPointF p42 = averageOf(brow.pixels, [&](QPoint p) { return p.x() > b.right() - w; }, QPointF(b.right(), fallback.y()));
+        const QPointF p46 = averageOf(
+            brow.pixels, [&](QPoint p) { return p.x() < b.left() + w; }, QPointF(b.left(), fallback.y()));
+        const QPointF p42 = averageOf(
+            brow.pixels, [&](QPoint p) { return p.x() > b.right() - w; }, QPointF(b.right(), fallback.y()));
         const int inner0 = b.left() + w, inner1 = b.right() - w, half = (inner0 + inner1) / 2;
         const QPointF p44a = columnCentres(brow.pixels, inner0, half, (2 * p46 + p42) / 3);
         const QPointF p44 = columnCentres(brow.pixels, half + 1, inner1, (p46 + 2 * p42) / 3);
@@ -568,8 +579,10 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
     {
         const QRect b = eye.box;
         const int w = endColumns(b);
-        const QPointF p312 = averageOf(eye.pixels, [&](QPoint p) { return p.x() < b.left() + w; }, QPointF(ebL.centre.x() - hL, ebL.centre.y()));
-        const QPointF p38 = averageOf(eye.pixels, [&](QPoint p) { return p.x() > b.right() - w; }, QPointF(ebL.centre.x() + hL, ebL.centre.y()));
+        const QPointF p312 = averageOf(
+            eye.pixels, [&](QPoint p) { return p.x() < b.left() + w; }, QPointF(ebL.centre.x() - hL, ebL.centre.y()));
+        const QPointF p38 = averageOf(
+            eye.pixels, [&](QPoint p) { return p.x() > b.right() - w; }, QPointF(ebL.centre.x() + hL, ebL.centre.y()));
         set("3.12", p312);
         set("3.8", p38);
         set("3.2", ebL.centre - QPointF(0, ebL.height() / 2));
@@ -599,9 +612,11 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
         const QRect b = mouth.box;
         const int w = endColumns(b);
         const double xm = res.mouthCut;
-        const QPointF p84 = averageOf(mouth.pixels, [&](QPoint p) { return p.x() < b.left() + w; }, QPointF(b.left(), QRectF(b).center().y()));
+        const QPointF p84 = averageOf(
+            mouth.pixels, [&](QPoint p) { return p.x() < b.left() + w; }, QPointF(b.left(), QRectF(b).center().y()));
         const int wr = std::max(1, int(std::lround(b.height() / 8.0)));
-        const QPointF p89 = averageOf(mouth.pixels, [&](QPoint p) { return p.x() < xm && p.y() < b.top() + wr; },
+        const QPointF p89 = averageOf(
+            mouth.pixels, [&](QPoint p) { return p.x() < xm && p.y() < b.top() + wr; },
             QPointF((b.left() + xm) / 2, b.top()));
         double top = b.bottom();
         for (const QPoint &p : mouth.pixels)
@@ -648,8 +663,10 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
         set("2.11", leave(F, mouthC, QPointF(0.7071, 0.7071), far, (p213 + p21) / 2));
         set("5.2", QPointF(res.cheekLeft, mid.y()));
         set("5.1", QPointF(res.cheekRight, mid.y()));
-        set("11.2", leave(F, QPointF(p214.x() + 2, mid.y() + d / 2), QPointF(0, -1), far, QPointF(p214.x(), mid.y() - d)));
-        set("11.3", leave(F, QPointF(p213.x() - 2, mid.y() + d / 2), QPointF(0, -1), far, QPointF(p213.x(), mid.y() - d)));
+        set("11.2",
+            leave(F, QPointF(p214.x() + 2, mid.y() + d / 2), QPointF(0, -1), far, QPointF(p214.x(), mid.y() - d)));
+        set("11.3",
+            leave(F, QPointF(p213.x() - 2, mid.y() + d / 2), QPointF(0, -1), far, QPointF(p213.x(), mid.y() - d)));
         // 11.1: the mean of the topmost rows of F_final between the jaw points.
         QPointF sum;
         int n = 0, topRow = -1;
@@ -763,13 +780,15 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
         res.eyeMid *= k;
         for (QRectF *r : {&res.square, &res.browRegion, &res.eyeRegion, &res.noseRegion, &res.mouthRegion})
             *r = QRectF(r->topLeft() * k, r->size() * k);
-        for (double *v : {&res.divEE, &res.divEN, &res.divNM, &res.noseCut, &res.mouthCut, &res.cheekLeft, &res.cheekRight})
+        for (double *v :
+            {&res.divEE, &res.divEN, &res.divNM, &res.noseCut, &res.mouthCut, &res.cheekLeft, &res.cheekRight})
             *v *= k;
     }
     // Searches that end on the image's edge may round just outside it.
     for (int i = 0; i < kPointCount; ++i)
-        face.setPoint(i, QPointF(std::clamp(face.point(i).x(), 0.0, input.width() - 1.0),
-                             std::clamp(face.point(i).y(), 0.0, input.height() - 1.0)));
+        face.setPoint(i,
+            QPointF(std::clamp(face.point(i).x(), 0.0, input.width() - 1.0),
+                std::clamp(face.point(i).y(), 0.0, input.height() - 1.0)));
     face.setImageSize(input.size());
     res.face = face;
     if (!face.isValid()) {

@@ -14,7 +14,7 @@ struct TsaiThreshold
     double z0 = 0, z1 = 0; // the two representative levels
     double p0 = 0; // the share of pixels that go to z0
     int threshold = 0; // pixels <= threshold belong to z0: the p0-tile (the occupied level whose
-                    // cumulative share is nearest p0)
+                       // cumulative share is nearest p0)
 };
 
 // requires: histogram[j] >= 0 is the count of level j (any number of levels).

@@ -5,9 +5,9 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QRegularExpression>
 #include <QPainter>
 #include <QRandomGenerator>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -68,7 +68,6 @@ DrawnFace drawFace()
 }
 
 } // namespace
-
 
 namespace {
 
@@ -231,7 +230,8 @@ void TestClassic::eyeball()
         for (int x = 0; x < 100; ++x)
             m.at(x, y) = qGray(img.pixel(x, y)) < 128;
     const Eyeball e = detectEyeball(m, QRect(15, 15, 72, 32));
-    QVERIFY2(QLineF(e.centre, centre).length() <= 1.5, qPrintable(QStringLiteral("%1,%2").arg(e.centre.x()).arg(e.centre.y())));
+    QVERIFY2(QLineF(e.centre, centre).length() <= 1.5,
+        qPrintable(QStringLiteral("%1,%2").arg(e.centre.x()).arg(e.centre.y())));
     QVERIFY2(std::abs(e.radius - radius) <= 1.5, qPrintable(QString::number(e.radius)));
 }
 
@@ -349,7 +349,8 @@ void TestClassic::drawnFace()
         const QPointF got = r.face.point(id);
         const double err = QLineF(got, expected).length();
         if (err > tol)
-            qWarning("%s at (%.1f, %.1f), expected (%.1f, %.1f) within %.1f", id, got.x(), got.y(), expected.x(), expected.y(), tol);
+            qWarning("%s at (%.1f, %.1f), expected (%.1f, %.1f) within %.1f", id, got.x(), got.y(), expected.x(),
+                expected.y(), tol);
         return err <= tol;
     };
     const double inner = d / 10, outer = d / 5;
@@ -562,14 +563,15 @@ void TestClassic::sharedDataNmeWithFaceBox()
                 + it.key() + QStringLiteral(".png"));
     if (!r.ok) {
         QVERIFY(!r.error.isEmpty());
-        qInfo("%s: classic in the face box found no face: %s", qPrintable(QFileInfo(image).fileName()), qPrintable(r.error));
+        qInfo("%s: classic in the face box found no face: %s", qPrintable(QFileInfo(image).fileName()),
+            qPrintable(r.error));
         return;
     }
     QVERIFY(r.face.isValid());
     const double nme = normalizedMeanError(r.face, truth);
     QVERIFY(std::isfinite(nme));
-    qInfo("%s: classic in the face box NME %.4f (landmarks %.4f), %.1f ms", qPrintable(QFileInfo(image).fileName()), nme,
-        normalizedMeanError(box.face, truth), r.timingMs.value(QStringLiteral("total")));
+    qInfo("%s: classic in the face box NME %.4f (landmarks %.4f), %.1f ms", qPrintable(QFileInfo(image).fileName()),
+        nme, normalizedMeanError(box.face, truth), r.timingMs.value(QStringLiteral("total")));
 }
 
 QTEST_MAIN(TestClassic)
