@@ -254,6 +254,8 @@ QPointF columnCentres(const std::vector<QPoint> &pixels, int a, int b, QPointF f
     return n ? sum / n : fallback;
 }
 
+// The thesis' "w" of Algorithms 4.2-4.5 (how many end columns or top rows are averaged) is
+// not given: an eighth of the region.
 int endColumns(const QRect &box)
 {
     return std::max(1, int(std::lround(box.width() / 8.0)));
@@ -506,6 +508,8 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
     const double hL = std::max(ebL.height(), 2.0);
     const QRectF eyeInit(QPointF(ebL.centre.x() - hL, ebL.centre.y() - 0.5 * hL),
         QPointF(ebL.centre.x() + hL, ebL.centre.y() + 0.5 * hL));
+    // "The eye range translated above Div_EE": the same columns, ending at Div_EE, at least d/3
+    // high so that brows set well above the eyes are still reached.
     const double browH = std::max(eyeInit.height(), d / 3);
     const QRectF browInit(QPointF(eyeInit.left(), res.divEE - browH), QPointF(eyeInit.right(), res.divEE));
     const QRectF noseInit(
@@ -618,6 +622,7 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
         const QPointF p89 = averageOf(
             mouth.pixels, [&](QPoint p) { return p.x() < xm && p.y() < b.top() + wr; },
             QPointF((b.left() + xm) / 2, b.top()));
+        // Step 5 is garbled in the text; read as: 8.1 is the topmost edge pixel on the cut.
         double top = b.bottom();
         for (const QPoint &p : mouth.pixels)
             if (std::abs(p.x() - xm) <= 1)
