@@ -1,5 +1,6 @@
 #include "detect/detector.h"
 
+#include "detect/classic.h"
 #include "detect/hairsearch.h"
 #include "detect/landmarkmap.h"
 
@@ -417,6 +418,41 @@ void writeDebugImages(const QString &dir, const QImage &image, const std::vector
         hair.regionMask.save(QDir(dir).filePath(QStringLiteral("detect-hair-region.png")));
 }
 
+// The thesis pipeline (classic.h): one face, found by its eye pair.
+DetectionResult detectWithClassic(
+    const QImage &image, const DetectOptions &options, const std::function<void(double, const QString &)> &report)
+{
+    DetectionResult result;
+    result.method = detectionMethodName(DetectionMethod::Classic);
+    report(0.0, QStringLiteral("classic"));
+    const ClassicResult c = detectClassic(image, !options.debugDir.isEmpty());
+    result.timingMs = c.timingMs;
+    if (!options.debugDir.isEmpty() && QDir().mkpath(options.debugDir)) {
+        for (auto it = c.debugImages.begin(); it != c.debugImages.end(); ++it)
+            it.value().save(QDir(options.debugDir).filePath(it.key() + QStringLiteral(".png")));
+    }
+    if (!c.ok) {
+        result.status = DetectStatus::NoFace;
+        result.error = c.error;
+        return result;
+    }
+    result.status = DetectStatus::Ok;
+    result.face = c.face;
+    result.faceCount = 1;
+    result.faceBox = c.face.bounds().toAlignedRect().intersected(image.rect());
+    // The classic method has no score of its own: fixed figures ranking how directly each
+    // group is measured (eyeballs and feature edges first, rule-placed points last).
+    result.groupConfidence.insert(groupName(PointGroup::Eyes), 0.5);
+    result.groupConfidence.insert(groupName(PointGroup::Eyebrows), 0.45);
+    result.groupConfidence.insert(groupName(PointGroup::Nose), 0.35);
+    result.groupConfidence.insert(groupName(PointGroup::Mouth), 0.45);
+    result.groupConfidence.insert(groupName(PointGroup::Contour), 0.35);
+    result.groupConfidence.insert(groupName(PointGroup::Ears), 0.2);
+    result.groupConfidence.insert(groupName(PointGroup::Hair), 0.3);
+    report(1.0, QStringLiteral("done"));
+    return result;
+}
+
 } // namespace
 
 QString detectionMethodName(DetectionMethod m)
@@ -471,18 +507,13 @@ DetectionResult detectFace(
         return false;
     };
 
-    if (options.method == DetectionMethod::Classic) {
-        result.method = detectionMethodName(DetectionMethod::Classic);
-        result.status = DetectStatus::Unsupported;
-        result.error
-            = QStringLiteral("The classic detection method is not implemented yet; use \"landmarks\" or \"auto\".");
-        return result;
-    }
     if (image.isNull()) {
         result.status = DetectStatus::BadImage;
         result.error = QStringLiteral("The image is empty.");
         return result;
     }
+    if (options.method == DetectionMethod::Classic)
+        return detectWithClassic(image, options, report);
 
     QString modelError;
     const auto model = landmarkModel(&modelError, nullptr);

@@ -5,3 +5,7 @@ list(APPEND TOONFACE_CORE_SOURCES
 # dlib's detector and predictor are header templates: unoptimised they run ~40x slower, so
 # this file is optimised even in Debug builds.
 set_source_files_properties(detect/detector.cpp PROPERTIES COMPILE_OPTIONS "-O2")
+list(APPEND TOONFACE_CORE_SOURCES
+  detect/tsai.h detect/tsai.cpp
+  detect/regions.h detect/regions.cpp
+  detect/classic.h detect/classic.cpp)

@@ -1,0 +1,810 @@
+#include "detect/classic.h"
+
+#include "detect/tsai.h"
+
+#include <QElapsedTimer>
+#include <QLineF>
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numbers>
+
+namespace toonface {
+
+double eyePairScore(double area1, double area2)
+{
+    if (area1 < area2)
+        std::swap(area1, area2);
+    const double s = area2 > 0 ? area1 / area2 : 1e9;
+    return (area1 * area2 - s * s) / 2.0;
+}
+
+namespace {
+
+double boxArea(const Region &r)
+{
+    return double(r.box.width()) * r.box.height();
+}
+
+bool passesFilter(const Region &r, QSize size, const EyePairRules &rules)
+{
+    const double aspect = double(r.box.width()) / r.box.height();
+    return !r.touchesBorder && r.area >= rules.minAreaFraction * size.width() * size.height()
+        && r.box.width() <= rules.maxWidthFraction * size.width() && aspect >= rules.minAspect
+        && aspect <= rules.maxAspect && r.area >= rules.minFill * boxArea(r);
+}
+
+} // namespace
+
+std::vector<EyePairCandidate> eyePairCandidates(
+    const std::vector<Region> &dark, QSize imageSize, const EyePairRules &rules)
+{
+    std::vector<int> kept;
+    for (int i = 0; i < int(dark.size()); ++i)
+        if (passesFilter(dark[i], imageSize, rules))
+            kept.push_back(i);
+    std::vector<EyePairCandidate> pairs;
+    const double maxTan = std::tan(rules.maxSkewDegrees * std::numbers::pi / 180.0);
+    for (size_t a = 0; a < kept.size(); ++a) {
+        for (size_t b = a + 1; b < kept.size(); ++b) {
+            const Region &ra = dark[kept[a]], &rb = dark[kept[b]];
+            const double big = std::max(boxArea(ra), boxArea(rb)), small = std::min(boxArea(ra), boxArea(rb));
+            if (big > rules.maxAreaRatio * small)
+                continue;
+            const QPointF delta = rb.centroid - ra.centroid;
+            const double dist = std::hypot(delta.x(), delta.y());
+            const double width = std::max(ra.box.width(), rb.box.width());
+            if (dist < rules.minDistanceInWidths * width || dist > rules.maxDistanceInWidths * width)
+                continue;
+            if (std::abs(delta.y()) > maxTan * std::abs(delta.x()))
+                continue;
+            EyePairCandidate c;
+            c.left = delta.x() >= 0 ? kept[a] : kept[b];
+            c.right = delta.x() >= 0 ? kept[b] : kept[a];
+            pairs.push_back(c);
+        }
+    }
+    // Eq. (3.5) needs the areas normalised: by the largest box area among the paired regions.
+    double norm = 0;
+    for (const auto &c : pairs)
+        norm = std::max({norm, boxArea(dark[c.left]), boxArea(dark[c.right])});
+    for (auto &c : pairs)
+        c.score = eyePairScore(boxArea(dark[c.left]) / norm, boxArea(dark[c.right]) / norm);
+    std::stable_sort(pairs.begin(), pairs.end(), [](const auto &x, const auto &y) { return x.score > y.score; });
+    return pairs;
+}
+
+Eyeball detectEyeball(const Mask &dark, QRect box, double minFill)
+{
+    box = box.intersected(QRect(QPoint(0, 0), dark.size));
+    Eyeball best;
+    if (box.isEmpty())
+        return best;
+    best.centre = QRectF(box).center();
+    const int maxR = std::max(1, std::min(box.width(), box.height()) / 2 + 1);
+    for (int r = 1; r <= maxR; ++r) {
+        int bestCount = -1, total = 0;
+        QPoint bestCentre;
+        for (int dy = -r; dy <= r; ++dy)
+            for (int dx = -r; dx <= r; ++dx)
+                total += dx * dx + dy * dy <= r * r;
+        for (int cy = box.top(); cy <= box.bottom(); ++cy) {
+            for (int cx = box.left(); cx <= box.right(); ++cx) {
+                int count = 0;
+                for (int dy = -r; dy <= r; ++dy)
+                    for (int dx = -r; dx <= r; ++dx)
+                        if (dx * dx + dy * dy <= r * r && dark.contains(cx + dx, cy + dy) && dark.at(cx + dx, cy + dy))
+                            ++count;
+                if (count > bestCount) {
+                    bestCount = count;
+                    bestCentre = QPoint(cx, cy);
+                }
+            }
+        }
+        if (bestCount < minFill * total)
+            break;
+        best.centre = bestCentre;
+        best.radius = r;
+    }
+    return best;
+}
+
+Plane sobelEdges(const Plane &I)
+{
+    Plane s {I.size, std::vector<float>(I.values.size(), 0.0f)};
+    for (int y = 1; y + 1 < I.size.height(); ++y) {
+        for (int x = 1; x + 1 < I.size.width(); ++x) {
+            const float z1 = I.at(x - 1, y - 1), z2 = I.at(x, y - 1), z3 = I.at(x + 1, y - 1);
+            const float z4 = I.at(x - 1, y), z6 = I.at(x + 1, y);
+            const float z7 = I.at(x - 1, y + 1), z8 = I.at(x, y + 1), z9 = I.at(x + 1, y + 1);
+            s.at(x, y)
+                = std::abs((z7 + 2 * z8 + z9) - (z1 + 2 * z2 + z3)) + std::abs((z3 + 2 * z6 + z9) - (z1 + 2 * z4 + z7));
+        }
+    }
+    return s;
+}
+
+int centralVerticalCut(const Plane &I, QRect region)
+{
+    const int x1 = region.left(), x2 = region.right(), y1 = region.top(), y2 = region.bottom();
+    const int w = std::max(1, (x2 - x1) / 2); // eq. (3.14)
+    auto value = [&](int x, int y) {
+        return double(I.at(std::clamp(x, 0, I.size.width() - 1), std::clamp(y, 0, I.size.height() - 1)));
+    };
+    const int mid = (x1 + x2) / 2;
+    int bestX = mid;
+    double bestD = -1;
+    // Steps 6.1 and 6.2: from the middle outward, left and right alternately, so ties keep
+    // the cut nearest the middle.
+    for (int k = 0; k <= w / 2; ++k) {
+        for (int x : {mid - k, mid + k}) {
+            double dx = 0;
+            for (int j = y1; j <= y2; ++j)
+                for (int i = 1; i <= w; ++i)
+                    dx += std::abs(value(x - i, j) - value(x + i, j)); // eq. (3.15)
+            if (bestD < 0 || dx < bestD) {
+                bestD = dx;
+                bestX = x;
+            }
+        }
+    }
+    return bestX;
+}
+
+void cheekOffset(const Mask &F, QPointF mid, double d, double *left, double *right)
+{
+    const QSize size = F.size;
+    const int y0 = std::max(0, int(mid.y() - d / 2)), y1 = std::min(size.height() - 1, int(mid.y() + 1.5 * d));
+    std::vector<double> proj(size.width(), 0.0);
+    for (int y = y0; y <= y1; ++y)
+        for (int x = 0; x < size.width(); ++x)
+            proj[x] += F.at(x, y);
+    auto sym = [&](int k) {
+        const int xl = int(std::lround(mid.x())) - k, xr = int(std::lround(mid.x())) + k;
+        return (xl >= 0 && xl < size.width() ? proj[xl] : 0.0) + (xr >= 0 && xr < size.width() ? proj[xr] : 0.0);
+    };
+    const double reference = sym(int(0.5 * d));
+    int bestK = int(1.5 * d);
+    for (int k = int(0.5 * d); k <= int(1.5 * d); ++k) {
+        if (sym(k) <= 0.5 * reference) {
+            bestK = k;
+            break;
+        }
+    }
+    *left = std::lround(mid.x()) - bestK;
+    *right = std::lround(mid.x()) + bestK;
+}
+
+namespace {
+
+// The pixels of the edge components that reach into `seedRect`, kept inside `clip`.
+struct FeatureRegion
+{
+    QRect box;
+    std::vector<QPoint> pixels;
+};
+
+FeatureRegion growFeature(const Mask &edges, QRect seedRect, QRect clip)
+{
+    FeatureRegion out;
+    clip = clip.intersected(QRect(QPoint(0, 0), edges.size));
+    seedRect = seedRect.intersected(clip);
+    out.box = seedRect;
+    if (clip.isEmpty() || seedRect.isEmpty())
+        return out;
+    Mask sub {clip.size(), std::vector<std::uint8_t>(size_t(clip.width()) * clip.height())};
+    for (int y = 0; y < clip.height(); ++y)
+        for (int x = 0; x < clip.width(); ++x)
+            sub.at(x, y) = edges.at(clip.left() + x, clip.top() + y);
+    std::vector<int> labels;
+    const auto regions = growRegions(sub, 1, &labels);
+    std::vector<bool> seeded(regions.size() + 1, false);
+    for (int y = seedRect.top(); y <= seedRect.bottom(); ++y)
+        for (int x = seedRect.left(); x <= seedRect.right(); ++x)
+            seeded[labels[size_t(y - clip.top()) * clip.width() + (x - clip.left())]] = true;
+    seeded[0] = false;
+    QRect box;
+    for (int y = 0; y < clip.height(); ++y) {
+        for (int x = 0; x < clip.width(); ++x) {
+            if (seeded[labels[size_t(y) * clip.width() + x]]) {
+                const QPoint p(clip.left() + x, clip.top() + y);
+                out.pixels.push_back(p);
+                box = box.united(QRect(p, QSize(1, 1)));
+            }
+        }
+    }
+    if (!box.isEmpty())
+        out.box = box;
+    return out;
+}
+
+QPointF averageOf(const std::vector<QPoint> &pixels, const std::function<bool(QPoint)> &keep, QPointF fallback)
+{
+    QPointF sum;
+    int n = 0;
+    for (const QPoint &p : pixels) {
+        if (keep(p)) {
+            sum += p;
+            ++n;
+        }
+    }
+    return n ? sum / n : fallback;
+}
+
+// The average of the column centres (x, mean y of the column's pixels) over columns [a, b].
+QPointF columnCentres(const std::vector<QPoint> &pixels, int a, int b, QPointF fallback)
+{
+    QPointF sum;
+    int n = 0;
+    for (int x = a; x <= b; ++x) {
+        double ys = 0;
+        int k = 0;
+        for (const QPoint &p : pixels)
+            if (p.x() == x) {
+                ys += p.y();
+                ++k;
+            }
+        if (k) {
+            sum += QPointF(x, ys / k);
+            ++n;
+        }
+    }
+    return n ? sum / n : fallback;
+}
+
+// The thesis' "w" of Algorithms 4.2-4.5 (how many end columns or top rows are averaged) is
+// not given: an eighth of the region.
+int endColumns(const QRect &box)
+{
+    return std::max(1, int(std::lround(box.width() / 8.0)));
+}
+
+bool inMask(const Mask &m, QPointF p)
+{
+    const int x = int(std::lround(p.x())), y = int(std::lround(p.y()));
+    return m.contains(x, y) && m.at(x, y);
+}
+
+// Walks from `start` by `step` while inside `m`; returns the first point outside, or
+// `fallback` when `maxSteps` pass first or the image ends.
+QPointF leave(const Mask &m, QPointF start, QPointF step, int maxSteps, QPointF fallback, bool *found = nullptr)
+{
+    QPointF p = start;
+    for (int i = 0; i < maxSteps; ++i) {
+        p += step;
+        const int x = int(std::lround(p.x())), y = int(std::lround(p.y()));
+        if (!m.contains(x, y))
+            break;
+        if (!m.at(x, y)) {
+            if (found)
+                *found = true;
+            return p;
+        }
+    }
+    if (found)
+        *found = false;
+    return fallback;
+}
+
+QImage maskImage(const Mask &m, QColor on, QColor off)
+{
+    QImage img(m.size, QImage::Format_RGB32);
+    for (int y = 0; y < m.size.height(); ++y) {
+        auto *row = reinterpret_cast<QRgb *>(img.scanLine(y));
+        for (int x = 0; x < m.size.width(); ++x)
+            row[x] = m.at(x, y) ? on.rgb() : off.rgb();
+    }
+    return img;
+}
+
+} // namespace
+
+ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect faceHint)
+{
+    ClassicResult res;
+    QElapsedTimer total, stage;
+    total.start();
+    stage.start();
+    auto lap = [&](const char *name) {
+        res.timingMs.insert(QString::fromLatin1(name), stage.nsecsElapsed() / 1e6);
+        stage.restart();
+    };
+    if (input.isNull() || input.width() < 16 || input.height() < 16) {
+        res.error = QStringLiteral("The image is too small for the classic method.");
+        return res;
+    }
+    // The pipeline works on a copy at most 640 pixels on its longer side; points go back to
+    // the input's pixels at the end.
+    const double scale = std::min(1.0, 640.0 / std::max(input.width(), input.height()));
+    const QImage image
+        = (scale < 1.0 ? input.scaled(QSize(std::lround(input.width() * scale), std::lround(input.height() * scale)),
+               Qt::IgnoreAspectRatio, Qt::SmoothTransformation)
+                       : input)
+              .convertToFormat(QImage::Format_RGB32);
+    const QSize size = image.size();
+
+    const Plane I = intensityPlane(image);
+    const Plane H = huePlane(image);
+    const QRectF hint = faceHint.isValid()
+        ? QRectF(faceHint.x() * scale, faceHint.y() * scale, faceHint.width() * scale, faceHint.height() * scale)
+        : QRectF();
+    const QRect rect = hint.isValid()
+        ? QRectF(hint.x() + hint.width() / 4, hint.y() + hint.height() / 4, hint.width() / 2, hint.height() / 2)
+              .toAlignedRect()
+              .intersected(QRect(QPoint(0, 0), size))
+        : centralRect(size);
+    lap("hsi");
+
+    const FirstLevel first = firstLevelThreshold(I, rect);
+    res.t1 = first.t1;
+    const SecondLevel second = secondLevelThreshold(H, first.b1, rect);
+    const RefinedRegions refined = refineRegions(first.b1, second.b2);
+    lap("regions");
+    if (withDebugImages) {
+        res.debugImages.insert(QStringLiteral("classic-b1"), first.b1.toImage());
+        res.debugImages.insert(QStringLiteral("classic-b2"), second.b2.toImage());
+        res.debugImages.insert(QStringLiteral("classic-b3"), refined.b3.toImage());
+        QImage fh = maskImage(refined.face, QColor(230, 190, 160), QColor(40, 60, 120));
+        for (int y = 0; y < size.height(); ++y)
+            for (int x = 0; x < size.width(); ++x)
+                if (refined.hair.at(x, y))
+                    fh.setPixel(x, y, qRgb(90, 50, 20));
+        res.debugImages.insert(QStringLiteral("classic-face-hair"), fh);
+    }
+
+    // Eye pairs on B1 of eq. (3.3) first; where the eyes merge with brows or hair there (real
+    // photos, dark make-up), again on stricter darkness levels t = m1 - k s1, k = 1.5, 2, 2.5:
+    // the eyes are the darkest features of a face and separate first.
+    std::vector<int> darkLabels;
+    std::vector<Region> dark;
+    std::vector<EyePairCandidate> candidates, eyes;
+    Mask eyeB1 = first.b1;
+    for (double k : {1.0, 1.5, 2.0, 2.5}) {
+        if (k > 1.0)
+            eyeB1 = firstLevelThreshold(I, rect, k).b1;
+        dark = growRegions(eyeB1, 0, &darkLabels);
+        candidates = eyePairCandidates(dark, size);
+        if (hint.isValid()) {
+            const QRectF upper(hint.x(), hint.y(), hint.width(), 0.6 * hint.height());
+            std::erase_if(candidates, [&](const EyePairCandidate &c) {
+                return !upper.contains(dark[c.left].centroid) || !upper.contains(dark[c.right].centroid);
+            });
+        }
+        // Knowledge beyond eq. (3.5): brows and spectacle rims pair as well as eyes do and are
+        // larger, so a pair gives way to a pair as wide apart (0.7 .. 1.3 times) that lies just
+        // below it (0.1 d .. 0.7 d lower, horizontally aligned) or inside its two boxes.
+        eyes.clear();
+        for (const auto &c : candidates) {
+            const QPointF a = dark[c.left].centroid, b = dark[c.right].centroid;
+            const double dist = QLineF(a, b).length();
+            bool hasBelow = false;
+            for (const auto &o : candidates) {
+                const QPointF oa = dark[o.left].centroid, ob = dark[o.right].centroid;
+                auto below = [&](QPointF top, QPointF bottom) {
+                    return bottom.y() - top.y() > 0.1 * dist && bottom.y() - top.y() < 0.7 * dist
+                        && std::abs(bottom.x() - top.x()) < 0.3 * dist;
+                };
+                const double ratio = QLineF(oa, ob).length() / std::max(dist, 1e-9);
+                if (&o == &c || ratio < 0.7 || ratio > 1.3)
+                    continue;
+                const bool inside = QRectF(dark[c.left].box).contains(oa) && QRectF(dark[c.right].box).contains(ob);
+                if ((below(a, oa) && below(b, ob)) || inside)
+                    hasBelow = true;
+            }
+            if (!hasBelow)
+                eyes.push_back(c);
+        }
+        if (!eyes.empty()) {
+            res.eyeLevelK = k;
+            break;
+        }
+    }
+    res.candidateCount = int(candidates.size());
+    if (withDebugImages) {
+        QImage img = image;
+        QPainter p(&img);
+        p.setPen(QPen(Qt::yellow, 1));
+        for (const auto &c : candidates) {
+            p.drawRect(dark[c.left].box);
+            p.drawRect(dark[c.right].box);
+            p.drawLine(dark[c.left].centroid, dark[c.right].centroid);
+        }
+        if (!eyes.empty()) {
+            p.setPen(QPen(Qt::red, 2));
+            p.drawRect(dark[eyes.front().left].box);
+            p.drawRect(dark[eyes.front().right].box);
+        }
+        p.end();
+        res.debugImages.insert(QStringLiteral("classic-eye-pairs"), img);
+    }
+    lap("eyePair");
+    if (eyes.empty()) {
+        res.error = QStringLiteral("No eye pair was found (the classic method needs a large frontal face "
+                                   "on a plain background).");
+        return res;
+    }
+
+    const Region *eyeRegion[2] = {&dark[eyes.front().left], &dark[eyes.front().right]};
+    for (int k = 0; k < 2; ++k) {
+        const Region &r = *eyeRegion[k];
+        res.eyeRegions[k] = r.box;
+        Mask m {size, std::vector<std::uint8_t>(size_t(size.width()) * size.height(), 0)};
+        for (int y = r.box.top(); y <= r.box.bottom(); ++y)
+            for (int x = r.box.left(); x <= r.box.right(); ++x)
+                m.at(x, y) = darkLabels[size_t(y) * size.width() + x] == r.label;
+        res.eyeballs[k] = detectEyeball(m, r.box);
+    }
+    const Eyeball &ebL = res.eyeballs[0], &ebR = res.eyeballs[1];
+    res.d = QLineF(ebL.centre, ebR.centre).length();
+    const double d = res.d;
+    res.eyeMid = (ebL.centre + ebR.centre) / 2;
+    const QPointF mid = res.eyeMid;
+    res.square = QRectF(mid.x() - d, mid.y() - d / 2, 2 * d, 2 * d);
+    const QRect square = res.square.toAlignedRect().intersected(QRect(QPoint(0, 0), size));
+    lap("eyeballs");
+    if (withDebugImages) {
+        QImage img = image;
+        QPainter p(&img);
+        p.setRenderHint(QPainter::Antialiasing);
+        p.setPen(QPen(Qt::green, 1.5));
+        for (const Eyeball &e : res.eyeballs)
+            p.drawEllipse(e.centre, e.radius, e.radius);
+        p.drawLine(ebL.centre, ebR.centre);
+        p.setPen(QPen(Qt::red, 1.5));
+        p.drawRect(res.square);
+        p.end();
+        res.debugImages.insert(QStringLiteral("classic-eyeballs"), img);
+    }
+
+    // Algorithm 4.5: Sobel edges, mirrored about the eyes' axis inside the square (each side
+    // keeps the stronger of itself and its mirror), then Tsai per horizontal part.
+    Plane S = sobelEdges(I);
+    {
+        const Plane raw = S;
+        for (int y = square.top(); y <= square.bottom(); ++y) {
+            for (int x = square.left(); x <= square.right(); ++x) {
+                const int mx = int(std::lround(2 * mid.x() - x));
+                if (raw.contains(mx, y))
+                    S.at(x, y) = std::max(raw.at(x, y), raw.at(mx, y));
+            }
+        }
+    }
+    res.divEE = ebL.centre.y() - ebL.height() / 2 - 1;
+    res.divEN = mid.y() + d / 3;
+    res.divNM = mid.y() + d;
+    Mask edges {size, std::vector<std::uint8_t>(size_t(size.width()) * size.height(), 0)};
+    const double cuts[5] = {double(square.top()), res.divEE, res.divEN, res.divNM, double(square.bottom() + 1)};
+    for (int part = 0; part < 4; ++part) {
+        const int y0 = std::max(square.top(), int(std::ceil(cuts[part])));
+        const int y1 = std::min(square.bottom(), int(std::ceil(cuts[part + 1])) - 1);
+        std::vector<double> hist(2041, 0.0);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = square.left(); x <= square.right(); ++x)
+                hist[std::clamp(int(S.at(x, y)), 0, 2040)] += 1;
+        const TsaiThreshold t = tsaiThreshold(hist);
+        if (!t.valid)
+            continue;
+        for (int y = y0; y <= y1; ++y)
+            for (int x = square.left(); x <= square.right(); ++x)
+                edges.at(x, y) = int(S.at(x, y)) > t.threshold;
+    }
+    lap("edges");
+    if (withDebugImages) {
+        QImage img = edges.toImage().convertToFormat(QImage::Format_RGB32);
+        QPainter p(&img);
+        p.setPen(QPen(Qt::red, 1));
+        for (double y : {res.divEE, res.divEN, res.divNM})
+            p.drawLine(QPointF(square.left(), y), QPointF(square.right(), y));
+        p.setPen(QPen(Qt::green, 1));
+        p.drawRect(res.square);
+        p.end();
+        res.debugImages.insert(QStringLiteral("classic-edges"), img);
+    }
+
+    // Algorithm 4.6 with the restrictions: inside the square; nose and mouth between the
+    // eyeball centres; each feature kept between its division lines.
+    const double hL = std::max(ebL.height(), 2.0);
+    const QRectF eyeInit(QPointF(ebL.centre.x() - hL, ebL.centre.y() - 0.5 * hL),
+        QPointF(ebL.centre.x() + hL, ebL.centre.y() + 0.5 * hL));
+    // "The eye range translated above Div_EE": the same columns, ending at Div_EE, at least d/3
+    // high so that brows set well above the eyes are still reached.
+    const double browH = std::max(eyeInit.height(), d / 3);
+    const QRectF browInit(QPointF(eyeInit.left(), res.divEE - browH), QPointF(eyeInit.right(), res.divEE));
+    const QRectF noseInit(
+        QPointF(ebL.centre.x(), res.divEN), QPointF(ebR.centre.x(), res.divEN + 0.7 * (res.divNM - res.divEN)));
+    const QRectF mouthInit(QPointF(ebL.centre.x(), res.divNM), QPointF(ebR.centre.x(), res.divNM + d / 3));
+    auto rows = [&](double top, double bottom, double left, double right) {
+        return QRect(
+            QPoint(int(std::ceil(left)), int(std::ceil(top))), QPoint(int(std::floor(right)), int(std::floor(bottom))))
+            .intersected(square);
+    };
+    const FeatureRegion eye
+        = growFeature(edges, eyeInit.toAlignedRect(), rows(res.divEE + 1, res.divEN, square.left(), mid.x()));
+    const FeatureRegion brow
+        = growFeature(edges, browInit.toAlignedRect(), rows(square.top(), res.divEE, square.left(), mid.x()));
+    const FeatureRegion nose
+        = growFeature(edges, noseInit.toAlignedRect(), rows(res.divEN, res.divNM, ebL.centre.x(), ebR.centre.x()));
+    const FeatureRegion mouth = growFeature(
+        edges, mouthInit.toAlignedRect(), rows(res.divNM, square.bottom(), ebL.centre.x(), ebR.centre.x()));
+    res.eyeRegion = eye.box;
+    res.browRegion = brow.box;
+    res.noseRegion = nose.box;
+    res.mouthRegion = mouth.box;
+    res.noseCut = centralVerticalCut(I, nose.box);
+    res.mouthCut = centralVerticalCut(I, mouth.box);
+    lap("features");
+    if (withDebugImages) {
+        QImage img = image;
+        QPainter p(&img);
+        p.setPen(QPen(Qt::yellow, 1, Qt::DashLine));
+        for (const QRectF &r : {eyeInit, browInit, noseInit, mouthInit})
+            p.drawRect(r);
+        p.setPen(QPen(Qt::cyan, 1.5));
+        for (const QRectF &r : {res.eyeRegion, res.browRegion, res.noseRegion, res.mouthRegion})
+            p.drawRect(r);
+        p.setPen(QPen(Qt::magenta, 1));
+        p.drawLine(QPointF(res.noseCut, res.noseRegion.top()), QPointF(res.noseCut, res.noseRegion.bottom()));
+        p.drawLine(QPointF(res.mouthCut, res.mouthRegion.top()), QPointF(res.mouthCut, res.mouthRegion.bottom()));
+        p.end();
+        res.debugImages.insert(QStringLiteral("classic-feature-regions"), img);
+    }
+
+    // Section 4.3.1. The right side mirrors the left about the eyeballs' perpendicular bisector.
+    const QPointF axis = ebR.centre - ebL.centre;
+    const QPointF u = d > 0 ? axis / d : QPointF(1, 0);
+    auto mirror = [&](QPointF p) {
+        const double t = QPointF::dotProduct(p - mid, u);
+        return p - 2 * t * u;
+    };
+    FaceModel face(size);
+    auto set = [&](const char *id, QPointF p) { face.setPoint(pt::idx(id), p); };
+    {
+        const QRect b = brow.box;
+        const int w = endColumns(b);
+        const QPointF fallback = QRectF(b).center();
+        const QPointF p46 = averageOf(
+            brow.pixels, [&](QPoint p) { return p.x() < b.left() + w; }, QPointF(b.left(), fallback.y()));
+        const QPointF p42 = averageOf(
+            brow.pixels, [&](QPoint p) { return p.x() > b.right() - w; }, QPointF(b.right(), fallback.y()));
+        const int inner0 = b.left() + w, inner1 = b.right() - w, half = (inner0 + inner1) / 2;
+        const QPointF p44a = columnCentres(brow.pixels, inner0, half, (2 * p46 + p42) / 3);
+        const QPointF p44 = columnCentres(brow.pixels, half + 1, inner1, (p46 + 2 * p42) / 3);
+        set("4.6", p46);
+        set("4.4a", p44a);
+        set("4.4", p44);
+        set("4.2", p42);
+        set("4.5", mirror(p46));
+        set("4.3a", mirror(p44a));
+        set("4.3", mirror(p44));
+        set("4.1", mirror(p42));
+    }
+    {
+        const QRect b = eye.box;
+        const int w = endColumns(b);
+        const QPointF p312 = averageOf(
+            eye.pixels, [&](QPoint p) { return p.x() < b.left() + w; }, QPointF(ebL.centre.x() - hL, ebL.centre.y()));
+        const QPointF p38 = averageOf(
+            eye.pixels, [&](QPoint p) { return p.x() > b.right() - w; }, QPointF(ebL.centre.x() + hL, ebL.centre.y()));
+        set("3.12", p312);
+        set("3.8", p38);
+        set("3.2", ebL.centre - QPointF(0, ebL.height() / 2));
+        set("3.4", ebL.centre + QPointF(0, ebL.height() / 2));
+        set("3.6", ebL.centre);
+        set("3.11", mirror(p38));
+        set("3.7", mirror(p312));
+        set("3.1", ebR.centre - QPointF(0, ebR.height() / 2));
+        set("3.3", ebR.centre + QPointF(0, ebR.height() / 2));
+        set("3.5", ebR.centre);
+    }
+    {
+        const QRectF n = nose.box;
+        const double x1 = n.left(), x2 = n.right(), y1 = n.top(), y2 = n.bottom();
+        const QPointF p38 = face.point("3.8"), p311 = face.point("3.11");
+        set("9.6", QPointF(p38.x() + (p311.x() - p38.x()) / 3, mid.y()));
+        set("9.7", QPointF(p311.x() - (p311.x() - p38.x()) / 3, mid.y()));
+        set("9.14", QPointF(x1 + (x2 - x1) / 8, y1));
+        set("9.13", QPointF(x2 - (x2 - x1) / 8, y1));
+        set("9.2", QPointF(x1, (y1 + 3 * y2) / 4));
+        set("9.1", QPointF(x2, (y1 + 3 * y2) / 4));
+        set("9.4", QPointF(x1 + (x2 - x1) / 8, y2));
+        set("9.5", QPointF(x2 - (x2 - x1) / 8, y2));
+        set("9.15", QPointF(res.noseCut, y2));
+    }
+    {
+        const QRect b = mouth.box;
+        const int w = endColumns(b);
+        const double xm = res.mouthCut;
+        const QPointF p84 = averageOf(
+            mouth.pixels, [&](QPoint p) { return p.x() < b.left() + w; }, QPointF(b.left(), QRectF(b).center().y()));
+        const int wr = std::max(1, int(std::lround(b.height() / 8.0)));
+        const QPointF p89 = averageOf(
+            mouth.pixels, [&](QPoint p) { return p.x() < xm && p.y() < b.top() + wr; },
+            QPointF((b.left() + xm) / 2, b.top()));
+        // Step 5 is garbled in the text; read as: 8.1 is the topmost edge pixel on the cut.
+        double top = b.bottom();
+        for (const QPoint &p : mouth.pixels)
+            if (std::abs(p.x() - xm) <= 1)
+                top = std::min<double>(top, p.y());
+        auto mirrorM = [&](QPointF p) { return QPointF(2 * xm - p.x(), p.y()); };
+        set("8.4", p84);
+        set("8.9", p89);
+        set("8.1", QPointF(xm, std::min(top, p84.y())));
+        set("8.10", mirrorM(p89));
+        set("8.3", mirrorM(p84));
+        set("2.2", QPointF(xm, p84.y()));
+        set("2.3", QPointF(xm, p84.y()));
+        set("8.2", QPointF(xm, b.bottom()));
+    }
+    lap("featurePoints");
+
+    const Mask &F = refined.face;
+    cheekOffset(F, mid, d, &res.cheekLeft, &res.cheekRight);
+    // Section 4.3.2 A: jaw and face points by searching out of F_final.
+    {
+        const int far = int(2 * d);
+        const QPointF p82 = face.point("8.2"), p89 = face.point("8.9"), p810 = face.point("8.10");
+        set("2.1", leave(F, p82, QPointF(0, 1), far, p82 + QPointF(0, 0.7 * d)));
+        QPointF p214, p213;
+        bool okL = false, okR = false;
+        for (int dy = 0; dy < int(d / 2) && !okL; ++dy) {
+            p214 = leave(F, p89 + QPointF(0, dy), QPointF(-1, 0), far, QPointF(res.cheekLeft, p89.y()), &okL);
+            okL = okL && p214.x() >= res.cheekLeft - 1;
+        }
+        for (int dy = 0; dy < int(d / 2) && !okR; ++dy) {
+            p213 = leave(F, p810 + QPointF(0, dy), QPointF(1, 0), far, QPointF(res.cheekRight, p810.y()), &okR);
+            okR = okR && p213.x() <= res.cheekRight + 1;
+        }
+        if (!okL)
+            p214 = QPointF(res.cheekLeft, p89.y());
+        if (!okR)
+            p213 = QPointF(res.cheekRight, p810.y());
+        set("2.14", p214);
+        set("2.13", p213);
+        const QPointF mouthC((p214.x() + p213.x()) / 2, face.point("8.4").y());
+        const QPointF p21 = face.point("2.1");
+        set("2.12", leave(F, mouthC, QPointF(-0.7071, 0.7071), far, (p214 + p21) / 2));
+        set("2.11", leave(F, mouthC, QPointF(0.7071, 0.7071), far, (p213 + p21) / 2));
+        set("5.2", QPointF(res.cheekLeft, mid.y()));
+        set("5.1", QPointF(res.cheekRight, mid.y()));
+        set("11.2",
+            leave(F, QPointF(p214.x() + 2, mid.y() + d / 2), QPointF(0, -1), far, QPointF(p214.x(), mid.y() - d)));
+        set("11.3",
+            leave(F, QPointF(p213.x() - 2, mid.y() + d / 2), QPointF(0, -1), far, QPointF(p213.x(), mid.y() - d)));
+        // 11.1: the mean of the topmost rows of F_final between the jaw points.
+        QPointF sum;
+        int n = 0, topRow = -1;
+        for (int y = 0; y < int(mid.y()) && n == 0; ++y)
+            for (int x = int(p214.x()); x <= int(p213.x()); ++x)
+                if (F.contains(x, y) && F.at(x, y)) {
+                    topRow = y;
+                    ++n;
+                }
+        n = 0;
+        for (int y = std::max(0, topRow); topRow >= 0 && y < topRow + 4; ++y)
+            for (int x = int(p214.x()); x <= int(p213.x()); ++x)
+                if (F.contains(x, y) && F.at(x, y)) {
+                    sum += QPointF(x, y);
+                    ++n;
+                }
+        set("11.1", n ? sum / n : QPointF(mid.x(), mid.y() - d));
+    }
+    // Ears: the parts of F_final outside the cheek boundaries between the brow and nose
+    // lines; a missing ear lies flat on the cheek.
+    for (int side = 0; side < 2; ++side) {
+        const double cheek = side == 0 ? res.cheekLeft : res.cheekRight;
+        const int sign = side == 0 ? -1 : 1;
+        const int y0 = std::max(0, int(res.divEE)), y1 = std::min(size.height() - 1, int(res.divNM));
+        QPointF top, bottom, outer;
+        bool any = false;
+        for (int y = y0; y <= y1; ++y) {
+            // Start a little outside the cheek line so the face's own curve is not an ear.
+            for (int k = std::max(2, int(d / 20)); k < int(d / 2); ++k) {
+                const int x = int(cheek) + sign * k;
+                if (!F.contains(x, y) || !F.at(x, y))
+                    break;
+                const QPointF p(x, y);
+                if (!any) {
+                    top = bottom = outer = p;
+                    any = true;
+                }
+                if (p.y() < top.y())
+                    top = p;
+                if (p.y() >= bottom.y())
+                    bottom = p;
+                if (sign * p.x() > sign * outer.x())
+                    outer = p;
+            }
+        }
+        if (!any) {
+            top = QPointF(cheek, res.divEE);
+            bottom = QPointF(cheek, res.divNM);
+            outer = QPointF(cheek + sign * 2, (res.divEE + res.divNM) / 2);
+        }
+        const QPointF junction(cheek, bottom.y());
+        set(side == 0 ? "10.2" : "10.1", top);
+        set(side == 0 ? "10.4" : "10.3", outer);
+        set(side == 0 ? "10.6" : "10.5", bottom);
+        set(side == 0 ? "10.10" : "10.9", junction);
+    }
+    // Section 4.3.2 B: hair points on rays from EyeMid (10 degrees below the eye line on the
+    // left, over the crown, to 10 degrees below on the right), leaving the face and then the
+    // hair region; where there is no hair the point stays on the face's edge.
+    for (int i = 0; i < 19; ++i) {
+        const double a = (190.0 - i * (200.0 / 18.0)) * std::numbers::pi / 180.0;
+        const QPointF step(std::cos(a), -std::sin(a));
+        QPointF p = mid;
+        int guard = 0;
+        while (inMask(F, p) && guard++ < 4 * d)
+            p += step;
+        QPointF edge = p;
+        while (guard++ < 6 * d) {
+            const QPointF q = p + step;
+            const int x = int(std::lround(q.x())), y = int(std::lround(q.y()));
+            if (!refined.hair.contains(x, y))
+                break;
+            if (refined.hair.at(x, y))
+                edge = q;
+            else if (QLineF(edge, q).length() > d / 8)
+                break;
+            p = q;
+        }
+        face.setPoint(pt::idx("h.1") + i, edge);
+    }
+    lap("outline");
+
+    if (withDebugImages) {
+        QImage img = image;
+        QPainter p(&img);
+        p.setRenderHint(QPainter::Antialiasing);
+        p.setPen(Qt::NoPen);
+        for (int i = 0; i < kPointCount; ++i) {
+            p.setBrush(pointTable()[i].group == PointGroup::Hair ? Qt::magenta : Qt::green);
+            p.drawEllipse(face.point(i), 2.0, 2.0);
+        }
+        p.setPen(QPen(Qt::cyan, 1));
+        p.drawLine(QPointF(res.cheekLeft, 0), QPointF(res.cheekLeft, size.height()));
+        p.drawLine(QPointF(res.cheekRight, 0), QPointF(res.cheekRight, size.height()));
+        p.end();
+        res.debugImages.insert(QStringLiteral("classic-points"), img);
+    }
+
+    // Back to the input's pixels.
+    if (scale < 1.0) {
+        const double k = 1.0 / scale;
+        for (int i = 0; i < kPointCount; ++i)
+            face.setPoint(i, face.point(i) * k);
+        for (auto &r : res.eyeRegions)
+            r = QRectF(r.topLeft() * k, r.size() * k);
+        for (auto &e : res.eyeballs) {
+            e.centre *= k;
+            e.radius *= k;
+        }
+        res.d *= k;
+        res.eyeMid *= k;
+        for (QRectF *r : {&res.square, &res.browRegion, &res.eyeRegion, &res.noseRegion, &res.mouthRegion})
+            *r = QRectF(r->topLeft() * k, r->size() * k);
+        for (double *v :
+            {&res.divEE, &res.divEN, &res.divNM, &res.noseCut, &res.mouthCut, &res.cheekLeft, &res.cheekRight})
+            *v *= k;
+    }
+    // Searches that end on the image's edge may round just outside it.
+    for (int i = 0; i < kPointCount; ++i)
+        face.setPoint(i,
+            QPointF(std::clamp(face.point(i).x(), 0.0, input.width() - 1.0),
+                std::clamp(face.point(i).y(), 0.0, input.height() - 1.0)));
+    face.setImageSize(input.size());
+    res.face = face;
+    if (!face.isValid()) {
+        res.error = QStringLiteral("The classic method found an eye pair but could not place a face around it "
+                                   "(a feature collapsed to nothing).");
+        res.timingMs.insert(QStringLiteral("total"), total.nsecsElapsed() / 1e6);
+        return res;
+    }
+    res.timingMs.insert(QStringLiteral("total"), total.nsecsElapsed() / 1e6);
+    res.ok = true;
+    return res;
+}
+
+} // namespace toonface

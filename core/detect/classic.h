@@ -1,0 +1,102 @@
+#pragma once
+
+#include "detect/regions.h"
+#include "face/facemodel.h"
+
+#include <QImage>
+#include <QMap>
+#include <QRectF>
+#include <QString>
+
+#include <vector>
+
+namespace toonface {
+
+// The thesis' "classic" pipeline (chapters 3 and 4.3), one function per algorithm so each can
+// be tested on its own; detectClassic() runs them in order.
+
+// Eq. (3.5): Score = (A1 A2 - S^2) / 2 with S = A1 / A2, for the normalised box areas
+// A1 >= A2 of the two regions (the caller normalises by the largest candidate's box area).
+double eyePairScore(double area1, double area2);
+
+// Chan et al.'s eye-pair generation on the dark regions, then the optimal pair.
+struct EyePairCandidate
+{
+    int left = -1, right = -1; // indices into the dark regions; left is the image-left one
+    double score = 0;
+};
+struct EyePairRules
+{
+    double maxSkewDegrees = 10.0; // the thesis' allowed tilt of the pair
+    double maxAreaRatio = 3.0; // relative size: larger / smaller box area
+    double minDistanceInWidths = 1.5; // centre distance in widths of the wider region
+    double maxDistanceInWidths = 8.0;
+    double minAspect = 0.6; // region width / height
+    double maxAspect = 8.0;
+    double minFill = 0.15; // area / box area
+    double maxWidthFraction = 0.2; // region width / image width
+    double minAreaFraction = 2e-5; // region area / image area
+};
+// Every pair of filtered dark regions that passes the pairing rules, with its eq. (3.5)
+// score; sorted best first.
+std::vector<EyePairCandidate> eyePairCandidates(
+    const std::vector<Region> &dark, QSize imageSize, const EyePairRules &rules = {});
+
+// Section 3.4.1: the circle holding the most dark points of one eye region. The radius grows
+// while the best-placed circle of that radius stays at least `minFill` dark; the largest such
+// circle is the eyeball.
+struct Eyeball
+{
+    QPointF centre;
+    double radius = 0;
+    double height() const { return 2 * radius; }
+};
+// `dark` marks the eye region's pixels (value 1); the search stays inside `box`.
+Eyeball detectEyeball(const Mask &dark, QRect box, double minFill = 0.9);
+
+// Eq. (3.13): S = |(z7 + 2 z8 + z9) - (z1 + 2 z2 + z3)| + |(z3 + 2 z6 + z9) - (z1 + 2 z4 + z7)|;
+// the one-pixel frame is 0.
+Plane sobelEdges(const Plane &intensity);
+
+// Algorithm 3.7 (eqs. 3.14-3.15): the x in [x1 + w/2, x2 - w/2] with the smallest left/right
+// dissimilarity of `intensity` over rows y1..y2, w = (x2 - x1) / 2; columns outside the image
+// are clamped.
+int centralVerticalCut(const Plane &intensity, QRect region);
+
+// Section 3.5: the cheek boundaries x = mid.x -+ k from the vertical projection of the face
+// region F over the rows mid.y - d/2 .. mid.y + 1.5 d, made symmetric by adding the mirrored
+// right side to the left. The face narrows toward its sides while ears add only short
+// columns: k is the first offset from d/2 on where the symmetric projection has fallen to
+// half its value at d/2 (1.5 d when it never does).
+void cheekOffset(const Mask &face, QPointF mid, double d, double *left, double *right);
+
+// Everything the pipeline found, in the pixels of the image given to detectClassic().
+struct ClassicResult
+{
+    bool ok = false;
+    QString error;
+    FaceModel face;
+    double t1 = 0; // the first-level threshold
+    double eyeLevelK = 1; // the k of t = m1 - k s1 on which the eye pair was found
+    QRectF eyeRegions[2]; // the chosen pair's boxes, image-left first
+    int candidateCount = 0;
+    Eyeball eyeballs[2]; // image-left first
+    double d = 0; // eyeball distance
+    QPointF eyeMid;
+    QRectF square; // the 2d x 2d square
+    double divEE = 0, divEN = 0, divNM = 0;
+    QRectF browRegion, eyeRegion, noseRegion, mouthRegion; // the left brow and eye; nose; mouth
+    double noseCut = 0, mouthCut = 0;
+    double cheekLeft = 0, cheekRight = 0;
+    QMap<QString, double> timingMs;
+    QMap<QString, QImage> debugImages; // name -> picture, when asked for
+};
+
+// `faceHint`, when valid, is a face box from elsewhere (a face detector, the previous video
+// frame): Algorithm 4.1's central rectangle becomes the middle of that box instead of the
+// middle of the image, and eye pairs must lie in its upper part. Without it the thesis'
+// assumption holds: a large frontal face in the middle of the picture.
+// requires: image is not null.
+ClassicResult detectClassic(const QImage &image, bool withDebugImages = false, QRect faceHint = {});
+
+} // namespace toonface

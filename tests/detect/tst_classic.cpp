@@ -1,0 +1,578 @@
+#include "detect/classic.h"
+#include "detect/detector.h"
+#include "detect/landmarkmap.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QPainter>
+#include <QRandomGenerator>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace toonface;
+
+namespace {
+
+// A drawn frontal face on a plain blue background: eyeball centres at (cx -+ 45, 230),
+// so d = 90.
+struct DrawnFace
+{
+    QImage image;
+    QPointF eyeL {195, 230}, eyeR {285, 230};
+    double irisR = 7;
+    QRectF browL {172, 196, 46, 8}, browR {262, 196, 46, 8};
+    QRectF mouth {205, 338, 70, 14};
+    QPointF nostrilL {229, 300}, nostrilR {251, 300};
+    QRectF head {130, 110, 220, 300}; // the skin ellipse
+    QRectF hair {118, 80, 244, 200}; // the hair ellipse, behind the skin
+};
+
+DrawnFace drawFace()
+{
+    DrawnFace f;
+    f.image = QImage(480, 480, QImage::Format_RGB32);
+    f.image.fill(QColor(150, 180, 230));
+    QPainter p(&f.image);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(60, 35, 20));
+    p.drawEllipse(f.hair);
+    const QColor skin(225, 180, 150);
+    p.setBrush(skin);
+    p.drawEllipse(QRectF(116, 215, 24, 50)); // ears
+    p.drawEllipse(QRectF(340, 215, 24, 50));
+    p.drawEllipse(f.head);
+    p.setBrush(QColor(245, 245, 240));
+    p.setPen(QPen(QColor(60, 40, 30), 2)); // the lash line
+    p.drawEllipse(f.eyeL, 19, 8); // eye whites
+    p.drawEllipse(f.eyeR, 19, 8);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(30, 20, 15));
+    p.drawEllipse(f.eyeL, f.irisR, f.irisR);
+    p.drawEllipse(f.eyeR, f.irisR, f.irisR);
+    p.setBrush(QColor(70, 45, 30));
+    p.drawRect(f.browL);
+    p.drawRect(f.browR);
+    p.setBrush(QColor(90, 50, 45));
+    p.drawEllipse(f.nostrilL, 5, 3);
+    p.drawEllipse(f.nostrilR, 5, 3);
+    p.setBrush(QColor(150, 50, 60));
+    p.drawEllipse(f.mouth);
+    p.end();
+    return f;
+}
+
+} // namespace
+
+namespace {
+
+QString sharedFacesDir()
+{
+    const QString env = qEnvironmentVariable("TOONFACE_DATA_DIR");
+    return QDir(env.isEmpty() ? QStringLiteral(TOONFACE_SHARED_DATA) : env).filePath(QStringLiteral("faces"));
+}
+
+// Reads a 300-W .pts file (1-based pixel coordinates) into 0-based iBUG points.
+bool readPts(const QString &path, std::array<QPointF, kIbugPointCount> *pts)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
+        return false;
+    const QString text = QString::fromUtf8(file.readAll());
+    const int open = text.indexOf(QLatin1Char('{')), close = text.indexOf(QLatin1Char('}'));
+    if (open < 0 || close < open)
+        return false;
+    const QStringList nums
+        = text.mid(open + 1, close - open - 1).split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts);
+    if (nums.size() != 2 * kIbugPointCount)
+        return false;
+    for (int i = 0; i < kIbugPointCount; ++i)
+        (*pts)[i] = QPointF(nums[2 * i].toDouble() - 1, nums[2 * i + 1].toDouble() - 1);
+    return true;
+}
+
+} // namespace
+
+Q_DECLARE_METATYPE(std::vector<QRect>)
+
+class TestClassic : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void score_data();
+    void score();
+    void eyePair_data();
+    void eyePair();
+    void eyeball_data();
+    void eyeball();
+    void sobel();
+    void verticalCut_data();
+    void verticalCut();
+    void cheeks_data();
+    void cheeks();
+    void drawnFace();
+    void graceHopper();
+    void greyAndTiny();
+    void throughDetector();
+    void sharedDataNme_data();
+    void sharedDataNme();
+    void sharedDataNmeWithFaceBox_data();
+    void sharedDataNmeWithFaceBox();
+};
+
+void TestClassic::score_data()
+{
+    QTest::addColumn<double>("a1");
+    QTest::addColumn<double>("a2");
+    QTest::newRow("equal, full") << 1.0 << 1.0;
+    QTest::newRow("equal, small") << 0.2 << 0.2;
+    QTest::newRow("unequal") << 1.0 << 0.5;
+    QTest::newRow("swapped") << 0.5 << 1.0;
+}
+
+void TestClassic::score()
+{
+    QFETCH(double, a1);
+    QFETCH(double, a2);
+    const double big = std::max(a1, a2), small = std::min(a1, a2);
+    const double s = big / small;
+    QVERIFY(std::abs(eyePairScore(a1, a2) - (big * small - s * s) / 2) < 1e-12);
+}
+
+void TestClassic::eyePair_data()
+{
+    QTest::addColumn<std::vector<QRect>>("distractors");
+    QTest::addColumn<bool>("mayPair"); // whether the distractors may form candidate pairs
+    QTest::newRow("alone") << std::vector<QRect> {} << false;
+    // A pair tilted by about 14 degrees, a pair of very unequal blobs, a long bar: never pairs.
+    QTest::newRow("tilted pair") << std::vector<QRect> {QRect(40, 300, 16, 12), QRect(120, 320, 16, 12)} << false;
+    QTest::newRow("unequal pair") << std::vector<QRect> {QRect(40, 300, 30, 24), QRect(120, 300, 8, 6)} << false;
+    QTest::newRow("bar") << std::vector<QRect> {QRect(140, 400, 200, 10)} << false;
+    // Nostrils and brows pair, but score below the eyes (nostrils) or give way to them in the
+    // pipeline (brows, see drawnFace).
+    QTest::newRow("nostrils") << std::vector<QRect> {QRect(230, 280, 8, 5), QRect(250, 280, 8, 5)} << true;
+    QTest::newRow("brows") << std::vector<QRect> {QRect(170, 190, 46, 9), QRect(264, 190, 46, 9)} << true;
+}
+
+// Dark eye blobs at (180..209, 224..235) and (270..299, 224..235) among distractors: the best
+// candidate below the brow line is the eye pair.
+void TestClassic::eyePair()
+{
+    QFETCH(std::vector<QRect>, distractors);
+    QFETCH(bool, mayPair);
+    QImage img(480, 480, QImage::Format_Grayscale8);
+    img.fill(220);
+    QPainter p(&img);
+    p.fillRect(QRect(180, 224, 30, 12), Qt::black);
+    p.fillRect(QRect(270, 224, 30, 12), Qt::black);
+    for (const QRect &r : distractors)
+        p.fillRect(r, Qt::black);
+    p.end();
+    Mask m {img.size(), std::vector<std::uint8_t>(size_t(480) * 480)};
+    for (int y = 0; y < 480; ++y)
+        for (int x = 0; x < 480; ++x)
+            m.at(x, y) = qGray(img.pixel(x, y)) > 100;
+    const auto dark = growRegions(m, 0);
+    const auto pairs = eyePairCandidates(dark, img.size());
+    int best = -1;
+    for (int i = 0; i < int(pairs.size()) && best < 0; ++i)
+        if (dark[pairs[i].left].box.top() > 200)
+            best = i;
+    QVERIFY(best >= 0);
+    QCOMPARE(dark[pairs[best].left].box, QRect(180, 224, 30, 12));
+    QCOMPARE(dark[pairs[best].right].box, QRect(270, 224, 30, 12));
+    for (const auto &c : pairs) {
+        const QPointF delta = dark[c.right].centroid - dark[c.left].centroid;
+        QVERIFY(delta.x() > 0);
+        QVERIFY(std::abs(delta.y()) <= std::tan(10.0 * std::numbers::pi / 180.0) * delta.x() + 1e-9);
+        if (!mayPair) {
+            QCOMPARE(dark[c.left].box.top(), 224);
+            QCOMPARE(dark[c.right].box.top(), 224);
+        }
+    }
+    for (size_t i = 1; i < pairs.size(); ++i)
+        QVERIFY(pairs[i - 1].score >= pairs[i].score);
+}
+
+void TestClassic::eyeball_data()
+{
+    QTest::addColumn<QPointF>("centre");
+    QTest::addColumn<double>("radius");
+    QTest::newRow("centred") << QPointF(50, 30) << 8.0;
+    QTest::newRow("looking left") << QPointF(40, 30) << 8.0;
+    QTest::newRow("large") << QPointF(55, 31) << 11.0;
+}
+
+// A dark almond (the lash line and corners) with a round iris: the eyeball is the iris.
+void TestClassic::eyeball()
+{
+    QFETCH(QPointF, centre);
+    QFETCH(double, radius);
+    QImage img(100, 60, QImage::Format_Grayscale8);
+    img.fill(255);
+    QPainter p(&img);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setPen(QPen(Qt::black, 2));
+    p.setBrush(Qt::white);
+    p.drawEllipse(QPointF(50, 30), 32, 9);
+    p.setPen(Qt::NoPen);
+    p.setBrush(Qt::black);
+    p.drawEllipse(centre, radius, radius);
+    p.end();
+    Mask m {img.size(), std::vector<std::uint8_t>(size_t(100) * 60)};
+    for (int y = 0; y < 60; ++y)
+        for (int x = 0; x < 100; ++x)
+            m.at(x, y) = qGray(img.pixel(x, y)) < 128;
+    const Eyeball e = detectEyeball(m, QRect(15, 15, 72, 32));
+    QVERIFY2(QLineF(e.centre, centre).length() <= 1.5,
+        qPrintable(QStringLiteral("%1,%2").arg(e.centre.x()).arg(e.centre.y())));
+    QVERIFY2(std::abs(e.radius - radius) <= 1.5, qPrintable(QString::number(e.radius)));
+}
+
+// Eq. (3.13) on a vertical step from 10 to 110: 4 x 100 on both sides of the step, 0 elsewhere.
+void TestClassic::sobel()
+{
+    Plane I {QSize(10, 6), std::vector<float>(60, 10.0f)};
+    for (int y = 0; y < 6; ++y)
+        for (int x = 5; x < 10; ++x)
+            I.at(x, y) = 110.0f;
+    const Plane s = sobelEdges(I);
+    for (int y = 1; y < 5; ++y) {
+        QCOMPARE(s.at(4, y), 400.0f);
+        QCOMPARE(s.at(5, y), 400.0f);
+        QCOMPARE(s.at(3, y), 0.0f);
+        QCOMPARE(s.at(6, y), 0.0f);
+    }
+    QCOMPARE(s.at(4, 0), 0.0f); // the frame
+}
+
+void TestClassic::verticalCut_data()
+{
+    QTest::addColumn<int>("axis");
+    QTest::addColumn<QRect>("region");
+    QTest::newRow("centred") << 100 << QRect(70, 20, 61, 30);
+    QTest::newRow("axis left of centre") << 95 << QRect(70, 20, 61, 30);
+    QTest::newRow("axis right of centre") << 108 << QRect(70, 20, 61, 30);
+}
+
+// Random texture mirrored about x = axis: the cut finds the axis exactly.
+void TestClassic::verticalCut()
+{
+    QFETCH(int, axis);
+    QFETCH(QRect, region);
+    QRandomGenerator rng(7);
+    Plane I {QSize(200, 80), std::vector<float>(200 * 80)};
+    for (int y = 0; y < 80; ++y) {
+        for (int x = axis; x < 200; ++x) {
+            const float v = float(rng.bounded(256));
+            I.at(x, y) = v;
+            if (2 * axis - x >= 0)
+                I.at(2 * axis - x, y) = v;
+        }
+    }
+    QCOMPARE(centralVerticalCut(I, region), axis);
+}
+
+void TestClassic::cheeks_data()
+{
+    QTest::addColumn<int>("halfWidth"); // the face column's half width
+    QTest::addColumn<int>("earWidth"); // 0: no ears
+    QTest::addColumn<int>("shift"); // the face's midline off the given one (mirror symmetry still used)
+    QTest::newRow("no ears") << 100 << 0 << 0;
+    QTest::newRow("ears") << 100 << 20 << 0;
+    QTest::newRow("narrow face, ears") << 70 << 15 << 0;
+}
+
+// A face rectangle 300 rows high with ear tabs 50 rows high at eye level: the cheeks are the
+// face's sides, not the ears' outer edges.
+void TestClassic::cheeks()
+{
+    QFETCH(int, halfWidth);
+    QFETCH(int, earWidth);
+    QFETCH(int, shift);
+    Mask m {QSize(400, 400), std::vector<std::uint8_t>(size_t(400) * 400, 0)};
+    const int cx = 200 + shift;
+    for (int y = 50; y < 350; ++y)
+        for (int x = cx - halfWidth; x < cx + halfWidth; ++x)
+            m.at(x, y) = 1;
+    for (int y = 120; y < 170; ++y)
+        for (int k = 0; k < earWidth; ++k) {
+            m.at(cx - halfWidth - 1 - k, y) = 1;
+            m.at(cx + halfWidth + k, y) = 1;
+        }
+    double left = 0, right = 0;
+    cheekOffset(m, QPointF(200, 130), 90, &left, &right);
+    QVERIFY2(std::abs(left - (cx - halfWidth)) <= 2, qPrintable(QString::number(left)));
+    QVERIFY2(std::abs(right - (cx + halfWidth)) <= 2, qPrintable(QString::number(right)));
+}
+
+namespace {
+
+// How far p lies off the ellipse's outline, in units of its semi-axes (0 on it).
+double offEllipse(QPointF p, const QRectF &e)
+{
+    const QPointF c = e.center();
+    return std::abs(std::hypot((p.x() - c.x()) / (e.width() / 2), (p.y() - c.y()) / (e.height() / 2)) - 1.0);
+}
+
+// x of the skin ellipse's edge at height y (left side).
+double ellipseLeftX(const QRectF &e, double y)
+{
+    const double t = (y - e.center().y()) / (e.height() / 2);
+    return e.center().x() - e.width() / 2 * std::sqrt(std::max(0.0, 1 - t * t));
+}
+
+} // namespace
+
+// Every group of the drawn face within a stated tolerance: inner features within d/10,
+// the contour and ears within d/5, the hair above the ears within 6% of the hair ellipse.
+void TestClassic::drawnFace()
+{
+    const DrawnFace f = drawFace();
+    const ClassicResult r = detectClassic(f.image, true);
+    QVERIFY2(r.ok, qPrintable(r.error));
+    const QString dir = qEnvironmentVariable("TOONFACE_CLASSIC_DEBUG");
+    if (!dir.isEmpty()) {
+        f.image.save(dir + QStringLiteral("/input.png"));
+        for (auto it = r.debugImages.begin(); it != r.debugImages.end(); ++it)
+            it.value().save(dir + QLatin1Char('/') + it.key() + QStringLiteral(".png"));
+    }
+    const double d = 90;
+    QVERIFY(std::abs(r.d - d) < 2);
+    auto near = [&](const char *id, QPointF expected, double tol) {
+        const QPointF got = r.face.point(id);
+        const double err = QLineF(got, expected).length();
+        if (err > tol)
+            qWarning("%s at (%.1f, %.1f), expected (%.1f, %.1f) within %.1f", id, got.x(), got.y(), expected.x(),
+                expected.y(), tol);
+        return err <= tol;
+    };
+    const double inner = d / 10, outer = d / 5;
+    // Eyes
+    QVERIFY(near("3.6", f.eyeL, 2));
+    QVERIFY(near("3.5", f.eyeR, 2));
+    QVERIFY(near("3.2", f.eyeL - QPointF(0, f.irisR), 2.5));
+    QVERIFY(near("3.4", f.eyeL + QPointF(0, f.irisR), 2.5));
+    QVERIFY(near("3.1", f.eyeR - QPointF(0, f.irisR), 2.5));
+    QVERIFY(near("3.12", f.eyeL - QPointF(20, 0), inner));
+    QVERIFY(near("3.8", f.eyeL + QPointF(20, 0), inner));
+    QVERIFY(near("3.11", f.eyeR - QPointF(20, 0), inner));
+    QVERIFY(near("3.7", f.eyeR + QPointF(20, 0), inner));
+    // Brows
+    const double browY = f.browL.center().y();
+    QVERIFY(near("4.6", QPointF(f.browL.left(), browY), inner));
+    QVERIFY(near("4.2", QPointF(f.browL.right(), browY), inner));
+    QVERIFY(near("4.5", QPointF(f.browR.right(), browY), inner));
+    QVERIFY(near("4.1", QPointF(f.browR.left(), browY), inner));
+    for (const char *id : {"4.4a", "4.4", "4.3", "4.3a"})
+        QVERIFY(near(id, QPointF(r.face.point(id).x(), browY), inner));
+    QVERIFY(r.face.point("4.6").x() < r.face.point("4.4a").x() && r.face.point("4.4a").x() < r.face.point("4.4").x()
+        && r.face.point("4.4").x() < r.face.point("4.2").x());
+    // Nose: the tip on the midline at the nostrils' bottom, the wings at the nostrils' sides.
+    QVERIFY(near("9.15", QPointF(240, f.nostrilL.y() + 3), inner));
+    QVERIFY(near("9.2", QPointF(f.nostrilL.x() - 5, r.face.point("9.2").y()), inner));
+    QVERIFY(near("9.1", QPointF(f.nostrilR.x() + 5, r.face.point("9.1").y()), inner));
+    QVERIFY(std::abs(r.noseCut - 240) <= 1.5);
+    // Mouth
+    const QPointF mc = f.mouth.center();
+    QVERIFY(near("8.4", QPointF(f.mouth.left(), mc.y()), inner));
+    QVERIFY(near("8.3", QPointF(f.mouth.right(), mc.y()), inner));
+    QVERIFY(near("8.1", QPointF(240, f.mouth.top()), inner));
+    QVERIFY(near("8.2", QPointF(240, f.mouth.bottom()), inner));
+    QVERIFY(near("2.2", mc, inner));
+    QVERIFY(std::abs(r.mouthCut - 240) <= 1.5);
+    // Contour
+    QVERIFY(near("2.1", QPointF(240, f.head.bottom()), inner));
+    QVERIFY(near("11.1", QPointF(240, f.head.top()), inner));
+    QVERIFY(near("2.14", QPointF(ellipseLeftX(f.head, r.face.point("2.14").y()), r.face.point("2.14").y()), inner));
+    QVERIFY(near("5.2", QPointF(ellipseLeftX(f.head, 230), 230), inner));
+    QVERIFY(near("5.1", QPointF(480 - ellipseLeftX(f.head, 230), 230), inner));
+    QVERIFY(offEllipse(r.face.point("2.12"), f.head) < 0.05);
+    QVERIFY(offEllipse(r.face.point("2.11"), f.head) < 0.05);
+    // Ears (drawn 116..140 and 340..364 wide, 215..265 high)
+    QVERIFY(near("10.4", QPointF(116, r.face.point("10.4").y()), outer));
+    QVERIFY(near("10.3", QPointF(364, r.face.point("10.3").y()), outer));
+    QVERIFY(near("10.2", QPointF(r.face.point("10.2").x(), 215), outer));
+    QVERIFY(near("10.1", QPointF(r.face.point("10.1").x(), 215), outer));
+    // Hair: h.10 on the crown; the arc over the head on the hair ellipse.
+    QVERIFY(near("h.10", QPointF(240, f.hair.top()), inner));
+    for (int i = 3; i <= 15; ++i) {
+        const QPointF h = r.face.point(pt::idx("h.1") + i);
+        QVERIFY2(offEllipse(h, f.hair) < 0.06, qPrintable(QStringLiteral("h.%1").arg(i + 1)));
+    }
+    QVERIFY(r.face.isValid());
+}
+
+// The thesis' assumptions (plain background, frontal light) hold only roughly here; the
+// test reports what the pipeline finds and checks the groups are ordered like a face.
+void TestClassic::graceHopper()
+{
+    const QString path = QStringLiteral("/usr/share/matplotlib/mpl-data/sample_data/grace_hopper.jpg");
+    QImage img(path);
+    if (img.isNull())
+        QSKIP("grace_hopper.jpg is not installed (package python-matplotlib-data)");
+    const ClassicResult r = detectClassic(img, true);
+    const QString dir = qEnvironmentVariable("TOONFACE_CLASSIC_DEBUG");
+    if (!dir.isEmpty())
+        for (auto it = r.debugImages.begin(); it != r.debugImages.end(); ++it)
+            it.value().save(dir + QStringLiteral("/hopper-") + it.key() + QStringLiteral(".png"));
+    QVERIFY2(r.ok, qPrintable(r.error));
+    qInfo("grace_hopper: %d eye-pair candidates, eyeballs (%.0f, %.0f) r %.1f and (%.0f, %.0f) r %.1f, d = %.1f, "
+          "nose tip (%.0f, %.0f), mouth %.0f..%.0f at y %.0f, chin y %.0f, %.1f ms",
+        r.candidateCount, r.eyeballs[0].centre.x(), r.eyeballs[0].centre.y(), r.eyeballs[0].radius,
+        r.eyeballs[1].centre.x(), r.eyeballs[1].centre.y(), r.eyeballs[1].radius, r.d, r.face.point("9.15").x(),
+        r.face.point("9.15").y(), r.face.point("8.4").x(), r.face.point("8.3").x(), r.face.point("8.4").y(),
+        r.face.point("2.1").y(), r.timingMs.value(QStringLiteral("total")));
+    const FaceModel &f = r.face;
+    QVERIFY(f.isValid());
+    QVERIFY(f.point("4.4").y() < f.point("3.6").y());
+    QVERIFY(f.point("3.6").y() < f.point("9.15").y());
+    QVERIFY(f.point("9.15").y() < f.point("8.2").y());
+    QVERIFY(f.point("8.2").y() < f.point("2.1").y());
+}
+
+// A grey photo has no hue, so no face region from eq. (3.9): the inner features are still
+// found and the outline falls back to its rules. A tiny image is refused with a reason.
+void TestClassic::greyAndTiny()
+{
+    const DrawnFace f = drawFace();
+    const ClassicResult r = detectClassic(f.image.convertToFormat(QImage::Format_Grayscale8));
+    QVERIFY2(r.ok, qPrintable(r.error));
+    QVERIFY(r.face.isValid());
+    QVERIFY(QLineF(r.face.point("3.6"), f.eyeL).length() <= 2);
+    QVERIFY(QLineF(r.face.point("3.5"), f.eyeR).length() <= 2);
+    QVERIFY(QLineF(r.face.point("8.4"), QPointF(f.mouth.left(), f.mouth.center().y())).length() <= 9);
+    for (int i = 0; i < kPointCount; ++i)
+        QVERIFY2(QRectF(0, 0, 480, 480).contains(r.face.point(i)), qPrintable(pointId(i)));
+
+    for (const QSize size : {QSize(1, 1), QSize(15, 200)}) {
+        QImage tiny(size, QImage::Format_RGB32);
+        tiny.fill(Qt::gray);
+        const ClassicResult t = detectClassic(tiny);
+        QVERIFY(!t.ok);
+        QVERIFY(t.error.contains(QLatin1String("too small")));
+    }
+}
+
+// detectFace(method classic) gives the pipeline's points and writes the thesis' figures.
+void TestClassic::throughDetector()
+{
+    const DrawnFace f = drawFace();
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    DetectOptions options;
+    options.method = DetectionMethod::Classic;
+    options.debugDir = dir.filePath(QStringLiteral("debug"));
+    const DetectionResult r = detectFace(f.image, options);
+    QCOMPARE(r.status, DetectStatus::Ok);
+    QCOMPARE(r.method, QStringLiteral("classic"));
+    QCOMPARE(r.faceCount, 1);
+    QVERIFY(QLineF(r.face.point("3.6"), f.eyeL).length() < 2);
+    QVERIFY(r.faceBox.contains(f.mouth.center().toPoint()));
+    QVERIFY(r.timingMs.contains(QStringLiteral("total")));
+    QCOMPARE(r.groupConfidence.size(), 7);
+    for (const char *name : {"classic-b1", "classic-b2", "classic-b3", "classic-face-hair", "classic-eye-pairs",
+             "classic-eyeballs", "classic-edges", "classic-feature-regions", "classic-points"}) {
+        const QImage img(QDir(options.debugDir).filePath(QLatin1StringView(name) + QStringLiteral(".png")));
+        QVERIFY2(img.size() == f.image.size(), name);
+    }
+}
+
+void TestClassic::sharedDataNme_data()
+{
+    QTest::addColumn<QString>("image");
+    QTest::addColumn<QString>("pts");
+    const QDir dir(sharedFacesDir());
+    int rows = 0;
+    for (const QFileInfo &pts : dir.entryInfoList({QStringLiteral("*.pts")}, QDir::Files, QDir::Name)) {
+        for (const char *ext : {".png", ".jpg"}) {
+            const QString image = dir.filePath(pts.completeBaseName() + QLatin1String(ext));
+            if (QFileInfo::exists(image)) {
+                QTest::newRow(qPrintable(pts.completeBaseName())) << image << pts.filePath();
+                ++rows;
+                break;
+            }
+        }
+    }
+    if (rows == 0)
+        QTest::newRow("no data") << QString() << QString();
+}
+
+// Measures, with no accuracy bound: the classic method assumes a plain background and a
+// large frontal face, which these photos do not promise. It must either place a valid face
+// or say why not.
+void TestClassic::sharedDataNme()
+{
+    QFETCH(QString, image);
+    QFETCH(QString, pts);
+    if (image.isEmpty())
+        QSKIP("no research photos (set TOONFACE_DATA_DIR to the shared data folder)");
+    std::array<QPointF, kIbugPointCount> truth {};
+    QVERIFY2(readPts(pts, &truth), qPrintable(pts));
+    const QImage photo(image);
+    QVERIFY2(!photo.isNull(), qPrintable(image));
+    const ClassicResult r = detectClassic(photo, true);
+    const QString dir = qEnvironmentVariable("TOONFACE_CLASSIC_DEBUG");
+    if (!dir.isEmpty())
+        for (auto it = r.debugImages.begin(); it != r.debugImages.end(); ++it)
+            it.value().save(dir + QLatin1Char('/') + QFileInfo(image).completeBaseName() + QLatin1Char('-') + it.key()
+                + QStringLiteral(".png"));
+    if (!r.ok) {
+        QVERIFY(!r.error.isEmpty());
+        qInfo("%s: classic found no face: %s", qPrintable(QFileInfo(image).fileName()), qPrintable(r.error));
+        return;
+    }
+    QVERIFY(r.face.isValid());
+    const double nme = normalizedMeanError(r.face, truth);
+    QVERIFY(std::isfinite(nme));
+    qInfo("%s: classic NME %.4f, %.1f ms", qPrintable(QFileInfo(image).fileName()), nme,
+        r.timingMs.value(QStringLiteral("total")));
+}
+
+// The same, with the central rectangle taken from the landmark detector's face box.
+void TestClassic::sharedDataNmeWithFaceBox_data()
+{
+    sharedDataNme_data();
+}
+
+void TestClassic::sharedDataNmeWithFaceBox()
+{
+    QFETCH(QString, image);
+    QFETCH(QString, pts);
+    if (image.isEmpty())
+        QSKIP("no research photos (set TOONFACE_DATA_DIR to the shared data folder)");
+    if (!preloadLandmarkModel())
+        QSKIP("the landmark model (libdlib-data) is not installed; no face box to seed with");
+    std::array<QPointF, kIbugPointCount> truth {};
+    QVERIFY2(readPts(pts, &truth), qPrintable(pts));
+    const QImage photo(image);
+    QVERIFY2(!photo.isNull(), qPrintable(image));
+    const DetectionResult box = detectFace(photo, {});
+    QCOMPARE(box.status, DetectStatus::Ok);
+    const ClassicResult r = detectClassic(photo, true, box.faceBox);
+    const QString dir = qEnvironmentVariable("TOONFACE_CLASSIC_DEBUG");
+    if (!dir.isEmpty())
+        for (auto it = r.debugImages.begin(); it != r.debugImages.end(); ++it)
+            it.value().save(dir + QLatin1Char('/') + QFileInfo(image).completeBaseName() + QStringLiteral("-boxed-")
+                + it.key() + QStringLiteral(".png"));
+    if (!r.ok) {
+        QVERIFY(!r.error.isEmpty());
+        qInfo("%s: classic in the face box found no face: %s", qPrintable(QFileInfo(image).fileName()),
+            qPrintable(r.error));
+        return;
+    }
+    QVERIFY(r.face.isValid());
+    const double nme = normalizedMeanError(r.face, truth);
+    QVERIFY(std::isfinite(nme));
+    qInfo("%s: classic in the face box NME %.4f (landmarks %.4f), %.1f ms", qPrintable(QFileInfo(image).fileName()),
+        nme, normalizedMeanError(box.face, truth), r.timingMs.value(QStringLiteral("total")));
+}
+
+QTEST_MAIN(TestClassic)
+#include "tst_classic.moc"
