@@ -52,6 +52,7 @@ int loadFaceInput(const QString &path, const DetectOptions &options, FaceInput *
         out->hasProjectStyle = true;
         out->photoPath = project->photoPath;
         out->layerPaths = project->layerPaths;
+        out->mouthShapes = project->mouthShapes;
         if (!out->photoPath.isEmpty() && QFileInfo::exists(out->photoPath))
             out->photo = loadPhoto(out->photoPath, &error);
         return ExitOk;

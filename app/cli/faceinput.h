@@ -2,6 +2,7 @@
 
 #include "detect/detector.h"
 #include "face/facemodel.h"
+#include "face/mouthshape.h"
 #include "render/style.h"
 
 #include <QImage>
@@ -20,6 +21,7 @@ struct FaceInput
     QImage photo; // may be null (face JSON whose photo is gone)
     QString photoPath;
     QStringList layerPaths;
+    MouthShapeSet mouthShapes; // the project's presets, or the defaults
     DetectionResult detection; // set when the input was a photo
 };
 

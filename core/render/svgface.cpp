@@ -235,9 +235,18 @@ constexpr double kCuteNoseScale = 0.6;
 constexpr double kJawOverlap = 3.0; // thesis pixels (ES0/100) the jaw reaches up behind the face
 constexpr double kThickBrow = 0.085;
 constexpr double kLowerLipSpread = 1.5; // method B: the lower lip rounder than thirds
-constexpr double kTeethHeight = 0.07;
-constexpr double kTongueHeight = 0.06;
+// The upper teeth and the tongue take fixed shares of the mouth opening (of the distance
+// between the lips' inner edges). Fixed shares keep them linear in the pose like the rest of the
+// mouth, so they ease exactly with it and an SMIL export interpolates them between key frames
+// (a fixed height would need many more key frames).
+constexpr double kTeethShare = 0.3;
+constexpr double kTongueShare = 0.28;
 constexpr double kHairInset = 0.15; // how far the hair's hidden closing runs inside the face
+// Curves of moving parts are fitted through their targets to this tolerance (pixels), not the
+// fitting functions' default 0.5 px: with a loose tolerance a control point jumps by up to 2/3 px
+// when the fitting error crosses it, so an animated mouth or lid would pop between frames and
+// its geometry would not follow the pose continuously (which SMIL interpolation relies on).
+constexpr double kMovingFitTolerance = 1e-3;
 
 struct Pt
 {
@@ -419,7 +428,7 @@ void makeEyebrows(const Pt &P, const Style &style, double es0, std::vector<Part>
         }
         case EyebrowVariant::Bezier: {
             PathData d;
-            d.moveTo(outer).cubic(fitBezierThrough(outer, (a + b) / 2.0, inner));
+            d.moveTo(outer).cubic(fitBezierThrough(outer, (a + b) / 2.0, inner, 1.0, kMovingFitTolerance));
             out->push_back({id, false, "path", {{"d", d.data()}}, "eyebrows", StrokeOnly});
             break;
         }
@@ -434,9 +443,9 @@ void makeEyebrows(const Pt &P, const Style &style, double es0, std::vector<Part>
             const QPointF innerBottom = inner - up * (0.45 * t);
             PathData d;
             d.moveTo(outer)
-                .cubic(fitBezierThrough(outer, mid + up * (0.5 * t), innerTop))
+                .cubic(fitBezierThrough(outer, mid + up * (0.5 * t), innerTop, 1.0, kMovingFitTolerance))
                 .lineTo(innerBottom)
-                .cubic(fitBezierThrough(innerBottom, mid - up * (0.5 * t), outer))
+                .cubic(fitBezierThrough(innerBottom, mid - up * (0.5 * t), outer, 1.0, kMovingFitTolerance))
                 .close();
             out->push_back({id, false, "path", {{"d", d.data()}}, "eyebrows", FillOnly});
             break;
@@ -450,8 +459,8 @@ void makeEyebrows(const Pt &P, const Style &style, double es0, std::vector<Part>
 Part makeJaw(const Pt &P, const SvgFaceGeometry &g)
 {
     const QPointF left = P("2.14"), right = P("2.13");
-    const QVector<CubicBezier> chain
-        = fitBezierChain({left, P("2.1"), right}, {P("2.12"), P("2.11")}, {g.jawStartTangent, g.jawEndTangent});
+    const QVector<CubicBezier> chain = fitBezierChain(
+        {left, P("2.1"), right}, {P("2.12"), P("2.11")}, {g.jawStartTangent, g.jawEndTangent}, kMovingFitTolerance);
     // Starts and ends a little up the face's sides, along them, so the jaw's fill overlaps the
     // face's and no seam shows; the stroke there lies on the face's own.
     const double overlap = kJawOverlap * g.unit;
@@ -460,11 +469,11 @@ Part makeJaw(const Pt &P, const SvgFaceGeometry &g)
     return {"jaw", true, "path", {{"d", d.data()}}, "jaw"};
 }
 
-void makeMouth(const Pt &P, double es0, std::vector<Part> *out)
+void makeMouth(const Pt &P, std::vector<Part> *out)
 {
     const QPointF l = P("8.4"), r = P("8.3");
-    const CubicBezier innerTop = fitBezierThrough(l, P("2.2"), r);
-    const CubicBezier innerBottom = fitBezierThrough(r, P("2.3"), l, kLowerLipSpread);
+    const CubicBezier innerTop = fitBezierThrough(l, P("2.2"), r, 1.0, kMovingFitTolerance);
+    const CubicBezier innerBottom = fitBezierThrough(r, P("2.3"), l, kLowerLipSpread, kMovingFitTolerance);
     PathData inner;
     inner.moveTo(l).cubic(innerTop).cubic(innerBottom).close();
     out->push_back({"mouth-inner", true, "path", {{"d", inner.data()}}, "mouth-inner", FillOnly});
@@ -473,27 +482,28 @@ void makeMouth(const Pt &P, double es0, std::vector<Part> *out)
     // Blending control points blends the curves point by point, so they always stay inside
     // the open mouth (no clipping needed) and vanish when it closes.
     const CubicBezier innerBottomForward = reversed(innerBottom);
-    const double opening = length(P("2.3") - P("2.2"));
-    auto share = [&](double size, double most) { return opening > 1e-9 ? std::min(most, size * es0 / opening) : 0.0; };
-    const CubicBezier tongueTop = blend(innerBottomForward, innerTop, share(kTongueHeight, 0.45));
+    const CubicBezier tongueTop = blend(innerBottomForward, innerTop, kTongueShare);
     PathData tongue;
     tongue.moveTo(l).cubic(innerBottomForward).cubic(reversed(tongueTop)).close();
     out->push_back({"mouth-tongue", true, "path", {{"d", tongue.data()}}, "tongue", FillOnly});
-    const CubicBezier teethEdge = blend(innerTop, innerBottomForward, share(kTeethHeight, 0.4));
+    const CubicBezier teethEdge = blend(innerTop, innerBottomForward, kTeethShare);
     PathData teeth;
     teeth.moveTo(l).cubic(innerTop).cubic(reversed(teethEdge)).close();
     out->push_back({"mouth-teeth", true, "path", {{"d", teeth.data()}}, "teeth", FillOnly});
 
     PathData upper;
     upper.moveTo(l)
-        .cubic(fitBezierThrough(l, P("8.9"), P("8.1")))
-        .cubic(fitBezierThrough(P("8.1"), P("8.10"), r))
+        .cubic(fitBezierThrough(l, P("8.9"), P("8.1"), 1.0, kMovingFitTolerance))
+        .cubic(fitBezierThrough(P("8.1"), P("8.10"), r, 1.0, kMovingFitTolerance))
         .cubic(reversed(innerTop))
         .close();
     out->push_back({"mouth-upper-lip", true, "path", {{"d", upper.data()}}, "lips"});
 
     PathData lower;
-    lower.moveTo(l).cubic(reversed(innerBottom)).cubic(fitBezierThrough(r, P("8.2"), l, kLowerLipSpread)).close();
+    lower.moveTo(l)
+        .cubic(reversed(innerBottom))
+        .cubic(fitBezierThrough(r, P("8.2"), l, kLowerLipSpread, kMovingFitTolerance))
+        .close();
     out->push_back({"mouth-lower-lip", true, "path", {{"d", lower.data()}}, "lips"});
 }
 
@@ -504,8 +514,8 @@ void makeEye(const Pt &P, const SvgFaceGeometry &g, bool left, std::vector<Part>
     const QPointF b = P(left ? "3.8" : "3.7");
     const QPointF lowerLid = P(left ? "3.4" : "3.3");
     const QPointF ball = P(left ? "3.6" : "3.5");
-    const CubicBezier upper = fitBezierThrough(a, upperLid, b);
-    const CubicBezier lower = fitBezierThrough(b, lowerLid, a);
+    const CubicBezier upper = fitBezierThrough(a, upperLid, b, 1.0, kMovingFitTolerance);
+    const CubicBezier lower = fitBezierThrough(b, lowerLid, a, 1.0, kMovingFitTolerance);
     PathData outline;
     outline.moveTo(a).cubic(upper).cubic(lower).close();
     const QByteArray eye = outline.data();
@@ -642,11 +652,6 @@ bool layerFragment(const QByteArray &content, QByteArray *fragment, QString *err
 
 } // namespace
 
-SvgFace::SvgFace(const FaceModel &face, const Style &style)
-    : m_face(face)
-    , m_style(style)
-{ }
-
 namespace {
 
 SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
@@ -691,22 +696,42 @@ SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
     return g;
 }
 
-std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, const Style &style, const Pose &pose)
+// The parts in drawing order; only those that depend on the pose unless `withStatic`.
+std::vector<Part> buildParts(
+    const SvgFaceGeometry &g, const FaceModel &face, const Style &style, const Pose &pose, bool withStatic = true)
 {
     Points posed = posedPoints(face, pose);
     applyStyleRules(posed, g, style);
     const Pt P {posed};
-    std::vector<Part> parts = g.staticParts;
-    parts.reserve(parts.size() + 24);
+    std::vector<Part> parts;
+    parts.reserve(g.staticParts.size() + 24);
+    if (withStatic)
+        parts = g.staticParts;
     if (componentStyle(style.components, "eyebrows").visible)
         makeEyebrows(P, style, g.es0, &parts);
     if (componentStyle(style.components, "jaw").visible)
         parts.push_back(makeJaw(P, g));
-    makeMouth(P, g.es0, &parts);
+    makeMouth(P, &parts);
     makeEye(P, g, true, &parts);
     makeEye(P, g, false, &parts);
     std::erase_if(parts, [&](const Part &p) { return !componentStyle(style.components, p.styleKey).visible; });
     return parts;
+}
+
+FacePart facePart(const Part &p, const SvgFaceGeometry &g)
+{
+    FacePart f;
+    f.id = latin1(p.id);
+    f.layer = p.dynamic ? QStringLiteral("dynamic") : QStringLiteral("static");
+    f.element = latin1(p.element);
+    for (const auto &[name, value] : p.geometry)
+        f.geometry.insert(latin1(name), QString::fromLatin1(value));
+    f.styleKey = latin1(p.styleKey);
+    for (const auto &[name, value] : paintAttributes(componentStyle(g.components, p.styleKey), p.paint, g.unit))
+        f.paint.insert(latin1(name), QString::fromLatin1(value));
+    if (p.clipPath)
+        f.clipPath = latin1(p.clipPath);
+    return f;
 }
 
 QByteArray headTransformText(const SvgFaceGeometry &g, const HeadPose &head)
@@ -725,6 +750,25 @@ QByteArray headTransformText(const SvgFaceGeometry &g, const HeadPose &head)
 }
 
 } // namespace
+
+struct SvgFace::Geometry
+{
+    SvgFaceGeometry g;
+    QVector<FacePart> staticParts; // g.staticParts that are visible, for parts()
+};
+
+SvgFace::SvgFace(const FaceModel &face, const Style &style)
+    : m_face(face)
+    , m_style(style)
+{
+    auto geometry = std::make_shared<Geometry>();
+    geometry->g = buildGeometry(face, style);
+    for (const Part &p : geometry->g.staticParts) {
+        if (componentStyle(style.components, p.styleKey).visible)
+            geometry->staticParts.append(facePart(p, geometry->g));
+    }
+    m_geometry = std::move(geometry);
+}
 
 bool SvgFace::addLayerFile(const QString &svgPath, QString *error)
 {
@@ -756,35 +800,23 @@ void SvgFace::addLayer(const QByteArray &svgContent)
 
 QVector<FacePart> SvgFace::parts(const Pose &pose) const
 {
-    const SvgFaceGeometry g = buildGeometry(m_face, m_style);
-    const std::vector<Part> built = buildParts(g, m_face, m_style, pose);
-    QVector<FacePart> out;
-    out.reserve(qsizetype(built.size()));
-    for (const Part &p : built) {
-        FacePart f;
-        f.id = latin1(p.id);
-        f.layer = p.dynamic ? QStringLiteral("dynamic") : QStringLiteral("static");
-        f.element = latin1(p.element);
-        for (const auto &[name, value] : p.geometry)
-            f.geometry.insert(latin1(name), QString::fromLatin1(value));
-        f.styleKey = latin1(p.styleKey);
-        for (const auto &[name, value] : paintAttributes(componentStyle(g.components, p.styleKey), p.paint, g.unit))
-            f.paint.insert(latin1(name), QString::fromLatin1(value));
-        if (p.clipPath)
-            f.clipPath = latin1(p.clipPath);
-        out.append(f);
-    }
+    const SvgFaceGeometry &g = m_geometry->g;
+    const std::vector<Part> posed = buildParts(g, m_face, m_style, pose, false);
+    QVector<FacePart> out = m_geometry->staticParts;
+    out.reserve(out.size() + qsizetype(posed.size()));
+    for (const Part &p : posed)
+        out.append(facePart(p, g));
     return out;
 }
 
 QString SvgFace::headTransform(const HeadPose &head) const
 {
-    return QString::fromLatin1(headTransformText(buildGeometry(m_face, m_style), head));
+    return QString::fromLatin1(headTransformText(m_geometry->g, head));
 }
 
 QByteArray SvgFace::svg(const Pose &pose) const
 {
-    const SvgFaceGeometry g = buildGeometry(m_face, m_style);
+    const SvgFaceGeometry &g = m_geometry->g;
     const std::vector<Part> parts = buildParts(g, m_face, m_style, pose);
     // Without a photo (a face placed by hand), the frame holds the points with equal margins.
     QSize size = m_face.imageSize();

@@ -9,6 +9,8 @@
 #include <QString>
 #include <QVector>
 
+#include <memory>
+
 namespace toonface {
 
 // One drawn component of a posed face: its SVG id, the element kind and its geometry as
@@ -56,8 +58,11 @@ public:
     const Style &style() const { return m_style; }
 
 private:
+    struct Geometry; // what does not depend on the pose, computed once
+
     FaceModel m_face;
     Style m_style;
+    std::shared_ptr<const Geometry> m_geometry;
     QVector<QByteArray> m_layers;
 };
 

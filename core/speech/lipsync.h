@@ -1,5 +1,6 @@
 #pragma once
 
+#include "anim/timeline.h"
 #include "speech/aligner.h"
 #include "speech/audio.h"
 #include "speech/progress.h"
@@ -24,15 +25,6 @@ struct LipsyncSyllable
     double end = 0;
     double confidence = 1;
     QVector<ShapeKey> shapes; // Mandarin: face-model.md's fractions; English: phoneme times
-};
-
-// A stretch of time the mouth holds one shape.
-struct MouthCue
-{
-    double start = 0;
-    double end = 0;
-    MouthShape shape = MouthShape::M;
-    bool operator==(const MouthCue &) const = default;
 };
 
 struct LipsyncResult

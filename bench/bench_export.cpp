@@ -1,0 +1,183 @@
+#include "benchmark.h"
+
+#include "anim/timeline.h"
+#include "face/averageface.h"
+#include "face/mouthshape.h"
+#include "render/framerenderer.h"
+#include "render/smilexport.h"
+#include "render/svgface.h"
+
+#include <QRegularExpression>
+
+#include <random>
+
+using namespace toonface;
+
+namespace {
+
+// Frequent Mandarin syllables with their mouth shapes by face-model.md's rules (initials b p m
+// give m, f gives f, other initials nothing before a vowel; ao -> a u, ong -> o n h, ...), most
+// frequent first.
+struct Syllable
+{
+    const char *pinyin;
+    const char *shapes;
+};
+constexpr Syllable kSyllables[] = {{"de", "e"}, {"shi", "ih"}, {"yi", "i"}, {"bu", "mu"}, {"le", "e"}, {"zai", "ai"},
+    {"ren", "en"}, {"wo", "uo"}, {"you", "iou"}, {"ta", "a"}, {"zhe", "e"}, {"ge", "e"}, {"men", "men"}, {"lai", "ai"},
+    {"shang", "anh"}, {"guo", "uo"}, {"dao", "au"}, {"shuo", "uo"}, {"dui", "uei"}, {"da", "a"}, {"zhong", "onh"},
+    {"sheng", "enh"}, {"hui", "uei"}, {"ke", "e"}, {"ni", "i"}, {"hao", "au"}, {"jiu", "iou"}, {"ye", "ie"},
+    {"mei", "mei"}, {"xiang", "ianh"}, {"kan", "an"}, {"zhi", "ih"}, {"qu", "u"}, {"xue", "ue"}, {"nian", "ian"},
+    {"tian", "ian"}, {"fa", "fa"}, {"fen", "fen"}, {"ma", "ma"}, {"na", "a"}, {"li", "i"}, {"xie", "ie"},
+    {"gong", "onh"}, {"wen", "uen"}, {"er", "eh"}, {"yu", "u"}, {"dian", "ian"}, {"jia", "ia"}, {"bing", "minh"},
+    {"hen", "en"}, {"dou", "ou"}, {"qi", "i"}, {"jian", "ian"}, {"lao", "au"}, {"bei", "mei"}, {"neng", "enh"},
+    {"xian", "ian"}, {"hou", "ou"}, {"zi", "ih"}, {"yao", "iau"}, {"dong", "onh"}, {"fang", "fanh"}, {"gei", "ei"},
+    {"yong", "ionh"}, {"chu", "u"}, {"mian", "mian"}, {"qian", "ian"}, {"wei", "uei"}, {"zuo", "uo"}, {"jin", "in"},
+    {"ming", "minh"}, {"kai", "ai"}, {"huan", "uan"}, {"tong", "onh"}, {"ben", "men"}, {"xing", "inh"}, {"yue", "ue"},
+    {"yuan", "uan"}, {"yun", "uen"}};
+
+// Ten minutes of Mandarin-like speech as lip sync would give it: syllables drawn by a Zipf
+// law from the list above, `shortest`-`longest` s each, their shapes starting at the thesis'
+// fractions of the syllable (ch. 5.3); phrases of 6-14 syllables with 0.3-0.9 s pauses and a
+// longer breath every fifth phrase. A smile and a surprise, random blinks, a few gaze moves,
+// head shakes and nods.
+Timeline tenMinutesOfSpeech(double shortest, double longest)
+{
+    constexpr double length = 600.0;
+    static const double fractions[4][4] = {{0}, {0, 0.8095}, {0, 0.4337, 0.8312}, {0, 0.245, 0.4565, 0.7153}};
+    std::mt19937 rng(5);
+    auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+    std::vector<double> weights;
+    for (size_t k = 0; k < std::size(kSyllables); ++k)
+        weights.push_back(1.0 / std::pow(k + 1.0, 0.8));
+    std::discrete_distribution<size_t> pick(weights.begin(), weights.end());
+
+    QVector<MouthCue> cues;
+    double t = 0.5;
+    int phrase = 0;
+    while (t < length - 2.0) {
+        const int syllables = 6 + int(rng() % 9);
+        for (int s = 0; s < syllables && t < length - 1.0; ++s) {
+            const QByteArray shapes(kSyllables[pick(rng)].shapes);
+            const double duration = uniform(shortest, longest);
+            const int n = int(shapes.size());
+            for (int k = 0; k < n; ++k) {
+                const double start = t + fractions[n - 1][k] * duration;
+                const double end = k + 1 < n ? t + fractions[n - 1][k + 1] * duration : t + duration;
+                const auto shape = mouthShapeFromName(QString(QLatin1Char(shapes[k])));
+                if (!cues.isEmpty() && cues.last().shape == *shape && cues.last().end == start)
+                    cues.last().end = end; // consecutive equal shapes merge
+                else
+                    cues.append({start, end, *shape});
+            }
+            t += duration;
+        }
+        t += ++phrase % 5 == 0 ? uniform(1.0, 2.0) : uniform(0.3, 0.9);
+    }
+    Timeline timeline;
+    timeline.addMouthCues(cues);
+    timeline.addEmotionClip({60.0, 180.0, Emotion::Smile, 0.8, 0.5, 0.5});
+    timeline.addEmotionClip({300.0, 320.0, Emotion::Surprise, 0.7, 0.3, 0.5});
+    timeline.generateBlinks(7, length);
+    for (double s = 0; s < length; s += 40.0)
+        timeline.addGazeKey({s, {uniform(-0.05, 0.05), uniform(-0.02, 0.02)}});
+    for (double s : {30.0, 150.0, 400.0})
+        timeline.addShake(s, s + 1.0);
+    for (double s : {90.0, 250.0, 500.0})
+        timeline.addNod(s, s + 1.0);
+    timeline.setAudio(AudioClip {QStringLiteral("speech.wav"), 0.0, length});
+    return timeline;
+}
+
+// Export of ten minutes at a speaker's pace (syllables of 0.14-0.30 s, about 4.5 a second).
+// `fast`: syllables of 0.08-0.18 s, about 10 mouth cues a second over the whole ten minutes.
+QJsonObject benchExport(bool fast)
+{
+    const FaceModel face = averageFace(QRectF(100, 100, 300, 360), QSize(512, 512));
+    const MouthShapeSet shapes;
+    const Style style = Style::preset(QStringLiteral("normal"));
+    const Timeline timeline = fast ? tenMinutesOfSpeech(0.08, 0.18) : tenMinutesOfSpeech(0.14, 0.30);
+    AnimationExportOptions options;
+    options.audio = ExportAudio::None; // the figures are the drawing's; the sound adds its own size
+
+    QByteArray smil;
+    const double smilMs = bench::medianMs([&] { smil = exportSmilSvg(face, style, timeline, shapes, options); }, 3, 0);
+    // What the bytes are spent on.
+    qsizetype keys = 0, animations = 0, keyTimesBytes = 0, keySplinesBytes = 0, valuesBytes = 0;
+    static const QRegularExpression attribute(QStringLiteral("(keyTimes|keySplines|values)=\"([^\"]*)\""));
+    const QString text = QString::fromLatin1(smil);
+    for (auto it = attribute.globalMatch(text); it.hasNext();) {
+        const auto m = it.next();
+        const qsizetype size = m.capturedLength(2);
+        if (m.captured(1) == QLatin1StringView("keyTimes")) {
+            keyTimesBytes += size;
+            keys += m.captured(2).count(QLatin1Char(';')) + 1;
+            ++animations;
+        } else if (m.captured(1) == QLatin1StringView("keySplines")) {
+            keySplinesBytes += size;
+        } else {
+            valuesBytes += size;
+        }
+    }
+
+    AnimationExportOptions frameOptions = options;
+    frameOptions.mode = AnimationExportOptions::Mode::Frames;
+    QByteArray frames;
+    const double framesMs
+        = bench::medianMs([&] { frames = exportSmilSvg(face, style, timeline, shapes, frameOptions); }, 1, 0);
+
+    QJsonObject r;
+    r.insert(QStringLiteral("durationS"), timeline.duration());
+    r.insert(QStringLiteral("mouthCues"), timeline.mouthKeys().size());
+    r.insert(QStringLiteral("mouthCuesPerSecond"), timeline.mouthKeys().size() / timeline.duration());
+    r.insert(QStringLiteral("blinks"), timeline.blinks().size());
+    r.insert(QStringLiteral("smilMs"), smilMs);
+    r.insert(QStringLiteral("smilBytes"), smil.size());
+    r.insert(QStringLiteral("smilAnimations"), animations);
+    r.insert(QStringLiteral("smilKeys"), keys);
+    r.insert(QStringLiteral("smilKeyTimesBytes"), keyTimesBytes);
+    r.insert(QStringLiteral("smilKeySplinesBytes"), keySplinesBytes);
+    r.insert(QStringLiteral("smilValuesBytes"), valuesBytes);
+    r.insert(QStringLiteral("framesMs"), framesMs);
+    r.insert(QStringLiteral("framesBytes"), frames.size());
+    r.insert(QStringLiteral("frames"), timeline.frameCount());
+    r.insert(QStringLiteral("targetSmilBytes"), 3'000'000);
+    r.insert(QStringLiteral("targetSmilMs"), 2000);
+    return r;
+}
+
+// Frames rendered for video: the first 20 s at 512x512, in parallel, delivered in order.
+QJsonObject benchFrames()
+{
+    const FaceModel face = averageFace(QRectF(100, 100, 300, 360), QSize(512, 512));
+    const Timeline timeline = tenMinutesOfSpeech(0.14, 0.30);
+    const FrameRenderer renderer(
+        SvgFace(face, Style::preset(QStringLiteral("normal"))), timeline, MouthShapeSet(), QSize(512, 512));
+    FrameRenderOptions options;
+    options.count = 500;
+    qint64 checksum = 0;
+    const double ms = bench::medianMs(
+        [&] {
+            renderFrames(
+                renderer,
+                [&](int, const QImage &image) {
+                    checksum += image.pixel(256, 256);
+                    return true;
+                },
+                options);
+        },
+        3, 0);
+    QJsonObject r;
+    r.insert(QStringLiteral("frames"), options.count);
+    r.insert(QStringLiteral("ms"), ms);
+    r.insert(QStringLiteral("framesPerSecond"), options.count * 1000.0 / ms);
+    r.insert(QStringLiteral("timesRealTime"), options.count / renderer.frameRate() * 1000.0 / ms);
+    r.insert(QStringLiteral("checksum"), checksum != 0);
+    return r;
+}
+
+} // namespace
+
+TOONFACE_BENCHMARK("export.tenMinutes", [] { return benchExport(false); });
+TOONFACE_BENCHMARK("export.tenMinutesFast", [] { return benchExport(true); });
+TOONFACE_BENCHMARK("export.frames512", benchFrames);

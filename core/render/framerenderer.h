@@ -1,0 +1,71 @@
+#pragma once
+
+#include "anim/timelineevaluator.h"
+#include "render/svgface.h"
+
+#include <QByteArray>
+#include <QColor>
+#include <QImage>
+#include <QSize>
+
+#include <atomic>
+#include <functional>
+
+namespace toonface {
+
+class MouthShapeSet;
+class Timeline;
+
+// The frames of a timeline as images, for video export and previews: frame i shows time
+// i / frameRate(), drawn by SvgFace::svg() (extra layers included) and rasterized by
+// QSvgRenderer (rasterizeSvg(): aspect kept, centred, `background` inside the drawing).
+// Immutable after construction; render() may run on several threads at once.
+class FrameRenderer
+{
+public:
+    // requires: size not empty
+    FrameRenderer(const SvgFace &face, const Timeline &timeline, const MouthShapeSet &shapes, QSize size,
+        QColor background = Qt::white);
+
+    QSize size() const { return m_size; }
+    double frameRate() const { return m_frameRate; }
+    // Frames of the timeline's duration (at least one).
+    int frameCount() const { return m_frameCount; }
+    double frameTime(int frame) const { return frame / m_frameRate; }
+
+    QByteArray svgAt(double t) const;
+    QImage renderAt(double t) const;
+    QImage render(int frame) const { return renderAt(frameTime(frame)); }
+
+    const TimelineEvaluator &evaluator() const { return m_evaluator; }
+
+private:
+    SvgFace m_face;
+    TimelineEvaluator m_evaluator;
+    QSize m_size;
+    QColor m_background;
+    double m_frameRate;
+    int m_frameCount;
+};
+
+struct FrameRenderOptions
+{
+    int first = 0;
+    int count = -1; // frames from `first`; -1: to the end
+    // Frames rendered per batch; one batch renders while the previous one is delivered, so at
+    // most two batches of images are held. 0: twice the number of cores.
+    int batch = 0;
+    // Called on the calling thread after each delivered frame.
+    std::function<void(int delivered, int total)> progress;
+    // When set and it becomes true, rendering stops (renderFrames returns false).
+    const std::atomic_bool *cancel = nullptr;
+};
+
+// Renders frames in parallel (QtConcurrent) and hands them to `sink` in frame order on the
+// calling thread. The sink returns false to stop. Returns true when every requested frame
+// reached the sink, false when cancelled or stopped by the sink; all rendering has finished
+// when it returns.
+bool renderFrames(const FrameRenderer &renderer, const std::function<bool(int frame, const QImage &image)> &sink,
+    const FrameRenderOptions &options = {});
+
+} // namespace toonface

@@ -1,0 +1,103 @@
+#pragma once
+
+#include <QByteArray>
+#include <QString>
+#include <QStringList>
+
+#include <atomic>
+#include <functional>
+#include <optional>
+
+namespace toonface {
+
+class FaceModel;
+class MouthShapeSet;
+class Timeline;
+struct Style;
+
+// How an exported animation carries the sound of the timeline's audio clip.
+enum class ExportAudio {
+    Embed, // the file's bytes, as a data: URI inside the export
+    Reference, // a relative URI of the file, as seen from the export's folder
+    None, // silent
+};
+
+struct AnimationExportOptions
+{
+    // Smil: the drawing of the pose at time 0 with an <animate>/<animateTransform> on every
+    // attribute that moves, over its key times. Frames: the thesis' form for players without
+    // path animation, one group per frame shown by a <set> of its visibility.
+    enum class Mode { Smil, Frames };
+    Mode mode = Mode::Smil;
+
+    ExportAudio audio = ExportAudio::Embed;
+    // The sound file; empty means the path of the timeline's audio clip. Without either the
+    // export is silent.
+    QString audioPath;
+    // With ExportAudio::Reference: the folder the export will be written to (empty: the
+    // current directory), so the reference is relative to it.
+    QString outputDir;
+
+    // Extra SVG layers (clothing, accessories) drawn above the face, as SvgFace::addLayerFile.
+    QStringList layerFiles;
+
+    // How far, in pixels, an interpolated coordinate may stray from the renderer's geometry at
+    // any time between key times; coordinates are written to 0.1 px, which adds up to 0.05.
+    double tolerance = 0.08;
+
+    // Called now and then on the calling thread with the fraction done (0..1).
+    std::function<void(double)> progress;
+    // When set and it becomes true, the export stops and fails with the error "cancelled".
+    const std::atomic_bool *cancel = nullptr;
+};
+
+// The timeline on `face` as one self-contained SVG 1.1 document that plays in a browser.
+//
+// Smil mode: the document SvgFace::svg() writes for the pose at time 0, unchanged but for
+// - an <animate additive="sum"> child on every geometry attribute that moves ("d" of paths,
+//   "cx"/"cy" of circles, "points" of polylines), whose values are offsets from the attribute
+//   as written (path data with the same commands), so numbers that never move are 0;
+// - on <g id="head">, four <animateTransform>s that rebuild SvgFace::headTransform():
+//   translate (additive="replace"), rotate, scale and the constant translate back (additive="sum");
+// - <metadata> with <tf:animation xmlns:tf="urn:toonface:animation:1" duration="s" fps="n"/>.
+// Every animation begins at 0, lasts the timeline's duration and is frozen at its end; it has
+// calcMode="spline" with ascending keyTimes from 0 to 1 and one keySpline per interval, or a
+// single value when it is constant. Each attribute has its own key times: those of the tracks
+// that move it (TimelineEvaluator::exportKeys: the mouth's for the mouth, the blinks' for the
+// lids, ...) plus those needed where the drawing bends (lips that touch). Between two key times
+// it follows one cubic timing: the ease of easing.h where the pose eases, a fitted one where
+// eases overlap; key times are added until every coordinate stays within `tolerance` of
+// SvgFace::parts(evaluate(t)) at all t. Numbers are written to 0.1 px (angles 0.01 degree,
+// scales 0.0001), key times to at most 0.1 ms.
+//
+// With sound, <metadata> also holds
+//   <tf:audio href="URI" offset="s" duration="s"/>
+// (URI a data: URI or a relative reference, offset the clip's start in the animation), and a
+// small script makes the document a player: the animation waits at time 0 behind a play
+// button (<g id="tf-play">) until the sound may play (browsers block sound without a click),
+// then runs locked to the audio clock; a click pauses and resumes. Without the script (an
+// <img>, an old viewer) it plays silently from the start.
+//
+// Frames mode: the parts that never move are drawn once (in <defs>, used by every frame) and
+// each frame i is <g visibility="hidden"> with <set attributeName="visibility" to="visible"
+// begin="i/fps s" dur="1/fps s"/> (the last one frozen) holding the head transform and the
+// moving parts, their ids suffixed "-f<i>"; metadata and sound as in Smil mode.
+//
+// Returns an empty array and sets *error (naming the file) when the audio or a layer file
+// cannot be read, or when cancelled.
+QByteArray exportSmilSvg(const FaceModel &face, const Style &style, const Timeline &timeline,
+    const MouthShapeSet &shapes, const AnimationExportOptions &options = {}, QString *error = nullptr);
+
+// The Smil-mode drawing as an <svg> element to place in a page (no XML declaration, metadata
+// or player script), and the sound as exportSmilSvg() would carry it; see htmlplayer.h.
+struct SmilElement
+{
+    QByteArray svg;
+    QByteArray audioUri; // a data: URI or a relative reference; empty when silent
+    double audioOffset = 0; // the sound's start in the animation, seconds
+    double duration = 0; // of the animation, seconds
+};
+std::optional<SmilElement> exportSmilElement(const FaceModel &face, const Style &style, const Timeline &timeline,
+    const MouthShapeSet &shapes, const AnimationExportOptions &options = {}, QString *error = nullptr);
+
+} // namespace toonface

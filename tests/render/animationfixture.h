@@ -1,0 +1,105 @@
+#pragma once
+
+// A face and a ten-second timeline that uses every track, shared by the export tests.
+
+#include "anim/timeline.h"
+#include "face/averageface.h"
+#include "face/facemodel.h"
+#include "face/mouthshape.h"
+
+#include <QFile>
+#include <QString>
+#include <QtEndian>
+
+#include <cmath>
+#include <numbers>
+
+namespace toonface::test {
+
+inline FaceModel animationFace()
+{
+    return averageFace(QRectF(106, 130, 300, 330), QSize(512, 512));
+}
+
+// Three phrases of speech with pauses between them (every shape, f with its lips pressed
+// together, n keeping the corners of the shape before); a smile fading in and out over
+// speech, a surprise that starts with no fade (a jump), a brief anger; random blinks; gaze
+// moves; a head shake and a nod. The audio clip, when given, lasts the whole 10 s.
+inline Timeline animationTimeline(const QString &audioPath = {})
+{
+    Timeline t;
+    t.setFrameRate(25);
+    const MouthShape shapes[] = {MouthShape::H, MouthShape::A, MouthShape::U, MouthShape::M, MouthShape::I,
+        MouthShape::E, MouthShape::F, MouthShape::O, MouthShape::N, MouthShape::A, MouthShape::E, MouthShape::I};
+    const double lengths[] = {0.12, 0.2, 0.08, 0.15, 0.25, 0.1, 0.18, 0.07, 0.22, 0.3, 0.05, 0.14, 0.09};
+    QVector<MouthCue> cues;
+    int k = 0;
+    for (const auto &[start, end] : {std::pair {0.4, 2.3}, std::pair {3.2, 6.0}, std::pair {7.2, 9.1}}) {
+        for (double s = start; s < end; ++k) {
+            const double length = lengths[k % std::size(lengths)];
+            cues.append({s, s + length, shapes[k % std::size(shapes)]});
+            s += length;
+        }
+    }
+    t.addMouthCues(cues);
+    t.addEmotionClip({1.0, 4.0, Emotion::Smile, 0.8, 0.5, 0.5});
+    t.addEmotionClip({5.0, 6.5, Emotion::Surprise, 0.9, 0.0, 0.3});
+    t.addEmotionClip({8.0, 9.5, Emotion::Angry, 0.6, 0.2, 0.2});
+    t.generateBlinks(11, 10.0);
+    t.addGazeKey({0.0, {0, 0}});
+    t.addGazeKey({2.5, {0.06, 0.02}});
+    t.addGazeKey({4.0, {-0.05, -0.03}});
+    t.addGazeKey({8.0, {0, 0}});
+    t.addShake(2.0, 3.0);
+    t.addNod(6.8, 7.8);
+    t.setAudio(AudioClip {audioPath, 0.0, 10.0});
+    return t;
+}
+
+// A time at which the mouth holds a wide-open `a` (the tenth cue, held from its start until
+// 0.1 s before the next), and one in the pause after the second phrase when it is shut; the head
+// is at rest at both.
+inline double openVowelTime()
+{
+    return 0.4 + 0.12 + 0.2 + 0.08 + 0.15 + 0.25 + 0.1 + 0.18 + 0.07 + 0.22 + 0.06;
+}
+inline double silenceTime()
+{
+    return 6.6;
+}
+
+// A mono 16-bit PCM WAV of a quiet 220 Hz tone.
+inline bool writeToneWav(const QString &path, double seconds, int rate = 8000)
+{
+    const int samples = int(seconds * rate);
+    QByteArray data(samples * 2, Qt::Uninitialized);
+    for (int i = 0; i < samples; ++i)
+        qToLittleEndian<qint16>(qint16(3000 * std::sin(2 * std::numbers::pi * 220.0 * i / rate)), data.data() + 2 * i);
+    QByteArray header;
+    auto u32 = [&](quint32 v) {
+        char b[4];
+        qToLittleEndian(v, b);
+        header.append(b, 4);
+    };
+    auto u16 = [&](quint16 v) {
+        char b[2];
+        qToLittleEndian(v, b);
+        header.append(b, 2);
+    };
+    header += "RIFF";
+    u32(36 + quint32(data.size()));
+    header += "WAVEfmt ";
+    u32(16);
+    u16(1);
+    u16(1);
+    u32(quint32(rate));
+    u32(quint32(rate * 2));
+    u16(2);
+    u16(16);
+    header += "data";
+    u32(quint32(data.size()));
+    QFile f(path);
+    return f.open(QIODevice::WriteOnly) && f.write(header + data) == header.size() + data.size();
+}
+
+} // namespace toonface::test

@@ -1,0 +1,292 @@
+#include "animationfixture.h"
+
+#include "anim/timeline.h"
+#include "face/facemodel.h"
+#include "face/fapu.h"
+#include "render/framerenderer.h"
+#include "render/htmlplayer.h"
+#include "render/smilexport.h"
+#include "render/svgface.h"
+
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QImage>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace toonface;
+
+namespace {
+
+// Chromium renders each frame at this size, as does Toonface's own renderer.
+constexpr int kCell = 256;
+
+// Mean absolute difference per colour channel (0..255) between two images inside `box`.
+double meanDifference(const QImage &a, const QImage &b, const QRect &box)
+{
+    const QImage x = a.convertToFormat(QImage::Format_RGB32);
+    const QImage y = b.convertToFormat(QImage::Format_RGB32);
+    const QRect r = box.intersected(x.rect()).intersected(y.rect());
+    double sum = 0;
+    for (int j = r.top(); j <= r.bottom(); ++j) {
+        const QRgb *p = reinterpret_cast<const QRgb *>(x.constScanLine(j));
+        const QRgb *q = reinterpret_cast<const QRgb *>(y.constScanLine(j));
+        for (int i = r.left(); i <= r.right(); ++i) {
+            sum += std::abs(qRed(p[i]) - qRed(q[i])) + std::abs(qGreen(p[i]) - qGreen(q[i]))
+                + std::abs(qBlue(p[i]) - qBlue(q[i]));
+        }
+    }
+    return r.isEmpty() ? 0 : sum / (3.0 * r.width() * r.height());
+}
+
+// The exported SVG as an element of a page, its ids prefixed so several copies can share
+// the page (clip paths refer to ids).
+QByteArray inlineCopy(QByteArray svg, const QByteArray &prefix)
+{
+    svg = svg.mid(svg.indexOf("<svg"));
+    svg.replace("id=\"", "id=\"" + prefix);
+    svg.replace("url(#", "url(#" + prefix);
+    svg.replace("href=\"#", "href=\"#" + prefix);
+    return svg;
+}
+
+} // namespace
+
+// Headless Chromium plays the exported animation: paused at chosen times, its frames match
+// Toonface's own renderer (QSvgRenderer) frame for frame, and the HTML player follows the
+// audio element when it seeks.
+class TestBrowser : public QObject
+{
+    Q_OBJECT
+
+private:
+    QString m_chromium;
+    QTemporaryDir m_dir;
+    FaceModel m_face = test::animationFace();
+    MouthShapeSet m_shapes;
+    Timeline m_timeline;
+
+    // Loads a page (`html`, or an SVG document with suffix .svg) in Chromium and returns its
+    // screenshot of the window.
+    QImage screenshot(const QByteArray &html, QSize window, const QString &name, const QStringList &extra = {},
+        const QString &suffix = QStringLiteral(".html"))
+    {
+        const QString page = m_dir.filePath(name + suffix);
+        const QString png = m_dir.filePath(name + QStringLiteral(".png"));
+        QFile f(page);
+        if (!f.open(QIODevice::WriteOnly) || f.write(html) != html.size())
+            return {};
+        f.close();
+        QTemporaryDir profile;
+        QProcess chromium;
+        chromium.setProcessChannelMode(QProcess::MergedChannels);
+        QStringList args = {QStringLiteral("--headless"), QStringLiteral("--no-sandbox"),
+            QStringLiteral("--disable-gpu"), QStringLiteral("--disable-quic"), QStringLiteral("--no-first-run"),
+            QStringLiteral("--disable-background-networking"), QStringLiteral("--disable-component-update"),
+            QStringLiteral("--disable-sync"), QStringLiteral("--hide-scrollbars"),
+            QStringLiteral("--force-device-scale-factor=1"), QStringLiteral("--user-data-dir=") + profile.path(),
+            QStringLiteral("--screenshot=") + png,
+            QStringLiteral("--window-size=%1,%2").arg(window.width()).arg(window.height())};
+        args << extra << QUrl::fromLocalFile(page).toString();
+        QElapsedTimer timer;
+        timer.start();
+        chromium.start(m_chromium, args);
+        if (!chromium.waitForStarted(20000)) {
+            m_startFailure = chromium.errorString();
+            return {};
+        }
+        if (!chromium.waitForFinished(90000)) {
+            chromium.kill();
+            chromium.waitForFinished();
+            qWarning("Chromium did not finish: %s", chromium.readAll().right(2000).constData());
+            return {};
+        }
+        qInfo("Chromium took %lld ms for %s", qlonglong(timer.elapsed()), qPrintable(name));
+        QImage image(png);
+        if (image.isNull())
+            qWarning("no screenshot; Chromium said: %s", chromium.readAll().right(2000).constData());
+        if (const QString keep = qEnvironmentVariable("TOONFACE_BROWSER_OUT"); !keep.isEmpty() && !image.isNull())
+            image.save(QDir(keep).filePath(name + QStringLiteral(".png")));
+        return image;
+    }
+    QString m_startFailure;
+
+    QRect scaled(const QRectF &r) const { return QRectF(r.topLeft() / 2.0, r.size() / 2.0).toAlignedRect(); }
+
+    // The region the mouth and jaw can reach, in a cell.
+    QRect mouthBox() const
+    {
+        const Fapu f = m_face.fapu();
+        const QPointF l = m_face.point("8.4"), r = m_face.point("8.3");
+        const double top = m_face.point("8.9").y() - 0.4 * f.mns0;
+        const double bottom = m_face.point("8.2").y() + 0.9 * f.mns0;
+        return scaled(QRectF(QPointF(l.x() - 0.15 * f.mw0, top), QPointF(r.x() + 0.15 * f.mw0, bottom)));
+    }
+
+    QRect faceBox() const { return scaled(m_face.bounds().adjusted(-10, -10, 10, 10)); }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        m_chromium = QStandardPaths::findExecutable(QStringLiteral("chromium"));
+        if (m_chromium.isEmpty())
+            m_chromium = QStandardPaths::findExecutable(QStringLiteral("chromium-browser"));
+        if (m_chromium.isEmpty())
+            QSKIP("Chromium is not installed (Debian package chromium): the browser cannot start");
+        QVERIFY(m_dir.isValid());
+        const QString wav = m_dir.filePath(QStringLiteral("voice.wav"));
+        QVERIFY(test::writeToneWav(wav, 10.0));
+        m_timeline = test::animationTimeline(wav);
+    }
+
+    // One page holds the animation six times, each paused at its own time: at rest, the open
+    // vowel, the silence after a phrase, the middle of an ease, the head shaking while a smile
+    // fades, and a blink. One launch of Chromium renders them all.
+    void framesMatchQtRenderer()
+    {
+        AnimationExportOptions options;
+        options.audio = ExportAudio::None;
+        QString error;
+        const QByteArray svg = exportSmilSvg(m_face, Style(), m_timeline, m_shapes, options, &error);
+        QVERIFY2(!svg.isEmpty(), qPrintable(error));
+
+        double blink = 5.5;
+        for (const BlinkEvent &b : m_timeline.blinks()) {
+            if (b.time > 0.5 && b.time < 9.0) {
+                blink = b.time + b.duration * (kBlinkPhases.closing + kBlinkPhases.shut / 2);
+                break;
+            }
+        }
+        const QVector<double> times = {0.0, test::openVowelTime(), test::silenceTime(), 0.6, 2.3, blink};
+        const int columns = 3;
+        QByteArray page = "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><style>html,body{margin:0;padding:0;"
+                          "background:#fff;overflow:hidden}#grid{display:grid;grid-template-columns:repeat(3,"
+            + QByteArray::number(kCell) + "px)}svg{display:block;width:" + QByteArray::number(kCell)
+            + "px;height:" + QByteArray::number(kCell) + "px}</style></head><body><div id=\"grid\">";
+        for (qsizetype i = 0; i < times.size(); ++i)
+            page += inlineCopy(svg, "c" + QByteArray::number(i) + '-');
+        page += "</div><script>window.addEventListener('load', function () {var times = [";
+        for (qsizetype i = 0; i < times.size(); ++i)
+            page += (i ? "," : "") + QByteArray::number(times[i], 'g', 10);
+        page += "]; document.querySelectorAll('svg').forEach(function (s, i) { s.pauseAnimations(); "
+                "s.setCurrentTime(times[i]); });});</script></body></html>";
+
+        const QSize window(columns * kCell, int((times.size() + columns - 1) / columns) * kCell);
+        const QImage shot = screenshot(page, window, QStringLiteral("frames"));
+        if (shot.isNull() && !m_startFailure.isEmpty())
+            QSKIP(qPrintable(QStringLiteral("Chromium cannot start: %1").arg(m_startFailure)));
+        QVERIFY(!shot.isNull());
+        QCOMPARE(shot.size(), window);
+
+        const FrameRenderer renderer(SvgFace(m_face, Style()), m_timeline, m_shapes, QSize(kCell, kCell));
+        QVector<QImage> browser, qt;
+        for (qsizetype i = 0; i < times.size(); ++i) {
+            browser.append(shot.copy(int(i % columns) * kCell, int(i / columns) * kCell, kCell, kCell));
+            qt.append(renderer.renderAt(times[i]));
+            if (const QString keep = qEnvironmentVariable("TOONFACE_BROWSER_OUT"); !keep.isEmpty())
+                qt.last().save(QDir(keep).filePath(QStringLiteral("qt-%1.png").arg(i)));
+        }
+
+        // Chromium (Skia) and QSvgRenderer antialias edges differently, and Chromium clips the
+        // eyeballs where QSvgRenderer covers them with skin: every outline differs by a pixel's
+        // worth of blending. Measured, that averages under 1 level of 255 over the face box and
+        // up to about 2 over the mouth box (where outlines are densest); the open mouth against
+        // the shut one differs by over 30. So 4 leaves room for renderer versions, while a mouth
+        // shape or head pose of another time fails (checked below).
+        constexpr double kSameFrame = 4.0;
+        for (qsizetype i = 0; i < times.size(); ++i) {
+            const double face = meanDifference(browser[i], qt[i], faceBox());
+            const double mouth = meanDifference(browser[i], qt[i], mouthBox());
+            qInfo("t = %.3f s: browser vs Qt, face box %.2f, mouth box %.2f", times[i], face, mouth);
+            QVERIFY2(face <= kSameFrame, qPrintable(QStringLiteral("frame at %1 s: %2").arg(times[i]).arg(face)));
+            QVERIFY2(mouth <= kSameFrame, qPrintable(QStringLiteral("mouth at %1 s: %2").arg(times[i]).arg(mouth)));
+        }
+
+        // The open vowel is not the silence: the mouth region changes far beyond the
+        // renderers' disagreement, in the browser as in Qt.
+        const double open = meanDifference(browser[1], browser[2], mouthBox());
+        const double openQt = meanDifference(qt[1], qt[2], mouthBox());
+        qInfo("open vowel vs silence, mouth box: browser %.2f, Qt %.2f", open, openQt);
+        QVERIFY(open > 4 * kSameFrame);
+        QVERIFY(openQt > 4 * kSameFrame);
+        // And a frame compared with Qt's drawing of another time fails the match: the test
+        // can tell times apart.
+        QVERIFY(meanDifference(browser[1], qt[2], mouthBox()) > kSameFrame);
+        QVERIFY(meanDifference(browser[4], qt[0], faceBox()) > kSameFrame); // the shaking head
+    }
+
+    // The SVG with its sound, opened on its own where sound may not start without a click:
+    // it waits at time 0 behind its play button.
+    void standaloneSvgWaitsForAClick()
+    {
+        AnimationExportOptions options;
+        options.audio = ExportAudio::Embed;
+        QString error;
+        const QByteArray svg = exportSmilSvg(m_face, Style(), m_timeline, m_shapes, options, &error);
+        QVERIFY2(!svg.isEmpty(), qPrintable(error));
+        const QSize size = m_face.imageSize();
+        const QImage shot = screenshot(svg, size, QStringLiteral("standalone"),
+            {QStringLiteral("--virtual-time-budget=2000"), QStringLiteral("--autoplay-policy=user-gesture-required")},
+            QStringLiteral(".svg"));
+        if (shot.isNull() && !m_startFailure.isEmpty())
+            QSKIP(qPrintable(QStringLiteral("Chromium cannot start: %1").arg(m_startFailure)));
+        QVERIFY(!shot.isNull());
+        const FrameRenderer renderer(SvgFace(m_face, Style()), m_timeline, m_shapes, size);
+        const QImage start = renderer.renderAt(0);
+        // The button: a dark disc of radius 0.08 of the drawing, in its centre.
+        const int r = int(0.08 * std::min(size.width(), size.height()));
+        const QRect button(size.width() / 2 - r / 2, size.height() / 2 - r / 2, r, r);
+        const double onButton = meanDifference(shot, start, button);
+        // Below it, the drawing at time 0.
+        const QRect below = QRectF(m_face.bounds())
+                                .toAlignedRect()
+                                .adjusted(0, r * 2, 0, 0)
+                                .intersected(QRect(0, size.height() / 2 + r + 2, size.width(), size.height()));
+        const double elsewhere = meanDifference(shot, start, below);
+        qInfo("standalone SVG: button region vs the drawing %.2f, below it %.2f", onButton, elsewhere);
+        QVERIFY(onButton > 40);
+        QVERIFY(elsewhere <= 4.0);
+    }
+
+    // The HTML player: seeking its audio element moves the animation to the audio's time.
+    void htmlPlayerFollowsSeeks()
+    {
+        AnimationExportOptions options;
+        options.audio = ExportAudio::Embed;
+        QString error;
+        QByteArray html = exportHtmlPlayer(m_face, Style(), m_timeline, m_shapes, options, &error);
+        QVERIFY2(!html.isEmpty(), qPrintable(error));
+        const double seekTo = test::openVowelTime();
+        // After the page loads, seek the audio as a user dragging its slider would; the
+        // player's own listeners must carry the animation there. Only the drawing is shown,
+        // at the cell size.
+        const QByteArray cell = QByteArray::number(kCell) + "px";
+        const QByteArray probe = "<style>#tf-controls{display:none}#tf-stage{display:block;padding:0}"
+                                 "html,body{overflow:hidden}#tf-stage>svg{width:"
+            + cell + ";height:" + cell
+            + "}</style><script>window.addEventListener('load', function () {"
+              "document.getElementById('tf-audio').currentTime = "
+            + QByteArray::number(seekTo, 'g', 10) + ";});</script>";
+        html.replace("</body>", probe + "</body>");
+        const QImage shot = screenshot(html, QSize(kCell, kCell), QStringLiteral("player"),
+            {QStringLiteral("--virtual-time-budget=3000"),
+                QStringLiteral("--autoplay-policy=no-user-gesture-required")});
+        if (shot.isNull() && !m_startFailure.isEmpty())
+            QSKIP(qPrintable(QStringLiteral("Chromium cannot start: %1").arg(m_startFailure)));
+        QVERIFY(!shot.isNull());
+
+        const FrameRenderer renderer(SvgFace(m_face, Style()), m_timeline, m_shapes, QSize(kCell, kCell));
+        const double atSeek = meanDifference(shot, renderer.renderAt(seekTo), mouthBox());
+        const double atStart = meanDifference(shot, renderer.renderAt(0), mouthBox());
+        qInfo(
+            "player after seeking to %.3f s: mouth box vs Qt at that time %.2f, at 0 s %.2f", seekTo, atSeek, atStart);
+        QVERIFY2(atSeek <= 4.0, qPrintable(QString::number(atSeek)));
+        QVERIFY(atStart > 4.0);
+    }
+};
+
+QTEST_MAIN(TestBrowser)
+#include "tst_browser.moc"
