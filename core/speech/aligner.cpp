@@ -183,11 +183,19 @@ public:
         const double depth = std::min(maxLn(b - 12, b), maxLn(b + 1, b + 13)) - lnLoud(b);
         const double aboveBottom = lnLoud(b) - minLn(b - 4, b + 4);
         const double valley = std::clamp(depth / 3.0, 0.0, 1.0) - std::clamp(aboveBottom / 1.0, 0.0, 1.0);
+        // Voicing lost across b (beyond what the loudness says): a voiceless initial's mark,
+        // which a nasal, a liquid or a vowel onset does not have.
+        const double voicingLoss
+            = std::clamp(((lnVoiced(b - 1) - lnVoiced(b + 3)) - (lnLoud(b - 1) - lnLoud(b + 3))) / 2.0, 0.0, 1.0);
+        // A nasal, a liquid or a glide dips the mid band by up to ~3.5 ln units (15 dB); a
+        // deeper fall is a closure or frication, the onset of a voiceless initial.
+        const double fallDepth = lnLoud(b - 1) - minLn(b, b + 12);
+        auto shallow = [](double d) { return std::clamp((5.0 - d) / 1.5, 0.0, 1.0); };
         double e = 0;
         switch (kind) {
         case OnsetKind::Voiceless: e = knee(3.0, true); break;
-        case OnsetKind::Sonorant: e = knee(1.5, false); break;
-        case OnsetKind::Vowel: e = valley; break;
+        case OnsetKind::Sonorant: e = knee(1.5, false) * (1.0 - voicingLoss) * shallow(fallDepth); break;
+        case OnsetKind::Vowel: e = valley * (1.0 - voicingLoss) * shallow(depth); break;
         case OnsetKind::Any: e = 0; break; // English words end in consonants: no rule here
         }
         return std::max(e * voicedBefore, afterPause);
@@ -288,13 +296,17 @@ private:
 // voiced nucleus and lasting about as long as in the reference (`expected`, frames of speech,
 // scaled to the speaker's rate). Returns the evidence of each chosen onset in `evidence`.
 std::vector<int> segmentSyllables(const Signals &sig, const std::vector<int> &prior,
-    const std::vector<double> &expected, const std::vector<OnsetKind> &kinds, const std::vector<double> &match,
-    int speechEnd, std::vector<double> *evidence)
+    const std::vector<double> &expected, const std::vector<OnsetKind> &kinds, int speechEnd,
+    std::vector<double> *evidence)
 {
     // Weights of the terms, in units of "one clear onset": a clear onset (evidence ~0.7) or a
     // clear nucleus are worth about as much as a syllable 1.5 times longer than expected costs.
-    constexpr double kOnset = 4.0, kNucleus = 2.0, kDuration = 3.0, kPrior = 0.5, kValley = 4.0;
-    constexpr double kPriorSigma = 25.0; // frames
+    constexpr double kOnset = 4.0, kNucleus = 2.0, kDuration = 3.0, kPrior = 1.0, kValley = 4.0;
+    // The warp's estimate holds within about kPriorSigma; farther off, the cost stops growing
+    // (kPriorCap): one badly warped syllable cannot drag its neighbours, while shifting a run
+    // of syllables by one costs every one of them.
+    constexpr double kPriorSigma = 12.0; // frames
+    constexpr double kPriorCap = 1.0;
     constexpr int kWindow = 80; // frames either side of the prior searched
     const int n = int(prior.size());
     const int T = sig.frames();
@@ -308,11 +320,8 @@ std::vector<int> segmentSyllables(const Signals &sig, const std::vector<int> &pr
     for (int k = n - 2; k >= 0; --k)
         hi[size_t(k)] = std::min(hi[size_t(k)], hi[size_t(k) + 1] - 1);
     auto node = [&](int k, int b) {
-        // Trust the warp where it matched well: frames of unit-variance channels that differ by
-        // ~0.1 are the same sound in another voice; ~0.3 and more, a loose match.
-        const double sigma = kPriorSigma * (0.3 + 2.2 * std::clamp((match[size_t(k)] - 0.1) / 0.2, 0.0, 1.0));
-        const double d = (b - prior[size_t(k)]) / sigma;
-        return kOnset * sig.onsetEvidence(b, kinds[size_t(k)], k == 0) - kPrior * 0.5 * d * d;
+        const double d = (b - prior[size_t(k)]) / kPriorSigma;
+        return kOnset * sig.onsetEvidence(b, kinds[size_t(k)], k == 0) - kPrior * std::min(0.5 * d * d, kPriorCap);
     };
     // A syllable over [from, to): its nucleus and its length (pauses excluded).
     auto span = [&](int k, int from, int to) {
@@ -533,7 +542,7 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         }
     }
     std::vector<double> evidence;
-    const std::vector<int> onsets = segmentSyllables(sig, prior, expectedFrames, kinds, match, last + 1, &evidence);
+    const std::vector<int> onsets = segmentSyllables(sig, prior, expectedFrames, kinds, last + 1, &evidence);
 
     AlignResult r;
     r.syllables.resize(n);
@@ -558,10 +567,12 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
             s.start = std::abs(refined - warped) <= 0.04 ? 0.5 * (refined + warped) : refined;
         if (k > 0)
             s.start = std::max(s.start, r.syllables[k - 1].start + 0.02);
-        // Confidence: a clear onset where the warp expected it.
+        // Confidence: a clear onset, where the warp expected it, over sounds that matched the
+        // reference (a mean distance of 0.15 is the same sounds in another voice, 0.4 none).
         const double e = std::clamp(evidence.empty() ? 0.0 : evidence[size_t(k)] / 0.5, 0.0, 1.0);
         const double shift = std::abs(onsets[size_t(k)] - prior[size_t(k)]) * SpeechFeatures::kHop;
-        s.confidence = std::clamp(0.5 * e + 0.5 * std::exp(-shift / 0.1), 0.0, 1.0);
+        const double matched = std::clamp((0.4 - match[size_t(k)]) / 0.25, 0.0, 1.0);
+        s.confidence = std::clamp((e + std::exp(-shift / 0.1) + matched) / 3.0, 0.0, 1.0);
     }
     for (int k = 0; k < n; ++k) {
         AlignedSyllable &s = r.syllables[k];
