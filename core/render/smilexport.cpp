@@ -13,6 +13,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QHash>
+#include <QMap>
 #include <QMimeDatabase>
 #include <QUrl>
 #include <QXmlStreamReader>
@@ -1313,7 +1314,7 @@ bool smilDocument(const Drawing &d, const TimelineEvaluator &evaluator, const Ti
     const QByteArray dur = seconds(duration);
     const Sampler sampler(d.svg, evaluator, d.channels, d.parts.size());
 
-    // Channels moved by the same tracks share their key times.
+    // Channels moved by the same tracks start from the same key times and share their samples.
     QVector<Tracks> groups;
     for (const Channel &c : d.channels) {
         if (c.tracks && !groups.contains(c.tracks))
@@ -1414,7 +1415,7 @@ bool framesDocument(const Drawing &d, const TimelineEvaluator &evaluator, const 
 
     // Clip paths of moving parts are repeated in each frame (their ids suffixed); the others
     // stay in <defs>.
-    QHash<QByteArray, QByteArray> clipTarget; // clip id -> the moving element it uses
+    QMap<QByteArray, QByteArray> clipTarget; // clip id -> the moving element it uses
     QByteArray defs;
     if (const XmlNode *original = [&]() -> const XmlNode * {
             for (const XmlNode &c : d.document.children) {

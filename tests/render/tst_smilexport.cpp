@@ -520,6 +520,16 @@ private Q_SLOTS:
         QCOMPARE(reader.namespaceUri(), QStringLiteral("http://www.w3.org/2000/svg"));
     }
 
+    // The same input gives the same bytes (the work is spread over threads).
+    void outputIsDeterministic()
+    {
+        for (auto mode : {AnimationExportOptions::Mode::Smil, AnimationExportOptions::Mode::Frames}) {
+            AnimationExportOptions o = silent();
+            o.mode = mode;
+            QCOMPARE(exported(o), exported(o));
+        }
+    }
+
     // Every animation: values over keyTimes from 0 to 1, ascending, one spline per interval,
     // lasting the timeline's duration and frozen at its end.
     void keyTimesAreValid()
