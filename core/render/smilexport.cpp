@@ -188,10 +188,13 @@ qint64 quantize(double v, int decimals)
     return std::llround(std::clamp(v, -1e9, 1e9) * double(kPow10[decimals]));
 }
 
+// A SMIL clock value: unlike a number, it needs a digit before the point ("0.04s").
 QByteArray seconds(double s)
 {
     QByteArray out;
     appendFixed(out, quantize(s, 6), 6);
+    if (out.startsWith('.'))
+        out.prepend('0');
     out += 's';
     return out;
 }
