@@ -13,6 +13,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QHash>
+#include <QMap>
 #include <QMimeDatabase>
 #include <QUrl>
 #include <QXmlStreamReader>
@@ -187,10 +188,13 @@ qint64 quantize(double v, int decimals)
     return std::llround(std::clamp(v, -1e9, 1e9) * double(kPow10[decimals]));
 }
 
+// A SMIL clock value: unlike a number, it needs a digit before the point ("0.04s").
 QByteArray seconds(double s)
 {
     QByteArray out;
     appendFixed(out, quantize(s, 6), 6);
+    if (out.startsWith('.'))
+        out.prepend('0');
     out += 's';
     return out;
 }
@@ -1313,7 +1317,7 @@ bool smilDocument(const Drawing &d, const TimelineEvaluator &evaluator, const Ti
     const QByteArray dur = seconds(duration);
     const Sampler sampler(d.svg, evaluator, d.channels, d.parts.size());
 
-    // Channels moved by the same tracks share their key times.
+    // Channels moved by the same tracks start from the same key times and share their samples.
     QVector<Tracks> groups;
     for (const Channel &c : d.channels) {
         if (c.tracks && !groups.contains(c.tracks))
@@ -1414,7 +1418,7 @@ bool framesDocument(const Drawing &d, const TimelineEvaluator &evaluator, const 
 
     // Clip paths of moving parts are repeated in each frame (their ids suffixed); the others
     // stay in <defs>.
-    QHash<QByteArray, QByteArray> clipTarget; // clip id -> the moving element it uses
+    QMap<QByteArray, QByteArray> clipTarget; // clip id -> the moving element it uses
     QByteArray defs;
     if (const XmlNode *original = [&]() -> const XmlNode * {
             for (const XmlNode &c : d.document.children) {

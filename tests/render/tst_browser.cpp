@@ -144,7 +144,7 @@ private Q_SLOTS:
 
     // One page holds the animation six times, each paused at its own time: at rest, the open
     // vowel, the silence after a phrase, the middle of an ease, the head shaking while a smile
-    // fades, and a blink. One launch of Chromium renders them all.
+    // fades, and a blink; and the frame-mode export twice. One launch of Chromium renders all.
     void framesMatchQtRenderer()
     {
         AnimationExportOptions options;
@@ -161,6 +161,11 @@ private Q_SLOTS:
             }
         }
         const QVector<double> times = {0.0, test::openVowelTime(), test::silenceTime(), 0.6, 2.3, blink};
+        options.mode = AnimationExportOptions::Mode::Frames;
+        const QByteArray frameSvg = exportSmilSvg(m_face, Style(), m_timeline, m_shapes, options, &error);
+        QVERIFY2(!frameSvg.isEmpty(), qPrintable(error));
+        // Frame mode shows frame i from i / fps on: times just past two frames' starts.
+        const QVector<double> frameTimes = {46 / 25.0 + 0.01, 58 / 25.0 + 0.01};
         const int columns = 3;
         QByteArray page = "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><style>html,body{margin:0;padding:0;"
                           "background:#fff;overflow:hidden}#grid{display:grid;grid-template-columns:repeat(3,"
@@ -168,13 +173,17 @@ private Q_SLOTS:
             + "px;height:" + QByteArray::number(kCell) + "px}</style></head><body><div id=\"grid\">";
         for (qsizetype i = 0; i < times.size(); ++i)
             page += inlineCopy(svg, "c" + QByteArray::number(i) + '-');
+        for (qsizetype i = 0; i < frameTimes.size(); ++i)
+            page += inlineCopy(frameSvg, "f" + QByteArray::number(i) + '-');
         page += "</div><script>window.addEventListener('load', function () {var times = [";
-        for (qsizetype i = 0; i < times.size(); ++i)
-            page += (i ? "," : "") + QByteArray::number(times[i], 'g', 10);
+        for (qsizetype i = 0; i < times.size() + frameTimes.size(); ++i)
+            page += (i ? "," : "")
+                + QByteArray::number(i < times.size() ? times[i] : frameTimes[i - times.size()], 'g', 10);
         page += "]; document.querySelectorAll('svg').forEach(function (s, i) { s.pauseAnimations(); "
                 "s.setCurrentTime(times[i]); });});</script></body></html>";
 
-        const QSize window(columns * kCell, int((times.size() + columns - 1) / columns) * kCell);
+        const qsizetype cells = times.size() + frameTimes.size();
+        const QSize window(columns * kCell, int((cells + columns - 1) / columns) * kCell);
         const QImage shot = screenshot(page, window, QStringLiteral("frames"));
         if (shot.isNull() && !m_startFailure.isEmpty())
             QSKIP(qPrintable(QStringLiteral("Chromium cannot start: %1").arg(m_startFailure)));
@@ -212,6 +221,18 @@ private Q_SLOTS:
         qInfo("open vowel vs silence, mouth box: browser %.2f, Qt %.2f", open, openQt);
         QVERIFY(open > 4 * kSameFrame);
         QVERIFY(openQt > 4 * kSameFrame);
+        // Frame mode: the frame of its time.
+        for (qsizetype i = 0; i < frameTimes.size(); ++i) {
+            const qsizetype cell = times.size() + i;
+            const QImage shown = shot.copy(int(cell % columns) * kCell, int(cell / columns) * kCell, kCell, kCell);
+            const QImage frame = renderer.render(int(frameTimes[i] * 25));
+            const double face = meanDifference(shown, frame, faceBox());
+            qInfo("frame mode at %.3f s: browser vs Qt's frame %d, face box %.2f", frameTimes[i],
+                int(frameTimes[i] * 25), face);
+            QVERIFY(face <= kSameFrame);
+            if (const QString keep = qEnvironmentVariable("TOONFACE_BROWSER_OUT"); !keep.isEmpty())
+                frame.save(QDir(keep).filePath(QStringLiteral("qt-frame-%1.png").arg(i)));
+        }
         // And a frame compared with Qt's drawing of another time fails the match: the test
         // can tell times apart.
         QVERIFY(meanDifference(browser[1], qt[2], mouthBox()) > kSameFrame);
@@ -288,5 +309,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestBrowser)
+QTEST_GUILESS_MAIN(TestBrowser)
 #include "tst_browser.moc"

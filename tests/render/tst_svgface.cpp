@@ -491,6 +491,100 @@ private Q_SLOTS:
         QVERIFY(area(path("mouth-teeth")) + area(path("mouth-tongue")) <= area(inner) + 1.0);
     }
 
+    // Animation moves the pose a little at a time: the drawing must follow without jumps (a
+    // curve fitted to a loose tolerance would pop by up to 2/3 px where its error crosses it).
+    void movingPartsFollowThePoseContinuously_data()
+    {
+        QTest::addColumn<QString>("style");
+        QTest::addColumn<QString>("from");
+        QTest::addColumn<QString>("to");
+        QTest::newRow("m to a") << "normal"
+                                << "mouth m"
+                                << "mouth a";
+        QTest::newRow("f to o, lips parting") << "normal"
+                                              << "mouth f"
+                                              << "mouth o";
+        QTest::newRow("i to u, cute") << "cute"
+                                      << "mouth i"
+                                      << "mouth u";
+        QTest::newRow("blink") << "bold"
+                               << "neutral"
+                               << "blink";
+        QTest::newRow("brows, thick") << "bold"
+                                      << "neutral"
+                                      << "emotion surprise";
+        QTest::newRow("brows, Bezier") << "soft"
+                                       << "emotion sad"
+                                       << "emotion angry";
+    }
+
+    void movingPartsFollowThePoseContinuously()
+    {
+        QFETCH(QString, style);
+        QFETCH(QString, from);
+        QFETCH(QString, to);
+        const FaceModel face = testFace();
+        const SvgFace svgFace(face, Style::preset(style));
+        const QMap<QString, Pose> poses = namedPoses(face);
+        constexpr int kSteps = 500;
+        const QVector<FacePart> a = svgFace.parts(poses.value(from));
+        const QVector<FacePart> b = svgFace.parts(poses.value(to));
+        QVector<FacePart> previous = a;
+        for (int step = 1; step <= kSteps; ++step) {
+            const QVector<FacePart> now
+                = svgFace.parts(Pose::lerp(poses.value(from), poses.value(to), double(step) / kSteps));
+            for (qsizetype i = 0; i < now.size(); ++i) {
+                for (auto it = now[i].geometry.cbegin(); it != now[i].geometry.cend(); ++it) {
+                    if (it.value() == previous[i].geometry.value(it.key()))
+                        continue;
+                    const QList<double> x = numbers(previous[i].geometry.value(it.key()));
+                    const QList<double> y = numbers(it.value());
+                    const QList<double> whole0 = numbers(a[i].geometry.value(it.key()));
+                    const QList<double> whole1 = numbers(b[i].geometry.value(it.key()));
+                    QCOMPARE(y.size(), x.size());
+                    for (qsizetype j = 0; j < y.size(); ++j) {
+                        // A step moves a number by about its share of the whole move (more
+                        // where the motion bends, as where the lips part); 0.02 is the
+                        // rounding of two numbers to 0.01.
+                        const double share = std::abs(whole1[j] - whole0[j]) / kSteps;
+                        QVERIFY2(std::abs(y[j] - x[j]) <= 4 * share + 0.02,
+                            qPrintable(QStringLiteral("%1 %2 number %3 jumps by %4 at step %5")
+                                           .arg(now[i].id, it.key())
+                                           .arg(j)
+                                           .arg(y[j] - x[j])
+                                           .arg(step)));
+                    }
+                }
+            }
+            previous = now;
+        }
+    }
+
+    // Between two mouth shapes whose lips stay apart, every mouth part (teeth and tongue too)
+    // moves linearly with the pose, so eased poses ease the drawing exactly.
+    void mouthIsLinearInThePose()
+    {
+        const FaceModel face = testFace();
+        const SvgFace svgFace(face, preset("normal"));
+        const MouthShapeSet shapes;
+        const Pose wide = mouthPose(face, shapes, MouthShape::A);
+        const Pose narrow = mouthPose(face, shapes, MouthShape::I);
+        const QVector<FacePart> from = svgFace.parts(wide);
+        const QVector<FacePart> to = svgFace.parts(narrow);
+        for (double s : {0.25, 0.5, 0.8}) {
+            const QVector<FacePart> mid = svgFace.parts(Pose::lerp(wide, narrow, s));
+            for (qsizetype i = 0; i < mid.size(); ++i) {
+                if (!mid[i].id.startsWith(QLatin1StringView("mouth-")) && mid[i].id != QLatin1StringView("jaw"))
+                    continue;
+                const QList<double> x = numbers(from[i].geometry.value(QStringLiteral("d")));
+                const QList<double> y = numbers(to[i].geometry.value(QStringLiteral("d")));
+                const QList<double> m = numbers(mid[i].geometry.value(QStringLiteral("d")));
+                for (qsizetype j = 0; j < m.size(); ++j)
+                    QVERIFY2(std::abs(m[j] - (x[j] + (y[j] - x[j]) * s)) <= 0.02, qPrintable(mid[i].id));
+            }
+        }
+    }
+
     void teethShowOnlyWhenTheMouthOpens()
     {
         const FaceModel face = testFace();
