@@ -5,6 +5,7 @@
 #include "face/emotion.h"
 #include "io/project.h"
 #include "render/framerenderer.h"
+#include "render/htmlplayer.h"
 #include "render/smilexport.h"
 #include "render/svgface.h"
 #include "render/videoencoder.h"
