@@ -146,23 +146,15 @@ int runAnimate(const Command &self, const QStringList &args)
     const double frameRate = parser.value(fps).toDouble(&fpsOk);
     if (!fpsOk || !(frameRate >= 1 && frameRate <= 120))
         return fail(ExitUsage, QStringLiteral("--fps takes a number from 1 to 120, not '%1'").arg(parser.value(fps)));
-    const auto expression = emotionFromName(parser.value(emotion));
-    if (!expression)
-        return fail(ExitUsage,
-            QStringLiteral("unknown --emotion '%1' (neutral, smile, sad, angry or surprise)")
-                .arg(parser.value(emotion)));
+    Emotion expression = Emotion::Neutral;
+    if (const int code = parseEmotionOption(parser, emotion, &expression); code != ExitOk)
+        return code;
     QString language = parser.value(lang);
     if (!language.isEmpty() && language != QLatin1StringView("cmn") && language != QLatin1StringView("en"))
         return fail(ExitUsage, QStringLiteral("unknown --lang '%1' (cmn or en)").arg(language));
-    Style chosenStyle;
-    if (parser.isSet(style)) {
-        bool ok = false;
-        chosenStyle = Style::preset(parser.value(style), &ok);
-        if (!ok)
-            return fail(ExitUsage,
-                QStringLiteral("unknown --style '%1' (%2)")
-                    .arg(parser.value(style), Style::presetNames().join(QStringLiteral(", "))));
-    }
+    std::optional<Style> chosenStyle;
+    if (const int code = parseStyleOption(parser, style, &chosenStyle); code != ExitOk)
+        return code;
 
     const QString inputPath = parser.positionalArguments().constFirst();
     if (QFileInfo(inputPath).suffix().toLower() == QLatin1StringView("json"))
@@ -171,9 +163,7 @@ int runAnimate(const Command &self, const QStringList &args)
     FaceInput input;
     if (const int code = loadFaceInput(inputPath, DetectOptions {}, &input); code != ExitOk)
         return code;
-    Style drawStyle = input.hasProjectStyle && !parser.isSet(style) ? input.style : chosenStyle;
-    if (!input.hasProjectStyle && !input.photo.isNull())
-        drawStyle.sampleColours(input.photo, input.face);
+    const Style drawStyle = drawingStyle(input, chosenStyle);
     const MouthShapeSet shapes = input.mouthShapes;
 
     // Speech: the mouth track and the sound.
@@ -193,8 +183,8 @@ int runAnimate(const Command &self, const QStringList &args)
     timeline.setFrameRate(frameRate);
     timeline.addMouthCues(speech.cues);
     timeline.setAudio(AudioClip {speech.audioPath, 0.0, speech.duration});
-    if (*expression != Emotion::Neutral)
-        timeline.addEmotionClip(EmotionClip {0.0, speech.duration, *expression, 1.0, 0.4, 0.4});
+    if (expression != Emotion::Neutral)
+        timeline.addEmotionClip(EmotionClip {0.0, speech.duration, expression, 1.0, 0.4, 0.4});
     if (!parser.isSet(noBlink))
         timeline.generateBlinks(quint32(qHash(input.photoPath)), speech.duration);
 

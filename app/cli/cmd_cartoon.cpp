@@ -44,31 +44,20 @@ int runCartoon(const Command &self, const QStringList &args)
     if (!sizeOk || pngSize < 16 || pngSize > 8192)
         return fail(
             ExitUsage, QStringLiteral("--size takes a whole number from 16 to 8192, not '%1'").arg(parser.value(size)));
-    const auto expression = emotionFromName(parser.value(emotion));
-    if (!expression)
-        return fail(ExitUsage,
-            QStringLiteral("unknown --emotion '%1' (neutral, smile, sad, angry or surprise)")
-                .arg(parser.value(emotion)));
-    Style chosenStyle;
-    if (parser.isSet(style)) {
-        bool ok = false;
-        chosenStyle = Style::preset(parser.value(style), &ok);
-        if (!ok)
-            return fail(ExitUsage,
-                QStringLiteral("unknown --style '%1' (%2)")
-                    .arg(parser.value(style), Style::presetNames().join(QStringLiteral(", "))));
-    }
+    Emotion expression = Emotion::Neutral;
+    std::optional<Style> chosenStyle;
     DetectOptions options;
-    if (!detectionMethodFromName(parser.value(method), &options.method))
-        return fail(
-            ExitUsage, QStringLiteral("unknown --method '%1' (auto, classic or landmarks)").arg(parser.value(method)));
+    if (const int code = parseEmotionOption(parser, emotion, &expression); code != ExitOk)
+        return code;
+    if (const int code = parseStyleOption(parser, style, &chosenStyle); code != ExitOk)
+        return code;
+    if (const int code = parseMethodOption(parser, method, &options); code != ExitOk)
+        return code;
 
     FaceInput input;
     if (const int code = loadFaceInput(parser.positionalArguments().constFirst(), options, &input); code != ExitOk)
         return code;
-    Style drawStyle = input.hasProjectStyle && !parser.isSet(style) ? input.style : chosenStyle;
-    if (!input.hasProjectStyle && !input.photo.isNull())
-        drawStyle.sampleColours(input.photo, input.face);
+    const Style drawStyle = drawingStyle(input, chosenStyle);
 
     SvgFace face(input.face, drawStyle);
     for (const QString &layer : std::as_const(input.layerPaths)) {
@@ -76,7 +65,7 @@ int runCartoon(const Command &self, const QStringList &args)
         if (!face.addLayerFile(layer, &error))
             return fail(ExitBadInput, error);
     }
-    const Pose pose = emotionPose(input.face, *expression, 1.0);
+    const Pose pose = emotionPose(input.face, expression, 1.0);
     const QByteArray svg = face.svg(pose);
     QString error;
     if (!writeFileAtomically(parser.value(output), svg, &error))

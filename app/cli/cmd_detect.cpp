@@ -31,9 +31,8 @@ int runDetect(const Command &self, const QStringList &args)
         return fail(ExitUsage, QStringLiteral("detect takes one IMAGE (usage: toonface-cli %1)").arg(self.usage));
 
     DetectOptions options;
-    if (!detectionMethodFromName(parser.value(method), &options.method))
-        return fail(
-            ExitUsage, QStringLiteral("unknown --method '%1' (auto, classic or landmarks)").arg(parser.value(method)));
+    if (const int code = parseMethodOption(parser, method, &options); code != ExitOk)
+        return code;
     if (parser.isSet(debugDir)) {
         options.debugDir = parser.value(debugDir);
         if (!QDir().mkpath(options.debugDir))

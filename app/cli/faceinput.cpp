@@ -99,4 +99,46 @@ int loadFaceInput(const QString &path, const DetectOptions &options, FaceInput *
     return ExitFailed;
 }
 
+int parseMethodOption(const QCommandLineParser &parser, const QCommandLineOption &method, DetectOptions *out)
+{
+    if (!detectionMethodFromName(parser.value(method), &out->method))
+        return fail(
+            ExitUsage, QStringLiteral("unknown --method '%1' (auto, classic or landmarks)").arg(parser.value(method)));
+    return ExitOk;
+}
+
+int parseEmotionOption(const QCommandLineParser &parser, const QCommandLineOption &emotion, Emotion *out)
+{
+    const auto expression = emotionFromName(parser.value(emotion));
+    if (!expression)
+        return fail(ExitUsage,
+            QStringLiteral("unknown --emotion '%1' (neutral, smile, sad, angry or surprise)")
+                .arg(parser.value(emotion)));
+    *out = *expression;
+    return ExitOk;
+}
+
+int parseStyleOption(const QCommandLineParser &parser, const QCommandLineOption &style, std::optional<Style> *out)
+{
+    if (!parser.isSet(style))
+        return ExitOk;
+    bool ok = false;
+    *out = Style::preset(parser.value(style), &ok);
+    if (!ok)
+        return fail(ExitUsage,
+            QStringLiteral("unknown --style '%1' (%2)")
+                .arg(parser.value(style), Style::presetNames().join(QStringLiteral(", "))));
+    return ExitOk;
+}
+
+Style drawingStyle(const FaceInput &input, const std::optional<Style> &chosen)
+{
+    if (!chosen && input.hasProjectStyle)
+        return input.style;
+    Style style = chosen.value_or(Style::preset(QStringLiteral("normal")));
+    if (!input.photo.isNull())
+        style.sampleColours(input.photo, input.face);
+    return style;
+}
+
 } // namespace toonface::cli

@@ -1,10 +1,12 @@
 #pragma once
 
 #include "detect/detector.h"
+#include "face/emotion.h"
 #include "face/facemodel.h"
 #include "face/mouthshape.h"
 #include "render/style.h"
 
+#include <QCommandLineParser>
 #include <QImage>
 #include <QString>
 #include <QStringList>
@@ -28,5 +30,16 @@ struct FaceInput
 // Reads `path` into *out. Returns ExitOk, or prints the error line and returns the exit code
 // of the contract (3 unreadable/invalid, 4 no face).
 int loadFaceInput(const QString &path, const DetectOptions &options, FaceInput *out);
+
+// Options several commands share. Each reads its option's value from `parser`; on a bad value
+// it prints the error line and returns ExitUsage, else ExitOk.
+int parseMethodOption(const QCommandLineParser &parser, const QCommandLineOption &method, DetectOptions *out);
+int parseEmotionOption(const QCommandLineParser &parser, const QCommandLineOption &emotion, Emotion *out);
+// *out stays empty when the option is not given.
+int parseStyleOption(const QCommandLineParser &parser, const QCommandLineOption &style, std::optional<Style> *out);
+
+// The style to draw `input` with: the one asked for, else the project's, else the default; a
+// style not from a project takes its colours from the photo.
+Style drawingStyle(const FaceInput &input, const std::optional<Style> &chosen);
 
 } // namespace toonface::cli
