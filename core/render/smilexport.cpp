@@ -597,8 +597,8 @@ public:
     explicit SampleTable(int width)
         : m_width(width)
     { }
+    // The row of time n, valid until the next add().
     const double *row(qint64 n) const { return m_data.constData() + qsizetype(m_rows.value(n)) * m_width; }
-    qsizetype size() const { return m_rows.size(); }
 
     // Samples the times not yet sampled, in parallel.
     bool add(QVector<qint64> times, const Sampler &sampler, const QVector<int> &which, const Grid &grid)
