@@ -24,6 +24,7 @@
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <span>
 #include <vector>
 
 namespace toonface {
@@ -596,8 +597,8 @@ public:
     explicit SampleTable(int width)
         : m_width(width)
     { }
+    // The row of time n, valid until the next add().
     const double *row(qint64 n) const { return m_data.constData() + qsizetype(m_rows.value(n)) * m_width; }
-    qsizetype size() const { return m_rows.size(); }
 
     // Samples the times not yet sampled, in parallel.
     bool add(QVector<qint64> times, const Sampler &sampler, const QVector<int> &which, const Grid &grid)
@@ -624,11 +625,12 @@ private:
     QVector<double> m_data;
 };
 
-// The samples inside a span, at a quarter, half and three quarters of it.
+// Samples inside a span and the time fractions at which they are.
 struct Checks
 {
-    std::array<const double *, 3> rows;
-    std::array<double, 3> x; // time fractions
+    int count = 0;
+    std::array<const double *, 15> rows;
+    std::array<double, 15> x;
 };
 
 // The numbers [from, to) of a group's rows, with their weights (pixels per unit).
@@ -643,7 +645,7 @@ struct Slice
 double timingError(const Timing &timing, const double *a, const double *b, const Checks &checks, const Slice &s)
 {
     double worst = 0;
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < checks.count; ++k) {
         const double p = timing.at(checks.x[k]);
         const double *c = checks.rows[k];
         for (int j = s.from; j < s.to; ++j)
@@ -657,7 +659,7 @@ double timingError(const Timing &timing, const double *a, const double *b, const
 Timing fittedTiming(const double *a, const double *b, const Checks &checks, const Slice &s)
 {
     double m11 = 0, m12 = 0, m22 = 0, r1 = 0, r2 = 0;
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < checks.count; ++k) {
         const double x = checks.x[k];
         const double b1 = 3 * x * (1 - x) * (1 - x);
         const double b2 = 3 * x * x * (1 - x);
@@ -691,12 +693,12 @@ double timingInverse(const Timing &timing, double p)
     return (lo + hi) / 2;
 }
 
-// Where to split a span that no timing fits, as a time fraction. Where the renderer clamps
-// (lips that touch, a mouth too small for teeth) its geometry bends: against the progress of
-// the span's timing, the worst number's samples lie on two lines. Splitting where they meet
-// leaves two halves that each follow the timing exactly. When the samples show the bend in
-// the first or last quarter but not where, split at that quarter; when they show no bend,
-// in the middle.
+// Where to split a span that no timing fits, as a time fraction; `checks` at its quarter,
+// half and three quarters. Where the renderer clamps (lips that touch, an eyeball reaching
+// past the lids) its geometry bends: against the progress of the span's timing, the worst
+// number's samples lie on two lines. Splitting where they meet leaves two halves that each
+// follow the timing exactly. When the samples show the bend in the first or last quarter but
+// not where, split at that quarter; when they show no bend, in the middle.
 double splitPoint(const Timing &timing, const double *a, const double *b, const Checks &checks, int j, double weight)
 {
     const double x[5] = {0, checks.x[0], checks.x[1], checks.x[2], 1};
@@ -792,6 +794,7 @@ bool buildGroup(const QVector<int> &which, const QVector<Channel> &channels, con
         int channel;
         bool ease; // the pose eases over [u0, u1] of one ease
         double u0, u1;
+        int checks = 0; // at its quarters (0), eighths (1) or sixteenths (2)
     };
     QVector<QVector<Piece>> pieces(channelCount);
     QVector<Span> pending;
@@ -807,7 +810,7 @@ bool buildGroup(const QVector<int> &which, const QVector<Channel> &channels, con
                 && std::equal(table.row(a) + starts[c], table.row(a) + starts[c + 1], table.row(b) + starts[c]))
                 pieces[c].append({a, b, {}});
             else
-                pending.append({a, b, c, ease, u0, u1});
+                pending.append({a, b, c, ease, u0, u1, ease ? 0 : 1});
         }
     }
 
@@ -818,11 +821,24 @@ bool buildGroup(const QVector<int> &which, const QVector<Channel> &channels, con
             *error = QStringLiteral("cancelled");
             return false;
         }
+        // A span over one ease is checked at its quarters: the geometry being linear in the
+        // pose between bends, its ease fits everywhere when it fits there, and a bend anywhere
+        // shows at them. Where eases overlap the motion is only smooth: such spans are checked
+        // at every eighth, and a timing fitted to them (whose two free parameters could meet
+        // the checks while missing a bend between them) at every sixteenth.
+        auto sixteenths = [](const Span &s) {
+            static constexpr int quarters[] = {4, 8, 12};
+            static constexpr int eighths[] = {2, 4, 6, 8, 10, 12, 14};
+            static constexpr int all[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
+            return s.checks == 0 ? std::span<const int>(quarters)
+                : s.checks == 1  ? std::span<const int>(eighths)
+                                 : std::span<const int>(all);
+        };
         QVector<qint64> needed;
         for (const Span &s : pending) {
-            if (s.b - s.a >= 4) {
-                for (int k = 1; k <= 3; ++k)
-                    needed.append(s.a + (s.b - s.a) * k / 4);
+            if (s.b - s.a >= 16) {
+                for (int k : sixteenths(s))
+                    needed.append(s.a + (s.b - s.a) * k / 16);
             }
         }
         if (!table.add(needed, sampler, which, grid)) {
@@ -833,53 +849,66 @@ bool buildGroup(const QVector<int> &which, const QVector<Channel> &channels, con
         QVector<qint64> splits;
         for (const Span &s : pending) {
             const Timing base = s.ease ? easeTiming(s.u0, s.u1) : Timing {};
-            if (s.b - s.a < 4) {
+            if (s.b - s.a < 16) {
                 pieces[s.channel].append({s.a, s.b, base});
                 continue;
             }
             const double *a = table.row(s.a);
             const double *b = table.row(s.b);
-            Checks checks;
-            for (int k = 0; k < 3; ++k) {
-                const qint64 n = s.a + (s.b - s.a) * (k + 1) / 4;
-                checks.rows[k] = table.row(n);
-                checks.x[k] = double(n - s.a) / double(s.b - s.a);
-            }
-            // The pose's own ease when it fits, else a fitted or a linear timing.
-            const Slice slice {starts[s.channel], starts[s.channel + 1], weights};
-            Timing best = base;
-            double bestError = timingError(base, a, b, checks, slice);
-            if (bestError > options.tolerance) {
-                for (const Timing &t : {fittedTiming(a, b, checks, slice), Timing {}}) {
-                    const double e = timingError(t, a, b, checks, slice);
-                    if (e < bestError) {
-                        best = t;
-                        bestError = e;
-                    }
+            Checks checks, quarters;
+            for (int k : sixteenths(s)) {
+                const qint64 n = s.a + (s.b - s.a) * k / 16;
+                const double x = double(n - s.a) / double(s.b - s.a);
+                checks.rows[checks.count] = table.row(n);
+                checks.x[checks.count++] = x;
+                if (k % 4 == 0) {
+                    quarters.rows[quarters.count] = table.row(n);
+                    quarters.x[quarters.count++] = x;
                 }
             }
-            if (bestError <= options.tolerance || s.b - s.a <= minSpan) {
-                pieces[s.channel].append({s.a, s.b, best});
+            // The pose's own ease (or a linear timing where eases overlap) when it fits.
+            const Slice slice {starts[s.channel], starts[s.channel + 1], weights};
+            const double baseError = timingError(base, a, b, checks, slice);
+            if (baseError <= options.tolerance) {
+                pieces[s.channel].append({s.a, s.b, base});
                 continue;
             }
-            // The number that strays most from the span's own timing shows the bend.
+            // Where eases overlap, a fitted timing (checked at every sixteenth first).
+            if (!s.ease) {
+                const Timing fitted = fittedTiming(a, b, checks, slice);
+                if (timingError(fitted, a, b, checks, slice) <= options.tolerance) {
+                    if (s.checks == 2) {
+                        pieces[s.channel].append({s.a, s.b, fitted});
+                    } else {
+                        Span closer = s;
+                        closer.checks = 2;
+                        next.append(closer);
+                    }
+                    continue;
+                }
+            }
+            if (s.b - s.a <= minSpan) {
+                pieces[s.channel].append({s.a, s.b, base});
+                continue;
+            }
+            // Split, where the number that strays most from the span's own timing bends.
             int worst = slice.from;
             double most = -1;
             for (int j = slice.from; j < slice.to; ++j) {
-                for (int k = 0; k < 3; ++k) {
+                for (int k = 0; k < quarters.count; ++k) {
                     const double d
-                        = weights[j] * std::abs(a[j] + (b[j] - a[j]) * base.at(checks.x[k]) - checks.rows[k][j]);
+                        = weights[j] * std::abs(a[j] + (b[j] - a[j]) * base.at(quarters.x[k]) - quarters.rows[k][j]);
                     if (d > most) {
                         most = d;
                         worst = j;
                     }
                 }
             }
-            const double x = splitPoint(base, a, b, checks, worst, weights[worst]);
+            const double x = splitPoint(base, a, b, quarters, worst, weights[worst]);
             const qint64 m = std::clamp(s.a + qint64(std::llround(x * double(s.b - s.a))), s.a + 1, s.b - 1);
             const double um = s.u0 + (s.u1 - s.u0) * double(m - s.a) / double(s.b - s.a);
-            next.append({s.a, m, s.channel, s.ease, s.u0, um});
-            next.append({m, s.b, s.channel, s.ease, um, s.u1});
+            next.append({s.a, m, s.channel, s.ease, s.u0, um, s.ease ? 0 : 1});
+            next.append({m, s.b, s.channel, s.ease, um, s.u1, s.ease ? 0 : 1});
             splits.append(m);
         }
         if (!table.add(splits, sampler, which, grid)) {

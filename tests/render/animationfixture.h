@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 
 namespace toonface::test {
 
@@ -54,6 +55,39 @@ inline Timeline animationTimeline(const QString &audioPath = {})
     t.addNod(6.8, 7.8);
     t.setAudio(AudioClip {audioPath, 0.0, 10.0});
     return t;
+}
+
+// A random and busy timeline of `length` seconds, the same for the same seed: cues of
+// 0.05-0.3 s of any shape with short pauses, overlapping emotion clips of any fades (none
+// included) every 4-12 s, blinks, gaze moves every 0.5-5 s, shakes and nods.
+inline Timeline busyTimeline(quint32 seed, double length)
+{
+    std::mt19937 rng(seed);
+    auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+    QVector<MouthCue> cues;
+    double t = 0.3;
+    for (int n = 1; t < length - 1; ++n) {
+        const double d = uniform(0.05, 0.3);
+        cues.append({t, t + d, kAllMouthShapes[rng() % kAllMouthShapes.size()]});
+        t += d + (n % 15 == 0 ? uniform(0.2, 1.0) : 0.0);
+    }
+    Timeline timeline;
+    timeline.addMouthCues(cues);
+    for (double s = 1; s < length - 5; s += uniform(4, 12)) {
+        const double end = s + uniform(0.3, 6);
+        timeline.addEmotionClip(
+            {s, end, kAllEmotions[1 + rng() % 4], uniform(0.3, 1), uniform(0, 0.8), uniform(0, 0.8)});
+    }
+    timeline.generateBlinks(rng(), length);
+    for (double s = 0; s < length; s += uniform(0.5, 5))
+        timeline.addGazeKey({s, {uniform(-0.1, 0.1), uniform(-0.05, 0.05)}});
+    for (double s = 2; s < length - 3; s += uniform(5, 20)) {
+        if (rng() % 2)
+            timeline.addShake(s, s + uniform(0.5, 2));
+        else
+            timeline.addNod(s, s + uniform(0.5, 2));
+    }
+    return timeline;
 }
 
 // A time at which the mouth holds a wide-open `a` (the tenth cue, held from its start until

@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <optional>
+#include <random>
 
 using namespace toonface;
 
@@ -262,6 +263,7 @@ struct Animation
     QVector<double> keyTimes;
     QVector<std::array<double, 4>> splines;
     QStringList values;
+    QVector<std::optional<RawPath>> parsed; // the values, read as path data or numbers
 };
 
 // SMIL clock values in seconds: digits, an optional fraction, "s".
@@ -303,7 +305,7 @@ QHash<const Node *, Animation> &animationCache()
     return cache;
 }
 
-const Animation &cachedAnimation(const Node &n)
+Animation &cachedAnimation(const Node &n)
 {
     auto it = animationCache().find(&n);
     if (it == animationCache().end())
@@ -364,10 +366,14 @@ QVector<double> numbersAt(const Node &e, const QString &name, double t, QString 
     for (const Node &c : e.children) {
         if (c.name != QLatin1StringView("animate") || c.attribute(QStringLiteral("attributeName")) != name)
             continue;
-        const Animation &a = cachedAnimation(c);
+        Animation &a = cachedAnimation(c);
         const Mix m = mixAt(a, t);
-        const auto from = parse(a.values[m.from]);
-        const auto to = parse(a.values[m.to]);
+        if (a.parsed.isEmpty()) {
+            for (const QString &v : a.values)
+                a.parsed.append(parse(v));
+        }
+        const auto &from = a.parsed[m.from];
+        const auto &to = a.parsed[m.to];
         // Browsers interpolate and add path data number by number, so the commands must match.
         if (!from || !to || from->commands != value->commands || to->commands != value->commands
             || from->numbers.size() != value->numbers.size() || to->numbers.size() != value->numbers.size()) {
@@ -609,39 +615,51 @@ private Q_SLOTS:
     void poseRebuiltFromSmilMatchesEvaluator_data()
     {
         QTest::addColumn<QString>("style");
+        QTest::addColumn<int>("busySeed"); // 0: the fixture's timeline
         for (const QString &s : Style::presetNames())
-            QTest::newRow(qPrintable(s)) << s;
+            QTest::newRow(qPrintable(s)) << s << 0;
+        QTest::newRow("busy 1, normal") << QStringLiteral("normal") << 1;
+        QTest::newRow("busy 2, cute") << QStringLiteral("cute") << 2;
     }
 
     void poseRebuiltFromSmilMatchesEvaluator()
     {
         QFETCH(QString, style);
+        QFETCH(int, busySeed);
         const Style s = Style::preset(style);
-        const Timeline t = timeline();
-        const Node doc = document(exported(silent(), s));
+        const Timeline t = busySeed ? test::busyTimeline(quint32(busySeed), 30.0) : timeline();
+        const Node doc = document(exported(silent(), s, t));
         const Node *head = findId(doc, QStringLiteral("head"));
         QVERIFY(head);
         const SvgFace svgFace(m_face, s);
         const TimelineEvaluator evaluator(t, m_face, m_shapes);
+        // Frame times and times between frames; for the busy timelines, random steps of
+        // 1-20 ms.
+        QVector<double> times;
+        std::mt19937 rng(busySeed);
+        for (double time = 0; time <= t.duration();) {
+            times.append(time);
+            if (busySeed)
+                time += std::uniform_real_distribution<double>(0.001, 0.02)(rng);
+            else
+                time += (times.size() % 3 == 0 ? 0.29 : 0.355) / t.frameRate();
+        }
         double worst = 0, worstHead = 0;
         QString where;
-        const int frames = t.frameCount();
-        for (int i = 0; i <= frames; ++i) {
-            for (double offset : {0.0, 0.37, 0.71}) {
-                const double time = std::min((i + offset) / t.frameRate(), t.duration());
-                const Pose pose = evaluator.evaluate(time);
-                QString here;
-                const double d = worstDistance(doc, svgFace.parts(pose), time, &here);
-                QVERIFY2(std::isfinite(d), qPrintable(here));
-                if (d > worst) {
-                    worst = d;
-                    where = here;
-                }
-                worstHead = std::max(
-                    worstHead, transformDistance(headAt(*head, time), transformOf(svgFace.headTransform(pose.head))));
+        for (double time : times) {
+            const Pose pose = evaluator.evaluate(time);
+            QString here;
+            const double d = worstDistance(doc, svgFace.parts(pose), time, &here);
+            QVERIFY2(std::isfinite(d), qPrintable(here));
+            if (d > worst) {
+                worst = d;
+                where = here;
             }
+            worstHead = std::max(
+                worstHead, transformDistance(headAt(*head, time), transformOf(svgFace.headTransform(pose.head))));
         }
-        qInfo("%s: worst distance %.3f px (%s), head %.3f px", qPrintable(style), worst, qPrintable(where), worstHead);
+        qInfo("%s: %lld times, worst distance %.3f px (%s), head %.3f px", qPrintable(style), qlonglong(times.size()),
+            worst, qPrintable(where), worstHead);
         QVERIFY2(worst <= 0.15, qPrintable(QStringLiteral("%1 px at %2").arg(worst).arg(where)));
         QVERIFY2(worstHead <= 0.15, qPrintable(QString::number(worstHead)));
     }
