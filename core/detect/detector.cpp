@@ -353,12 +353,10 @@ double logistic(double x)
     return 1.0 / (1.0 + std::exp(-x));
 }
 
-void writeDebugImages(const QString &dir, const QImage &image, const std::vector<FaceBox> &faces, int chosen,
-    const std::array<QPointF, kIbugPointCount> &ibug, const FaceModel &geometric, const FaceModel &face,
+void addLandmarkDebugImages(QMap<QString, QImage> *out, const QImage &image, const std::vector<FaceBox> &faces,
+    int chosen, const std::array<QPointF, kIbugPointCount> &ibug, const FaceModel &geometric, const FaceModel &face,
     const HairSearchReport &hair)
 {
-    if (!QDir().mkpath(dir))
-        return;
     QImage canvas = image.convertToFormat(QImage::Format_RGB32);
     QPainter p(&canvas);
     p.setRenderHint(QPainter::Antialiasing);
@@ -372,7 +370,7 @@ void writeDebugImages(const QString &dir, const QImage &image, const std::vector
     for (const QPointF &q : ibug)
         p.drawEllipse(q, unit, unit);
     p.end();
-    canvas.save(QDir(dir).filePath(QStringLiteral("detect-landmarks.png")));
+    out->insert(QStringLiteral("detect-landmarks"), canvas);
 
     // The points on a crop around the head, enlarged to about 800 px, labelled with their IDs;
     // the geometric estimates of hair and ears (before the photo search) in orange.
@@ -413,9 +411,14 @@ void writeDebugImages(const QString &dir, const QImage &image, const std::vector
         }
     }
     p.end();
-    crop.save(QDir(dir).filePath(QStringLiteral("detect-points.png")));
+    out->insert(QStringLiteral("detect-points-crop"), crop);
     if (!hair.regionMask.isNull())
-        hair.regionMask.save(QDir(dir).filePath(QStringLiteral("detect-hair-region.png")));
+        out->insert(QStringLiteral("detect-hair-region"), hair.regionMask);
+}
+
+bool wantsDebugImages(const DetectOptions &options)
+{
+    return options.keepDebugImages || !options.debugDir.isEmpty();
 }
 
 // The thesis pipeline (classic.h): one face, found by its eye pair.
@@ -425,12 +428,9 @@ DetectionResult detectWithClassic(
     DetectionResult result;
     result.method = detectionMethodName(DetectionMethod::Classic);
     report(0.0, QStringLiteral("classic"));
-    const ClassicResult c = detectClassic(image, !options.debugDir.isEmpty());
+    const ClassicResult c = detectClassic(image, wantsDebugImages(options));
     result.timingMs = c.timingMs;
-    if (!options.debugDir.isEmpty() && QDir().mkpath(options.debugDir)) {
-        for (auto it = c.debugImages.begin(); it != c.debugImages.end(); ++it)
-            it.value().save(QDir(options.debugDir).filePath(it.key() + QStringLiteral(".png")));
-    }
+    result.debugImages = c.debugImages;
     if (!c.ok) {
         result.status = DetectStatus::NoFace;
         result.error = c.error;
@@ -489,7 +489,9 @@ bool preloadLandmarkModel(QString *error, double *loadMs)
     return bool(landmarkModel(error, loadMs));
 }
 
-DetectionResult detectFace(
+namespace {
+
+DetectionResult runDetection(
     const QImage &image, const DetectOptions &options, const ProgressFn &progress, const std::atomic_bool *cancel)
 {
     DetectionResult result;
@@ -586,7 +588,7 @@ DetectionResult detectFace(
     report(0.7, QStringLiteral("hair"));
     FaceModel refined = geometric;
     HairSearchReport hair;
-    refineFromPhoto(&refined, image, &hair, !options.debugDir.isEmpty());
+    refineFromPhoto(&refined, image, &hair, wantsDebugImages(options));
     lap(QStringLiteral("hair"));
     result.timingMs.insert(QStringLiteral("total"), total.nsecsElapsed() / 1e6);
     if (cancelled())
@@ -604,12 +606,27 @@ DetectionResult detectFace(
     result.groupConfidence.insert(groupName(PointGroup::Ears), (0.25 + 0.25 * hair.earFraction) * base);
     result.groupConfidence.insert(groupName(PointGroup::Hair), (0.3 + 0.5 * hair.hairFraction) * base);
 
-    if (!options.debugDir.isEmpty())
-        writeDebugImages(options.debugDir, image, faces, chosen, ibug, geometric, refined, hair);
+    if (wantsDebugImages(options))
+        addLandmarkDebugImages(&result.debugImages, image, faces, chosen, ibug, geometric, refined, hair);
 
     result.face = refined;
     result.status = DetectStatus::Ok;
     report(1.0, QStringLiteral("done"));
+    return result;
+}
+
+} // namespace
+
+DetectionResult detectFace(
+    const QImage &image, const DetectOptions &options, const ProgressFn &progress, const std::atomic_bool *cancel)
+{
+    DetectionResult result = runDetection(image, options, progress, cancel);
+    if (!options.debugDir.isEmpty() && QDir().mkpath(options.debugDir)) {
+        for (auto it = result.debugImages.cbegin(); it != result.debugImages.cend(); ++it)
+            it.value().save(QDir(options.debugDir).filePath(it.key() + QStringLiteral(".png")));
+    }
+    if (!options.keepDebugImages)
+        result.debugImages.clear();
     return result;
 }
 

@@ -20,6 +20,7 @@ struct DetectOptions
 {
     DetectionMethod method = DetectionMethod::Auto;
     QString debugDir; // when set, intermediate images are written there as PNGs
+    bool keepDebugImages = false; // keep the intermediate images in DetectionResult::debugImages
 };
 
 // Unsupported: the requested method is not implemented in this build.
@@ -37,6 +38,10 @@ struct DetectionResult
     QRect faceBox; // the chosen face's box in image pixels
     QMap<QString, double> timingMs; // per stage, plus "total" (model loading excluded)
     QMap<QString, double> groupConfidence; // per point group name, 0..1
+    // The intermediate images of the method (the thesis' figures for "classic"), by file stem
+    // ("classic-b1", "detect-points", ...); filled when keepDebugImages or debugDir is set. Each
+    // has the photo's size unless its name ends in "-crop" (a zoomed view).
+    QMap<QString, QImage> debugImages;
 };
 
 using ProgressFn = std::function<void(double fraction, const QString &stage)>;

@@ -3,6 +3,7 @@
 #include "detect/landmarkmap.h"
 
 #include <QLineF>
+#include <QPainter>
 #include <QRectF>
 
 #include <opencv2/imgproc.hpp>
@@ -496,7 +497,14 @@ void refineFromPhoto(FaceModel *face, const QImage &image, HairSearchReport *rep
                 const double h = std::max(0.0, 1.0 - b - s);
                 mask.setPixel(x, y, qRgb(int(255 * s), int(255 * h), int(255 * b)));
             }
-        rep.regionMask = mask;
+        // Placed on a photo-sized transparent canvas so it overlays the photo.
+        QImage canvas(image.size(), QImage::Format_ARGB32_Premultiplied);
+        canvas.fill(Qt::transparent);
+        QPainter p(&canvas);
+        p.setRenderHint(QPainter::SmoothPixmapTransform);
+        p.drawImage(QRectF(ws.origin, QSizeF(mask.width(), mask.height()) / ws.scale), mask);
+        p.end();
+        rep.regionMask = canvas;
     }
 }
 

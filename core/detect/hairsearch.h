@@ -15,7 +15,7 @@ struct HairSearchReport
     double hairFraction = 0; // share of the hair points placed from the photo (0: all by rule)
     double earFraction = 0; // share of the ears placed from the photo
     std::vector<QLineF> rays; // the search rays, from where each search started to where it ended
-    QImage regionMask; // when debugging: the hair/skin/background classes as colours
+    QImage regionMask; // when debugging: the hair/skin/background classes as colours, photo-sized
 };
 
 // Refines the estimated points of a face mapped from landmarks (faceFromLandmarks68) with

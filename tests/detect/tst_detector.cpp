@@ -388,9 +388,27 @@ void TestDetector::debugImages()
     options.debugDir = dir.filePath(QStringLiteral("debug"));
     const DetectionResult r = detectFace(image, options);
     QCOMPARE(r.status, DetectStatus::Ok);
-    for (const char *name : {"detect-landmarks.png", "detect-points.png", "detect-hair-region.png"}) {
-        const QImage png(QDir(options.debugDir).filePath(QLatin1String(name)));
-        QVERIFY2(!png.isNull(), name);
+    QVERIFY(r.debugImages.isEmpty()); // written, not kept
+    const QStringList names {
+        QStringLiteral("detect-landmarks"), QStringLiteral("detect-points-crop"), QStringLiteral("detect-hair-region")};
+    for (const QString &name : names) {
+        const QImage png(QDir(options.debugDir).filePath(name + QStringLiteral(".png")));
+        QVERIFY2(!png.isNull(), qPrintable(name));
+    }
+
+    // Kept in memory for the editor's overlays, photo-sized except the zoomed crop.
+    DetectOptions keep;
+    keep.keepDebugImages = true;
+    const DetectionResult k = detectFace(image, keep);
+    QCOMPARE(k.status, DetectStatus::Ok);
+    QCOMPARE(k.debugImages.keys(), [&] {
+        QStringList sorted = names;
+        sorted.sort();
+        return sorted;
+    }());
+    for (auto it = k.debugImages.cbegin(); it != k.debugImages.cend(); ++it) {
+        if (!it.key().endsWith(QStringLiteral("-crop")))
+            QCOMPARE(it.value().size(), image.size());
     }
 }
 
