@@ -7,6 +7,8 @@
 #include "render/smilexport.h"
 #include "render/svgface.h"
 
+#include <QDir>
+#include <QFile>
 #include <QRegularExpression>
 
 #include <random>
@@ -102,6 +104,13 @@ QJsonObject benchExport(bool fast)
 
     QByteArray smil;
     const double smilMs = bench::medianMs([&] { smil = exportSmilSvg(face, style, timeline, shapes, options); }, 3, 0);
+    // TOONFACE_BENCH_OUT=DIR keeps the file for a look at what it holds.
+    if (const QString dir = qEnvironmentVariable("TOONFACE_BENCH_OUT"); !dir.isEmpty()) {
+        QFile out(
+            QDir(dir).filePath(fast ? QStringLiteral("ten-minutes-fast.svg") : QStringLiteral("ten-minutes.svg")));
+        if (out.open(QIODevice::WriteOnly))
+            out.write(smil);
+    }
     // What the bytes are spent on.
     qsizetype keys = 0, animations = 0, keyTimesBytes = 0, keySplinesBytes = 0, valuesBytes = 0;
     static const QRegularExpression attribute(QStringLiteral("(keyTimes|keySplines|values)=\"([^\"]*)\""));

@@ -31,66 +31,108 @@ QByteArray exportHtmlPlayer(const FaceModel &face, const Style &style, const Tim
           "body { margin: 0; background: #eee; font-family: sans-serif; }\n"
           "#tf-stage { display: flex; flex-direction: column; align-items: center; gap: 8px; padding: 8px; }\n"
           "#tf-stage > svg { display: block; width: auto; height: calc(100vh - 80px); max-width: 100%; "
-          "background: #fff; }\n"
+          "background: #fff; cursor: pointer; }\n"
           "#tf-controls { display: flex; gap: 8px; align-items: center; width: min(100%, 640px); }\n"
-          "#tf-controls > audio, #tf-seek { flex: 1; }\n"
+          "#tf-toggle { min-width: 5em; }\n"
+          "#tf-seek { flex: 1; }\n"
+          "#tf-time { font-variant-numeric: tabular-nums; white-space: nowrap; }\n"
           "</style>\n</head>\n<body>\n<div id=\"tf-stage\">\n";
     out += e->svg;
-    out += "<div id=\"tf-controls\">";
-    if (!e->audioUri.isEmpty()) {
-        out += "<audio id=\"tf-audio\" controls preload=\"auto\" src=\"" + escaped(e->audioUri) + "\"></audio>";
-    } else {
-        out += "<button id=\"tf-toggle\" type=\"button\">Play</button>"
-               "<input id=\"tf-seek\" type=\"range\" min=\"0\" step=\"0.01\" value=\"0\" max=\""
-            + decimal(e->duration) + "\">";
-    }
+    out += "<div id=\"tf-controls\"><button id=\"tf-toggle\" type=\"button\">Play</button>"
+           "<input id=\"tf-seek\" type=\"range\" min=\"0\" step=\"0.01\" value=\"0\" aria-label=\"Position\" max=\""
+        + decimal(e->duration) + "\"><span id=\"tf-time\"></span>";
+    if (!e->audioUri.isEmpty())
+        out += "<audio id=\"tf-audio\" preload=\"auto\" src=\"" + escaped(e->audioUri) + "\"></audio>";
     out += "</div>\n</div>\n<script>\n(function () {\n  var offset = " + decimal(e->audioOffset)
-        + ";\n  var length = " + decimal(e->duration) + ";\n";
+        + ";\n  var clip = " + decimal(e->audioDuration) + ";\n  var length = " + decimal(e->duration) + ";\n";
     out += R"(  var svg = document.querySelector('#tf-stage > svg');
   var audio = document.getElementById('tf-audio');
-  svg.pauseAnimations();
-  svg.setCurrentTime(0);
-  if (audio) {
-    // The audio clock leads: the animation follows it on play, pause and seek, and is put back
-    // whenever it drifts more than a frame (lip sync shows from about 45 ms).
-    var lock = function () {
-      var t = audio.currentTime + offset;
-      if (Math.abs(svg.getCurrentTime() - t) > 0.04) svg.setCurrentTime(t);
-    };
-    var tick = function () {
-      if (audio.paused) return;
-      lock();
-      requestAnimationFrame(tick);
-    };
-    audio.addEventListener('play', function () { lock(); svg.unpauseAnimations(); requestAnimationFrame(tick); });
-    audio.addEventListener('pause', function () { svg.pauseAnimations(); lock(); });
-    // An animation longer than its sound plays on to its end.
-    audio.addEventListener('ended', function () { if (length > audio.currentTime + offset) svg.unpauseAnimations(); });
-    ['seeking', 'seeked', 'timeupdate', 'loadedmetadata'].forEach(function (e) { audio.addEventListener(e, lock); });
-    return;
-  }
   var toggle = document.getElementById('tf-toggle');
   var seek = document.getElementById('tf-seek');
+  var clock = document.getElementById('tf-time');
   var playing = false;
-  var show = function () { seek.value = svg.getCurrentTime(); toggle.textContent = playing ? 'Pause' : 'Play'; };
-  var tick = function () {
+  function format(t) {
+    var m = Math.floor(t / 60), s = t - 60 * m;
+    return m + ':' + (s < 10 ? '0' : '') + s.toFixed(1);
+  }
+  // Chromium applies setCurrentTime() on a paused document at its next frame: callers that
+  // have just set the time pass it on.
+  function now(t) { return t === undefined ? svg.getCurrentTime() : t; }
+  function show(t) {
+    t = Math.min(Math.max(now(t), 0), length);
+    seek.value = t;
+    clock.textContent = format(t) + ' / ' + format(length);
+    toggle.textContent = playing ? 'Pause' : 'Play';
+  }
+  // The sound covers [offset, offset + clip) of the animation (less if the file is shorter).
+  function audible(t) {
+    return audio && t >= offset && t - offset < Math.min(clip || Infinity, audio.duration || Infinity);
+  }
+  // While both play, the audio leads; otherwise the sound waits where the animation is.
+  function follow(t) {
+    if (!audio) return;
+    t = now(t);
+    if (playing && audible(t)) {
+      if (audio.paused) {
+        audio.currentTime = t - offset;
+        var started = audio.play();
+        if (started && started.catch) started.catch(function () { pause(); });
+      } else if (Math.abs(audio.currentTime + offset - t) > 0.04) {
+        svg.setCurrentTime(audio.currentTime + offset);
+      }
+    } else {
+      if (!audio.paused) audio.pause();
+      var at = Math.max(0, t - offset);
+      if (Math.abs(audio.currentTime - at) > 0.01) audio.currentTime = at;
+    }
+  }
+  function tick() {
     if (!playing) return;
-    if (svg.getCurrentTime() >= length) { playing = false; svg.pauseAnimations(); }
+    if (svg.getCurrentTime() >= length) {
+      svg.setCurrentTime(length);
+      pause();
+      return;
+    }
+    follow();
     show();
     requestAnimationFrame(tick);
-  };
-  toggle.addEventListener('click', function () {
-    playing = !playing;
-    if (playing) {
-      if (svg.getCurrentTime() >= length) svg.setCurrentTime(0);
-      svg.unpauseAnimations();
-      requestAnimationFrame(tick);
-    } else {
-      svg.pauseAnimations();
-    }
+  }
+  function play() {
+    var t = svg.getCurrentTime();
+    if (t >= length) svg.setCurrentTime(t = 0);
+    playing = true;
+    svg.unpauseAnimations();
+    follow(t);
+    show(t);
+    requestAnimationFrame(tick);
+  }
+  function pause() {
+    playing = false;
+    svg.pauseAnimations();
+    follow();
     show();
+  }
+  function seekTo(t) {
+    t = Math.min(Math.max(t, 0), length);
+    svg.setCurrentTime(t);
+    if (audio && playing && !audio.paused) audio.pause(); // follow() restarts it at the new place
+    follow(t);
+    show(t);
+  }
+  svg.pauseAnimations();
+  svg.setCurrentTime(0);
+  toggle.addEventListener('click', function () { if (playing) pause(); else play(); });
+  svg.addEventListener('click', function () { if (playing) pause(); else play(); });
+  seek.addEventListener('input', function () { seekTo(parseFloat(seek.value)); });
+  document.addEventListener('keydown', function (e) {
+    if (e.target === seek && e.key !== ' ') return; // the slider steps on its own
+    if (e.key === ' ') { e.preventDefault(); if (playing) pause(); else play(); }
+    else if (e.key === 'ArrowLeft') seekTo(svg.getCurrentTime() - 1);
+    else if (e.key === 'ArrowRight') seekTo(svg.getCurrentTime() + 1);
   });
-  seek.addEventListener('input', function () { svg.setCurrentTime(parseFloat(seek.value)); });
+  if (audio) audio.addEventListener('loadedmetadata', function () { follow(); show(); });
+  window.toonfacePlayer = { play: play, pause: pause, seek: seekTo, time: function () { return svg.getCurrentTime(); } };
+  show();
 })();
 </script>
 </body>

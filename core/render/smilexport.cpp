@@ -1667,6 +1667,7 @@ std::optional<SmilElement> exportSmilElement(const FaceModel &face, const Style 
     }
     e.audioUri = p->audio.uri;
     e.audioOffset = p->audio.offset;
+    e.audioDuration = p->audio.duration;
     e.duration = p->evaluator.duration();
     report(options, 1.0);
     return e;

@@ -95,6 +95,7 @@ struct SmilElement
     QByteArray svg;
     QByteArray audioUri; // a data: URI or a relative reference; empty when silent
     double audioOffset = 0; // the sound's start in the animation, seconds
+    double audioDuration = 0; // how much of the sound plays, seconds
     double duration = 0; // of the animation, seconds
 };
 std::optional<SmilElement> exportSmilElement(const FaceModel &face, const Style &style, const Timeline &timeline,

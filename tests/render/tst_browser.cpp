@@ -13,6 +13,7 @@
 #include <QFile>
 #include <QImage>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -272,7 +273,7 @@ private Q_SLOTS:
         QVERIFY(elsewhere <= 4.0);
     }
 
-    // The HTML player: seeking its audio element moves the animation to the audio's time.
+    // The HTML player: dragging its seek bar moves the animation, and the sound with it.
     void htmlPlayerFollowsSeeks()
     {
         AnimationExportOptions options;
@@ -281,16 +282,12 @@ private Q_SLOTS:
         QByteArray html = exportHtmlPlayer(m_face, Style(), m_timeline, m_shapes, options, &error);
         QVERIFY2(!html.isEmpty(), qPrintable(error));
         const double seekTo = test::openVowelTime();
-        // After the page loads, seek the audio as a user dragging its slider would; the
-        // player's own listeners must carry the animation there. Only the drawing is shown,
-        // at the cell size.
+        // After the page loads, move the seek bar as a user dragging it would; the player's own
+        // listeners must carry the animation there. Only the drawing is shown, at the cell size.
         const QByteArray cell = QByteArray::number(kCell) + "px";
         const QByteArray probe = "<style>#tf-controls{display:none}#tf-stage{display:block;padding:0}"
                                  "html,body{overflow:hidden}#tf-stage>svg{width:"
-            + cell + ";height:" + cell
-            + "}</style><script>window.addEventListener('load', function () {"
-              "document.getElementById('tf-audio').currentTime = "
-            + QByteArray::number(seekTo, 'g', 10) + ";});</script>";
+            + cell + ";height:" + cell + "}</style>" + seekScript(seekTo, false);
         html.replace("</body>", probe + "</body>");
         const QImage shot = screenshot(html, QSize(kCell, kCell), QStringLiteral("player"),
             {QStringLiteral("--virtual-time-budget=3000"),
@@ -306,6 +303,91 @@ private Q_SLOTS:
             "player after seeking to %.3f s: mouth box vs Qt at that time %.2f, at 0 s %.2f", seekTo, atSeek, atStart);
         QVERIFY2(atSeek <= 4.0, qPrintable(QString::number(atSeek)));
         QVERIFY(atStart > 4.0);
+    }
+
+    // A sound that starts after a lead-in: seeking into the lead-in keeps the sound at its start
+    // and silent; seeking past it puts the sound at the animation time less the offset. The
+    // player's state is read back from the page's DOM.
+    void htmlPlayerWithLeadIn_data()
+    {
+        QTest::addColumn<double>("seekTo");
+        QTest::addColumn<double>("audioTime");
+        constexpr double offset = 0.8;
+        QTest::newRow("lead-in") << 0.4 << 0.0;
+        QTest::newRow("speech") << test::openVowelTime() << test::openVowelTime() - offset;
+        QTest::newRow("late") << 7.5 << 7.5 - offset;
+    }
+    void htmlPlayerWithLeadIn()
+    {
+        QFETCH(double, seekTo);
+        QFETCH(double, audioTime);
+        Timeline timeline = m_timeline;
+        timeline.setAudio(AudioClip {m_dir.filePath(QStringLiteral("voice.wav")), 0.8, 9.2});
+        AnimationExportOptions options;
+        options.audio = ExportAudio::Embed;
+        QString error;
+        QByteArray html = exportHtmlPlayer(m_face, Style(), timeline, m_shapes, options, &error);
+        QVERIFY2(!html.isEmpty(), qPrintable(error));
+        html.replace("</body>", seekScript(seekTo, true) + "</body>");
+        const QByteArray dom = dumpDom(html, QStringLiteral("lead-in"));
+        if (dom.isEmpty() && !m_startFailure.isEmpty())
+            QSKIP(qPrintable(QStringLiteral("Chromium cannot start: %1").arg(m_startFailure)));
+        static const QRegularExpression state(
+            QStringLiteral("data-svg-time=\"([^\"]*)\" data-audio-time=\"([^\"]*)\" data-audio-paused=\"([^\"]*)\""));
+        const auto m = state.match(QString::fromUtf8(dom));
+        QVERIFY2(m.hasMatch(), dom.right(600).constData());
+        qInfo("seek to %.3f s: animation at %s s, sound at %s s, paused %s", seekTo, qPrintable(m.captured(1)),
+            qPrintable(m.captured(2)), qPrintable(m.captured(3)));
+        QVERIFY(std::abs(m.captured(1).toDouble() - seekTo) < 0.02);
+        QVERIFY(std::abs(m.captured(2).toDouble() - audioTime) < 0.02);
+        QCOMPARE(m.captured(3), QStringLiteral("true"));
+    }
+
+private:
+    // A script for the page's end: once it has loaded, move the seek bar to `t` as a user would
+    // (an input event) and, when `record`, write the player's state to <body>'s attributes a
+    // moment later.
+    static QByteArray seekScript(double t, bool record)
+    {
+        QByteArray js = "<script>window.addEventListener('load', function () {"
+                        "var seek = document.getElementById('tf-seek'); seek.value = "
+            + QByteArray::number(t, 'g', 10) + "; seek.dispatchEvent(new Event('input'));";
+        if (record) {
+            js += "setTimeout(function () { var a = document.getElementById('tf-audio'); "
+                  "var svg = document.querySelector('#tf-stage > svg'); "
+                  "document.body.setAttribute('data-svg-time', svg.getCurrentTime()); "
+                  "document.body.setAttribute('data-audio-time', a.currentTime); "
+                  "document.body.setAttribute('data-audio-paused', a.paused); }, 500);";
+        }
+        return js + "});</script>";
+    }
+
+    // The page's DOM after it has run for a while (Chromium's --dump-dom).
+    QByteArray dumpDom(const QByteArray &html, const QString &name)
+    {
+        const QString page = m_dir.filePath(name + QStringLiteral(".html"));
+        QFile f(page);
+        if (!f.open(QIODevice::WriteOnly) || f.write(html) != html.size())
+            return {};
+        f.close();
+        QTemporaryDir profile;
+        QProcess chromium;
+        chromium.start(m_chromium,
+            {QStringLiteral("--headless"), QStringLiteral("--no-sandbox"), QStringLiteral("--disable-gpu"),
+                QStringLiteral("--no-first-run"), QStringLiteral("--disable-background-networking"),
+                QStringLiteral("--disable-component-update"), QStringLiteral("--disable-sync"),
+                QStringLiteral("--user-data-dir=") + profile.path(), QStringLiteral("--virtual-time-budget=3000"),
+                QStringLiteral("--dump-dom"), QUrl::fromLocalFile(page).toString()});
+        if (!chromium.waitForStarted(20000)) {
+            m_startFailure = chromium.errorString();
+            return {};
+        }
+        if (!chromium.waitForFinished(90000)) {
+            chromium.kill();
+            chromium.waitForFinished();
+            return {};
+        }
+        return chromium.readAllStandardOutput();
     }
 };
 
