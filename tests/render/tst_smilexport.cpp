@@ -943,19 +943,18 @@ private Q_SLOTS:
         QVERIFY(all(svg, "animate").size() > 10);
         QVERIFY(all(svg, "script").isEmpty());
         QVERIFY(!findId(svg, QStringLiteral("tf-play")));
-        // Its clock follows the audio element's: paused with it, set when seeking, corrected
-        // on every animation frame.
-        for (const char *needle : {"pauseAnimations", "unpauseAnimations", "setCurrentTime", "requestAnimationFrame"})
+        // Its own controls in every case; the clock paused, set when seeking, corrected on
+        // every animation frame (the browser test plays with them).
+        for (const char *needle : {"pauseAnimations", "unpauseAnimations", "setCurrentTime", "requestAnimationFrame",
+                 "id=\"tf-toggle\"", "id=\"tf-seek\"", "id=\"tf-time\""})
             QVERIFY2(html.contains(needle), needle);
         if (ExportAudio(audio) == ExportAudio::None) {
             QVERIFY(!html.contains("<audio"));
-            QVERIFY(html.contains("id=\"tf-toggle\""));
-            QVERIFY(html.contains("id=\"tf-seek\""));
             return;
         }
-        QVERIFY(html.contains("<audio id=\"tf-audio\" controls"));
-        for (const char *needle : {"'seeked'", "'pause'", "'play'", "currentTime"})
-            QVERIFY2(html.contains(needle), needle);
+        // The sound is hidden: the player's controls drive it.
+        QVERIFY(html.contains("<audio id=\"tf-audio\" preload=\"auto\" src="));
+        QVERIFY(!html.contains("controls src"));
         if (ExportAudio(audio) == ExportAudio::Embed)
             QVERIFY(html.contains("src=\"data:audio/wav;base64,"));
         else
