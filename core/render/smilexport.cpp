@@ -8,6 +8,8 @@
 #include "face/mouthshape.h"
 #include "face/pose.h"
 #include "render/svgface.h"
+#include "render/videoencoder.h"
+#include "speech/audio.h"
 
 #include <QDir>
 #include <QFile>
@@ -15,6 +17,7 @@
 #include <QHash>
 #include <QMap>
 #include <QMimeDatabase>
+#include <QTemporaryDir>
 #include <QUrl>
 #include <QXmlStreamReader>
 #include <QtConcurrent/QtConcurrentMap>
@@ -1181,6 +1184,33 @@ QByteArray audioMimeType(const QString &path)
     return QMimeDatabase().mimeTypeForFile(path).name().toLatin1();
 }
 
+// The sound of `path` as AAC in MP4 when it is stored uncompressed or losslessly; false (and
+// the file is embedded as it is) for compressed sound or a file FFmpeg cannot read (the
+// browser may still play it).
+bool compressedAudio(const QString &path, QByteArray *bytes)
+{
+    QString why;
+    const std::optional<MediaInfo> info = probeMedia(path, &why);
+    if (!info || !info->hasAudio)
+        return false;
+    static const QStringList lossless = {QStringLiteral("flac"), QStringLiteral("alac"), QStringLiteral("wavpack"),
+        QStringLiteral("ape"), QStringLiteral("tta")};
+    if (!info->audioCodec.startsWith(QLatin1StringView("pcm_")) && !lossless.contains(info->audioCodec))
+        return false;
+    // Speech keeps its sound below 16 kHz: 32 kHz sampling is enough, lower rates stay as they are.
+    const int rate = std::min(info->audioSampleRate > 0 ? info->audioSampleRate : 32000, 32000);
+    const std::optional<QVector<float>> samples = readAudio(path, rate, &why);
+    QTemporaryDir dir;
+    if (!samples || !dir.isValid())
+        return false;
+    const QString m4a = dir.filePath(QStringLiteral("sound.m4a"));
+    QFile file(m4a);
+    if (!writeAudio(m4a, Audio {*samples, rate}, &why) || !file.open(QIODevice::ReadOnly))
+        return false;
+    *bytes = file.readAll();
+    return !bytes->isEmpty();
+}
+
 bool resolveAudio(
     const Timeline &timeline, double duration, const AnimationExportOptions &options, AudioSource *out, QString *error)
 {
@@ -1203,7 +1233,11 @@ bool resolveAudio(
             *error = QStringLiteral("cannot read the audio file %1: %2").arg(path, file.errorString());
             return false;
         }
-        out->uri = "data:" + audioMimeType(path) + ";base64," + file.readAll().toBase64();
+        QByteArray aac;
+        if (options.compressAudio && compressedAudio(path, &aac))
+            out->uri = "data:audio/mp4;base64," + aac.toBase64();
+        else
+            out->uri = "data:" + audioMimeType(path) + ";base64," + file.readAll().toBase64();
         return true;
     }
     if (!info.isFile()) {

@@ -401,8 +401,11 @@ bool writeAudio(const QString &path, const Audio &audio, QString *error)
     for (int at = 0; at < total; at += frameSize) {
         const int n = std::min(frameSize, total - at);
         av_frame_unref(frame.get());
-        // Encoders with a fixed frame size want full frames: the last one is padded with silence.
-        const int frameSamples = (codec->capabilities & AV_CODEC_CAP_VARIABLE_FRAME_SIZE) ? n : frameSize;
+        // Encoders with a fixed frame size want full frames: the last one is padded with silence
+        // unless the encoder takes a short last frame (then the file keeps its exact length).
+        const int frameSamples
+            = (codec->capabilities & (AV_CODEC_CAP_VARIABLE_FRAME_SIZE | AV_CODEC_CAP_SMALL_LAST_FRAME)) ? n
+                                                                                                         : frameSize;
         frame->nb_samples = frameSamples;
         frame->format = enc->sample_fmt;
         frame->sample_rate = rate;
