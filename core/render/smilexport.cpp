@@ -851,7 +851,7 @@ bool buildGroup(const QVector<int> &which, const QVector<Channel> &channels, con
         QVector<Span> next;
         QVector<qint64> splits;
         for (const Span &s : pending) {
-            const Timing base = s.ease ? easeTiming(s.u0, s.u1) : Timing {};
+            Timing base = s.ease ? easeTiming(s.u0, s.u1) : Timing {};
             if (s.b - s.a < 16) {
                 pieces[s.channel].append({s.a, s.b, base});
                 continue;
@@ -871,7 +871,17 @@ bool buildGroup(const QVector<int> &which, const QVector<Channel> &channels, con
             }
             // The pose's own ease (or a linear timing where eases overlap) when it fits.
             const Slice slice {starts[s.channel], starts[s.channel + 1], weights};
-            const double baseError = timingError(base, a, b, checks, slice);
+            double baseError = timingError(base, a, b, checks, slice);
+            // The grid trims or stretches an ease by a fraction of a step; the whole ease's
+            // spline (written shorter) is taken when it fits as well.
+            if (s.ease && (s.u0 != 0.0 || s.u1 != 1.0)) {
+                const Timing whole = easeTiming(0.0, 1.0);
+                const double wholeError = timingError(whole, a, b, checks, slice);
+                if (wholeError <= std::max(baseError, 0.5 * options.tolerance)) {
+                    base = whole;
+                    baseError = wholeError;
+                }
+            }
             if (baseError <= options.tolerance) {
                 pieces[s.channel].append({s.a, s.b, base});
                 continue;
@@ -1660,6 +1670,9 @@ std::optional<Prepared> prepare(const FaceModel &face, const Style &style, const
     const MouthShapeSet &shapes, const AnimationExportOptions &options, QString *error)
 {
     Prepared p {TimelineEvaluator(timeline, face, shapes), {SvgFace(face, style), {}, {}, {}}, {}};
+    // Browsers clip the eyeballs by the eye outline: the skin covers for renderers that cannot
+    // (SvgFace) would only add two animated paths. The frame mode is for old players: it keeps them.
+    p.drawing.svg.setEyeCovers(options.mode == AnimationExportOptions::Mode::Frames);
     if (!prepareDrawing(timeline, shapes, p.evaluator, options, &p.drawing, error)
         || !resolveAudio(timeline, p.evaluator.duration(), options, &p.audio, error))
         return std::nullopt;

@@ -58,7 +58,8 @@ struct AnimationExportOptions
 
 // The timeline on `face` as one self-contained SVG 1.1 document that plays in a browser.
 //
-// Smil mode: the document SvgFace::svg() writes for the pose at time 0, unchanged but for
+// Smil mode: the document SvgFace::svg() writes for the pose at time 0 without the eye covers
+// (a browser clips the eyeballs), unchanged but for
 // - an <animate additive="sum"> child on every geometry attribute that moves ("d" of paths,
 //   "cx"/"cy" of circles, "points" of polylines), whose values are offsets from the attribute
 //   as written (path data with the same commands), so numbers that never move are 0;

@@ -507,7 +507,7 @@ void makeMouth(const Pt &P, std::vector<Part> *out)
     out->push_back({"mouth-lower-lip", true, "path", {{"d", lower.data()}}, "lips"});
 }
 
-void makeEye(const Pt &P, const SvgFaceGeometry &g, bool left, std::vector<Part> *out)
+void makeEye(const Pt &P, const SvgFaceGeometry &g, bool left, bool cover, std::vector<Part> *out)
 {
     const QPointF a = P(left ? "3.12" : "3.11");
     const QPointF upperLid = P(left ? "3.2" : "3.1");
@@ -536,14 +536,15 @@ void makeEye(const Pt &P, const SvgFaceGeometry &g, bool left, std::vector<Part>
     // (QSvgRenderer before Qt 6.7) would show them outside the lids, so skin covers
     // everything around the opening that the eyeball could reach: a box holding the eye and
     // the eyeball, minus the eye outline (even-odd).
-    QRectF box = bezierBounds(upper).united(bezierBounds(lower));
-    box = box.united(QRectF(ball.x() - r, ball.y() - r, 2 * r, 2 * r));
-    box.adjust(-g.unit, -g.unit, g.unit, g.unit);
-    PathData cover;
-    cover.moveTo(box.topLeft()).horizontalTo(box.right()).verticalTo(box.bottom()).horizontalTo(box.left()).close();
-    QByteArray coverData = cover.data() + eye;
-    out->push_back({left ? "eye-left-cover" : "eye-right-cover", true, "path",
-        {{"d", coverData}, {"fill-rule", QByteArrayLiteral("evenodd")}}, "face", FillOnly});
+    if (cover) {
+        QRectF box = bezierBounds(upper).united(bezierBounds(lower));
+        box = box.united(QRectF(ball.x() - r, ball.y() - r, 2 * r, 2 * r));
+        box.adjust(-g.unit, -g.unit, g.unit, g.unit);
+        PathData skin;
+        skin.moveTo(box.topLeft()).horizontalTo(box.right()).verticalTo(box.bottom()).horizontalTo(box.left()).close();
+        out->push_back({left ? "eye-left-cover" : "eye-right-cover", true, "path",
+            {{"d", skin.data() + eye}, {"fill-rule", QByteArrayLiteral("evenodd")}}, "face", FillOnly});
+    }
     out->push_back({left ? "eye-left-line" : "eye-right-line", true, "path", {{"d", eye}}, "eyes", StrokeOnly});
 }
 
@@ -697,8 +698,8 @@ SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
 }
 
 // The parts in drawing order; only those that depend on the pose unless `withStatic`.
-std::vector<Part> buildParts(
-    const SvgFaceGeometry &g, const FaceModel &face, const Style &style, const Pose &pose, bool withStatic = true)
+std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, const Style &style, const Pose &pose,
+    bool eyeCovers, bool withStatic = true)
 {
     Points posed = posedPoints(face, pose);
     applyStyleRules(posed, g, style);
@@ -712,8 +713,8 @@ std::vector<Part> buildParts(
     if (componentStyle(style.components, "jaw").visible)
         parts.push_back(makeJaw(P, g));
     makeMouth(P, &parts);
-    makeEye(P, g, true, &parts);
-    makeEye(P, g, false, &parts);
+    makeEye(P, g, true, eyeCovers, &parts);
+    makeEye(P, g, false, eyeCovers, &parts);
     std::erase_if(parts, [&](const Part &p) { return !componentStyle(style.components, p.styleKey).visible; });
     return parts;
 }
@@ -801,7 +802,7 @@ void SvgFace::addLayer(const QByteArray &svgContent)
 QVector<FacePart> SvgFace::parts(const Pose &pose) const
 {
     const SvgFaceGeometry &g = m_geometry->g;
-    const std::vector<Part> posed = buildParts(g, m_face, m_style, pose, false);
+    const std::vector<Part> posed = buildParts(g, m_face, m_style, pose, m_eyeCovers, false);
     QVector<FacePart> out = m_geometry->staticParts;
     out.reserve(out.size() + qsizetype(posed.size()));
     for (const Part &p : posed)
@@ -817,7 +818,7 @@ QString SvgFace::headTransform(const HeadPose &head) const
 QByteArray SvgFace::svg(const Pose &pose) const
 {
     const SvgFaceGeometry &g = m_geometry->g;
-    const std::vector<Part> parts = buildParts(g, m_face, m_style, pose);
+    const std::vector<Part> parts = buildParts(g, m_face, m_style, pose, m_eyeCovers);
     // Without a photo (a face placed by hand), the frame holds the points with equal margins.
     QSize size = m_face.imageSize();
     if (!size.isValid() || size.isEmpty()) {

@@ -54,6 +54,11 @@ public:
     // of the form "translate(x,y) rotate(a) scale(s) translate(-cx,-cy)".
     QString headTransform(const HeadPose &head) const;
 
+    // The eye covers above are on by default; a drawing meant only for renderers that clip
+    // (a browser) leaves them out.
+    void setEyeCovers(bool on) { m_eyeCovers = on; }
+    bool eyeCovers() const { return m_eyeCovers; }
+
     const FaceModel &face() const { return m_face; }
     const Style &style() const { return m_style; }
 
@@ -64,6 +69,7 @@ private:
     Style m_style;
     std::shared_ptr<const Geometry> m_geometry;
     QVector<QByteArray> m_layers;
+    bool m_eyeCovers = true;
 };
 
 // Renders SVG content to an image of `size` (aspect kept, centred, transparent outside)

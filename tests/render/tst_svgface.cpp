@@ -437,6 +437,29 @@ private Q_SLOTS:
         }
     }
 
+    // The skin covers stand in for clipping in renderers without it; without them the drawing
+    // is the same but for the two covers.
+    void eyeCoversCanBeLeftOut()
+    {
+        SvgFace svgFace(testFace(), preset("normal"));
+        const Pose pose = mouthPose(testFace(), MouthShapeSet(), MouthShape::O);
+        QVERIFY(svgFace.eyeCovers());
+        const QVector<FacePart> with = svgFace.parts(pose);
+        svgFace.setEyeCovers(false);
+        const QVector<FacePart> without = svgFace.parts(pose);
+        QStringList removed;
+        for (const FacePart &p : with) {
+            if (std::none_of(without.cbegin(), without.cend(), [&](const FacePart &q) { return q.id == p.id; }))
+                removed.append(p.id);
+        }
+        QCOMPARE(removed, (QStringList {QStringLiteral("eye-left-cover"), QStringLiteral("eye-right-cover")}));
+        QCOMPARE(without.size(), with.size() - 2);
+        const Node root = parsed(svgFace.svg(pose));
+        QVERIFY(!findId(root, QStringLiteral("eye-left-cover")));
+        QVERIFY(findId(root, QStringLiteral("clip-eye-left")));
+        QVERIFY(findId(root, QStringLiteral("eye-left-line")));
+    }
+
     void mouthPoseMovesOnlyTheDynamicLayer()
     {
         const FaceModel face = testFace();
