@@ -13,6 +13,7 @@
 #include <QDir>
 #include <QFileInfo>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 
@@ -40,19 +41,21 @@ bool outputKind(const QString &path, OutputKind *kind)
     return false;
 }
 
-// The longer side of exported video frames: the photo's, within what encoders and players like.
-QSize videoSize(QSize photo)
+// Exported video frames show the drawing's frame with its longer side at its own size, kept
+// within 512-1280 pixels (the drawing is vector: a small head is drawn larger, not blurred) and
+// even, as encoders want.
+QSize videoSize(QSizeF frame)
 {
-    const QSize base = photo.isValid() ? photo : QSize(512, 512);
-    QSize s = base.scaled(std::min(std::max(base.width(), base.height()), 1280),
-        std::min(std::max(base.width(), base.height()), 1280), Qt::KeepAspectRatio);
-    return QSize(s.width() & ~1, s.height() & ~1);
+    const QSizeF base = frame.isEmpty() ? QSizeF(512, 512) : frame;
+    const double side = std::clamp(std::max(base.width(), base.height()), 512.0, 1280.0);
+    const QSize s = base.scaled(side, side, Qt::KeepAspectRatio).toSize();
+    return QSize(std::max(2, s.width() & ~1), std::max(2, s.height() & ~1));
 }
 
 int writeVideoOutput(const QString &path, OutputKind kind, const SvgFace &face, const Timeline &timeline,
     const MouthShapeSet &shapes, const QString &audioPath)
 {
-    const QSize size = videoSize(face.face().imageSize());
+    const QSize size = videoSize(face.frame().size());
     const FrameRenderer renderer(face, timeline, shapes, size);
     const VideoFormat format = kind == OutputKind::Mp4 ? VideoFormat::Mp4
         : kind == OutputKind::Gif                      ? VideoFormat::Gif
@@ -116,7 +119,8 @@ int runAnimate(const Command &self, const QStringList &args)
         QStringLiteral("OUT.toonface"));
     const QCommandLineOption output(QStringList {QStringLiteral("o"), QStringLiteral("output")},
         QStringLiteral("OUT.svg, OUT.html, OUT.mp4, OUT.gif, or DIR/ for PNG frames."), QStringLiteral("OUT"));
-    parser.addOptions({audio, script, say, video, lang, emotion, noBlink, fps, style, projectOut, output});
+    const QCommandLineOption frame = frameOption();
+    parser.addOptions({audio, script, say, video, lang, emotion, noBlink, fps, style, frame, projectOut, output});
     parser.addPositionalArgument(QStringLiteral("INPUT"), QStringLiteral("A photo or a project."));
     bool helped = false;
     if (!parseArguments(parser, self, args, &helped))
@@ -153,6 +157,9 @@ int runAnimate(const Command &self, const QStringList &args)
     if (!language.isEmpty() && language != QLatin1StringView("cmn") && language != QLatin1StringView("en"))
         return fail(ExitUsage, QStringLiteral("unknown --lang '%1' (cmn or en)").arg(language));
     std::optional<Style> chosenStyle;
+    bool wholePhoto = false;
+    if (const int code = parseFrameOption(parser, frame, &wholePhoto); code != ExitOk)
+        return code;
     if (const int code = parseStyleOption(parser, style, &chosenStyle); code != ExitOk)
         return code;
 
@@ -205,6 +212,7 @@ int runAnimate(const Command &self, const QStringList &args)
     }
 
     SvgFace face(input.face, drawStyle);
+    face.setFrame(drawingFrame(input.face, wholePhoto));
     for (const QString &layer : std::as_const(input.layerPaths)) {
         QString error;
         if (!face.addLayerFile(layer, &error))
@@ -217,6 +225,7 @@ int runAnimate(const Command &self, const QStringList &args)
         options.audio = ExportAudio::Embed;
         options.audioPath = speech.audioPath;
         options.layerFiles = input.layerPaths;
+        options.frame = face.frame();
         QString error;
         const QByteArray data = kind == OutputKind::Svg
             ? exportSmilSvg(input.face, drawStyle, timeline, shapes, options, &error)
@@ -233,9 +242,9 @@ int runAnimate(const Command &self, const QStringList &args)
 const CommandRegistrar registrar({QStringLiteral("animate"),
     QStringLiteral(
         "Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF or PNG frames)."),
-    QStringLiteral(
-        "animate IMAGE|PROJECT (--audio A --script S | --say TEXT | --video CLIP) [--emotion NAME] "
-        "[--no-blink] [--fps N] [--style NAME] [--project OUT.toonface] -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"),
+    QStringLiteral("animate IMAGE|PROJECT (--audio A --script S | --say TEXT | --video CLIP) [--emotion NAME] "
+                   "[--no-blink] [--fps N] [--style NAME] [--frame head|photo] [--project OUT.toonface] -o "
+                   "OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"),
     runAnimate});
 
 } // namespace

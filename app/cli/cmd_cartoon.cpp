@@ -28,7 +28,8 @@ int runCartoon(const Command &self, const QStringList &args)
     const QCommandLineOption method(QStringLiteral("method"),
         QStringLiteral("Detection method for a photo: auto, classic or landmarks."),
         QStringLiteral("auto|classic|landmarks"), QStringLiteral("auto"));
-    parser.addOptions({output, png, size, style, emotion, method});
+    const QCommandLineOption frame = frameOption();
+    parser.addOptions({output, png, size, style, emotion, method, frame});
     parser.addPositionalArgument(QStringLiteral("INPUT"), QStringLiteral("A photo, a face JSON or a project."));
     bool helped = false;
     if (!parseArguments(parser, self, args, &helped))
@@ -51,6 +52,9 @@ int runCartoon(const Command &self, const QStringList &args)
         return code;
     if (const int code = parseStyleOption(parser, style, &chosenStyle); code != ExitOk)
         return code;
+    bool wholePhoto = false;
+    if (const int code = parseFrameOption(parser, frame, &wholePhoto); code != ExitOk)
+        return code;
     if (const int code = parseMethodOption(parser, method, &options); code != ExitOk)
         return code;
 
@@ -60,6 +64,7 @@ int runCartoon(const Command &self, const QStringList &args)
     const Style drawStyle = drawingStyle(input, chosenStyle);
 
     SvgFace face(input.face, drawStyle);
+    face.setFrame(drawingFrame(input.face, wholePhoto));
     for (const QString &layer : std::as_const(input.layerPaths)) {
         QString error;
         if (!face.addLayerFile(layer, &error))
@@ -71,8 +76,7 @@ int runCartoon(const Command &self, const QStringList &args)
     if (!writeFileAtomically(parser.value(output), svg, &error))
         return fail(ExitFailed, error);
     if (parser.isSet(png)) {
-        const QSize photoSize = input.face.imageSize().isValid() ? input.face.imageSize() : QSize(pngSize, pngSize);
-        const QSize target = photoSize.scaled(pngSize, pngSize, Qt::KeepAspectRatio);
+        const QSize target = face.frame().size().scaled(pngSize, pngSize, Qt::KeepAspectRatio).toSize();
         const QImage image = rasterizeSvg(svg, target);
         if (image.isNull() || !image.save(parser.value(png), "PNG"))
             return fail(ExitFailed, QStringLiteral("cannot write %1").arg(parser.value(png)));
@@ -82,8 +86,9 @@ int runCartoon(const Command &self, const QStringList &args)
 
 const CommandRegistrar registrar({QStringLiteral("cartoon"),
     QStringLiteral("Draw the cartoon face of a photo, a face JSON or a project as SVG (and PNG)."),
-    QStringLiteral("cartoon IMAGE|FACE.json|PROJECT.toonface -o OUT.svg [--png OUT.png [--size N]] "
-                   "[--style NAME] [--emotion NAME]"),
+    QStringLiteral(
+        "cartoon IMAGE|FACE.json|PROJECT.toonface -o OUT.svg [--png OUT.png [--size N]] [--frame head|photo] "
+        "[--style NAME] [--emotion NAME]"),
     runCartoon});
 
 } // namespace

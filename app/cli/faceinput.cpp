@@ -4,6 +4,7 @@
 #include "io/facejson.h"
 #include "io/imageio.h"
 #include "io/project.h"
+#include "render/svgface.h"
 
 #include <QDir>
 #include <QFile>
@@ -129,6 +130,28 @@ int parseStyleOption(const QCommandLineParser &parser, const QCommandLineOption 
             QStringLiteral("unknown --style '%1' (%2)")
                 .arg(parser.value(style), Style::presetNames().join(QStringLiteral(", "))));
     return ExitOk;
+}
+
+QCommandLineOption frameOption()
+{
+    return QCommandLineOption(QStringLiteral("frame"),
+        QStringLiteral("What the drawing shows: head (framed square around the head, the default) or photo (the "
+                       "photo's whole frame, to lay over the photo)."),
+        QStringLiteral("head|photo"), QStringLiteral("head"));
+}
+
+int parseFrameOption(const QCommandLineParser &parser, const QCommandLineOption &frame, bool *wholePhoto)
+{
+    const QString value = parser.value(frame);
+    if (value != QLatin1StringView("head") && value != QLatin1StringView("photo"))
+        return fail(ExitUsage, QStringLiteral("unknown --frame '%1' (head, photo)").arg(value));
+    *wholePhoto = value == QLatin1StringView("photo");
+    return ExitOk;
+}
+
+QRectF drawingFrame(const FaceModel &face, bool wholePhoto)
+{
+    return wholePhoto ? QRectF() : headFrame(face);
 }
 
 Style drawingStyle(const FaceInput &input, const std::optional<Style> &chosen)

@@ -8,6 +8,7 @@
 
 #include <QCommandLineParser>
 #include <QImage>
+#include <QRectF>
 #include <QString>
 #include <QStringList>
 
@@ -37,6 +38,13 @@ int parseMethodOption(const QCommandLineParser &parser, const QCommandLineOption
 int parseEmotionOption(const QCommandLineParser &parser, const QCommandLineOption &emotion, Emotion *out);
 // *out stays empty when the option is not given.
 int parseStyleOption(const QCommandLineParser &parser, const QCommandLineOption &style, std::optional<Style> *out);
+
+// --frame head|photo: what part of the photo a drawing shows. The head (the default) is framed
+// square by headFrame(); "photo" keeps the photo's frame, so the drawing lies over the photo.
+QCommandLineOption frameOption();
+int parseFrameOption(const QCommandLineParser &parser, const QCommandLineOption &frame, bool *wholePhoto);
+// The frame to give SvgFace::setFrame(): empty for the whole photo.
+QRectF drawingFrame(const FaceModel &face, bool wholePhoto);
 
 // The style to draw `input` with: the one asked for, else the project's, else the default; a
 // style not from a project takes its colours from the photo.

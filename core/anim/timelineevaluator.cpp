@@ -81,6 +81,7 @@ TimelineEvaluator::TimelineEvaluator(const Timeline &timeline, const FaceModel &
     const Fapu fapu = face.fapu();
     for (int k = 0; k < 4; ++k)
         m_mouthIndex[k] = pt::idx(kMouthControlIds[k]);
+    m_restingMouth = shapes.displacements(MouthShape::M, face);
     buildMouth(timeline, face, shapes);
 
     for (Emotion e : kAllEmotions) {
@@ -243,7 +244,7 @@ void TimelineEvaluator::buildMouth(const Timeline &timeline, const FaceModel &fa
 std::array<QPointF, 4> TimelineEvaluator::mouthAt(double t) const
 {
     if (m_mouthTimes.isEmpty())
-        return {};
+        return m_restingMouth;
     return easedAt(m_mouthTimes, m_mouthValues, t, lerpMouth);
 }
 

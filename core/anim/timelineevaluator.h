@@ -109,6 +109,7 @@ private:
 
     double m_duration = 0;
     std::array<int, 4> m_mouthIndex {};
+    std::array<QPointF, 4> m_restingMouth {}; // the mouth with no mouth track: shut
     QVector<double> m_mouthTimes;
     QVector<std::array<QPointF, 4>> m_mouthValues;
 

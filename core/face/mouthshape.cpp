@@ -90,14 +90,27 @@ MouthShapeSet::MouthShapeSet()
         m_presets[int(s)] = defaultPreset(s);
 }
 
+std::array<QPointF, 4> restingMouth(const FaceModel &face)
+{
+    std::array<QPointF, 4> d {};
+    // A gap under a tenth of MNS0 is lips drawn touching (about the inner line's width): left as
+    // photographed.
+    const double gap = face.point("2.3").y() - face.point("2.2").y();
+    if (gap > 0.1 * face.fapu().mns0) {
+        d[Up] = QPointF(0, 0.25 * gap);
+        d[Down] = QPointF(0, -0.75 * gap);
+    }
+    return d;
+}
+
 std::array<QPointF, 4> MouthShapeSet::displacements(
     MouthShape shape, const FaceModel &face, const std::array<QPointF, 4> *previous) const
 {
     const Fapu f = face.fapu();
     const MouthShapePreset &p = preset(shape);
-    std::array<QPointF, 4> d;
+    std::array<QPointF, 4> d = restingMouth(face);
     for (int k = 0; k < 4; ++k)
-        d[k] = QPointF(p.offsets[k].dx.evaluate(f), p.offsets[k].dy.evaluate(f));
+        d[k] += QPointF(p.offsets[k].dx.evaluate(f), p.offsets[k].dy.evaluate(f));
     if (p.cornersAtLipMiddle) {
         const double upY = face.point("8.9").y() + d[Up].y();
         const double dnY = face.point("8.2").y() + d[Down].y();

@@ -58,6 +58,12 @@ struct MouthShapePreset
     bool operator==(const MouthShapePreset &) const = default;
 };
 
+// The displacements of 8.9, 8.2, 8.4, 8.3 that shut lips photographed apart: the gap between
+// the inner lips (2.2, 2.3) closes by the lower lip rising three quarters of it (the jaw closes)
+// and the upper lip lowering a quarter; the lips keep their thickness. Zero when they touch or
+// nearly (a gap under a tenth of MNS0).
+std::array<QPointF, 4> restingMouth(const FaceModel &face);
+
 // The editable set of nine presets a project carries; defaults() is face-model.md's table.
 class MouthShapeSet
 {
@@ -70,7 +76,9 @@ public:
     bool isDefault(MouthShape shape) const { return preset(shape) == defaultPreset(shape); }
 
     // Pixel displacements of 8.9, 8.2, 8.4, 8.3 for `shape` on `face`. `previous` are the
-    // displacements of the shape before (used by `n`; neutral when absent).
+    // displacements of the shape before (used by `n`; neutral when absent). The table's neutral
+    // is a face with its lips shut: on a face photographed with them apart every shape starts
+    // from restingMouth(face) (so `m` shuts them).
     std::array<QPointF, 4> displacements(
         MouthShape shape, const FaceModel &face, const std::array<QPointF, 4> *previous = nullptr) const;
 

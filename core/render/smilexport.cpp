@@ -418,7 +418,7 @@ private:
 };
 
 // The channels of a drawing: every numeric geometry attribute of every part, and the head.
-QVector<Channel> makeChannels(const QVector<FacePart> &parts, const QVector<double> &neutralHead, QSizeF canvas)
+QVector<Channel> makeChannels(const QVector<FacePart> &parts, const QVector<double> &neutralHead, QRectF canvas)
 {
     QVector<Channel> channels;
     for (qsizetype i = 0; i < parts.size(); ++i) {
@@ -449,8 +449,7 @@ QVector<Channel> makeChannels(const QVector<FacePart> &parts, const QVector<doub
     // up to the farthest corner's distance from it.
     const QPointF centre(neutralHead[0], neutralHead[1]);
     double reach = 1;
-    for (const QPointF corner : {QPointF(0, 0), QPointF(canvas.width(), 0), QPointF(0, canvas.height()),
-             QPointF(canvas.width(), canvas.height())})
+    for (const QPointF corner : {canvas.topLeft(), canvas.topRight(), canvas.bottomLeft(), canvas.bottomRight()})
         reach = std::max(reach, std::hypot(corner.x() - centre.x(), corner.y() - centre.y()));
     auto decimalsFor = [](double weight) { return std::clamp(int(std::ceil(std::log10(weight / 0.1))), 1, 8); };
     Channel translate;
@@ -1165,11 +1164,11 @@ const XmlNode *findById(const XmlNode &n, const QByteArray &id)
     return nullptr;
 }
 
-QSizeF viewBoxSize(const XmlNode &root)
+QRectF viewBoxOf(const XmlNode &root)
 {
     QVector<double> v;
     parseNumbers(root.attribute("viewBox"), &v);
-    return v.size() == 4 ? QSizeF(v[2], v[3]) : QSizeF(512, 512);
+    return v.size() == 4 ? QRectF(v[0], v[1], v[2], v[3]) : QRectF(0, 0, 512, 512);
 }
 
 // ---- sound ----
@@ -1281,10 +1280,10 @@ QByteArray metadata(const AudioSource &audio, double duration, double fps)
 
 // The standalone document's player: a play button over the drawing and the script that
 // starts the sound with the animation and keeps the animation on the audio clock.
-QByteArray playerScript(QSizeF canvas)
+QByteArray playerScript(QRectF canvas)
 {
     const double r = 0.08 * std::min(canvas.width(), canvas.height());
-    const double cx = canvas.width() / 2, cy = canvas.height() / 2;
+    const double cx = canvas.center().x(), cy = canvas.center().y();
     auto n = [](double v) {
         QByteArray s;
         appendFixed(s, quantize(v, 1), 1);
@@ -1370,7 +1369,7 @@ bool prepareDrawing(const Timeline &timeline, const MouthShapeSet &shapes, const
         *error = QStringLiteral("unexpected head transform '%1'").arg(d->svg.headTransform(HeadPose {}));
         return false;
     }
-    d->channels = makeChannels(d->parts, neutralHead, viewBoxSize(d->document));
+    d->channels = makeChannels(d->parts, neutralHead, viewBoxOf(d->document));
     findTracks(d->channels, d->svg, timeline, shapes);
     if (timeline.headKeys().isEmpty()) {
         for (Channel &c : d->channels) {
@@ -1436,7 +1435,7 @@ bool smilDocument(const Drawing &d, const TimelineEvaluator &evaluator, const Ti
         head.clear();
     }
 
-    const QSizeF canvas = viewBoxSize(d.document);
+    const QRectF canvas = viewBoxOf(d.document);
     const bool withPlayer = standalone && !audio.uri.isEmpty() && duration > 0;
     if (standalone)
         *out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
@@ -1654,7 +1653,7 @@ bool framesDocument(const Drawing &d, const TimelineEvaluator &evaluator, const 
             writeXml(*out, c, {});
     }
     if (!audio.uri.isEmpty())
-        *out += playerScript(viewBoxSize(d.document));
+        *out += playerScript(viewBoxOf(d.document));
     *out += "</svg>\n";
     return true;
 }
@@ -1673,6 +1672,7 @@ std::optional<Prepared> prepare(const FaceModel &face, const Style &style, const
     // Browsers clip the eyeballs by the eye outline: the skin covers for renderers that cannot
     // (SvgFace) would only add two animated paths. The frame mode is for old players: it keeps them.
     p.drawing.svg.setEyeCovers(options.mode == AnimationExportOptions::Mode::Frames);
+    p.drawing.svg.setFrame(options.frame);
     if (!prepareDrawing(timeline, shapes, p.evaluator, options, &p.drawing, error)
         || !resolveAudio(timeline, p.evaluator.duration(), options, &p.audio, error))
         return std::nullopt;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QByteArray>
+#include <QRectF>
 #include <QString>
 #include <QStringList>
 
@@ -42,6 +43,10 @@ struct AnimationExportOptions
     // With ExportAudio::Reference: the folder the export will be written to (empty: the
     // current directory), so the reference is relative to it.
     QString outputDir;
+
+    // The part of the photo the animation shows (SvgFace::setFrame; headFrame() frames the
+    // head); empty: the whole photo.
+    QRectF frame;
 
     // Extra SVG layers (clothing, accessories) drawn above the face, as SvgFace::addLayerFile.
     QStringList layerFiles;

@@ -810,15 +810,10 @@ QVector<FacePart> SvgFace::parts(const Pose &pose) const
     return out;
 }
 
-QString SvgFace::headTransform(const HeadPose &head) const
+QRectF SvgFace::frame() const
 {
-    return QString::fromLatin1(headTransformText(m_geometry->g, head));
-}
-
-QByteArray SvgFace::svg(const Pose &pose) const
-{
-    const SvgFaceGeometry &g = m_geometry->g;
-    const std::vector<Part> parts = buildParts(g, m_face, m_style, pose, m_eyeCovers);
+    if (m_frame.isValid() && !m_frame.isEmpty())
+        return m_frame;
     // Without a photo (a face placed by hand), the frame holds the points with equal margins.
     QSize size = m_face.imageSize();
     if (!size.isValid() || size.isEmpty()) {
@@ -829,13 +824,59 @@ QByteArray SvgFace::svg(const Pose &pose) const
             ? QSize(int(std::ceil(w)), int(std::ceil(h)))
             : QSize(512, 512);
     }
+    return QRectF(QPointF(0, 0), QSizeF(size));
+}
 
+QRectF headFrame(const FaceModel &face, double aspect)
+{
+    const QRectF head = face.bounds();
+    if (!head.isValid() || head.isEmpty())
+        return {};
+    // A shake turns the head by up to ~10 degrees about its centre and a nod moves it by a few
+    // percent; the jaw drops by up to a mouth's height when it opens wide: a tenth of the head's
+    // size on the sides and top, a fifth below (the chin and the neck's start).
+    const double unit = std::max(head.width(), head.height());
+    QRectF r = head.adjusted(-0.1 * unit, -0.1 * unit, 0.1 * unit, 0.2 * unit);
+    if (!(aspect > 0))
+        return r;
+    if (r.width() / r.height() < aspect) {
+        const double w = r.height() * aspect;
+        r.adjust(-(w - r.width()) / 2, 0, (w - r.width()) / 2, 0);
+    } else {
+        const double h = r.width() / aspect;
+        r.adjust(0, -(h - r.height()) / 2, 0, (h - r.height()) / 2);
+    }
+    // Whole pixels, so raster sizes and the drawing agree.
+    return QRectF(std::floor(r.x()), std::floor(r.y()), std::ceil(r.width()), std::ceil(r.height()));
+}
+
+QString SvgFace::headTransform(const HeadPose &head) const
+{
+    return QString::fromLatin1(headTransformText(m_geometry->g, head));
+}
+
+QByteArray SvgFace::svg(const Pose &pose) const
+{
+    const SvgFaceGeometry &g = m_geometry->g;
+    const std::vector<Part> parts = buildParts(g, m_face, m_style, pose, m_eyeCovers);
+    const QRectF box = frame();
     QByteArray out;
     out.reserve(12000);
     out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
            "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" version=\"1.1\"";
-    out += " width=\"" + QByteArray::number(size.width()) + "\" height=\"" + QByteArray::number(size.height());
-    out += "\" viewBox=\"0 0 " + QByteArray::number(size.width()) + ' ' + QByteArray::number(size.height()) + "\">\n";
+    out += " width=\"";
+    appendNumber(out, box.width());
+    out += "\" height=\"";
+    appendNumber(out, box.height());
+    out += "\" viewBox=\"";
+    appendNumber(out, box.x());
+    out += ' ';
+    appendNumber(out, box.y());
+    out += ' ';
+    appendNumber(out, box.width());
+    out += ' ';
+    appendNumber(out, box.height());
+    out += "\">\n";
 
     // Clip paths reuse the outline they clip by, so animating the outline animates the clip.
     out += "<defs>";

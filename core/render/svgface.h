@@ -6,6 +6,7 @@
 
 #include <QByteArray>
 #include <QImage>
+#include <QRectF>
 #include <QString>
 #include <QVector>
 
@@ -54,6 +55,11 @@ public:
     // of the form "translate(x,y) rotate(a) scale(s) translate(-cx,-cy)".
     QString headTransform(const HeadPose &head) const;
 
+    // The part of the photo the drawing shows (its viewBox and size), in photo pixels. By
+    // default the whole photo — or, for a face placed without one, the points with equal margins.
+    void setFrame(const QRectF &frame) { m_frame = frame; }
+    QRectF frame() const;
+
     // The eye covers above are on by default; a drawing meant only for renderers that clip
     // (a browser) leaves them out.
     void setEyeCovers(bool on) { m_eyeCovers = on; }
@@ -70,7 +76,13 @@ private:
     std::shared_ptr<const Geometry> m_geometry;
     QVector<QByteArray> m_layers;
     bool m_eyeCovers = true;
+    QRectF m_frame;
 };
+
+// A frame around the head for a talking face: the 72 points (hair and ears included) with room
+// for the head's motions and the jaw's drop, widened to `aspect` (width / height) about the
+// head's centre. It may reach beyond the photo.
+QRectF headFrame(const FaceModel &face, double aspect = 1.0);
 
 // Renders SVG content to an image of `size` (aspect kept, centred, transparent outside)
 // through QSvgRenderer. Returns a null image when the SVG does not parse.

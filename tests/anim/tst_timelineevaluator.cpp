@@ -102,6 +102,15 @@ private Q_SLOTS:
         QCOMPARE(e.evaluate(3.0), Pose());
         QCOMPARE(e.duration(), 0.0);
         QCOMPARE(e.keyTimes(), QVector<double> {0.0});
+
+        // A face photographed with its lips apart rests with them shut, speech or not.
+        FaceModel open = m_face;
+        for (const char *id : {"8.2", "2.3", "2.1"})
+            open.setPoint(pt::idx(id), open.point(id) + QPointF(0, 0.5 * m_face.fapu().mns0));
+        const TimelineEvaluator silent(Timeline(), open, m_shapes);
+        QCOMPARE(silent.evaluate(1.0), mouthPose(open, m_shapes, MouthShape::M));
+        const auto shut = posedPoints(open, silent.evaluate(1.0));
+        QVERIFY(std::abs(shut[pt::idx("2.3")].y() - shut[pt::idx("2.2")].y()) < 1e-9);
     }
 
     void atKeyFramesTheShapeIsExact()

@@ -1,5 +1,6 @@
 #include "face/averageface.h"
 #include "io/project.h"
+#include "render/svgface.h"
 #include "render/videoencoder.h"
 
 #include <QFile>
@@ -225,9 +226,36 @@ private Q_SLOTS:
         QCOMPARE(r.code, 0);
         QString viewBox;
         QVERIFY(isWellFormedSvg(svg, &viewBox));
-        QCOMPARE(viewBox, QStringLiteral("0 0 512 600"));
+        // Framed square around the head, which holds the detected face box.
+        const QStringList box = viewBox.split(QLatin1Char(' '));
+        QCOMPARE(box.size(), 4);
+        const QRectF frame(box[0].toDouble(), box[1].toDouble(), box[2].toDouble(), box[3].toDouble());
+        QCOMPARE(frame.width(), frame.height());
         const QImage image(png);
-        QCOMPARE(std::max(image.width(), image.height()), 300);
+        QCOMPARE(image.size(), QSize(300, 300));
+        const QString detected = path(QStringLiteral("hopper-face.json"));
+        QCOMPARE(cli({QStringLiteral("detect"), kPortrait, QStringLiteral("-o"), detected}).code, 0);
+        QFile faceFile(detected);
+        QVERIFY(faceFile.open(QIODevice::ReadOnly));
+        const QJsonObject faceBox
+            = QJsonDocument::fromJson(faceFile.readAll()).object().value(QStringLiteral("faceBox")).toObject();
+        const QRectF detectedBox(faceBox.value(QStringLiteral("x")).toDouble(),
+            faceBox.value(QStringLiteral("y")).toDouble(), faceBox.value(QStringLiteral("width")).toDouble(),
+            faceBox.value(QStringLiteral("height")).toDouble());
+        QVERIFY2(frame.contains(detectedBox), qPrintable(viewBox));
+        QVERIFY(frame.width() < 3 * std::max(detectedBox.width(), detectedBox.height())); // the head, not the photo
+        // The photo's frame on request, so the drawing lies over the photo.
+        const QString whole = path(QStringLiteral("hopper-photo.svg"));
+        QCOMPARE(cli({QStringLiteral("cartoon"), kPortrait, QStringLiteral("-o"), whole, QStringLiteral("--frame"),
+                         QStringLiteral("photo")})
+                     .code,
+            0);
+        QVERIFY(isWellFormedSvg(whole, &viewBox));
+        QCOMPARE(viewBox, QStringLiteral("0 0 512 600"));
+        const Run bad = cli({QStringLiteral("cartoon"), kPortrait, QStringLiteral("-o"), whole,
+            QStringLiteral("--frame"), QStringLiteral("torso")});
+        QCOMPARE(bad.code, 2);
+        QVERIFY(bad.err.contains("--frame"));
 
         // From the face JSON.
         const QString facePath = path(QStringLiteral("face-for-cartoon.json"));
@@ -266,7 +294,10 @@ private Q_SLOTS:
         QCOMPARE(r.code, 0);
         QString viewBox;
         QVERIFY(isWellFormedSvg(svg, &viewBox));
-        QCOMPARE(viewBox, QStringLiteral("0 0 320 400"));
+        const QRectF frame = headFrame(project.face);
+        QCOMPARE(viewBox,
+            QStringLiteral("%1 %2 %3 %4").arg(frame.x()).arg(frame.y()).arg(frame.width()).arg(frame.height()));
+        QVERIFY(frame.contains(project.face.bounds()));
     }
 
     void animateUsageErrors_data()

@@ -171,6 +171,34 @@ private Q_SLOTS:
             QTest::newRow(qPrintable(mouthShapeName(s))) << mouthShapeName(s);
     }
 
+    // A face photographed with its lips apart rests with them shut, and every shape starts from
+    // there: `m` shuts them, `a` opens by the table's amount from shut lips.
+    void lipsApartRestShut()
+    {
+        const FaceModel closed = testFace();
+        QCOMPARE(restingMouth(closed), (std::array<QPointF, 4> {}));
+        FaceModel open = closed;
+        const Fapu u = closed.fapu();
+        const double gap = 0.6 * u.mns0;
+        for (const char *id : {"8.2", "2.3", "2.1"})
+            open.setPoint(pt::idx(id), open.point(id) + QPointF(0, gap));
+        const double openGap = open.point("2.3").y() - open.point("2.2").y();
+        const std::array<QPointF, 4> rest = restingMouth(open);
+        QVERIFY(std::abs(rest[0].y() - 0.25 * openGap) < 1e-9); // the upper lip lowers a quarter
+        QVERIFY(std::abs(rest[1].y() + 0.75 * openGap) < 1e-9); // the lower lip and jaw rise the rest
+        MouthShapeSet set;
+        const auto shut = posedPoints(open, mouthPose(open, set, MouthShape::M));
+        QVERIFY(std::abs(shut[pt::idx("2.3")].y() - shut[pt::idx("2.2")].y()) < 1e-9);
+        QVERIFY(std::abs(shut[pt::idx("2.1")].y() - (open.point("2.1").y() - 0.75 * openGap)) < 1e-9);
+        const auto wide = posedPoints(open, mouthPose(open, set, MouthShape::A));
+        const double opening = wide[pt::idx("8.2")].y() - shut[pt::idx("8.2")].y();
+        QVERIFY(std::abs(opening - 0.8 * open.fapu().mns0) < 1e-9);
+        // A hair's breadth apart counts as touching.
+        FaceModel nearly = closed;
+        nearly.setPoint(pt::idx("2.3"), nearly.point("2.3") + QPointF(0, 0.05 * u.mns0));
+        QCOMPARE(restingMouth(nearly), (std::array<QPointF, 4> {}));
+    }
+
     void mouthShapeDefaults()
     {
         QFETCH(QString, shape);

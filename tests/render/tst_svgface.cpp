@@ -439,6 +439,41 @@ private Q_SLOTS:
 
     // The skin covers stand in for clipping in renderers without it; without them the drawing
     // is the same but for the two covers.
+    // A frame around the head: square (or the aspect asked), whole pixels, holding every point
+    // with room below for the jaw; the drawing's viewBox and size follow it.
+    void headFrameHoldsTheHead_data()
+    {
+        QTest::addColumn<double>("aspect");
+        QTest::newRow("square") << 1.0;
+        QTest::newRow("portrait") << 0.8;
+        QTest::newRow("wide") << 16.0 / 9.0;
+    }
+    void headFrameHoldsTheHead()
+    {
+        QFETCH(double, aspect);
+        const FaceModel face = testFace();
+        const QRectF frame = headFrame(face, aspect);
+        const QRectF head = face.bounds();
+        QVERIFY(frame.contains(head));
+        QVERIFY(frame.bottom() - head.bottom() >= 0.2 * std::max(head.width(), head.height()) - 1);
+        QVERIFY(std::abs(frame.width() / frame.height() - aspect) < 0.02);
+        QCOMPARE(frame.x(), std::floor(frame.x()));
+        QCOMPARE(frame.width(), std::floor(frame.width()));
+        QVERIFY(frame.width() < 2 * std::max(head.width(), head.height()) * std::max(aspect, 1.0));
+
+        SvgFace svgFace(face, preset("normal"));
+        QCOMPARE(svgFace.frame(), QRectF(QPointF(0, 0), QSizeF(face.imageSize())));
+        svgFace.setFrame(frame);
+        const Node root = parsed(svgFace.svg());
+        QCOMPARE(root.attribute(QStringLiteral("viewBox")),
+            QStringLiteral("%1 %2 %3 %4").arg(frame.x()).arg(frame.y()).arg(frame.width()).arg(frame.height()));
+        QCOMPARE(root.attribute(QStringLiteral("width")).toDouble(), frame.width());
+        // Rendered, the face fills the picture: the frame's centre is skin, its corner background.
+        const QImage image = rasterizeSvg(svgFace.svg(), QSize(200, int(200 / aspect)), Qt::white);
+        QVERIFY(image.pixelColor(image.width() / 2, image.height() / 2) != QColor(Qt::white));
+        QCOMPARE(image.pixelColor(1, image.height() - 2), QColor(Qt::white));
+    }
+
     void eyeCoversCanBeLeftOut()
     {
         SvgFace svgFace(testFace(), preset("normal"));
