@@ -108,7 +108,7 @@ QString DetectionSteps::displayName(const QString &name)
     stem.replace(QLatin1Char('-'), QLatin1Char(' ')).replace(QLatin1Char('_'), QLatin1Char(' '));
     stem = stem.simplified();
     if (stem.isEmpty())
-        stem = name;
+        return name;
     stem[0] = stem[0].toUpper();
     if (closeUp)
         stem = QCoreApplication::translate("DetectionSteps", "%1, close-up").arg(stem);
