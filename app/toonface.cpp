@@ -69,7 +69,7 @@ int main(int argc, char *argv[])
     parser.addPositionalArgument(QStringLiteral("file"),
         QApplication::translate("main", "A photo or a .toonface project to open."), QStringLiteral("[file]"));
     const QCommandLineOption methodOption(QStringLiteral("method"),
-        QApplication::translate("main", "Detect faces with METHOD from now on: auto, classic or landmarks."),
+        QApplication::translate("main", "Detect faces with METHOD in this session: auto, classic or landmarks."),
         QStringLiteral("METHOD"));
     parser.addOption(methodOption);
     parser.process(app);

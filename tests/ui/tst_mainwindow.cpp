@@ -585,13 +585,25 @@ private Q_SLOTS:
         QTRY_VERIFY(m_window->findChildren<StepImageDialog *>().isEmpty());
     }
 
+    void detectionMethodComesFromTheSettings()
+    {
+        Settings().setDetectionMethod(QStringLiteral("landmarks"));
+        makeWindow();
+        QVERIFY(action("actionMethodLandmarks")->isChecked());
+        QVERIFY(!action("actionMethodAuto")->isChecked());
+        QCOMPARE(m_window->detectionMethod(), DetectionMethod::Landmarks);
+        action("actionMethodClassic")->trigger();
+        QCOMPARE(Settings().detectionMethod(), QStringLiteral("classic"));
+    }
+
     void detectionMethodChoosesTheSteps()
     {
         makeWindow();
         QVERIFY(action("actionMethodAuto")->isChecked());
         m_window->setDetectionMethod(DetectionMethod::Classic);
         QVERIFY(action("actionMethodClassic")->isChecked());
-        QCOMPARE(Settings().detectionMethod(), QStringLiteral("classic"));
+        QCOMPARE(m_window->detectionMethod(), DetectionMethod::Classic);
+        QCOMPARE(Settings().detectionMethod(), QStringLiteral("auto")); // this session only
         const MessageBoxAnswerer answerer({QStringLiteral("OK"), QStringLiteral("Cancel")});
         if (!openPortrait())
             return;

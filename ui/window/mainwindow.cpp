@@ -758,7 +758,6 @@ void MainWindow::setDetectionMethod(DetectionMethod method)
     const QList<QAction *> actions = m_methodGroup->actions();
     for (QAction *action : actions)
         action->setChecked(action->data().toString() == name);
-    Settings().setDetectionMethod(name);
 }
 
 DetectionMethod MainWindow::detectionMethod() const

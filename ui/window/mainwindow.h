@@ -57,8 +57,8 @@ public:
     // The intermediate images of the last detection of the open photo.
     DetectionSteps *detectionSteps() const { return m_steps; }
 
-    // The method detections use from now on (also the Edit ▸ Detection Method menu); kept in
-    // the settings.
+    // The method detections use from now on, for this session; the Edit ▸ Detection Method
+    // menu also keeps the user's choice in the settings for the next sessions.
     void setDetectionMethod(DetectionMethod method);
     DetectionMethod detectionMethod() const;
 
