@@ -720,7 +720,7 @@ void MainWindow::onDocumentChanged(ChangeFlags what)
 {
     if (what & Change::Photo) {
         // The steps belong to the photo they came from.
-        m_overlayStep.clear();
+        m_chosenStep.clear();
         m_steps->clear();
     }
     if (what & Change::Style)
@@ -835,14 +835,20 @@ void MainWindow::onDetectionStepsChanged()
     }
 
     // A re-detection of the same photo brings the same steps: keep showing the chosen one.
-    setOverlayStep(m_steps->image(m_overlayStep).isNull() ? QString() : m_overlayStep);
+    showChosenStep();
     updateDetectionStepsEnabled();
 }
 
 void MainWindow::setOverlayStep(const QString &name)
 {
-    const QImage image = name.isEmpty() || DetectionSteps::isCloseUp(name) ? QImage() : m_steps->image(name);
-    m_overlayStep = image.isNull() ? QString() : name;
+    m_chosenStep = DetectionSteps::isCloseUp(name) || m_steps->image(name).isNull() ? QString() : name;
+    showChosenStep();
+}
+
+void MainWindow::showChosenStep()
+{
+    const QImage image = m_chosenStep.isEmpty() ? QImage() : m_steps->image(m_chosenStep);
+    m_overlayStep = image.isNull() ? QString() : m_chosenStep;
     m_photoView->setOverlay(image);
 
     const QList<QAction *> actions = m_stepsGroup->actions();

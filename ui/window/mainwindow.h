@@ -124,7 +124,8 @@ private:
     void setBusy(Job job, const QString &text);
 
     void onDetectionStepsChanged();
-    void setOverlayStep(const QString &name);
+    void setOverlayStep(const QString &name); // the user's choice
+    void showChosenStep();
     void openCloseUp(const QString &name);
     void updateDetectionStepsEnabled();
 
@@ -141,7 +142,10 @@ private:
     PreviewView *m_previewView;
     QSplitter *m_splitter;
     DetectionSteps *m_steps;
-    QString m_overlayStep; // the chosen overlay; kept through re-detection of the same photo
+    QString m_overlayStep; // the step drawn over the photo now
+    // The step the user chose: kept through re-detection of the same photo, and shown again
+    // when the new run has it; forgotten with the photo.
+    QString m_chosenStep;
     QHash<QString, QPointer<StepImageDialog>> m_closeUps;
 
     QFutureWatcher<LoadedFile> *m_loadWatcher = nullptr;
