@@ -88,6 +88,7 @@ PhotoView::PhotoView(Document *document, QWidget *parent)
         m_handles.append(handle);
     }
 
+    updateScrollBars();
     connect(m_document, &Document::changed, this, &PhotoView::onDocumentChanged);
     syncPhoto();
     syncPoints();
@@ -172,13 +173,26 @@ void PhotoView::zoomToActualSize()
 void PhotoView::fitToWindow()
 {
     m_fit = Fit::Photo;
+    updateScrollBars();
     applyFit();
 }
 
 void PhotoView::zoomToFace()
 {
     m_fit = Fit::Face;
+    updateScrollBars();
     applyFit();
+}
+
+void PhotoView::updateScrollBars()
+{
+    // A fit mode frames its target in whatever room the viewport has. Scroll bars that come
+    // and go with the zoom would change that room and the fit again, without end when the
+    // target is about as large as the scene (a face whose hair points reach the photo's
+    // edges); the hand drag still pans.
+    const Qt::ScrollBarPolicy policy = m_fit == Fit::None ? Qt::ScrollBarAsNeeded : Qt::ScrollBarAlwaysOff;
+    setHorizontalScrollBarPolicy(policy);
+    setVerticalScrollBarPolicy(policy);
 }
 
 void PhotoView::applyFit()
@@ -283,6 +297,7 @@ void PhotoView::setZoom(double zoom)
     if (current <= 0 || zoom == current)
         return;
     m_fit = Fit::None;
+    updateScrollBars();
     scale(zoom / current, zoom / current);
     Q_EMIT zoomChanged(this->zoom());
 }

@@ -78,6 +78,7 @@ private:
     void updateOutlines();
     void setZoom(double zoom);
     void applyFit();
+    void updateScrollBars();
     void placeOverlay();
 
     Document *m_document;

@@ -344,7 +344,10 @@ void MainWindow::createToolBar()
     bar->addAction(m_fitAction);
     bar->addAction(m_zoomFaceAction);
 
-    m_stepsToolBar = addToolBar(tr("Detection Steps"));
+    // Below the views, beside the photo it acts on, where the main toolbar's width does not
+    // push it out of sight.
+    m_stepsToolBar = new QToolBar(tr("Detection Steps"), this);
+    addToolBar(Qt::BottomToolBarArea, m_stepsToolBar);
     m_stepsToolBar->setObjectName(QStringLiteral("detectionStepsToolBar"));
     auto *stepLabel = new QLabel(tr("Step:") + QLatin1Char(' '));
     m_stepsToolBar->addWidget(stepLabel);
