@@ -80,7 +80,8 @@ private Q_SLOTS:
     {
         QTest::addColumn<QString>("name");
         QTest::addColumn<QString>("shown");
-        QTest::newRow("b1") << QStringLiteral("classic-b1") << QStringLiteral("B1 – dark regions (1st level, intensity)");
+        QTest::newRow("b1") << QStringLiteral("classic-b1")
+                            << QStringLiteral("B1 – dark regions (1st level, intensity)");
         QTest::newRow("eye pairs") << QStringLiteral("classic-eye-pairs")
                                    << QStringLiteral("Eye-pair candidates and the chosen pair");
         QTest::newRow("edges") << QStringLiteral("classic-edges") << QStringLiteral("Edges and division lines");
@@ -90,8 +91,7 @@ private Q_SLOTS:
         QTest::newRow("unknown classic") << QStringLiteral("classic-mouth-cut")
                                          << QStringLiteral("Mouth cut (thesis pipeline)");
         QTest::newRow("unknown detect crop") << QStringLiteral("detect-ears-crop") << QStringLiteral("Ears, close-up");
-        QTest::newRow("other prefix") << QStringLiteral("track-optical_flow")
-                                      << QStringLiteral("Optical flow (track)");
+        QTest::newRow("other prefix") << QStringLiteral("track-optical_flow") << QStringLiteral("Optical flow (track)");
         QTest::newRow("no prefix") << QStringLiteral("heatmap") << QStringLiteral("Heatmap");
         QTest::newRow("only a suffix") << QStringLiteral("-crop") << QStringLiteral("-crop");
     }

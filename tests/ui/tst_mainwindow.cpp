@@ -15,11 +15,11 @@
 #include <QComboBox>
 #include <QFile>
 #include <QGraphicsPixmapItem>
-#include <QSlider>
 #include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -480,8 +480,8 @@ private Q_SLOTS:
         QCOMPARE(stepsCombo()->count(), overlays.size() + 1);
         QCOMPARE(stepsCombo()->currentIndex(), 0);
         for (int i = 0; i < overlays.size(); ++i) {
-            QCOMPARE(action(QStringLiteral("actionStep-") + overlays[i])->text(),
-                DetectionSteps::displayName(overlays[i]));
+            QCOMPARE(
+                action(QStringLiteral("actionStep-") + overlays[i])->text(), DetectionSteps::displayName(overlays[i]));
             QCOMPARE(stepsCombo()->itemText(i + 1), DetectionSteps::displayName(overlays[i]));
         }
         QVERIFY(!m_window->photoView()->hasOverlay());
@@ -501,8 +501,8 @@ private Q_SLOTS:
                 for (int x = 4; x < photoRect.width() - 4; x += 7) {
                     const QRgb over = picture.pixel(x, y);
                     const QRgb under = doc->photo().pixel(x, y);
-                    const int contrast = std::abs(qRed(over) - qRed(under))
-                        + std::abs(qGreen(over) - qGreen(under)) + std::abs(qBlue(over) - qBlue(under));
+                    const int contrast = std::abs(qRed(over) - qRed(under)) + std::abs(qGreen(over) - qGreen(under))
+                        + std::abs(qBlue(over) - qBlue(under));
                     if (qAlpha(over) == 255 && contrast >= 60)
                         points.append(QPoint(x, y));
                 }

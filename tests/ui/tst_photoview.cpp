@@ -259,6 +259,30 @@ private Q_SLOTS:
         QCOMPARE(h->boundingRect(), without);
     }
 
+    void fitModesHideTheScrollBars()
+    {
+        // init() fitted the photo.
+        QCOMPARE(m_photo->horizontalScrollBarPolicy(), Qt::ScrollBarAlwaysOff);
+        QCOMPARE(m_photo->verticalScrollBarPolicy(), Qt::ScrollBarAlwaysOff);
+        m_photo->zoomIn();
+        QCOMPARE(m_photo->fitMode(), PhotoView::Fit::None);
+        QCOMPARE(m_photo->horizontalScrollBarPolicy(), Qt::ScrollBarAsNeeded);
+        QCOMPARE(m_photo->verticalScrollBarPolicy(), Qt::ScrollBarAsNeeded);
+        m_photo->zoomToFace();
+        QCOMPARE(m_photo->horizontalScrollBarPolicy(), Qt::ScrollBarAlwaysOff);
+        QCOMPARE(m_photo->verticalScrollBarPolicy(), Qt::ScrollBarAlwaysOff);
+
+        // A face whose box is about the whole scene, framed at many sizes: each resize settles
+        // (with scroll bars coming and going the fit changed the room it fitted into, forever).
+        m_doc->replaceFace(averageFace(QRectF(20, 10, 360, 480), fixture::kPhotoSize), false, QStringLiteral("Big"));
+        for (int w = 500; w <= 1100; w += 13) {
+            m_window->resize(w, 420 + (w % 5) * 40);
+            QCoreApplication::processEvents();
+            QCoreApplication::processEvents();
+        }
+        QVERIFY(m_photo->mapFromScene(m_doc->face().bounds()).boundingRect().intersects(m_photo->viewport()->rect()));
+    }
+
     void overlayLiesExactlyOverThePhoto_data()
     {
         QTest::addColumn<QSize>("size");
@@ -326,7 +350,8 @@ private Q_SLOTS:
             changed += plain.pixel(p) != covered.pixel(p);
             red += isPureRed(covered.pixel(p));
         }
-        QVERIFY2(changed >= opaque.size() * 0.95, qPrintable(QStringLiteral("%1 of %2").arg(changed).arg(opaque.size())));
+        QVERIFY2(
+            changed >= opaque.size() * 0.95, qPrintable(QStringLiteral("%1 of %2").arg(changed).arg(opaque.size())));
         QVERIFY2(red >= opaque.size() * 0.8, qPrintable(QStringLiteral("%1 of %2").arg(red).arg(opaque.size())));
         for (const QPoint &p : clear)
             QCOMPARE(covered.pixel(p), plain.pixel(p));

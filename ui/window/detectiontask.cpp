@@ -25,8 +25,8 @@ void reduceStepImages(QMap<QString, QImage> *images)
             image = image.scaled(std::max(1, int(image.width() * k)), std::max(1, int(image.height() * k)),
                 Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
         }
-        *it = image.convertToFormat(image.hasAlphaChannel() ? QImage::Format_ARGB32_Premultiplied
-                                                            : QImage::Format_RGB32);
+        *it = image.convertToFormat(
+            image.hasAlphaChannel() ? QImage::Format_ARGB32_Premultiplied : QImage::Format_RGB32);
     }
 }
 

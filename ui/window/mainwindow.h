@@ -1,9 +1,9 @@
 #pragma once
 
+#include "detect/detector.h"
 #include "document/autosaver.h"
 #include "document/document.h"
 #include "document/loadedfile.h"
-#include "detect/detector.h"
 
 #include <QHash>
 #include <QPointer>
