@@ -306,7 +306,7 @@ private Q_SLOTS:
         for (const QRectF &box : {QRectF(60, 60, 280, 380), QRectF(30, 20, 340, 470), QRectF(100, 150, 200, 240)}) {
             m_doc->replaceFace(averageFace(box, fixture::kPhotoSize), false, QStringLiteral("Face"));
             m_photo->zoomToFace();
-            for (int h = 300; h <= 700 && !guard.tripped; h += 23) {
+            for (int h = 300; h <= 700 && !guard.tripped; h += 150) {
                 for (int w = 300; w <= 1000 && !guard.tripped; w += 17) {
                     guard.resizes = 0;
                     m_window->resize(w, h);
