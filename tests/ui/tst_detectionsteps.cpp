@@ -1,4 +1,5 @@
 #include "window/detectionsteps.h"
+#include "window/detectiontask.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -74,6 +75,32 @@ private Q_SLOTS:
         QFETCH(QString, name);
         QFETCH(bool, closeUp);
         QCOMPARE(DetectionSteps::isCloseUp(name), closeUp);
+    }
+
+    void largeStepImagesAreReduced()
+    {
+        QImage big(3000, 2000, QImage::Format_Grayscale8); // 6 MP, as a mask of a large photo
+        big.fill(200);
+        QImage withAlpha(400, 300, QImage::Format_ARGB32);
+        withAlpha.fill(QColor(255, 0, 0, 128));
+        QMap<QString, QImage> images {{QStringLiteral("classic-b1"), big},
+            {QStringLiteral("detect-landmarks"), filled(QSize(640, 480))},
+            {QStringLiteral("detect-points-crop"), withAlpha}};
+        DetectionTask::reduceStepImages(&images);
+
+        const QImage reduced = images.value(QStringLiteral("classic-b1"));
+        QVERIFY(qint64(reduced.width()) * reduced.height() <= DetectionTask::kMaxStepImagePixels);
+        QVERIFY(qint64(reduced.width()) * reduced.height() > DetectionTask::kMaxStepImagePixels * 0.99);
+        QVERIFY(std::abs(reduced.width() * 2000.0 / 3000.0 - reduced.height()) <= 1.0); // aspect kept
+        QCOMPARE(reduced.format(), QImage::Format_RGB32);
+        QCOMPARE(qGray(reduced.pixel(10, 10)), 200);
+
+        QCOMPARE(images.value(QStringLiteral("detect-landmarks")).size(), QSize(640, 480)); // small: as it was
+        QCOMPARE(images.value(QStringLiteral("detect-landmarks")).format(), QImage::Format_RGB32);
+        const QImage alpha = images.value(QStringLiteral("detect-points-crop"));
+        QCOMPARE(alpha.size(), QSize(400, 300));
+        QCOMPARE(alpha.format(), QImage::Format_ARGB32_Premultiplied);
+        QVERIFY(std::abs(qAlpha(alpha.pixel(5, 5)) - 128) <= 1);
     }
 
     void displayNamesAreForPeople_data()

@@ -13,15 +13,16 @@ namespace {
 
 constexpr int kProgressSteps = 1000;
 
-// Shrinks each intermediate image to kMaxStepImagePixels (it is drawn stretched over the
-// photo, so its resolution only limits sharpness) in a format the painter draws directly.
-void reduceStepImages(QMap<QString, QImage> *images)
+} // namespace
+
+// Each image is drawn stretched over the photo, so its resolution only limits sharpness.
+void DetectionTask::reduceStepImages(QMap<QString, QImage> *images)
 {
     for (auto it = images->begin(); it != images->end(); ++it) {
         QImage image = it.value();
         const qint64 pixels = qint64(image.width()) * image.height();
-        if (pixels > DetectionTask::kMaxStepImagePixels) {
-            const double k = std::sqrt(double(DetectionTask::kMaxStepImagePixels) / double(pixels));
+        if (pixels > kMaxStepImagePixels) {
+            const double k = std::sqrt(double(kMaxStepImagePixels) / double(pixels));
             image = image.scaled(std::max(1, int(image.width() * k)), std::max(1, int(image.height() * k)),
                 Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
         }
@@ -29,8 +30,6 @@ void reduceStepImages(QMap<QString, QImage> *images)
             image.hasAlphaChannel() ? QImage::Format_ARGB32_Premultiplied : QImage::Format_RGB32);
     }
 }
-
-} // namespace
 
 DetectionTask::DetectionTask(QObject *parent)
     : QObject(parent)

@@ -24,6 +24,10 @@ class DetectionTask : public QObject
 
 public:
     static constexpr qint64 kMaxStepImagePixels = 4'000'000;
+    // What the worker does to the intermediate images: each shrunk to at most
+    // kMaxStepImagePixels with its aspect ratio kept (within a pixel), and converted to RGB32,
+    // or premultiplied ARGB32 when it has alpha.
+    static void reduceStepImages(QMap<QString, QImage> *images);
 
     explicit DetectionTask(QObject *parent = nullptr);
     // Cancels a running detection; the worker stops at its next stage and nothing is reported.
