@@ -217,13 +217,12 @@ void MainWindow::createActions()
         QString toolTip;
     } methods[] = {
         {DetectionMethod::Auto, "actionMethodAuto", tr("&Automatic"),
-            tr("Landmarks for the inner face, the photo's regions for hair and ears; the thesis pipeline when "
-               "the landmark model is missing")},
+            tr("The landmark model where it is installed, the thesis pipeline where it is not")},
         {DetectionMethod::Classic, "actionMethodClassic", tr("&Thesis Pipeline (Classic)"),
             tr("The thesis' steps only: thresholds, eye pair, edges and feature regions; best on a plain "
                "background with frontal light")},
         {DetectionMethod::Landmarks, "actionMethodLandmarks", tr("&Landmarks"),
-            tr("The landmark model's 68 points mapped to the face model, hair and ears by a geometric rule")},
+            tr("The landmark model's 68 points mapped to the face model, hair and ears found around them")},
     };
     const QString current = Settings().detectionMethod();
     for (const auto &m : methods) {
