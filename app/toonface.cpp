@@ -8,6 +8,7 @@
 #include <QTimer>
 #include <QTranslator>
 
+#include <cstdio>
 #include <memory>
 
 namespace {
@@ -25,17 +26,24 @@ void installTranslations(QApplication &app)
 }
 
 // For looking at the window in headless runs: TOONFACE_SCREENSHOT=out.png saves the window
-// once it has been idle (nothing opening or detecting) for a moment, then quits.
-void scheduleScreenshot(toonface::MainWindow &window, const QString &path)
+// once it has been idle (nothing opening or detecting) for a moment, then quits;
+// TOONFACE_SCREENSHOT_STEP=NAME shows that detection step (e.g. classic-b1) first.
+void scheduleScreenshot(toonface::MainWindow &window, const QString &path, const QString &step)
 {
     auto *timer = new QTimer(&window);
     timer->setInterval(500);
     auto idleTicks = std::make_shared<int>(0);
-    QObject::connect(timer, &QTimer::timeout, &window, [&window, path, timer, idleTicks] {
+    QObject::connect(timer, &QTimer::timeout, &window, [&window, path, step, timer, idleTicks] {
         *idleTicks = window.isBusy() ? 0 : *idleTicks + 1;
         if (*idleTicks < 3)
             return;
         timer->stop();
+        if (!step.isEmpty()) {
+            window.showDetectionStep(step);
+            if (window.overlayStep() != step)
+                qWarning("toonface: no detection step %s to show", qPrintable(step));
+            QApplication::processEvents();
+        }
         window.grab().save(path);
         QApplication::exit(0);
     });
@@ -60,15 +68,27 @@ int main(int argc, char *argv[])
     parser.addVersionOption();
     parser.addPositionalArgument(QStringLiteral("file"),
         QApplication::translate("main", "A photo or a .toonface project to open."), QStringLiteral("[file]"));
+    const QCommandLineOption methodOption(QStringLiteral("method"),
+        QApplication::translate("main", "Detect faces with METHOD in this session: auto, classic or landmarks."),
+        QStringLiteral("METHOD"));
+    parser.addOption(methodOption);
     parser.process(app);
+    toonface::DetectionMethod method = toonface::DetectionMethod::Auto;
+    if (parser.isSet(methodOption) && !toonface::detectionMethodFromName(parser.value(methodOption), &method)) {
+        std::fprintf(stderr, "toonface: error: unknown detection method \"%s\" (auto, classic or landmarks)\n",
+            qPrintable(parser.value(methodOption)));
+        return 2;
+    }
 
     toonface::MainWindow window;
+    if (parser.isSet(methodOption))
+        window.setDetectionMethod(method);
     window.show();
     const QStringList files = parser.positionalArguments();
     window.startup(files.isEmpty() ? QString() : QDir::current().absoluteFilePath(files.first()));
 
     const QString screenshot = qEnvironmentVariable("TOONFACE_SCREENSHOT");
     if (!screenshot.isEmpty())
-        scheduleScreenshot(window, screenshot);
+        scheduleScreenshot(window, screenshot, qEnvironmentVariable("TOONFACE_SCREENSHOT_STEP"));
     return app.exec();
 }

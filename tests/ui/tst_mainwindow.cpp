@@ -3,6 +3,9 @@
 #include "detect/detector.h"
 #include "document/autosaver.h"
 #include "views/photoview.h"
+#include "views/pointhandle.h"
+#include "views/stepimagedialog.h"
+#include "window/detectionsteps.h"
 #include "window/mainwindow.h"
 #include "window/settings.h"
 
@@ -11,10 +14,12 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QFile>
+#include <QGraphicsPixmapItem>
 #include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -53,6 +58,39 @@ std::shared_ptr<bool> answerNextMessageBox(const QString &button)
     return answered;
 }
 
+// Clicks, for as long as it lives, the first button containing one of `buttons` in any
+// message box that comes up (a method that finds no face offers the average face, or warns
+// that the points are unchanged).
+class MessageBoxAnswerer
+{
+public:
+    explicit MessageBoxAnswerer(const QStringList &answers)
+    {
+        m_timer.setInterval(20);
+        QObject::connect(&m_timer, &QTimer::timeout, [this, answers] {
+            auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+            if (!box)
+                return;
+            const QList<QAbstractButton *> buttons = box->buttons();
+            for (const QString &answer : answers) {
+                for (QAbstractButton *b : buttons) {
+                    if (b->text().remove(QLatin1Char('&')).contains(answer)) {
+                        ++m_answered;
+                        b->click();
+                        return;
+                    }
+                }
+            }
+        });
+        m_timer.start();
+    }
+    int answered() const { return m_answered; }
+
+private:
+    QTimer m_timer;
+    int m_answered = 0;
+};
+
 } // namespace
 
 class TestMainWindow : public QObject
@@ -77,6 +115,47 @@ private:
     }
 
     QAction *action(const char *name) const { return m_window->findChild<QAction *>(QLatin1StringView(name)); }
+    QAction *action(const QString &name) const { return m_window->findChild<QAction *>(name); }
+    QMenu *stepsMenu() const { return m_window->findChild<QMenu *>(QStringLiteral("menuDetectionSteps")); }
+    QComboBox *stepsCombo() const { return m_window->findChild<QComboBox *>(QStringLiteral("detectionStepCombo")); }
+    QSlider *opacitySlider() const { return m_window->findChild<QSlider *>(QStringLiteral("overlayOpacitySlider")); }
+
+    // Opens the portrait and waits for its detection; false (with a skip or failure recorded)
+    // when there is nothing to test with.
+    bool openPortrait()
+    {
+        if (!QFile::exists(kPortrait)) {
+            QTest::qSkip("grace_hopper.jpg is not installed (package python-matplotlib-data)", __FILE__, __LINE__);
+            return false;
+        }
+        QSignalSpy done(m_window.get(), &MainWindow::detectionDone);
+        m_window->openFile(kPortrait);
+        if (!QTest::qWaitFor([&] { return done.size() == 1; }, 120000)) {
+            QTest::qFail("the portrait's detection did not end", __FILE__, __LINE__);
+            return false;
+        }
+        return true;
+    }
+
+    bool redetect()
+    {
+        QSignalSpy done(m_window.get(), &MainWindow::detectionDone);
+        action("actionRedetect")->trigger();
+        return QTest::qWaitFor([&] { return done.size() == 1; }, 120000);
+    }
+
+    // The photo-sized steps listed in the menu, in order, and the close-ups.
+    QStringList listedSteps(bool closeUps) const
+    {
+        QStringList names;
+        const QList<QAction *> actions = stepsMenu()->actions();
+        for (const QAction *a : actions) {
+            const QString name = a->data().toString();
+            if (!a->isSeparator() && !name.isEmpty() && DetectionSteps::isCloseUp(name) == closeUps)
+                names << name;
+        }
+        return names;
+    }
 
     void openProject()
     {
@@ -360,6 +439,218 @@ private Q_SLOTS:
         QCOMPARE(doc->undoStack()->count(), 1);
         QCOMPARE(doc->undoStack()->undoText(), QStringLiteral("Place average face"));
         QVERIFY(QRectF(0, 0, 320, 240).contains(doc->face().bounds(PointGroup::Mouth)));
+    }
+
+    void detectionStepsNeedADetection()
+    {
+        makeWindow();
+        QVERIFY(!stepsMenu()->menuAction()->isEnabled());
+        QVERIFY(stepsMenu()->menuAction()->toolTip().contains(QStringLiteral("Open a photo")));
+        openProject();
+        // A project keeps no steps: the menu says so and how to get them.
+        QVERIFY(m_window->detectionSteps()->isEmpty());
+        QVERIFY(!stepsMenu()->menuAction()->isEnabled());
+        QVERIFY(!stepsCombo()->isEnabled());
+        QVERIFY(stepsMenu()->menuAction()->toolTip().contains(QStringLiteral("Re-detect")));
+        QCOMPARE(stepsCombo()->toolTip(), stepsMenu()->menuAction()->toolTip());
+        QVERIFY(!m_window->photoView()->hasOverlay());
+    }
+
+    void detectionStepsOfThePortraitShowOverThePhoto()
+    {
+        makeWindow();
+        if (!openPortrait())
+            return;
+        Document *doc = m_window->document();
+        QVERIFY(doc->hasFace());
+        DetectionSteps *steps = m_window->detectionSteps();
+        QVERIFY(!steps->isEmpty());
+
+        // The menu and the combo list every step by its name for people, None first and checked.
+        QVERIFY(stepsMenu()->menuAction()->isEnabled());
+        QVERIFY(stepsCombo()->isEnabled());
+        QStringList overlays;
+        QStringList closeUps;
+        for (const QString &name : steps->names())
+            (DetectionSteps::isCloseUp(name) ? closeUps : overlays) << name;
+        QVERIFY(!overlays.isEmpty());
+        QCOMPARE(listedSteps(false), overlays);
+        QCOMPARE(listedSteps(true), closeUps);
+        QVERIFY(action("actionStepNone")->isChecked());
+        QCOMPARE(stepsCombo()->count(), overlays.size() + 1);
+        QCOMPARE(stepsCombo()->currentIndex(), 0);
+        for (int i = 0; i < overlays.size(); ++i) {
+            QCOMPARE(
+                action(QStringLiteral("actionStep-") + overlays[i])->text(), DetectionSteps::displayName(overlays[i]));
+            QCOMPARE(stepsCombo()->itemText(i + 1), DetectionSteps::displayName(overlays[i]));
+        }
+        QVERIFY(!m_window->photoView()->hasOverlay());
+
+        // Choosing one lays it over the whole photo, with the slider's opacity.
+        PhotoView *view = m_window->photoView();
+        view->fitToWindow();
+        opacitySlider()->setValue(100);
+        QCoreApplication::processEvents();
+        const QImage plain = view->viewport()->grab().toImage();
+        // Photo pixels (on a grid) where a step's picture is opaque and clearly not the photo.
+        const QRectF photoRect(QPointF(), QSizeF(doc->photo().size()));
+        auto differing = [&](const QString &name) {
+            const QImage picture = steps->image(name).scaled(doc->photo().size());
+            QList<QPoint> points;
+            for (int y = 4; y < photoRect.height() - 4; y += 7) {
+                for (int x = 4; x < photoRect.width() - 4; x += 7) {
+                    const QRgb over = picture.pixel(x, y);
+                    const QRgb under = doc->photo().pixel(x, y);
+                    const int contrast = std::abs(qRed(over) - qRed(under)) + std::abs(qGreen(over) - qGreen(under))
+                        + std::abs(qBlue(over) - qBlue(under));
+                    if (qAlpha(over) == 255 && contrast >= 60)
+                        points.append(QPoint(x, y));
+                }
+            }
+            return points;
+        };
+        QString step = overlays.first(); // the step that differs most from the photo
+        QList<QPoint> stepDiffers = differing(step);
+        for (const QString &name : std::as_const(overlays)) {
+            const QList<QPoint> points = differing(name);
+            if (points.size() > stepDiffers.size()) {
+                step = name;
+                stepDiffers = points;
+            }
+        }
+        action(QStringLiteral("actionStep-") + step)->trigger();
+        QCOMPARE(m_window->overlayStep(), step);
+        QVERIFY(view->hasOverlay());
+        QCOMPARE(stepsCombo()->currentData().toString(), step);
+        QVERIFY(action(QStringLiteral("actionStep-") + step)->isChecked());
+        QCOMPARE(view->overlayItem()->sceneBoundingRect(), photoRect);
+        QCOMPARE(view->overlayItem()->opacity(), 1.0);
+
+        // Where the step's picture is opaque and differs from the photo, the view shows it.
+        QCoreApplication::processEvents();
+        const QImage covered = view->viewport()->grab().toImage();
+        int opaque = 0;
+        int changed = 0;
+        for (const QPoint &p : std::as_const(stepDiffers)) {
+            const QPoint v = view->mapFromScene(QPointF(p) + QPointF(0.5, 0.5));
+            if (!view->viewport()->rect().contains(v))
+                continue;
+            ++opaque;
+            changed += covered.pixel(v) != plain.pixel(v);
+        }
+        QVERIFY2(opaque > 100, qPrintable(QString::number(opaque)));
+        QVERIFY2(changed >= opaque * 0.95, qPrintable(QStringLiteral("%1 of %2").arg(changed).arg(opaque)));
+
+        opacitySlider()->setValue(35);
+        QCOMPARE(view->overlayItem()->opacity(), 0.35);
+        QCOMPARE(Settings().overlayOpacity(), 0.35);
+
+        // The combo chooses too, and None takes the overlay away.
+        if (overlays.size() > 1) {
+            stepsCombo()->setCurrentIndex(2);
+            Q_EMIT stepsCombo()->activated(2);
+            QCOMPARE(m_window->overlayStep(), overlays[1]);
+            QVERIFY(action(QStringLiteral("actionStep-") + overlays[1])->isChecked());
+        }
+        action("actionStepNone")->trigger();
+        QVERIFY(!view->hasOverlay());
+        QVERIFY(m_window->overlayStep().isEmpty());
+        QVERIFY(!opacitySlider()->isEnabled());
+        m_window->showDetectionStep(step);
+        QVERIFY(opacitySlider()->isEnabled());
+
+        // Points still drag with the overlay shown, one undo step each.
+        const int i = pt::idx("8.4");
+        const QPointF before = doc->face().point(i);
+        const int undoCount = doc->undoStack()->count();
+        const QPoint from = view->mapFromScene(before);
+        QTest::mousePress(view->viewport(), Qt::LeftButton, Qt::NoModifier, from);
+        for (int s = 1; s <= 6; ++s)
+            QTest::mouseMove(view->viewport(), from + QPoint(2 * s, 3 * s));
+        QTest::mouseRelease(view->viewport(), Qt::LeftButton, Qt::NoModifier, from + QPoint(12, 18));
+        QVERIFY(QLineF(doc->face().point(i), before + QPointF(12, 18) / view->zoom()).length() < 1.5 / view->zoom());
+        QCOMPARE(doc->undoStack()->count(), undoCount + 1);
+        QVERIFY(view->hasOverlay());
+
+        // A close-up opens in a window of its own and leaves the overlay as it was.
+        if (!closeUps.isEmpty()) {
+            action(QStringLiteral("actionStep-") + closeUps.first())->trigger();
+            auto *dialog = m_window->findChild<StepImageDialog *>(QStringLiteral("closeUp-") + closeUps.first());
+            QVERIFY(dialog);
+            QVERIFY(dialog->isVisible());
+            QCOMPARE(dialog->windowTitle(), DetectionSteps::displayName(closeUps.first()));
+            QVERIFY(!dialog->shownPixmap().isNull());
+            QCOMPARE(m_window->overlayStep(), step);
+        }
+
+        // Undoing the drag and the detection keeps the steps (they belong to the photo, not the points).
+        while (doc->undoStack()->canUndo())
+            doc->undoStack()->undo();
+        QVERIFY(!doc->hasFace());
+        QVERIFY(!steps->isEmpty());
+        QVERIFY(view->hasOverlay());
+        doc->undoStack()->setClean();
+
+        // Another photo (here a project's) drops them, the close-ups with them.
+        openProject();
+        QVERIFY(steps->isEmpty());
+        QVERIFY(!view->hasOverlay());
+        QVERIFY(m_window->overlayStep().isEmpty());
+        QVERIFY(!stepsMenu()->menuAction()->isEnabled());
+        QCOMPARE(listedSteps(false), QStringList());
+        QCOMPARE(stepsCombo()->count(), 1);
+        QTRY_VERIFY(m_window->findChildren<StepImageDialog *>().isEmpty());
+    }
+
+    void detectionMethodComesFromTheSettings()
+    {
+        Settings().setDetectionMethod(QStringLiteral("landmarks"));
+        makeWindow();
+        QVERIFY(action("actionMethodLandmarks")->isChecked());
+        QVERIFY(!action("actionMethodAuto")->isChecked());
+        QCOMPARE(m_window->detectionMethod(), DetectionMethod::Landmarks);
+        action("actionMethodClassic")->trigger();
+        QCOMPARE(Settings().detectionMethod(), QStringLiteral("classic"));
+    }
+
+    void detectionMethodChoosesTheSteps()
+    {
+        makeWindow();
+        QVERIFY(action("actionMethodAuto")->isChecked());
+        m_window->setDetectionMethod(DetectionMethod::Classic);
+        QVERIFY(action("actionMethodClassic")->isChecked());
+        QCOMPARE(m_window->detectionMethod(), DetectionMethod::Classic);
+        QCOMPARE(Settings().detectionMethod(), QStringLiteral("auto")); // this session only
+        const MessageBoxAnswerer answerer({QStringLiteral("OK"), QStringLiteral("Cancel")});
+        if (!openPortrait())
+            return;
+        // The thesis pipeline may or may not place a face on this photo; its steps show how far it got.
+        const QStringList classic = m_window->detectionSteps()->names();
+        QVERIFY(!classic.isEmpty());
+        for (const QString &name : classic)
+            QVERIFY2(name.startsWith(QStringLiteral("classic-")), qPrintable(name));
+        QVERIFY(classic.contains(QStringLiteral("classic-b1")));
+        m_window->showDetectionStep(QStringLiteral("classic-b1"));
+        QCOMPARE(m_window->overlayStep(), QStringLiteral("classic-b1"));
+
+        // The menu switches the method; re-detection replaces the steps and keeps the chosen
+        // one when the new run has it too.
+        action("actionMethodLandmarks")->trigger();
+        QCOMPARE(m_window->detectionMethod(), DetectionMethod::Landmarks);
+        QCOMPARE(Settings().detectionMethod(), QStringLiteral("landmarks"));
+        QVERIFY(action("actionRedetect")->isEnabled()); // with or without a face from the classic run
+        QVERIFY(redetect());
+        const QStringList landmarks = m_window->detectionSteps()->names();
+        QVERIFY(!landmarks.isEmpty());
+        for (const QString &name : landmarks)
+            QVERIFY2(!name.startsWith(QStringLiteral("classic-")), qPrintable(name));
+        QVERIFY(m_window->overlayStep().isEmpty()); // B1 is not a landmark step
+
+        m_window->showDetectionStep(landmarks.first());
+        const QString shown = m_window->overlayStep();
+        QVERIFY(!shown.isEmpty());
+        QVERIFY(redetect());
+        QCOMPARE(m_window->overlayStep(), shown);
     }
 
     void photoIsDetectedInTheBackground()

@@ -5,6 +5,8 @@
 #include "views/previewview.h"
 
 #include <QApplication>
+#include <QGraphicsPixmapItem>
+#include <QGraphicsScene>
 #include <QHBoxLayout>
 #include <QLineF>
 #include <QSignalSpy>
@@ -25,7 +27,48 @@ void drag(QWidget *viewport, QPoint from, QPoint by, int steps = 6)
     QTest::mouseRelease(viewport, Qt::LeftButton, Qt::NoModifier, from + by);
 }
 
+// A picture of the photo's frame at `size`: opaque red on its left half, transparent on the right.
+QImage halfRedOverlay(QSize size)
+{
+    QImage image(size, QImage::Format_ARGB32);
+    image.fill(Qt::transparent);
+    for (int y = 0; y < size.height(); ++y)
+        for (int x = 0; x < size.width() / 2; ++x)
+            image.setPixel(x, y, qRgb(255, 0, 0));
+    return image;
+}
+
+bool isPureRed(QRgb c)
+{
+    return qRed(c) >= 250 && qGreen(c) <= 5 && qBlue(c) <= 5;
+}
+
 } // namespace
+
+// Counts a view's viewport resizes; past a bound it stops the view's fit mode (which ends a
+// resize loop) and says so.
+class ResizeGuard : public QObject
+{
+public:
+    explicit ResizeGuard(PhotoView *view)
+        : m_view(view)
+    { }
+    int resizes = 0;
+    bool tripped = false;
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override
+    {
+        if (event->type() == QEvent::Resize && ++resizes > 200 && !tripped) {
+            tripped = true;
+            m_view->zoomIn();
+        }
+        return QObject::eventFilter(watched, event);
+    }
+
+private:
+    PhotoView *m_view;
+};
 
 class TestPhotoView : public QObject
 {
@@ -38,6 +81,31 @@ private:
     PreviewView *m_preview = nullptr;
 
     QPoint viewportPos(int index) const { return m_photo->mapFromScene(m_doc->face().point(index)); }
+
+    QImage grabView() const
+    {
+        QCoreApplication::processEvents(); // pending scene updates
+        return m_photo->viewport()->grab().toImage();
+    }
+
+    // View pixels at the centres of photo pixels on a grid, left or right of the photo's middle
+    // (a margin away from it and from the edges).
+    QList<QPoint> samples(bool leftHalf) const
+    {
+        QList<QPoint> points;
+        const int w = fixture::kPhotoSize.width();
+        const int h = fixture::kPhotoSize.height();
+        for (int y = 8; y < h - 8; y += 9) {
+            for (int x = 8; x < w - 8; x += 9) {
+                if ((x < w / 2 - 6) != leftHalf || std::abs(x - w / 2) < 6)
+                    continue;
+                const QPoint v = m_photo->mapFromScene(QPointF(x + 0.5, y + 0.5));
+                if (m_photo->viewport()->rect().contains(v))
+                    points.append(v);
+            }
+        }
+        return points;
+    }
 
 private Q_SLOTS:
     void init()
@@ -214,6 +282,162 @@ private Q_SLOTS:
         QVERIFY(h->boundingRect().width() > without.width());
         m_photo->setShowPointIds(false);
         QCOMPARE(h->boundingRect(), without);
+    }
+
+    void fitModesHideTheScrollBars()
+    {
+        // init() fitted the photo.
+        QCOMPARE(m_photo->horizontalScrollBarPolicy(), Qt::ScrollBarAlwaysOff);
+        QCOMPARE(m_photo->verticalScrollBarPolicy(), Qt::ScrollBarAlwaysOff);
+        m_photo->zoomIn();
+        QCOMPARE(m_photo->fitMode(), PhotoView::Fit::None);
+        QCOMPARE(m_photo->horizontalScrollBarPolicy(), Qt::ScrollBarAsNeeded);
+        QCOMPARE(m_photo->verticalScrollBarPolicy(), Qt::ScrollBarAsNeeded);
+        m_photo->zoomToFace();
+        QCOMPARE(m_photo->horizontalScrollBarPolicy(), Qt::ScrollBarAlwaysOff);
+        QCOMPARE(m_photo->verticalScrollBarPolicy(), Qt::ScrollBarAlwaysOff);
+
+        // Framing the face at many sizes settles each time: with scroll bars that came and went
+        // with the zoom, the fit changed the room it fitted into, and the view resized itself
+        // without end. A guard counts the viewport's resizes and breaks such a loop by leaving
+        // the fit mode.
+        ResizeGuard guard(m_photo);
+        m_photo->viewport()->installEventFilter(&guard);
+        for (const QRectF &box : {QRectF(60, 60, 280, 380), QRectF(30, 20, 340, 470), QRectF(100, 150, 200, 240)}) {
+            m_doc->replaceFace(averageFace(box, fixture::kPhotoSize), false, QStringLiteral("Face"));
+            m_photo->zoomToFace();
+            for (int h = 300; h <= 700 && !guard.tripped; h += 150) {
+                for (int w = 300; w <= 1000 && !guard.tripped; w += 17) {
+                    guard.resizes = 0;
+                    m_window->resize(w, h);
+                    QCoreApplication::processEvents();
+                }
+            }
+            QVERIFY2(!guard.tripped,
+                qPrintable(
+                    QStringLiteral("the view kept resizing at %1x%2").arg(m_window->width()).arg(m_window->height())));
+        }
+    }
+
+    void overlayLiesExactlyOverThePhoto_data()
+    {
+        QTest::addColumn<QSize>("size");
+        QTest::newRow("photo's size") << fixture::kPhotoSize;
+        QTest::newRow("working size") << fixture::kPhotoSize / 2;
+        QTest::newRow("odd size") << QSize(133, 167);
+    }
+
+    void overlayLiesExactlyOverThePhoto()
+    {
+        QFETCH(QSize, size);
+        QVERIFY(!m_photo->hasOverlay());
+        m_photo->setOverlay(halfRedOverlay(size));
+        QVERIFY(m_photo->hasOverlay());
+        const QGraphicsPixmapItem *overlay = m_photo->overlayItem();
+        QVERIFY(overlay->isVisible());
+        const QRectF rect = overlay->sceneBoundingRect();
+        const QRectF photo(QPointF(), QSizeF(fixture::kPhotoSize));
+        const double tolerance = 1e-9;
+        QVERIFY2(std::abs(rect.left() - photo.left()) < tolerance && std::abs(rect.top() - photo.top()) < tolerance
+                && std::abs(rect.right() - photo.right()) < tolerance
+                && std::abs(rect.bottom() - photo.bottom()) < tolerance,
+            qPrintable(QStringLiteral("overlay at %1,%2 %3x%4")
+                           .arg(rect.x())
+                           .arg(rect.y())
+                           .arg(rect.width())
+                           .arg(rect.height())));
+
+        // Over the photo, under the outlines and every handle; it takes no clicks.
+        const QGraphicsPixmapItem *photoItem = nullptr;
+        const QList<QGraphicsItem *> items = m_photo->scene()->items();
+        for (const QGraphicsItem *item : items) {
+            const auto *pixmap = dynamic_cast<const QGraphicsPixmapItem *>(item);
+            if (pixmap && pixmap != overlay)
+                photoItem = pixmap;
+        }
+        QVERIFY(photoItem);
+        QVERIFY(overlay->zValue() > photoItem->zValue());
+        for (int i = 0; i < kPointCount; ++i)
+            QVERIFY(overlay->zValue() < m_photo->handle(i)->zValue());
+        QCOMPARE(overlay->acceptedMouseButtons(), Qt::NoButton);
+
+        m_photo->clearOverlay();
+        QVERIFY(!m_photo->hasOverlay());
+        QVERIFY(!overlay->isVisible());
+    }
+
+    void overlayCoversThePhotoWhereOpaque()
+    {
+        m_photo->setOverlayOpacity(1.0);
+        const QImage plain = grabView();
+        m_photo->setOverlay(halfRedOverlay(fixture::kPhotoSize));
+        QCOMPARE(m_photo->overlayItem()->opacity(), 1.0);
+        const QImage covered = grabView();
+        QCOMPARE(covered.size(), plain.size());
+
+        // Where the overlay is opaque the view changed (to red, except under outlines and
+        // handles, which stay on top); where it is transparent nothing changed.
+        const QList<QPoint> opaque = samples(true);
+        const QList<QPoint> clear = samples(false);
+        QVERIFY(opaque.size() > 200 && clear.size() > 200);
+        int changed = 0;
+        int red = 0;
+        for (const QPoint &p : opaque) {
+            changed += plain.pixel(p) != covered.pixel(p);
+            red += isPureRed(covered.pixel(p));
+        }
+        QVERIFY2(
+            changed >= opaque.size() * 0.95, qPrintable(QStringLiteral("%1 of %2").arg(changed).arg(opaque.size())));
+        QVERIFY2(red >= opaque.size() * 0.8, qPrintable(QStringLiteral("%1 of %2").arg(red).arg(opaque.size())));
+        for (const QPoint &p : clear)
+            QCOMPARE(covered.pixel(p), plain.pixel(p));
+
+        // At half opacity the photo shows through: halfway between it and red (±3 levels).
+        m_photo->setOverlayOpacity(0.5);
+        QCOMPARE(m_photo->overlayItem()->opacity(), 0.5);
+        const QImage blended = grabView();
+        int checked = 0;
+        for (const QPoint &p : opaque) {
+            if (!isPureRed(covered.pixel(p)))
+                continue; // an outline or a handle
+            const QRgb under = plain.pixel(p);
+            const QRgb mix = blended.pixel(p);
+            QVERIFY(std::abs(qRed(mix) - (qRed(under) + 255) / 2) <= 3);
+            QVERIFY(std::abs(qGreen(mix) - qGreen(under) / 2) <= 3);
+            QVERIFY(std::abs(qBlue(mix) - qBlue(under) / 2) <= 3);
+            ++checked;
+        }
+        QVERIFY(checked > 100);
+        m_photo->setOverlayOpacity(2.0);
+        QCOMPARE(m_photo->overlayOpacity(), 1.0);
+    }
+
+    void dragWorksThroughTheOverlay()
+    {
+        m_photo->setOverlayOpacity(1.0);
+        QImage dark(fixture::kPhotoSize, QImage::Format_RGB32);
+        dark.fill(QColor(20, 20, 20));
+        m_photo->setOverlay(dark);
+        const int i = pt::idx("8.4");
+        const QPointF before = m_doc->face().point(i);
+        const QPoint by(-20, 10);
+        drag(m_photo->viewport(), viewportPos(i), by);
+        const QPointF expected = before + QPointF(by) / m_photo->zoom();
+        QVERIFY(QLineF(m_doc->face().point(i), expected).length() < 1.5 / m_photo->zoom());
+        QVERIFY(m_doc->face().isHandPlaced(i));
+        QCOMPARE(m_doc->undoStack()->count(), 1);
+        QVERIFY(m_photo->hasOverlay());
+    }
+
+    void newPhotoDropsTheOverlay()
+    {
+        m_photo->setOverlay(halfRedOverlay(fixture::kPhotoSize));
+        m_doc->movePoint(pt::idx("2.1"), m_doc->face().point("2.1") + QPointF(0, 5), true);
+        m_doc->replaceFace(fixture::face(), false, QStringLiteral("Re-detect"));
+        QVERIFY(m_photo->hasOverlay()); // the points changed, not the photo
+        fixture::fill(*m_doc);
+        QVERIFY(!m_photo->hasOverlay());
+        QVERIFY(!m_photo->overlayItem()->isVisible());
     }
 
     void previewRebuildsOncePerBurstOfChanges()

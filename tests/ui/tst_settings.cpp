@@ -75,6 +75,28 @@ private Q_SLOTS:
         QCOMPARE(Settings().autosaveInterval(), 60);
     }
 
+    void detectionMethodAndOverlayOpacityRoundTrip()
+    {
+        Settings settings;
+        QCOMPARE(settings.detectionMethod(), QStringLiteral("auto"));
+        QCOMPARE(settings.overlayOpacity(), 0.6);
+        settings.setDetectionMethod(QStringLiteral("classic"));
+        settings.setOverlayOpacity(0.25);
+        Settings reread;
+        QCOMPARE(reread.detectionMethod(), QStringLiteral("classic"));
+        QCOMPARE(reread.overlayOpacity(), 0.25);
+    }
+
+    void badDetectionValuesFallBack()
+    {
+        QSettings().setValue(QStringLiteral("detection/method"), QStringLiteral("magic"));
+        QCOMPARE(Settings().detectionMethod(), QStringLiteral("auto"));
+        QSettings().setValue(QStringLiteral("view/overlayOpacity"), QStringLiteral("half"));
+        QCOMPARE(Settings().overlayOpacity(), 0.6);
+        QSettings().setValue(QStringLiteral("view/overlayOpacity"), 3.0);
+        QCOMPARE(Settings().overlayOpacity(), 1.0);
+    }
+
     void settingsStayInTheTestSandbox()
     {
         QVERIFY2(QSettings().fileName().contains(QStringLiteral(".qttest")), qPrintable(QSettings().fileName()));

@@ -66,6 +66,15 @@ PhotoView::PhotoView(Document *document, QWidget *parent)
     m_photoItem = m_scene->addPixmap(QPixmap());
     m_photoItem->setTransformationMode(Qt::SmoothTransformation);
     m_photoItem->setZValue(0);
+    // Between the photo (0) and the outlines (1) and handles (2, 3); it takes no clicks, so
+    // the handles and the hand-drag of the view work through it.
+    m_overlayItem = m_scene->addPixmap(QPixmap());
+    m_overlayItem->setTransformationMode(Qt::SmoothTransformation);
+    m_overlayItem->setZValue(0.5);
+    m_overlayItem->setAcceptedMouseButtons(Qt::NoButton);
+    m_overlayItem->setAcceptHoverEvents(false);
+    m_overlayItem->setOpacity(m_overlayOpacity);
+    m_overlayItem->setVisible(false);
 
     QPen outlinePen(QColor(255, 255, 255, 150), 1.0);
     outlinePen.setCosmetic(true);
@@ -79,6 +88,7 @@ PhotoView::PhotoView(Document *document, QWidget *parent)
         m_handles.append(handle);
     }
 
+    updateScrollBars();
     connect(m_document, &Document::changed, this, &PhotoView::onDocumentChanged);
     syncPhoto();
     syncPoints();
@@ -94,6 +104,37 @@ PointHandle *PhotoView::handle(int index) const
 double PhotoView::zoom() const
 {
     return transform().m11();
+}
+
+void PhotoView::setOverlay(const QImage &image)
+{
+    m_overlayItem->setPixmap(image.isNull() ? QPixmap() : QPixmap::fromImage(image));
+    placeOverlay();
+}
+
+bool PhotoView::hasOverlay() const
+{
+    return m_overlayItem->isVisible();
+}
+
+void PhotoView::setOverlayOpacity(double opacity)
+{
+    m_overlayOpacity = std::clamp(opacity, 0.0, 1.0);
+    m_overlayItem->setOpacity(m_overlayOpacity);
+}
+
+void PhotoView::placeOverlay()
+{
+    const QPixmap pixmap = m_overlayItem->pixmap();
+    const QSizeF photo = m_photoItem->pixmap().size();
+    const bool show = !pixmap.isNull() && !photo.isEmpty();
+    m_overlayItem->setVisible(show);
+    if (!show)
+        return;
+    // Exactly over the photo: pixel edges on pixel edges, whatever the overlay's resolution.
+    m_overlayItem->setPos(m_photoItem->pos());
+    m_overlayItem->setTransform(
+        QTransform::fromScale(photo.width() / pixmap.width(), photo.height() / pixmap.height()));
 }
 
 void PhotoView::dragPoint(int index, QPointF pos, bool commit)
@@ -132,13 +173,26 @@ void PhotoView::zoomToActualSize()
 void PhotoView::fitToWindow()
 {
     m_fit = Fit::Photo;
+    updateScrollBars();
     applyFit();
 }
 
 void PhotoView::zoomToFace()
 {
     m_fit = Fit::Face;
+    updateScrollBars();
     applyFit();
+}
+
+void PhotoView::updateScrollBars()
+{
+    // A fit mode frames its target in whatever room the viewport has. Scroll bars that come
+    // and go with the zoom would change that room and the fit again, without end when the
+    // target is about as large as the scene (a face whose hair points reach the photo's
+    // edges); the hand drag still pans.
+    const Qt::ScrollBarPolicy policy = m_fit == Fit::None ? Qt::ScrollBarAsNeeded : Qt::ScrollBarAlwaysOff;
+    setHorizontalScrollBarPolicy(policy);
+    setVerticalScrollBarPolicy(policy);
 }
 
 void PhotoView::applyFit()
@@ -174,6 +228,8 @@ void PhotoView::resizeEvent(QResizeEvent *event)
 
 void PhotoView::onDocumentChanged(ChangeFlags what)
 {
+    if (what & Change::Photo)
+        m_overlayItem->setPixmap(QPixmap()); // it belonged to the previous photo
     if (what & (Change::Photo | Change::Face))
         syncPhoto();
     if (what & (Change::Points | Change::Face))
@@ -187,6 +243,7 @@ void PhotoView::syncPhoto()
     const QRectF canvas(QPointF(), QSizeF(m_document->canvasSize()));
     m_canvasItem->setRect(canvas);
     m_canvasItem->setVisible(photo.isNull() && !canvas.isEmpty());
+    placeOverlay();
 
     // Room around the photo for points outside it (hair, ears), fixed until the next face,
     // so that the scene does not shift under a drag.
@@ -240,6 +297,7 @@ void PhotoView::setZoom(double zoom)
     if (current <= 0 || zoom == current)
         return;
     m_fit = Fit::None;
+    updateScrollBars();
     scale(zoom / current, zoom / current);
     Q_EMIT zoomChanged(this->zoom());
 }

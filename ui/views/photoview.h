@@ -19,6 +19,10 @@ class PointHandle;
 // cursor. Two fit modes keep their target framed as the view resizes and the face changes:
 // fitToWindow() (the whole photo) and zoomToFace() (the initial mode: the face, where the
 // points are edited; the whole photo while there is no face).
+//
+// An overlay picture (a step of the detection) can be laid over the photo, under the outlines
+// and handles, stretched to the photo's frame and drawn with an opacity; it is dropped when
+// the photo changes.
 class PhotoView : public QGraphicsView
 {
     Q_OBJECT
@@ -34,6 +38,17 @@ public:
     double zoom() const;
     enum class Fit { None, Photo, Face };
     Fit fitMode() const { return m_fit; }
+
+    // Lays `image` over the photo, stretched to the photo's rectangle (it shows the photo's
+    // frame, maybe at a lower resolution); a null image removes the overlay.
+    void setOverlay(const QImage &image);
+    void clearOverlay() { setOverlay({}); }
+    bool hasOverlay() const;
+    // 0 (invisible) .. 1 (hides the photo where the overlay is opaque).
+    void setOverlayOpacity(double opacity);
+    double overlayOpacity() const { return m_overlayOpacity; }
+    // The item drawing the overlay (for tests).
+    QGraphicsPixmapItem *overlayItem() const { return m_overlayItem; }
 
     // Called by the handles.
     void dragPoint(int index, QPointF pos, bool commit);
@@ -63,10 +78,14 @@ private:
     void updateOutlines();
     void setZoom(double zoom);
     void applyFit();
+    void updateScrollBars();
+    void placeOverlay();
 
     Document *m_document;
     QGraphicsScene *m_scene;
     QGraphicsPixmapItem *m_photoItem;
+    QGraphicsPixmapItem *m_overlayItem;
+    double m_overlayOpacity = 0.6;
     QGraphicsRectItem *m_canvasItem;
     QGraphicsPathItem *m_outlineItem;
     QVector<PointHandle *> m_handles;

@@ -3,6 +3,10 @@
 #include <QPromise>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
 namespace toonface {
 
 namespace {
@@ -10,6 +14,22 @@ namespace {
 constexpr int kProgressSteps = 1000;
 
 } // namespace
+
+// Each image is drawn stretched over the photo, so its resolution only limits sharpness.
+void DetectionTask::reduceStepImages(QMap<QString, QImage> *images)
+{
+    for (auto it = images->begin(); it != images->end(); ++it) {
+        QImage image = it.value();
+        const qint64 pixels = qint64(image.width()) * image.height();
+        if (pixels > kMaxStepImagePixels) {
+            const double k = std::sqrt(double(kMaxStepImagePixels) / double(pixels));
+            image = image.scaled(std::max(1, int(image.width() * k)), std::max(1, int(image.height() * k)),
+                Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
+        }
+        *it = image.convertToFormat(
+            image.hasAlphaChannel() ? QImage::Format_ARGB32_Premultiplied : QImage::Format_RGB32);
+    }
+}
 
 DetectionTask::DetectionTask(QObject *parent)
     : QObject(parent)
@@ -25,13 +45,17 @@ void DetectionTask::start(const QImage &image, const DetectOptions &options)
     drop();
     auto cancelFlag = std::make_shared<std::atomic_bool>(false);
     m_cancel = cancelFlag;
+    DetectOptions withSteps = options;
+    withSteps.keepDebugImages = true;
     QFuture<DetectionResult> future
-        = QtConcurrent::run([image, options, cancelFlag](QPromise<DetectionResult> &promise) {
+        = QtConcurrent::run([image, withSteps, cancelFlag](QPromise<DetectionResult> &promise) {
               promise.setProgressRange(0, kProgressSteps);
               const ProgressFn report = [&promise](double fraction, const QString &stage) {
                   promise.setProgressValueAndText(int(fraction * kProgressSteps), stage);
               };
-              promise.addResult(detectFace(image, options, report, cancelFlag.get()));
+              DetectionResult result = detectFace(image, withSteps, report, cancelFlag.get());
+              reduceStepImages(&result.debugImages);
+              promise.addResult(std::move(result));
           });
 
     auto *watcher = new QFutureWatcher<DetectionResult>(this);

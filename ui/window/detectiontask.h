@@ -14,16 +14,27 @@ namespace toonface {
 // Runs detectFace() off the GUI thread (QtConcurrent::run) and reports its progress and
 // result by signals on the thread that owns the task. One detection at a time: start()
 // cancels a running one, whose result is then dropped.
+//
+// The result keeps the detection's intermediate images (DetectionResult::debugImages) for
+// the editor's overlays, reduced in the worker to at most kMaxStepImagePixels each and
+// converted for fast drawing, so that a large photo does not hold a dozen full-size copies.
 class DetectionTask : public QObject
 {
     Q_OBJECT
 
 public:
+    static constexpr qint64 kMaxStepImagePixels = 4'000'000;
+    // What the worker does to the intermediate images: each shrunk to at most
+    // kMaxStepImagePixels with its aspect ratio kept (within a pixel), and converted to RGB32,
+    // or premultiplied ARGB32 when it has alpha.
+    static void reduceStepImages(QMap<QString, QImage> *images);
+
     explicit DetectionTask(QObject *parent = nullptr);
     // Cancels a running detection; the worker stops at its next stage and nothing is reported.
     ~DetectionTask() override;
 
     // image: a copy travels to the worker (QImage is implicitly shared and read-only there).
+    // options.keepDebugImages is set whatever the caller asked.
     void start(const QImage &image, const DetectOptions &options = {});
     // Asks the running detection to stop; cancelled() follows.
     void cancel();

@@ -7,10 +7,13 @@
 #include "views/photoview.h"
 #include "views/pointhandle.h"
 #include "views/previewview.h"
+#include "views/stepimagedialog.h"
+#include "window/detectionsteps.h"
 #include "window/detectiontask.h"
 #include "window/settings.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
@@ -27,6 +30,7 @@
 #include <QPushButton>
 #include <QSaveFile>
 #include <QScreen>
+#include <QSlider>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QToolBar>
@@ -41,6 +45,7 @@ namespace toonface {
 namespace {
 
 constexpr int kStatusTimeoutMs = 6000;
+constexpr int kOpacitySteps = 100; // the opacity slider's range, 0..kOpacitySteps
 
 QString photoFilter()
 {
@@ -92,6 +97,7 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
     , m_options(options)
     , m_document(new Document(this))
     , m_detection(new DetectionTask(this))
+    , m_steps(new DetectionSteps(this))
 {
     setObjectName(QStringLiteral("MainWindow"));
     setAcceptDrops(true);
@@ -135,6 +141,7 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
     });
     connect(m_detection, &DetectionTask::finished, this, &MainWindow::onDetectionFinished);
     connect(m_detection, &DetectionTask::cancelled, this, &MainWindow::onDetectionCancelled);
+    connect(m_steps, &DetectionSteps::changed, this, &MainWindow::onDetectionStepsChanged);
 
     if (m_options.preloadLandmarkModel) {
         auto *watcher = new QFutureWatcher<QString>(this);
@@ -154,6 +161,7 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
     }
 
     onDocumentChanged(Change::Photo | Change::Face | Change::Style | Change::FileState);
+    onDetectionStepsChanged();
 }
 
 MainWindow::~MainWindow() = default;
@@ -198,6 +206,36 @@ void MainWindow::createActions()
         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
     m_redetectKeepAction->setToolTip(tr("Detect the face again but keep the points placed by hand"));
     connect(m_redetectKeepAction, &QAction::triggered, this, [this] { startDetection(true); });
+
+    m_methodGroup = new QActionGroup(this);
+    m_methodGroup->setExclusive(true);
+    const struct
+    {
+        DetectionMethod method;
+        const char *objectName;
+        QString text;
+        QString toolTip;
+    } methods[] = {
+        {DetectionMethod::Auto, "actionMethodAuto", tr("&Automatic"),
+            tr("The landmark model where it is installed, the thesis pipeline where it is not")},
+        {DetectionMethod::Classic, "actionMethodClassic", tr("&Thesis Pipeline (Classic)"),
+            tr("The thesis' steps only: thresholds, eye pair, edges and feature regions; best on a plain "
+               "background with frontal light")},
+        {DetectionMethod::Landmarks, "actionMethodLandmarks", tr("&Landmarks"),
+            tr("The landmark model's 68 points mapped to the face model, hair and ears found around them")},
+    };
+    const QString current = Settings().detectionMethod();
+    for (const auto &m : methods) {
+        QAction *action = make(QLatin1StringView(m.objectName), m.text);
+        action->setCheckable(true);
+        action->setToolTip(m.toolTip);
+        action->setStatusTip(m.toolTip);
+        action->setData(detectionMethodName(m.method));
+        action->setChecked(detectionMethodName(m.method) == current);
+        m_methodGroup->addAction(action);
+    }
+    connect(m_methodGroup, &QActionGroup::triggered, this,
+        [](QAction *action) { Settings().setDetectionMethod(action->data().toString()); });
 
     m_zoomInAction = make(QStringLiteral("actionZoomIn"), tr("Zoom &In"), QKeySequence::ZoomIn);
     connect(m_zoomInAction, &QAction::triggered, m_photoView, &PhotoView::zoomIn);
@@ -249,6 +287,10 @@ void MainWindow::createMenus()
     edit->addSeparator();
     edit->addAction(m_redetectAction);
     edit->addAction(m_redetectKeepAction);
+    m_methodMenu = edit->addMenu(tr("Detection &Method"));
+    m_methodMenu->setObjectName(QStringLiteral("menuDetectionMethod"));
+    m_methodMenu->setToolTipsVisible(true);
+    m_methodMenu->addActions(m_methodGroup->actions());
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_zoomInAction);
@@ -258,6 +300,14 @@ void MainWindow::createMenus()
     view->addAction(m_zoomFaceAction);
     view->addSeparator();
     view->addAction(m_showIdsAction);
+    view->addSeparator();
+    // Tool tips on, so that the disabled steps entry can say why it is disabled.
+    view->setToolTipsVisible(true);
+    m_stepsMenu = view->addMenu(tr("Detection &Steps"));
+    m_stepsMenu->setObjectName(QStringLiteral("menuDetectionSteps"));
+    m_stepsMenu->setToolTipsVisible(true);
+    m_stepsGroup = new QActionGroup(this);
+    m_stepsGroup->setExclusive(true);
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(m_aboutAction);
@@ -292,6 +342,35 @@ void MainWindow::createToolBar()
     bar->addSeparator();
     bar->addAction(m_fitAction);
     bar->addAction(m_zoomFaceAction);
+
+    // Below the views, beside the photo it acts on, where the main toolbar's width does not
+    // push it out of sight.
+    m_stepsToolBar = new QToolBar(tr("Detection Steps"), this);
+    addToolBar(Qt::BottomToolBarArea, m_stepsToolBar);
+    m_stepsToolBar->setObjectName(QStringLiteral("detectionStepsToolBar"));
+    auto *stepLabel = new QLabel(tr("Step:") + QLatin1Char(' '));
+    m_stepsToolBar->addWidget(stepLabel);
+    m_stepsCombo = new QComboBox;
+    m_stepsCombo->setObjectName(QStringLiteral("detectionStepCombo"));
+    m_stepsCombo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    stepLabel->setBuddy(m_stepsCombo);
+    connect(m_stepsCombo, &QComboBox::activated, this,
+        [this](int index) { setOverlayStep(m_stepsCombo->itemData(index).toString()); });
+    m_stepsToolBar->addWidget(m_stepsCombo);
+    m_stepsToolBar->addWidget(new QLabel(QLatin1Char(' ') + tr("Opacity:") + QLatin1Char(' ')));
+    m_opacitySlider = new QSlider(Qt::Horizontal);
+    m_opacitySlider->setObjectName(QStringLiteral("overlayOpacitySlider"));
+    m_opacitySlider->setRange(0, kOpacitySteps);
+    m_opacitySlider->setPageStep(kOpacitySteps / 10);
+    m_opacitySlider->setFixedWidth(110);
+    m_opacitySlider->setToolTip(tr("How strongly the detection step covers the photo"));
+    m_opacitySlider->setValue(qRound(Settings().overlayOpacity() * kOpacitySteps));
+    m_photoView->setOverlayOpacity(double(m_opacitySlider->value()) / kOpacitySteps);
+    connect(m_opacitySlider, &QSlider::valueChanged, this, [this](int value) {
+        m_photoView->setOverlayOpacity(double(value) / kOpacitySteps);
+        Settings().setOverlayOpacity(double(value) / kOpacitySteps);
+    });
+    m_stepsToolBar->addWidget(m_opacitySlider);
 }
 
 void MainWindow::createStatusBar()
@@ -434,7 +513,10 @@ void MainWindow::startDetection(bool keepHandPlaced)
     if (m_document->photo().isNull() || m_job == Job::Opening)
         return;
     m_detectKeepsHandPlaced = keepHandPlaced;
-    m_detection->start(m_document->photo());
+    m_steps->clear(); // the new run's steps replace them
+    DetectOptions options;
+    options.method = detectionMethod();
+    m_detection->start(m_document->photo(), options);
     setBusy(Job::Detecting, tr("Detecting the face…"));
 }
 
@@ -442,6 +524,8 @@ void MainWindow::onDetectionFinished(const DetectionResult &result)
 {
     if (m_job == Job::Detecting)
         setBusy(Job::None, {});
+    // Also when no face was found: the steps show how far the method got.
+    m_steps->setImages(result.debugImages);
     if (result.status != DetectStatus::Ok) {
         if (result.status == DetectStatus::BadImage || m_document->hasFace())
             QMessageBox::warning(this, tr("Detection Failed"),
@@ -636,6 +720,11 @@ void MainWindow::fillRecentMenu()
 
 void MainWindow::onDocumentChanged(ChangeFlags what)
 {
+    if (what & Change::Photo) {
+        // The steps belong to the photo they came from.
+        m_chosenStep.clear();
+        m_steps->clear();
+    }
     if (what & Change::Style)
         syncStyleCombo();
     if (what & (Change::FileState | Change::Photo))
@@ -662,6 +751,153 @@ void MainWindow::updateActions()
     m_redetectKeepAction->setEnabled(hasPhoto && hasFace && !isBusy() && m_document->face().handPlacedCount() > 0);
     m_styleCombo->setEnabled(hasFace);
     m_zoomFaceAction->setEnabled(hasFace);
+    updateDetectionStepsEnabled();
+}
+
+void MainWindow::setDetectionMethod(DetectionMethod method)
+{
+    const QString name = detectionMethodName(method);
+    const QList<QAction *> actions = m_methodGroup->actions();
+    for (QAction *action : actions)
+        action->setChecked(action->data().toString() == name);
+}
+
+DetectionMethod MainWindow::detectionMethod() const
+{
+    DetectionMethod method = DetectionMethod::Auto;
+    if (const QAction *checked = m_methodGroup->checkedAction())
+        detectionMethodFromName(checked->data().toString(), &method);
+    return method;
+}
+
+void MainWindow::showDetectionStep(const QString &name)
+{
+    if (!name.isEmpty() && DetectionSteps::isCloseUp(name) && !m_steps->image(name).isNull())
+        openCloseUp(name);
+    else
+        setOverlayStep(name);
+}
+
+void MainWindow::onDetectionStepsChanged()
+{
+    const QStringList names = m_steps->names();
+    if (m_steps->isEmpty()) {
+        for (const QPointer<StepImageDialog> &dialog : std::as_const(m_closeUps)) {
+            if (dialog)
+                dialog->close();
+        }
+        m_closeUps.clear();
+    }
+
+    const QList<QAction *> old = m_stepsGroup->actions();
+    for (QAction *action : old)
+        m_stepsGroup->removeAction(action);
+    m_stepsMenu->clear(); // deletes the actions it owns
+
+    const QSignalBlocker blocker(m_stepsCombo);
+    m_stepsCombo->clear();
+
+    QAction *none = m_stepsMenu->addAction(tr("&None"));
+    none->setObjectName(QStringLiteral("actionStepNone"));
+    none->setCheckable(true);
+    none->setData(QString());
+    m_stepsGroup->addAction(none);
+    m_stepsCombo->addItem(tr("None"), QString());
+    connect(none, &QAction::triggered, this, [this] { setOverlayStep({}); });
+
+    bool firstOverlay = true;
+    for (const QString &name : names) {
+        if (DetectionSteps::isCloseUp(name))
+            continue;
+        if (std::exchange(firstOverlay, false))
+            m_stepsMenu->addSeparator();
+        const QString text = DetectionSteps::displayName(name);
+        QAction *action = m_stepsMenu->addAction(text);
+        action->setObjectName(QStringLiteral("actionStep-") + name);
+        action->setCheckable(true);
+        action->setData(name);
+        action->setToolTip(tr("Draw “%1” over the photo (%2.png with --debug-dir)").arg(text, name));
+        m_stepsGroup->addAction(action);
+        connect(action, &QAction::triggered, this, [this, name] { setOverlayStep(name); });
+        m_stepsCombo->addItem(text, name);
+        m_stepsCombo->setItemData(m_stepsCombo->count() - 1, name, Qt::ToolTipRole);
+    }
+    bool firstCloseUp = true;
+    for (const QString &name : names) {
+        if (!DetectionSteps::isCloseUp(name))
+            continue;
+        if (std::exchange(firstCloseUp, false))
+            m_stepsMenu->addSeparator();
+        const QString text = DetectionSteps::displayName(name);
+        QAction *action = m_stepsMenu->addAction(tr("%1…").arg(text));
+        action->setObjectName(QStringLiteral("actionStep-") + name);
+        action->setData(name);
+        action->setToolTip(tr("Show “%1” in a window of its own (%2.png with --debug-dir)").arg(text, name));
+        connect(action, &QAction::triggered, this, [this, name] { openCloseUp(name); });
+    }
+
+    // A re-detection of the same photo brings the same steps: keep showing the chosen one.
+    showChosenStep();
+    updateDetectionStepsEnabled();
+}
+
+void MainWindow::setOverlayStep(const QString &name)
+{
+    m_chosenStep = DetectionSteps::isCloseUp(name) || m_steps->image(name).isNull() ? QString() : name;
+    showChosenStep();
+}
+
+void MainWindow::showChosenStep()
+{
+    const QImage image = m_chosenStep.isEmpty() ? QImage() : m_steps->image(m_chosenStep);
+    m_overlayStep = image.isNull() ? QString() : m_chosenStep;
+    m_photoView->setOverlay(image);
+
+    const QList<QAction *> actions = m_stepsGroup->actions();
+    for (QAction *action : actions) {
+        if (action->data().toString() == m_overlayStep)
+            action->setChecked(true);
+    }
+    const QSignalBlocker blocker(m_stepsCombo);
+    m_stepsCombo->setCurrentIndex(std::max(0, m_stepsCombo->findData(m_overlayStep)));
+    m_opacitySlider->setEnabled(!m_overlayStep.isEmpty());
+}
+
+void MainWindow::openCloseUp(const QString &name)
+{
+    const QImage image = m_steps->image(name);
+    if (image.isNull())
+        return;
+    QPointer<StepImageDialog> &dialog = m_closeUps[name];
+    if (!dialog) {
+        dialog = new StepImageDialog(image, DetectionSteps::displayName(name), this);
+        dialog->setObjectName(QStringLiteral("closeUp-") + name);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+    }
+    dialog->show();
+    dialog->raise();
+    dialog->activateWindow();
+}
+
+void MainWindow::updateDetectionStepsEnabled()
+{
+    const bool available = !m_steps->isEmpty();
+    QString why;
+    if (available)
+        why = tr("Show an intermediate image of the face detection over the photo");
+    else if (m_job == Job::Detecting)
+        why = tr("The detection's steps appear when it ends");
+    else if (m_document->photo().isNull())
+        why = tr("Open a photo: its face detection's steps can be shown here");
+    else
+        why = tr("No detection steps for this photo: they are not saved in projects. Use Edit ▸ Re-detect Points "
+                 "to see them");
+    QAction *menuAction = m_stepsMenu->menuAction();
+    menuAction->setEnabled(available);
+    menuAction->setToolTip(why);
+    menuAction->setStatusTip(why);
+    m_stepsCombo->setEnabled(available);
+    m_stepsCombo->setToolTip(why);
 }
 
 void MainWindow::onStyleActivated(int index)

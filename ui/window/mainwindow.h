@@ -1,8 +1,12 @@
 #pragma once
 
+#include "detect/detector.h"
 #include "document/autosaver.h"
 #include "document/document.h"
 #include "document/loadedfile.h"
+
+#include <QHash>
+#include <QPointer>
 
 #include <QFutureWatcher>
 #include <QMainWindow>
@@ -10,19 +14,23 @@
 #include <optional>
 
 class QAction;
+class QActionGroup;
 class QComboBox;
 class QLabel;
 class QMenu;
 class QProgressBar;
+class QSlider;
 class QSplitter;
+class QToolBar;
 class QToolButton;
 
 namespace toonface {
 
+class DetectionSteps;
 class DetectionTask;
 class PhotoView;
 class PreviewView;
-struct DetectionResult;
+class StepImageDialog;
 
 // The editor window: the photo with its points beside the live cartoon, the menus, and the
 // wiring of the long jobs (opening, detection, export) that run off the GUI thread and come
@@ -46,6 +54,19 @@ public:
     PhotoView *photoView() const { return m_photoView; }
     PreviewView *previewView() const { return m_previewView; }
     Autosaver *autosaver() const { return m_autosaver; }
+    // The intermediate images of the last detection of the open photo.
+    DetectionSteps *detectionSteps() const { return m_steps; }
+
+    // The method detections use from now on, for this session; the Edit ▸ Detection Method
+    // menu also keeps the user's choice in the settings for the next sessions.
+    void setDetectionMethod(DetectionMethod method);
+    DetectionMethod detectionMethod() const;
+
+    // Shows the detection step `name` (a key of detectionSteps()): over the photo, or in a
+    // window of its own for a close-up. An empty or unknown name shows the photo alone.
+    void showDetectionStep(const QString &name);
+    // The step drawn over the photo now; empty when none.
+    QString overlayStep() const { return m_overlayStep; }
 
     // After show(): offers to restore a leftover recovery file; when none is restored, opens
     // `path` (a photo or a project) if it is not empty.
@@ -102,6 +123,12 @@ private:
     void cancelJob();
     void setBusy(Job job, const QString &text);
 
+    void onDetectionStepsChanged();
+    void setOverlayStep(const QString &name); // the user's choice
+    void showChosenStep();
+    void openCloseUp(const QString &name);
+    void updateDetectionStepsEnabled();
+
     void onStyleActivated(int index);
     void syncStyleCombo();
     void showPointStatus(int index);
@@ -114,6 +141,12 @@ private:
     PhotoView *m_photoView;
     PreviewView *m_previewView;
     QSplitter *m_splitter;
+    DetectionSteps *m_steps;
+    QString m_overlayStep; // the step drawn over the photo now
+    // The step the user chose: kept through re-detection of the same photo, and shown again
+    // when the new run has it; forgotten with the photo.
+    QString m_chosenStep;
+    QHash<QString, QPointer<StepImageDialog>> m_closeUps;
 
     QFutureWatcher<LoadedFile> *m_loadWatcher = nullptr;
     std::optional<RecoveryFile> m_recovering; // the leftover being restored, if any
@@ -138,6 +171,13 @@ private:
     QAction *m_aboutAction = nullptr;
     QMenu *m_recentMenu = nullptr;
     QComboBox *m_styleCombo = nullptr;
+    QMenu *m_methodMenu = nullptr;
+    QActionGroup *m_methodGroup = nullptr;
+    QMenu *m_stepsMenu = nullptr;
+    QActionGroup *m_stepsGroup = nullptr;
+    QToolBar *m_stepsToolBar = nullptr;
+    QComboBox *m_stepsCombo = nullptr;
+    QSlider *m_opacitySlider = nullptr;
 
     QLabel *m_busyLabel = nullptr;
     QProgressBar *m_busyBar = nullptr;

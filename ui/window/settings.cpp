@@ -1,7 +1,11 @@
 #include "window/settings.h"
 
+#include "detect/detector.h"
+
 #include <QDir>
 #include <QFileInfo>
+
+#include <algorithm>
 
 namespace toonface {
 
@@ -15,9 +19,12 @@ const QString recentFiles = QStringLiteral("files/recent");
 const QString lastDirectory = QStringLiteral("files/lastDirectory");
 const QString autosaveInterval = QStringLiteral("autosave/intervalSeconds");
 const QString showPointIds = QStringLiteral("view/showPointIds");
+const QString detectionMethod = QStringLiteral("detection/method");
+const QString overlayOpacity = QStringLiteral("view/overlayOpacity");
 } // namespace key
 
 constexpr int kDefaultAutosaveInterval = 60;
+constexpr double kDefaultOverlayOpacity = 0.6;
 
 } // namespace
 
@@ -111,6 +118,31 @@ bool Settings::showPointIds() const
 void Settings::setShowPointIds(bool show)
 {
     m_settings.setValue(key::showPointIds, show);
+}
+
+QString Settings::detectionMethod() const
+{
+    DetectionMethod method = DetectionMethod::Auto;
+    if (!detectionMethodFromName(m_settings.value(key::detectionMethod).toString(), &method))
+        method = DetectionMethod::Auto;
+    return detectionMethodName(method);
+}
+
+void Settings::setDetectionMethod(const QString &name)
+{
+    m_settings.setValue(key::detectionMethod, name);
+}
+
+double Settings::overlayOpacity() const
+{
+    bool ok = false;
+    const double opacity = m_settings.value(key::overlayOpacity, kDefaultOverlayOpacity).toDouble(&ok);
+    return ok ? std::clamp(opacity, 0.0, 1.0) : kDefaultOverlayOpacity;
+}
+
+void Settings::setOverlayOpacity(double opacity)
+{
+    m_settings.setValue(key::overlayOpacity, std::clamp(opacity, 0.0, 1.0));
 }
 
 } // namespace toonface

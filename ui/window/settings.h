@@ -41,6 +41,15 @@ public:
     bool showPointIds() const;
     void setShowPointIds(bool show);
 
+    // The method the editor detects faces with: "auto" (default), "classic" or "landmarks"
+    // (detectionMethodName()); an unknown stored name reads as "auto".
+    QString detectionMethod() const;
+    void setDetectionMethod(const QString &name);
+
+    // Opacity of the detection-step overlay on the photo, 0..1 (default 0.6).
+    double overlayOpacity() const;
+    void setOverlayOpacity(double opacity);
+
     void sync() { m_settings.sync(); }
 
 private:
