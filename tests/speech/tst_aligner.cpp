@@ -188,29 +188,70 @@ private Q_SLOTS:
         QVERIFY2(median <= 45 && p90 <= 200, qPrintable(QStringLiteral("%1 / %2 ms").arg(median).arg(p90)));
     }
 
+    void realMandarin_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QString>("truthFile"); // TextGrid; empty: no timing truth
+        QTest::addColumn<QString>("tier");
+        QTest::addColumn<QString>("script"); // empty: the TextGrid's words are the script
+        QTest::addColumn<int>("firstTruth"); // the syllable the TextGrid's first onset belongs to
+        // AISHELL-3 sentence, character onsets from a forced aligner's words tier.
+        QTest::newRow("SSB00050015") << "SSB00050015_16k.wav" << "SSB00050015.TextGrid" << "words" << QString() << 0;
+        // Beijing disyllables: hand-cut C1 V1 C2 V2 of a word inside a carrier phrase; neither is
+        // given. The waveform shows six syllables (two, the word, two): a neutral script of six
+        // syllables stands for them, and C1 and C2 start syllables 3 and 4.
+        QTest::newRow("beijing_f3_50_a") << "beijing_f3_50_a.wav" << "beijing_f3_50_a.TextGrid" << "syll"
+                                         << "da1 da1 da1 da1 da1 da1" << 2;
+        QTest::newRow("beijing_m5_17_c") << "beijing_m5_17_c.wav" << "beijing_m5_17_c.TextGrid" << "syll"
+                                         << "da1 da1 da1 da1 da1 da1" << 2;
+        // 48 kHz, transcript only: checked against its waveform plot (bench speech.plots).
+        QTest::newRow("NST_ID001") << "NST_ID001.wav" << QString() << QString() << QStringLiteral("你好你好") << 0;
+    }
     void realMandarin()
     {
+        QFETCH(QString, file);
+        QFETCH(QString, truthFile);
+        QFETCH(QString, tier);
+        QFETCH(QString, script);
+        QFETCH(int, firstTruth);
         const QString dir = sharedData() + QStringLiteral("/speech/");
-        if (!QFile::exists(dir + QStringLiteral("SSB00050015_16k.wav")))
-            QSKIP("shared data (speech/SSB00050015_16k.wav) not present");
-        QString text;
+        if (!QFile::exists(dir + file))
+            QSKIP(qPrintable(QStringLiteral("shared data (speech/%1) not present").arg(file)));
+        QString text = script;
         std::vector<double> truth;
-        for (const Interval &w : textGridTier(dir + QStringLiteral("SSB00050015.TextGrid"), QStringLiteral("words"))) {
+        for (const Interval &w : textGridTier(dir + truthFile, tier)) {
             if (w.text.isEmpty() || w.text.startsWith(QLatin1Char('[')))
                 continue;
-            text += w.text;
-            truth.push_back(w.start);
+            if (tier == QLatin1String("words")) {
+                text += w.text;
+                truth.push_back(w.start);
+            } else if (w.text.startsWith(QLatin1Char('C'))) {
+                truth.push_back(w.start);
+            }
         }
-        QCOMPARE(int(truth.size()), 15);
-        const AudioResult audio = loadAudio(dir + QStringLiteral("SSB00050015_16k.wav"));
-        QVERIFY(audio.ok());
-        const Script script = mandarin(text);
-        const AlignResult r = alignScript(audio.audio, script);
+        const AudioResult audio = loadAudio(dir + file);
+        QVERIFY2(audio.ok(), qPrintable(audio.error));
+        const Script parsed = mandarin(text);
+        const AlignResult r = alignScript(audio.audio, parsed);
         QVERIFY2(r.ok(), qPrintable(r.error));
-        checkWellFormed(r, 15, audio.audio.duration());
-        const auto [median, p90] = onsetErrors(r, truth);
-        // The targets of the speech issue for real Mandarin.
-        QVERIFY2(median <= 30, qPrintable(QStringLiteral("median %1 ms").arg(median)));
+        checkWellFormed(r, int(parsed.syllables.size()), audio.audio.duration());
+        if (truthFile.isEmpty()) {
+            // No timing truth: every syllable inside the speech found, none squeezed to nothing
+            // (a syllable of natural speech lasts 80 ms and more).
+            for (const AlignedSyllable &s : r.syllables) {
+                QVERIFY(s.start >= r.speechStart - 1e-9 && s.end <= r.speechEnd + 1e-9);
+                QVERIFY2(s.end - s.start >= 0.08, qPrintable(QStringLiteral("%1 s").arg(s.end - s.start)));
+            }
+            return;
+        }
+        QVERIFY(!truth.empty());
+        AlignResult compared = r;
+        compared.syllables = r.syllables.mid(firstTruth, qsizetype(truth.size()));
+        QCOMPARE(compared.syllables.size(), qsizetype(truth.size()));
+        const auto [median, p90] = onsetErrors(compared, truth);
+        // The targets of the speech issue for real Mandarin (with two onsets per file, p90 is
+        // the larger error).
+        QVERIFY2(median <= 30 || truth.size() < 3, qPrintable(QStringLiteral("median %1 ms").arg(median)));
         QVERIFY2(p90 <= 80, qPrintable(QStringLiteral("p90 %1 ms").arg(p90)));
     }
 
