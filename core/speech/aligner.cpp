@@ -5,6 +5,7 @@
 #include "speech/pinyin.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace toonface {
@@ -131,6 +132,12 @@ public:
             if (depth >= 1.0 && (m_valleys.empty() || m_valleys.back().at < t - 3))
                 m_valleys.push_back({t, left, right, depth});
         }
+        m_firstValley.assign(n + 1, int(m_valleys.size()));
+        for (int t = int(n) - 1, v = int(m_valleys.size()); t >= 0; --t) {
+            while (v > 0 && m_valleys[size_t(v) - 1].at >= t)
+                --v;
+            m_firstValley[size_t(t)] = v;
+        }
         m_sumLoud = prefix(m_loud);
         m_sumNucleus = prefix(m_nucleus);
         m_sumSpeech = prefix(speech);
@@ -206,12 +213,11 @@ public:
     // The deepest valley (ln units) between two peaks that both lie inside [from, to).
     double innerValley(int from, int to) const
     {
-        auto it = std::lower_bound(
-            m_valleys.begin(), m_valleys.end(), from, [](const Valley &v, int t) { return v.at < t; });
         double deepest = 0;
-        for (; it != m_valleys.end() && it->at < to; ++it) {
-            if (it->left > from + 1 && it->right < to - 1)
-                deepest = std::max(deepest, it->depth);
+        for (size_t v = size_t(m_firstValley[size_t(std::clamp(from, 0, m_frames))]);
+             v < m_valleys.size() && m_valleys[v].at < to; ++v) {
+            if (m_valleys[v].left > from + 1 && m_valleys[v].right < to - 1)
+                deepest = std::max(deepest, m_valleys[v].depth);
         }
         return deepest;
     }
@@ -236,9 +242,7 @@ private:
         to = std::min(to, m_frames);
         if (to <= from)
             return 0;
-        int k = 0;
-        while ((2 << k) <= to - from)
-            ++k;
+        const int k = std::bit_width(unsigned(to - from)) - 1;
         const auto &row = table[size_t(k)];
         return std::max(row[size_t(from)], row[size_t(to - (1 << k))]);
     }
@@ -283,6 +287,7 @@ private:
     std::vector<double> m_sumLoud, m_sumNucleus, m_sumSpeech, m_sumPause;
     SparseMax m_maxNucleus;
     std::vector<int> m_nextPause;
+    std::vector<int> m_firstValley; // per frame: the first valley at or after it
     struct Valley
     {
         int at, left, right;
@@ -323,26 +328,36 @@ std::vector<int> segmentSyllables(const Signals &sig, const std::vector<int> &pr
         const double d = (b - prior[size_t(k)]) / kPriorSigma;
         return kOnset * sig.onsetEvidence(b, kinds[size_t(k)], k == 0) - kPrior * std::min(0.5 * d * d, kPriorCap);
     };
+    // A pause may follow a syllable's nucleus, never come between its onset and its nucleus.
+    // Its nucleus is a rise after the dip that follows the onset (the first frames after an
+    // onset still carry the falling end of the syllable before). Whether a syllable starting at
+    // `from` lacks one before the next pause depends on `from` alone: computed once per frame.
+    std::vector<float> noNucleusBeforePause(size_t(T), 0.0f);
+    for (int from = 0; from < T; ++from) {
+        const int pause = sig.nextPause(from + 1);
+        if (pause >= T)
+            continue;
+        int dip = from;
+        for (int t = from; t < std::min(from + 15, pause); ++t)
+            if (sig.nucleus(t) < sig.nucleus(dip))
+                dip = t;
+        const double peak = sig.maxNucleus(dip, pause);
+        noNucleusBeforePause[size_t(from)] = peak < 0.3 || peak - sig.nucleus(dip) < 0.15 ? 1.0f : 0.0f;
+    }
+    std::vector<double> logExpected(static_cast<size_t>(n));
+    for (int k = 0; k < n; ++k)
+        logExpected[size_t(k)] = std::log(std::max(expected[size_t(k)], 3.0));
+    std::vector<double> logLength(512);
+    for (size_t len = 1; len < logLength.size(); ++len)
+        logLength[len] = std::log(double(len));
     // A syllable over [from, to): its nucleus and its length (pauses excluded).
     auto span = [&](int k, int from, int to) {
         const double len = std::max(1.0, (to - from) - sig.pauseFrames(from, to));
-        const double r = std::log(len / std::max(expected[size_t(k)], 3.0));
+        const double r = (len < double(logLength.size()) ? logLength[size_t(len)] : std::log(len)) - logExpected[size_t(k)];
         // Two loud peaks inside with a valley of 3 ln units (13 dB) between them: a syllable
         // boundary missed.
         const double inside = std::clamp((sig.innerValley(from, to) - 1.0) / 2.0, 0.0, 1.0);
-        // A pause may follow a syllable's nucleus, never come between its onset and its nucleus.
-        const int pause = sig.nextPause(from + 1);
-        // Its nucleus is a rise after the dip that follows the onset (the first frames after an
-        // onset still carry the falling end of the syllable before).
-        double beforePause = 0;
-        if (pause < to) {
-            int dip = from;
-            for (int t = from; t < std::min(from + 15, pause); ++t)
-                if (sig.nucleus(t) < sig.nucleus(dip))
-                    dip = t;
-            const double peak = sig.maxNucleus(dip, pause);
-            beforePause = peak < 0.3 || peak - sig.nucleus(dip) < 0.15 ? 1.0 : 0.0;
-        }
+        const double beforePause = sig.nextPause(from + 1) < to ? noNucleusBeforePause[size_t(from)] : 0.0;
         return kNucleus * sig.maxNucleus(from, to) - kDuration * r * r - kValley * (inside + beforePause);
     };
     constexpr double kNone = -1e18;
