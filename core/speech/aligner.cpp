@@ -441,9 +441,12 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     Audio ref16 = resampled(reference.audio, kSpeechSampleRate);
     {
         const qsizetype pad = qsizetype(kReferencePad * kSpeechSampleRate);
-        QVector<float> padded(pad, 0.0f);
-        padded += ref16.samples;
-        padded += QVector<float>(pad, 0.0f);
+        // One allocation: fresh pages are costly, and ten minutes of speech are 40 MB.
+        QVector<float> padded;
+        padded.reserve(ref16.samples.size() + 2 * pad);
+        padded.resize(pad, 0.0f);
+        padded.append(ref16.samples);
+        padded.resize(padded.size() + pad, 0.0f);
         quint32 state = 12345;
         for (float &s : padded) {
             state = state * 1664525u + 1013904223u;

@@ -111,12 +111,12 @@ SpeechFeatures computeSpeechFeatures(const Audio &audio, const std::atomic_bool 
     // and inverse of the power spectrum for the autocorrelation. Both are in OpenCV's packed
     // real layout: Re0, Re1, Im1, ..., Re(N/2-1), Im(N/2-1), Re(N/2).
     constexpr int kBlock = 256;
-    cv::Mat windows(kBlock, kFft, CV_32F), spectra, powers(kBlock, kFft, CV_32F), autocorr;
+    // Each row's samples fill its first kWindow columns; the zero padding after them stays.
+    cv::Mat windows(kBlock, kFft, CV_32F, cv::Scalar(0)), spectra, powers(kBlock, kFft, CV_32F), autocorr;
     for (int first = 0; first < frames; first += kBlock) {
         if (isCancelled(cancel))
             return {};
         const int count = std::min(kBlock, frames - first);
-        windows.setTo(0);
         for (int r = 0; r < count; ++r) {
             const float *s = audio.samples.constData() + qsizetype(first + r) * kHopSamples;
             float mean = 0;
