@@ -161,8 +161,9 @@ TOONFACE_BENCHMARK("speech.alignSynthetic", [] {
     quint32 seed = 1;
     for (const Voice &v : kVoices) {
         Errors e;
-        for (const QString &text : sentences()) {
-            const Script s = mandarin(text);
+        QJsonArray slips; // onsets more than 60 ms off: "sentence:syllable pinyin signed ms"
+        for (int i = 0; i < sentences().size(); ++i) {
+            const Script s = mandarin(sentences()[i]);
             std::vector<double> truth;
             const Audio rec = syntheticRecording(s, v, seed++, &truth);
             const AlignResult r = alignScript(rec, s);
@@ -171,9 +172,17 @@ TOONFACE_BENCHMARK("speech.alignSynthetic", [] {
             for (int k = 0; k < r.syllables.size(); ++k) {
                 e.add(r.syllables[k].start, truth[size_t(k)]);
                 all.add(r.syllables[k].start, truth[size_t(k)]);
+                const double err = (r.syllables[k].start - truth[size_t(k)]) * 1000;
+                if (std::abs(err) > 60)
+                    slips.append(QStringLiteral("%1:%2 %3 %4")
+                                     .arg(i)
+                                     .arg(k)
+                                     .arg(s.syllables[k].pinyin)
+                                     .arg(std::round(err)));
             }
         }
         QJsonObject o = e.json();
+        o.insert(QStringLiteral("slips"), slips);
         o.insert(QStringLiteral("voice"), QString::fromLatin1(v.voice));
         o.insert(QStringLiteral("rate"), v.rate);
         o.insert(QStringLiteral("pitch"), v.pitch);
@@ -449,6 +458,23 @@ TOONFACE_BENCHMARK("speech.plots", [] {
         const QString png = plotDir + QLatin1Char('/') + QFileInfo(file.name).completeBaseName() + QStringLiteral(".png");
         if (alignmentPlot(audio.audio, r.result, file.truth, title).save(png))
             written.append(png);
+    }
+    // The synthetic set's recordings (truth from espeak-ng's events), for the voices that
+    // slip most.
+    quint32 seed = 1;
+    for (const Voice &v : kVoices) {
+        for (int i = 0; i < sentences().size(); ++i, ++seed) {
+            const QString voice = QString::fromLatin1(v.voice).section(QLatin1Char('+'), 1);
+            if (voice != QLatin1String("m3") && voice != QLatin1String("klatt"))
+                continue;
+            const Script s = mandarin(sentences()[i]);
+            std::vector<double> truth;
+            const Audio rec = syntheticRecording(s, v, seed, &truth);
+            const AlignResult r = alignScript(rec, s);
+            const QString png = plotDir + QStringLiteral("/synthetic_%1_%2.png").arg(voice).arg(i);
+            if (alignmentPlot(rec, lipsyncResult(s, r, rec.duration()), truth, sentences()[i]).save(png))
+                written.append(png);
+        }
     }
     out.insert(QStringLiteral("plots"), written);
     return out;

@@ -146,11 +146,16 @@ public:
         m_nextPause.assign(n + 1, int(n));
         for (int t = int(n) - 1; t >= 0; --t)
             m_nextPause[size_t(t)] = m_pause[size_t(t)] > 0.5f ? t : m_nextPause[size_t(t) + 1];
+        m_nextSpeech.assign(n + 1, int(n));
+        for (int t = int(n) - 1; t >= 0; --t)
+            m_nextSpeech[size_t(t)] = m_pause[size_t(t)] > 0.5f ? m_nextSpeech[size_t(t) + 1] : t;
     }
 
     double nucleus(int t) const { return m_nucleus[size_t(std::clamp(t, 0, m_frames - 1))]; }
     // The first pause frame at or after t (frames() when none).
     int nextPause(int t) const { return m_nextPause[size_t(std::clamp(t, 0, m_frames))]; }
+    // The first frame at or after t that is not a pause (frames() when none).
+    int nextSpeech(int t) const { return m_nextSpeech[size_t(std::clamp(t, 0, m_frames))]; }
 
     int frames() const { return m_frames; }
     bool isPause(int t) const { return t >= 0 && t < m_frames && m_pause[size_t(t)] > 0.5f; }
@@ -286,7 +291,7 @@ private:
     std::vector<float> m_ln, m_lnVoiced, m_loud, m_nucleus, m_pause;
     std::vector<double> m_sumLoud, m_sumNucleus, m_sumSpeech, m_sumPause;
     SparseMax m_maxNucleus;
-    std::vector<int> m_nextPause;
+    std::vector<int> m_nextPause, m_nextSpeech;
     std::vector<int> m_firstValley; // per frame: the first valley at or after it
     struct Valley
     {
@@ -357,8 +362,14 @@ std::vector<int> segmentSyllables(const Signals &sig, const std::vector<int> &pr
         // Two loud peaks inside with a valley of 3 ln units (13 dB) between them: a syllable
         // boundary missed.
         const double inside = std::clamp((sig.innerValley(from, to) - 1.0) / 2.0, 0.0, 1.0);
-        const double beforePause = sig.nextPause(from + 1) < to ? noNucleusBeforePause[size_t(from)] : 0.0;
-        return kNucleus * sig.maxNucleus(from, to) - kDuration * r * r - kValley * (inside + beforePause);
+        // Nor does a syllable go on after a pause: a nucleus after the pause inside the span
+        // belongs to the next syllable (stop closures are too short to count as pauses).
+        const int pause = sig.nextPause(from + 1);
+        double pauseInside = 0;
+        if (pause < to)
+            pauseInside = std::max(
+                double(noNucleusBeforePause[size_t(from)]), sig.maxNucleus(sig.nextSpeech(pause), to) >= 0.3 ? 1.0 : 0.0);
+        return kNucleus * sig.maxNucleus(from, to) - kDuration * r * r - kValley * (inside + pauseInside);
     };
     constexpr double kNone = -1e18;
     std::vector<std::vector<double>> score(static_cast<size_t>(n));
