@@ -537,6 +537,14 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
             prior[size_t(k)] = std::max(prior[size_t(k)], prior[size_t(k) - 1] + 3);
         expectedFrames[size_t(k)] = std::max(3.0, (u.end - u.start) / SpeechFeatures::kHop * pace);
         kinds[size_t(k)] = onsetKind(script.syllables[k]);
+        // After a nasal coda a nasal or liquid initial continues the murmur: the fall that
+        // marks a sonorant onset elsewhere is the coda's here, and nothing in the loudness or
+        // the voicing marks where the coda ends. The warp places these onsets.
+        if (k > 0 && kinds[size_t(k)] == OnsetKind::Sonorant) {
+            const QString &before = script.syllables[k - 1].pinyin;
+            if (before.endsWith(QLatin1Char('n')) || before.endsWith(QLatin1String("ng")))
+                kinds[size_t(k)] = OnsetKind::Any;
+        }
     }
     int first = 0, last = a.frames - 1;
     while (first < last && a.silence[size_t(first)] > 0.5f)
