@@ -143,6 +143,7 @@ public:
         m_sumSpeech = prefix(speech);
         m_sumPause = prefix(m_pause);
         m_maxNucleus = sparseMax(m_nucleus);
+        m_maxLoud = sparseMax(m_loud);
         m_nextPause.assign(n + 1, int(n));
         for (int t = int(n) - 1; t >= 0; --t)
             m_nextPause[size_t(t)] = m_pause[size_t(t)] > 0.5f ? t : m_nextPause[size_t(t) + 1];
@@ -215,6 +216,8 @@ public:
 
     // The strongest nucleus within [from, to).
     double maxNucleus(int from, int to) const { return rangeMax(m_maxNucleus, from, to); }
+    // The loudest frame within [from, to) (0..1 between the recording's quiet and loud frames).
+    double maxLoud(int from, int to) const { return rangeMax(m_maxLoud, from, to); }
     // The deepest valley (ln units) between two peaks that both lie inside [from, to).
     double innerValley(int from, int to) const
     {
@@ -290,7 +293,7 @@ private:
     int m_frames;
     std::vector<float> m_ln, m_lnVoiced, m_loud, m_nucleus, m_pause;
     std::vector<double> m_sumLoud, m_sumNucleus, m_sumSpeech, m_sumPause;
-    SparseMax m_maxNucleus;
+    SparseMax m_maxNucleus, m_maxLoud;
     std::vector<int> m_nextPause, m_nextSpeech;
     std::vector<int> m_firstValley; // per frame: the first valley at or after it
     struct Valley
@@ -366,9 +369,13 @@ std::vector<int> segmentSyllables(const Signals &sig, const std::vector<int> &pr
         // belongs to the next syllable (stop closures are too short to count as pauses).
         const int pause = sig.nextPause(from + 1);
         double pauseInside = 0;
-        if (pause < to)
-            pauseInside = std::max(
-                double(noNucleusBeforePause[size_t(from)]), sig.maxNucleus(sig.nextSpeech(pause), to) >= 0.3 ? 1.0 : 0.0);
+        if (pause < to) {
+            // Loud sound after the pause counts as well as a voiced nucleus: a rough or creaky
+            // voice's flickering voicing can hide a nucleus, not its loudness.
+            const int resume = sig.nextSpeech(pause);
+            const bool resumes = sig.maxNucleus(resume, to) >= 0.3 || sig.maxLoud(resume, to) >= 0.5;
+            pauseInside = std::max(double(noNucleusBeforePause[size_t(from)]), resumes ? 1.0 : 0.0);
+        }
         return kNucleus * sig.maxNucleus(from, to) - kDuration * r * r - kValley * (inside + pauseInside);
     };
     constexpr double kNone = -1e18;
