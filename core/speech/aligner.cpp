@@ -65,9 +65,18 @@ public:
     {
         const size_t n = size_t(f.frames);
         m_loud = f.loudnessNorm;
+        // The voicing a voiceless initial ends is a lasting loss: measured on the voicing averaged
+        // over ±20 ms, since a rough or creaky voice's voicing flickers from frame to frame.
         m_lnVoiced.resize(n);
-        for (size_t t = 0; t < n; ++t) // voicing 1 → 0.1 lowers this by 4.6 (20 dB)
-            m_lnVoiced[t] = m_ln[t] + 2.0f * std::log(std::clamp(f.voicing[t], 0.1f, 1.0f));
+        for (size_t t = 0; t < n; ++t) {
+            const size_t from = t >= 2 ? t - 2 : 0, to = std::min(n, t + 3);
+            float voicing = 0;
+            for (size_t u = from; u < to; ++u)
+                voicing += f.voicing[u];
+            voicing /= float(to - from);
+            // voicing 1 → 0.1 lowers this by 4.6 (20 dB)
+            m_lnVoiced[t] = m_ln[t] + 2.0f * std::log(std::clamp(voicing, 0.1f, 1.0f));
+        }
         m_nucleus.resize(n);
         std::vector<float> speech(n);
         for (size_t t = 0; t < n; ++t) {
