@@ -161,7 +161,7 @@ private Q_SLOTS:
         QVERIFY2(r.ok(), qPrintable(r.error));
         checkWellFormed(r, int(script.syllables.size()), rec.duration());
         const auto [median, p90] = onsetErrors(r, truth);
-        // Tolerances: the bench's synthetic set has a median of about 25 ms; one file may be
+        // Tolerances: the bench's synthetic set has a median of about 17 ms; one file may be
         // worse, a broken aligner is far worse (hundreds of ms).
         QVERIFY2(median <= 45, qPrintable(QStringLiteral("median onset error %1 ms").arg(median)));
         QVERIFY2(p90 <= 200, qPrintable(QStringLiteral("90th percentile %1 ms").arg(p90)));
