@@ -174,11 +174,8 @@ TOONFACE_BENCHMARK("speech.alignSynthetic", [] {
                 all.add(r.syllables[k].start, truth[size_t(k)]);
                 const double err = (r.syllables[k].start - truth[size_t(k)]) * 1000;
                 if (std::abs(err) > 60)
-                    slips.append(QStringLiteral("%1:%2 %3 %4")
-                                     .arg(i)
-                                     .arg(k)
-                                     .arg(s.syllables[k].pinyin)
-                                     .arg(std::round(err)));
+                    slips.append(
+                        QStringLiteral("%1:%2 %3 %4").arg(i).arg(k).arg(s.syllables[k].pinyin).arg(std::round(err)));
             }
         }
         QJsonObject o = e.json();
@@ -215,7 +212,8 @@ QVector<RealFile> realFiles(const QString &dir)
     // AISHELL-3 sentence: character onsets from the words tier.
     {
         RealFile f {QStringLiteral("SSB00050015_16k.wav"), {}, {}, QStringLiteral("TextGrid words tier")};
-        for (const Interval &w : readTextGrid(speech + QStringLiteral("SSB00050015.TextGrid"), QStringLiteral("words"))) {
+        for (const Interval &w :
+            readTextGrid(speech + QStringLiteral("SSB00050015.TextGrid"), QStringLiteral("words"))) {
             if (w.text.startsWith(QLatin1Char('[')) || w.text.isEmpty())
                 continue;
             f.script += w.text;
@@ -384,7 +382,8 @@ QImage alignmentPlot(const Audio &audio, const LipsyncResult &r, const std::vect
     }
     QPainterPath loud, voiced;
     for (int t = f.frameAt(t0); t <= f.frameAt(t1); ++t) {
-        const double yl = curveBottom - (f.loudness[size_t(t)] - lMin) / std::max(lMax - lMin, 1e-3f) * (curveBottom - curveTop);
+        const double yl
+            = curveBottom - (f.loudness[size_t(t)] - lMin) / std::max(lMax - lMin, 1e-3f) * (curveBottom - curveTop);
         const double yv = curveBottom - f.voicing[size_t(t)] * (curveBottom - curveTop);
         if (t == f.frameAt(t0)) {
             loud.moveTo(x(f.time(t)), yl);
@@ -455,7 +454,8 @@ TOONFACE_BENCHMARK("speech.plots", [] {
         const LipsyncOutcome r = lipsyncRealFile(dir, file);
         const QString title = file.name + QStringLiteral(" — script: ") + file.script + QStringLiteral(" — ")
             + (r.ok() ? file.note : r.error);
-        const QString png = plotDir + QLatin1Char('/') + QFileInfo(file.name).completeBaseName() + QStringLiteral(".png");
+        const QString png
+            = plotDir + QLatin1Char('/') + QFileInfo(file.name).completeBaseName() + QStringLiteral(".png");
         if (alignmentPlot(audio.audio, r.result, file.truth, title).save(png))
             written.append(png);
     }
@@ -526,7 +526,10 @@ QJsonObject alignSpeed()
                 r = alignScript(audio, script);
                 cpu.push_back(threadCpuMs() - before);
             },
-            seconds > 100 ? 2 : seconds > 30 ? 5 : 9, 0);
+            seconds > 100      ? 2
+                : seconds > 30 ? 5
+                               : 9,
+            0);
         std::sort(cpu.begin(), cpu.end());
         const double cpuMs = cpu[cpu.size() / 2];
         QJsonObject o;

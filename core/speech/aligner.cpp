@@ -370,7 +370,8 @@ std::vector<int> segmentSyllables(const Signals &sig, const std::vector<int> &pr
     // A syllable over [from, to): its nucleus and its length (pauses excluded).
     auto span = [&](int k, int from, int to) {
         const double len = std::max(1.0, (to - from) - sig.pauseFrames(from, to));
-        const double r = (len < double(logLength.size()) ? logLength[size_t(len)] : std::log(len)) - logExpected[size_t(k)];
+        const double r
+            = (len < double(logLength.size()) ? logLength[size_t(len)] : std::log(len)) - logExpected[size_t(k)];
         // Two loud peaks inside with a valley of 3 ln units (13 dB) between them: a syllable
         // boundary missed.
         const double inside = std::clamp((sig.innerValley(from, to) - 1.0) / 2.0, 0.0, 1.0);

@@ -178,8 +178,8 @@ private Q_SLOTS:
         QTest::addColumn<int>("pitch");
         // an-men, ming-mei, shang-liu, chun-mian, hen-nan, qing-ni: the coda's murmur runs into
         // the initial, and the fall into the coda is no onset.
-        QTest::newRow("tian an men") << QStringLiteral("我爱北京天安门，天安门上太阳升。") << "cmn-latn-pinyin+f4" << 180
-                                     << 85;
+        QTest::newRow("tian an men") << QStringLiteral("我爱北京天安门，天安门上太阳升。") << "cmn-latn-pinyin+f4"
+                                     << 180 << 85;
         QTest::newRow("ming mei") << QStringLiteral("小明每天早上六点起床。") << "cmn-latn-pinyin+f2" << 140 << 70;
         QTest::newRow("chun mian") << QStringLiteral("春眠不觉晓，这个问题很难回答，请你再说一遍。")
                                    << "cmn-latn-pinyin+f4" << 160 << 60;
@@ -272,13 +272,19 @@ private Q_SLOTS:
         QTest::addColumn<QString>("script"); // empty: the TextGrid's words are the script
         QTest::addColumn<int>("firstTruth"); // the syllable the TextGrid's first onset belongs to
         // AISHELL-3 sentence, character onsets from a forced aligner's words tier.
-        QTest::newRow("SSB00050015") << "SSB00050015_16k.wav" << "SSB00050015.TextGrid" << "words" << QString() << 0;
+        QTest::newRow("SSB00050015") << "SSB00050015_16k.wav"
+                                     << "SSB00050015.TextGrid"
+                                     << "words" << QString() << 0;
         // Beijing disyllables: hand-cut C1 V1 C2 V2 of a word inside a carrier phrase; neither is
         // given. The waveform shows six syllables (two, the word, two): a neutral script of six
         // syllables stands for them, and C1 and C2 start syllables 3 and 4.
-        QTest::newRow("beijing_f3_50_a") << "beijing_f3_50_a.wav" << "beijing_f3_50_a.TextGrid" << "syll"
+        QTest::newRow("beijing_f3_50_a") << "beijing_f3_50_a.wav"
+                                         << "beijing_f3_50_a.TextGrid"
+                                         << "syll"
                                          << "da1 da1 da1 da1 da1 da1" << 2;
-        QTest::newRow("beijing_m5_17_c") << "beijing_m5_17_c.wav" << "beijing_m5_17_c.TextGrid" << "syll"
+        QTest::newRow("beijing_m5_17_c") << "beijing_m5_17_c.wav"
+                                         << "beijing_m5_17_c.TextGrid"
+                                         << "syll"
                                          << "da1 da1 da1 da1 da1 da1" << 2;
         // 48 kHz, transcript only: checked against its waveform plot (bench speech.plots).
         QTest::newRow("NST_ID001") << "NST_ID001.wav" << QString() << QString() << QStringLiteral("你好你好") << 0;

@@ -18,7 +18,8 @@ Audio tone(double f0)
     QRandomGenerator rng(7);
     for (int i = 0; i < kSpeechSampleRate; ++i) {
         const double t = double(i) / kSpeechSampleRate;
-        a.samples.append(f0 > 0 ? float(0.3 * (2 * std::fmod(t * f0, 1.0) - 1)) : float(0.3 * (2 * rng.generateDouble() - 1)));
+        a.samples.append(
+            f0 > 0 ? float(0.3 * (2 * std::fmod(t * f0, 1.0) - 1)) : float(0.3 * (2 * rng.generateDouble() - 1)));
     }
     return a;
 }
