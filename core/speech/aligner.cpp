@@ -518,8 +518,10 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         progress(0.8, QStringLiteral("warping"));
     const Warp warp(path, b.frames);
 
-    // Reference time → audio time; onsets prefer the first frame of speech among those held
-    // against the reference frame (a pause absorbed there belongs before the syllable).
+    // Reference time → audio time. Where the recording is slower, the warp holds one reference
+    // frame against several of its frames, and the reference's moment may be any of them: an
+    // onset takes the middle of those that are speech (a pause absorbed there belongs before
+    // the syllable), not the first, which is early by half the hold.
     auto mapTime = [&](double tRef, bool onset) {
         const int j = b.frameAt(tRef);
         int i0 = warp.firstA[size_t(j)], i1 = warp.lastA[size_t(j)];
@@ -527,7 +529,9 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
             int i = i0;
             while (i < i1 && a.silence[size_t(i)] > 0.5f)
                 ++i;
-            i0 = i;
+            while (i1 > i && a.silence[size_t(i1)] > 0.5f)
+                --i1;
+            i0 = (i + i1) / 2;
         } else {
             int i = i1;
             while (i > i0 && a.silence[size_t(i)] > 0.5f)
