@@ -5,6 +5,7 @@
 #include "speech/pinyin.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace toonface {
@@ -64,9 +65,18 @@ public:
     {
         const size_t n = size_t(f.frames);
         m_loud = f.loudnessNorm;
+        // The voicing a voiceless initial ends is a lasting loss: measured on the voicing averaged
+        // over ±20 ms, since a rough or creaky voice's voicing flickers from frame to frame.
         m_lnVoiced.resize(n);
-        for (size_t t = 0; t < n; ++t) // voicing 1 → 0.1 lowers this by 4.6 (20 dB)
-            m_lnVoiced[t] = m_ln[t] + 2.0f * std::log(std::clamp(f.voicing[t], 0.1f, 1.0f));
+        for (size_t t = 0; t < n; ++t) {
+            const size_t from = t >= 2 ? t - 2 : 0, to = std::min(n, t + 3);
+            float voicing = 0;
+            for (size_t u = from; u < to; ++u)
+                voicing += f.voicing[u];
+            voicing /= float(to - from);
+            // voicing 1 → 0.1 lowers this by 4.6 (20 dB)
+            m_lnVoiced[t] = m_ln[t] + 2.0f * std::log(std::clamp(voicing, 0.1f, 1.0f));
+        }
         m_nucleus.resize(n);
         std::vector<float> speech(n);
         for (size_t t = 0; t < n; ++t) {
@@ -131,19 +141,31 @@ public:
             if (depth >= 1.0 && (m_valleys.empty() || m_valleys.back().at < t - 3))
                 m_valleys.push_back({t, left, right, depth});
         }
+        m_firstValley.assign(n + 1, int(m_valleys.size()));
+        for (int t = int(n) - 1, v = int(m_valleys.size()); t >= 0; --t) {
+            while (v > 0 && m_valleys[size_t(v) - 1].at >= t)
+                --v;
+            m_firstValley[size_t(t)] = v;
+        }
         m_sumLoud = prefix(m_loud);
         m_sumNucleus = prefix(m_nucleus);
         m_sumSpeech = prefix(speech);
         m_sumPause = prefix(m_pause);
         m_maxNucleus = sparseMax(m_nucleus);
+        m_maxLoud = sparseMax(m_loud);
         m_nextPause.assign(n + 1, int(n));
         for (int t = int(n) - 1; t >= 0; --t)
             m_nextPause[size_t(t)] = m_pause[size_t(t)] > 0.5f ? t : m_nextPause[size_t(t) + 1];
+        m_nextSpeech.assign(n + 1, int(n));
+        for (int t = int(n) - 1; t >= 0; --t)
+            m_nextSpeech[size_t(t)] = m_pause[size_t(t)] > 0.5f ? m_nextSpeech[size_t(t) + 1] : t;
     }
 
     double nucleus(int t) const { return m_nucleus[size_t(std::clamp(t, 0, m_frames - 1))]; }
     // The first pause frame at or after t (frames() when none).
     int nextPause(int t) const { return m_nextPause[size_t(std::clamp(t, 0, m_frames))]; }
+    // The first frame at or after t that is not a pause (frames() when none).
+    int nextSpeech(int t) const { return m_nextSpeech[size_t(std::clamp(t, 0, m_frames))]; }
 
     int frames() const { return m_frames; }
     bool isPause(int t) const { return t >= 0 && t < m_frames && m_pause[size_t(t)] > 0.5f; }
@@ -203,15 +225,16 @@ public:
 
     // The strongest nucleus within [from, to).
     double maxNucleus(int from, int to) const { return rangeMax(m_maxNucleus, from, to); }
+    // The loudest frame within [from, to) (0..1 between the recording's quiet and loud frames).
+    double maxLoud(int from, int to) const { return rangeMax(m_maxLoud, from, to); }
     // The deepest valley (ln units) between two peaks that both lie inside [from, to).
     double innerValley(int from, int to) const
     {
-        auto it = std::lower_bound(
-            m_valleys.begin(), m_valleys.end(), from, [](const Valley &v, int t) { return v.at < t; });
         double deepest = 0;
-        for (; it != m_valleys.end() && it->at < to; ++it) {
-            if (it->left > from + 1 && it->right < to - 1)
-                deepest = std::max(deepest, it->depth);
+        for (size_t v = size_t(m_firstValley[size_t(std::clamp(from, 0, m_frames))]);
+             v < m_valleys.size() && m_valleys[v].at < to; ++v) {
+            if (m_valleys[v].left > from + 1 && m_valleys[v].right < to - 1)
+                deepest = std::max(deepest, m_valleys[v].depth);
         }
         return deepest;
     }
@@ -236,9 +259,7 @@ private:
         to = std::min(to, m_frames);
         if (to <= from)
             return 0;
-        int k = 0;
-        while ((2 << k) <= to - from)
-            ++k;
+        const int k = std::bit_width(unsigned(to - from)) - 1;
         const auto &row = table[size_t(k)];
         return std::max(row[size_t(from)], row[size_t(to - (1 << k))]);
     }
@@ -281,8 +302,9 @@ private:
     int m_frames;
     std::vector<float> m_ln, m_lnVoiced, m_loud, m_nucleus, m_pause;
     std::vector<double> m_sumLoud, m_sumNucleus, m_sumSpeech, m_sumPause;
-    SparseMax m_maxNucleus;
-    std::vector<int> m_nextPause;
+    SparseMax m_maxNucleus, m_maxLoud;
+    std::vector<int> m_nextPause, m_nextSpeech;
+    std::vector<int> m_firstValley; // per frame: the first valley at or after it
     struct Valley
     {
         int at, left, right;
@@ -323,27 +345,48 @@ std::vector<int> segmentSyllables(const Signals &sig, const std::vector<int> &pr
         const double d = (b - prior[size_t(k)]) / kPriorSigma;
         return kOnset * sig.onsetEvidence(b, kinds[size_t(k)], k == 0) - kPrior * std::min(0.5 * d * d, kPriorCap);
     };
+    // A pause may follow a syllable's nucleus, never come between its onset and its nucleus.
+    // Its nucleus is a rise after the dip that follows the onset (the first frames after an
+    // onset still carry the falling end of the syllable before). Whether a syllable starting at
+    // `from` lacks one before the next pause depends on `from` alone: computed once per frame.
+    std::vector<float> noNucleusBeforePause(size_t(T), 0.0f);
+    for (int from = 0; from < T; ++from) {
+        const int pause = sig.nextPause(from + 1);
+        if (pause >= T)
+            continue;
+        int dip = from;
+        for (int t = from; t < std::min(from + 15, pause); ++t)
+            if (sig.nucleus(t) < sig.nucleus(dip))
+                dip = t;
+        const double peak = sig.maxNucleus(dip, pause);
+        noNucleusBeforePause[size_t(from)] = peak < 0.3 || peak - sig.nucleus(dip) < 0.15 ? 1.0f : 0.0f;
+    }
+    std::vector<double> logExpected(static_cast<size_t>(n));
+    for (int k = 0; k < n; ++k)
+        logExpected[size_t(k)] = std::log(std::max(expected[size_t(k)], 3.0));
+    std::vector<double> logLength(512);
+    for (size_t len = 1; len < logLength.size(); ++len)
+        logLength[len] = std::log(double(len));
     // A syllable over [from, to): its nucleus and its length (pauses excluded).
     auto span = [&](int k, int from, int to) {
         const double len = std::max(1.0, (to - from) - sig.pauseFrames(from, to));
-        const double r = std::log(len / std::max(expected[size_t(k)], 3.0));
+        const double r
+            = (len < double(logLength.size()) ? logLength[size_t(len)] : std::log(len)) - logExpected[size_t(k)];
         // Two loud peaks inside with a valley of 3 ln units (13 dB) between them: a syllable
         // boundary missed.
         const double inside = std::clamp((sig.innerValley(from, to) - 1.0) / 2.0, 0.0, 1.0);
-        // A pause may follow a syllable's nucleus, never come between its onset and its nucleus.
+        // Nor does a syllable go on after a pause: a nucleus after the pause inside the span
+        // belongs to the next syllable (stop closures are too short to count as pauses).
         const int pause = sig.nextPause(from + 1);
-        // Its nucleus is a rise after the dip that follows the onset (the first frames after an
-        // onset still carry the falling end of the syllable before).
-        double beforePause = 0;
+        double pauseInside = 0;
         if (pause < to) {
-            int dip = from;
-            for (int t = from; t < std::min(from + 15, pause); ++t)
-                if (sig.nucleus(t) < sig.nucleus(dip))
-                    dip = t;
-            const double peak = sig.maxNucleus(dip, pause);
-            beforePause = peak < 0.3 || peak - sig.nucleus(dip) < 0.15 ? 1.0 : 0.0;
+            // Loud sound after the pause counts as well as a voiced nucleus: a rough or creaky
+            // voice's flickering voicing can hide a nucleus, not its loudness.
+            const int resume = sig.nextSpeech(pause);
+            const bool resumes = sig.maxNucleus(resume, to) >= 0.3 || sig.maxLoud(resume, to) >= 0.5;
+            pauseInside = std::max(double(noNucleusBeforePause[size_t(from)]), resumes ? 1.0 : 0.0);
         }
-        return kNucleus * sig.maxNucleus(from, to) - kDuration * r * r - kValley * (inside + beforePause);
+        return kNucleus * sig.maxNucleus(from, to) - kDuration * r * r - kValley * (inside + pauseInside);
     };
     constexpr double kNone = -1e18;
     std::vector<std::vector<double>> score(static_cast<size_t>(n));
@@ -426,9 +469,12 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     Audio ref16 = resampled(reference.audio, kSpeechSampleRate);
     {
         const qsizetype pad = qsizetype(kReferencePad * kSpeechSampleRate);
-        QVector<float> padded(pad, 0.0f);
-        padded += ref16.samples;
-        padded += QVector<float>(pad, 0.0f);
+        // One allocation: fresh pages are costly, and ten minutes of speech are 40 MB.
+        QVector<float> padded;
+        padded.reserve(ref16.samples.size() + 2 * pad);
+        padded.resize(pad, 0.0f);
+        padded.append(ref16.samples);
+        padded.resize(padded.size() + pad, 0.0f);
         quint32 state = 12345;
         for (float &s : padded) {
             state = state * 1664525u + 1013904223u;
@@ -472,8 +518,10 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         progress(0.8, QStringLiteral("warping"));
     const Warp warp(path, b.frames);
 
-    // Reference time → audio time; onsets prefer the first frame of speech among those held
-    // against the reference frame (a pause absorbed there belongs before the syllable).
+    // Reference time → audio time. Where the recording is slower, the warp holds one reference
+    // frame against several of its frames, and the reference's moment may be any of them: an
+    // onset takes the middle of those that are speech (a pause absorbed there belongs before
+    // the syllable), not the first, which is early by half the hold.
     auto mapTime = [&](double tRef, bool onset) {
         const int j = b.frameAt(tRef);
         int i0 = warp.firstA[size_t(j)], i1 = warp.lastA[size_t(j)];
@@ -481,7 +529,9 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
             int i = i0;
             while (i < i1 && a.silence[size_t(i)] > 0.5f)
                 ++i;
-            i0 = i;
+            while (i1 > i && a.silence[size_t(i1)] > 0.5f)
+                --i1;
+            i0 = (i + i1) / 2;
         } else {
             int i = i1;
             while (i > i0 && a.silence[size_t(i)] > 0.5f)
@@ -508,6 +558,14 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
             prior[size_t(k)] = std::max(prior[size_t(k)], prior[size_t(k) - 1] + 3);
         expectedFrames[size_t(k)] = std::max(3.0, (u.end - u.start) / SpeechFeatures::kHop * pace);
         kinds[size_t(k)] = onsetKind(script.syllables[k]);
+        // After a nasal coda a nasal or liquid initial continues the murmur: the fall that
+        // marks a sonorant onset elsewhere is the coda's here, and nothing in the loudness or
+        // the voicing marks where the coda ends. The warp places these onsets.
+        if (k > 0 && kinds[size_t(k)] == OnsetKind::Sonorant) {
+            const QString &before = script.syllables[k - 1].pinyin;
+            if (before.endsWith(QLatin1Char('n')) || before.endsWith(QLatin1String("ng")))
+                kinds[size_t(k)] = OnsetKind::Any;
+        }
     }
     int first = 0, last = a.frames - 1;
     while (first < last && a.silence[size_t(first)] > 0.5f)

@@ -16,11 +16,15 @@ struct Level
     int frames = 0;
 };
 
-Level fromSequence(const DtwSequence &s, int dim)
+// The channels `channels` of each frame of `s` (vectors of `dim` channels).
+Level fromSequence(const DtwSequence &s, int dim, const std::vector<int> &channels)
 {
     Level l;
     l.frames = s.frames;
-    l.vectors.assign(s.vectors, s.vectors + size_t(s.frames) * size_t(dim));
+    l.vectors.resize(size_t(s.frames) * channels.size());
+    for (int t = 0; t < s.frames; ++t)
+        for (size_t c = 0; c < channels.size(); ++c)
+            l.vectors[size_t(t) * channels.size() + c] = s.vectors[size_t(t) * size_t(dim) + size_t(channels[c])];
     if (s.silence)
         l.silence.assign(s.silence, s.silence + s.frames);
     else
@@ -47,8 +51,9 @@ Level halve(const Level &l, int dim)
 using Path = std::vector<std::pair<int, int>>;
 
 // DTW inside a corridor: row i of `a` may meet columns [lo[i], hi[i]] of `b`.
+// `dim` is the channels per frame of the levels; distances are normalised by o.dim.
 Path corridorDtw(const Level &a, const Level &b, const std::vector<int> &lo, const std::vector<int> &hi,
-    const DtwOptions &o, const std::atomic_bool *cancel)
+    const DtwOptions &o, int dim, const std::atomic_bool *cancel)
 {
     const int n = a.frames;
     std::vector<size_t> offset(size_t(n) + 1, 0);
@@ -65,12 +70,12 @@ Path corridorDtw(const Level &a, const Level &b, const std::vector<int> &lo, con
     for (int i = 0; i < n; ++i) {
         if ((i & 255) == 0 && isCancelled(cancel))
             return {};
-        const float *va = a.vectors.data() + size_t(i) * size_t(o.dim);
+        const float *va = a.vectors.data() + size_t(i) * size_t(dim);
         const float sa = a.silence[size_t(i)];
         for (int j = lo[size_t(i)]; j <= hi[size_t(i)]; ++j) {
-            const float *vb = b.vectors.data() + size_t(j) * size_t(o.dim);
+            const float *vb = b.vectors.data() + size_t(j) * size_t(dim);
             float acc = 0;
-            for (int d = 0; d < o.dim; ++d) {
+            for (int d = 0; d < dim; ++d) {
                 const float x = va[d] - vb[d];
                 acc += x * x;
             }
@@ -136,16 +141,31 @@ std::vector<std::pair<int, int>> dtwPath(
 {
     if (a.frames <= 0 || b.frames <= 0 || options.dim <= 0)
         return {};
-    std::vector<Level> as {fromSequence(a, options.dim)}, bs {fromSequence(b, options.dim)};
+    // Channels that are zero in every frame of both sequences (weighted out) add nothing to
+    // any distance: they are left out of the work.
+    std::vector<int> channels;
+    for (int d = 0; d < options.dim; ++d) {
+        bool used = false;
+        for (int t = 0; t < a.frames && !used; ++t)
+            used = a.vectors[size_t(t) * size_t(options.dim) + size_t(d)] != 0.0f;
+        for (int t = 0; t < b.frames && !used; ++t)
+            used = b.vectors[size_t(t) * size_t(options.dim) + size_t(d)] != 0.0f;
+        if (used)
+            channels.push_back(d);
+    }
+    const int dim = std::max(int(channels.size()), 1);
+    if (channels.empty())
+        channels.push_back(0);
+    std::vector<Level> as {fromSequence(a, options.dim, channels)}, bs {fromSequence(b, options.dim, channels)};
     while (long(as.back().frames) * long(bs.back().frames) > options.maxFullCells && as.back().frames > 8
         && bs.back().frames > 8) {
-        as.push_back(halve(as.back(), options.dim));
-        bs.push_back(halve(bs.back(), options.dim));
+        as.push_back(halve(as.back(), dim));
+        bs.push_back(halve(bs.back(), dim));
     }
     int level = int(as.size()) - 1;
     std::vector<int> lo(size_t(as[size_t(level)].frames), 0),
         hi(size_t(as[size_t(level)].frames), bs[size_t(level)].frames - 1);
-    Path path = corridorDtw(as[size_t(level)], bs[size_t(level)], lo, hi, options, cancel);
+    Path path = corridorDtw(as[size_t(level)], bs[size_t(level)], lo, hi, options, dim, cancel);
     while (level > 0 && !path.empty()) {
         --level;
         const Level &fa = as[size_t(level)];
@@ -182,7 +202,7 @@ std::vector<std::pair<int, int>> dtwPath(
             wlo[size_t(r)] = std::min(wlo[size_t(r)], wlo[size_t(r) + 1]);
         for (int r = 0; r < fa.frames; ++r)
             wlo[size_t(r)] = std::min(wlo[size_t(r)], whi[size_t(r)]);
-        path = corridorDtw(fa, fb, wlo, whi, options, cancel);
+        path = corridorDtw(fa, fb, wlo, whi, options, dim, cancel);
     }
     return path;
 }

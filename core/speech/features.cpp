@@ -90,6 +90,21 @@ SpeechFeatures computeSpeechFeatures(const Audio &audio, const std::atomic_bool 
         return w;
     }();
 
+    // The Hamming window's normalised autocorrelation, per lag.
+    static const std::array<float, kWindow> windowAutocorr = [] {
+        std::array<float, kWindow> r;
+        double r0 = 0;
+        for (int i = 0; i < kWindow; ++i)
+            r0 += double(hamming[size_t(i)]) * hamming[size_t(i)];
+        for (int lag = 0; lag < kWindow; ++lag) {
+            double acc = 0;
+            for (int i = 0; i + lag < kWindow; ++i)
+                acc += double(hamming[size_t(i)]) * hamming[size_t(i + lag)];
+            r[size_t(lag)] = float(std::max(acc / r0, 1e-3));
+        }
+        return r;
+    }();
+
     SpeechFeatures f;
     const qsizetype n = audio.samples.size();
     f.frames = n >= kWindow ? int((n - kWindow) / kHopSamples) + 1 : 0;
@@ -111,12 +126,12 @@ SpeechFeatures computeSpeechFeatures(const Audio &audio, const std::atomic_bool 
     // and inverse of the power spectrum for the autocorrelation. Both are in OpenCV's packed
     // real layout: Re0, Re1, Im1, ..., Re(N/2-1), Im(N/2-1), Re(N/2).
     constexpr int kBlock = 256;
-    cv::Mat windows(kBlock, kFft, CV_32F), spectra, powers(kBlock, kFft, CV_32F), autocorr;
+    // Each row's samples fill its first kWindow columns; the zero padding after them stays.
+    cv::Mat windows(kBlock, kFft, CV_32F, cv::Scalar(0)), spectra, powers(kBlock, kFft, CV_32F), autocorr;
     for (int first = 0; first < frames; first += kBlock) {
         if (isCancelled(cancel))
             return {};
         const int count = std::min(kBlock, frames - first);
-        windows.setTo(0);
         for (int r = 0; r < count; ++r) {
             const float *s = audio.samples.constData() + qsizetype(first + r) * kHopSamples;
             float mean = 0;
@@ -177,8 +192,9 @@ SpeechFeatures computeSpeechFeatures(const Audio &audio, const std::atomic_bool 
             float best = 0;
             if (r0 > 0) {
                 for (int lag = lagLo; lag <= lagHi; ++lag) {
-                    // Unbias for the window's overlap at this lag.
-                    const float v = ac[lag] / r0 * float(kWindow) / float(kWindow - lag);
+                    // Divided by the window's own autocorrelation at this lag (Boersma 1993):
+                    // the Hamming taper alone lowers a 70 Hz voice's peak to a seventh.
+                    const float v = ac[lag] / r0 / windowAutocorr[size_t(lag)];
                     best = std::max(best, v);
                 }
             }

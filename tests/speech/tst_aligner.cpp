@@ -43,13 +43,16 @@ std::pair<double, double> onsetErrors(const AlignResult &r, const std::vector<do
 
 // The script spoken in another voice with leading and trailing silence, one pause the script
 // does not mark, and white noise `snrDb` under the speech; `truth` gets the onsets.
-Audio recording(const Script &script, const TtsOptions &voice, double snrDb, quint32 seed, std::vector<double> *truth)
+Audio recording(const Script &script, const TtsOptions &voice, double snrDb, quint32 seed, std::vector<double> *truth,
+    int *pausedBefore = nullptr)
 {
     const TtsResult r = synthesize(script, voice);
     const Audio spoken = resampled(r.audio, kSpeechSampleRate);
     QRandomGenerator rng(seed);
     const double lead = 0.4 + 0.4 * rng.generateDouble(), trail = 0.3 + 0.4 * rng.generateDouble();
     const int pauseAfter = 2 + int(rng.bounded(std::max(1, int(script.syllables.size()) - 4)));
+    if (pausedBefore)
+        *pausedBefore = pauseAfter;
     const double pause = 0.3;
     const qsizetype cut = qsizetype(r.units[pauseAfter].start * kSpeechSampleRate);
     Audio out;
@@ -158,13 +161,86 @@ private Q_SLOTS:
         QVERIFY2(r.ok(), qPrintable(r.error));
         checkWellFormed(r, int(script.syllables.size()), rec.duration());
         const auto [median, p90] = onsetErrors(r, truth);
-        // Tolerances: the bench's synthetic set has a median of about 25 ms; one file may be
+        // Tolerances: the bench's synthetic set has a median of about 17 ms; one file may be
         // worse, a broken aligner is far worse (hundreds of ms).
         QVERIFY2(median <= 45, qPrintable(QStringLiteral("median onset error %1 ms").arg(median)));
         QVERIFY2(p90 <= 200, qPrintable(QStringLiteral("90th percentile %1 ms").arg(p90)));
         // Speech found where it is: not in the leading or trailing silence.
         QVERIFY(r.speechStart > truth.front() - 0.1);
         QVERIFY(r.speechEnd < rec.duration() - 0.2);
+    }
+
+    void sonorantAfterANasalCoda_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("voice");
+        QTest::addColumn<int>("rate");
+        QTest::addColumn<int>("pitch");
+        // an-men, ming-mei, shang-liu, chun-mian, hen-nan, qing-ni: the coda's murmur runs into
+        // the initial, and the fall into the coda is no onset.
+        QTest::newRow("tian an men") << QStringLiteral("我爱北京天安门，天安门上太阳升。") << "cmn-latn-pinyin+f4"
+                                     << 180 << 85;
+        QTest::newRow("ming mei") << QStringLiteral("小明每天早上六点起床。") << "cmn-latn-pinyin+f2" << 140 << 70;
+        QTest::newRow("chun mian") << QStringLiteral("春眠不觉晓，这个问题很难回答，请你再说一遍。")
+                                   << "cmn-latn-pinyin+f4" << 160 << 60;
+    }
+    void sonorantAfterANasalCoda()
+    {
+        QFETCH(QString, text);
+        QFETCH(QString, voice);
+        QFETCH(int, rate);
+        QFETCH(int, pitch);
+        const Script script = mandarin(text);
+        TtsOptions o;
+        o.voice = voice;
+        o.rate = rate;
+        o.pitch = pitch;
+        std::vector<double> truth;
+        const Audio rec = recording(script, o, 30, quint32(rate), &truth);
+        const AlignResult r = alignScript(rec, script);
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        int checked = 0;
+        for (int k = 1; k < script.syllables.size(); ++k) {
+            const QString &p = script.syllables[k].pinyin, &before = script.syllables[k - 1].pinyin;
+            const bool nasalCoda = before.endsWith(QLatin1Char('n')) || before.endsWith(QLatin1String("ng"));
+            if (!QStringLiteral("mnlr").contains(p.at(0)) || !nasalCoda)
+                continue;
+            ++checked;
+            const double error = std::abs(r.syllables[k].start - truth[size_t(k)]) * 1000;
+            // Placed at the fall into the coda, these came out 100-140 ms early.
+            QVERIFY2(error <= 80, qPrintable(QStringLiteral("%1 after %2: %3 ms").arg(p, before).arg(error)));
+        }
+        QVERIFY(checked >= 2);
+    }
+
+    void syllableAfterAnUnmarkedPause_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<quint32>("seed");
+        QTest::newRow("0") << QStringLiteral("今天天气很好，我们去公园散步吧。") << 1u;
+        QTest::newRow("1") << QStringLiteral("这个问题很难回答，请你再说一遍。") << 2u;
+        QTest::newRow("2") << QStringLiteral("小明每天早上六点起床，然后去学校上课。") << 3u;
+        QTest::newRow("3") << QStringLiteral("我爱北京天安门，天安门上太阳升。") << 4u;
+    }
+    void syllableAfterAnUnmarkedPause()
+    {
+        // The klatt voice's syllables with a long nucleus tempted the segmentation to start the
+        // syllable after a pause before it, in the nucleus of the one before.
+        QFETCH(QString, text);
+        QFETCH(quint32, seed);
+        const Script script = mandarin(text);
+        TtsOptions o;
+        o.voice = QStringLiteral("cmn-latn-pinyin+klatt");
+        o.rate = 120;
+        o.pitch = 45;
+        std::vector<double> truth;
+        int paused = 0;
+        const Audio rec = recording(script, o, 20, seed, &truth, &paused);
+        const AlignResult r = alignScript(rec, script);
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        const double error = (r.syllables[paused].start - truth[size_t(paused)]) * 1000;
+        // Before the 0.3 s pause would be about -300 ms.
+        QVERIFY2(error > -150, qPrintable(QStringLiteral("%1 ms").arg(error)));
     }
 
     void longSpeechUsesTheCoarseToFinePath()
@@ -188,29 +264,76 @@ private Q_SLOTS:
         QVERIFY2(median <= 45 && p90 <= 200, qPrintable(QStringLiteral("%1 / %2 ms").arg(median).arg(p90)));
     }
 
+    void realMandarin_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QString>("truthFile"); // TextGrid; empty: no timing truth
+        QTest::addColumn<QString>("tier");
+        QTest::addColumn<QString>("script"); // empty: the TextGrid's words are the script
+        QTest::addColumn<int>("firstTruth"); // the syllable the TextGrid's first onset belongs to
+        // AISHELL-3 sentence, character onsets from a forced aligner's words tier.
+        QTest::newRow("SSB00050015") << "SSB00050015_16k.wav"
+                                     << "SSB00050015.TextGrid"
+                                     << "words" << QString() << 0;
+        // Beijing disyllables: hand-cut C1 V1 C2 V2 of a word inside a carrier phrase; neither is
+        // given. The waveform shows six syllables (two, the word, two): a neutral script of six
+        // syllables stands for them, and C1 and C2 start syllables 3 and 4.
+        QTest::newRow("beijing_f3_50_a") << "beijing_f3_50_a.wav"
+                                         << "beijing_f3_50_a.TextGrid"
+                                         << "syll"
+                                         << "da1 da1 da1 da1 da1 da1" << 2;
+        QTest::newRow("beijing_m5_17_c") << "beijing_m5_17_c.wav"
+                                         << "beijing_m5_17_c.TextGrid"
+                                         << "syll"
+                                         << "da1 da1 da1 da1 da1 da1" << 2;
+        // 48 kHz, transcript only: checked against its waveform plot (bench speech.plots).
+        QTest::newRow("NST_ID001") << "NST_ID001.wav" << QString() << QString() << QStringLiteral("你好你好") << 0;
+    }
     void realMandarin()
     {
+        QFETCH(QString, file);
+        QFETCH(QString, truthFile);
+        QFETCH(QString, tier);
+        QFETCH(QString, script);
+        QFETCH(int, firstTruth);
         const QString dir = sharedData() + QStringLiteral("/speech/");
-        if (!QFile::exists(dir + QStringLiteral("SSB00050015_16k.wav")))
-            QSKIP("shared data (speech/SSB00050015_16k.wav) not present");
-        QString text;
+        if (!QFile::exists(dir + file))
+            QSKIP(qPrintable(QStringLiteral("shared data (speech/%1) not present").arg(file)));
+        QString text = script;
         std::vector<double> truth;
-        for (const Interval &w : textGridTier(dir + QStringLiteral("SSB00050015.TextGrid"), QStringLiteral("words"))) {
+        for (const Interval &w : textGridTier(dir + truthFile, tier)) {
             if (w.text.isEmpty() || w.text.startsWith(QLatin1Char('[')))
                 continue;
-            text += w.text;
-            truth.push_back(w.start);
+            if (tier == QLatin1String("words")) {
+                text += w.text;
+                truth.push_back(w.start);
+            } else if (w.text.startsWith(QLatin1Char('C'))) {
+                truth.push_back(w.start);
+            }
         }
-        QCOMPARE(int(truth.size()), 15);
-        const AudioResult audio = loadAudio(dir + QStringLiteral("SSB00050015_16k.wav"));
-        QVERIFY(audio.ok());
-        const Script script = mandarin(text);
-        const AlignResult r = alignScript(audio.audio, script);
+        const AudioResult audio = loadAudio(dir + file);
+        QVERIFY2(audio.ok(), qPrintable(audio.error));
+        const Script parsed = mandarin(text);
+        const AlignResult r = alignScript(audio.audio, parsed);
         QVERIFY2(r.ok(), qPrintable(r.error));
-        checkWellFormed(r, 15, audio.audio.duration());
-        const auto [median, p90] = onsetErrors(r, truth);
-        // The targets of the speech issue for real Mandarin.
-        QVERIFY2(median <= 30, qPrintable(QStringLiteral("median %1 ms").arg(median)));
+        checkWellFormed(r, int(parsed.syllables.size()), audio.audio.duration());
+        if (truthFile.isEmpty()) {
+            // No timing truth: every syllable inside the speech found, none squeezed to nothing
+            // (a syllable of natural speech lasts 80 ms and more).
+            for (const AlignedSyllable &s : r.syllables) {
+                QVERIFY(s.start >= r.speechStart - 1e-9 && s.end <= r.speechEnd + 1e-9);
+                QVERIFY2(s.end - s.start >= 0.08, qPrintable(QStringLiteral("%1 s").arg(s.end - s.start)));
+            }
+            return;
+        }
+        QVERIFY(!truth.empty());
+        AlignResult compared = r;
+        compared.syllables = r.syllables.mid(firstTruth, qsizetype(truth.size()));
+        QCOMPARE(compared.syllables.size(), qsizetype(truth.size()));
+        const auto [median, p90] = onsetErrors(compared, truth);
+        // The targets of the speech issue for real Mandarin (with two onsets per file, p90 is
+        // the larger error).
+        QVERIFY2(median <= 30 || truth.size() < 3, qPrintable(QStringLiteral("median %1 ms").arg(median)));
         QVERIFY2(p90 <= 80, qPrintable(QStringLiteral("p90 %1 ms").arg(p90)));
     }
 

@@ -1,0 +1,69 @@
+#include "speech/features.h"
+
+#include <QRandomGenerator>
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace toonface;
+
+namespace {
+
+// One second at kSpeechSampleRate: a sawtooth (every harmonic, as a glottal source has) at
+// `f0` Hz, or white noise when f0 is 0.
+Audio tone(double f0)
+{
+    Audio a;
+    QRandomGenerator rng(7);
+    for (int i = 0; i < kSpeechSampleRate; ++i) {
+        const double t = double(i) / kSpeechSampleRate;
+        a.samples.append(
+            f0 > 0 ? float(0.3 * (2 * std::fmod(t * f0, 1.0) - 1)) : float(0.3 * (2 * rng.generateDouble() - 1)));
+    }
+    return a;
+}
+
+double medianVoicing(const SpeechFeatures &f)
+{
+    std::vector<float> v(f.voicing.begin() + 5, f.voicing.end() - 5);
+    std::nth_element(v.begin(), v.begin() + qsizetype(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+} // namespace
+
+class TestFeatures : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void voicingOfAPeriodicSound_data()
+    {
+        QTest::addColumn<double>("f0");
+        // From a deep male voice (fewer than two periods in the 25 ms window) to a child's.
+        QTest::newRow("70 Hz") << 70.0;
+        QTest::newRow("85 Hz") << 85.0;
+        QTest::newRow("120 Hz") << 120.0;
+        QTest::newRow("220 Hz") << 220.0;
+        QTest::newRow("380 Hz") << 380.0;
+    }
+    void voicingOfAPeriodicSound()
+    {
+        QFETCH(double, f0);
+        const SpeechFeatures f = computeSpeechFeatures(tone(f0));
+        QVERIFY(f.frames > 90);
+        // The window's own taper is divided out: a 70 Hz voice read 0.3 before.
+        const double v = medianVoicing(f);
+        QVERIFY2(v >= 0.8, qPrintable(QStringLiteral("voicing %1").arg(v)));
+    }
+
+    void noiseIsNotVoiced()
+    {
+        const double v = medianVoicing(computeSpeechFeatures(tone(0)));
+        QVERIFY2(v <= 0.4, qPrintable(QStringLiteral("voicing %1").arg(v)));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFeatures)
+#include "tst_features.moc"
