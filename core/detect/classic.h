@@ -42,6 +42,30 @@ struct EyePairRules
 std::vector<EyePairCandidate> eyePairCandidates(
     const std::vector<Region> &dark, QSize imageSize, const EyePairRules &rules = {});
 
+// Knowledge beyond eq. (3.5) for real photos (section 3.3.3 assumes the dark regions are eyes
+// and hair only; photos add spectacle rims, nostrils, mouth corners and dark clothing).
+
+// Spectacle rims and other loops: true when the pixels of `region` (label image `labels` of
+// growRegions) enclose at least as many other pixels as they cover.
+bool isRingShaped(const Region &region, const std::vector<int> &labels, QSize imageSize);
+
+// How much darker `region` is than its surround (the frame of half the box's size around the
+// box), in intensity levels: mean(surround) - mean(region). Eyes and brows lie in lighter skin.
+double darknessContrast(const Plane &intensity, const Region &region, const std::vector<int> &labels);
+
+// Whether an eye pair at the centroids `left`, `right` (distance d) sits in the face region F
+// as eyes do (sections 3.3.4-3.3.5 applied to the pair): the point between them is face; F
+// reaches at least 1.2 d down the midline below them (nose, mouth and chin: a pair of mouth
+// corners has only the chin below it) and 0.4 .. 2.5 d to each side along the eye line from
+// the midpoint (the cheeks; nostrils or bits of the lips lie deep inside the face, many of
+// their own widths from its sides). Reaches are capped at 3 d down and 3 d sideways.
+struct PairReach
+{
+    double below = 0; // in d
+    double side = 0; // the shorter of the two sideways reaches, in d
+};
+bool eyePairInFace(const Mask &face, QPointF left, QPointF right, PairReach *reach = nullptr);
+
 // Section 3.4.1: the circle holding the most dark points of one eye region. The radius grows
 // while the best-placed circle of that radius stays at least `minFill` dark; the largest such
 // circle is the eyeball.
@@ -78,6 +102,8 @@ struct ClassicResult
     FaceModel face;
     double t1 = 0; // the first-level threshold
     double eyeLevelK = 1; // the k of t = m1 - k s1 on which the eye pair was found
+    QRect centralRect; // the rectangle of Algorithm 4.1 the result was found with
+    bool eyePairInFace = false; // the chosen pair passed eyePairInFace() (else the thesis' choice)
     QRectF eyeRegions[2]; // the chosen pair's boxes, image-left first
     int candidateCount = 0;
     Eyeball eyeballs[2]; // image-left first
