@@ -142,7 +142,42 @@ bool eyePairInFace(const Mask &F, QPointF left, QPointF right, PairReach *reach)
     }
     if (reach)
         *reach = r;
-    return r.below >= 1.2 && r.side >= 0.4 && r.side <= 2.5;
+    return r.below >= 1.2 && r.side >= 0.55 && r.side <= 1.6;
+}
+
+double mouthRowContrast(const Plane &I, QPointF left, QPointF right)
+{
+    const double d = QLineF(left, right).length();
+    if (d <= 0)
+        return 0;
+    const QPointF mid = (left + right) / 2;
+    const QPointF along = (right - left) / d;
+    QPointF down(-along.y(), along.x());
+    if (down.y() < 0)
+        down = -down;
+    std::vector<double> rows;
+    const int half = std::max(1, int(std::lround(0.4 * d)));
+    for (int t = int(std::floor(0.7 * d)); t <= int(std::ceil(1.5 * d)); ++t) {
+        double sum = 0;
+        int n = 0;
+        for (int s = -half; s <= half; ++s) {
+            const QPointF p = mid + t * down + s * along;
+            const int x = int(std::lround(p.x())), y = int(std::lround(p.y()));
+            if (I.contains(x, y)) {
+                sum += I.at(x, y);
+                ++n;
+            }
+        }
+        if (n > half) // rows mostly outside the image say nothing
+            rows.push_back(sum / n);
+    }
+    if (rows.size() < 3)
+        return 0;
+    std::vector<double> sorted = rows;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    const double median = sorted[sorted.size() / 2];
+    const double darkest = *std::min_element(rows.begin(), rows.end());
+    return median > 0 ? (median - darkest) / median : 0;
 }
 
 Eyeball detectEyeball(const Mask &dark, QRect box, double minFill)
@@ -477,16 +512,6 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
             // 1.3 times; 0.1 d .. 0.7 d lower, horizontally aligned) or inside its two boxes.
             a.eyes.clear();
             for (const auto &c : a.candidates) {
-                    const Region &l = a.dark[c.left], &r = a.dark[c.right];
-                    PairReach pr;
-                    eyePairInFace(a.refined.face, l.centroid, r.centroid, &pr);
-                    const double bl = pr.side;
-                    std::fprintf(stderr, "rect %d\n,%d k %.1f cand L(%.0f,%.0f box %dx%d area %d c %.1f) R(%.0f,%.0f box %dx%d area %d c %.1f) score %.4f below %.2f s1 %.1f",
-                        rect.x(), rect.y(), k, l.centroid.x(), l.centroid.y(), l.box.width(), l.box.height(), l.area,
-                        darknessContrast(I, l, a.darkLabels), r.centroid.x(), r.centroid.y(), r.box.width(), r.box.height(), r.area,
-                        darknessContrast(I, r, a.darkLabels), c.score, bl, a.first.s1);
-                }
-            for (const auto &c : a.candidates) {
                 const QPointF pa = a.dark[c.left].centroid, pb = a.dark[c.right].centroid;
                 const double dist = QLineF(pa, pb).length();
                 bool hasBelow = false;
@@ -517,7 +542,8 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
             // The face check (eyePairInFace): the eyes have the nose, mouth and chin of F_final
             // below them; the best-scoring pair that passes wins.
             std::erase_if(a.eyes, [&](const EyePairCandidate &c) {
-                return !eyePairInFace(a.refined.face, a.dark[c.left].centroid, a.dark[c.right].centroid);
+                const QPointF l = a.dark[c.left].centroid, r = a.dark[c.right].centroid;
+                return !eyePairInFace(a.refined.face, l, r) || mouthRowContrast(I, l, r) < 0.15;
             });
             if (!a.eyes.empty()) {
                 chosen = std::move(a);

@@ -66,6 +66,12 @@ struct PairReach
 };
 bool eyePairInFace(const Mask &face, QPointF left, QPointF right, PairReach *reach = nullptr);
 
+// The mouth below an eye pair (the thesis' Div_NM = EyeMid.y + d, section 3.4.2): over the band
+// 0.8 d wide on the midline, 0.7 .. 1.5 d below the pair's centre, how much darker its darkest
+// row is than its median row, as a share of the median (0 .. 1). The lips and the gap between
+// them darken a row across; the skin under a pair of hair strands or nostrils stays even.
+double mouthRowContrast(const Plane &intensity, QPointF left, QPointF right);
+
 // Section 3.4.1: the circle holding the most dark points of one eye region. The radius grows
 // while the best-placed circle of that radius stays at least `minFill` dark; the largest such
 // circle is the eyeball.
