@@ -56,9 +56,10 @@ double darknessContrast(const Plane &intensity, const Region &region, const std:
 // Whether an eye pair at the centroids `left`, `right` (distance d) sits in the face region F
 // as eyes do (sections 3.3.4-3.3.5 applied to the pair): the point between them is face; F
 // reaches at least 1.2 d down the midline below them (nose, mouth and chin: a pair of mouth
-// corners has only the chin below it) and 0.4 .. 2.5 d to each side along the eye line from
-// the midpoint (the cheeks; nostrils or bits of the lips lie deep inside the face, many of
-// their own widths from its sides). Reaches are capped at 3 d down and 3 d sideways.
+// corners has only the chin below it) and 0.55 .. 1.6 d to each side along the eye line from
+// the midpoint (a face is about 2.2 eye distances wide at the eyes; hair over a temple or a
+// turned head shortens one side; nostrils, bits of the lips or of a fringe lie many of their
+// own spacings from the face's sides). Reaches are capped at 3 d down and 3 d sideways.
 struct PairReach
 {
     double below = 0; // in d
