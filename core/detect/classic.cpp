@@ -623,6 +623,13 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
             for (int x = r.box.left(); x <= r.box.right(); ++x)
                 m.at(x, y) = darkLabels[size_t(y) * size.width() + x] == r.label;
         res.eyeballs[k] = detectEyeball(m, r.box);
+        // Deviation from 3.4.1 for light irises: the dark points are then only the lids and
+        // lashes, and the largest disc of them lies at the thick outer corner, not on the iris.
+        // A frontal eye looks ahead, its iris in the middle of its outline: a circle found in
+        // the outer quarters of the region's columns is replaced by the centre of the region's
+        // box (the outline's centre), keeping the radius.
+        if (std::abs(res.eyeballs[k].centre.x() - QRectF(r.box).center().x()) > r.box.width() / 4.0)
+            res.eyeballs[k].centre = QRectF(r.box).center();
     }
     const Eyeball &ebL = res.eyeballs[0], &ebR = res.eyeballs[1];
     res.d = QLineF(ebL.centre, ebR.centre).length();
