@@ -489,18 +489,27 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
             const Mask eyeB1 = k > 1.0 ? firstLevelThreshold(I, rect, k).b1 : a.first.b1;
             a.dark = growRegions(eyeB1, 0, &a.darkLabels);
             a.candidates = eyePairCandidates(a.dark, size);
-            // Beyond Chan's rules (3.2): a region that is a loop (a spectacle rim) or is not
-            // clearly darker than its surround (a patch of dark clothing or background that
-            // the threshold cut into pieces) is no eye. "Clearly": by half the spread s1 of
-            // the central rectangle's intensity.
-            std::vector<int> verdict(a.dark.size(), -1);
+            // Beyond Chan's rules (3.2): a region that is not clearly darker than its surround (a
+            // patch of dark clothing or background that the threshold cut into pieces) is no
+            // eye; "clearly": by half the spread s1 of the central rectangle's intensity. A loop
+            // wider than 0.6 of the pair's spacing is a spectacle rim (lenses nearly meet at the
+            // bridge, ~0.8 of the spacing wide), while an eye outlined by its lids is a loop
+            // about 0.45 of it wide.
+            std::vector<int> verdict(a.dark.size(), -1), ring(a.dark.size(), -1);
             auto eyeLike = [&](int i) {
                 if (verdict[i] < 0)
-                    verdict[i] = !isRingShaped(a.dark[i], a.darkLabels, size)
-                        && darknessContrast(I, a.dark[i], a.darkLabels) >= 0.5 * a.first.s1;
+                    verdict[i] = darknessContrast(I, a.dark[i], a.darkLabels) >= 0.5 * a.first.s1;
                 return verdict[i] == 1;
             };
-            std::erase_if(a.candidates, [&](const EyePairCandidate &c) { return !eyeLike(c.left) || !eyeLike(c.right); });
+            auto rim = [&](int i, double spacing) {
+                if (ring[i] < 0)
+                    ring[i] = isRingShaped(a.dark[i], a.darkLabels, size);
+                return ring[i] == 1 && a.dark[i].box.width() > 0.6 * spacing;
+            };
+            std::erase_if(a.candidates, [&](const EyePairCandidate &c) {
+                const double spacing = QLineF(a.dark[c.left].centroid, a.dark[c.right].centroid).length();
+                return !eyeLike(c.left) || !eyeLike(c.right) || rim(c.left, spacing) || rim(c.right, spacing);
+            });
             if (hint.isValid()) {
                 const QRectF upper(hint.x(), hint.y(), hint.width(), 0.6 * hint.height());
                 std::erase_if(a.candidates, [&](const EyePairCandidate &c) {

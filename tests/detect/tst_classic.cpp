@@ -33,7 +33,9 @@ struct DrawnFace
     QRectF hair {118, 80, 244, 200}; // the hair ellipse, behind the skin
 };
 
-DrawnFace drawFace()
+// lightIrises: grey-blue irises with a small pupil, outlined by lash lines that thicken toward
+// the outer corners (mascara), as in many photos: the dark points of an eye hold no iris disc.
+DrawnFace drawFace(bool lightIrises = false)
 {
     DrawnFace f;
     f.image = QImage(480, 480, QImage::Format_RGB32);
@@ -53,9 +55,22 @@ DrawnFace drawFace()
     p.drawEllipse(f.eyeL, 19, 8); // eye whites
     p.drawEllipse(f.eyeR, 19, 8);
     p.setPen(Qt::NoPen);
-    p.setBrush(QColor(30, 20, 15));
+    p.setBrush(lightIrises ? QColor(150, 170, 185) : QColor(30, 20, 15));
     p.drawEllipse(f.eyeL, f.irisR, f.irisR);
     p.drawEllipse(f.eyeR, f.irisR, f.irisR);
+    if (lightIrises) {
+        p.setBrush(QColor(30, 20, 15));
+        p.drawEllipse(f.eyeL, 2.0, 2.0);
+        p.drawEllipse(f.eyeR, 2.0, 2.0);
+        // The thick outer lash corners: wedges along the upper lids' outer ends.
+        for (int side : {-1, 1}) {
+            const QPointF e = side < 0 ? f.eyeL : f.eyeR;
+            const QPointF tip = e + QPointF(side * 22, -1);
+            const QPointF polygon[3] = {tip, e + QPointF(side * 8, -8.5), e + QPointF(side * 12, -4)};
+            p.drawPolygon(polygon, 3);
+            p.drawEllipse(e + QPointF(side * 16, -4), 4.5, 4.5);
+        }
+    }
     p.setBrush(QColor(70, 45, 30));
     p.drawRect(f.browL);
     p.drawRect(f.browR);
@@ -126,6 +141,7 @@ private Q_SLOTS:
     void mouthRow_data();
     void mouthRow();
     void drawnFace();
+    void lightIrises();
     void graceHopper();
     void realPortraits_data();
     void realPortraits();
@@ -574,6 +590,25 @@ void TestClassic::drawnFace()
         QVERIFY2(offEllipse(h, f.hair) < 0.06, qPrintable(QStringLiteral("h.%1").arg(i + 1)));
     }
     QVERIFY(r.face.isValid());
+}
+
+// Light irises: the eye regions are the lash lines, whose thickest part (the outer corner)
+// would hold the largest dark circle; the eyeball centre must still be the eye's middle.
+void TestClassic::lightIrises()
+{
+    const DrawnFace f = drawFace(true);
+    const ClassicResult r = detectClassic(f.image, true);
+    const QString dir = qEnvironmentVariable("TOONFACE_CLASSIC_DEBUG");
+    if (!dir.isEmpty())
+        for (auto it = r.debugImages.begin(); it != r.debugImages.end(); ++it)
+            it.value().save(dir + QStringLiteral("/light-") + it.key() + QStringLiteral(".png"));
+    QVERIFY2(r.ok, qPrintable(r.error));
+    qInfo("eyeballs (%.1f, %.1f) r %.1f and (%.1f, %.1f) r %.1f", r.eyeballs[0].centre.x(), r.eyeballs[0].centre.y(),
+        r.eyeballs[0].radius, r.eyeballs[1].centre.x(), r.eyeballs[1].centre.y(), r.eyeballs[1].radius);
+    // Within a third of the iris' width of the drawn centres, horizontally and vertically.
+    QVERIFY(QLineF(r.face.point("3.6"), f.eyeL).length() <= 2 * f.irisR / 3 + 1);
+    QVERIFY(QLineF(r.face.point("3.5"), f.eyeR).length() <= 2 * f.irisR / 3 + 1);
+    QVERIFY(std::abs(r.d - 90) < 6);
 }
 
 // The thesis' assumptions (plain background, frontal light) hold only roughly here; the
