@@ -96,9 +96,9 @@ bool isRingShaped(const Region &region, const std::vector<int> &labels, QSize im
 double darknessContrast(const Plane &I, const Region &region, const std::vector<int> &labels)
 {
     const QRect box = region.box;
-    const QRect frame = box.adjusted(-box.width() / 2 - 1, -box.height() / 2 - 1, box.width() / 2 + 1,
-                              box.height() / 2 + 1)
-                            .intersected(QRect(QPoint(0, 0), I.size));
+    const QRect frame
+        = box.adjusted(-box.width() / 2 - 1, -box.height() / 2 - 1, box.width() / 2 + 1, box.height() / 2 + 1)
+              .intersected(QRect(QPoint(0, 0), I.size));
     double inside = 0, outside = 0;
     int nIn = 0, nOut = 0;
     for (int y = frame.top(); y <= frame.bottom(); ++y) {

@@ -760,8 +760,8 @@ void TestClassic::sharedDataNme_data()
     // assumptions: a frontal face over the middle of the picture on a plain background.
     // lfpw 0003 (the face in the top third over a bare chest of the same hue, light eyes) and
     // einstein (grey, a small face off-centre in a busy scene) do not: measured only.
-    const QMap<QString, double> bounds {{QStringLiteral("lfpw_trainset_image_0001"), 0.15},
-        {QStringLiteral("lfpw_trainset_image_0002"), 0.2}};
+    const QMap<QString, double> bounds {
+        {QStringLiteral("lfpw_trainset_image_0001"), 0.15}, {QStringLiteral("lfpw_trainset_image_0002"), 0.2}};
     const QDir dir(sharedFacesDir());
     int rows = 0;
     for (const QFileInfo &pts : dir.entryInfoList({QStringLiteral("*.pts")}, QDir::Files, QDir::Name)) {
