@@ -145,8 +145,10 @@ bool eyePairInFace(const Mask &F, QPointF left, QPointF right, PairReach *reach)
     return r.below >= 1.2 && r.side >= 0.55 && r.side <= 1.6;
 }
 
-double mouthRowContrast(const Plane &I, QPointF left, QPointF right)
+double mouthRowContrast(const Plane &I, QPointF left, QPointF right, double *darkestRow)
 {
+    if (darkestRow)
+        *darkestRow = 0;
     const double d = QLineF(left, right).length();
     if (d <= 0)
         return 0;
@@ -156,6 +158,7 @@ double mouthRowContrast(const Plane &I, QPointF left, QPointF right)
     if (down.y() < 0)
         down = -down;
     std::vector<double> rows;
+    std::vector<int> offsets;
     const int half = std::max(1, int(std::lround(0.4 * d)));
     for (int t = int(std::floor(0.7 * d)); t <= int(std::ceil(1.5 * d)); ++t) {
         double sum = 0;
@@ -168,16 +171,20 @@ double mouthRowContrast(const Plane &I, QPointF left, QPointF right)
                 ++n;
             }
         }
-        if (n > half) // rows mostly outside the image say nothing
+        if (n > half) { // rows mostly outside the image say nothing
             rows.push_back(sum / n);
+            offsets.push_back(t);
+        }
     }
     if (rows.size() < 3)
         return 0;
     std::vector<double> sorted = rows;
     std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
     const double median = sorted[sorted.size() / 2];
-    const double darkest = *std::min_element(rows.begin(), rows.end());
-    return median > 0 ? (median - darkest) / median : 0;
+    const auto darkest = std::min_element(rows.begin(), rows.end());
+    if (darkestRow)
+        *darkestRow = offsets[size_t(darkest - rows.begin())];
+    return median > 0 ? (median - *darkest) / median : 0;
 }
 
 Eyeball detectEyeball(const Mask &dark, QRect box, double minFill)
@@ -677,7 +684,17 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
     }
     res.divEE = ebL.centre.y() - ebL.height() / 2 - 1;
     res.divEN = mid.y() + d / 3;
+    // Div_NM: the thesis speculates EyeMid.y + d "by an experimental result"; faces vary
+    // (a short face puts the upper lip above that line, and the mouth search then starts inside
+    // the lips). Where the eye pair's mouth row is clear (mouthRowContrast), the line goes a
+    // fifth of d above it (between the nose's base and the upper lip), never within d/4 of
+    // Div_EN.
     res.divNM = mid.y() + d;
+    {
+        double row = 0;
+        if (mouthRowContrast(I, ebL.centre, ebR.centre, &row) >= 0.15)
+            res.divNM = std::max(res.divEN + d / 4, mid.y() + row - 0.2 * d);
+    }
     Mask edges {size, std::vector<std::uint8_t>(size_t(size.width()) * size.height(), 0)};
     const double cuts[5] = {double(square.top()), res.divEE, res.divEN, res.divNM, double(square.bottom() + 1)};
     for (int part = 0; part < 4; ++part) {

@@ -71,7 +71,8 @@ bool eyePairInFace(const Mask &face, QPointF left, QPointF right, PairReach *rea
 // 0.8 d wide on the midline, 0.7 .. 1.5 d below the pair's centre, how much darker its darkest
 // row is than its median row, as a share of the median (0 .. 1). The lips and the gap between
 // them darken a row across; the skin under a pair of hair strands or nostrils stays even.
-double mouthRowContrast(const Plane &intensity, QPointF left, QPointF right);
+// *darkestRow receives that row's distance below the pair's centre in pixels (0 when no row).
+double mouthRowContrast(const Plane &intensity, QPointF left, QPointF right, double *darkestRow = nullptr);
 
 // Section 3.4.1: the circle holding the most dark points of one eye region. The radius grows
 // while the best-placed circle of that radius stays at least `minFill` dark; the largest such

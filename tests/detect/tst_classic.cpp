@@ -756,12 +756,12 @@ void TestClassic::sharedDataNme_data()
     QTest::addColumn<QString>("image");
     QTest::addColumn<QString>("pts");
     QTest::addColumn<double>("bound");
-    // Measured bounds (NME 0.102 and 0.132 when set) for the photos that meet the thesis'
+    // Measured bounds (NME 0.101 and 0.087 when set) for the photos that meet the thesis'
     // assumptions: a frontal face over the middle of the picture on a plain background.
     // lfpw 0003 (the face in the top third over a bare chest of the same hue, light eyes) and
     // einstein (grey, a small face off-centre in a busy scene) do not: measured only.
     const QMap<QString, double> bounds {
-        {QStringLiteral("lfpw_trainset_image_0001"), 0.15}, {QStringLiteral("lfpw_trainset_image_0002"), 0.2}};
+        {QStringLiteral("lfpw_trainset_image_0001"), 0.15}, {QStringLiteral("lfpw_trainset_image_0002"), 0.15}};
     const QDir dir(sharedFacesDir());
     int rows = 0;
     for (const QFileInfo &pts : dir.entryInfoList({QStringLiteral("*.pts")}, QDir::Files, QDir::Name)) {
