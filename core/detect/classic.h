@@ -45,8 +45,9 @@ std::vector<EyePairCandidate> eyePairCandidates(
 // Knowledge beyond eq. (3.5) for real photos (section 3.3.3 assumes the dark regions are eyes
 // and hair only; photos add spectacle rims, nostrils, mouth corners and dark clothing).
 
-// Spectacle rims and other loops: true when the pixels of `region` (label image `labels` of
-// growRegions) enclose at least as many other pixels as they cover.
+// Loops: true when the pixels of `region` (label image `labels` of growRegions) enclose at
+// least as many other pixels as they cover. Spectacle rims are loops, and so is an eye outlined
+// by its lids: detectClassic() tells them apart by width (see there).
 bool isRingShaped(const Region &region, const std::vector<int> &labels, QSize imageSize);
 
 // How much darker `region` is than its surround (the frame of half the box's size around the
@@ -111,7 +112,9 @@ struct ClassicResult
     double t1 = 0; // the first-level threshold
     double eyeLevelK = 1; // the k of t = m1 - k s1 on which the eye pair was found
     QRect centralRect; // the rectangle of Algorithm 4.1 the result was found with
-    bool eyePairInFace = false; // the chosen pair passed eyePairInFace() (else the thesis' choice)
+    // The chosen pair passed the face checks (eyePairInFace() and a mouth row, mouthRowContrast()
+    // >= 0.15); false: no pair did, and the pair is the thesis' own choice by eq. (3.5).
+    bool eyePairInFace = false;
     QRectF eyeRegions[2]; // the chosen pair's boxes, image-left first
     int candidateCount = 0;
     Eyeball eyeballs[2]; // image-left first
