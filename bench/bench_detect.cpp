@@ -40,23 +40,27 @@ double median(std::vector<double> v)
     return v[v.size() / 2];
 }
 
-// Median wall time per stage over repeated detections (the model is loaded before timing).
-QJsonObject stageTimes(const QImage &image, int runs = 15)
+// Median wall time per stage over repeated detections with `method` (the landmark model is
+// loaded before timing; the classic method needs none).
+QJsonObject stageTimes(const QImage &image, int runs = 15, DetectionMethod method = DetectionMethod::Auto)
 {
     QString error;
-    if (!preloadLandmarkModel(&error))
+    if (method != DetectionMethod::Classic && !preloadLandmarkModel(&error))
         return {{QStringLiteral("skipped"), error}};
+    DetectOptions options;
+    options.method = method;
     QMap<QString, std::vector<double>> times;
     std::vector<double> cpu;
     DetectionResult r;
     for (int i = 0; i < runs; ++i) {
         const std::clock_t c0 = std::clock();
-        r = detectFace(image);
+        r = detectFace(image, options);
         cpu.push_back(1000.0 * double(std::clock() - c0) / CLOCKS_PER_SEC);
         for (auto it = r.timingMs.cbegin(); it != r.timingMs.cend(); ++it)
             times[it.key()].push_back(it.value());
     }
     QJsonObject out;
+    out.insert(QStringLiteral("method"), detectionMethodName(method));
     out.insert(QStringLiteral("size"), QStringLiteral("%1x%2").arg(image.width()).arg(image.height()));
     out.insert(QStringLiteral("status"), int(r.status));
     out.insert(QStringLiteral("faceCount"), r.faceCount);
@@ -133,6 +137,24 @@ static QJsonObject benchGrace1080()
     return stageTimes(framed(photo, QSize(1920, 1080)));
 }
 
+// The thesis pipeline on the same frames: its stages are hsi, regions, eyePair, eyeballs, edges,
+// features, featurePoints, outline (classic.cpp); it works on a copy at most 640 px wide.
+static QJsonObject benchClassic640()
+{
+    const QImage photo(kGrace);
+    if (photo.isNull())
+        return QJsonObject {{QStringLiteral("skipped"), QStringLiteral("%1 missing").arg(kGrace)}};
+    return stageTimes(framed(photo, QSize(640, 480)), 15, DetectionMethod::Classic);
+}
+
+static QJsonObject benchClassic1080()
+{
+    const QImage photo(kGrace);
+    if (photo.isNull())
+        return QJsonObject {{QStringLiteral("skipped"), QStringLiteral("%1 missing").arg(kGrace)}};
+    return stageTimes(framed(photo, QSize(1920, 1080)), 15, DetectionMethod::Classic);
+}
+
 // The worst case: no face, so every detection pass runs.
 static QJsonObject benchNoFace()
 {
@@ -141,13 +163,19 @@ static QJsonObject benchNoFace()
     return stageTimes(blank, 5);
 }
 
-// Landmark accuracy on the research photos (300-W NME, shared/data/README.md protocol).
-static QJsonObject benchNme()
+// Landmark accuracy on the research photos (300-W NME, shared/data/README.md protocol) for
+// one method: per image and the mean over the images where a face was placed.
+static QJsonObject nmeTable(DetectionMethod method)
 {
     const QString dataDir = bench::sharedDataDir();
     if (dataDir.isEmpty())
         return QJsonObject {{QStringLiteral("skipped"), QStringLiteral("no shared data (TOONFACE_DATA_DIR)")}};
+    QString error;
+    if (method != DetectionMethod::Classic && !preloadLandmarkModel(&error))
+        return QJsonObject {{QStringLiteral("skipped"), error}};
     const QDir dir(QDir(dataDir).filePath(QStringLiteral("faces")));
+    DetectOptions options;
+    options.method = method;
     QJsonArray rows;
     double sum = 0;
     int n = 0;
@@ -160,7 +188,7 @@ static QJsonObject benchNme()
         if (imagePath.isEmpty() || !readPts(pts.filePath(), &truth))
             continue;
         const QImage image(imagePath);
-        const DetectionResult r = detectFace(image);
+        const DetectionResult r = detectFace(image, options);
         QJsonObject row;
         row.insert(QStringLiteral("image"), QFileInfo(imagePath).fileName());
         row.insert(QStringLiteral("size"), QStringLiteral("%1x%2").arg(image.width()).arg(image.height()));
@@ -177,14 +205,34 @@ static QJsonObject benchNme()
         rows.append(row);
     }
     QJsonObject out;
+    out.insert(QStringLiteral("method"), detectionMethodName(method));
     out.insert(QStringLiteral("images"), rows);
     out.insert(QStringLiteral("detected"), n);
     out.insert(QStringLiteral("meanNme"), n ? sum / n : 0.0);
     return out;
 }
 
+static QJsonObject benchNme()
+{
+    return nmeTable(DetectionMethod::Auto);
+}
+
+static QJsonObject benchNmeLandmarks()
+{
+    return nmeTable(DetectionMethod::Landmarks);
+}
+
+static QJsonObject benchNmeClassic()
+{
+    return nmeTable(DetectionMethod::Classic);
+}
+
 TOONFACE_BENCHMARK("detect.modelLoad", benchModelLoad);
 TOONFACE_BENCHMARK("detect.grace640x480", benchGrace640);
 TOONFACE_BENCHMARK("detect.grace1920x1080", benchGrace1080);
 TOONFACE_BENCHMARK("detect.noFace640x480", benchNoFace);
+TOONFACE_BENCHMARK("detect.classic640x480", benchClassic640);
+TOONFACE_BENCHMARK("detect.classic1920x1080", benchClassic1080);
 TOONFACE_BENCHMARK("detect.nme", benchNme);
+TOONFACE_BENCHMARK("detect.nmeLandmarks", benchNmeLandmarks);
+TOONFACE_BENCHMARK("detect.nmeClassic", benchNmeClassic);

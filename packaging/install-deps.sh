@@ -16,5 +16,5 @@ apt-get install -y -q --no-install-recommends \
   unicode-data rime-data-terra-pinyin rime-data-pinyin-simp \
   libavcodec-dev libavformat-dev libavutil-dev libswresample-dev libswscale-dev \
   gstreamer1.0-plugins-good gstreamer1.0-libav \
-  python-matplotlib-data fonts-wqy-microhei fonts-dejavu-core \
+  python-matplotlib-data python3-skimage fonts-wqy-microhei fonts-dejavu-core \
   xvfb xauth chromium sox

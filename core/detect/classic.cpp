@@ -76,6 +76,117 @@ std::vector<EyePairCandidate> eyePairCandidates(
     return pairs;
 }
 
+bool isRingShaped(const Region &region, const std::vector<int> &labels, QSize imageSize)
+{
+    const QRect box = region.box;
+    if (box.width() < 3 || box.height() < 3)
+        return false;
+    // The other pixels of the box that cannot reach the box's edge without crossing the region.
+    Mask other {box.size(), std::vector<std::uint8_t>(size_t(box.width()) * box.height())};
+    for (int y = 0; y < box.height(); ++y)
+        for (int x = 0; x < box.width(); ++x)
+            other.at(x, y) = labels[size_t(box.top() + y) * imageSize.width() + box.left() + x] != region.label;
+    int enclosed = 0;
+    for (const Region &r : growRegions(other, 1))
+        if (!r.touchesBorder)
+            enclosed += r.area;
+    return enclosed >= region.area;
+}
+
+double darknessContrast(const Plane &I, const Region &region, const std::vector<int> &labels)
+{
+    const QRect box = region.box;
+    const QRect frame
+        = box.adjusted(-box.width() / 2 - 1, -box.height() / 2 - 1, box.width() / 2 + 1, box.height() / 2 + 1)
+              .intersected(QRect(QPoint(0, 0), I.size));
+    double inside = 0, outside = 0;
+    int nIn = 0, nOut = 0;
+    for (int y = frame.top(); y <= frame.bottom(); ++y) {
+        for (int x = frame.left(); x <= frame.right(); ++x) {
+            if (labels[size_t(y) * I.size.width() + x] == region.label) {
+                inside += I.at(x, y);
+                ++nIn;
+            } else if (!box.contains(x, y)) {
+                outside += I.at(x, y);
+                ++nOut;
+            }
+        }
+    }
+    if (nIn == 0 || nOut == 0)
+        return 0;
+    return outside / nOut - inside / nIn;
+}
+
+bool eyePairInFace(const Mask &F, QPointF left, QPointF right, PairReach *reach)
+{
+    PairReach r;
+    const double d = QLineF(left, right).length();
+    const QPointF mid = (left + right) / 2;
+    auto inFace = [&](QPointF p) {
+        const int x = int(std::lround(p.x())), y = int(std::lround(p.y()));
+        return F.contains(x, y) && F.at(x, y);
+    };
+    // Steps of one pixel from the midpoint while F holds, in d.
+    auto walk = [&](QPointF step) {
+        int n = 0;
+        const int maxSteps = int(std::ceil(3 * d));
+        while (n < maxSteps && inFace(mid + (n + 1) * step))
+            ++n;
+        return n / d;
+    };
+    if (d > 0 && inFace(mid)) {
+        const QPointF along = (right - left) / d;
+        const QPointF perp(-along.y(), along.x());
+        r.below = walk(perp.y() >= 0 ? perp : -perp);
+        r.side = std::min(walk(along), walk(-along));
+    }
+    if (reach)
+        *reach = r;
+    return r.below >= 1.2 && r.side >= 0.55 && r.side <= 1.6;
+}
+
+double mouthRowContrast(const Plane &I, QPointF left, QPointF right, double *darkestRow)
+{
+    if (darkestRow)
+        *darkestRow = 0;
+    const double d = QLineF(left, right).length();
+    if (d <= 0)
+        return 0;
+    const QPointF mid = (left + right) / 2;
+    const QPointF along = (right - left) / d;
+    QPointF down(-along.y(), along.x());
+    if (down.y() < 0)
+        down = -down;
+    std::vector<double> rows;
+    std::vector<int> offsets;
+    const int half = std::max(1, int(std::lround(0.4 * d)));
+    for (int t = int(std::floor(0.7 * d)); t <= int(std::ceil(1.5 * d)); ++t) {
+        double sum = 0;
+        int n = 0;
+        for (int s = -half; s <= half; ++s) {
+            const QPointF p = mid + t * down + s * along;
+            const int x = int(std::lround(p.x())), y = int(std::lround(p.y()));
+            if (I.contains(x, y)) {
+                sum += I.at(x, y);
+                ++n;
+            }
+        }
+        if (n > half) { // rows mostly outside the image say nothing
+            rows.push_back(sum / n);
+            offsets.push_back(t);
+        }
+    }
+    if (rows.size() < 3)
+        return 0;
+    std::vector<double> sorted = rows;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    const double median = sorted[sorted.size() / 2];
+    const auto darkest = std::min_element(rows.begin(), rows.end());
+    if (darkestRow)
+        *darkestRow = offsets[size_t(darkest - rows.begin())];
+    return median > 0 ? (median - *darkest) / median : 0;
+}
+
 Eyeball detectEyeball(const Mask &dark, QRect box, double minFill)
 {
     box = box.intersected(QRect(QPoint(0, 0), dark.size));
@@ -330,18 +441,156 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
     const QRectF hint = faceHint.isValid()
         ? QRectF(faceHint.x() * scale, faceHint.y() * scale, faceHint.width() * scale, faceHint.height() * scale)
         : QRectF();
-    const QRect rect = hint.isValid()
-        ? QRectF(hint.x() + hint.width() / 4, hint.y() + hint.height() / 4, hint.width() / 2, hint.height() / 2)
-              .toAlignedRect()
-              .intersected(QRect(QPoint(0, 0), size))
-        : centralRect(size);
+    // Algorithm 4.1 assumes the face covers the central rectangle. Deviation for real photos
+    // (thesis 3.3.2): when no eye pair found with it passes the face check below, the same
+    // rectangle is tried higher up the central column (its centre at 1/3, then 1/4 of the
+    // height), as portraits frame the face at or above the middle. With a face hint only the
+    // middle of the hint is used.
+    std::vector<QRect> rects;
+    if (hint.isValid()) {
+        rects.push_back(
+            QRectF(hint.x() + hint.width() / 4, hint.y() + hint.height() / 4, hint.width() / 2, hint.height() / 2)
+                .toAlignedRect()
+                .intersected(QRect(QPoint(0, 0), size)));
+    } else {
+        const QRect c = centralRect(size);
+        rects.push_back(c);
+        for (double centreY : {1.0 / 3.0, 1.0 / 4.0}) {
+            const QRect r = c.translated(0, int(std::lround(centreY * size.height())) - c.center().y());
+            if (r.top() >= 0 && r != rects.back())
+                rects.push_back(r);
+        }
+    }
     lap("hsi");
 
-    const FirstLevel first = firstLevelThreshold(I, rect);
+    // One try of sections 3.3.2-3.3.5 with one central rectangle and one darkness level k.
+    struct Attempt
+    {
+        bool valid = false;
+        QRect rect;
+        double k = 1;
+        FirstLevel first;
+        SecondLevel second;
+        RefinedRegions refined;
+        std::vector<int> darkLabels;
+        std::vector<Region> dark;
+        std::vector<EyePairCandidate> candidates, eyes;
+    };
+    Attempt chosen, thesisChoice;
+    double regionsMs = 0, eyePairMs = 0;
+    for (const QRect &rect : rects) {
+        QElapsedTimer t;
+        t.start();
+        Attempt a;
+        a.rect = rect;
+        a.first = firstLevelThreshold(I, rect);
+        a.second = secondLevelThreshold(H, a.first.b1, rect);
+        a.refined = refineRegions(a.first.b1, a.second.b2);
+        regionsMs += t.nsecsElapsed() / 1e6;
+        t.restart();
+        // Eye pairs on B1 of eq. (3.3) first; where the eyes merge with brows or hair there (real
+        // photos, dark make-up), again on stricter darkness levels t = m1 - k s1, k = 1.5, 2, 2.5:
+        // the eyes are the darkest features of a face and separate first.
+        for (double k : {1.0, 1.5, 2.0, 2.5}) {
+            a.k = k;
+            const Mask eyeB1 = k > 1.0 ? firstLevelThreshold(I, rect, k).b1 : a.first.b1;
+            a.dark = growRegions(eyeB1, 0, &a.darkLabels);
+            a.candidates = eyePairCandidates(a.dark, size);
+            // Beyond Chan's rules (3.2): a region that is not clearly darker than its surround (a
+            // patch of dark clothing or background that the threshold cut into pieces) is no
+            // eye; "clearly": by half the spread s1 of the central rectangle's intensity. A loop
+            // wider than 0.6 of the pair's spacing is a spectacle rim (lenses nearly meet at the
+            // bridge, ~0.8 of the spacing wide), while an eye outlined by its lids is a loop
+            // about 0.45 of it wide.
+            std::vector<int> verdict(a.dark.size(), -1), ring(a.dark.size(), -1);
+            auto eyeLike = [&](int i) {
+                if (verdict[i] < 0)
+                    verdict[i] = darknessContrast(I, a.dark[i], a.darkLabels) >= 0.5 * a.first.s1;
+                return verdict[i] == 1;
+            };
+            auto rim = [&](int i, double spacing) {
+                if (ring[i] < 0)
+                    ring[i] = isRingShaped(a.dark[i], a.darkLabels, size);
+                return ring[i] == 1 && a.dark[i].box.width() > 0.6 * spacing;
+            };
+            std::erase_if(a.candidates, [&](const EyePairCandidate &c) {
+                const double spacing = QLineF(a.dark[c.left].centroid, a.dark[c.right].centroid).length();
+                return !eyeLike(c.left) || !eyeLike(c.right) || rim(c.left, spacing) || rim(c.right, spacing);
+            });
+            if (hint.isValid()) {
+                const QRectF upper(hint.x(), hint.y(), hint.width(), 0.6 * hint.height());
+                std::erase_if(a.candidates, [&](const EyePairCandidate &c) {
+                    return !upper.contains(a.dark[c.left].centroid) || !upper.contains(a.dark[c.right].centroid);
+                });
+            }
+            // Knowledge beyond eq. (3.5): brows and spectacle rims pair as well as eyes do and are
+            // larger, so a pair gives way to a pair that lies just below it (as wide apart, 0.7 ..
+            // 1.3 times; 0.1 d .. 0.7 d lower, horizontally aligned) or inside its two boxes.
+            a.eyes.clear();
+            for (const auto &c : a.candidates) {
+                const QPointF pa = a.dark[c.left].centroid, pb = a.dark[c.right].centroid;
+                const double dist = QLineF(pa, pb).length();
+                bool hasBelow = false;
+                for (const auto &o : a.candidates) {
+                    const QPointF oa = a.dark[o.left].centroid, ob = a.dark[o.right].centroid;
+                    auto below = [&](QPointF top, QPointF bottom) {
+                        return bottom.y() - top.y() > 0.1 * dist && bottom.y() - top.y() < 0.7 * dist
+                            && std::abs(bottom.x() - top.x()) < 0.3 * dist;
+                    };
+                    if (&o == &c)
+                        continue;
+                    // A pair nested in this one's boxes (eyes inside spectacle rims, whose
+                    // centroids lie farther apart, out toward the temples) wins at any spacing.
+                    const bool inside
+                        = QRectF(a.dark[c.left].box).contains(oa) && QRectF(a.dark[c.right].box).contains(ob);
+                    const double ratio = QLineF(oa, ob).length() / std::max(dist, 1e-9);
+                    if (inside || (ratio >= 0.7 && ratio <= 1.3 && below(pa, oa) && below(pb, ob)))
+                        hasBelow = true;
+                }
+                if (!hasBelow)
+                    a.eyes.push_back(c);
+            }
+            if (a.eyes.empty())
+                continue;
+            a.valid = true;
+            if (!thesisChoice.valid)
+                thesisChoice = a;
+            // The face check (eyePairInFace): the eyes have the nose, mouth and chin of F_final
+            // below them; the best-scoring pair that passes wins.
+            std::erase_if(a.eyes, [&](const EyePairCandidate &c) {
+                const QPointF l = a.dark[c.left].centroid, r = a.dark[c.right].centroid;
+                return !eyePairInFace(a.refined.face, l, r) || mouthRowContrast(I, l, r) < 0.15;
+            });
+            if (!a.eyes.empty()) {
+                chosen = std::move(a);
+                break;
+            }
+        }
+        eyePairMs += t.nsecsElapsed() / 1e6;
+        if (chosen.valid)
+            break;
+    }
+    res.eyePairInFace = chosen.valid;
+    if (!chosen.valid)
+        chosen = std::move(thesisChoice); // no pair passes: the thesis' own choice, if any
+    if (!chosen.valid) {
+        // Nothing at all: the figures show the thesis' first try.
+        chosen.rect = rects.front();
+        chosen.first = firstLevelThreshold(I, chosen.rect);
+        chosen.second = secondLevelThreshold(H, chosen.first.b1, chosen.rect);
+        chosen.refined = refineRegions(chosen.first.b1, chosen.second.b2);
+        chosen.dark = growRegions(chosen.first.b1, 0, &chosen.darkLabels);
+    }
+    res.timingMs.insert(QStringLiteral("regions"), regionsMs);
+    const FirstLevel &first = chosen.first;
+    const SecondLevel &second = chosen.second;
+    const RefinedRegions &refined = chosen.refined;
+    const std::vector<Region> &dark = chosen.dark;
+    const std::vector<int> &darkLabels = chosen.darkLabels;
+    const std::vector<EyePairCandidate> &candidates = chosen.candidates, &eyes = chosen.eyes;
     res.t1 = first.t1;
-    const SecondLevel second = secondLevelThreshold(H, first.b1, rect);
-    const RefinedRegions refined = refineRegions(first.b1, second.b2);
-    lap("regions");
+    res.eyeLevelK = chosen.k;
+    res.centralRect = chosen.rect;
     if (withDebugImages) {
         res.debugImages.insert(QStringLiteral("classic-b1"), first.b1.toImage());
         res.debugImages.insert(QStringLiteral("classic-b2"), second.b2.toImage());
@@ -353,58 +602,12 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
                     fh.setPixel(x, y, qRgb(90, 50, 20));
         res.debugImages.insert(QStringLiteral("classic-face-hair"), fh);
     }
-
-    // Eye pairs on B1 of eq. (3.3) first; where the eyes merge with brows or hair there (real
-    // photos, dark make-up), again on stricter darkness levels t = m1 - k s1, k = 1.5, 2, 2.5:
-    // the eyes are the darkest features of a face and separate first.
-    std::vector<int> darkLabels;
-    std::vector<Region> dark;
-    std::vector<EyePairCandidate> candidates, eyes;
-    Mask eyeB1 = first.b1;
-    for (double k : {1.0, 1.5, 2.0, 2.5}) {
-        if (k > 1.0)
-            eyeB1 = firstLevelThreshold(I, rect, k).b1;
-        dark = growRegions(eyeB1, 0, &darkLabels);
-        candidates = eyePairCandidates(dark, size);
-        if (hint.isValid()) {
-            const QRectF upper(hint.x(), hint.y(), hint.width(), 0.6 * hint.height());
-            std::erase_if(candidates, [&](const EyePairCandidate &c) {
-                return !upper.contains(dark[c.left].centroid) || !upper.contains(dark[c.right].centroid);
-            });
-        }
-        // Knowledge beyond eq. (3.5): brows and spectacle rims pair as well as eyes do and are
-        // larger, so a pair gives way to a pair as wide apart (0.7 .. 1.3 times) that lies just
-        // below it (0.1 d .. 0.7 d lower, horizontally aligned) or inside its two boxes.
-        eyes.clear();
-        for (const auto &c : candidates) {
-            const QPointF a = dark[c.left].centroid, b = dark[c.right].centroid;
-            const double dist = QLineF(a, b).length();
-            bool hasBelow = false;
-            for (const auto &o : candidates) {
-                const QPointF oa = dark[o.left].centroid, ob = dark[o.right].centroid;
-                auto below = [&](QPointF top, QPointF bottom) {
-                    return bottom.y() - top.y() > 0.1 * dist && bottom.y() - top.y() < 0.7 * dist
-                        && std::abs(bottom.x() - top.x()) < 0.3 * dist;
-                };
-                const double ratio = QLineF(oa, ob).length() / std::max(dist, 1e-9);
-                if (&o == &c || ratio < 0.7 || ratio > 1.3)
-                    continue;
-                const bool inside = QRectF(dark[c.left].box).contains(oa) && QRectF(dark[c.right].box).contains(ob);
-                if ((below(a, oa) && below(b, ob)) || inside)
-                    hasBelow = true;
-            }
-            if (!hasBelow)
-                eyes.push_back(c);
-        }
-        if (!eyes.empty()) {
-            res.eyeLevelK = k;
-            break;
-        }
-    }
     res.candidateCount = int(candidates.size());
     if (withDebugImages) {
         QImage img = image;
         QPainter p(&img);
+        p.setPen(QPen(Qt::white, 1, Qt::DashLine));
+        p.drawRect(chosen.rect);
         p.setPen(QPen(Qt::yellow, 1));
         for (const auto &c : candidates) {
             p.drawRect(dark[c.left].box);
@@ -419,7 +622,8 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
         p.end();
         res.debugImages.insert(QStringLiteral("classic-eye-pairs"), img);
     }
-    lap("eyePair");
+    res.timingMs.insert(QStringLiteral("eyePair"), eyePairMs);
+    stage.restart();
     if (eyes.empty()) {
         res.error = QStringLiteral("No eye pair was found (the classic method needs a large frontal face "
                                    "on a plain background).");
@@ -435,6 +639,13 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
             for (int x = r.box.left(); x <= r.box.right(); ++x)
                 m.at(x, y) = darkLabels[size_t(y) * size.width() + x] == r.label;
         res.eyeballs[k] = detectEyeball(m, r.box);
+        // Deviation from 3.4.1 for light irises: the dark points are then only the lids and
+        // lashes, and the largest disc of them lies at the thick outer corner, not on the iris.
+        // A frontal eye looks ahead, its iris in the middle of its outline: a circle found in
+        // the outer quarters of the region's columns is replaced by the centre of the region's
+        // box (the outline's centre), keeping the radius.
+        if (std::abs(res.eyeballs[k].centre.x() - QRectF(r.box).center().x()) > r.box.width() / 4.0)
+            res.eyeballs[k].centre = QRectF(r.box).center();
     }
     const Eyeball &ebL = res.eyeballs[0], &ebR = res.eyeballs[1];
     res.d = QLineF(ebL.centre, ebR.centre).length();
@@ -473,7 +684,17 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
     }
     res.divEE = ebL.centre.y() - ebL.height() / 2 - 1;
     res.divEN = mid.y() + d / 3;
+    // Div_NM: the thesis speculates EyeMid.y + d "by an experimental result"; faces vary
+    // (a short face puts the upper lip above that line, and the mouth search then starts inside
+    // the lips). Where the eye pair's mouth row is clear (mouthRowContrast), the line goes a
+    // fifth of d above it (between the nose's base and the upper lip), never within d/4 of
+    // Div_EN.
     res.divNM = mid.y() + d;
+    {
+        double row = 0;
+        if (mouthRowContrast(I, ebL.centre, ebR.centre, &row) >= 0.15)
+            res.divNM = std::max(res.divEN + d / 4, mid.y() + row - 0.2 * d);
+    }
     Mask edges {size, std::vector<std::uint8_t>(size_t(size.width()) * size.height(), 0)};
     const double cuts[5] = {double(square.top()), res.divEE, res.divEN, res.divNM, double(square.bottom() + 1)};
     for (int part = 0; part < 4; ++part) {

@@ -42,6 +42,39 @@ struct EyePairRules
 std::vector<EyePairCandidate> eyePairCandidates(
     const std::vector<Region> &dark, QSize imageSize, const EyePairRules &rules = {});
 
+// Knowledge beyond eq. (3.5) for real photos (section 3.3.3 assumes the dark regions are eyes
+// and hair only; photos add spectacle rims, nostrils, mouth corners and dark clothing).
+
+// Loops: true when the pixels of `region` (label image `labels` of growRegions) enclose at
+// least as many other pixels as they cover. Spectacle rims are loops, and so is an eye outlined
+// by its lids: detectClassic() tells them apart by width (see there).
+bool isRingShaped(const Region &region, const std::vector<int> &labels, QSize imageSize);
+
+// How much darker `region` is than its surround (the frame of half the box's size around the
+// box), in intensity levels: mean(surround) - mean(region). Eyes and brows lie in lighter skin.
+double darknessContrast(const Plane &intensity, const Region &region, const std::vector<int> &labels);
+
+// Whether an eye pair at the centroids `left`, `right` (distance d) sits in the face region F
+// as eyes do (sections 3.3.4-3.3.5 applied to the pair): the point between them is face; F
+// reaches at least 1.2 d down the midline below them (nose, mouth and chin: a pair of mouth
+// corners has only the chin below it) and 0.55 .. 1.6 d to each side along the eye line from
+// the midpoint (a face is about 2.2 eye distances wide at the eyes; hair over a temple or a
+// turned head shortens one side; nostrils, bits of the lips or of a fringe lie many of their
+// own spacings from the face's sides). Reaches are capped at 3 d down and 3 d sideways.
+struct PairReach
+{
+    double below = 0; // in d
+    double side = 0; // the shorter of the two sideways reaches, in d
+};
+bool eyePairInFace(const Mask &face, QPointF left, QPointF right, PairReach *reach = nullptr);
+
+// The mouth below an eye pair (the thesis' Div_NM = EyeMid.y + d, section 3.4.2): over the band
+// 0.8 d wide on the midline, 0.7 .. 1.5 d below the pair's centre, how much darker its darkest
+// row is than its median row, as a share of the median (0 .. 1). The lips and the gap between
+// them darken a row across; the skin under a pair of hair strands or nostrils stays even.
+// *darkestRow receives that row's distance below the pair's centre in pixels (0 when no row).
+double mouthRowContrast(const Plane &intensity, QPointF left, QPointF right, double *darkestRow = nullptr);
+
 // Section 3.4.1: the circle holding the most dark points of one eye region. The radius grows
 // while the best-placed circle of that radius stays at least `minFill` dark; the largest such
 // circle is the eyeball.
@@ -78,6 +111,10 @@ struct ClassicResult
     FaceModel face;
     double t1 = 0; // the first-level threshold
     double eyeLevelK = 1; // the k of t = m1 - k s1 on which the eye pair was found
+    QRect centralRect; // the rectangle of Algorithm 4.1 the result was found with
+    // The chosen pair passed the face checks (eyePairInFace() and a mouth row, mouthRowContrast()
+    // >= 0.15); false: no pair did, and the pair is the thesis' own choice by eq. (3.5).
+    bool eyePairInFace = false;
     QRectF eyeRegions[2]; // the chosen pair's boxes, image-left first
     int candidateCount = 0;
     Eyeball eyeballs[2]; // image-left first

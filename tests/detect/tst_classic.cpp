@@ -12,6 +12,7 @@
 #include <QTest>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 using namespace toonface;
@@ -32,7 +33,9 @@ struct DrawnFace
     QRectF hair {118, 80, 244, 200}; // the hair ellipse, behind the skin
 };
 
-DrawnFace drawFace()
+// lightIrises: grey-blue irises with a small pupil, outlined by lash lines that thicken toward
+// the outer corners (mascara), as in many photos: the dark points of an eye hold no iris disc.
+DrawnFace drawFace(bool lightIrises = false)
 {
     DrawnFace f;
     f.image = QImage(480, 480, QImage::Format_RGB32);
@@ -52,9 +55,22 @@ DrawnFace drawFace()
     p.drawEllipse(f.eyeL, 19, 8); // eye whites
     p.drawEllipse(f.eyeR, 19, 8);
     p.setPen(Qt::NoPen);
-    p.setBrush(QColor(30, 20, 15));
+    p.setBrush(lightIrises ? QColor(150, 170, 185) : QColor(30, 20, 15));
     p.drawEllipse(f.eyeL, f.irisR, f.irisR);
     p.drawEllipse(f.eyeR, f.irisR, f.irisR);
+    if (lightIrises) {
+        p.setBrush(QColor(30, 20, 15));
+        p.drawEllipse(f.eyeL, 2.0, 2.0);
+        p.drawEllipse(f.eyeR, 2.0, 2.0);
+        // The thick outer lash corners: wedges along the upper lids' outer ends.
+        for (int side : {-1, 1}) {
+            const QPointF e = side < 0 ? f.eyeL : f.eyeR;
+            const QPointF tip = e + QPointF(side * 22, -1);
+            const QPointF polygon[3] = {tip, e + QPointF(side * 8, -8.5), e + QPointF(side * 12, -4)};
+            p.drawPolygon(polygon, 3);
+            p.drawEllipse(e + QPointF(side * 16, -4), 4.5, 4.5);
+        }
+    }
     p.setBrush(QColor(70, 45, 30));
     p.drawRect(f.browL);
     p.drawRect(f.browR);
@@ -116,8 +132,19 @@ private Q_SLOTS:
     void verticalCut();
     void cheeks_data();
     void cheeks();
+    void ringShaped_data();
+    void ringShaped();
+    void darkness_data();
+    void darkness();
+    void pairInFace_data();
+    void pairInFace();
+    void mouthRow_data();
+    void mouthRow();
     void drawnFace();
+    void lightIrises();
     void graceHopper();
+    void realPortraits_data();
+    void realPortraits();
     void greyAndTiny();
     void throughDetector();
     void sharedDataNme_data();
@@ -332,6 +359,165 @@ double ellipseLeftX(const QRectF &e, double y)
 
 // Every group of the drawn face within a stated tolerance: inner features within d/10,
 // the contour and ears within d/5, the hair above the ears within 6% of the hair ellipse.
+namespace {
+
+// A mask of one drawn shape (value 0 = dark, as in B1) on 1, and the dark regions' labels.
+struct DrawnMask
+{
+    Mask mask;
+    std::vector<int> labels;
+    std::vector<Region> dark;
+};
+
+DrawnMask drawnMask(QSize size, const std::function<void(QPainter &)> &draw)
+{
+    QImage img(size, QImage::Format_Grayscale8);
+    img.fill(255);
+    QPainter p(&img);
+    draw(p);
+    p.end();
+    DrawnMask out;
+    out.mask = {size, std::vector<std::uint8_t>(size_t(size.width()) * size.height())};
+    for (int y = 0; y < size.height(); ++y)
+        for (int x = 0; x < size.width(); ++x)
+            out.mask.at(x, y) = qGray(img.pixel(x, y)) > 128;
+    out.dark = growRegions(out.mask, 0, &out.labels);
+    return out;
+}
+
+} // namespace
+
+void TestClassic::ringShaped_data()
+{
+    QTest::addColumn<int>("shape");
+    QTest::addColumn<bool>("ring");
+    QTest::newRow("filled disc") << 0 << false;
+    QTest::newRow("thin loop (spectacle rim)") << 1 << true;
+    QTest::newRow("disc with a small highlight") << 2 << false;
+    QTest::newRow("open arc") << 3 << false;
+}
+
+void TestClassic::ringShaped()
+{
+    QFETCH(int, shape);
+    QFETCH(bool, ring);
+    const DrawnMask m = drawnMask(QSize(100, 100), [&](QPainter &p) {
+        p.setPen(Qt::NoPen);
+        p.setBrush(Qt::black);
+        if (shape == 0 || shape == 2)
+            p.drawEllipse(QPointF(50, 50), 20, 14);
+        if (shape == 2) {
+            p.setBrush(Qt::white);
+            p.drawEllipse(QPointF(46, 46), 3, 3);
+        }
+        if (shape == 1) {
+            p.setPen(QPen(Qt::black, 3));
+            p.setBrush(Qt::NoBrush);
+            p.drawEllipse(QPointF(50, 50), 30, 20);
+        }
+        if (shape == 3) {
+            p.setPen(QPen(Qt::black, 3));
+            p.drawArc(QRectF(20, 30, 60, 40), 0, 180 * 16);
+        }
+    });
+    QCOMPARE(m.dark.size(), size_t(1));
+    QCOMPARE(isRingShaped(m.dark.front(), m.labels, QSize(100, 100)), ring);
+}
+
+void TestClassic::darkness_data()
+{
+    QTest::addColumn<int>("surround");
+    QTest::addColumn<double>("expected");
+    QTest::newRow("dark blob on skin") << 200 << 160.0;
+    QTest::newRow("dark blob on dark cloth") << 45 << 5.0;
+}
+
+// A blob at level 40 in a field of `surround`: the contrast is the difference of the levels.
+void TestClassic::darkness()
+{
+    QFETCH(int, surround);
+    QFETCH(double, expected);
+    Plane I {QSize(80, 80), std::vector<float>(80 * 80, float(surround))};
+    Mask m {I.size, std::vector<std::uint8_t>(80 * 80, 1)};
+    for (int y = 30; y < 42; ++y)
+        for (int x = 25; x < 55; ++x) {
+            I.at(x, y) = 40;
+            m.at(x, y) = 0;
+        }
+    std::vector<int> labels;
+    const auto dark = growRegions(m, 0, &labels);
+    QCOMPARE(dark.size(), size_t(1));
+    QVERIFY(std::abs(darknessContrast(I, dark.front(), labels) - expected) < 1e-3);
+}
+
+void TestClassic::pairInFace_data()
+{
+    // A face ellipse 220 x 300 centred at (240, 260), eyes at y 230, 90 apart (as drawFace).
+    QTest::addColumn<QPointF>("left");
+    QTest::addColumn<QPointF>("right");
+    QTest::addColumn<bool>("inFace");
+    QTest::newRow("eyes") << QPointF(195, 230) << QPointF(285, 230) << true;
+    QTest::newRow("eyes, tilted 8 degrees") << QPointF(195, 236) << QPointF(284, 224) << true;
+    QTest::newRow("brows") << QPointF(195, 200) << QPointF(285, 200) << true;
+    QTest::newRow("mouth corners (only the chin below)") << QPointF(205, 345) << QPointF(275, 345) << false;
+    QTest::newRow("nostrils (far inside the face)") << QPointF(229, 300) << QPointF(251, 300) << false;
+    QTest::newRow("fringe strands") << QPointF(225, 150) << QPointF(255, 150) << false;
+    QTest::newRow("wider than the face") << QPointF(110, 230) << QPointF(370, 230) << false;
+    QTest::newRow("outside the face") << QPointF(20, 60) << QPointF(100, 60) << false;
+}
+
+void TestClassic::pairInFace()
+{
+    QFETCH(QPointF, left);
+    QFETCH(QPointF, right);
+    QFETCH(bool, inFace);
+    const DrawnMask face = drawnMask(QSize(480, 480), [](QPainter &p) {
+        p.setPen(Qt::NoPen);
+        p.setBrush(Qt::black);
+        p.drawEllipse(QRectF(130, 110, 220, 300));
+    });
+    Mask F = face.mask;
+    for (auto &v : F.values)
+        v = !v; // the ellipse is the face (1)
+    PairReach reach;
+    QCOMPARE(eyePairInFace(F, left, right, &reach), inFace);
+    if (qstrcmp(QTest::currentDataTag(), "eyes") == 0) {
+        // 180 px to the chin = 2 d; the ellipse's half width at y 230 is ~107 px = 1.19 d.
+        QVERIFY(std::abs(reach.below - 2.0) < 0.05);
+        QVERIFY(std::abs(reach.side - 1.19) < 0.05);
+    }
+}
+
+void TestClassic::mouthRow_data()
+{
+    QTest::addColumn<int>("mouthY"); // 0: no mouth
+    QTest::addColumn<bool>("mouth");
+    QTest::newRow("mouth 1.1 d below") << 329 << true;
+    QTest::newRow("mouth 0.75 d below") << 298 << true;
+    QTest::newRow("no mouth") << 0 << false;
+    QTest::newRow("mouth 2 d below (out of the band)") << 410 << false;
+}
+
+// Skin at 180 with soft noise-free shading; a lip line at level 90, 60 px wide, 6 px high.
+void TestClassic::mouthRow()
+{
+    QFETCH(int, mouthY);
+    QFETCH(bool, mouth);
+    Plane I {QSize(480, 480), std::vector<float>(480 * 480)};
+    for (int y = 0; y < 480; ++y)
+        for (int x = 0; x < 480; ++x)
+            I.at(x, y) = 180.0f - 0.05f * std::abs(y - 260);
+    if (mouthY > 0)
+        for (int y = mouthY - 3; y < mouthY + 3; ++y)
+            for (int x = 210; x < 270; ++x)
+                I.at(x, y) = 90;
+    double row = -1;
+    const double c = mouthRowContrast(I, QPointF(195, 230), QPointF(285, 230), &row);
+    QCOMPARE(c >= 0.15, mouth);
+    if (mouth) // the darkest row is one of the lip line's, given below the pair's centre
+        QVERIFY(row >= mouthY - 3 - 230 && row <= mouthY + 2 - 230);
+}
+
 void TestClassic::drawnFace()
 {
     const DrawnFace f = drawFace();
@@ -409,6 +595,25 @@ void TestClassic::drawnFace()
     QVERIFY(r.face.isValid());
 }
 
+// Light irises: the eye regions are the lash lines, whose thickest part (the outer corner)
+// would hold the largest dark circle; the eyeball centre must still be the eye's middle.
+void TestClassic::lightIrises()
+{
+    const DrawnFace f = drawFace(true);
+    const ClassicResult r = detectClassic(f.image, true);
+    const QString dir = qEnvironmentVariable("TOONFACE_CLASSIC_DEBUG");
+    if (!dir.isEmpty())
+        for (auto it = r.debugImages.begin(); it != r.debugImages.end(); ++it)
+            it.value().save(dir + QStringLiteral("/light-") + it.key() + QStringLiteral(".png"));
+    QVERIFY2(r.ok, qPrintable(r.error));
+    qInfo("eyeballs (%.1f, %.1f) r %.1f and (%.1f, %.1f) r %.1f", r.eyeballs[0].centre.x(), r.eyeballs[0].centre.y(),
+        r.eyeballs[0].radius, r.eyeballs[1].centre.x(), r.eyeballs[1].centre.y(), r.eyeballs[1].radius);
+    // Within a third of the iris' width of the drawn centres, horizontally and vertically.
+    QVERIFY(QLineF(r.face.point("3.6"), f.eyeL).length() <= 2 * f.irisR / 3 + 1);
+    QVERIFY(QLineF(r.face.point("3.5"), f.eyeR).length() <= 2 * f.irisR / 3 + 1);
+    QVERIFY(std::abs(r.d - 90) < 6);
+}
+
 // The thesis' assumptions (plain background, frontal light) hold only roughly here; the
 // test reports what the pipeline finds and checks the groups are ordered like a face.
 void TestClassic::graceHopper()
@@ -435,6 +640,71 @@ void TestClassic::graceHopper()
     QVERIFY(f.point("3.6").y() < f.point("9.15").y());
     QVERIFY(f.point("9.15").y() < f.point("8.2").y());
     QVERIFY(f.point("8.2").y() < f.point("2.1").y());
+}
+
+// Public-domain portraits that meet the thesis' assumptions (a large frontal face, a plain or
+// simple background, frontal light): every group is found and placed like a face. Where the
+// landmark model is installed, its result is the reference for where the eyes are.
+void TestClassic::realPortraits_data()
+{
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<QString>("package");
+    QTest::newRow("grace_hopper") << QStringLiteral("/usr/share/matplotlib/mpl-data/sample_data/grace_hopper.jpg")
+                                  << QStringLiteral("python-matplotlib-data");
+    QTest::newRow("astronaut") << QStringLiteral("/usr/lib/python3/dist-packages/skimage/data/astronaut.png")
+                               << QStringLiteral("python3-skimage");
+}
+
+void TestClassic::realPortraits()
+{
+    QFETCH(QString, path);
+    QFETCH(QString, package);
+    const QImage img(path);
+    if (img.isNull())
+        QSKIP(qPrintable(QStringLiteral("%1 is not installed (package %2)").arg(path, package)));
+    const ClassicResult r = detectClassic(img);
+    QVERIFY2(r.ok, qPrintable(r.error));
+    QVERIFY(r.eyePairInFace); // found by the face check, not the thesis' fallback
+    const FaceModel &f = r.face;
+    QVERIFY(f.isValid());
+    auto mean = [&](std::initializer_list<const char *> ids) {
+        QPointF sum;
+        for (const char *id : ids)
+            sum += f.point(id);
+        return sum / double(ids.size());
+    };
+    const QPointF brows = mean({"4.6", "4.4a", "4.4", "4.2", "4.5", "4.3a", "4.3", "4.1"});
+    const QPointF eyes = mean({"3.6", "3.5"});
+    const QPointF nose = mean({"9.2", "9.1", "9.15"});
+    const QPointF mouth = mean({"8.4", "8.3", "8.1", "8.2"});
+    const QPointF chin = f.point("2.1");
+    qInfo("%s: d %.1f, k %.1f, rect (%d, %d), brows y %.0f, eyes y %.0f, nose y %.0f, mouth y %.0f, chin y %.0f",
+        qPrintable(QFileInfo(path).fileName()), r.d, r.eyeLevelK, r.centralRect.x(), r.centralRect.y(), brows.y(),
+        eyes.y(), nose.y(), mouth.y(), chin.y());
+    // Top to bottom; image-left before image-right; all on the face's midline within d/2.
+    QVERIFY(brows.y() < eyes.y());
+    QVERIFY(eyes.y() < nose.y());
+    QVERIFY(nose.y() < mouth.y());
+    QVERIFY(mouth.y() < chin.y());
+    QVERIFY(f.point("3.6").x() < f.point("3.5").x());
+    QVERIFY(f.point("4.6").x() < f.point("4.5").x());
+    QVERIFY(f.point("8.4").x() < f.point("8.3").x());
+    QVERIFY(f.point("9.2").x() < f.point("9.1").x());
+    for (const QPointF &p : {brows, nose, mouth, chin})
+        QVERIFY(std::abs(p.x() - eyes.x()) < r.d / 2);
+    // Proportions of a face: the mouth about d below the eyes (the thesis' Div_NM).
+    QVERIFY(mouth.y() - eyes.y() > 0.6 * r.d && mouth.y() - eyes.y() < 1.6 * r.d);
+
+    if (!preloadLandmarkModel())
+        return;
+    const DetectionResult ref = detectFace(img, {});
+    QCOMPARE(ref.status, DetectStatus::Ok);
+    const double refD = QLineF(ref.face.point("3.6"), ref.face.point("3.5")).length();
+    for (const char *id : {"3.6", "3.5", "9.15", "2.2"})
+        QVERIFY2(ref.faceBox.contains(f.point(id).toPoint()), id);
+    // Eyeball centres within a fifth of the eye distance of the landmark method's.
+    QVERIFY(QLineF(f.point("3.6"), ref.face.point("3.6")).length() < 0.2 * refD);
+    QVERIFY(QLineF(f.point("3.5"), ref.face.point("3.5")).length() < 0.2 * refD);
 }
 
 // A grey photo has no hue, so no face region from eq. (3.9): the inner features are still
@@ -488,29 +758,37 @@ void TestClassic::sharedDataNme_data()
 {
     QTest::addColumn<QString>("image");
     QTest::addColumn<QString>("pts");
+    QTest::addColumn<double>("bound");
+    // Measured bounds (NME 0.101 and 0.087 when set) for the photos that meet the thesis'
+    // assumptions: a frontal face over the middle of the picture on a plain background.
+    // lfpw 0003 (the face in the top third over a bare chest of the same hue, light eyes) and
+    // einstein (grey, a small face off-centre in a busy scene) do not: measured only.
+    const QMap<QString, double> bounds {
+        {QStringLiteral("lfpw_trainset_image_0001"), 0.15}, {QStringLiteral("lfpw_trainset_image_0002"), 0.15}};
     const QDir dir(sharedFacesDir());
     int rows = 0;
     for (const QFileInfo &pts : dir.entryInfoList({QStringLiteral("*.pts")}, QDir::Files, QDir::Name)) {
         for (const char *ext : {".png", ".jpg"}) {
             const QString image = dir.filePath(pts.completeBaseName() + QLatin1String(ext));
             if (QFileInfo::exists(image)) {
-                QTest::newRow(qPrintable(pts.completeBaseName())) << image << pts.filePath();
+                QTest::newRow(qPrintable(pts.completeBaseName()))
+                    << image << pts.filePath() << bounds.value(pts.completeBaseName(), -1.0);
                 ++rows;
                 break;
             }
         }
     }
     if (rows == 0)
-        QTest::newRow("no data") << QString() << QString();
+        QTest::newRow("no data") << QString() << QString() << -1.0;
 }
 
-// Measures, with no accuracy bound: the classic method assumes a plain background and a
-// large frontal face, which these photos do not promise. It must either place a valid face
-// or say why not.
+// A photo with a bound must be found within it; the others must either place a valid face or
+// say why not.
 void TestClassic::sharedDataNme()
 {
     QFETCH(QString, image);
     QFETCH(QString, pts);
+    QFETCH(double, bound);
     if (image.isEmpty())
         QSKIP("no research photos (set TOONFACE_DATA_DIR to the shared data folder)");
     std::array<QPointF, kIbugPointCount> truth {};
@@ -526,13 +804,16 @@ void TestClassic::sharedDataNme()
     if (!r.ok) {
         QVERIFY(!r.error.isEmpty());
         qInfo("%s: classic found no face: %s", qPrintable(QFileInfo(image).fileName()), qPrintable(r.error));
+        QVERIFY2(bound < 0, "a photo that meets the thesis' assumptions must be found");
         return;
     }
     QVERIFY(r.face.isValid());
     const double nme = normalizedMeanError(r.face, truth);
     QVERIFY(std::isfinite(nme));
-    qInfo("%s: classic NME %.4f, %.1f ms", qPrintable(QFileInfo(image).fileName()), nme,
-        r.timingMs.value(QStringLiteral("total")));
+    qInfo("%s: classic NME %.4f (bound %s), %.1f ms", qPrintable(QFileInfo(image).fileName()), nme,
+        bound < 0 ? "none" : qPrintable(QString::number(bound)), r.timingMs.value(QStringLiteral("total")));
+    if (bound >= 0)
+        QVERIFY2(nme <= bound, qPrintable(QStringLiteral("NME %1 > %2").arg(nme).arg(bound)));
 }
 
 // The same, with the central rectangle taken from the landmark detector's face box.
@@ -545,6 +826,8 @@ void TestClassic::sharedDataNmeWithFaceBox()
 {
     QFETCH(QString, image);
     QFETCH(QString, pts);
+    QFETCH(double, bound);
+    Q_UNUSED(bound); // measured only: the face box moves the central rectangle off the thesis' own
     if (image.isEmpty())
         QSKIP("no research photos (set TOONFACE_DATA_DIR to the shared data folder)");
     if (!preloadLandmarkModel())
