@@ -48,6 +48,7 @@ namespace {
 constexpr double kWorkEyeDistance = 48.0;
 constexpr double kMinIntensitySpread = 8.0; // grey levels
 constexpr double kMinHueSpread = 4.0; // hue units of huePlane(), about 5.6 degrees
+constexpr double kMinHairDistance = 40.0; // RGB distance always within the hair's (or skin's) colour
 
 struct Work
 {
@@ -222,13 +223,23 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
     rep.seed.t1 = first.t1;
     rep.seed.m2 = m2;
     rep.seed.s2 = s2;
+    // The skin's colour: the face pixels of the central rectangle. Pixels farther from it than
+    // three times the samples' median distance (at least kMinHairDistance) are not skin.
+    double skinLimit = 0;
     {
         ColourSum skin;
+        std::vector<QRgb> samples;
         for (int y = rect.top(); y <= rect.bottom(); ++y)
             for (int x = rect.left(); x <= rect.right(); ++x)
-                if (!b2.at(x, y))
+                if (!b2.at(x, y)) {
                     skin.add(work.pixel(x, y));
+                    samples.push_back(work.pixel(x, y));
+                }
         rep.seed.skin = skin.stats();
+        std::vector<double> dist;
+        for (QRgb c : samples)
+            dist.push_back(colourDistance(c, rep.seed.skin));
+        skinLimit = std::max(3.0 * median(dist), kMinHairDistance);
     }
 
     // 3. The face component and the head's hair.
@@ -271,25 +282,37 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
     }
     // The hair's colour beside the temples (where a hat does not reach), else over the forehead.
     const double cheekLX = L("5.2").x(), cheekRX = L("5.1").x();
+    // Pixels farther from the hair's mean colour than three times the median distance of the
+    // samples (at least kMinHairDistance) are not hair: the median, because the samples
+    // include the hair's blended edges.
+    double hairLimit = 0;
     {
         ColourSum hair;
+        std::vector<QRgb> samples;
         auto sample = [&](double x0, double x1, double y0, double y1) {
             for (double y = y0; y <= y1; y += step)
                 for (double x = x0; x <= x1; x += step)
-                    if (w.at(hairC, QPointF(x, y)))
+                    if (w.at(hairC, QPointF(x, y))) {
                         hair.add(pixel(QPointF(x, y)));
+                        samples.push_back(pixel(QPointF(x, y)));
+                    }
         };
         sample(cheekLX - 0.5 * d, cheekLX + 0.2 * d, g.browY - 0.8 * d, 0);
         sample(cheekRX - 0.2 * d, cheekRX + 0.5 * d, g.browY - 0.8 * d, 0);
         if (hair.n < 15)
             sample(g.midX - 0.6 * d, g.midX + 0.6 * d, g.hairlineY - 0.5 * d, g.hairlineY + 0.2 * d);
         rep.seed.hair = hair.n >= 15 ? hair.stats() : ColourStats();
+        if (rep.seed.hair.samples > 0) {
+            std::vector<double> dist;
+            for (QRgb c : samples)
+                dist.push_back(colourDistance(c, rep.seed.hair));
+            hairLimit = std::max(3.0 * median(dist), kMinHairDistance);
+        }
     }
-    if (rep.seed.hair.samples > 0) {
-        const double limit = std::max(3.0 * rep.seed.hair.spread, 45.0);
+    if (hairLimit > 0) {
         for (int y = 0; y < w.size.height(); ++y)
             for (int x = 0; x < w.size.width(); ++x)
-                if (hairC.at(x, y) && colourDistance(work.pixel(x, y), rep.seed.hair) > limit)
+                if (hairC.at(x, y) && colourDistance(work.pixel(x, y), rep.seed.hair) > hairLimit)
                     hairC.at(x, y) = 0;
     }
     Mask head {w.size, std::vector<std::uint8_t>(b2.values.size(), 0)};
@@ -338,7 +361,11 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
     };
 
     // 4. The outline.
-    const QPointF centre(g.midX, 0);
+    const QPointF centre = g.hairCentre;
+    // The geometric hair ellipse's radius in the direction of angle a (above the horizontal).
+    auto ellipseRadius = [&](double a) {
+        return 1.0 / std::hypot(std::cos(a) / g.hairAx, std::sin(a) / g.hairAy);
+    };
     constexpr int kRays = 21; // per side, 5 degrees apart
     std::array<std::array<double, kRays>, 2> radius {};
     std::array<std::array<bool, kRays>, 2> found {};
@@ -350,11 +377,24 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
             const QPointF dir(sx * std::cos(a), -std::sin(a));
             const Walk r = walk(centre, dir, 3.0 * d, d / 8);
             radius[side][k] = r.length;
-            found[side][k] = r.ok && r.length > 0.4 * d;
-            foundCount += found[side][k];
+            // A head smaller than 0.7 or larger than 1.7 times the geometric estimate is the
+            // region's mistake (a dark background joining the hair, hair the face's colour).
+            const double ratio = r.length / ellipseRadius(a);
+            found[side][k] = r.ok && ratio >= 0.7 && ratio <= 1.7;
             rep.rays.emplace_back(g.toImage(centre), g.toImage(centre + r.length * dir));
         }
     }
+    // A frontal head is nearly symmetric: of two mirrored rays that disagree by more than 30%,
+    // the one farther from the estimate is not believed.
+    for (int k = 0; k < kRays; ++k) {
+        const double a = (-10.0 + 5.0 * k) * std::numbers::pi / 180.0;
+        const double l = radius[0][k] / ellipseRadius(a), r = radius[1][k] / ellipseRadius(a);
+        if (found[0][k] && found[1][k] && std::abs(l - r) > 0.3 * std::min(l, r))
+            found[std::abs(l - 1.0) > std::abs(r - 1.0) ? 0 : 1][k] = false;
+    }
+    for (int side = 0; side < 2; ++side)
+        for (int k = 0; k < kRays; ++k)
+            foundCount += found[side][k];
     rep.hairFraction = foundCount / double(2 * kRays);
     // Each side's radii, smoothed: a failed ray or one more than 15% off the median of its
     // found neighbours (three each side) takes that median.
@@ -396,17 +436,20 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
                     return lerp(jaw, lowJaw);
                 return lerp(lowJaw, chin);
             };
+            // A row goes on when the head reaches beyond the contour (hair, or an ear hiding
+            // it); the hair goes down as far as the last row with hair in it.
             std::vector<QPointF> rows;
+            size_t lastHairy = 0;
             double miss = 0, prevOuter = std::nan("");
             for (double y = y0 + step; y <= 4.4 * d; y += step) {
                 const double cx = contourX(y);
                 const double maxLen = std::max(0.0, 2.0 * d - sx * (cx - g.midX)) + 0.05 * d;
                 const Walk r = walk(QPointF(cx - sx * 0.05 * d, y), QPointF(sx, 0), maxLen, d / 8);
                 const double outer = cx - sx * 0.05 * d + sx * r.length;
-                const bool hairy = r.ok && r.hair >= 0.1 * d && sx * (outer - cx) >= 0.1 * d;
-                if (hairy && !std::isnan(prevOuter) && std::abs(outer - prevOuter) > 0.25 * d)
+                const bool beyond = r.ok && sx * (outer - cx) >= 0.1 * d;
+                if (beyond && !std::isnan(prevOuter) && std::abs(outer - prevOuter) > 0.25 * d)
                     break; // the shoulders
-                if (!hairy) {
+                if (!beyond) {
                     miss += step;
                     if (miss > 0.35 * d || !r.ok)
                         break;
@@ -415,7 +458,10 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
                 miss = 0;
                 prevOuter = outer;
                 rows.emplace_back(outer, y);
+                if (r.hair >= 0.1 * d)
+                    lastHairy = rows.size();
             }
+            rows.resize(lastHairy);
             if (!rows.empty() && rows.back().y() > g.noseBaseY + 0.2 * d && rows.back().y() - y0 > 0.5 * d) {
                 lower[side] = rows;
                 rep.longHair = true;
@@ -451,7 +497,15 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
         rep.hairUsable = true;
     }
 
-    // 5. Ears.
+    // 5. Ears: the face region of skin colour (F_final also holds the background regions it
+    // encloses, such as grey hair between a hat and the cheeks).
+    Mask earC = faceC;
+    if (rep.seed.skin.samples > 0) {
+        for (int y = 0; y < w.size.height(); ++y)
+            for (int x = 0; x < w.size.width(); ++x)
+                if (earC.at(x, y) && colourDistance(work.pixel(x, y), rep.seed.skin) > skinLimit)
+                    earC.at(x, y) = 0;
+    }
     const double earH = std::max(g.noseBaseY - g.browY, 0.1 * d);
     const double run = std::max(2.0 * step, 0.06 * d);
     for (int side = 0; side < 2; ++side) {
@@ -473,7 +527,7 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
                 const QPointF q(cx + sx * t, y);
                 if (!w.inWork(w.toWork(q)))
                     break;
-                if (w.at(faceC, q)) {
+                if (w.at(earC, q)) {
                     wd = t;
                     gapLen = 0;
                 } else if ((gapLen += step) >= run) {
