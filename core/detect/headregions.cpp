@@ -31,10 +31,11 @@
 //    The hair's colour is measured beside the temples; dark pixels far from it are not hair.
 // 4. Outline: from EyeMid's level on the midline, rays over each side of the head from 10
 //    degrees below the horizontal to straight up, each walking out of the head (face, then
-//    hair) until it has left it for d/8. Below, row by row, the hair that goes on beside the
-//    face (long hair); it ends where a row has no hair beside the contour for 0.35 d, where
-//    the outer edge jumps (the shoulders) or runs beyond 2 d of the midline. Each side's
-//    polyline, bottom to crown, is resampled by arc length into ten points (h.10 shared).
+//    hair) until it has left it for d/6 (a parting or a highlight is crossed). Below, row by row, the hair that goes on beside the
+//    face (long hair); it ends where a row has no hair beside the contour for 0.35 d (a row
+//    whose edge jumps inward is a gap in the hair), where the outer edge jumps outward (the
+//    shoulders) or runs beyond 2.6 d of the midline. Each side's polyline, bottom to crown,
+//    is resampled by arc length into ten points (h.10 shared).
 // 5. Ears: as Algorithm 4.3.2 A step 6 and section 3.5 read it, the part of the face region
 //    beyond the cheek line between the brow and nose lines; the cheek line is the landmark
 //    contour (5.2 to 2.14), which the cheek projection of 3.5 approximates. A bulge of
@@ -48,6 +49,9 @@ namespace {
 constexpr double kWorkEyeDistance = 48.0;
 constexpr double kMinIntensitySpread = 8.0; // grey levels
 constexpr double kMinHueSpread = 4.0; // hue units of huePlane(), about 5.6 degrees
+// Gaps in the head's regions that a search crosses, in eye distances: a parting, a highlight.
+constexpr double kRayGap = 1.0 / 6.0;
+constexpr double kRowGap = 1.0 / 4.0; // beside the face, where strands part more
 constexpr double kMinHairDistance = 40.0; // RGB distance always within the hair's (or skin's) colour
 
 struct Work
@@ -119,6 +123,7 @@ double colourDistance(QRgb c, const ColourStats &s)
 struct Walk
 {
     bool ok = false; // left the head (or the photo) after having been in it
+    bool leftPhoto = false; // ended on the photo's edge, still on the head
     double length = 0; // distance from the start to the last head pixel
     double hair = 0; // length of the walk spent on hair pixels
 };
@@ -340,7 +345,7 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
             const QPointF q = start + t * dir;
             const QPointF wp = w.toWork(q);
             if (!w.inWork(wp)) {
-                r.ok = last >= 0 && !photo.contains(g.toImage(q));
+                r.ok = r.leftPhoto = last >= 0 && !photo.contains(g.toImage(q));
                 r.length = std::max(last, 0.0);
                 return r;
             }
@@ -368,19 +373,21 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
     };
     constexpr int kRays = 21; // per side, 5 degrees apart
     std::array<std::array<double, kRays>, 2> radius {};
-    std::array<std::array<bool, kRays>, 2> found {};
+    std::array<std::array<bool, kRays>, 2> found {}, atEdge {};
     int foundCount = 0;
     for (int side = 0; side < 2; ++side) {
         const double sx = side == 0 ? -1.0 : 1.0;
         for (int k = 0; k < kRays; ++k) {
             const double a = (-10.0 + 5.0 * k) * std::numbers::pi / 180.0;
             const QPointF dir(sx * std::cos(a), -std::sin(a));
-            const Walk r = walk(centre, dir, 3.0 * d, d / 8);
+            const Walk r = walk(centre, dir, 3.0 * d, kRayGap * d);
             radius[side][k] = r.length;
             // A head smaller than 0.7 or larger than 1.7 times the geometric estimate is the
-            // region's mistake (a dark background joining the hair, hair the face's colour).
+            // region's mistake (a dark background joining the hair, hair the face's colour),
+            // unless the head goes on beyond the photo's edge.
             const double ratio = r.length / ellipseRadius(a);
-            found[side][k] = r.ok && ratio >= 0.7 && ratio <= 1.7;
+            atEdge[side][k] = r.leftPhoto;
+            found[side][k] = r.ok && ratio >= 0.7 && (ratio <= 1.7 || r.leftPhoto);
             rep.rays.emplace_back(g.toImage(centre), g.toImage(centre + r.length * dir));
         }
     }
@@ -389,7 +396,7 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
     for (int k = 0; k < kRays; ++k) {
         const double a = (-10.0 + 5.0 * k) * std::numbers::pi / 180.0;
         const double l = radius[0][k] / ellipseRadius(a), r = radius[1][k] / ellipseRadius(a);
-        if (found[0][k] && found[1][k] && std::abs(l - r) > 0.3 * std::min(l, r))
+        if (found[0][k] && found[1][k] && !atEdge[0][k] && !atEdge[1][k] && std::abs(l - r) > 0.3 * std::min(l, r))
             found[std::abs(l - 1.0) > std::abs(r - 1.0) ? 0 : 1][k] = false;
     }
     for (int side = 0; side < 2; ++side)
@@ -443,13 +450,14 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
             double miss = 0, prevOuter = std::nan("");
             for (double y = y0 + step; y <= 4.4 * d; y += step) {
                 const double cx = contourX(y);
-                const double maxLen = std::max(0.0, 2.0 * d - sx * (cx - g.midX)) + 0.05 * d;
-                const Walk r = walk(QPointF(cx - sx * 0.05 * d, y), QPointF(sx, 0), maxLen, d / 8);
+                const double maxLen = std::max(0.0, 2.6 * d - sx * (cx - g.midX)) + 0.05 * d;
+                const Walk r = walk(QPointF(cx - sx * 0.05 * d, y), QPointF(sx, 0), maxLen, kRowGap * d);
                 const double outer = cx - sx * 0.05 * d + sx * r.length;
                 const bool beyond = r.ok && sx * (outer - cx) >= 0.1 * d;
-                if (beyond && !std::isnan(prevOuter) && std::abs(outer - prevOuter) > 0.25 * d)
+                const double jump = std::isnan(prevOuter) ? 0.0 : sx * (outer - prevOuter);
+                if (beyond && jump > 0.25 * d)
                     break; // the shoulders
-                if (!beyond) {
+                if (!beyond || jump < -0.25 * d) { // nothing beside the face, or a gap in the hair
                     miss += step;
                     if (miss > 0.35 * d || !r.ok)
                         break;
