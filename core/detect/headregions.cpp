@@ -29,14 +29,15 @@
 // 3. B1, B2, then Algorithm 4.4 gives F_final and H_final - F_final. The face is F_final's
 //    component under the nose bridge; the head's hair is the hair components touching it.
 //    The hair's colour is measured beside the temples; dark pixels far from it are not hair.
-// 4. Outline: from EyeMid's level on the midline, rays over each side of the head from 10
-//    degrees below the horizontal to straight up, each walking out of the head (face, then
-//    hair) until it has left it for d/6 (a parting or a highlight is crossed). Below, row by row, the hair that goes on beside the
-//    face (long hair); it ends where a row has no hair beside the contour for 0.35 d (a row
-//    whose edge jumps inward is a gap in the hair), where the outer edge jumps outward (the
+// 4. Outline: from the geometric hair ellipse's centre (between the cheeks at eye level),
+//    rays over each side of the head from 10 degrees below the horizontal to straight up,
+//    each walking out of the head (face, then hair) until it has left it for d/6 (a parting
+//    or a highlight is crossed). Below, row by row, the hair that goes on beside the face
+//    (long hair); it ends where a row has no hair beside the contour for 0.35 d (a row whose
+//    edge jumps inward is a gap in the hair), where the outer edge jumps outward (the
 //    shoulders) or runs beyond 2.6 d of the midline. Each side's polyline, bottom to crown,
 //    is resampled by arc length into ten points (h.10 shared).
-// 5. Ears: as Algorithm 4.3.2 A step 6 and section 3.5 read it, the part of the face region
+// 5. Ears: as Algorithm 4.3.2 A step 6 and section 3.5 read it, the face region (of skin colour)
 //    beyond the cheek line between the brow and nose lines; the cheek line is the landmark
 //    contour (5.2 to 2.14), which the cheek projection of 3.5 approximates. A bulge of
 //    plausible width (0.08..0.45 d) and height (0.4..1.6 ear heights) that ends in a
@@ -368,9 +369,7 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
     // 4. The outline.
     const QPointF centre = g.hairCentre;
     // The geometric hair ellipse's radius in the direction of angle a (above the horizontal).
-    auto ellipseRadius = [&](double a) {
-        return 1.0 / std::hypot(std::cos(a) / g.hairAx, std::sin(a) / g.hairAy);
-    };
+    auto ellipseRadius = [&](double a) { return 1.0 / std::hypot(std::cos(a) / g.hairAx, std::sin(a) / g.hairAy); };
     constexpr int kRays = 21; // per side, 5 degrees apart
     std::array<std::array<double, kRays>, 2> radius {};
     std::array<std::array<bool, kRays>, 2> found {}, atEdge {};
@@ -404,7 +403,8 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
             foundCount += found[side][k];
     rep.hairFraction = foundCount / double(2 * kRays);
     // Each side's radii, smoothed: a failed ray or one more than 15% off the median of its
-    // found neighbours (three each side) takes that median.
+    // found neighbours (three each side) takes that median (the estimate's radius when no
+    // neighbour was found).
     for (int side = 0; side < 2; ++side) {
         std::array<double, kRays> smooth {};
         for (int k = 0; k < kRays; ++k) {
@@ -412,10 +412,9 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
             for (int j = std::max(0, k - 3); j <= std::min(kRays - 1, k + 3); ++j)
                 if (found[side][j])
                     nb.push_back(radius[side][j]);
-            const double m = median(nb);
-            smooth[k] = found[side][k] && (nb.size() < 3 || std::abs(radius[side][k] - m) <= 0.15 * m)
-                ? radius[side][k]
-                : m;
+            const double m = nb.empty() ? ellipseRadius((-10.0 + 5.0 * k) * std::numbers::pi / 180.0) : median(nb);
+            smooth[k]
+                = found[side][k] && (nb.size() < 3 || std::abs(radius[side][k] - m) <= 0.15 * m) ? radius[side][k] : m;
         }
         radius[side] = smooth;
     }

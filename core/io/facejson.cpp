@@ -194,9 +194,8 @@ bool trackingFrom(const JsonField &f, TrackingSeed *t, QString *error)
     QJsonObject unused;
     if (!f.toObject(&unused, error) || !boxFrom(f.member("rect"), &t->rect, error))
         return false;
-    const std::pair<const char *, double *> numbers[] = {{"m1", &t->m1}, {"s1", &t->s1}, {"t1", &t->t1},
-        {"m2", &t->m2}, {"s2", &t->s2}, {"d", &t->d}, {"divEE", &t->divEE}, {"divEN", &t->divEN},
-        {"divNM", &t->divNM}};
+    const std::pair<const char *, double *> numbers[] = {{"m1", &t->m1}, {"s1", &t->s1}, {"t1", &t->t1}, {"m2", &t->m2},
+        {"s2", &t->s2}, {"d", &t->d}, {"divEE", &t->divEE}, {"divEN", &t->divEN}, {"divNM", &t->divNM}};
     for (const auto &[key, out] : numbers)
         if (!numberFrom(f.member(key), out, error))
             return false;

@@ -416,9 +416,8 @@ void TestDetector::debugImages()
     const DetectionResult r = detectFace(image, options);
     QCOMPARE(r.status, DetectStatus::Ok);
     QVERIFY(r.debugImages.isEmpty()); // written, not kept
-    const QStringList names {
-        QStringLiteral("detect-landmarks"), QStringLiteral("detect-points-crop"), QStringLiteral("detect-hair-region"),
-        QStringLiteral("detect-head-regions")};
+    const QStringList names {QStringLiteral("detect-landmarks"), QStringLiteral("detect-points-crop"),
+        QStringLiteral("detect-hair-region"), QStringLiteral("detect-head-regions")};
     for (const QString &name : names) {
         const QImage png(QDir(options.debugDir).filePath(name + QStringLiteral(".png")));
         QVERIFY2(!png.isNull(), qPrintable(name));

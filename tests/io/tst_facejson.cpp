@@ -189,7 +189,8 @@ private Q_SLOTS:
         QTest::addColumn<QString>("path");
         QTest::addColumn<QJsonValue>("value");
         QTest::addColumn<QString>("expected");
-        QTest::newRow("box not an object") << QStringLiteral("regions.nose") << QJsonValue(3) << QStringLiteral("regions.nose");
+        QTest::newRow("box not an object")
+            << QStringLiteral("regions.nose") << QJsonValue(3) << QStringLiteral("regions.nose");
         QTest::newRow("negative width") << QStringLiteral("regions.mouth.width") << QJsonValue(-2)
                                         << QStringLiteral("regions.mouth");
         QTest::newRow("one ear") << QStringLiteral("regions.ears[1]") << QJsonValue(QJsonValue::Undefined)
