@@ -425,6 +425,7 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
     } else {
         // Long hair: rows below the lowest ray's end.
         std::array<std::vector<QPointF>, 2> lower;
+        std::array<bool, 2> merged {}; // the side's region ran into the background at once
         for (int side = 0; side < 2; ++side) {
             const double sx = side == 0 ? -1.0 : 1.0;
             const double a = -10.0 * std::numbers::pi / 180.0;
@@ -458,8 +459,10 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
                     break; // the shoulders
                 if (!beyond || jump < -0.25 * d) { // nothing beside the face, or a gap in the hair
                     miss += step;
-                    if (miss > 0.35 * d || !r.ok)
+                    if (miss > 0.35 * d || !r.ok) {
+                        merged[side] = !r.ok && rows.empty();
                         break;
+                    }
                     continue;
                 }
                 miss = 0;
@@ -472,6 +475,16 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
             if (!rows.empty() && rows.back().y() > g.noseBaseY + 0.2 * d && rows.back().y() - y0 > 0.5 * d) {
                 lower[side] = rows;
                 rep.longHair = true;
+            }
+        }
+        // Long hair on one side, and on the other a region that merges with the background
+        // beside the face (nothing can be read there): the other side mirrors it about the
+        // midline rather than end at eye level.
+        for (int side = 0; side < 2; ++side) {
+            const int other = 1 - side;
+            if (lower[side].empty() && merged[side] && !lower[other].empty()) {
+                for (const QPointF &q : lower[other])
+                    lower[side].emplace_back(2 * g.midX - q.x(), q.y());
             }
         }
         // Each side bottom to crown, resampled into ten points.
