@@ -2,6 +2,7 @@
 
 #include "detect/classic.h"
 #include "detect/hairsearch.h"
+#include "detect/headregions.h"
 #include "detect/landmarkmap.h"
 
 #include <QDir>
@@ -348,6 +349,26 @@ int chooseFace(const std::vector<FaceBox> &faces, QSize imageSize)
     return best;
 }
 
+// Adds the faces of one detection pass to those of the passes before, leaving out a face that
+// is already there: one whose box shares more than a third of its area with a kept box, or
+// whose centre lies in one (the same face seen at another scale, its box a little shifted).
+void mergeFaces(std::vector<FaceBox> *kept, const std::vector<FaceBox> &found)
+{
+    const size_t before = kept->size();
+    for (const FaceBox &f : found) {
+        bool seen = false;
+        for (size_t i = 0; i < before && !seen; ++i) {
+            const QRectF &k = (*kept)[i].box;
+            const QRectF common = k.intersected(f.box);
+            const double overlap = common.width() * common.height();
+            const double smaller = std::min(k.width() * k.height(), f.box.width() * f.box.height());
+            seen = overlap > smaller / 3 || k.contains(f.box.center()) || f.box.contains(k.center());
+        }
+        if (!seen)
+            kept->push_back(f);
+    }
+}
+
 double logistic(double x)
 {
     return 1.0 / (1.0 + std::exp(-x));
@@ -355,7 +376,7 @@ double logistic(double x)
 
 void addLandmarkDebugImages(QMap<QString, QImage> *out, const QImage &image, const std::vector<FaceBox> &faces,
     int chosen, const std::array<QPointF, kIbugPointCount> &ibug, const FaceModel &geometric, const FaceModel &face,
-    const HairSearchReport &hair)
+    const HairSearchReport &hair, const HeadRegionReport &regions)
 {
     QImage canvas = image.convertToFormat(QImage::Format_RGB32);
     QPainter p(&canvas);
@@ -386,7 +407,7 @@ void addLandmarkDebugImages(QMap<QString, QImage> *out, const QImage &image, con
     p.translate(-head.topLeft());
     p.drawImage(QPointF(0, 0), image);
     p.setPen(QPen(QColor(255, 255, 255, 140), 1.0 / zoom));
-    for (const QLineF &ray : hair.rays)
+    for (const QLineF &ray : regions.hairUsable ? regions.rays : hair.rays)
         p.drawLine(ray);
     // Text needs fonts, which need a QGuiApplication; a command-line run gets unlabelled points.
     const bool labels = qobject_cast<QGuiApplication *>(QCoreApplication::instance()) != nullptr;
@@ -414,6 +435,8 @@ void addLandmarkDebugImages(QMap<QString, QImage> *out, const QImage &image, con
     out->insert(QStringLiteral("detect-points-crop"), crop);
     if (!hair.regionMask.isNull())
         out->insert(QStringLiteral("detect-hair-region"), hair.regionMask);
+    if (!regions.regionImage.isNull())
+        out->insert(QStringLiteral("detect-head-regions"), regions.regionImage);
 }
 
 bool wantsDebugImages(const DetectOptions &options)
@@ -449,6 +472,27 @@ DetectionResult detectWithClassic(
     result.groupConfidence.insert(groupName(PointGroup::Contour), 0.35);
     result.groupConfidence.insert(groupName(PointGroup::Ears), 0.2);
     result.groupConfidence.insert(groupName(PointGroup::Hair), 0.3);
+    result.regions = regionsFromPoints(result.face);
+    result.regions.nose = c.noseRegion;
+    result.regions.mouth = c.mouthRegion;
+    // The classic method's own thresholds and regions where it keeps them; the hue and colour
+    // statistics, which it does not keep, are measured around the face it found.
+    {
+        FaceModel scratch = result.face;
+        result.tracking = refineFromRegions(&scratch, image).seed;
+    }
+    result.tracking.valid = true;
+    result.tracking.t1 = c.t1;
+    result.tracking.d = c.d;
+    result.tracking.eyeMid = c.eyeMid;
+    for (int k = 0; k < 2; ++k) {
+        result.tracking.eyeballs[k] = c.eyeballs[k].centre;
+        result.tracking.eyeballRadius[k] = c.eyeballs[k].radius;
+    }
+    result.tracking.divEE = c.divEE;
+    result.tracking.divEN = c.divEN;
+    result.tracking.divNM = c.divNM;
+    result.tracking.mouth = c.mouthRegion;
     report(1.0, QStringLiteral("done"));
     return result;
 }
@@ -543,6 +587,8 @@ DetectionResult runDetection(
         return result;
 
     report(0.1, QStringLiteral("faces"));
+    // Every pass runs, so that faces much smaller than the first one found are counted too; a
+    // face seen by several passes counts once.
     std::vector<FaceBox> faces;
     double lastScale = 0;
     for (double fraction : kPassFaceFractions) {
@@ -550,9 +596,9 @@ DetectionResult runDetection(
         scale = std::min(scale, std::sqrt(kMaxPassPixels / (double(gray.width()) * gray.height())));
         if (scale < lastScale * 1.2 || shortSide * scale < kDetectorWindow)
             continue;
-        faces = findFaces(gray, scale);
+        mergeFaces(&faces, findFaces(gray, scale));
         lastScale = scale;
-        if (!faces.empty() || cancelled())
+        if (cancelled())
             break;
     }
     lap(QStringLiteral("faces"));
@@ -585,11 +631,24 @@ DetectionResult runDetection(
     if (cancelled())
         return result;
 
+    // Hair and ears: the thesis' regions where they are usable; elsewhere the colour search of
+    // hairsearch.h, which keeps the geometric estimate where the photo does not settle a point.
     report(0.7, QStringLiteral("hair"));
-    FaceModel refined = geometric;
+    FaceModel searched = geometric;
     HairSearchReport hair;
-    refineFromPhoto(&refined, image, &hair, wantsDebugImages(options));
+    refineFromPhoto(&searched, image, &hair, wantsDebugImages(options));
     lap(QStringLiteral("hair"));
+    FaceModel fromRegions = searched;
+    const HeadRegionReport head = refineFromRegions(&fromRegions, image, wantsDebugImages(options));
+    FaceModel refined = searched;
+    for (int i = 0; i < kPointCount; ++i) {
+        const PointGroup g = pointTable()[i].group;
+        const bool leftEar
+            = i == pt::idx("10.2") || i == pt::idx("10.4") || i == pt::idx("10.6") || i == pt::idx("10.10");
+        if ((g == PointGroup::Hair && head.hairUsable) || (g == PointGroup::Ears && head.earUsable[leftEar ? 0 : 1]))
+            refined.setPoint(i, fromRegions.point(i));
+    }
+    lap(QStringLiteral("regions"));
     result.timingMs.insert(QStringLiteral("total"), total.nsecsElapsed() / 1e6);
     if (cancelled())
         return result;
@@ -603,11 +662,22 @@ DetectionResult runDetection(
     result.groupConfidence.insert(groupName(PointGroup::Nose), 0.9 * base);
     result.groupConfidence.insert(groupName(PointGroup::Mouth), base);
     result.groupConfidence.insert(groupName(PointGroup::Contour), 0.75 * base);
-    result.groupConfidence.insert(groupName(PointGroup::Ears), (0.25 + 0.25 * hair.earFraction) * base);
-    result.groupConfidence.insert(groupName(PointGroup::Hair), (0.3 + 0.5 * hair.hairFraction) * base);
+    // Hair and ears from the regions are measured on their edges: a little more trusted than
+    // the colour search, whose share of found points is its own figure.
+    const double earFraction
+        = ((head.earUsable[0] ? 1.0 : hair.earFraction) + (head.earUsable[1] ? 1.0 : hair.earFraction)) / 2;
+    const double earRegions = (int(head.earUsable[0]) + int(head.earUsable[1])) / 2.0;
+    result.groupConfidence.insert(groupName(PointGroup::Ears), (0.25 + 0.2 * earFraction + 0.1 * earRegions) * base);
+    result.groupConfidence.insert(groupName(PointGroup::Hair),
+        (head.hairUsable ? 0.4 + 0.5 * head.hairFraction : 0.3 + 0.5 * hair.hairFraction) * base);
+
+    result.regions = regionsFromPoints(refined);
+    result.tracking = head.seed;
+    seedGeometryFromPoints(refined, &result.tracking);
+    result.tracking.valid = head.seed.valid;
 
     if (wantsDebugImages(options))
-        addLandmarkDebugImages(&result.debugImages, image, faces, chosen, ibug, geometric, refined, hair);
+        addLandmarkDebugImages(&result.debugImages, image, faces, chosen, ibug, geometric, refined, hair, head);
 
     result.face = refined;
     result.status = DetectStatus::Ok;

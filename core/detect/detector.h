@@ -1,5 +1,6 @@
 #pragma once
 
+#include "detect/faceregions.h"
 #include "face/facemodel.h"
 
 #include <QImage>
@@ -32,12 +33,13 @@ struct DetectionResult
     QString error; // a sentence for the user when status != Ok
     FaceModel face; // valid when status == Ok
     QString method; // the method that produced the points ("landmarks", "classic")
-    int faceCount = 0; // faces seen in the image; the largest, most central one is used
-                       // (the landmark method counts the faces of the size range that found one:
-                       // much smaller faces beside a large one are not looked for)
+    int faceCount = 0; // faces seen in the image (a face seen at several scales counts once);
+                       // the largest, most central one is used
     QRect faceBox; // the chosen face's box in image pixels
     QMap<QString, double> timingMs; // per stage, plus "total" (model loading excluded)
     QMap<QString, double> groupConfidence; // per point group name, 0..1
+    FaceRegions regions; // the chosen face's regions, valid when status == Ok
+    TrackingSeed tracking; // what video tracking reuses; tracking.valid when it could be measured
     // The intermediate images of the method (the thesis' figures for "classic"), by file stem
     // ("classic-b1", "detect-points", ...); filled when keepDebugImages or debugDir is set. Each
     // has the photo's size unless its name ends in "-crop" (a zoomed view).

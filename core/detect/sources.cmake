@@ -1,6 +1,8 @@
 list(APPEND TOONFACE_CORE_SOURCES
   detect/detector.h detect/detector.cpp
+  detect/faceregions.h detect/faceregions.cpp
   detect/hairsearch.h detect/hairsearch.cpp
+  detect/headregions.h detect/headregions.cpp
   detect/landmarkmap.h detect/landmarkmap.cpp)
 # dlib's detector and predictor are header templates: unoptimised they run ~40x slower, so
 # this file is optimised even in Debug builds.

@@ -6,7 +6,10 @@
 #include "io/pointsjson.h"
 
 #include <QJsonArray>
+#include <QPolygonF>
 #include <QRegularExpression>
+
+#include <utility>
 
 namespace toonface {
 
@@ -18,6 +21,205 @@ QJsonObject mapToJson(const QMap<QString, double> &map)
     for (auto it = map.cbegin(); it != map.cend(); ++it)
         o.insert(it.key(), it.value());
     return o;
+}
+
+QJsonObject boxToJson(const QRectF &r)
+{
+    QJsonObject o;
+    o.insert(QStringLiteral("x"), r.x());
+    o.insert(QStringLiteral("y"), r.y());
+    o.insert(QStringLiteral("width"), r.width());
+    o.insert(QStringLiteral("height"), r.height());
+    return o;
+}
+
+QJsonArray pointToJson(QPointF p)
+{
+    return QJsonArray {p.x(), p.y()};
+}
+
+QJsonArray polygonToJson(const QPolygonF &poly)
+{
+    QJsonArray a;
+    for (const QPointF &p : poly)
+        a.append(pointToJson(p));
+    return a;
+}
+
+QJsonArray pairToJson(const QRectF (&boxes)[2])
+{
+    return QJsonArray {boxToJson(boxes[0]), boxToJson(boxes[1])};
+}
+
+QJsonObject colourToJson(const ColourStats &c)
+{
+    QJsonObject o;
+    o.insert(QStringLiteral("samples"), c.samples);
+    o.insert(QStringLiteral("r"), c.r);
+    o.insert(QStringLiteral("g"), c.g);
+    o.insert(QStringLiteral("b"), c.b);
+    o.insert(QStringLiteral("spread"), c.spread);
+    return o;
+}
+
+QJsonObject regionsToJson(const FaceRegions &r)
+{
+    QJsonObject o;
+    o.insert(QStringLiteral("face"), boxToJson(r.face));
+    o.insert(QStringLiteral("faceOutline"), polygonToJson(r.faceOutline));
+    o.insert(QStringLiteral("hair"), boxToJson(r.hair));
+    o.insert(QStringLiteral("hairOutline"), polygonToJson(r.hairOutline));
+    o.insert(QStringLiteral("ears"), pairToJson(r.ears));
+    o.insert(QStringLiteral("brows"), pairToJson(r.brows));
+    o.insert(QStringLiteral("eyes"), pairToJson(r.eyes));
+    o.insert(QStringLiteral("nose"), boxToJson(r.nose));
+    o.insert(QStringLiteral("mouth"), boxToJson(r.mouth));
+    return o;
+}
+
+QJsonObject trackingToJson(const TrackingSeed &t)
+{
+    QJsonObject o;
+    o.insert(QStringLiteral("rect"), boxToJson(t.rect));
+    o.insert(QStringLiteral("m1"), t.m1);
+    o.insert(QStringLiteral("s1"), t.s1);
+    o.insert(QStringLiteral("t1"), t.t1);
+    o.insert(QStringLiteral("m2"), t.m2);
+    o.insert(QStringLiteral("s2"), t.s2);
+    o.insert(QStringLiteral("d"), t.d);
+    o.insert(QStringLiteral("eyeMid"), pointToJson(t.eyeMid));
+    QJsonArray eyeballs;
+    for (int k = 0; k < 2; ++k) {
+        QJsonObject e;
+        e.insert(QStringLiteral("x"), t.eyeballs[k].x());
+        e.insert(QStringLiteral("y"), t.eyeballs[k].y());
+        e.insert(QStringLiteral("radius"), t.eyeballRadius[k]);
+        eyeballs.append(e);
+    }
+    o.insert(QStringLiteral("eyeballs"), eyeballs);
+    o.insert(QStringLiteral("divEE"), t.divEE);
+    o.insert(QStringLiteral("divEN"), t.divEN);
+    o.insert(QStringLiteral("divNM"), t.divNM);
+    o.insert(QStringLiteral("mouth"), boxToJson(t.mouth));
+    o.insert(QStringLiteral("skin"), colourToJson(t.skin));
+    o.insert(QStringLiteral("hair"), colourToJson(t.hair));
+    return o;
+}
+
+// Coordinates and statistics are bounded so that a corrupt file cannot smuggle in absurd values.
+constexpr double kCoordinateLimit = 1e7;
+
+bool numberFrom(const JsonField &f, double *out, QString *error)
+{
+    return f.toBoundedNumber(kCoordinateLimit, out, error);
+}
+
+bool pointFrom(const JsonField &f, QPointF *out, QString *error)
+{
+    QJsonArray a;
+    if (!f.toArray(&a, error))
+        return false;
+    if (a.size() != 2)
+        return f.expected(QStringLiteral("an [x, y] pair"), error);
+    double x = 0, y = 0;
+    if (!numberFrom(f.at(0), &x, error) || !numberFrom(f.at(1), &y, error))
+        return false;
+    *out = QPointF(x, y);
+    return true;
+}
+
+bool boxFrom(const JsonField &f, QRectF *out, QString *error)
+{
+    QJsonObject unused;
+    if (!f.toObject(&unused, error))
+        return false;
+    double x = 0, y = 0, w = 0, h = 0;
+    if (!numberFrom(f.member("x"), &x, error) || !numberFrom(f.member("y"), &y, error)
+        || !numberFrom(f.member("width"), &w, error) || !numberFrom(f.member("height"), &h, error))
+        return false;
+    if (w < 0 || h < 0)
+        return f.fail(QStringLiteral("a box of negative size"), error);
+    *out = QRectF(x, y, w, h);
+    return true;
+}
+
+bool polygonFrom(const JsonField &f, QPolygonF *out, QString *error)
+{
+    QJsonArray a;
+    if (!f.toArray(&a, error))
+        return false;
+    QPolygonF poly;
+    for (qsizetype i = 0; i < a.size(); ++i) {
+        QPointF p;
+        if (!pointFrom(f.at(i), &p, error))
+            return false;
+        poly << p;
+    }
+    *out = poly;
+    return true;
+}
+
+bool pairFrom(const JsonField &f, QRectF (&out)[2], QString *error)
+{
+    QJsonArray a;
+    if (!f.toArray(&a, error))
+        return false;
+    if (a.size() != 2)
+        return f.expected(QStringLiteral("two boxes, image-left first"), error);
+    return boxFrom(f.at(0), &out[0], error) && boxFrom(f.at(1), &out[1], error);
+}
+
+bool colourFrom(const JsonField &f, ColourStats *out, QString *error)
+{
+    QJsonObject unused;
+    if (!f.toObject(&unused, error))
+        return false;
+    return f.member("samples").toInt(0, 1 << 30, &out->samples, error) && numberFrom(f.member("r"), &out->r, error)
+        && numberFrom(f.member("g"), &out->g, error) && numberFrom(f.member("b"), &out->b, error)
+        && numberFrom(f.member("spread"), &out->spread, error);
+}
+
+bool regionsFrom(const JsonField &f, FaceRegions *r, QString *error)
+{
+    QJsonObject unused;
+    return f.toObject(&unused, error) && boxFrom(f.member("face"), &r->face, error)
+        && polygonFrom(f.member("faceOutline"), &r->faceOutline, error) && boxFrom(f.member("hair"), &r->hair, error)
+        && polygonFrom(f.member("hairOutline"), &r->hairOutline, error) && pairFrom(f.member("ears"), r->ears, error)
+        && pairFrom(f.member("brows"), r->brows, error) && pairFrom(f.member("eyes"), r->eyes, error)
+        && boxFrom(f.member("nose"), &r->nose, error) && boxFrom(f.member("mouth"), &r->mouth, error);
+}
+
+bool trackingFrom(const JsonField &f, TrackingSeed *t, QString *error)
+{
+    QJsonObject unused;
+    if (!f.toObject(&unused, error) || !boxFrom(f.member("rect"), &t->rect, error))
+        return false;
+    const std::pair<const char *, double *> numbers[] = {{"m1", &t->m1}, {"s1", &t->s1}, {"t1", &t->t1}, {"m2", &t->m2},
+        {"s2", &t->s2}, {"d", &t->d}, {"divEE", &t->divEE}, {"divEN", &t->divEN}, {"divNM", &t->divNM}};
+    for (const auto &[key, out] : numbers)
+        if (!numberFrom(f.member(key), out, error))
+            return false;
+    if (!pointFrom(f.member("eyeMid"), &t->eyeMid, error))
+        return false;
+    const JsonField eyeballs = f.member("eyeballs");
+    QJsonArray a;
+    if (!eyeballs.toArray(&a, error))
+        return false;
+    if (a.size() != 2)
+        return eyeballs.expected(QStringLiteral("two eyeballs, image-left first"), error);
+    for (int k = 0; k < 2; ++k) {
+        const JsonField e = eyeballs.at(k);
+        double x = 0, y = 0;
+        if (!e.toObject(&unused, error) || !numberFrom(e.member("x"), &x, error)
+            || !numberFrom(e.member("y"), &y, error) || !numberFrom(e.member("radius"), &t->eyeballRadius[k], error))
+            return false;
+        t->eyeballs[k] = QPointF(x, y);
+    }
+    if (!boxFrom(f.member("mouth"), &t->mouth, error) || !colourFrom(f.member("skin"), &t->skin, error)
+        || !colourFrom(f.member("hair"), &t->hair, error))
+        return false;
+    t->valid = true;
+    return true;
 }
 
 } // namespace
@@ -61,6 +263,10 @@ QJsonObject faceToJson(const FaceModel &face, const QString &imagePath, const De
         faceBox.insert(QStringLiteral("height"), box.height());
         json.insert(QStringLiteral("faceBox"), faceBox);
         json.insert(QStringLiteral("groupConfidence"), mapToJson(detection->groupConfidence));
+        if (detection->status == DetectStatus::Ok)
+            json.insert(QStringLiteral("regions"), regionsToJson(detection->regions));
+        if (detection->tracking.valid)
+            json.insert(QStringLiteral("tracking"), trackingToJson(detection->tracking));
     } else {
         json.insert(QStringLiteral("method"), QStringLiteral("none"));
     }
@@ -114,6 +320,31 @@ std::optional<FaceModel> faceFromJson(const QJsonObject &json, QString *error, Q
     if (imagePath)
         *imagePath = path;
     return face;
+}
+
+} // namespace toonface
+
+namespace toonface {
+
+bool faceRegionsFromJson(const QJsonObject &json, FaceRegions *regions, TrackingSeed *tracking, QString *error)
+{
+    QString scratch;
+    if (!error)
+        error = &scratch;
+    const JsonField root(json, QString());
+    FaceRegions r;
+    TrackingSeed t;
+    const JsonField rf = root.member("regions");
+    if (!rf.isMissing() && !regionsFrom(rf, &r, error))
+        return false;
+    const JsonField tf = root.member("tracking");
+    if (!tf.isMissing() && !trackingFrom(tf, &t, error))
+        return false;
+    if (regions)
+        *regions = r;
+    if (tracking)
+        *tracking = t;
+    return true;
 }
 
 } // namespace toonface

@@ -91,6 +91,7 @@ private Q_SLOTS:
     void progressAndTimings();
     void twoFacesLargerChosen_data();
     void twoFacesLargerChosen();
+    void twoFacesVeryDifferentSizes();
     void cancelBeforeStart();
     void cancelDuringDetection();
     void missingModel();
@@ -98,6 +99,9 @@ private Q_SLOTS:
     void concurrentCalls();
     void sharedDataNme_data();
     void sharedDataNme();
+    void photoGroupsPlausible_data();
+    void photoGroupsPlausible();
+    void resultHasRegions();
 };
 
 void TestDetector::initTestCase()
@@ -318,6 +322,29 @@ void TestDetector::twoFacesLargerChosen()
     QVERIFY(bigRect.contains(r.face.point("3.6").toPoint()));
 }
 
+// A face a fifth the size of the other is found by a later detection pass than the large
+// one: both are counted, the large one (seen by several passes) once, and it is the one used.
+void TestDetector::twoFacesVeryDifferentSizes()
+{
+    const QImage big = grace().convertToFormat(QImage::Format_RGB32);
+    if (big.isNull())
+        QSKIP("grace_hopper.jpg is not installed");
+    const QImage small = big.scaled(big.size() * 0.3, Qt::KeepAspectRatio, Qt::SmoothTransformation);
+    QImage canvas(big.width() + small.width() + 40, big.height(), QImage::Format_RGB32);
+    canvas.fill(QColor(90, 120, 160));
+    QPainter p(&canvas);
+    const QRect smallRect(QPoint(big.width() + 20, big.height() - small.height() - 60), small.size());
+    p.drawImage(QPoint(0, 0), big);
+    p.drawImage(smallRect, small);
+    p.end();
+
+    const DetectionResult r = detectFace(canvas);
+    QCOMPARE(r.status, DetectStatus::Ok);
+    QCOMPARE(r.faceCount, 2);
+    QVERIFY(QRect(QPoint(0, 0), big.size()).contains(r.faceBox.center()));
+    QVERIFY(r.faceBox.width() > 2 * small.width() / 3);
+}
+
 void TestDetector::cancelBeforeStart()
 {
     const QImage image = grace();
@@ -389,8 +416,8 @@ void TestDetector::debugImages()
     const DetectionResult r = detectFace(image, options);
     QCOMPARE(r.status, DetectStatus::Ok);
     QVERIFY(r.debugImages.isEmpty()); // written, not kept
-    const QStringList names {
-        QStringLiteral("detect-landmarks"), QStringLiteral("detect-points-crop"), QStringLiteral("detect-hair-region")};
+    const QStringList names {QStringLiteral("detect-landmarks"), QStringLiteral("detect-points-crop"),
+        QStringLiteral("detect-hair-region"), QStringLiteral("detect-head-regions")};
     for (const QString &name : names) {
         const QImage png(QDir(options.debugDir).filePath(name + QStringLiteral(".png")));
         QVERIFY2(!png.isNull(), qPrintable(name));
@@ -465,6 +492,73 @@ void TestDetector::sharedDataNme()
     const double nme = normalizedMeanError(r.face, truth);
     qInfo("%s: NME %.4f (%d faces)", qPrintable(QFileInfo(image).fileName()), nme, r.faceCount);
     QVERIFY2(nme <= 0.08, qPrintable(QStringLiteral("NME %1").arg(nme)));
+}
+
+void TestDetector::photoGroupsPlausible_data()
+{
+    sharedDataNme_data();
+    QTest::newRow("grace_hopper") << kGracePath << QString();
+}
+
+// On real photos, in the face frame (x along the eye line, y down, from EyeMid): the crown of
+// the hair outline (h.6 .. h.14) lies above the brows, h.10 above the forehead point 11.1
+// (within 0.05 d); each ear lies beside its cheek (its outermost point 10.4/10.3 no nearer
+// the midline than the cheek 5.2/5.1 minus 0.1 d, and within a full d of it) between the brows
+// and the mouth (0.3 d of slack above).
+void TestDetector::photoGroupsPlausible()
+{
+    QFETCH(QString, image);
+    if (image.isEmpty())
+        QSKIP("no research photos (set TOONFACE_DATA_DIR to the shared data folder)");
+    const QImage photo(image);
+    if (photo.isNull())
+        QSKIP(qPrintable(QStringLiteral("%1 is not installed").arg(image)));
+    const DetectionResult r = detectFace(photo);
+    QCOMPARE(r.status, DetectStatus::Ok);
+    const HeadGeometry g = headGeometry(r.face);
+    const double d = g.eyeDistance;
+    auto L = [&](const char *id) { return g.toLocal(r.face.point(id)); };
+    for (int i = pt::idx("h.6"); i <= pt::idx("h.14"); ++i)
+        QVERIFY2(g.toLocal(r.face.point(i)).y() < g.browY, qPrintable(pointId(i)));
+    QCOMPARE_LE(L("h.10").y(), L("11.1").y() + 0.05 * d);
+    const double mouthY = (L("8.4").y() + L("8.3").y()) / 2;
+    for (const char *id : {"10.2", "10.4", "10.6", "10.10", "10.1", "10.3", "10.5", "10.9"}) {
+        const double y = L(id).y();
+        QVERIFY2(y > g.browY - 0.3 * d && y < mouthY, id);
+    }
+    QCOMPARE_LE(L("10.4").x(), L("5.2").x() + 0.1 * d);
+    QCOMPARE_GE(L("10.4").x(), L("5.2").x() - d);
+    QCOMPARE_GE(L("10.3").x(), L("5.1").x() - 0.1 * d);
+    QCOMPARE_LE(L("10.3").x(), L("5.1").x() + d);
+}
+
+// The result carries the regions of its points and a tracking seed measured on the photo.
+void TestDetector::resultHasRegions()
+{
+    const QImage image = grace();
+    if (image.isNull())
+        QSKIP("grace_hopper.jpg is not installed");
+    for (DetectionMethod m : {DetectionMethod::Landmarks, DetectionMethod::Classic}) {
+        DetectOptions options;
+        options.method = m;
+        const DetectionResult r = detectFace(image, options);
+        if (r.status != DetectStatus::Ok) {
+            QCOMPARE(m, DetectionMethod::Classic); // the classic method may miss a real photo
+            continue;
+        }
+        QCOMPARE(r.regions.hairOutline.size(), 19);
+        QVERIFY(r.regions.face.contains(r.face.point("9.15")));
+        QVERIFY(r.regions.eyes[0].center().x() < r.regions.eyes[1].center().x());
+        QVERIFY(r.regions.mouth.center().y() > r.regions.nose.top());
+        QVERIFY(r.tracking.valid);
+        QCOMPARE_GT(r.tracking.d, 10.0);
+        QVERIFY(r.regions.face.contains(r.tracking.eyeMid));
+        QCOMPARE_LT(r.tracking.divEE, r.tracking.divEN);
+        QCOMPARE_LT(r.tracking.divEN, r.tracking.divNM);
+        QCOMPARE_GT(r.tracking.skin.samples, 0);
+        // Skin is lighter than the threshold that separates the dark features.
+        QCOMPARE_GT((r.tracking.skin.r + r.tracking.skin.g + r.tracking.skin.b) / 3, r.tracking.t1);
+    }
 }
 
 QTEST_GUILESS_MAIN(TestDetector)

@@ -131,6 +131,100 @@ private Q_SLOTS:
         QCOMPARE(imagePath, QStringLiteral("dir/me.jpg"));
     }
 
+    // The regions and the tracking seed survive a trip through the JSON text exactly.
+    void regionsRoundTrip()
+    {
+        const FaceModel face = testFace();
+        DetectionResult d;
+        d.status = DetectStatus::Ok;
+        d.method = QStringLiteral("landmarks");
+        d.regions = regionsFromPoints(face);
+        d.regions.ears[1] = QRectF(); // an ear that was not found
+        d.tracking.valid = true;
+        d.tracking.rect = QRectF(120.5, 200.25, 80.125, 60.0);
+        d.tracking.m1 = 151.3;
+        d.tracking.s1 = 40.7;
+        d.tracking.t1 = 110.6;
+        d.tracking.m2 = 14.2;
+        d.tracking.s2 = 6.1;
+        seedGeometryFromPoints(face, &d.tracking);
+        d.tracking.skin = {1234, 225.5, 180.25, 150.0, 9.75};
+        d.tracking.hair = {56, 60.0, 40.0, 25.5, 4.0};
+        const QByteArray text = QJsonDocument(faceToJson(face, QStringLiteral("me.jpg"), &d)).toJson();
+        const QJsonObject json = QJsonDocument::fromJson(text).object();
+        QVERIFY(json.contains(QStringLiteral("regions")));
+        QVERIFY(json.contains(QStringLiteral("tracking")));
+        FaceRegions regions;
+        TrackingSeed tracking;
+        QString error;
+        QVERIFY2(faceRegionsFromJson(json, &regions, &tracking, &error), qPrintable(error));
+        QVERIFY(regions == d.regions);
+        QCOMPARE(regions.hairOutline.size(), 19);
+        QVERIFY(tracking == d.tracking);
+        // The face itself reads back as before.
+        const auto back = faceFromJson(json, &error);
+        QVERIFY2(back, qPrintable(error));
+        QVERIFY(*back == face);
+    }
+
+    // Files written before regions and tracking existed, or without a detection, read with
+    // empty regions and an invalid seed.
+    void regionsAbsent()
+    {
+        const QJsonObject json = faceToJson(testFace(), QStringLiteral("me.jpg"));
+        QVERIFY(!json.contains(QStringLiteral("regions")));
+        QVERIFY(!json.contains(QStringLiteral("tracking")));
+        FaceRegions regions;
+        regions.nose = QRectF(1, 2, 3, 4);
+        TrackingSeed tracking;
+        tracking.valid = true;
+        QString error;
+        QVERIFY2(faceRegionsFromJson(json, &regions, &tracking, &error), qPrintable(error));
+        QVERIFY(regions == FaceRegions());
+        QVERIFY(!tracking.valid);
+    }
+
+    void regionsValidation_data()
+    {
+        QTest::addColumn<QString>("path");
+        QTest::addColumn<QJsonValue>("value");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("box not an object")
+            << QStringLiteral("regions.nose") << QJsonValue(3) << QStringLiteral("regions.nose");
+        QTest::newRow("negative width") << QStringLiteral("regions.mouth.width") << QJsonValue(-2)
+                                        << QStringLiteral("regions.mouth");
+        QTest::newRow("one ear") << QStringLiteral("regions.ears[1]") << QJsonValue(QJsonValue::Undefined)
+                                 << QStringLiteral("regions.ears");
+        QTest::newRow("outline point") << QStringLiteral("regions.hairOutline[3]") << QJsonValue(QJsonArray {1})
+                                       << QStringLiteral("regions.hairOutline[3]");
+        QTest::newRow("threshold text") << QStringLiteral("tracking.t1") << QJsonValue(QStringLiteral("x"))
+                                        << QStringLiteral("tracking.t1");
+        QTest::newRow("eyeball radius") << QStringLiteral("tracking.eyeballs[0].radius")
+                                        << QJsonValue(QJsonValue::Undefined)
+                                        << QStringLiteral("tracking.eyeballs[0].radius");
+        QTest::newRow("hair samples") << QStringLiteral("tracking.hair.samples") << QJsonValue(1.5)
+                                      << QStringLiteral("tracking.hair.samples");
+    }
+
+    void regionsValidation()
+    {
+        QFETCH(QString, path);
+        QFETCH(QJsonValue, value);
+        QFETCH(QString, expected);
+        const FaceModel face = testFace();
+        DetectionResult d;
+        d.status = DetectStatus::Ok;
+        d.regions = regionsFromPoints(face);
+        d.tracking.valid = true;
+        seedGeometryFromPoints(face, &d.tracking);
+        const QJsonValue bad = patched(faceToJson(face, QString(), &d), path, value);
+        FaceRegions regions;
+        TrackingSeed tracking;
+        QString error;
+        QVERIFY(!faceRegionsFromJson(bad.toObject(), &regions, &tracking, &error));
+        QVERIFY2(error.startsWith(expected + QLatin1Char(':')), qPrintable(error));
+    }
+
     void faceWithoutImageSizeRoundTrips()
     {
         FaceModel face = testFace();
