@@ -33,8 +33,9 @@ struct DetectionResult
     QString error; // a sentence for the user when status != Ok
     FaceModel face; // valid when status == Ok
     QString method; // the method that produced the points ("landmarks", "classic")
-    int faceCount = 0; // faces seen in the image (a face seen at several scales counts once);
-                       // the largest, most central one is used
+    int faceCount = 0; // faces seen in the image; the largest, most central one is used. Faces
+                       // are looked for from large to small and the search stops at the size
+                       // range where one is found: much smaller faces beside it are not counted
     QRect faceBox; // the chosen face's box in image pixels
     QMap<QString, double> timingMs; // per stage, plus "total" (model loading excluded)
     QMap<QString, double> groupConfidence; // per point group name, 0..1
