@@ -47,7 +47,7 @@ namespace toonface {
 
 namespace {
 
-constexpr double kWorkEyeDistance = 48.0;
+constexpr double kWorkEyeDistance = 40.0;
 constexpr double kMinIntensitySpread = 8.0; // grey levels
 constexpr double kMinHueSpread = 4.0; // hue units of huePlane(), about 5.6 degrees
 // Gaps in the head's regions that a search crosses, in eye distances: a parting, a highlight.

@@ -31,28 +31,47 @@ Plane intensityPlane(const QImage &image)
     return p;
 }
 
+namespace {
+
+// The HSI hue angle (Gonzalez & Woods): theta = acos(((r-g)+(r-b)) / (2 sqrt((r-g)^2 + (r-b)(g-b)))),
+// negated when b > g, kept signed in (-180, 180] and scaled to [-127, 128]. The same angle is
+// atan2(sqrt(3) (g-b), 2r-g-b) (the numerator is its cosine side, the root its length), so it
+// depends on u = g-b and v = 2r-g-b only: a table over their 511 x 1021 integer values (built
+// once, 2 MB) replaces a trigonometric call per pixel.
+class HueTable
+{
+public:
+    HueTable()
+        : m_values(size_t(kU) * kV)
+    {
+        for (int u = -255; u <= 255; ++u)
+            for (int v = -510; v <= 510; ++v) {
+                const double theta = std::atan2(std::numbers::sqrt3 * u, v) * 180.0 / std::numbers::pi;
+                m_values[size_t(u + 255) * kV + size_t(v + 510)]
+                    = float(std::clamp(theta * 255.0 / 360.0, -127.0, 128.0));
+            }
+    }
+    float at(int r, int g, int b) const { return m_values[size_t(g - b + 255) * kV + size_t(2 * r - g - b + 510)]; }
+
+private:
+    static constexpr int kU = 511, kV = 1021;
+    std::vector<float> m_values;
+};
+
+} // namespace
+
 Plane huePlane(const QImage &image)
 {
+    static const HueTable table;
     const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
     Plane p {rgb.size(), std::vector<float>(size_t(rgb.width()) * rgb.height())};
     for (int y = 0; y < rgb.height(); ++y) {
         const auto *row = reinterpret_cast<const QRgb *>(rgb.constScanLine(y));
         for (int x = 0; x < rgb.width(); ++x) {
-            const double r = qRed(row[x]), g = qGreen(row[x]), b = qBlue(row[x]);
-            const double sum = r + g + b;
-            const double s = sum > 0 ? 1.0 - 3.0 * std::min({r, g, b}) / sum : 0.0;
-            if (s < kMinSaturation) {
-                p.at(x, y) = 128.0f;
-                continue;
-            }
-            // The HSI hue angle (Gonzalez & Woods): theta = acos(((r-g)+(r-b)) / (2 sqrt((r-g)^2 + (r-b)(g-b)))),
-            // negated when b > g; here kept signed in (-180, 180].
-            const double num = 0.5 * ((r - g) + (r - b));
-            const double den = std::sqrt((r - g) * (r - g) + (r - b) * (g - b));
-            double theta = den > 0 ? std::acos(std::clamp(num / den, -1.0, 1.0)) * 180.0 / std::numbers::pi : 0.0;
-            if (b > g)
-                theta = -theta;
-            p.at(x, y) = float(std::clamp(theta * 255.0 / 360.0, -127.0, 128.0));
+            const int r = qRed(row[x]), g = qGreen(row[x]), b = qBlue(row[x]);
+            const int sum = r + g + b;
+            const double s = sum > 0 ? 1.0 - 3.0 * std::min({r, g, b}) / double(sum) : 0.0;
+            p.at(x, y) = s < kMinSaturation ? 128.0f : table.at(r, g, b);
         }
     }
     return p;
