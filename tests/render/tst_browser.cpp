@@ -18,6 +18,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <optional>
+
 using namespace toonface;
 
 namespace {
@@ -70,45 +72,59 @@ private:
     MouthShapeSet m_shapes;
     Timeline m_timeline;
 
-    // Loads a page (`html`, or an SVG document with suffix .svg) in Chromium and returns its
-    // screenshot of the window.
-    QImage screenshot(const QByteArray &html, QSize window, const QString &name, const QStringList &extra = {},
-        const QString &suffix = QStringLiteral(".html"))
+    // Writes `content` to NAME+suffix in the test's folder and loads it in headless Chromium with
+    // `extra` arguments; returns what Chromium printed on stdout (empty with m_startFailure set
+    // when it could not start, or with a warning when it did not finish).
+    std::optional<QByteArray> runChromium(
+        const QByteArray &content, const QString &name, const QString &suffix, const QStringList &extra)
     {
         const QString page = m_dir.filePath(name + suffix);
-        const QString png = m_dir.filePath(name + QStringLiteral(".png"));
         QFile f(page);
-        if (!f.open(QIODevice::WriteOnly) || f.write(html) != html.size())
-            return {};
+        if (!f.open(QIODevice::WriteOnly) || f.write(content) != content.size())
+            return std::nullopt;
         f.close();
         QTemporaryDir profile;
         QProcess chromium;
-        chromium.setProcessChannelMode(QProcess::MergedChannels);
         QStringList args = {QStringLiteral("--headless"), QStringLiteral("--no-sandbox"),
             QStringLiteral("--disable-gpu"), QStringLiteral("--disable-quic"), QStringLiteral("--no-first-run"),
             QStringLiteral("--disable-background-networking"), QStringLiteral("--disable-component-update"),
-            QStringLiteral("--disable-sync"), QStringLiteral("--hide-scrollbars"),
-            QStringLiteral("--force-device-scale-factor=1"), QStringLiteral("--user-data-dir=") + profile.path(),
-            QStringLiteral("--screenshot=") + png,
-            QStringLiteral("--window-size=%1,%2").arg(window.width()).arg(window.height())};
+            QStringLiteral("--disable-sync"), QStringLiteral("--user-data-dir=") + profile.path()};
         args << extra << QUrl::fromLocalFile(page).toString();
         QElapsedTimer timer;
         timer.start();
         chromium.start(m_chromium, args);
         if (!chromium.waitForStarted(20000)) {
             m_startFailure = chromium.errorString();
-            return {};
+            return std::nullopt;
         }
         if (!chromium.waitForFinished(90000)) {
             chromium.kill();
             chromium.waitForFinished();
-            qWarning("Chromium did not finish: %s", chromium.readAll().right(2000).constData());
-            return {};
+            qWarning("Chromium did not finish: %s", chromium.readAllStandardError().right(2000).constData());
+            return std::nullopt;
         }
         qInfo("Chromium took %lld ms for %s", qlonglong(timer.elapsed()), qPrintable(name));
+        m_lastChromiumErrors = chromium.readAllStandardError();
+        return chromium.readAllStandardOutput();
+    }
+    QByteArray m_lastChromiumErrors;
+
+    // Loads a page (`html`, or an SVG document with suffix .svg) in Chromium and returns its
+    // screenshot of the window.
+    QImage screenshot(const QByteArray &html, QSize window, const QString &name, const QStringList &extra = {},
+        const QString &suffix = QStringLiteral(".html"))
+    {
+        const QString png = m_dir.filePath(name + QStringLiteral(".png"));
+        const QStringList args
+            = QStringList {QStringLiteral("--hide-scrollbars"), QStringLiteral("--force-device-scale-factor=1"),
+                  QStringLiteral("--screenshot=") + png,
+                  QStringLiteral("--window-size=%1,%2").arg(window.width()).arg(window.height())}
+            + extra;
+        if (!runChromium(html, name, suffix, args))
+            return {};
         QImage image(png);
         if (image.isNull())
-            qWarning("no screenshot; Chromium said: %s", chromium.readAll().right(2000).constData());
+            qWarning("no screenshot; Chromium said: %s", m_lastChromiumErrors.right(2000).constData());
         if (const QString keep = qEnvironmentVariable("TOONFACE_BROWSER_OUT"); !keep.isEmpty() && !image.isNull())
             image.save(QDir(keep).filePath(name + QStringLiteral(".png")));
         return image;
@@ -365,29 +381,9 @@ private:
     // The page's DOM after it has run for a while (Chromium's --dump-dom).
     QByteArray dumpDom(const QByteArray &html, const QString &name)
     {
-        const QString page = m_dir.filePath(name + QStringLiteral(".html"));
-        QFile f(page);
-        if (!f.open(QIODevice::WriteOnly) || f.write(html) != html.size())
-            return {};
-        f.close();
-        QTemporaryDir profile;
-        QProcess chromium;
-        chromium.start(m_chromium,
-            {QStringLiteral("--headless"), QStringLiteral("--no-sandbox"), QStringLiteral("--disable-gpu"),
-                QStringLiteral("--no-first-run"), QStringLiteral("--disable-background-networking"),
-                QStringLiteral("--disable-component-update"), QStringLiteral("--disable-sync"),
-                QStringLiteral("--user-data-dir=") + profile.path(), QStringLiteral("--virtual-time-budget=3000"),
-                QStringLiteral("--dump-dom"), QUrl::fromLocalFile(page).toString()});
-        if (!chromium.waitForStarted(20000)) {
-            m_startFailure = chromium.errorString();
-            return {};
-        }
-        if (!chromium.waitForFinished(90000)) {
-            chromium.kill();
-            chromium.waitForFinished();
-            return {};
-        }
-        return chromium.readAllStandardOutput();
+        return runChromium(html, name, QStringLiteral(".html"),
+            {QStringLiteral("--virtual-time-budget=3000"), QStringLiteral("--dump-dom")})
+            .value_or(QByteArray());
     }
 };
 
