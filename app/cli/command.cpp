@@ -20,6 +20,11 @@ int fail(int code, const QString &message)
     return code;
 }
 
+void warn(const QString &message)
+{
+    QTextStream(stderr) << "toonface-cli: warning: " << message << Qt::endl;
+}
+
 void progress(const QString &message)
 {
     if (isatty(fileno(stderr)) || qEnvironmentVariableIsSet("TOONFACE_PROGRESS"))

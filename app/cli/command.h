@@ -38,6 +38,8 @@ struct CommandRegistrar
 
 // Prints "toonface-cli: error: <message>" on stderr and returns `code`.
 int fail(int code, const QString &message);
+// Prints "toonface-cli: warning: <message>" on stderr: the job goes on, differently from what was asked.
+void warn(const QString &message);
 // Prints a progress line on stderr (only when stderr is a terminal or --progress was given).
 void progress(const QString &message);
 

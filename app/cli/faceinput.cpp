@@ -93,6 +93,9 @@ int loadFaceInput(const QString &path, const DetectOptions &options, FaceInput *
         if (out->detection.status != DetectStatus::Ok)
             return fail(
                 detectionExitCode(out->detection.status), QStringLiteral("%1: %2").arg(path, out->detection.error));
+        if (!out->detection.note.isEmpty())
+            warn(QStringLiteral("%1: the landmark method could not serve (%2); the points come from the classic method")
+                     .arg(path, out->detection.note));
         out->face = out->detection.face;
         return ExitOk;
     }

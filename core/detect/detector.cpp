@@ -445,8 +445,10 @@ bool wantsDebugImages(const DetectOptions &options)
 }
 
 // The thesis pipeline (classic.h): one face, found by its eye pair.
-DetectionResult detectWithClassic(
-    const QImage &image, const DetectOptions &options, const std::function<void(double, const QString &)> &report)
+// `asFallback`: auto's last resort, which must not call any dark pair a face: only a pair that
+// passed the face checks (eyePairInFace) counts.
+DetectionResult detectWithClassic(const QImage &image, const DetectOptions &options,
+    const std::function<void(double, const QString &)> &report, bool asFallback = false)
 {
     DetectionResult result;
     result.method = detectionMethodName(DetectionMethod::Classic);
@@ -454,9 +456,9 @@ DetectionResult detectWithClassic(
     const ClassicResult c = detectClassic(image, wantsDebugImages(options));
     result.timingMs = c.timingMs;
     result.debugImages = c.debugImages;
-    if (!c.ok) {
+    if (!c.ok || (asFallback && !c.eyePairInFace)) {
         result.status = DetectStatus::NoFace;
-        result.error = c.error;
+        result.error = c.ok ? QStringLiteral("no eye pair with a face around it") : c.error;
         return result;
     }
     result.status = DetectStatus::Ok;
@@ -693,6 +695,25 @@ DetectionResult detectFace(
     const QImage &image, const DetectOptions &options, const ProgressFn &progress, const std::atomic_bool *cancel)
 {
     DetectionResult result = runDetection(image, options, progress, cancel);
+    // Auto: the thesis' pipeline where the landmarks cannot serve (no model, or no face their
+    // detector accepts: a face turned or lit beyond its training).
+    if (options.method == DetectionMethod::Auto
+        && (result.status == DetectStatus::NoFace || result.status == DetectStatus::ModelMissing)
+        && !(cancel && cancel->load())) {
+        DetectionResult classic = detectWithClassic(
+            image, options,
+            [&](double fraction, const QString &stage) {
+                if (progress)
+                    progress(fraction, stage);
+            },
+            true);
+        if (classic.status == DetectStatus::Ok) {
+            classic.note = result.error;
+            result = classic;
+        } else if (wantsDebugImages(options)) {
+            result.debugImages.insert(classic.debugImages);
+        }
+    }
     if (!options.debugDir.isEmpty() && QDir().mkpath(options.debugDir)) {
         for (auto it = result.debugImages.cbegin(); it != result.debugImages.cend(); ++it)
             it.value().save(QDir(options.debugDir).filePath(it.key() + QStringLiteral(".png")));

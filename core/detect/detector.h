@@ -33,6 +33,7 @@ struct DetectionResult
     QString error; // a sentence for the user when status != Ok
     FaceModel face; // valid when status == Ok
     QString method; // the method that produced the points ("landmarks", "classic")
+    QString note; // with auto: why the classic method was used instead of the landmarks
     int faceCount = 0; // faces seen in the image; the largest, most central one is used. Faces
                        // are looked for from large to small and the search stops at the size
                        // range where one is found: much smaller faces beside it are not counted

@@ -27,9 +27,10 @@ struct Run
     QByteArray err;
 };
 
-Run cli(const QStringList &args)
+Run cli(const QStringList &args, const QProcessEnvironment &env = QProcessEnvironment::systemEnvironment())
 {
     QProcess p;
+    p.setProcessEnvironment(env);
     p.start(QStringLiteral(TOONFACE_CLI_PATH), args);
     if (!p.waitForFinished(120000))
         return {};
@@ -182,6 +183,26 @@ private Q_SLOTS:
         r = cli({QStringLiteral("cartoon"), p, QStringLiteral("-o"), path(QStringLiteral("blank.svg"))});
         QCOMPARE(r.code, 4);
         QVERIFY(!QFile::exists(path(QStringLiteral("blank.svg"))));
+    }
+
+    // Without the landmark model, auto falls back to the thesis' pipeline: the portrait still
+    // gets its points, the JSON says which method placed them, stderr warns why.
+    void detectFallsBackToClassic()
+    {
+        requirePortrait();
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("TOONFACE_LANDMARK_MODEL"), QStringLiteral("/nonexistent/landmarks.dat"));
+        const Run r = cli({QStringLiteral("detect"), kPortrait}, env);
+        QCOMPARE(r.code, 0);
+        const QJsonObject face = QJsonDocument::fromJson(r.out).object();
+        QCOMPARE(face.value(QStringLiteral("method")).toString(), QStringLiteral("classic"));
+        QCOMPARE(face.value(QStringLiteral("points")).toArray().size(), 72);
+        QVERIFY(r.err.startsWith("toonface-cli: warning: "));
+        QVERIFY(r.err.contains("/nonexistent/landmarks.dat"));
+        const Run strict
+            = cli({QStringLiteral("detect"), kPortrait, QStringLiteral("--method"), QStringLiteral("landmarks")}, env);
+        QCOMPARE(strict.code, 1); // an installation problem, not the input's
+        QVERIFY(isOneErrorLine(strict.err));
     }
 
     void detectPortrait()

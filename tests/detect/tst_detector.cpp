@@ -404,6 +404,19 @@ void TestDetector::missingModel()
     const DetectionResult r2 = detectFace(image);
     QCOMPARE(r2.status, DetectStatus::ModelMissing);
     QVERIFY(r2.error.contains(junk));
+
+    // With a face in the photo, auto falls back to the thesis' pipeline and says why; the
+    // landmark method on its own still reports the missing model.
+    const QImage portrait = grace();
+    if (portrait.isNull())
+        return;
+    const DetectionResult r3 = detectFace(portrait);
+    QCOMPARE(r3.status, DetectStatus::Ok);
+    QCOMPARE(r3.method, QStringLiteral("classic"));
+    QVERIFY(r3.note.contains(junk));
+    DetectOptions landmarks;
+    landmarks.method = DetectionMethod::Landmarks;
+    QCOMPARE(detectFace(portrait, landmarks).status, DetectStatus::ModelMissing);
 }
 
 void TestDetector::debugImages()
