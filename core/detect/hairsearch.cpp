@@ -441,37 +441,12 @@ void refineFromPhoto(FaceModel *face, const QImage &image, HairSearchReport *rep
             ys.push_back(y);
             widths.push_back(w);
         }
-        // Longest run of rows with an ear-like protrusion: wider than 0.12 d, narrower than
+        // The longest run of rows with an ear-like protrusion: wider than 0.12 d, narrower than
         // 0.45 d (beyond that the "skin" is background of skin colour).
-        int bestStart = -1, bestLen = 0;
-        for (int i = 0; i < int(ys.size());) {
-            if (widths[i] < 0.12 * d || widths[i] > 0.45 * d) {
-                ++i;
-                continue;
-            }
-            int j = i;
-            while (j < int(ys.size()) && widths[j] >= 0.12 * d && widths[j] <= 0.45 * d)
-                ++j;
-            if (j - i > bestLen) {
-                bestLen = j - i;
-                bestStart = i;
-            }
-            i = j;
-        }
-        const double rowStep = 1.0 / ws.scale;
-        if (bestStart < 0 || bestLen * rowStep < 0.5 * earH || bestLen * rowStep > 1.5 * earH)
-            continue;
-        const int bestEnd = bestStart + bestLen - 1;
-        int widest = bestStart;
-        for (int i = bestStart; i <= bestEnd; ++i)
-            if (widths[i] > widths[widest])
-                widest = i;
-        const double topY = ys[bestStart], bottomY = ys[bestEnd];
         auto at = [&](double y, double out) { return f.toImage(QPointF(contourX(y, left) + side * out, y)); };
-        face->setPoint(pt::idx(left ? "10.2" : "10.1"), at(topY, 0.3 * widths[bestStart]));
-        face->setPoint(pt::idx(left ? "10.4" : "10.3"), at(ys[widest], widths[widest]));
-        face->setPoint(pt::idx(left ? "10.6" : "10.5"), at(bottomY, 0.5 * widths[bestEnd]));
-        face->setPoint(pt::idx(left ? "10.10" : "10.9"), at(bottomY - 0.12 * (bottomY - topY), 0));
+        if (!placeEarFromProfile(
+                face, left, ys, widths, 1.0 / ws.scale, {0.12 * d, 0.45 * d, 0.5 * earH, 1.5 * earH}, at))
+            continue;
         ++earsFound;
     }
     rep.earFraction = earsFound / 2.0;

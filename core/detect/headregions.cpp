@@ -566,35 +566,9 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
         // background of skin colour: no ear can be told from it.
         if (ys.empty() || open > int(ys.size()) / 2)
             continue;
-        int bestStart = -1, bestLen = 0;
-        auto plausible = [&](double wd) { return wd >= 0.08 * d && wd <= 0.45 * d; };
-        for (int i = 0; i < int(ys.size());) {
-            if (!plausible(widths[i])) {
-                ++i;
-                continue;
-            }
-            int j = i;
-            while (j < int(ys.size()) && plausible(widths[j]))
-                ++j;
-            if (j - i > bestLen) {
-                bestLen = j - i;
-                bestStart = i;
-            }
-            i = j;
-        }
-        if (bestStart < 0 || bestLen * step < 0.4 * earH || bestLen * step > 1.6 * earH)
-            continue;
-        const int bestEnd = bestStart + bestLen - 1;
-        int widest = bestStart;
-        for (int i = bestStart; i <= bestEnd; ++i)
-            if (widths[i] > widths[widest])
-                widest = i;
-        const double topY = ys[bestStart], bottomY = ys[bestEnd];
         auto at = [&](double y, double out) { return g.toImage(QPointF(contourX(y) + sx * out, y)); };
-        face->setPoint(pt::idx(side == 0 ? "10.2" : "10.1"), at(topY, 0.3 * widths[bestStart]));
-        face->setPoint(pt::idx(side == 0 ? "10.4" : "10.3"), at(ys[widest], widths[widest]));
-        face->setPoint(pt::idx(side == 0 ? "10.6" : "10.5"), at(bottomY, 0.5 * widths[bestEnd]));
-        face->setPoint(pt::idx(side == 0 ? "10.10" : "10.9"), at(bottomY - 0.12 * (bottomY - topY), 0));
+        if (!placeEarFromProfile(face, side == 0, ys, widths, step, {0.08 * d, 0.45 * d, 0.4 * earH, 1.6 * earH}, at))
+            continue;
         rep.earUsable[side] = true;
     }
 

@@ -333,4 +333,39 @@ double normalizedMeanError(const FaceModel &face, const Ibug &ibug)
     return norm > 0 ? sum / n / norm : std::numeric_limits<double>::infinity();
 }
 
+bool placeEarFromProfile(FaceModel *face, bool left, const std::vector<double> &ys, const std::vector<double> &widths,
+    double step, const EarProfileLimits &limits, const std::function<QPointF(double, double)> &at)
+{
+    auto plausible = [&](double w) { return w >= limits.minWidth && w <= limits.maxWidth; };
+    int bestStart = -1, bestLen = 0;
+    const int rows = int(std::min(ys.size(), widths.size()));
+    for (int i = 0; i < rows;) {
+        if (!plausible(widths[i])) {
+            ++i;
+            continue;
+        }
+        int j = i;
+        while (j < rows && plausible(widths[j]))
+            ++j;
+        if (j - i > bestLen) {
+            bestLen = j - i;
+            bestStart = i;
+        }
+        i = j;
+    }
+    if (bestStart < 0 || bestLen * step < limits.minLength || bestLen * step > limits.maxLength)
+        return false;
+    const int bestEnd = bestStart + bestLen - 1;
+    int widest = bestStart;
+    for (int i = bestStart; i <= bestEnd; ++i)
+        if (widths[i] > widths[widest])
+            widest = i;
+    const double topY = ys[bestStart], bottomY = ys[bestEnd];
+    face->setPoint(pt::idx(left ? "10.2" : "10.1"), at(topY, 0.3 * widths[bestStart]));
+    face->setPoint(pt::idx(left ? "10.4" : "10.3"), at(ys[widest], widths[widest]));
+    face->setPoint(pt::idx(left ? "10.6" : "10.5"), at(bottomY, 0.5 * widths[bestEnd]));
+    face->setPoint(pt::idx(left ? "10.10" : "10.9"), at(bottomY - 0.12 * (bottomY - topY), 0));
+    return true;
+}
+
 } // namespace toonface

@@ -6,6 +6,8 @@
 #include <QSize>
 
 #include <array>
+#include <functional>
+#include <vector>
 
 namespace toonface {
 
@@ -52,6 +54,20 @@ struct HeadGeometry
 
 // requires: the eyes, brows, nose tip, cheeks 5.2/5.1 and chin 2.1 of `face` are placed.
 HeadGeometry headGeometry(const FaceModel &face);
+
+// The ear beside a cheek from a profile of the skin's width beyond the cheek contour, one
+// width per row ys[i] (equal steps `step`, top to bottom): the longest run of rows whose width
+// lies in [minWidth, maxWidth] is the ear when its length is within [minLength, maxLength]. Its
+// four points (10.2 10.4 10.6 10.10 on the left, 10.1 10.3 10.5 10.9 on the right) go to
+// at(y, out), the point `out` beyond the contour on row y: the top a third of its width out, the
+// widest row at its width, the bottom half out, the lobe's attachment on the contour. Returns
+// false (the face unchanged) when no run qualifies.
+struct EarProfileLimits
+{
+    double minWidth, maxWidth, minLength, maxLength;
+};
+bool placeEarFromProfile(FaceModel *face, bool left, const std::vector<double> &ys, const std::vector<double> &widths,
+    double step, const EarProfileLimits &limits, const std::function<QPointF(double, double)> &at);
 
 // The reverse of the table for the compared points: the iBUG reference position of a
 // Toonface point used in NME scoring, or false when the point is not scored.

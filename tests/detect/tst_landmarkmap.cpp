@@ -62,6 +62,7 @@ private Q_SLOTS:
     void estimatedPointsClampedToImage();
     void nmeOfExactMappingIsZero();
     void nmeScalesWithError();
+    void earFromProfile();
 };
 
 static void addPlacements()
@@ -207,4 +208,30 @@ void TestLandmarkMap::nmeScalesWithError()
 }
 
 QTEST_GUILESS_MAIN(TestLandmarkMap)
+// The ear is the longest run of plausible widths; its points land on the run's top, widest
+// row and bottom; a run too short, or widths out of range, place nothing.
+void TestLandmarkMap::earFromProfile()
+{
+    std::vector<double> ys, widths;
+    for (int i = 0; i < 20; ++i) {
+        ys.push_back(100 + 2.0 * i);
+        // Rows 3-4: a short plausible run; rows 8-15: the ear, widest (9) at row 11.
+        widths.push_back(i == 3 || i == 4 ? 5.0 : i >= 8 && i <= 15 ? 9.0 - std::abs(i - 11) * 0.5 : 0.0);
+    }
+    const EarProfileLimits limits {4.0, 12.0, 10.0, 30.0};
+    auto at = [](double y, double out) { return QPointF(50 - out, y); }; // contour at x = 50, ear to the left
+    FaceModel face;
+    QVERIFY(placeEarFromProfile(&face, true, ys, widths, 2.0, limits, at));
+    QCOMPARE(face.point("10.2"), QPointF(50 - 0.3 * widths[8], ys[8]));
+    QCOMPARE(face.point("10.4"), QPointF(41, ys[11]));
+    QCOMPARE(face.point("10.6"), QPointF(50 - 0.5 * widths[15], ys[15]));
+    QCOMPARE(face.point("10.10"), QPointF(50, ys[15] - 0.12 * (ys[15] - ys[8])));
+    QCOMPARE(face.point("10.1"), QPointF()); // the other side untouched
+
+    FaceModel none;
+    QVERIFY(!placeEarFromProfile(&none, false, ys, widths, 2.0, {4.0, 12.0, 20.0, 30.0}, at)); // 16 px < 20
+    QVERIFY(!placeEarFromProfile(&none, false, ys, widths, 2.0, {10.0, 12.0, 1.0, 30.0}, at)); // all too narrow
+    QCOMPARE(none.point("10.4"), QPointF());
+}
+
 #include "tst_landmarkmap.moc"
