@@ -452,17 +452,11 @@ void refineFromPhoto(FaceModel *face, const QImage &image, HairSearchReport *rep
     rep.earFraction = earsFound / 2.0;
 
     // Refined points stay in the photo, like the estimates.
-    const QRectF bounds(0, 0, image.width() - 1, image.height() - 1);
-    for (int i = 0; i < kPointCount; ++i) {
+    keepInPhoto(face, image.size(), [](int i) {
         const PointGroup g = pointTable()[i].group;
-        if (g != PointGroup::Hair && g != PointGroup::Ears && i != pt::idx("11.1") && i != pt::idx("11.2")
-            && i != pt::idx("11.3"))
-            continue;
-        const QPointF q = face->point(i);
-        face->setPoint(i,
-            QPointF(
-                std::clamp(q.x(), bounds.left(), bounds.right()), std::clamp(q.y(), bounds.top(), bounds.bottom())));
-    }
+        return g == PointGroup::Hair || g == PointGroup::Ears || i == pt::idx("11.1") || i == pt::idx("11.2")
+            || i == pt::idx("11.3");
+    });
 
     if (withDebugImages) {
         QImage mask(ws.lab.cols, ws.lab.rows, QImage::Format_RGB32);

@@ -573,16 +573,10 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
     }
 
     // Moved points stay in the photo, like the estimates.
-    const QRectF bounds(0, 0, image.width() - 1, image.height() - 1);
-    for (int i = 0; i < kPointCount; ++i) {
+    keepInPhoto(face, image.size(), [](int i) {
         const PointGroup grp = pointTable()[i].group;
-        if (grp != PointGroup::Hair && grp != PointGroup::Ears)
-            continue;
-        const QPointF q = face->point(i);
-        face->setPoint(i,
-            QPointF(
-                std::clamp(q.x(), bounds.left(), bounds.right()), std::clamp(q.y(), bounds.top(), bounds.bottom())));
-    }
+        return grp == PointGroup::Hair || grp == PointGroup::Ears;
+    });
 
     if (withDebugImages) {
         QImage mask(w.size, QImage::Format_ARGB32);

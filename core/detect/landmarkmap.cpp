@@ -368,4 +368,17 @@ bool placeEarFromProfile(FaceModel *face, bool left, const std::vector<double> &
     return true;
 }
 
+void keepInPhoto(FaceModel *face, QSize size, const std::function<bool(int)> &which)
+{
+    const QRectF bounds(0, 0, size.width() - 1, size.height() - 1);
+    for (int i = 0; i < kPointCount; ++i) {
+        if (!which(i))
+            continue;
+        const QPointF q = face->point(i);
+        face->setPoint(i,
+            QPointF(
+                std::clamp(q.x(), bounds.left(), bounds.right()), std::clamp(q.y(), bounds.top(), bounds.bottom())));
+    }
+}
+
 } // namespace toonface

@@ -69,6 +69,9 @@ struct EarProfileLimits
 bool placeEarFromProfile(FaceModel *face, bool left, const std::vector<double> &ys, const std::vector<double> &widths,
     double step, const EarProfileLimits &limits, const std::function<QPointF(double, double)> &at);
 
+// Moves the points `which` selects (by index) that lie outside a photo of `size` onto its border.
+void keepInPhoto(FaceModel *face, QSize size, const std::function<bool(int)> &which);
+
 // The reverse of the table for the compared points: the iBUG reference position of a
 // Toonface point used in NME scoring, or false when the point is not scored.
 // `ibug` are the ground-truth landmarks; *pos receives the point to compare with.

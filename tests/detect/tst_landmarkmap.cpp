@@ -63,6 +63,7 @@ private Q_SLOTS:
     void nmeOfExactMappingIsZero();
     void nmeScalesWithError();
     void earFromProfile();
+    void pointsKeptInPhoto();
 };
 
 static void addPlacements()
@@ -232,6 +233,18 @@ void TestLandmarkMap::earFromProfile()
     QVERIFY(!placeEarFromProfile(&none, false, ys, widths, 2.0, {4.0, 12.0, 20.0, 30.0}, at)); // 16 px < 20
     QVERIFY(!placeEarFromProfile(&none, false, ys, widths, 2.0, {10.0, 12.0, 1.0, 30.0}, at)); // all too narrow
     QCOMPARE(none.point("10.4"), QPointF());
+}
+
+void TestLandmarkMap::pointsKeptInPhoto()
+{
+    FaceModel face;
+    face.setPoint(0, QPointF(-5, 40));
+    face.setPoint(1, QPointF(120, 130));
+    face.setPoint(2, QPointF(300, -1));
+    keepInPhoto(&face, QSize(100, 200), [](int i) { return i != 2; });
+    QCOMPARE(face.point(0), QPointF(0, 40));
+    QCOMPARE(face.point(1), QPointF(99, 130));
+    QCOMPARE(face.point(2), QPointF(300, -1)); // not selected
 }
 
 #include "tst_landmarkmap.moc"
