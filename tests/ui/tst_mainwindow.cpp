@@ -20,6 +20,7 @@
 #include <QMimeData>
 #include <QSignalSpy>
 #include <QSlider>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -399,6 +400,27 @@ private Q_SLOTS:
             const QImage image(path);
             QCOMPARE(image.size(), fixture::kPhotoSize);
         }
+    }
+
+    // Without the landmark model, auto's fallback to the thesis' pipeline is said in the status
+    // bar, which keeps it up.
+    void fallbackToClassicIsShown()
+    {
+        const QByteArray saved = qgetenv("TOONFACE_LANDMARK_MODEL");
+        const bool had = qEnvironmentVariableIsSet("TOONFACE_LANDMARK_MODEL");
+        qputenv("TOONFACE_LANDMARK_MODEL", "/nonexistent/toonface-ui-test/landmarks.dat");
+        makeWindow();
+        const bool ok = openPortrait();
+        const QString message = m_window->statusBar()->currentMessage();
+        if (had)
+            qputenv("TOONFACE_LANDMARK_MODEL", saved);
+        else
+            qunsetenv("TOONFACE_LANDMARK_MODEL");
+        if (!ok)
+            return;
+        QVERIFY(m_window->document()->hasFace());
+        QVERIFY2(message.contains(QStringLiteral("classic")), qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("/nonexistent/toonface-ui-test/landmarks.dat")), qPrintable(message));
     }
 
     void cancelledDetectionLeavesNoFace()

@@ -546,10 +546,13 @@ void MainWindow::onDetectionFinished(const DetectionResult &result)
         m_document->replaceFace(result.face, m_detectKeepsHandPlaced,
             m_detectKeepsHandPlaced ? tr("Re-detect keeping my points") : tr("Re-detect points"));
     }
-    statusBar()->showMessage(tr("Face found by the %1 method in %2 ms.")
-                                 .arg(result.method)
-                                 .arg(qRound(result.timingMs.value(QStringLiteral("total")))),
-        kStatusTimeoutMs);
+    QString found = tr("Face found by the %1 method in %2 ms.")
+                        .arg(result.method)
+                        .arg(qRound(result.timingMs.value(QStringLiteral("total"))));
+    // Auto fell back to the thesis' pipeline: say why, and leave it up until the next message.
+    if (!result.note.isEmpty())
+        found += QLatin1Char(' ') + tr("The landmark method could not serve: %1").arg(result.note);
+    statusBar()->showMessage(found, result.note.isEmpty() ? kStatusTimeoutMs : 0);
     Q_EMIT detectionDone();
 }
 
