@@ -75,22 +75,6 @@ QJsonObject stageTimes(const QImage &image, int runs = 15, DetectionMethod metho
     return out;
 }
 
-bool readPts(const QString &path, std::array<QPointF, kIbugPointCount> *pts)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
-        return false;
-    const QString text = QString::fromUtf8(file.readAll());
-    const int open = text.indexOf(QLatin1Char('{')), close = text.indexOf(QLatin1Char('}'));
-    const QStringList nums
-        = text.mid(open + 1, close - open - 1).split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts);
-    if (open < 0 || close < open || nums.size() != 2 * kIbugPointCount)
-        return false;
-    for (int i = 0; i < kIbugPointCount; ++i)
-        (*pts)[i] = QPointF(nums[2 * i].toDouble() - 1, nums[2 * i + 1].toDouble() - 1);
-    return true;
-}
-
 } // namespace
 
 // Loading the 100 MB landmark model. The model is cached per path, so the same file is named
@@ -185,7 +169,7 @@ static QJsonObject nmeTable(DetectionMethod method)
             if (QFileInfo::exists(dir.filePath(pts.completeBaseName() + QLatin1String(ext))))
                 imagePath = dir.filePath(pts.completeBaseName() + QLatin1String(ext));
         std::array<QPointF, kIbugPointCount> truth {};
-        if (imagePath.isEmpty() || !readPts(pts.filePath(), &truth))
+        if (imagePath.isEmpty() || !readIbugPts(pts.filePath(), &truth))
             continue;
         const QImage image(imagePath);
         const DetectionResult r = detectFace(image, options);

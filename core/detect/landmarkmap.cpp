@@ -1,7 +1,9 @@
 #include "detect/landmarkmap.h"
 
+#include <QFile>
 #include <QLineF>
 #include <QRectF>
+#include <QRegularExpression>
 
 #include <algorithm>
 #include <cmath>
@@ -379,6 +381,35 @@ void keepInPhoto(FaceModel *face, QSize size, const std::function<bool(int)> &wh
             QPointF(
                 std::clamp(q.x(), bounds.left(), bounds.right()), std::clamp(q.y(), bounds.top(), bounds.bottom())));
     }
+}
+
+bool readIbugPts(const QString &path, std::array<QPointF, kIbugPointCount> *pts, QString *error)
+{
+    auto fail = [&](const QString &why) {
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(path, why);
+        return false;
+    };
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
+        return fail(file.errorString());
+    const QString text = QString::fromUtf8(file.read(1 << 20));
+    const qsizetype open = text.indexOf(QLatin1Char('{')), close = text.indexOf(QLatin1Char('}'));
+    if (open < 0 || close < open)
+        return fail(QStringLiteral("no { } block of points"));
+    static const QRegularExpression space(QStringLiteral("\\s+"));
+    const QStringList nums = text.mid(open + 1, close - open - 1).split(space, Qt::SkipEmptyParts);
+    if (nums.size() != 2 * kIbugPointCount)
+        return fail(
+            QStringLiteral("%1 numbers where %2 coordinates were expected").arg(nums.size()).arg(2 * kIbugPointCount));
+    for (int i = 0; i < kIbugPointCount; ++i) {
+        bool okX = false, okY = false;
+        const double x = nums[2 * i].toDouble(&okX), y = nums[2 * i + 1].toDouble(&okY);
+        if (!okX || !okY)
+            return fail(QStringLiteral("point %1 is not two numbers").arg(i + 1));
+        (*pts)[i] = QPointF(x - 1, y - 1);
+    }
+    return true;
 }
 
 } // namespace toonface

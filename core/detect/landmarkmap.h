@@ -4,6 +4,7 @@
 
 #include <QPointF>
 #include <QSize>
+#include <QString>
 
 #include <array>
 #include <functional>
@@ -76,6 +77,10 @@ void keepInPhoto(FaceModel *face, QSize size, const std::function<bool(int)> &wh
 // Toonface point used in NME scoring, or false when the point is not scored.
 // `ibug` are the ground-truth landmarks; *pos receives the point to compare with.
 bool scoredReference(int pointIndex, const std::array<QPointF, kIbugPointCount> &ibug, QPointF *pos);
+
+// Reads a 300-W annotation (.pts: "version: 1", "n_points: 68", "{", 68 lines "x y" in 1-based
+// pixels, "}") into 0-based iBUG points. False with *error naming the file and the problem.
+bool readIbugPts(const QString &path, std::array<QPointF, kIbugPointCount> *pts, QString *error = nullptr);
 
 // The 300-W normalised mean error of `face` against ground-truth landmarks: the mean distance
 // over the scored points divided by the distance between iBUG 36 and 45.

@@ -93,25 +93,6 @@ QString sharedFacesDir()
     return QDir(env.isEmpty() ? QStringLiteral(TOONFACE_SHARED_DATA) : env).filePath(QStringLiteral("faces"));
 }
 
-// Reads a 300-W .pts file (1-based pixel coordinates) into 0-based iBUG points.
-bool readPts(const QString &path, std::array<QPointF, kIbugPointCount> *pts)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
-        return false;
-    const QString text = QString::fromUtf8(file.readAll());
-    const int open = text.indexOf(QLatin1Char('{')), close = text.indexOf(QLatin1Char('}'));
-    if (open < 0 || close < open)
-        return false;
-    const QStringList nums
-        = text.mid(open + 1, close - open - 1).split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts);
-    if (nums.size() != 2 * kIbugPointCount)
-        return false;
-    for (int i = 0; i < kIbugPointCount; ++i)
-        (*pts)[i] = QPointF(nums[2 * i].toDouble() - 1, nums[2 * i + 1].toDouble() - 1);
-    return true;
-}
-
 } // namespace
 
 Q_DECLARE_METATYPE(std::vector<QRect>)
@@ -792,7 +773,7 @@ void TestClassic::sharedDataNme()
     if (image.isEmpty())
         QSKIP("no research photos (set TOONFACE_DATA_DIR to the shared data folder)");
     std::array<QPointF, kIbugPointCount> truth {};
-    QVERIFY2(readPts(pts, &truth), qPrintable(pts));
+    QVERIFY2(readIbugPts(pts, &truth), qPrintable(pts));
     const QImage photo(image);
     QVERIFY2(!photo.isNull(), qPrintable(image));
     const ClassicResult r = detectClassic(photo, true);
@@ -833,7 +814,7 @@ void TestClassic::sharedDataNmeWithFaceBox()
     if (!preloadLandmarkModel())
         QSKIP("the landmark model (libdlib-data) is not installed; no face box to seed with");
     std::array<QPointF, kIbugPointCount> truth {};
-    QVERIFY2(readPts(pts, &truth), qPrintable(pts));
+    QVERIFY2(readIbugPts(pts, &truth), qPrintable(pts));
     const QImage photo(image);
     QVERIFY2(!photo.isNull(), qPrintable(image));
     const DetectionResult box = detectFace(photo, {});

@@ -1,7 +1,9 @@
 #include "detect/landmarkmap.h"
 #include "syntheticlandmarks.h"
 
+#include <QFile>
 #include <QLineF>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <cmath>
@@ -64,6 +66,7 @@ private Q_SLOTS:
     void nmeScalesWithError();
     void earFromProfile();
     void pointsKeptInPhoto();
+    void ptsFiles();
 };
 
 static void addPlacements()
@@ -245,6 +248,38 @@ void TestLandmarkMap::pointsKeptInPhoto()
     QCOMPARE(face.point(0), QPointF(0, 40));
     QCOMPARE(face.point(1), QPointF(99, 130));
     QCOMPARE(face.point(2), QPointF(300, -1)); // not selected
+}
+
+// 300-W .pts files: 1-based pixels become 0-based; a malformed file is an error naming it.
+void TestLandmarkMap::ptsFiles()
+{
+    QTemporaryDir dir;
+    auto write = [&](const QString &name, const QByteArray &body) {
+        QFile f(dir.filePath(name));
+        if (f.open(QIODevice::WriteOnly))
+            f.write(body);
+        return f.fileName();
+    };
+    QByteArray good = "version: 1\nn_points: 68\n{\n";
+    for (int i = 0; i < kIbugPointCount; ++i)
+        good += QByteArray::number(10 + i) + ' ' + QByteArray::number(20.5 + 2 * i) + '\n';
+    good += "}\n";
+    std::array<QPointF, kIbugPointCount> pts {};
+    QString error;
+    QVERIFY2(readIbugPts(write(QStringLiteral("good.pts"), good), &pts, &error), qPrintable(error));
+    QCOMPARE(pts[0], QPointF(9, 19.5));
+    QCOMPARE(pts[67], QPointF(76, 153.5));
+
+    const QString shortFile = write(QStringLiteral("short.pts"), "version: 1\n{\n1 2\n3 4\n}\n");
+    QVERIFY(!readIbugPts(shortFile, &pts, &error));
+    QVERIFY(error.startsWith(shortFile));
+    QVERIFY(error.contains(QStringLiteral("4 numbers")));
+    QByteArray word = good;
+    word.replace("10 20.5", "ten 20.5");
+    QVERIFY(!readIbugPts(write(QStringLiteral("word.pts"), word), &pts, &error));
+    QVERIFY(error.contains(QStringLiteral("point 1")));
+    QVERIFY(!readIbugPts(dir.filePath(QStringLiteral("missing.pts")), &pts, &error));
+    QVERIFY(error.contains(QStringLiteral("missing.pts")));
 }
 
 #include "tst_landmarkmap.moc"
