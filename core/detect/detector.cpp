@@ -80,10 +80,10 @@ namespace {
 constexpr double kDetectorWindow = 80.0;
 // Detection runs in passes, each on a copy of the photo scaled so that faces of at least
 // a given fraction of its shorter side fill the window: first the large faces of portraits
-// and webcam frames (a quarter of the shorter side, so the copy's shorter side is 320 px
+// and webcam frames (a third of the shorter side, so the copy's shorter side is 240 px
 // whatever the photo's resolution: cheap), then, only when nothing was found, smaller ones.
-// Each pass doubles the scale, so costs four times the one before.
-constexpr double kPassFaceFractions[] = {1.0 / 4.0, 1.0 / 8.0, 1.0 / 16.0};
+// Each later pass doubles the scale, so costs four times the one before.
+constexpr double kPassFaceFractions[] = {1.0 / 3.0, 1.0 / 4.0, 1.0 / 8.0, 1.0 / 16.0};
 // Upsampling beyond 2x invents no detail; more than 4 megapixels costs too long.
 constexpr double kMaxUpsampling = 2.0;
 constexpr double kMaxPassPixels = 4.0e6;
