@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <optional>
 
 namespace toonface {
 
@@ -656,31 +657,38 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     return r;
 }
 
-} // namespace
-
-AlignResult alignToReference(const Audio &audio, const Script &script, const TtsResult &reference,
-    const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+// The recording's features, or the failure that stops an alignment before it starts (an
+// empty script or recording, a cancel while the features are computed).
+std::optional<AlignResult> recordingFeatures(
+    const Audio &audio, const Script &script, const std::atomic_bool *cancel, SpeechFeatures *out)
 {
     if (script.syllables.isEmpty())
         return failure(AlignStatus::BadInput, QStringLiteral("the script is empty"));
     if (audio.isEmpty())
         return failure(AlignStatus::BadInput, QStringLiteral("the audio is empty"));
-    const SpeechFeatures a = computeSpeechFeatures(resampled(audio, kSpeechSampleRate), cancel);
+    *out = computeSpeechFeatures(resampled(audio, kSpeechSampleRate), cancel);
     if (isCancelled(cancel))
         return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
+    return std::nullopt;
+}
+
+} // namespace
+
+AlignResult alignToReference(const Audio &audio, const Script &script, const TtsResult &reference,
+    const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+{
+    SpeechFeatures a;
+    if (std::optional<AlignResult> stopped = recordingFeatures(audio, script, cancel, &a))
+        return *stopped;
     return alignFeatures(a, script, reference, progress, cancel);
 }
 
 AlignResult alignScript(const Audio &audio, const Script &script, const AlignOptions &options,
     const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
-    if (script.syllables.isEmpty())
-        return failure(AlignStatus::BadInput, QStringLiteral("the script is empty"));
-    if (audio.isEmpty())
-        return failure(AlignStatus::BadInput, QStringLiteral("the audio is empty"));
-    const SpeechFeatures a = computeSpeechFeatures(resampled(audio, kSpeechSampleRate), cancel);
-    if (isCancelled(cancel))
-        return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
+    SpeechFeatures a;
+    if (std::optional<AlignResult> stopped = recordingFeatures(audio, script, cancel, &a))
+        return *stopped;
     TtsOptions tts = options.reference;
     const bool matchRate = tts.rate <= 0;
     if (matchRate)
