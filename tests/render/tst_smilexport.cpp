@@ -9,6 +9,7 @@
 #include "render/svgface.h"
 #include "render/videoencoder.h"
 #include "speech/audio.h"
+#include "xmltree.h"
 
 #include <QFile>
 #include <QRegularExpression>
@@ -26,70 +27,9 @@ using namespace toonface;
 
 namespace {
 
-// ---- a small parsed XML tree ----
-
-struct Node
-{
-    QString name; // qualified
-    QList<QPair<QString, QString>> attributes;
-    QList<Node> children;
-
-    QString attribute(const QString &key) const
-    {
-        for (const auto &[k, v] : attributes) {
-            if (k == key)
-                return v;
-        }
-        return {};
-    }
-    bool has(const QString &key) const
-    {
-        return std::any_of(attributes.cbegin(), attributes.cend(), [&](const auto &a) { return a.first == key; });
-    }
-};
-
-bool parseXml(const QByteArray &data, Node *root, QString *error)
-{
-    QXmlStreamReader reader(data);
-    QList<Node> stack;
-    bool done = false;
-    while (!reader.atEnd()) {
-        reader.readNext();
-        if (reader.isStartElement()) {
-            Node n;
-            n.name = reader.qualifiedName().toString();
-            for (const QXmlStreamAttribute &a : reader.attributes())
-                n.attributes.append({a.qualifiedName().toString(), a.value().toString()});
-            stack.append(n);
-        } else if (reader.isEndElement()) {
-            Node n = stack.takeLast();
-            if (stack.isEmpty()) {
-                *root = n;
-                done = true;
-            } else {
-                stack.last().children.append(n);
-            }
-        }
-    }
-    if (reader.hasError()) {
-        *error = QStringLiteral("line %1: %2").arg(reader.lineNumber()).arg(reader.errorString());
-        return false;
-    }
-    if (!done)
-        *error = QStringLiteral("no root element");
-    return done;
-}
-
-const Node *findId(const Node &n, const QString &id)
-{
-    if (n.attribute(QStringLiteral("id")) == id)
-        return &n;
-    for (const Node &c : n.children) {
-        if (const Node *f = findId(c, id))
-            return f;
-    }
-    return nullptr;
-}
+using test::findId;
+using test::Node;
+using test::parseXml;
 
 void collect(const Node &n, const QString &name, QList<const Node *> *out)
 {

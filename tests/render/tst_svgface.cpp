@@ -5,6 +5,7 @@
 #include "face/pose.h"
 #include "render/style.h"
 #include "render/svgface.h"
+#include "xmltree.h"
 
 #include <QDir>
 #include <QFile>
@@ -27,63 +28,9 @@ Q_DECLARE_METATYPE(toonface::HeadPose)
 
 namespace {
 
-// ---- a small parsed XML tree, for structure and golden comparisons ----
-
-struct Node
-{
-    QString name;
-    QList<QPair<QString, QString>> attributes; // in document order, qualified names
-    QList<Node> children;
-
-    QString attribute(const QString &name) const
-    {
-        for (const auto &[n, v] : attributes) {
-            if (n == name)
-                return v;
-        }
-        return {};
-    }
-    bool has(const QString &name) const
-    {
-        for (const auto &a : attributes) {
-            if (a.first == name)
-                return true;
-        }
-        return false;
-    }
-};
-
-bool parseXml(const QByteArray &data, Node *root, QString *error)
-{
-    QXmlStreamReader reader(data);
-    QList<Node> stack;
-    bool done = false;
-    while (!reader.atEnd()) {
-        reader.readNext();
-        if (reader.isStartElement()) {
-            Node n;
-            n.name = reader.name().toString();
-            for (const QXmlStreamAttribute &a : reader.attributes())
-                n.attributes.append({a.qualifiedName().toString(), a.value().toString()});
-            stack.append(n);
-        } else if (reader.isEndElement()) {
-            Node n = stack.takeLast();
-            if (stack.isEmpty()) {
-                *root = n;
-                done = true;
-            } else {
-                stack.last().children.append(n);
-            }
-        }
-    }
-    if (reader.hasError()) {
-        *error = QStringLiteral("line %1: %2").arg(reader.lineNumber()).arg(reader.errorString());
-        return false;
-    }
-    if (!done)
-        *error = QStringLiteral("no root element");
-    return done;
-}
+using test::findId;
+using test::Node;
+using test::parseXml;
 
 Node parsed(const QByteArray &data)
 {
@@ -92,17 +39,6 @@ Node parsed(const QByteArray &data)
     if (!parseXml(data, &root, &error))
         qWarning("XML does not parse: %s", qPrintable(error));
     return root;
-}
-
-const Node *findId(const Node &n, const QString &id)
-{
-    if (n.attribute(QStringLiteral("id")) == id)
-        return &n;
-    for (const Node &c : n.children) {
-        if (const Node *f = findId(c, id))
-            return f;
-    }
-    return nullptr;
 }
 
 QStringList idsUnder(const Node &n)
