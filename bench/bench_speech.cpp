@@ -1,5 +1,6 @@
 #include "benchmark.h"
 
+#include "io/textgrid.h"
 #include "speech/aligner.h"
 #include "speech/audio.h"
 #include "speech/features.h"
@@ -29,42 +30,7 @@ using namespace toonface;
 
 namespace {
 
-struct Interval
-{
-    double start, end;
-    QString text;
-};
-
-// The intervals of the tier named `tier` of a Praat TextGrid (long or short text format).
-QVector<Interval> readTextGrid(const QString &path, const QString &tier)
-{
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return {};
-    QString text = QString::fromUtf8(f.readAll());
-    text.remove(QRegularExpression(QStringLiteral("\\[\\d+\\]")));
-    QStringList tokens;
-    const QRegularExpression tok(QStringLiteral("\"((?:[^\"]|\"\")*)\"|(-?\\d+(?:\\.\\d+)?(?:[eE][-+]?\\d+)?)"));
-    for (auto it = tok.globalMatch(text); it.hasNext();) {
-        const auto m = it.next();
-        tokens.append(m.capturedStart(1) >= 0 ? QStringLiteral("\"") + m.captured(1) : m.captured(2));
-    }
-    QVector<Interval> out;
-    for (int i = 0; i + 4 < tokens.size(); ++i) {
-        if (tokens[i] != QLatin1String("\"IntervalTier"))
-            continue;
-        const QString name = tokens[i + 1].mid(1);
-        const int count = tokens[i + 4].toInt();
-        if (name != tier)
-            continue;
-        for (int k = 0; k < count && i + 5 + 3 * k + 2 < tokens.size(); ++k) {
-            const int at = i + 5 + 3 * k;
-            out.append({tokens[at].toDouble(), tokens[at + 1].toDouble(), tokens[at + 2].mid(1)});
-        }
-        break;
-    }
-    return out;
-}
+using Interval = TextGridInterval;
 
 struct Errors
 {
@@ -213,7 +179,7 @@ QVector<RealFile> realFiles(const QString &dir)
     {
         RealFile f {QStringLiteral("SSB00050015_16k.wav"), {}, {}, QStringLiteral("TextGrid words tier")};
         for (const Interval &w :
-            readTextGrid(speech + QStringLiteral("SSB00050015.TextGrid"), QStringLiteral("words"))) {
+            readTextGridTier(speech + QStringLiteral("SSB00050015.TextGrid"), QStringLiteral("words"))) {
             if (w.text.startsWith(QLatin1Char('[')) || w.text.isEmpty())
                 continue;
             f.script += w.text;
@@ -231,8 +197,8 @@ QVector<RealFile> realFiles(const QString &dir)
                            "starts of C1 and C2 for syllables 3 and 4")};
         f.truth.assign(6, std::nan(""));
         int k = 2;
-        for (const Interval &w :
-            readTextGrid(speech + QString::fromLatin1(name) + QStringLiteral(".TextGrid"), QStringLiteral("syll"))) {
+        for (const Interval &w : readTextGridTier(
+                 speech + QString::fromLatin1(name) + QStringLiteral(".TextGrid"), QStringLiteral("syll"))) {
             if (w.text.startsWith(QLatin1Char('C')) && k < 4)
                 f.truth[size_t(k++)] = w.start;
         }

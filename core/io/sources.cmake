@@ -4,4 +4,5 @@ list(APPEND TOONFACE_CORE_SOURCES
   io/facejson.h io/facejson.cpp
   io/project.h io/project.cpp
   io/imageio.h io/imageio.cpp
-  io/lipsyncformats.h io/lipsyncformats.cpp)
+  io/lipsyncformats.h io/lipsyncformats.cpp
+  io/textgrid.h io/textgrid.cpp)

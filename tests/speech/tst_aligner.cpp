@@ -1,3 +1,4 @@
+#include "io/textgrid.h"
 #include "speech/aligner.h"
 #include "speech/audio.h"
 #include "speech/script.h"
@@ -76,37 +77,7 @@ Audio recording(const Script &script, const TtsOptions &voice, double snrDb, qui
     return out;
 }
 
-struct Interval
-{
-    double start;
-    QString text;
-};
-
-// The intervals of tier `tier` of a Praat TextGrid (short or long text format).
-QVector<Interval> textGridTier(const QString &path, const QString &tier)
-{
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return {};
-    QString text = QString::fromUtf8(f.readAll());
-    text.remove(QRegularExpression(QStringLiteral("\\[\\d+\\]")));
-    QStringList tokens;
-    const QRegularExpression tok(QStringLiteral("\"((?:[^\"]|\"\")*)\"|(-?\\d+(?:\\.\\d+)?(?:[eE][-+]?\\d+)?)"));
-    for (auto it = tok.globalMatch(text); it.hasNext();) {
-        const auto m = it.next();
-        tokens.append(m.capturedStart(1) >= 0 ? QStringLiteral("\"") + m.captured(1) : m.captured(2));
-    }
-    QVector<Interval> out;
-    for (int i = 0; i + 4 < tokens.size(); ++i) {
-        if (tokens[i] != QLatin1String("\"IntervalTier") || tokens[i + 1].mid(1) != tier)
-            continue;
-        const int count = tokens[i + 4].toInt();
-        for (int k = 0; k < count && i + 5 + 3 * k + 2 < tokens.size(); ++k)
-            out.append({tokens[i + 5 + 3 * k].toDouble(), tokens[i + 5 + 3 * k + 2].mid(1)});
-        break;
-    }
-    return out;
-}
+using Interval = TextGridInterval;
 
 void checkWellFormed(const AlignResult &r, int n, double duration)
 {
@@ -301,7 +272,7 @@ private Q_SLOTS:
             QSKIP(qPrintable(QStringLiteral("shared data (speech/%1) not present").arg(file)));
         QString text = script;
         std::vector<double> truth;
-        for (const Interval &w : textGridTier(dir + truthFile, tier)) {
+        for (const Interval &w : readTextGridTier(dir + truthFile, tier)) {
             if (w.text.isEmpty() || w.text.startsWith(QLatin1Char('[')))
                 continue;
             if (tier == QLatin1String("words")) {
@@ -367,7 +338,8 @@ private Q_SLOTS:
         QVERIFY(QProcess::execute(sox, QStringList {dir + QStringLiteral("SSB00050015_16k.wav"), out} + effect) == 0);
         QString text;
         std::vector<double> truth;
-        for (const Interval &w : textGridTier(dir + QStringLiteral("SSB00050015.TextGrid"), QStringLiteral("words"))) {
+        for (const Interval &w :
+            readTextGridTier(dir + QStringLiteral("SSB00050015.TextGrid"), QStringLiteral("words"))) {
             if (w.text.isEmpty() || w.text.startsWith(QLatin1Char('[')))
                 continue;
             text += w.text;
