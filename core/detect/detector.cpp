@@ -1,9 +1,11 @@
 #include "detect/detector.h"
 
 #include "detect/classic.h"
+#include "detect/grayview.h"
 #include "detect/hairsearch.h"
 #include "detect/headregions.h"
 #include "detect/landmarkmap.h"
+#include "detect/landmarkpredictor.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -28,54 +30,6 @@ namespace toonface {
 
 namespace {
 
-// A read-only 8-bit grey image as dlib's generic image interface wants it, viewing the
-// pixels of a QImage (Format_Grayscale8, rows padded to bytesPerLine) without copying.
-struct GrayView
-{
-    const uchar *data = nullptr;
-    long rows = 0;
-    long cols = 0;
-    long stride = 0;
-};
-
-GrayView viewOf(const QImage &gray)
-{
-    return {gray.constBits(), gray.height(), gray.width(), long(gray.bytesPerLine())};
-}
-
-long num_rows(const GrayView &v)
-{
-    return v.rows;
-}
-long num_columns(const GrayView &v)
-{
-    return v.cols;
-}
-const void *image_data(const GrayView &v)
-{
-    return v.data;
-}
-long width_step(const GrayView &v)
-{
-    return v.stride;
-}
-
-} // namespace
-
-} // namespace toonface
-
-namespace dlib {
-template<>
-struct image_traits<toonface::GrayView>
-{
-    using pixel_type = unsigned char;
-};
-} // namespace dlib
-
-namespace toonface {
-
-namespace {
-
 // The HOG detector's sliding window is 80x80 pixels; it finds faces from that size up.
 constexpr double kDetectorWindow = 80.0;
 // Detection runs in passes, each on a copy of the photo scaled so that faces of at least
@@ -88,18 +42,10 @@ constexpr double kPassFaceFractions[] = {1.0 / 3.0, 1.0 / 4.0, 1.0 / 8.0, 1.0 / 
 constexpr double kMaxUpsampling = 2.0;
 constexpr double kMaxPassPixels = 4.0e6;
 
-// The shape predictor and its mean shape: the 68 points as they lie, on average, in the
-// unit square of the face detector's box (the trainer's initial shape, first in the file).
-struct LandmarkModel
-{
-    dlib::shape_predictor predictor;
-    std::array<QPointF, kIbugPointCount> meanShape {};
-};
-
 struct LoadedModel
 {
     QString path;
-    std::shared_ptr<const LandmarkModel> model;
+    std::shared_ptr<const LandmarkPredictor> model;
 };
 
 std::mutex &modelMutex()
@@ -117,7 +63,7 @@ LoadedModel &loadedModel()
 // The model for landmarkModelPath(), loaded at most once per path (a test or the user may
 // point TOONFACE_LANDMARK_MODEL elsewhere). Failures are not cached, so a file that appears
 // later is found. The shared pointer keeps a model alive for detections still using it.
-std::shared_ptr<const LandmarkModel> landmarkModel(QString *error, double *loadMs)
+std::shared_ptr<const LandmarkPredictor> landmarkModel(QString *error, double *loadMs)
 {
     const QString path = landmarkModelPath();
     std::lock_guard lock(modelMutex());
@@ -129,42 +75,9 @@ std::shared_ptr<const LandmarkModel> landmarkModel(QString *error, double *loadM
 
     QElapsedTimer timer;
     timer.start();
-    const QFileInfo info(path);
-    if (!info.isFile() || !info.isReadable()) {
-        if (error)
-            *error = QStringLiteral("The landmark model %1 is missing (install the package libdlib-data, "
-                                    "or set TOONFACE_LANDMARK_MODEL to shape_predictor_68_face_landmarks.dat).")
-                         .arg(QDir::toNativeSeparators(path));
+    auto model = LandmarkPredictor::read(path, error);
+    if (!model)
         return {};
-    }
-    auto model = std::make_shared<LandmarkModel>();
-    const std::string file = QFile::encodeName(path).toStdString();
-    try {
-        dlib::deserialize(file) >> model->predictor;
-        // dlib keeps the initial shape private; it is the first thing serialised after the
-        // format version, so it is read from the file's start.
-        std::ifstream in(file, std::ios::binary);
-        int version = 0;
-        dlib::matrix<float, 0, 1> mean;
-        dlib::deserialize(version, in);
-        dlib::deserialize(mean, in);
-        if (mean.size() != 2 * kIbugPointCount)
-            throw dlib::serialization_error("unexpected initial shape");
-        for (int i = 0; i < kIbugPointCount; ++i)
-            model->meanShape[i] = QPointF(mean(2 * i), mean(2 * i + 1));
-    } catch (const std::exception &e) {
-        if (error)
-            *error = QStringLiteral("The landmark model %1 could not be read: %2")
-                         .arg(QDir::toNativeSeparators(path), QString::fromLocal8Bit(e.what()).trimmed());
-        return {};
-    }
-    if (model->predictor.num_parts() != kIbugPointCount) {
-        if (error)
-            *error = QStringLiteral("The landmark model %1 gives %2 points, not the 68 of the iBUG scheme.")
-                         .arg(QDir::toNativeSeparators(path))
-                         .arg(model->predictor.num_parts());
-        return {};
-    }
     loaded.path = path;
     loaded.model = model;
     if (loadMs)
@@ -207,14 +120,6 @@ Similarity fitMeanShape(
     return s;
 }
 
-std::array<QPointF, kIbugPointCount> toPoints(const dlib::full_object_detection &shape)
-{
-    std::array<QPointF, kIbugPointCount> p {};
-    for (int i = 0; i < kIbugPointCount; ++i)
-        p[i] = QPointF(shape.part(i).x(), shape.part(i).y());
-    return p;
-}
-
 // The predictor's accuracy depends on the box it starts from, and it was trained on upright
 // faces in boxes of the detector's making. The HOG box is coarse (8-pixel cells, pyramid steps
 // of 5/6) and ignores the head's roll, so after a first fit the face is cut out upright, in
@@ -224,10 +129,10 @@ std::array<QPointF, kIbugPointCount> toPoints(const dlib::full_object_detection 
 // When the implied box already matches the one the first fit started from (roll under 3
 // degrees, centre and size within 3% of the box), the re-fit would start where the first did,
 // and is skipped.
-std::array<QPointF, kIbugPointCount> fitUpright(const LandmarkModel &model, const GrayView &image,
+std::array<QPointF, kIbugPointCount> fitUpright(const LandmarkPredictor &model, const GrayView &image,
     const QRectF &startBox, const std::array<QPointF, kIbugPointCount> &first)
 {
-    const Similarity s = fitMeanShape(model.meanShape, first);
+    const Similarity s = fitMeanShape(model.meanShape(), first);
     const double box = s.scale();
     if (!(box > 8) || !std::isfinite(box))
         return first;
@@ -247,13 +152,16 @@ std::array<QPointF, kIbugPointCount> fitUpright(const LandmarkModel &model, cons
     dlib::array2d<unsigned char> upright;
     dlib::extract_image_chip(image, chip, upright);
     const double inner = box * zoom;
-    const dlib::rectangle rect(
-        std::lround(0.5 * inner), std::lround(0.5 * inner), std::lround(1.5 * inner) - 1, std::lround(1.5 * inner) - 1);
-    const dlib::full_object_detection shape = model.predictor(upright, rect);
+    const QRect rect(QPoint(std::lround(0.5 * inner), std::lround(0.5 * inner)),
+        QPoint(std::lround(1.5 * inner) - 1, std::lround(1.5 * inner) - 1));
+    const LandmarkPredictor::Shape shape
+        = model.predict(GrayView {static_cast<const unsigned char *>(dlib::image_data(upright)), upright.nr(),
+                            upright.nc(), dlib::width_step(upright)},
+            rect);
     const dlib::point_transform_affine back = dlib::inv(dlib::get_mapping_to_chip(chip));
     std::array<QPointF, kIbugPointCount> p {};
     for (int i = 0; i < kIbugPointCount; ++i) {
-        const dlib::dpoint q = back(dlib::dpoint(shape.part(i)));
+        const dlib::dpoint q = back(dlib::dpoint(shape[i].x(), shape[i].y()));
         p[i] = QPointF(q.x(), q.y());
         if (!std::isfinite(p[i].x()) || !std::isfinite(p[i].y()))
             return first;
@@ -322,10 +230,11 @@ std::vector<FaceBox> findFaces(const QImage &gray, double scale)
     return out;
 }
 
-dlib::rectangle toDlib(const QRectF &box)
+// A box of the photo as dlib's rectangles have it: whole pixels, right and bottom inclusive.
+QRect pixelBox(const QRectF &box)
 {
-    return dlib::rectangle(std::lround(box.left()), std::lround(box.top()), std::lround(box.left() + box.width()) - 1,
-        std::lround(box.top() + box.height()) - 1);
+    return QRect(QPoint(std::lround(box.left()), std::lround(box.top())),
+        QPoint(std::lround(box.left() + box.width()) - 1, std::lround(box.top() + box.height()) - 1));
 }
 
 // The face to use: the largest, preferring central ones. Size counts most (a passer-by in
@@ -628,7 +537,7 @@ DetectionResult runDetection(
 
     report(0.5, QStringLiteral("landmarks"));
     const GrayView view = viewOf(gray);
-    const auto first = toPoints(model->predictor(view, toDlib(face.box)));
+    const auto first = model->predict(view, pixelBox(face.box));
     const std::array<QPointF, kIbugPointCount> ibug = fitUpright(*model, view, face.box, first);
     const FaceModel geometric = faceFromLandmarks68(ibug, image.size());
     lap(QStringLiteral("landmarks"));

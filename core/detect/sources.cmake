@@ -3,10 +3,12 @@ list(APPEND TOONFACE_CORE_SOURCES
   detect/faceregions.h detect/faceregions.cpp
   detect/hairsearch.h detect/hairsearch.cpp
   detect/headregions.h detect/headregions.cpp
-  detect/landmarkmap.h detect/landmarkmap.cpp)
+  detect/landmarkmap.h detect/landmarkmap.cpp
+  detect/grayview.h
+  detect/landmarkpredictor.h detect/landmarkpredictor.cpp)
 # dlib's detector and predictor are header templates: unoptimised they run ~40x slower, so
-# this file is optimised even in Debug builds.
-set_source_files_properties(detect/detector.cpp PROPERTIES COMPILE_OPTIONS "-O2")
+# these files are optimised even in Debug builds.
+set_source_files_properties(detect/detector.cpp detect/landmarkpredictor.cpp PROPERTIES COMPILE_OPTIONS "-O2")
 list(APPEND TOONFACE_CORE_SOURCES
   detect/tsai.h detect/tsai.cpp
   detect/regions.h detect/regions.cpp
