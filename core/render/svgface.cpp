@@ -321,10 +321,36 @@ Part makeHair(const Pt &P, const SvgFaceGeometry &g, int depth)
     outline.reserve(19);
     for (int i = 0; i < 19; ++i)
         outline.append(P.p[pt::idx("h.1") + i]);
-    // Closed behind the face: from h.19 back to h.1 along the inside of the face contour. The
-    // whole outline is cut, so the hair's lower ends round off too.
+    // Closed behind the face: from h.19 back to h.1 along the inside of the face contour. Long
+    // hair, whose ends lie below the cheeks, is closed along the jaw down to its ends' height,
+    // so that it fills the side of the face rather than leave a wedge between its outer edge
+    // and a line cut up to the cheek. The whole outline is cut, so its lower ends round off.
+    const std::array<const char *, 4> right {"5.1", "2.13", "2.11", "2.1"};
+    const std::array<const char *, 4> left {"5.2", "2.14", "2.12", "2.1"};
+    auto down = [&](const std::array<const char *, 4> &side, double endY) {
+        // The contour below the cheek to the height of the hair's end, inset like the rest.
+        std::vector<QPointF> out;
+        for (int k = 1; k < int(side.size()); ++k) {
+            const QPointF a = P(side[k - 1]), b = P(side[k]);
+            if (b.y() < endY) {
+                out.push_back(b);
+                continue;
+            }
+            if (endY > a.y())
+                out.push_back(lerp(a, b, (endY - a.y()) / std::max(b.y() - a.y(), 1e-9)));
+            break;
+        }
+        if (!out.empty() && out.back() == P("2.1"))
+            out.pop_back(); // below the chin: the two sides' ends are not joined across it
+        return out;
+    };
+    const std::vector<QPointF> rightJaw = down(right, P("h.19").y());
+    for (auto it = rightJaw.rbegin(); it != rightJaw.rend(); ++it)
+        outline.append(lerp(*it, g.centre, kHairInset));
     for (const char *id : {"5.1", "11.3", "11.1", "11.2", "5.2"})
         outline.append(lerp(P(id), g.centre, kHairInset));
+    for (const QPointF &q : down(left, P("h.1").y()))
+        outline.append(lerp(q, g.centre, kHairInset));
     const QVector<QPointF> shape = cornerCutPolyline(outline, depth, true);
     return {"hair", false, "polygon", {{"points", pointList(shape)}}, "hair"};
 }

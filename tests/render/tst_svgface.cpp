@@ -842,6 +842,40 @@ private Q_SLOTS:
         QVERIFY(std::abs(wb - 2 * wa) < 0.02);
     }
 
+    // Long hair (its ends below the cheeks) fills the side of the face down to its ends; short
+    // hair does not grow down beside the jaw.
+    void longHairFillsBesideTheJaw()
+    {
+        Style s = preset("normal");
+        s.components[QStringLiteral("hair")].fill = QColor(0, 200, 0);
+        s.components[QStringLiteral("ears")].visible = false;
+        const FaceModel shortHair = testFace();
+        auto P = [&](const char *id) { return shortHair.point(pt::idx(id)); };
+        const double width = P("5.1").x() - P("5.2").x();
+        FaceModel longHair = shortHair;
+        for (int side = 0; side < 2; ++side) {
+            const double sx = side == 0 ? -1.0 : 1.0;
+            const QPointF cheek = P(side == 0 ? "5.2" : "5.1");
+            const double x = cheek.x() + sx * 0.3 * width;
+            const std::array<const char *, 3> ids
+                = side == 0 ? std::array {"h.3", "h.2", "h.1"} : std::array {"h.17", "h.18", "h.19"};
+            const std::array<double, 3> ys {cheek.y(), (cheek.y() + P("2.1").y()) / 2, P("2.1").y()};
+            for (int k = 0; k < 3; ++k)
+                longHair.setPoint(pt::idx(ids[k]), QPointF(x, ys[k]));
+        }
+        auto hairBesideTheJaw = [&](const FaceModel &face) {
+            const QImage image = rasterizeSvg(SvgFace(face, s).svg(), kImage, Qt::white);
+            int hair = 0;
+            for (const auto &[id, sx] : {std::pair {"2.14", -1.0}, std::pair {"2.13", 1.0}}) {
+                const QPointF q = P(id) + QPointF(sx * 0.08 * width, 0);
+                hair += image.pixelColor(q.toPoint()) == QColor(0, 200, 0) ? 1 : 0;
+            }
+            return hair;
+        };
+        QCOMPARE(hairBesideTheJaw(longHair), 2);
+        QCOMPARE(hairBesideTheJaw(shortHair), 0);
+    }
+
     void componentStylesAreApplied()
     {
         Style s = preset("normal");
