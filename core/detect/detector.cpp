@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <numbers>
@@ -32,6 +33,8 @@ namespace {
 
 // The HOG detector's sliding window is 80x80 pixels; it finds faces from that size up.
 constexpr double kDetectorWindow = 80.0;
+// Its image pyramid shrinks by 5/6 a level.
+constexpr double kPyramidStep = 6.0 / 5.0;
 // Detection runs in passes, each on a copy of the photo scaled so that faces of at least
 // a given fraction of its shorter side fill the window: first the large faces of portraits
 // and webcam frames (a third of the shorter side, so the copy's shorter side is 240 px
@@ -169,11 +172,29 @@ std::array<QPointF, kIbugPointCount> fitUpright(const LandmarkPredictor &model, 
     return p;
 }
 
-dlib::frontal_face_detector &threadDetector()
+// dlib's face detector scanning at most `levels` levels of its image pyramid (0: all of them,
+// down to the smallest layer its window fits). Not thread-safe (it keeps scratch buffers), so
+// one per thread and pyramid depth.
+dlib::frontal_face_detector &threadDetector(unsigned long levels)
 {
-    // Not thread-safe (it keeps scratch buffers), so one per thread.
-    thread_local dlib::frontal_face_detector detector = dlib::get_frontal_face_detector();
-    return detector;
+    thread_local std::map<unsigned long, dlib::frontal_face_detector> detectors;
+    auto it = detectors.find(levels);
+    if (it == detectors.end()) {
+        const dlib::frontal_face_detector all = dlib::get_frontal_face_detector();
+        if (levels == 0) {
+            it = detectors.emplace(levels, all).first;
+        } else {
+            dlib::frontal_face_detector::image_scanner_type scanner;
+            scanner.copy_configuration(all.get_scanner());
+            scanner.set_max_pyramid_levels(levels);
+            std::vector<dlib::frontal_face_detector::feature_vector_type> filters;
+            for (unsigned long i = 0; i < all.num_detectors(); ++i)
+                filters.push_back(all.get_w(i));
+            it = detectors.emplace(levels, dlib::frontal_face_detector(scanner, all.get_overlap_tester(), filters))
+                     .first;
+        }
+    }
+    return it->second;
 }
 
 QImage resizedGray(const QImage &gray, double scale)
@@ -215,11 +236,12 @@ struct FaceBox
     double score = 0;
 };
 
-std::vector<FaceBox> findFaces(const QImage &gray, double scale)
+// The faces in a copy of `gray` scaled by `scale`, scanning `levels` pyramid levels (0: all).
+std::vector<FaceBox> findFaces(const QImage &gray, double scale, unsigned long levels)
 {
     const QImage small = qFuzzyCompare(scale, 1.0) ? gray : resizedGray(gray, scale);
     std::vector<dlib::rect_detection> dets;
-    threadDetector()(viewOf(small), dets);
+    threadDetector(levels)(viewOf(small), dets);
     std::vector<FaceBox> out;
     for (const auto &d : dets) {
         // dlib's rectangles are inclusive: pixel columns left..right of the scaled copy,
@@ -507,7 +529,13 @@ DetectionResult runDetection(
         scale = std::min(scale, std::sqrt(kMaxPassPixels / (double(gray.width()) * gray.height())));
         if (scale < lastScale * 1.2 || shortSide * scale < kDetectorWindow)
             continue;
-        mergeFaces(&faces, findFaces(gray, scale));
+        // A finer pass need not look again for the faces the pass before looked for: its
+        // pyramid stops at the first level (of 5/6) at or past the scale where the coarser
+        // pass's began, so the two overlap by less than a level.
+        const unsigned long levels = lastScale > 0
+            ? 1 + (unsigned long)std::ceil(std::log(scale / lastScale) / std::log(kPyramidStep) - 1e-9)
+            : 0;
+        mergeFaces(&faces, findFaces(gray, scale, levels));
         lastScale = scale;
         // Each finer pass costs about four times the one before: once a pass has found a face,
         // smaller faces are not looked for (the 30 ms budget of a 640x480 photo).

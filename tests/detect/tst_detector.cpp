@@ -73,6 +73,8 @@ private Q_SLOTS:
     void twoFacesLargerChosen_data();
     void twoFacesLargerChosen();
     void twoFacesVeryDifferentSizes();
+    void faceOfEverySize_data();
+    void faceOfEverySize();
     void cancelBeforeStart();
     void cancelDuringDetection();
     void missingModel();
@@ -325,6 +327,49 @@ void TestDetector::twoFacesVeryDifferentSizes()
     QCOMPARE(r.faceCount, 1);
     QVERIFY(QRect(QPoint(0, 0), big.size()).contains(r.faceBox.center()));
     QVERIFY(r.faceBox.width() > 2 * small.width() / 3);
+}
+
+void TestDetector::faceOfEverySize_data()
+{
+    QTest::addColumn<double>("fraction"); // the face box's width over the frame's shorter side
+    // Steps of about 10%, across the sizes where one detection pass hands over to the next.
+    for (double f = 0.62; f >= 0.085; f /= 1.1)
+        QTest::newRow(qPrintable(QStringLiteral("%1").arg(f, 0, 'f', 3))) << f;
+}
+
+// Whatever its size, from a close-up down to the smallest the finest pass can see (40 px), a
+// face is found: the passes leave no gap between the sizes they look for.
+void TestDetector::faceOfEverySize()
+{
+    QFETCH(double, fraction);
+    const QImage photo = grace().convertToFormat(QImage::Format_RGB32);
+    if (photo.isNull())
+        QSKIP("grace_hopper.jpg is not installed");
+    const DetectionResult whole = detectFace(photo);
+    QCOMPARE(whole.status, DetectStatus::Ok);
+    const QSize frameSize(640, 480);
+    const double zoom = fraction * frameSize.height() / whole.faceBox.width();
+    QImage frame(frameSize, QImage::Format_RGB32);
+    frame.fill(QColor(128, 128, 128));
+    QPainter p(&frame);
+    p.setRenderHint(QPainter::SmoothPixmapTransform);
+    const QPointF centre(frameSize.width() / 2.0, frameSize.height() / 2.0);
+    p.translate(centre);
+    p.scale(zoom, zoom);
+    p.translate(-QRectF(whole.faceBox).center());
+    p.drawImage(QPoint(0, 0), photo);
+    p.end();
+    const QRectF expected(centre - QPointF(whole.faceBox.width(), whole.faceBox.height()) * zoom / 2.0,
+        QSizeF(whole.faceBox.size()) * zoom);
+
+    const DetectionResult r = detectFace(frame);
+    QCOMPARE(r.status, DetectStatus::Ok);
+    QCOMPARE(r.method, detectionMethodName(DetectionMethod::Landmarks)); // not the classic fallback
+    const QRectF common = expected.intersected(QRectF(r.faceBox));
+    const double iou = common.width() * common.height()
+        / (expected.width() * expected.height() + r.faceBox.width() * r.faceBox.height()
+            - common.width() * common.height());
+    QVERIFY2(iou > 0.5, qPrintable(QStringLiteral("box overlap %1").arg(iou)));
 }
 
 void TestDetector::cancelBeforeStart()
