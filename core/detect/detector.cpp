@@ -177,10 +177,11 @@ std::array<QPointF, kIbugPointCount> fitUpright(const LandmarkPredictor &model, 
 // one per thread and pyramid depth.
 dlib::frontal_face_detector &threadDetector(unsigned long levels)
 {
+    // dlib decodes its detector from a compressed string (tens of milliseconds): once per process.
+    static const dlib::frontal_face_detector all = dlib::get_frontal_face_detector();
     thread_local std::map<unsigned long, dlib::frontal_face_detector> detectors;
     auto it = detectors.find(levels);
     if (it == detectors.end()) {
-        const dlib::frontal_face_detector all = dlib::get_frontal_face_detector();
         if (levels == 0) {
             it = detectors.emplace(levels, all).first;
         } else {
