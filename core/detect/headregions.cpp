@@ -53,6 +53,7 @@ constexpr double kMinHueSpread = 4.0; // hue units of huePlane(), about 5.6 degr
 // Gaps in the head's regions that a search crosses, in eye distances: a parting, a highlight.
 constexpr double kRayGap = 1.0 / 6.0;
 constexpr double kRowGap = 1.0 / 4.0; // beside the face, where strands part more
+constexpr double kNeckGap = 0.6; // below the jaw, between the neck and long hair
 constexpr double kMinHairDistance = 40.0; // RGB distance always within the hair's (or skin's) colour
 
 struct Work
@@ -431,7 +432,7 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
             const double a = -10.0 * std::numbers::pi / 180.0;
             const double y0 = radius[side][0] * std::sin(-a);
             const QPointF cheek = L(side == 0 ? "5.2" : "5.1"), jaw = L(side == 0 ? "2.14" : "2.13"),
-                          lowJaw = L(side == 0 ? "2.12" : "2.11"), chin = L("2.1");
+                          lowJaw = L(side == 0 ? "2.12" : "2.11");
             auto contourX = [&](double y) {
                 auto lerp = [&](QPointF a0, QPointF a1) {
                     const double t = std::clamp((y - a0.y()) / std::max(a1.y() - a0.y(), 1e-6), 0.0, 1.0);
@@ -441,7 +442,9 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
                     return y <= cheek.y() ? cheek.x() : lerp(cheek, jaw);
                 if (y <= lowJaw.y())
                     return lerp(jaw, lowJaw);
-                return lerp(lowJaw, chin);
+                // Below the lower jaw the walks start at the neck's side, about as wide as the
+                // lower jaw, not at the chin (which would start them in the neck's middle).
+                return lowJaw.x();
             };
             // A row goes on when the head reaches beyond the contour (hair, or an ear hiding
             // it); the hair goes down as far as the last row with hair in it.
@@ -451,7 +454,10 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
             for (double y = y0 + step; y <= 4.4 * d; y += step) {
                 const double cx = contourX(y);
                 const double maxLen = std::max(0.0, 2.6 * d - sx * (cx - g.midX)) + 0.05 * d;
-                const Walk r = walk(QPointF(cx - sx * 0.05 * d, y), QPointF(sx, 0), maxLen, kRowGap * d);
+                // Below the jaw the neck lies between the contour and the hair, often with a
+                // strip of collar or background between them: the walk may cross more of it.
+                const double gap = (y > lowJaw.y() ? kNeckGap : kRowGap) * d;
+                const Walk r = walk(QPointF(cx - sx * 0.05 * d, y), QPointF(sx, 0), maxLen, gap);
                 const double outer = cx - sx * 0.05 * d + sx * r.length;
                 const bool beyond = r.ok && sx * (outer - cx) >= 0.1 * d;
                 const double jump = std::isnan(prevOuter) ? 0.0 : sx * (outer - prevOuter);
@@ -487,7 +493,10 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
                     lower[side].emplace_back(2 * g.midX - q.x(), q.y());
             }
         }
-        // Each side bottom to crown, resampled into ten points.
+        // Each side bottom to crown, resampled into ten points: evenly, except that long hair's
+        // part below the cheek takes its share of them but at most three, so that at least
+        // seven describe the head's outline above it (long hair falls in a simple line; the
+        // crown's shape is what makes the head).
         std::array<std::array<QPointF, 10>, 2> pts {};
         for (int side = 0; side < 2; ++side) {
             const double sx = side == 0 ? -1.0 : 1.0;
@@ -499,9 +508,12 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
             std::vector<double> arc(line.size(), 0.0);
             for (size_t i = 1; i < line.size(); ++i)
                 arc[i] = arc[i - 1] + QLineF(line[i - 1], line[i]).length();
+            const double junction = arc[lower[side].size()];
+            const int nLow = lower[side].empty() ? 0 : std::clamp(int(std::lround(9.0 * junction / arc.back())), 1, 3);
             size_t seg = 0;
             for (int k = 0; k < 10; ++k) {
-                const double s = arc.back() * k / 9.0;
+                const double s = k <= nLow && nLow > 0 ? junction * k / nLow
+                                                       : junction + (arc.back() - junction) * (k - nLow) / (9.0 - nLow);
                 while (seg + 2 < line.size() && arc[seg + 1] < s)
                     ++seg;
                 const double len = arc[seg + 1] - arc[seg];

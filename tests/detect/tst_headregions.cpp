@@ -12,7 +12,7 @@ using toonface::testing::syntheticLandmarks;
 
 namespace {
 
-enum class Hair { Short, Long, Bald, LightHat, DarkHat };
+enum class Hair { Short, Long, LongApart, Bald, LightHat, DarkHat };
 
 const QColor kSkin(225, 180, 150);
 const QColor kHair(60, 40, 25);
@@ -23,6 +23,8 @@ const QColor kLightBack(170, 200, 235);
 // eyes, brows and mouth, and the hair of `style`:
 //  Short: the hair ellipse (1.15 times the geometric one) above the eye line only;
 //  Long: the hair ellipse and, beside the face, hair falling to 3 d below the eyes;
+//  LongApart: the same falling to 4 d, and below the jaw parted from the neck by a strip of
+//  background 0.35 d wide (a collar, or the background seen between neck and hair);
 //  Bald: a skin-coloured skull (0.95 times the geometric ellipse);
 //  LightHat / DarkHat: short hair under a hat that covers the head from 0.3 d above the
 //  hairline up (a light grey and a dark red one).
@@ -64,12 +66,12 @@ Scene drawScene(Hair style, QColor background = kLightBack)
     } else {
         p.setBrush(kHair);
         p.save();
-        if (style != Hair::Long)
+        if (style != Hair::Long && style != Hair::LongApart)
             p.setClipRect(QRectF(g.hairCentre.x() - 2 * ax, g.hairCentre.y() - 2 * ay, 4 * ax, 2 * ay + 0.2 * d));
         p.drawEllipse(g.hairCentre, ax, ay);
         p.restore();
-        if (style == Hair::Long) {
-            s.hairBottom = 3.0 * d;
+        if (style == Hair::Long || style == Hair::LongApart) {
+            s.hairBottom = (style == Hair::Long ? 3.0 : 4.0) * d;
             p.drawRect(QRectF(g.hairCentre.x() - ax, 0, 2 * ax, s.hairBottom));
         }
     }
@@ -87,6 +89,12 @@ Scene drawScene(Hair style, QColor background = kLightBack)
     const double chinY = L("2.1").y();
     const double halfW = (L("5.1").x() - L("5.2").x()) / 2;
     p.drawEllipse(QPointF(g.hairCentre.x(), (hairlineY + chinY) / 2), halfW, (chinY - hairlineY) / 2);
+    if (style == Hair::LongApart) {
+        p.setBrush(background);
+        const double jawY = L("2.12").y();
+        p.drawRect(QRectF(g.midX - 0.45 * halfW - 0.35 * d, jawY, 0.9 * halfW + 0.7 * d, s.hairBottom + d - jawY));
+        p.setBrush(kSkin);
+    }
     // The neck, so that the face region goes on below the chin as in a photo.
     p.drawRect(QRectF(g.midX - 0.45 * halfW, chinY - 0.3 * d, 0.9 * halfW, 1.5 * d));
     const double earY = (g.browY + g.noseBaseY) / 2, earRy = (g.noseBaseY - g.browY) / 2;
@@ -153,6 +161,7 @@ void TestHeadRegions::hairOutline_data()
     QTest::addColumn<Hair>("style");
     QTest::newRow("short") << Hair::Short;
     QTest::newRow("long") << Hair::Long;
+    QTest::newRow("long, parted from the neck") << Hair::LongApart;
     QTest::newRow("bald") << Hair::Bald;
 }
 
@@ -178,8 +187,8 @@ void TestHeadRegions::hairOutline()
     QCOMPARE_LE(std::abs(s.g.toLocal(face.point("h.10")).y() - s.skullTop), 0.1 * d);
     QCOMPARE_LE(std::abs(s.g.toLocal(face.point("h.10")).x() - s.g.midX), 0.1 * d);
     const double endL = s.g.toLocal(face.point("h.1")).y(), endR = s.g.toLocal(face.point("h.19")).y();
-    QCOMPARE(r.longHair, style == Hair::Long);
-    if (style == Hair::Long) {
+    QCOMPARE(r.longHair, style == Hair::Long || style == Hair::LongApart);
+    if (r.longHair) {
         QCOMPARE_LE(std::abs(endL - s.hairBottom), 0.15 * d);
         QCOMPARE_LE(std::abs(endR - s.hairBottom), 0.15 * d);
     } else {
