@@ -96,6 +96,10 @@ int loadFaceInput(const QString &path, const DetectOptions &options, FaceInput *
         if (!out->detection.note.isEmpty())
             warn(QStringLiteral("%1: the landmark method could not serve (%2); the points come from the classic method")
                      .arg(path, out->detection.note));
+        if (out->detection.faceCount > 1)
+            warn(QStringLiteral("%1: %2 faces found; the largest, most central one is used")
+                     .arg(path)
+                     .arg(out->detection.faceCount));
         out->face = out->detection.face;
         return ExitOk;
     }

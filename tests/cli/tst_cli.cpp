@@ -3,6 +3,8 @@
 #include "render/svgface.h"
 #include "render/videoencoder.h"
 
+#include "twopeople.h"
+
 #include <QFile>
 #include <QImage>
 #include <QJsonArray>
@@ -169,6 +171,25 @@ private Q_SLOTS:
         QCOMPARE(r.code, 3);
         QVERIFY2(isOneErrorLine(r.err), r.err.constData());
         QVERIFY(r.err.contains("truncated.jpg"));
+    }
+
+    // A photo of two people: the larger face is used, and the count said on stderr.
+    void twoFacesAreCounted()
+    {
+        requirePortrait();
+        const QImage one(kPortrait);
+        const QImage both = testing::twoPeople(one);
+        const QString photo = path(QStringLiteral("two people.png"));
+        QVERIFY(both.save(photo));
+        const Run r = cli({QStringLiteral("detect"), photo, QStringLiteral("-o"), path(QStringLiteral("two.json"))});
+        QCOMPARE(r.code, 0);
+        QVERIFY2(
+            r.err.contains("two people.png: 2 faces found; the largest, most central one is used"), r.err.constData());
+        QFile json(path(QStringLiteral("two.json")));
+        QVERIFY(json.open(QIODevice::ReadOnly));
+        const QJsonObject face = QJsonDocument::fromJson(json.readAll()).object();
+        QCOMPARE(face.value(QStringLiteral("faceCount")).toInt(), 2);
+        QVERIFY(face.value(QStringLiteral("faceBox")).toObject().value(QStringLiteral("x")).toDouble() < one.width());
     }
 
     void noFace()

@@ -9,10 +9,12 @@
 #include "window/mainwindow.h"
 #include "window/settings.h"
 
+#include "twopeople.h"
 #include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+
 #include <QFile>
 #include <QGraphicsPixmapItem>
 #include <QMenu>
@@ -421,6 +423,26 @@ private Q_SLOTS:
         QVERIFY(m_window->document()->hasFace());
         QVERIFY2(message.contains(QStringLiteral("classic")), qPrintable(message));
         QVERIFY2(message.contains(QStringLiteral("/nonexistent/toonface-ui-test/landmarks.dat")), qPrintable(message));
+    }
+
+    // A photo of two people: the status bar says how many faces there were and which was used.
+    void severalFacesAreCounted()
+    {
+        if (!QFile::exists(kPortrait))
+            QSKIP("grace_hopper.jpg is not installed (package python-matplotlib-data)");
+        const QImage one(kPortrait);
+        const QImage both = testing::twoPeople(one);
+        const QString photo = m_dir.filePath(QStringLiteral("two people.png"));
+        QVERIFY(both.save(photo));
+        makeWindow();
+        QSignalSpy done(m_window.get(), &MainWindow::detectionDone);
+        m_window->openFile(photo);
+        QVERIFY(QTest::qWaitFor([&] { return done.size() == 1; }, 120000));
+        QVERIFY(m_window->document()->hasFace());
+        const QString message = m_window->statusBar()->currentMessage();
+        QVERIFY2(message.contains(QStringLiteral("2 faces found; the largest, most central one was used")),
+            qPrintable(message));
+        QVERIFY(m_window->document()->face().point("2.1").x() < one.width());
     }
 
     void cancelledDetectionLeavesNoFace()

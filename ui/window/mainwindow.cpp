@@ -546,9 +546,14 @@ void MainWindow::onDetectionFinished(const DetectionResult &result)
         m_document->replaceFace(result.face, m_detectKeepsHandPlaced,
             m_detectKeepsHandPlaced ? tr("Re-detect keeping my points") : tr("Re-detect points"));
     }
-    QString found = tr("Face found by the %1 method in %2 ms.")
-                        .arg(result.method)
-                        .arg(qRound(result.timingMs.value(QStringLiteral("total"))));
+    QString found = result.faceCount > 1
+        ? tr(
+            "%n faces found; the largest, most central one was used (the %1 method, %2 ms).", nullptr, result.faceCount)
+              .arg(result.method)
+              .arg(qRound(result.timingMs.value(QStringLiteral("total"))))
+        : tr("Face found by the %1 method in %2 ms.")
+              .arg(result.method)
+              .arg(qRound(result.timingMs.value(QStringLiteral("total"))));
     // Auto fell back to the thesis' pipeline: say why, and leave it up until the next message.
     if (!result.note.isEmpty())
         found += QLatin1Char(' ') + tr("The landmark method could not serve: %1").arg(result.note);
