@@ -6,6 +6,8 @@
 #include <QJsonDocument>
 #include <QTextStream>
 
+#include <cmath>
+
 namespace toonface::cli {
 
 namespace {
@@ -20,7 +22,11 @@ int runDetect(const Command &self, const QStringList &args)
         QStringLiteral("Write the face JSON here (default: stdout)."), QStringLiteral("FACE.json"));
     const QCommandLineOption debugDir(QStringLiteral("debug-dir"),
         QStringLiteral("Write intermediate images of the detection here."), QStringLiteral("DIR"));
-    parser.addOptions({method, output, debugDir});
+    const QCommandLineOption faceAt(QStringLiteral("face"),
+        QStringLiteral("With several faces, use the one at this point of the photo (pixels) instead of the largest, "
+                       "most central one."),
+        QStringLiteral("X,Y"));
+    parser.addOptions({method, output, debugDir, faceAt});
     parser.addPositionalArgument(QStringLiteral("IMAGE"), QStringLiteral("The photo."));
     bool helped = false;
     if (!parseArguments(parser, self, args, &helped))
@@ -33,6 +39,16 @@ int runDetect(const Command &self, const QStringList &args)
     DetectOptions options;
     if (const int code = parseMethodOption(parser, method, &options); code != ExitOk)
         return code;
+    if (parser.isSet(faceAt)) {
+        const QStringList xy = parser.value(faceAt).split(QLatin1Char(','));
+        bool okX = false, okY = false;
+        const double x = xy.size() == 2 ? xy[0].trimmed().toDouble(&okX) : 0;
+        const double y = xy.size() == 2 ? xy[1].trimmed().toDouble(&okY) : 0;
+        if (!okX || !okY || !std::isfinite(x) || !std::isfinite(y))
+            return fail(ExitUsage,
+                QStringLiteral("--face wants a point X,Y in photo pixels, not '%1'").arg(parser.value(faceAt)));
+        options.faceAt = QPointF(x, y);
+    }
     if (parser.isSet(debugDir)) {
         options.debugDir = parser.value(debugDir);
         if (!QDir().mkpath(options.debugDir))
@@ -56,7 +72,8 @@ int runDetect(const Command &self, const QStringList &args)
 
 const CommandRegistrar registrar({QStringLiteral("detect"),
     QStringLiteral("Find the face in a photo and write its 72 points as JSON (toonface.face/1)."),
-    QStringLiteral("detect IMAGE [--method auto|classic|landmarks] [-o FACE.json] [--debug-dir DIR]"), runDetect});
+    QStringLiteral("detect IMAGE [--method auto|classic|landmarks] [-o FACE.json] [--debug-dir DIR] [--face X,Y]"),
+    runDetect});
 
 } // namespace
 

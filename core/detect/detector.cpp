@@ -260,11 +260,27 @@ QRect pixelBox(const QRectF &box)
         QPoint(std::lround(box.left() + box.width()) - 1, std::lround(box.top() + box.height()) - 1));
 }
 
-// The face to use: the largest, preferring central ones. Size counts most (a passer-by in
-// the corner is smaller than the subject); a face at the image's corner weighs half as much
-// as the same face at its centre.
-int chooseFace(const std::vector<FaceBox> &faces, QSize imageSize)
+// The face whose box holds `at` (the one whose centre is nearest when boxes overlap), or -1.
+int faceHolding(const std::vector<FaceBox> &faces, QPointF at)
 {
+    int best = -1;
+    for (int i = 0; i < int(faces.size()); ++i) {
+        if (faces[i].box.contains(at)
+            && (best < 0 || QLineF(faces[i].box.center(), at).length() < QLineF(faces[best].box.center(), at).length()))
+            best = i;
+    }
+    return best;
+}
+
+// The face to use: the one asked for (faceHolding), else the largest, preferring central ones.
+// Size counts most (a passer-by in the corner is smaller than the subject); a face at the
+// image's corner weighs half as much as the same face at its centre.
+int chooseFace(const std::vector<FaceBox> &faces, QSize imageSize, const std::optional<QPointF> &at)
+{
+    if (at) {
+        if (const int asked = faceHolding(faces, *at); asked >= 0)
+            return asked;
+    }
     const QPointF centre(imageSize.width() / 2.0, imageSize.height() / 2.0);
     const double halfDiag = std::hypot(imageSize.width(), imageSize.height()) / 2;
     int best = -1;
@@ -539,8 +555,10 @@ DetectionResult runDetection(
         mergeFaces(&faces, findFaces(gray, scale, levels));
         lastScale = scale;
         // Each finer pass costs about four times the one before: once a pass has found a face,
-        // smaller faces are not looked for (the 30 ms budget of a 640x480 photo).
-        if (!faces.empty() || cancelled())
+        // smaller faces are not looked for (the 30 ms budget of a 640x480 photo), unless the
+        // face asked for is not among them yet.
+        const bool asked = !options.faceAt || faceHolding(faces, *options.faceAt) >= 0;
+        if ((!faces.empty() && asked) || cancelled())
             break;
     }
     lap(QStringLiteral("faces"));
@@ -560,9 +578,13 @@ DetectionResult runDetection(
                   .arg(image.height());
         return result;
     }
-    const int chosen = chooseFace(faces, image.size());
+    const int chosen = chooseFace(faces, image.size(), options.faceAt);
     const FaceBox &face = faces[chosen];
     result.faceBox = face.box.toAlignedRect().intersected(image.rect());
+    for (int i = 0; i < int(faces.size()); ++i) {
+        if (i != chosen)
+            result.otherFaces.append(faces[i].box.toAlignedRect().intersected(image.rect()));
+    }
 
     report(0.5, QStringLiteral("landmarks"));
     const GrayView view = viewOf(gray);

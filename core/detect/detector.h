@@ -4,12 +4,14 @@
 #include "face/facemodel.h"
 
 #include <QImage>
+#include <QList>
 #include <QMap>
 #include <QRect>
 #include <QString>
 
 #include <atomic>
 #include <functional>
+#include <optional>
 
 namespace toonface {
 
@@ -22,6 +24,9 @@ struct DetectOptions
     DetectionMethod method = DetectionMethod::Auto;
     QString debugDir; // when set, intermediate images are written there as PNGs
     bool keepDebugImages = false; // keep the intermediate images in DetectionResult::debugImages
+    // With several faces: use the one whose box holds this point (photo pixels), looking for
+    // smaller faces until one does; unset (or held by no face): the largest, most central one.
+    std::optional<QPointF> faceAt;
 };
 
 // Unsupported: the requested method is not implemented in this build.
@@ -38,6 +43,7 @@ struct DetectionResult
                        // are looked for from large to small and the search stops at the size
                        // range where one is found: much smaller faces beside it are not counted
     QRect faceBox; // the chosen face's box in image pixels
+    QList<QRect> otherFaces; // the boxes of the other faces counted in faceCount
     QMap<QString, double> timingMs; // per stage, plus "total" (model loading excluded)
     QMap<QString, double> groupConfidence; // per point group name, 0..1
     FaceRegions regions; // the chosen face's regions, valid when status == Ok

@@ -190,6 +190,26 @@ private Q_SLOTS:
         const QJsonObject face = QJsonDocument::fromJson(json.readAll()).object();
         QCOMPARE(face.value(QStringLiteral("faceCount")).toInt(), 2);
         QVERIFY(face.value(QStringLiteral("faceBox")).toObject().value(QStringLiteral("x")).toDouble() < one.width());
+
+        // --face picks the other one: the smaller portrait's face, right of the first.
+        const QJsonObject box = face.value(QStringLiteral("faceBox")).toObject();
+        const QPointF centre(
+            box.value(QStringLiteral("x")).toDouble() + box.value(QStringLiteral("width")).toDouble() / 2,
+            box.value(QStringLiteral("y")).toDouble() + box.value(QStringLiteral("height")).toDouble() / 2);
+        const QPointF other = QPointF(one.width(), 0) + centre * 0.85;
+        const Run picked = cli({QStringLiteral("detect"), photo, QStringLiteral("--face"),
+            QStringLiteral("%1,%2").arg(other.x()).arg(other.y()), QStringLiteral("-o"),
+            path(QStringLiteral("other.json"))});
+        QCOMPARE(picked.code, 0);
+        QFile otherJson(path(QStringLiteral("other.json")));
+        QVERIFY(otherJson.open(QIODevice::ReadOnly));
+        const QJsonObject otherBox
+            = QJsonDocument::fromJson(otherJson.readAll()).object().value(QStringLiteral("faceBox")).toObject();
+        QVERIFY(otherBox.value(QStringLiteral("x")).toDouble() > one.width());
+
+        const Run bad = cli({QStringLiteral("detect"), photo, QStringLiteral("--face"), QStringLiteral("left")});
+        QCOMPARE(bad.code, 2);
+        QVERIFY2(bad.err.contains("--face wants a point X,Y"), bad.err.constData());
     }
 
     void noFace()

@@ -325,8 +325,27 @@ void TestDetector::twoFacesVeryDifferentSizes()
     const DetectionResult r = detectFace(canvas);
     QCOMPARE(r.status, DetectStatus::Ok);
     QCOMPARE(r.faceCount, 1);
+    QVERIFY(r.otherFaces.isEmpty());
     QVERIFY(QRect(QPoint(0, 0), big.size()).contains(r.faceBox.center()));
     QVERIFY(r.faceBox.width() > 2 * small.width() / 3);
+
+    // Asked for the small face, the search goes on to its size; both are then counted.
+    DetectOptions options;
+    const QPointF smallCentre = smallRect.topLeft() + QPointF(r.faceBox.center()) * 0.3;
+    options.faceAt = smallCentre;
+    const DetectionResult asked = detectFace(canvas, options);
+    QCOMPARE(asked.status, DetectStatus::Ok);
+    QCOMPARE(asked.faceCount, 2);
+    QVERIFY(smallRect.contains(asked.faceBox));
+    QVERIFY(asked.faceBox.contains(smallCentre.toPoint()));
+    QCOMPARE(asked.otherFaces.size(), 1);
+    QVERIFY(QRect(QPoint(0, 0), big.size()).contains(asked.otherFaces.constFirst().center()));
+
+    // A point on no face: the default choice.
+    options.faceAt = QPointF(canvas.width() - 2, 2);
+    const DetectionResult nowhere = detectFace(canvas, options);
+    QCOMPARE(nowhere.status, DetectStatus::Ok);
+    QVERIFY(QRect(QPoint(0, 0), big.size()).contains(nowhere.faceBox.center()));
 }
 
 void TestDetector::faceOfEverySize_data()
