@@ -440,8 +440,31 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitFor([&] { return done.size() == 1; }, 120000));
         QVERIFY(m_window->document()->hasFace());
         const QString message = m_window->statusBar()->currentMessage();
-        QVERIFY2(message.contains(QStringLiteral("2 faces found; the largest, most central one was used")),
+        QVERIFY2(message.contains(QStringLiteral("2 faces found: using the largest, most central one")),
             qPrintable(message));
+        // The whole photo is shown, so that the other face can be seen and chosen.
+        QCOMPARE(m_window->photoView()->fitMode(), PhotoView::Fit::Photo);
+        QVERIFY(m_window->document()->face().point("2.1").x() < one.width());
+
+        // The other face's box is on the photo; a click in it detects that face, one undo step.
+        PhotoView *view = m_window->photoView();
+        QCOMPARE(view->otherFaces().size(), 1);
+        const QRect other = view->otherFaces().constFirst();
+        QVERIFY(other.left() >= one.width() - 5);
+        const int undoBefore = m_window->document()->undoStack()->count();
+        done.clear();
+        const QPoint click = view->mapFromScene(QPointF(other.center()));
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, click);
+        QVERIFY(QTest::qWaitFor([&] { return done.size() == 1; }, 120000));
+        QVERIFY(other.contains(m_window->document()->face().point("2.1").toPoint()));
+        QCOMPARE(m_window->document()->undoStack()->count(), undoBefore + 1);
+        QCOMPARE(m_window->document()->undoStack()->undoText(), QStringLiteral("Use another face"));
+        QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("using the one you chose")),
+            qPrintable(m_window->statusBar()->currentMessage()));
+        // Now the first portrait's face is the other one.
+        QCOMPARE(view->otherFaces().size(), 1);
+        QVERIFY(view->otherFaces().constFirst().right() < one.width() + 5);
+        m_window->document()->undoStack()->undo();
         QVERIFY(m_window->document()->face().point("2.1").x() < one.width());
     }
 

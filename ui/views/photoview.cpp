@@ -6,11 +6,13 @@
 #include <QGraphicsPixmapItem>
 #include <QGraphicsRectItem>
 #include <QGraphicsScene>
+#include <QGraphicsSceneMouseEvent>
 #include <QPainterPath>
 #include <QWheelEvent>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace toonface {
 
@@ -43,6 +45,40 @@ const Outline kOutlines[] = {
     {{"9.6", "9.14", "9.2", "9.4", "9.15", "9.5", "9.1", "9.13", "9.7"}, false},
     {{"8.4", "8.9", "8.1", "8.10", "8.3", "8.2"}, true},
     {{"8.4", "2.2", "8.3", "2.3"}, true},
+};
+
+// The box of another face in the photo: dashed, filled lightly under the cursor; a click
+// inside it asks for that face.
+class OtherFaceItem : public QGraphicsRectItem
+{
+public:
+    OtherFaceItem(const QRectF &box, std::function<void(QPointF)> chosen)
+        : QGraphicsRectItem(box)
+        , m_chosen(std::move(chosen))
+    {
+        QPen pen(QColor(255, 220, 60), 2.0, Qt::DashLine);
+        pen.setCosmetic(true);
+        setPen(pen);
+        setBrush(Qt::NoBrush);
+        setAcceptHoverEvents(true);
+        setAcceptedMouseButtons(Qt::LeftButton);
+        setCursor(Qt::PointingHandCursor);
+        setToolTip(PhotoView::tr("Another face in the photo: click to use it instead"));
+        setZValue(0.8);
+    }
+
+protected:
+    void hoverEnterEvent(QGraphicsSceneHoverEvent *) override { setBrush(QColor(255, 220, 60, 50)); }
+    void hoverLeaveEvent(QGraphicsSceneHoverEvent *) override { setBrush(Qt::NoBrush); }
+    void mousePressEvent(QGraphicsSceneMouseEvent *event) override { event->accept(); }
+    void mouseReleaseEvent(QGraphicsSceneMouseEvent *event) override
+    {
+        if (rect().contains(event->pos()))
+            m_chosen(event->pos());
+    }
+
+private:
+    std::function<void(QPointF)> m_chosen;
 };
 
 } // namespace
@@ -226,10 +262,31 @@ void PhotoView::resizeEvent(QResizeEvent *event)
         applyFit();
 }
 
+void PhotoView::setOtherFaces(const QList<QRect> &boxes)
+{
+    qDeleteAll(m_otherFaceItems);
+    m_otherFaceItems.clear();
+    for (const QRect &box : boxes) {
+        auto *item = new OtherFaceItem(QRectF(box), [this](QPointF at) { Q_EMIT otherFaceChosen(at); });
+        m_scene->addItem(item);
+        m_otherFaceItems.append(item);
+    }
+}
+
+QList<QRect> PhotoView::otherFaces() const
+{
+    QList<QRect> boxes;
+    for (const QGraphicsRectItem *item : m_otherFaceItems)
+        boxes.append(item->rect().toRect());
+    return boxes;
+}
+
 void PhotoView::onDocumentChanged(ChangeFlags what)
 {
-    if (what & Change::Photo)
+    if (what & Change::Photo) {
         m_overlayItem->setPixmap(QPixmap()); // it belonged to the previous photo
+        setOtherFaces({});
+    }
     if (what & (Change::Photo | Change::Face))
         syncPhoto();
     if (what & (Change::Points | Change::Face))

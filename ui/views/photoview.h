@@ -3,6 +3,8 @@
 #include "document/document.h"
 
 #include <QGraphicsView>
+#include <QList>
+#include <QRect>
 #include <QVector>
 
 class QGraphicsPathItem;
@@ -50,6 +52,11 @@ public:
     // The item drawing the overlay (for tests).
     QGraphicsPixmapItem *overlayItem() const { return m_overlayItem; }
 
+    // The boxes of the other faces the detection saw (photo pixels), drawn dashed; a click in
+    // one emits otherFaceChosen. They belong to the photo: a new photo clears them.
+    void setOtherFaces(const QList<QRect> &boxes);
+    QList<QRect> otherFaces() const;
+
     // Called by the handles.
     void dragPoint(int index, QPointF pos, bool commit);
     void pointHoverChanged(int index, bool hovered);
@@ -66,6 +73,8 @@ Q_SIGNALS:
     // A point came under the cursor (index), or none did any more (-1).
     void pointHovered(int index);
     void zoomChanged(double zoom);
+    // The user clicked the box of another face (at `at`, photo pixels, inside the box).
+    void otherFaceChosen(QPointF at);
 
 protected:
     void wheelEvent(QWheelEvent *event) override;
@@ -89,6 +98,7 @@ private:
     QGraphicsRectItem *m_canvasItem;
     QGraphicsPathItem *m_outlineItem;
     QVector<PointHandle *> m_handles;
+    QList<QGraphicsRectItem *> m_otherFaceItems;
     bool m_showIds = false;
     Fit m_fit = Fit::Face;
 };

@@ -131,6 +131,7 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
 
     connect(m_document, &Document::changed, this, &MainWindow::onDocumentChanged);
     connect(m_photoView, &PhotoView::pointHovered, this, &MainWindow::showPointStatus);
+    connect(m_photoView, &PhotoView::otherFaceChosen, this, [this](QPointF at) { startDetection(false, at); });
     connect(m_photoView, &PhotoView::zoomChanged, this,
         [this](double zoom) { m_zoomLabel->setText(tr("%1%").arg(qRound(zoom * 100))); });
     connect(m_detection, &DetectionTask::progress, this, [this](double fraction, const QString &stage) {
@@ -508,14 +509,16 @@ void MainWindow::onLoaded()
         startDetection(false);
 }
 
-void MainWindow::startDetection(bool keepHandPlaced)
+void MainWindow::startDetection(bool keepHandPlaced, std::optional<QPointF> faceAt)
 {
     if (m_document->photo().isNull() || m_job == Job::Opening)
         return;
-    m_detectKeepsHandPlaced = keepHandPlaced;
+    m_detectKeepsHandPlaced = keepHandPlaced && !faceAt;
+    m_detectChoosesFace = faceAt.has_value();
     m_steps->clear(); // the new run's steps replace them
     DetectOptions options;
     options.method = detectionMethod();
+    options.faceAt = faceAt;
     m_detection->start(m_document->photo(), options);
     setBusy(Job::Detecting, tr("Detecting the face…"));
 }
@@ -535,29 +538,44 @@ void MainWindow::onDetectionFinished(const DetectionResult &result)
         Q_EMIT detectionDone();
         return;
     }
-    if (!m_document->hasFace()) {
-        // The first face of a photo: its points and the colours sampled under them, one step.
+    m_photoView->setOtherFaces(result.otherFaces);
+    const bool showOtherFaces = !result.otherFaces.isEmpty() && !m_document->hasFace();
+    if (!m_document->hasFace() || m_detectChoosesFace) {
+        // The first face of a photo, or another person in it: the points and the colours
+        // sampled under them, one step.
+        const QString text = m_detectChoosesFace ? tr("Use another face") : tr("Detect face");
         Style style = m_document->style();
         style.sampleColours(m_document->photo(), result.face);
-        const UndoMacro step(m_document->undoStack(), tr("Detect face"));
-        m_document->replaceFace(result.face, false, tr("Detect face"));
+        const UndoMacro step(m_document->undoStack(), text);
+        m_document->replaceFace(result.face, false, text);
         m_document->changeStyle(style, tr("Sample colours"));
     } else {
         m_document->replaceFace(result.face, m_detectKeepsHandPlaced,
             m_detectKeepsHandPlaced ? tr("Re-detect keeping my points") : tr("Re-detect points"));
     }
-    QString found = result.faceCount > 1
-        ? tr(
-            "%n faces found; the largest, most central one was used (the %1 method, %2 ms).", nullptr, result.faceCount)
-              .arg(result.method)
-              .arg(qRound(result.timingMs.value(QStringLiteral("total"))))
-        : tr("Face found by the %1 method in %2 ms.")
-              .arg(result.method)
-              .arg(qRound(result.timingMs.value(QStringLiteral("total"))));
-    // Auto fell back to the thesis' pipeline: say why, and leave it up until the next message.
+    // A photo of several people, first seen: the whole photo, so that the other faces' boxes
+    // can be clicked.
+    if (showOtherFaces)
+        m_photoView->fitToWindow();
+    const int ms = qRound(result.timingMs.value(QStringLiteral("total")));
+    QString found;
+    if (result.faceCount <= 1)
+        found = tr("Face found by the %1 method in %2 ms.").arg(result.method).arg(ms);
+    else if (m_detectChoosesFace)
+        found = tr("%n faces found: using the one you chose (%1, %2 ms).", nullptr, result.faceCount)
+                    .arg(result.method)
+                    .arg(ms);
+    else
+        found = tr("%n faces found: using the largest, most central one (%1, %2 ms). Click another face's box "
+                   "to switch.",
+            nullptr, result.faceCount)
+                    .arg(result.method)
+                    .arg(ms);
+    // Auto fell back to the thesis' pipeline: say why. That, and the choice of faces, stay up
+    // until the next message.
     if (!result.note.isEmpty())
         found += QLatin1Char(' ') + tr("The landmark method could not serve: %1").arg(result.note);
-    statusBar()->showMessage(found, result.note.isEmpty() ? kStatusTimeoutMs : 0);
+    statusBar()->showMessage(found, result.note.isEmpty() && result.faceCount <= 1 ? kStatusTimeoutMs : 0);
     Q_EMIT detectionDone();
 }
 

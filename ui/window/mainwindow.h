@@ -116,7 +116,8 @@ private:
     // With `recovery`, `path` is that leftover and loading restores it.
     void startLoading(const QString &path, const std::optional<RecoveryFile> &recovery = std::nullopt);
     void onLoaded();
-    void startDetection(bool keepHandPlaced);
+    // faceAt: detect the face whose box holds this point (another face of the photo).
+    void startDetection(bool keepHandPlaced, std::optional<QPointF> faceAt = std::nullopt);
     void onDetectionFinished(const DetectionResult &result);
     void onDetectionCancelled();
     void offerAverageFace(const QString &reason);
@@ -152,6 +153,7 @@ private:
     std::optional<RecoveryFile> m_recovering; // the leftover being restored, if any
     Job m_job = Job::None;
     bool m_detectKeepsHandPlaced = false;
+    bool m_detectChoosesFace = false; // the running detection is of another face of the photo
 
     QAction *m_openAction = nullptr;
     QAction *m_saveAction = nullptr;
