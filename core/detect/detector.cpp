@@ -404,6 +404,7 @@ DetectionResult detectWithClassic(const QImage &image, const DetectOptions &opti
     result.tracking.divEN = c.divEN;
     result.tracking.divNM = c.divNM;
     result.tracking.mouth = c.mouthRegion;
+    result.tracking.edgeThresholds = c.edgeThresholds;
     report(1.0, QStringLiteral("done"));
     return result;
 }
@@ -561,6 +562,12 @@ DetectionResult runDetection(
         if ((g == PointGroup::Hair && head.hairUsable) || (g == PointGroup::Ears && head.earUsable[leftEar ? 0 : 1]))
             refined.setPoint(i, fromRegions.point(i));
     }
+    // The seed for tracking: the regions' thresholds and colours, the geometry of the points,
+    // and the edge thresholds of the classic method's square around them (thesis 6.3).
+    TrackingSeed seed = head.seed;
+    seedGeometryFromPoints(refined, &seed);
+    measureEdgeThresholds(image, &seed);
+    seed.valid = head.seed.valid;
     lap(QStringLiteral("regions"));
     result.timingMs.insert(QStringLiteral("total"), total.nsecsElapsed() / 1e6);
     if (cancelled())
@@ -585,9 +592,7 @@ DetectionResult runDetection(
         (head.hairUsable ? 0.4 + 0.5 * head.hairFraction : 0.3 + 0.5 * hair.hairFraction) * base);
 
     result.regions = regionsFromPoints(refined);
-    result.tracking = head.seed;
-    seedGeometryFromPoints(refined, &result.tracking);
-    result.tracking.valid = head.seed.valid;
+    result.tracking = seed;
 
     if (wantsDebugImages(options))
         addLandmarkDebugImages(&result.debugImages, image, faces, chosen, ibug, geometric, refined, hair, head);
