@@ -5,6 +5,7 @@
 #include <QElapsedTimer>
 #include <QLineF>
 #include <QPainter>
+#include <QStringList>
 
 #include <algorithm>
 #include <cmath>
@@ -717,6 +718,33 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
     }
 
     const Region *eyeRegion[2] = {&dark[eyes.front().left], &dark[eyes.front().right]};
+    if (!res.eyePairInFace) {
+        // Which of the face checks the thesis' own pair fails, for a caller that refuses it.
+        const QPointF l = eyeRegion[0]->centroid, r = eyeRegion[1]->centroid;
+        PairReach reach;
+        eyePairInFace(refined.face, l, r, &reach);
+        const double mouth = mouthRowContrast(I, l, r);
+        QStringList failed;
+        if (reach.below <= 0 && reach.side <= 0)
+            failed << QStringLiteral("the point between the eyes is not in the face region");
+        else if (reach.below < 1.2)
+            failed << QStringLiteral("the face region reaches %1 eye distances below it (1.2 needed)")
+                          .arg(reach.below, 0, 'f', 2);
+        if ((reach.below > 0 || reach.side > 0) && (reach.side < 0.55 || reach.side > 1.6))
+            failed << QStringLiteral("%1 eye distances to its nearer side (0.55 .. 1.6 needed)")
+                          .arg(reach.side, 0, 'f', 2);
+        if (mouth < 0.15)
+            failed << QStringLiteral("no mouth row below it (the darkest row is %1% darker than the median, 15% "
+                                     "needed)")
+                          .arg(int(std::lround(100 * mouth)));
+        res.faceCheck
+            = QStringLiteral("the best eye pair by eq. (3.5), at (%1, %2) and (%3, %4), has no face around it: %5")
+                  .arg(std::lround(l.x() / scale))
+                  .arg(std::lround(l.y() / scale))
+                  .arg(std::lround(r.x() / scale))
+                  .arg(std::lround(r.y() / scale))
+                  .arg(failed.join(QStringLiteral("; ")));
+    }
     for (int k = 0; k < 2; ++k) {
         const Region &r = *eyeRegion[k];
         res.eyeRegions[k] = r.box;

@@ -139,6 +139,9 @@ struct ClassicResult
     // The chosen pair passed the face checks (eyePairInFace() and a mouth row, mouthRowContrast()
     // >= 0.15); false: no pair did, and the pair is the thesis' own choice by eq. (3.5).
     bool eyePairInFace = false;
+    // When eyePairInFace is false: which face checks the chosen pair failed, in words, with the
+    // pair's place in the input's pixels.
+    QString faceCheck;
     QRectF eyeRegions[2]; // the chosen pair's boxes, image-left first
     int candidateCount = 0;
     Eyeball eyeballs[2]; // image-left first

@@ -353,11 +353,13 @@ bool wantsDebugImages(const DetectOptions &options)
     return options.keepDebugImages || !options.debugDir.isEmpty();
 }
 
-// The thesis pipeline (classic.h): one face, found by its eye pair.
-// `asFallback`: auto's last resort, which must not call any dark pair a face: only a pair that
-// passed the face checks (eyePairInFace) counts.
-DetectionResult detectWithClassic(const QImage &image, const DetectOptions &options,
-    const std::function<void(double, const QString &)> &report, bool asFallback = false)
+// The thesis pipeline (classic.h): one face, found by its eye pair. Only a pair that passed the
+// face checks (ClassicResult::eyePairInFace) is a face: where none did, the thesis' own choice
+// by eq. (3.5) is a dark pair anywhere in the photo (a sleeve, a curtain's folds), and 72 points
+// drawn around it would be confident garbage, so the result is "no face" with the failed check
+// named, for `--method classic` as for auto's last resort.
+DetectionResult detectWithClassic(
+    const QImage &image, const DetectOptions &options, const std::function<void(double, const QString &)> &report)
 {
     DetectionResult result;
     result.method = detectionMethodName(DetectionMethod::Classic);
@@ -365,9 +367,9 @@ DetectionResult detectWithClassic(const QImage &image, const DetectOptions &opti
     const ClassicResult c = detectClassic(image, wantsDebugImages(options));
     result.timingMs = c.timingMs;
     result.debugImages = c.debugImages;
-    if (!c.ok || (asFallback && !c.eyePairInFace)) {
+    if (!c.ok || !c.eyePairInFace) {
         result.status = DetectStatus::NoFace;
-        result.error = c.ok ? QStringLiteral("no eye pair with a face around it") : c.error;
+        result.error = c.ok ? QStringLiteral("The classic method found no face: %1.").arg(c.faceCheck) : c.error;
         return result;
     }
     result.status = DetectStatus::Ok;
@@ -614,13 +616,10 @@ DetectionResult detectFace(
     if (options.method == DetectionMethod::Auto
         && (result.status == DetectStatus::NoFace || result.status == DetectStatus::ModelMissing)
         && !(cancel && cancel->load())) {
-        DetectionResult classic = detectWithClassic(
-            image, options,
-            [&](double fraction, const QString &stage) {
-                if (progress)
-                    progress(fraction, stage);
-            },
-            true);
+        DetectionResult classic = detectWithClassic(image, options, [&](double fraction, const QString &stage) {
+            if (progress)
+                progress(fraction, stage);
+        });
         if (classic.status == DetectStatus::Ok) {
             classic.note = result.error;
             result = classic;
