@@ -223,18 +223,25 @@ Eyeball detectEyeball(const Mask &dark, QRect box, double minFill)
     return best;
 }
 
+namespace {
+
+// Eq. (3.13) at an inner pixel (not on the image's one-pixel frame).
+float sobelAt(const Plane &I, int x, int y)
+{
+    const float z1 = I.at(x - 1, y - 1), z2 = I.at(x, y - 1), z3 = I.at(x + 1, y - 1);
+    const float z4 = I.at(x - 1, y), z6 = I.at(x + 1, y);
+    const float z7 = I.at(x - 1, y + 1), z8 = I.at(x, y + 1), z9 = I.at(x + 1, y + 1);
+    return std::abs((z7 + 2 * z8 + z9) - (z1 + 2 * z2 + z3)) + std::abs((z3 + 2 * z6 + z9) - (z1 + 2 * z4 + z7));
+}
+
+} // namespace
+
 Plane sobelEdges(const Plane &I)
 {
     Plane s {I.size, std::vector<float>(I.values.size(), 0.0f)};
-    for (int y = 1; y + 1 < I.size.height(); ++y) {
-        for (int x = 1; x + 1 < I.size.width(); ++x) {
-            const float z1 = I.at(x - 1, y - 1), z2 = I.at(x, y - 1), z3 = I.at(x + 1, y - 1);
-            const float z4 = I.at(x - 1, y), z6 = I.at(x + 1, y);
-            const float z7 = I.at(x - 1, y + 1), z8 = I.at(x, y + 1), z9 = I.at(x + 1, y + 1);
-            s.at(x, y)
-                = std::abs((z7 + 2 * z8 + z9) - (z1 + 2 * z2 + z3)) + std::abs((z3 + 2 * z6 + z9) - (z1 + 2 * z4 + z7));
-        }
-    }
+    for (int y = 1; y + 1 < I.size.height(); ++y)
+        for (int x = 1; x + 1 < I.size.width(); ++x)
+            s.at(x, y) = sobelAt(I, x, y);
     return s;
 }
 
@@ -259,13 +266,8 @@ FeatureEdges featureEdges(const Plane &I, QPointF leftEye, QPointF rightEye, dou
     for (int y = square.top(); y <= square.bottom(); ++y) {
         if (y < 1 || y + 1 >= I.size.height())
             continue;
-        for (int x = std::max(x0, 1); x <= std::min(x1, I.size.width() - 2); ++x) {
-            const float z1 = I.at(x - 1, y - 1), z2 = I.at(x, y - 1), z3 = I.at(x + 1, y - 1);
-            const float z4 = I.at(x - 1, y), z6 = I.at(x + 1, y);
-            const float z7 = I.at(x - 1, y + 1), z8 = I.at(x, y + 1), z9 = I.at(x + 1, y + 1);
-            raw[size_t(y - square.top()) * w + (x - x0)]
-                = std::abs((z7 + 2 * z8 + z9) - (z1 + 2 * z2 + z3)) + std::abs((z3 + 2 * z6 + z9) - (z1 + 2 * z4 + z7));
-        }
+        for (int x = std::max(x0, 1); x <= std::min(x1, I.size.width() - 2); ++x)
+            raw[size_t(y - square.top()) * w + (x - x0)] = sobelAt(I, x, y);
     }
     auto strength = [&](int x, int y) {
         const float own = raw[size_t(y - square.top()) * w + (x - x0)];
@@ -299,14 +301,15 @@ FeatureEdges featureEdges(const Plane &I, QPointF leftEye, QPointF rightEye, dou
 
 void measureEdgeThresholds(const QImage &image, TrackingSeed *seed)
 {
-    if (image.isNull() || !(seed->d > 0))
+    const double d = QLineF(seed->eyeballs[0], seed->eyeballs[1]).length();
+    if (image.isNull() || !(d > 0))
         return;
     // detectClassic()'s scale, and the square with a margin so that the Sobel operator sees the
     // photo around it rather than the crop's edge.
     const double scale = std::min(1.0, 640.0 / std::max(image.width(), image.height()));
-    const double d = seed->d;
+    const QPointF mid = (seed->eyeballs[0] + seed->eyeballs[1]) / 2;
     const int margin = int(std::ceil(2 / scale));
-    const QRect crop = QRectF(seed->eyeMid.x() - d, seed->eyeMid.y() - d / 2, 2 * d, 2 * d)
+    const QRect crop = QRectF(mid.x() - d, mid.y() - d / 2, 2 * d, 2 * d)
                            .toAlignedRect()
                            .adjusted(-margin, -margin, margin, margin)
                            .intersected(image.rect());

@@ -111,8 +111,8 @@ FeatureEdges featureEdges(
     const Plane &intensity, QPointF leftEye, QPointF rightEye, double divEE, double divEN, double divNM);
 
 // The same for a face found otherwise (the landmark method): featureEdges() around the seed's
-// eyeballs with its division lines, on `image` scaled as detectClassic() scales it, into
-// seed->edgeThresholds. requires: seed->d > 0 (else the thresholds are left as they are).
+// eyeball centres with its division lines, on `image` scaled as detectClassic() scales it, into
+// seed->edgeThresholds. Eyeball centres that coincide (no geometry) leave the thresholds as they are.
 void measureEdgeThresholds(const QImage &image, TrackingSeed *seed);
 
 // Algorithm 3.7 (eqs. 3.14-3.15): the x in [x1 + w/2, x2 - w/2] with the smallest left/right
