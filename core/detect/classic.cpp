@@ -269,32 +269,44 @@ FeatureEdges featureEdges(const Plane &I, QPointF leftEye, QPointF rightEye, dou
         for (int x = std::max(x0, 1); x <= std::min(x1, I.size.width() - 2); ++x)
             raw[size_t(y - square.top()) * w + (x - x0)] = sobelAt(I, x, y);
     }
-    auto strength = [&](int x, int y) {
-        const float own = raw[size_t(y - square.top()) * w + (x - x0)];
-        const int mx = int(std::lround(2 * mid.x() - x));
-        return mx >= x0 && mx <= x1 ? std::max(own, raw[size_t(y - square.top()) * w + (mx - x0)]) : own;
-    };
+    // The mirrored strength as a level per pixel of the square; the mirror column depends on x only.
     // Sobel strengths of 8-bit intensities lie in 0 .. 2040.
     constexpr int kLevels = 2041;
+    std::vector<int> mirrorColumn(size_t(square.width()));
+    for (int x = square.left(); x <= square.right(); ++x) {
+        const int mx = int(std::lround(2 * mid.x() - x));
+        mirrorColumn[size_t(x - square.left())] = mx >= x0 && mx <= x1 ? mx - x0 : -1;
+    }
+    std::vector<int> level(size_t(square.width()) * square.height());
+    for (int y = 0; y < square.height(); ++y) {
+        const float *row = raw.data() + size_t(y) * w;
+        for (int i = 0; i < square.width(); ++i) {
+            const int m = mirrorColumn[size_t(i)];
+            const float own = row[square.left() + i - x0];
+            level[size_t(y) * square.width() + i]
+                = std::clamp(int(m >= 0 ? std::max(own, row[m]) : own), 0, kLevels - 1);
+        }
+    }
     const double cuts[5] = {double(square.top()), divEE, divEN, divNM, double(square.bottom() + 1)};
+    std::vector<double> hist(kLevels);
     for (int part = 0; part < 4; ++part) {
         const int y0 = std::max(square.top(), int(std::ceil(cuts[part])));
         const int y1 = std::min(square.bottom(), int(std::ceil(cuts[part + 1])) - 1);
-        std::vector<double> hist(kLevels, 0.0);
+        std::fill(hist.begin(), hist.end(), 0.0);
         int highest = 0;
         for (int y = y0; y <= y1; ++y) {
-            for (int x = square.left(); x <= square.right(); ++x) {
-                const int level = std::clamp(int(strength(x, y)), 0, kLevels - 1);
-                hist[level] += 1;
-                highest = std::max(highest, level);
+            for (int i = 0; i < square.width(); ++i) {
+                const int v = level[size_t(y - square.top()) * square.width() + i];
+                hist[size_t(v)] += 1;
+                highest = std::max(highest, v);
             }
         }
         const TsaiThreshold t = tsaiThreshold(hist);
         const int threshold = t.valid ? t.threshold : highest;
-        out.thresholds[part] = threshold;
+        out.thresholds[size_t(part)] = threshold;
         for (int y = y0; y <= y1; ++y)
-            for (int x = square.left(); x <= square.right(); ++x)
-                out.edges.at(x, y) = int(strength(x, y)) > threshold;
+            for (int i = 0; i < square.width(); ++i)
+                out.edges.at(square.left() + i, y) = level[size_t(y - square.top()) * square.width() + i] > threshold;
     }
     return out;
 }
