@@ -5,6 +5,7 @@
 #include <QElapsedTimer>
 #include <QLineF>
 #include <QPainter>
+#include <QStringList>
 
 #include <algorithm>
 #include <cmath>
@@ -222,19 +223,120 @@ Eyeball detectEyeball(const Mask &dark, QRect box, double minFill)
     return best;
 }
 
+namespace {
+
+// Eq. (3.13) at an inner pixel (not on the image's one-pixel frame).
+float sobelAt(const Plane &I, int x, int y)
+{
+    const float z1 = I.at(x - 1, y - 1), z2 = I.at(x, y - 1), z3 = I.at(x + 1, y - 1);
+    const float z4 = I.at(x - 1, y), z6 = I.at(x + 1, y);
+    const float z7 = I.at(x - 1, y + 1), z8 = I.at(x, y + 1), z9 = I.at(x + 1, y + 1);
+    return std::abs((z7 + 2 * z8 + z9) - (z1 + 2 * z2 + z3)) + std::abs((z3 + 2 * z6 + z9) - (z1 + 2 * z4 + z7));
+}
+
+} // namespace
+
 Plane sobelEdges(const Plane &I)
 {
     Plane s {I.size, std::vector<float>(I.values.size(), 0.0f)};
-    for (int y = 1; y + 1 < I.size.height(); ++y) {
-        for (int x = 1; x + 1 < I.size.width(); ++x) {
-            const float z1 = I.at(x - 1, y - 1), z2 = I.at(x, y - 1), z3 = I.at(x + 1, y - 1);
-            const float z4 = I.at(x - 1, y), z6 = I.at(x + 1, y);
-            const float z7 = I.at(x - 1, y + 1), z8 = I.at(x, y + 1), z9 = I.at(x + 1, y + 1);
-            s.at(x, y)
-                = std::abs((z7 + 2 * z8 + z9) - (z1 + 2 * z2 + z3)) + std::abs((z3 + 2 * z6 + z9) - (z1 + 2 * z4 + z7));
+    for (int y = 1; y + 1 < I.size.height(); ++y)
+        for (int x = 1; x + 1 < I.size.width(); ++x)
+            s.at(x, y) = sobelAt(I, x, y);
+    return s;
+}
+
+FeatureEdges featureEdges(const Plane &I, QPointF leftEye, QPointF rightEye, double divEE, double divEN, double divNM)
+{
+    FeatureEdges out;
+    out.edges = Mask {I.size, std::vector<std::uint8_t>(I.values.size(), 0)};
+    const double d = QLineF(leftEye, rightEye).length();
+    const QPointF mid = (leftEye + rightEye) / 2;
+    const QRect square
+        = QRectF(mid.x() - d, mid.y() - d / 2, 2 * d, 2 * d).toAlignedRect().intersected(QRect(QPoint(0, 0), I.size));
+    out.square = square;
+    if (square.isEmpty())
+        return out;
+    // Eq. (3.13) over the square and the columns its mirror reaches; the image's one-pixel frame is 0.
+    const int mirrorLeft = int(std::lround(2 * mid.x() - square.right()));
+    const int mirrorRight = int(std::lround(2 * mid.x() - square.left()));
+    const int x0 = std::max(0, std::min(square.left(), mirrorLeft));
+    const int x1 = std::min(I.size.width() - 1, std::max(square.right(), mirrorRight));
+    const int w = x1 - x0 + 1;
+    std::vector<float> raw(size_t(w) * square.height(), 0.0f);
+    for (int y = square.top(); y <= square.bottom(); ++y) {
+        if (y < 1 || y + 1 >= I.size.height())
+            continue;
+        for (int x = std::max(x0, 1); x <= std::min(x1, I.size.width() - 2); ++x)
+            raw[size_t(y - square.top()) * w + (x - x0)] = sobelAt(I, x, y);
+    }
+    // The mirrored strength as a level per pixel of the square; the mirror column depends on x only.
+    // Sobel strengths of 8-bit intensities lie in 0 .. 2040.
+    constexpr int kLevels = 2041;
+    std::vector<int> mirrorColumn(size_t(square.width()));
+    for (int x = square.left(); x <= square.right(); ++x) {
+        const int mx = int(std::lround(2 * mid.x() - x));
+        mirrorColumn[size_t(x - square.left())] = mx >= x0 && mx <= x1 ? mx - x0 : -1;
+    }
+    std::vector<int> level(size_t(square.width()) * square.height());
+    for (int y = 0; y < square.height(); ++y) {
+        const float *row = raw.data() + size_t(y) * w;
+        for (int i = 0; i < square.width(); ++i) {
+            const int m = mirrorColumn[size_t(i)];
+            const float own = row[square.left() + i - x0];
+            level[size_t(y) * square.width() + i]
+                = std::clamp(int(m >= 0 ? std::max(own, row[m]) : own), 0, kLevels - 1);
         }
     }
-    return s;
+    const double cuts[5] = {double(square.top()), divEE, divEN, divNM, double(square.bottom() + 1)};
+    std::vector<double> hist(kLevels);
+    for (int part = 0; part < 4; ++part) {
+        const int y0 = std::max(square.top(), int(std::ceil(cuts[part])));
+        const int y1 = std::min(square.bottom(), int(std::ceil(cuts[part + 1])) - 1);
+        std::fill(hist.begin(), hist.end(), 0.0);
+        int highest = 0;
+        for (int y = y0; y <= y1; ++y) {
+            for (int i = 0; i < square.width(); ++i) {
+                const int v = level[size_t(y - square.top()) * square.width() + i];
+                hist[size_t(v)] += 1;
+                highest = std::max(highest, v);
+            }
+        }
+        const TsaiThreshold t = tsaiThreshold(hist);
+        const int threshold = t.valid ? t.threshold : highest;
+        out.thresholds[size_t(part)] = threshold;
+        for (int y = y0; y <= y1; ++y)
+            for (int i = 0; i < square.width(); ++i)
+                out.edges.at(square.left() + i, y) = level[size_t(y - square.top()) * square.width() + i] > threshold;
+    }
+    return out;
+}
+
+void measureEdgeThresholds(const QImage &image, TrackingSeed *seed)
+{
+    const double d = QLineF(seed->eyeballs[0], seed->eyeballs[1]).length();
+    if (image.isNull() || !(d > 0))
+        return;
+    // detectClassic()'s scale, and the square with a margin so that the Sobel operator sees the
+    // photo around it rather than the crop's edge.
+    const double scale = std::min(1.0, 640.0 / std::max(image.width(), image.height()));
+    const QPointF mid = (seed->eyeballs[0] + seed->eyeballs[1]) / 2;
+    const int margin = int(std::ceil(2 / scale));
+    const QRect crop = QRectF(mid.x() - d, mid.y() - d / 2, 2 * d, 2 * d)
+                           .toAlignedRect()
+                           .adjusted(-margin, -margin, margin, margin)
+                           .intersected(image.rect());
+    if (crop.isEmpty())
+        return;
+    QImage part = image.copy(crop);
+    if (scale < 1.0)
+        part = part.scaled(
+            QSize(std::max(1L, std::lround(part.width() * scale)), std::max(1L, std::lround(part.height() * scale))),
+            Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
+    auto local = [&](QPointF p) { return (p - QPointF(crop.topLeft())) * scale; };
+    auto localY = [&](double y) { return (y - crop.top()) * scale; };
+    const FeatureEdges e = featureEdges(intensityPlane(part), local(seed->eyeballs[0]), local(seed->eyeballs[1]),
+        localY(seed->divEE), localY(seed->divEN), localY(seed->divNM));
+    seed->edgeThresholds = e.thresholds;
 }
 
 int centralVerticalCut(const Plane &I, QRect region)
@@ -631,6 +733,33 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
     }
 
     const Region *eyeRegion[2] = {&dark[eyes.front().left], &dark[eyes.front().right]};
+    if (!res.eyePairInFace) {
+        // Which of the face checks the thesis' own pair fails, for a caller that refuses it.
+        const QPointF l = eyeRegion[0]->centroid, r = eyeRegion[1]->centroid;
+        PairReach reach;
+        eyePairInFace(refined.face, l, r, &reach);
+        const double mouth = mouthRowContrast(I, l, r);
+        QStringList failed;
+        if (reach.below <= 0 && reach.side <= 0)
+            failed << QStringLiteral("the point between the eyes is not in the face region");
+        else if (reach.below < 1.2)
+            failed << QStringLiteral("the face region reaches %1 eye distances below it (1.2 needed)")
+                          .arg(reach.below, 0, 'f', 2);
+        if ((reach.below > 0 || reach.side > 0) && (reach.side < 0.55 || reach.side > 1.6))
+            failed << QStringLiteral("%1 eye distances to its nearer side (0.55 .. 1.6 needed)")
+                          .arg(reach.side, 0, 'f', 2);
+        if (mouth < 0.15)
+            failed << QStringLiteral("no mouth row below it (the darkest row is %1% darker than the median, 15% "
+                                     "needed)")
+                          .arg(int(std::lround(100 * mouth)));
+        res.faceCheck
+            = QStringLiteral("the best eye pair by eq. (3.5), at (%1, %2) and (%3, %4), has no face around it: %5")
+                  .arg(std::lround(l.x() / scale))
+                  .arg(std::lround(l.y() / scale))
+                  .arg(std::lround(r.x() / scale))
+                  .arg(std::lround(r.y() / scale))
+                  .arg(failed.join(QStringLiteral("; ")));
+    }
     for (int k = 0; k < 2; ++k) {
         const Region &r = *eyeRegion[k];
         res.eyeRegions[k] = r.box;
@@ -669,19 +798,6 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
         res.debugImages.insert(QStringLiteral("classic-eyeballs"), img);
     }
 
-    // Algorithm 4.5: Sobel edges, mirrored about the eyes' axis inside the square (each side
-    // keeps the stronger of itself and its mirror), then Tsai per horizontal part.
-    Plane S = sobelEdges(I);
-    {
-        const Plane raw = S;
-        for (int y = square.top(); y <= square.bottom(); ++y) {
-            for (int x = square.left(); x <= square.right(); ++x) {
-                const int mx = int(std::lround(2 * mid.x() - x));
-                if (raw.contains(mx, y))
-                    S.at(x, y) = std::max(raw.at(x, y), raw.at(mx, y));
-            }
-        }
-    }
     res.divEE = ebL.centre.y() - ebL.height() / 2 - 1;
     res.divEN = mid.y() + d / 3;
     // Div_NM: the thesis speculates EyeMid.y + d "by an experimental result"; faces vary
@@ -695,22 +811,11 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
         if (mouthRowContrast(I, ebL.centre, ebR.centre, &row) >= 0.15)
             res.divNM = std::max(res.divEN + d / 4, mid.y() + row - 0.2 * d);
     }
-    Mask edges {size, std::vector<std::uint8_t>(size_t(size.width()) * size.height(), 0)};
-    const double cuts[5] = {double(square.top()), res.divEE, res.divEN, res.divNM, double(square.bottom() + 1)};
-    for (int part = 0; part < 4; ++part) {
-        const int y0 = std::max(square.top(), int(std::ceil(cuts[part])));
-        const int y1 = std::min(square.bottom(), int(std::ceil(cuts[part + 1])) - 1);
-        std::vector<double> hist(2041, 0.0);
-        for (int y = y0; y <= y1; ++y)
-            for (int x = square.left(); x <= square.right(); ++x)
-                hist[std::clamp(int(S.at(x, y)), 0, 2040)] += 1;
-        const TsaiThreshold t = tsaiThreshold(hist);
-        if (!t.valid)
-            continue;
-        for (int y = y0; y <= y1; ++y)
-            for (int x = square.left(); x <= square.right(); ++x)
-                edges.at(x, y) = int(S.at(x, y)) > t.threshold;
-    }
+    // Algorithm 4.5: Sobel edges, mirrored about the eyes' axis inside the square, then Tsai
+    // per horizontal part.
+    const FeatureEdges featureEdgeImage = featureEdges(I, ebL.centre, ebR.centre, res.divEE, res.divEN, res.divNM);
+    const Mask &edges = featureEdgeImage.edges;
+    res.edgeThresholds = featureEdgeImage.thresholds;
     lap("edges");
     if (withDebugImages) {
         QImage img = edges.toImage().convertToFormat(QImage::Format_RGB32);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "detect/faceregions.h"
 #include "detect/regions.h"
 #include "face/facemodel.h"
 
@@ -8,6 +9,7 @@
 #include <QRectF>
 #include <QString>
 
+#include <array>
 #include <vector>
 
 namespace toonface {
@@ -91,6 +93,28 @@ Eyeball detectEyeball(const Mask &dark, QRect box, double minFill = 0.9);
 // the one-pixel frame is 0.
 Plane sobelEdges(const Plane &intensity);
 
+// Algorithm 4.5's edge image, whose four thresholds thesis 6.3 step 1 keeps for mouth tracking:
+// the Sobel strength (eq. 3.13) in the 2d x 2d square (EyeMid.x -+ d, EyeMid.y - d/2 .. + 1.5 d,
+// d the distance of the eyeball centres), mirrored about the vertical through EyeMid (each
+// pixel keeps the stronger of itself and its mirror, so a feature seen on one side only counts
+// on both), then Tsai's threshold per horizontal part: square top .. Div_EE .. Div_EN .. Div_NM
+// .. square bottom (a part holds the rows from the ceiling of its upper line to below the
+// ceiling of its lower one). A part without pixels or with one strength only has no edges; its
+// threshold is then its highest strength (0 when empty).
+struct FeatureEdges
+{
+    QRect square; // the square's pixels inside the plane
+    Mask edges; // the plane's size; 1 where the strength exceeds its part's threshold (square only)
+    std::array<double, 4> thresholds {}; // top part first
+};
+FeatureEdges featureEdges(
+    const Plane &intensity, QPointF leftEye, QPointF rightEye, double divEE, double divEN, double divNM);
+
+// The same for a face found otherwise (the landmark method): featureEdges() around the seed's
+// eyeball centres with its division lines, on `image` scaled as detectClassic() scales it, into
+// seed->edgeThresholds. Eyeball centres that coincide (no geometry) leave the thresholds as they are.
+void measureEdgeThresholds(const QImage &image, TrackingSeed *seed);
+
 // Algorithm 3.7 (eqs. 3.14-3.15): the x in [x1 + w/2, x2 - w/2] with the smallest left/right
 // dissimilarity of `intensity` over rows y1..y2, w = (x2 - x1) / 2; columns outside the image
 // are clamped.
@@ -115,6 +139,9 @@ struct ClassicResult
     // The chosen pair passed the face checks (eyePairInFace() and a mouth row, mouthRowContrast()
     // >= 0.15); false: no pair did, and the pair is the thesis' own choice by eq. (3.5).
     bool eyePairInFace = false;
+    // When eyePairInFace is false: which face checks the chosen pair failed, in words, with the
+    // pair's place in the input's pixels.
+    QString faceCheck;
     QRectF eyeRegions[2]; // the chosen pair's boxes, image-left first
     int candidateCount = 0;
     Eyeball eyeballs[2]; // image-left first
@@ -124,6 +151,7 @@ struct ClassicResult
     double divEE = 0, divEN = 0, divNM = 0;
     QRectF browRegion, eyeRegion, noseRegion, mouthRegion; // the left brow and eye; nose; mouth
     double noseCut = 0, mouthCut = 0;
+    std::array<double, 4> edgeThresholds {}; // featureEdges(), for TrackingSeed
     double cheekLeft = 0, cheekRight = 0;
     QMap<QString, double> timingMs;
     QMap<QString, QImage> debugImages; // name -> picture, when asked for

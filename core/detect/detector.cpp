@@ -392,11 +392,13 @@ bool wantsDebugImages(const DetectOptions &options)
     return options.keepDebugImages || !options.debugDir.isEmpty();
 }
 
-// The thesis pipeline (classic.h): one face, found by its eye pair.
-// `asFallback`: auto's last resort, which must not call any dark pair a face: only a pair that
-// passed the face checks (eyePairInFace) counts.
-DetectionResult detectWithClassic(const QImage &image, const DetectOptions &options,
-    const std::function<void(double, const QString &)> &report, bool asFallback = false)
+// The thesis pipeline (classic.h): one face, found by its eye pair. Only a pair that passed the
+// face checks (ClassicResult::eyePairInFace) is a face: where none did, the thesis' own choice
+// by eq. (3.5) is a dark pair anywhere in the photo (a sleeve, a curtain's folds), and 72 points
+// drawn around it would be confident garbage, so the result is "no face" with the failed check
+// named, for `--method classic` as for auto's last resort.
+DetectionResult detectWithClassic(
+    const QImage &image, const DetectOptions &options, const std::function<void(double, const QString &)> &report)
 {
     DetectionResult result;
     result.method = detectionMethodName(DetectionMethod::Classic);
@@ -404,9 +406,9 @@ DetectionResult detectWithClassic(const QImage &image, const DetectOptions &opti
     const ClassicResult c = detectClassic(image, wantsDebugImages(options));
     result.timingMs = c.timingMs;
     result.debugImages = c.debugImages;
-    if (!c.ok || (asFallback && !c.eyePairInFace)) {
+    if (!c.ok || !c.eyePairInFace) {
         result.status = DetectStatus::NoFace;
-        result.error = c.ok ? QStringLiteral("no eye pair with a face around it") : c.error;
+        result.error = c.ok ? QStringLiteral("The classic method found no face: %1.").arg(c.faceCheck) : c.error;
         return result;
     }
     result.status = DetectStatus::Ok;
@@ -443,6 +445,7 @@ DetectionResult detectWithClassic(const QImage &image, const DetectOptions &opti
     result.tracking.divEN = c.divEN;
     result.tracking.divNM = c.divNM;
     result.tracking.mouth = c.mouthRegion;
+    result.tracking.edgeThresholds = c.edgeThresholds;
     report(1.0, QStringLiteral("done"));
     return result;
 }
@@ -612,6 +615,12 @@ DetectionResult runDetection(
         if ((g == PointGroup::Hair && head.hairUsable) || (g == PointGroup::Ears && head.earUsable[leftEar ? 0 : 1]))
             refined.setPoint(i, fromRegions.point(i));
     }
+    // The seed for tracking: the regions' thresholds and colours, the geometry of the points,
+    // and the edge thresholds of the classic method's square around them (thesis 6.3).
+    TrackingSeed seed = head.seed;
+    seedGeometryFromPoints(refined, &seed);
+    measureEdgeThresholds(image, &seed);
+    seed.valid = head.seed.valid;
     lap(QStringLiteral("regions"));
     result.timingMs.insert(QStringLiteral("total"), total.nsecsElapsed() / 1e6);
     if (cancelled())
@@ -636,9 +645,7 @@ DetectionResult runDetection(
         (head.hairUsable ? 0.4 + 0.5 * head.hairFraction : 0.3 + 0.5 * hair.hairFraction) * base);
 
     result.regions = regionsFromPoints(refined);
-    result.tracking = head.seed;
-    seedGeometryFromPoints(refined, &result.tracking);
-    result.tracking.valid = head.seed.valid;
+    result.tracking = seed;
 
     if (wantsDebugImages(options))
         addLandmarkDebugImages(&result.debugImages, image, faces, chosen, ibug, geometric, refined, hair, head);
@@ -660,13 +667,10 @@ DetectionResult detectFace(
     if (options.method == DetectionMethod::Auto
         && (result.status == DetectStatus::NoFace || result.status == DetectStatus::ModelMissing)
         && !(cancel && cancel->load())) {
-        DetectionResult classic = detectWithClassic(
-            image, options,
-            [&](double fraction, const QString &stage) {
-                if (progress)
-                    progress(fraction, stage);
-            },
-            true);
+        DetectionResult classic = detectWithClassic(image, options, [&](double fraction, const QString &stage) {
+            if (progress)
+                progress(fraction, stage);
+        });
         if (classic.status == DetectStatus::Ok) {
             classic.note = result.error;
             result = classic;

@@ -6,6 +6,8 @@
 #include <QPolygonF>
 #include <QRectF>
 
+#include <array>
+
 namespace toonface {
 
 // The regions of a detected face, in image pixels (thesis chapter 3: face, hair and ear
@@ -52,6 +54,12 @@ struct TrackingSeed
     double eyeballRadius[2] = {0, 0};
     double divEE = 0, divEN = 0, divNM = 0; // the division lines' y (Algorithm 4.5)
     QRectF mouth; // R_Mouth, the seed of mouth tracking (6.3)
+    // Thesis 6.3 step 1: "the four threshold values of four parts of the edge image", Tsai's
+    // threshold of the mirrored Sobel strength in each horizontal part of the 2d x 2d square
+    // (square top, Div_EE, Div_EN, Div_NM, square bottom), top part first: a pixel whose strength
+    // exceeds its part's value is an edge. Measured on the photo scaled as the classic method
+    // scales it (at most 640 pixels on its longer side); all 0 when not measured.
+    std::array<double, 4> edgeThresholds {};
     ColourStats skin;
     ColourStats hair;
 

@@ -101,6 +101,10 @@ QJsonObject trackingToJson(const TrackingSeed &t)
     o.insert(QStringLiteral("divEN"), t.divEN);
     o.insert(QStringLiteral("divNM"), t.divNM);
     o.insert(QStringLiteral("mouth"), boxToJson(t.mouth));
+    QJsonArray edgeThresholds;
+    for (double v : t.edgeThresholds)
+        edgeThresholds.append(v);
+    o.insert(QStringLiteral("edgeThresholds"), edgeThresholds);
     o.insert(QStringLiteral("skin"), colourToJson(t.skin));
     o.insert(QStringLiteral("hair"), colourToJson(t.hair));
     return o;
@@ -218,6 +222,18 @@ bool trackingFrom(const JsonField &f, TrackingSeed *t, QString *error)
     if (!boxFrom(f.member("mouth"), &t->mouth, error) || !colourFrom(f.member("skin"), &t->skin, error)
         || !colourFrom(f.member("hair"), &t->hair, error))
         return false;
+    // Files written before the edge thresholds were kept have none: they read as not measured.
+    const JsonField edges = f.member("edgeThresholds");
+    t->edgeThresholds = {};
+    if (!edges.isMissing()) {
+        if (!edges.toArray(&a, error))
+            return false;
+        if (a.size() != 4)
+            return edges.expected(QStringLiteral("four edge thresholds, top part first"), error);
+        for (int k = 0; k < 4; ++k)
+            if (!numberFrom(edges.at(k), &t->edgeThresholds[size_t(k)], error))
+                return false;
+    }
     t->valid = true;
     return true;
 }

@@ -10,6 +10,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QPainter>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -224,6 +225,30 @@ private Q_SLOTS:
         r = cli({QStringLiteral("cartoon"), p, QStringLiteral("-o"), path(QStringLiteral("blank.svg"))});
         QCOMPARE(r.code, 4);
         QVERIFY(!QFile::exists(path(QStringLiteral("blank.svg"))));
+    }
+
+    // The classic method does not call a dark pair without a face around it a face: "no face"
+    // (exit 4) with the failed check in one line naming the file.
+    void classicRefusesPairWithoutFace()
+    {
+        QImage wall(480, 480, QImage::Format_RGB32);
+        wall.fill(QColor(120, 150, 200));
+        {
+            QPainter p(&wall);
+            p.setRenderHint(QPainter::Antialiasing);
+            p.setPen(Qt::NoPen);
+            p.setBrush(QColor(20, 20, 30));
+            p.drawEllipse(QPointF(190, 200), 14, 8);
+            p.drawEllipse(QPointF(290, 200), 14, 8);
+        }
+        const QString p = path(QStringLiteral("two-blobs.png"));
+        QVERIFY(wall.save(p));
+        const Run r = cli({QStringLiteral("detect"), p, QStringLiteral("--method"), QStringLiteral("classic")});
+        QCOMPARE(r.code, 4);
+        QVERIFY2(isOneErrorLine(r.err), r.err.constData());
+        QVERIFY(r.err.contains("two-blobs.png"));
+        QVERIFY2(r.err.contains("no face around it"), r.err.constData());
+        QVERIFY(r.out.isEmpty());
     }
 
     // Without the landmark model, auto falls back to the thesis' pipeline: the portrait still

@@ -1,3 +1,4 @@
+#include "detect/classic.h"
 #include "detect/detector.h"
 #include "detect/landmarkmap.h"
 
@@ -617,6 +618,14 @@ void TestDetector::resultHasRegions()
         QCOMPARE_GT(r.tracking.skin.samples, 0);
         // Skin is lighter than the threshold that separates the dark features.
         QCOMPARE_GT((r.tracking.skin.r + r.tracking.skin.g + r.tracking.skin.b) / 3, r.tracking.t1);
+        // Thesis 6.3's edge thresholds: both methods measure them the same way from the seed's
+        // geometry (the photo is below 640 pixels, so the classic method works on its pixels).
+        TrackingSeed remeasured = r.tracking;
+        remeasured.edgeThresholds = {};
+        measureEdgeThresholds(image, &remeasured);
+        QVERIFY(remeasured.edgeThresholds == r.tracking.edgeThresholds);
+        for (double t : r.tracking.edgeThresholds)
+            QCOMPARE_GT(t, 0.0);
     }
 }
 

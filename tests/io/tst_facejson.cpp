@@ -150,6 +150,7 @@ private Q_SLOTS:
         seedGeometryFromPoints(face, &d.tracking);
         d.tracking.skin = {1234, 225.5, 180.25, 150.0, 9.75};
         d.tracking.hair = {56, 60.0, 40.0, 25.5, 4.0};
+        d.tracking.edgeThresholds = {312.0, 248.5, 0.0, 1030.25};
         const QByteArray text = QJsonDocument(faceToJson(face, QStringLiteral("me.jpg"), &d)).toJson();
         const QJsonObject json = QJsonDocument::fromJson(text).object();
         QVERIFY(json.contains(QStringLiteral("regions")));
@@ -204,6 +205,36 @@ private Q_SLOTS:
                                         << QStringLiteral("tracking.eyeballs[0].radius");
         QTest::newRow("hair samples") << QStringLiteral("tracking.hair.samples") << QJsonValue(1.5)
                                       << QStringLiteral("tracking.hair.samples");
+        QTest::newRow("three edge thresholds")
+            << QStringLiteral("tracking.edgeThresholds") << QJsonValue(QJsonArray {1, 2, 3})
+            << QStringLiteral("tracking.edgeThresholds");
+        QTest::newRow("edge threshold text")
+            << QStringLiteral("tracking.edgeThresholds[2]") << QJsonValue(QStringLiteral("x"))
+            << QStringLiteral("tracking.edgeThresholds[2]");
+    }
+
+    // A seed written before the edge thresholds were kept reads with them not measured (0).
+    void trackingWithoutEdgeThresholds()
+    {
+        const FaceModel face = testFace();
+        DetectionResult d;
+        d.status = DetectStatus::Ok;
+        d.regions = regionsFromPoints(face);
+        d.tracking.valid = true;
+        seedGeometryFromPoints(face, &d.tracking);
+        d.tracking.edgeThresholds = {10, 20, 30, 40};
+        const QJsonValue old
+            = patched(faceToJson(face, QString(), &d), u"tracking.edgeThresholds", QJsonValue::Undefined);
+        QVERIFY(
+            !old.toObject().value(QStringLiteral("tracking")).toObject().contains(QStringLiteral("edgeThresholds")));
+        FaceRegions regions;
+        TrackingSeed tracking;
+        tracking.edgeThresholds = {1, 2, 3, 4};
+        QString error;
+        QVERIFY2(faceRegionsFromJson(old.toObject(), &regions, &tracking, &error), qPrintable(error));
+        QVERIFY(tracking.valid);
+        QVERIFY(tracking.edgeThresholds == (std::array<double, 4> {}));
+        QCOMPARE(tracking.d, d.tracking.d);
     }
 
     void regionsValidation()
