@@ -3,14 +3,13 @@
 #include "render/svgface.h"
 #include "render/videoencoder.h"
 
-#include "twopeople.h"
+#include "testphotos.h"
 
 #include <QFile>
 #include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QPainter>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -231,16 +230,7 @@ private Q_SLOTS:
     // (exit 4) with the failed check in one line naming the file.
     void classicRefusesPairWithoutFace()
     {
-        QImage wall(480, 480, QImage::Format_RGB32);
-        wall.fill(QColor(120, 150, 200));
-        {
-            QPainter p(&wall);
-            p.setRenderHint(QPainter::Antialiasing);
-            p.setPen(Qt::NoPen);
-            p.setBrush(QColor(20, 20, 30));
-            p.drawEllipse(QPointF(190, 200), 14, 8);
-            p.drawEllipse(QPointF(290, 200), 14, 8);
-        }
+        const QImage wall = testing::darkPairOnAWall();
         const QString p = path(QStringLiteral("two-blobs.png"));
         QVERIFY(wall.save(p));
         const Run r = cli({QStringLiteral("detect"), p, QStringLiteral("--method"), QStringLiteral("classic")});

@@ -2,6 +2,8 @@
 #include "detect/detector.h"
 #include "detect/landmarkmap.h"
 
+#include "testphotos.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -875,16 +877,7 @@ void TestClassic::throughDetector()
 // refuses it with those checks named, as the classic method and as auto's last resort.
 void TestClassic::noFaceAroundPair()
 {
-    QImage wall(480, 480, QImage::Format_RGB32);
-    wall.fill(QColor(120, 150, 200));
-    {
-        QPainter p(&wall);
-        p.setRenderHint(QPainter::Antialiasing);
-        p.setPen(Qt::NoPen);
-        p.setBrush(QColor(20, 20, 30));
-        p.drawEllipse(QPointF(190, 200), 14, 8);
-        p.drawEllipse(QPointF(290, 200), 14, 8);
-    }
+    const QImage wall = testing::darkPairOnAWall();
     const ClassicResult c = detectClassic(wall);
     QVERIFY2(c.ok, qPrintable(c.error));
     QVERIFY(!c.eyePairInFace);

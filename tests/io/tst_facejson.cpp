@@ -47,6 +47,17 @@ QJsonValue patched(const QJsonValue &root, QStringView path, const QJsonValue &v
     return o;
 }
 
+// A detection of `face` with its regions and the geometric part of its tracking seed.
+DetectionResult seededDetection(const FaceModel &face)
+{
+    DetectionResult d;
+    d.status = DetectStatus::Ok;
+    d.regions = regionsFromPoints(face);
+    d.tracking.valid = true;
+    seedGeometryFromPoints(face, &d.tracking);
+    return d;
+}
+
 } // namespace
 
 class TestFaceJson : public QObject
@@ -217,11 +228,7 @@ private Q_SLOTS:
     void trackingWithoutEdgeThresholds()
     {
         const FaceModel face = testFace();
-        DetectionResult d;
-        d.status = DetectStatus::Ok;
-        d.regions = regionsFromPoints(face);
-        d.tracking.valid = true;
-        seedGeometryFromPoints(face, &d.tracking);
+        DetectionResult d = seededDetection(face);
         d.tracking.edgeThresholds = {10, 20, 30, 40};
         const QJsonValue old
             = patched(faceToJson(face, QString(), &d), u"tracking.edgeThresholds", QJsonValue::Undefined);
@@ -243,11 +250,7 @@ private Q_SLOTS:
         QFETCH(QJsonValue, value);
         QFETCH(QString, expected);
         const FaceModel face = testFace();
-        DetectionResult d;
-        d.status = DetectStatus::Ok;
-        d.regions = regionsFromPoints(face);
-        d.tracking.valid = true;
-        seedGeometryFromPoints(face, &d.tracking);
+        DetectionResult d = seededDetection(face);
         const QJsonValue bad = patched(faceToJson(face, QString(), &d), path, value);
         FaceRegions regions;
         TrackingSeed tracking;

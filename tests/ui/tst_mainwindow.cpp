@@ -9,7 +9,7 @@
 #include "window/mainwindow.h"
 #include "window/settings.h"
 
-#include "twopeople.h"
+#include "testphotos.h"
 #include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
