@@ -678,6 +678,16 @@ DetectionResult detectFace(
             result.debugImages.insert(classic.debugImages);
         }
     }
+    // Auto placed the points by the landmarks: the thesis' figures (B1, B2, B3, eye pairs, the
+    // eyeballs and the 2d square, edges, feature regions, its points) are drawn too when the
+    // steps are asked for, so that they can be compared with the landmarks' on the same photo.
+    if (options.method == DetectionMethod::Auto && result.status == DetectStatus::Ok
+        && result.method == detectionMethodName(DetectionMethod::Landmarks) && wantsDebugImages(options)
+        && !(cancel && cancel->load())) {
+        const ClassicResult c = detectClassic(image, true);
+        for (auto it = c.debugImages.cbegin(); it != c.debugImages.cend(); ++it)
+            result.debugImages.insert(it.key(), it.value());
+    }
     if (!options.debugDir.isEmpty() && QDir().mkpath(options.debugDir)) {
         for (auto it = result.debugImages.cbegin(); it != result.debugImages.cend(); ++it)
             it.value().save(QDir(options.debugDir).filePath(it.key() + QStringLiteral(".png")));

@@ -476,8 +476,12 @@ void TestDetector::debugImages()
     const DetectionResult r = detectFace(image, options);
     QCOMPARE(r.status, DetectStatus::Ok);
     QVERIFY(r.debugImages.isEmpty()); // written, not kept
+    // The landmarks' steps, and the thesis' figures of the same photo beside them.
     const QStringList names {QStringLiteral("detect-landmarks"), QStringLiteral("detect-points-crop"),
-        QStringLiteral("detect-hair-region"), QStringLiteral("detect-head-regions")};
+        QStringLiteral("detect-hair-region"), QStringLiteral("detect-head-regions"), QStringLiteral("classic-b1"),
+        QStringLiteral("classic-b2"), QStringLiteral("classic-b3"), QStringLiteral("classic-face-hair"),
+        QStringLiteral("classic-eye-pairs"), QStringLiteral("classic-eyeballs"), QStringLiteral("classic-edges"),
+        QStringLiteral("classic-feature-regions"), QStringLiteral("classic-points")};
     for (const QString &name : names) {
         const QImage png(QDir(options.debugDir).filePath(name + QStringLiteral(".png")));
         QVERIFY2(!png.isNull(), qPrintable(name));
