@@ -21,11 +21,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <condition_variable>
+#include <exception>
 #include <fstream>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <numbers>
+#include <thread>
 
 namespace toonface {
 
@@ -237,12 +240,74 @@ struct FaceBox
     double score = 0;
 };
 
+// dlib's face detector allocates a hundred or so arrays per scan (the HOG planes of every
+// pyramid level and their filtered copies), and its speed depends on where they fall: on
+// this project's machines the same 320 x 240 scan took 5.6 ms or 19 ms from one detection to
+// the next, following what the rest of the detection had allocated and freed on the thread's
+// heap. Scanning on a thread of its own, whose heap (glibc's per-thread arena) holds only the
+// scanner's arrays, gives the same layout every time: 5.6-6.3 ms. One such thread per calling
+// thread, so that detections on several threads still run side by side.
+class ScanThread
+{
+public:
+    ScanThread()
+        : m_thread([this] { loop(); })
+    { }
+    ~ScanThread()
+    {
+        {
+            std::lock_guard lock(m_mutex);
+            m_stop = true;
+        }
+        m_wake.notify_all();
+        m_thread.join();
+    }
+
+    // Runs `job` on the scan thread and waits for it; an exception it throws is rethrown here.
+    void run(const std::function<void()> &job)
+    {
+        std::unique_lock lock(m_mutex);
+        m_job = &job;
+        m_error = nullptr;
+        m_wake.notify_all();
+        m_wake.wait(lock, [this] { return m_job == nullptr; });
+        if (m_error)
+            std::rethrow_exception(m_error);
+    }
+
+private:
+    void loop()
+    {
+        std::unique_lock lock(m_mutex);
+        for (;;) {
+            m_wake.wait(lock, [this] { return m_stop || m_job != nullptr; });
+            if (m_stop)
+                return;
+            try {
+                (*m_job)();
+            } catch (...) {
+                m_error = std::current_exception();
+            }
+            m_job = nullptr;
+            m_wake.notify_all();
+        }
+    }
+
+    std::mutex m_mutex;
+    std::condition_variable m_wake;
+    const std::function<void()> *m_job = nullptr;
+    std::exception_ptr m_error;
+    bool m_stop = false;
+    std::thread m_thread; // last: started once the members it uses exist
+};
+
 // The faces in a copy of `gray` scaled by `scale`, scanning `levels` pyramid levels (0: all).
 std::vector<FaceBox> findFaces(const QImage &gray, double scale, unsigned long levels)
 {
     const QImage small = qFuzzyCompare(scale, 1.0) ? gray : resizedGray(gray, scale);
     std::vector<dlib::rect_detection> dets;
-    threadDetector(levels)(viewOf(small), dets);
+    thread_local ScanThread scanner;
+    scanner.run([&] { threadDetector(levels)(viewOf(small), dets); });
     std::vector<FaceBox> out;
     for (const auto &d : dets) {
         // dlib's rectangles are inclusive: pixel columns left..right of the scaled copy,
