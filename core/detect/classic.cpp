@@ -143,7 +143,7 @@ bool eyePairInFace(const Mask &F, QPointF left, QPointF right, PairReach *reach)
     }
     if (reach)
         *reach = r;
-    return r.below >= 1.2 && r.side >= 0.55 && r.side <= 1.6;
+    return r.below >= kMinReachBelow && r.side >= kMinReachSide && r.side <= kMaxReachSide;
 }
 
 double mouthRowContrast(const Plane &I, QPointF left, QPointF right, double *darkestRow)
@@ -661,7 +661,7 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
             // below them; the best-scoring pair that passes wins.
             std::erase_if(a.eyes, [&](const EyePairCandidate &c) {
                 const QPointF l = a.dark[c.left].centroid, r = a.dark[c.right].centroid;
-                return !eyePairInFace(a.refined.face, l, r) || mouthRowContrast(I, l, r) < 0.15;
+                return !eyePairInFace(a.refined.face, l, r) || mouthRowContrast(I, l, r) < kMinMouthRowContrast;
             });
             if (!a.eyes.empty()) {
                 chosen = std::move(a);
@@ -742,16 +742,20 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
         QStringList failed;
         if (reach.below <= 0 && reach.side <= 0)
             failed << QStringLiteral("the point between the eyes is not in the face region");
-        else if (reach.below < 1.2)
-            failed << QStringLiteral("the face region reaches %1 eye distances below it (1.2 needed)")
-                          .arg(reach.below, 0, 'f', 2);
-        if ((reach.below > 0 || reach.side > 0) && (reach.side < 0.55 || reach.side > 1.6))
-            failed << QStringLiteral("%1 eye distances to its nearer side (0.55 .. 1.6 needed)")
-                          .arg(reach.side, 0, 'f', 2);
-        if (mouth < 0.15)
-            failed << QStringLiteral("no mouth row below it (the darkest row is %1% darker than the median, 15% "
+        else if (reach.below < kMinReachBelow)
+            failed << QStringLiteral("the face region reaches %1 eye distances below it (%2 needed)")
+                          .arg(reach.below, 0, 'f', 2)
+                          .arg(kMinReachBelow);
+        if ((reach.below > 0 || reach.side > 0) && (reach.side < kMinReachSide || reach.side > kMaxReachSide))
+            failed << QStringLiteral("%1 eye distances to its nearer side (%2 .. %3 needed)")
+                          .arg(reach.side, 0, 'f', 2)
+                          .arg(kMinReachSide)
+                          .arg(kMaxReachSide);
+        if (mouth < kMinMouthRowContrast)
+            failed << QStringLiteral("no mouth row below it (the darkest row is %1% darker than the median, %2% "
                                      "needed)")
-                          .arg(int(std::lround(100 * mouth)));
+                          .arg(int(std::lround(100 * mouth)))
+                          .arg(int(std::lround(100 * kMinMouthRowContrast)));
         res.faceCheck
             = QStringLiteral("the best eye pair by eq. (3.5), at (%1, %2) and (%3, %4), has no face around it: %5")
                   .arg(std::lround(l.x() / scale))
@@ -808,7 +812,7 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
     res.divNM = mid.y() + d;
     {
         double row = 0;
-        if (mouthRowContrast(I, ebL.centre, ebR.centre, &row) >= 0.15)
+        if (mouthRowContrast(I, ebL.centre, ebR.centre, &row) >= kMinMouthRowContrast)
             res.divNM = std::max(res.divEN + d / 4, mid.y() + row - 0.2 * d);
     }
     // Algorithm 4.5: Sobel edges, mirrored about the eyes' axis inside the square, then Tsai

@@ -63,6 +63,9 @@ double darknessContrast(const Plane &intensity, const Region &region, const std:
 // the midpoint (a face is about 2.2 eye distances wide at the eyes; hair over a temple or a
 // turned head shortens one side; nostrils, bits of the lips or of a fringe lie many of their
 // own spacings from the face's sides). Reaches are capped at 3 d down and 3 d sideways.
+inline constexpr double kMinReachBelow = 1.2;
+inline constexpr double kMinReachSide = 0.55;
+inline constexpr double kMaxReachSide = 1.6;
 struct PairReach
 {
     double below = 0; // in d
@@ -76,6 +79,8 @@ bool eyePairInFace(const Mask &face, QPointF left, QPointF right, PairReach *rea
 // them darken a row across; the skin under a pair of hair strands or nostrils stays even.
 // *darkestRow receives that row's distance below the pair's centre in pixels (0 when no row).
 double mouthRowContrast(const Plane &intensity, QPointF left, QPointF right, double *darkestRow = nullptr);
+// The contrast from which a row counts as the mouth.
+inline constexpr double kMinMouthRowContrast = 0.15;
 
 // Section 3.4.1: the circle holding the most dark points of one eye region. The radius grows
 // while the best-placed circle of that radius stays at least `minFill` dark; the largest such
