@@ -1,7 +1,7 @@
+#include "export/videoencoder.h"
 #include "face/averageface.h"
 #include "io/project.h"
 #include "render/svgface.h"
-#include "render/videoencoder.h"
 
 #include "testphotos.h"
 

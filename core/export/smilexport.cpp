@@ -1,14 +1,14 @@
-#include "render/smilexport.h"
+#include "export/smilexport.h"
 
 #include "anim/timeline.h"
 #include "anim/timelineevaluator.h"
+#include "export/videoencoder.h"
 #include "face/emotion.h"
 #include "face/facemodel.h"
 #include "face/fapu.h"
 #include "face/mouthshape.h"
 #include "face/pose.h"
 #include "render/svgface.h"
-#include "render/videoencoder.h"
 #include "speech/audio.h"
 
 #include <QDir>

@@ -1,4 +1,4 @@
-#include "render/videoencoder.h"
+#include "export/videoencoder.h"
 
 #include <QCoreApplication>
 #include <QDir>
