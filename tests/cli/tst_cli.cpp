@@ -1,6 +1,6 @@
-#include "export/videoencoder.h"
 #include "face/averageface.h"
 #include "io/project.h"
+#include "media/mediareader.h"
 #include "render/svgface.h"
 
 #include "testphotos.h"
