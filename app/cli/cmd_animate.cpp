@@ -2,13 +2,9 @@
 #include "cli/command.h"
 #include "cli/faceinput.h"
 #include "cli/speechinput.h"
-#include "export/framerenderer.h"
-#include "export/htmlplayer.h"
-#include "export/smilexport.h"
-#include "export/videoencoder.h"
+#include "export/animationexport.h"
 #include "face/emotion.h"
 #include "io/project.h"
-#include "render/svgface.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -20,78 +16,6 @@
 namespace toonface::cli {
 
 namespace {
-
-enum class OutputKind { Svg, Html, Mp4, Gif, PngDir };
-
-bool outputKind(const QString &path, OutputKind *kind)
-{
-    if (path.endsWith(QLatin1Char('/'))) {
-        *kind = OutputKind::PngDir;
-        return true;
-    }
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    static const std::pair<const char *, OutputKind> kinds[] = {{"svg", OutputKind::Svg}, {"html", OutputKind::Html},
-        {"htm", OutputKind::Html}, {"mp4", OutputKind::Mp4}, {"gif", OutputKind::Gif}};
-    for (const auto &[name, k] : kinds) {
-        if (suffix == QLatin1StringView(name)) {
-            *kind = k;
-            return true;
-        }
-    }
-    return false;
-}
-
-// Exported video frames show the drawing's frame with its longer side at its own size, kept
-// within 512-1280 pixels (the drawing is vector: a small head is drawn larger, not blurred) and
-// even, as encoders want.
-QSize videoSize(QSizeF frame)
-{
-    const QSizeF base = frame.isEmpty() ? QSizeF(512, 512) : frame;
-    const double side = std::clamp(std::max(base.width(), base.height()), 512.0, 1280.0);
-    const QSize s = base.scaled(side, side, Qt::KeepAspectRatio).toSize();
-    return QSize(std::max(2, s.width() & ~1), std::max(2, s.height() & ~1));
-}
-
-int writeVideoOutput(const QString &path, OutputKind kind, const SvgFace &face, const Timeline &timeline,
-    const MouthShapeSet &shapes, const QString &audioPath)
-{
-    const QSize size = videoSize(face.frame().size());
-    const FrameRenderer renderer(face, timeline, shapes, size);
-    const VideoFormat format = kind == OutputKind::Mp4 ? VideoFormat::Mp4
-        : kind == OutputKind::Gif                      ? VideoFormat::Gif
-                                                       : VideoFormat::PngSequence;
-    QString error;
-    VideoWriter writer;
-    AudioSource audio;
-    if (format == VideoFormat::Mp4 && !audioPath.isEmpty()) {
-        audio.path = audioPath;
-        audio.offset = timeline.audio() ? timeline.audio()->offset : 0.0;
-    }
-    VideoOptions options;
-    if (format == VideoFormat::Gif) {
-        // The palette must know the open mouth and shut eyes, which frame 0 may not show.
-        Pose open = mouthPose(face.face(), shapes, MouthShape::A);
-        open.leftEyeOpen = open.rightEyeOpen = 0;
-        options.paletteSamples << rasterizeSvg(face.svg(open), size);
-    }
-    if (!writer.open(path, format, size, renderer.frameRate(), audio, &error, options))
-        return fail(ExitFailed, error);
-    FrameRenderOptions frameOptions;
-    int lastPercent = -1;
-    frameOptions.progress = [&](int delivered, int total) {
-        const int percent = total > 0 ? delivered * 100 / total : 100;
-        if (percent / 10 != lastPercent / 10)
-            progress(QStringLiteral("rendering frames: %1 %").arg(percent));
-        lastPercent = percent;
-    };
-    const bool ok = renderFrames(
-        renderer, [&](int, const QImage &image) { return writer.addFrame(image, &error); }, frameOptions);
-    if (!ok)
-        return fail(ExitFailed, error.isEmpty() ? QStringLiteral("%1: rendering stopped").arg(path) : error);
-    if (!writer.finish(&error))
-        return fail(ExitFailed, error);
-    return ExitOk;
-}
 
 int runAnimate(const Command &self, const QStringList &args)
 {
@@ -132,8 +56,8 @@ int runAnimate(const Command &self, const QStringList &args)
             ExitUsage, QStringLiteral("animate takes one photo or project (usage: toonface-cli %1)").arg(self.usage));
     if (!parser.isSet(output))
         return fail(ExitUsage, QStringLiteral("animate needs -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"));
-    OutputKind kind;
-    if (!outputKind(parser.value(output), &kind))
+    const std::optional<AnimationFormat> format = animationFormatForPath(parser.value(output));
+    if (!format)
         return fail(ExitUsage,
             QStringLiteral("cannot tell the output type of '%1': use .svg, .html, .mp4, .gif or a folder ending in /")
                 .arg(parser.value(output)));
@@ -180,8 +104,10 @@ int runAnimate(const Command &self, const QStringList &args)
     request.sayText = parser.value(say);
     request.language = language;
     const QFileInfo outInfo(parser.value(output));
-    request.workDir = kind == OutputKind::PngDir ? QDir(parser.value(output)).absolutePath() : outInfo.absolutePath();
-    request.outputBase = kind == OutputKind::PngDir ? QStringLiteral("speech") : outInfo.completeBaseName();
+    request.workDir
+        = *format == AnimationFormat::PngSequence ? QDir(parser.value(output)).absolutePath() : outInfo.absolutePath();
+    request.outputBase
+        = *format == AnimationFormat::PngSequence ? QStringLiteral("speech") : outInfo.completeBaseName();
     SpeechTrack speech;
     if (const int code = buildSpeechTrack(request, &speech); code != ExitOk)
         return code;
@@ -211,32 +137,28 @@ int runAnimate(const Command &self, const QStringList &args)
             return fail(ExitFailed, error);
     }
 
-    SvgFace face(input.face, drawStyle);
-    face.setFrame(drawingFrame(input.face, wholePhoto));
-    for (const QString &layer : std::as_const(input.layerPaths)) {
-        QString error;
-        if (!face.addLayerFile(layer, &error))
-            return fail(ExitBadInput, error);
-    }
     const QString out = parser.value(output);
     progress(QStringLiteral("exporting %1 s of animation to %2").arg(speech.duration, 0, 'f', 1).arg(out));
-    if (kind == OutputKind::Svg || kind == OutputKind::Html) {
-        AnimationExportOptions options;
-        options.audio = ExportAudio::Embed;
-        options.audioPath = speech.audioPath;
-        options.layerFiles = input.layerPaths;
-        options.frame = face.frame();
-        QString error;
-        const QByteArray data = kind == OutputKind::Svg
-            ? exportSmilSvg(input.face, drawStyle, timeline, shapes, options, &error)
-            : exportHtmlPlayer(input.face, drawStyle, timeline, shapes, options, &error);
-        if (data.isEmpty())
-            return fail(ExitFailed, error);
-        if (!writeFileAtomically(out, data, &error))
-            return fail(ExitFailed, error);
-        return ExitOk;
-    }
-    return writeVideoOutput(out, kind, face, timeline, shapes, speech.audioPath);
+    ExportRequest exportRequest;
+    exportRequest.format = *format;
+    exportRequest.outputPath = out;
+    exportRequest.framing = wholePhoto ? ExportFraming::Photo : ExportFraming::Head;
+    exportRequest.face = input.face;
+    exportRequest.style = drawStyle;
+    exportRequest.timeline = timeline;
+    exportRequest.mouthShapes = shapes;
+    exportRequest.layerFiles = input.layerPaths;
+    exportRequest.audioPath = speech.audioPath;
+    int lastTenth = 0;
+    const ExportResult result = exportAnimation(exportRequest, [&lastTenth](double fraction) {
+        const int tenth = int(fraction * 10);
+        if (tenth > lastTenth)
+            progress(QStringLiteral("exporting: %1 %").arg(tenth * 10));
+        lastTenth = std::max(lastTenth, tenth);
+    });
+    if (!result.ok())
+        return fail(result.status == ExportStatus::BadInput ? ExitBadInput : ExitFailed, result.error);
+    return ExitOk;
 }
 
 const CommandRegistrar registrar({QStringLiteral("animate"),

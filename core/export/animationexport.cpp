@@ -1,0 +1,373 @@
+#include "export/animationexport.h"
+
+#include "export/framerenderer.h"
+#include "export/htmlplayer.h"
+#include "export/smilexport.h"
+#include "export/videoencoder.h"
+#include "face/pose.h"
+#include "media/pngframes.h"
+#include "render/svgface.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QSaveFile>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace toonface {
+
+namespace {
+
+constexpr int kMinSize = 16;
+constexpr int kMaxSize = 4096;
+constexpr double kMaxFps = 120;
+
+ExportResult result(ExportStatus status, const QString &file, const QString &problem)
+{
+    return {status, QDir::toNativeSeparators(file) + QStringLiteral(": ") + problem};
+}
+
+bool isCancelled(const std::atomic_bool *cancel)
+{
+    return cancel && cancel->load();
+}
+
+// Reports rising fractions of the whole export: [from, to] of it for one stage.
+class Progress
+{
+public:
+    explicit Progress(const std::function<void(double)> &report)
+        : m_report(report)
+    { }
+    void stage(double from, double to)
+    {
+        m_from = from;
+        m_to = to;
+    }
+    // The whole export is done.
+    void finish()
+    {
+        stage(1.0, 1.0);
+        (*this)(1.0);
+    }
+    void operator()(double fraction)
+    {
+        const double at = m_from + (m_to - m_from) * std::clamp(fraction, 0.0, 1.0);
+        if (m_report && at > m_last) {
+            m_last = at;
+            m_report(at);
+        }
+    }
+
+private:
+    const std::function<void(double)> &m_report;
+    double m_from = 0;
+    double m_to = 1;
+    double m_last = -1;
+};
+
+// The request's timeline at the request's frame rate.
+Timeline exportTimeline(const ExportRequest &request)
+{
+    Timeline timeline = request.timeline;
+    if (request.fps > 0)
+        timeline.setFrameRate(request.fps);
+    return timeline;
+}
+
+QString soundPath(const ExportRequest &request)
+{
+    if (!request.audioPath.isEmpty())
+        return request.audioPath;
+    return request.timeline.audio() ? request.timeline.audio()->path : QString();
+}
+
+// What makes the request impossible before anything is drawn: the status and message, or
+// nullopt when it is valid. Reads the layers into `face`.
+std::optional<ExportResult> checkRequest(const ExportRequest &request, SvgFace *face)
+{
+    const QString out = request.outputPath;
+    if (out.isEmpty())
+        return ExportResult {ExportStatus::BadInput, QStringLiteral("no output file given")};
+    if (request.size != 0 && (request.size < kMinSize || request.size > kMaxSize))
+        return result(ExportStatus::BadInput, out,
+            QStringLiteral("unsupported size %1 (from %2 to %3 pixels)").arg(request.size).arg(kMinSize).arg(kMaxSize));
+    if (!std::isfinite(request.fps) || request.fps < 0 || request.fps > kMaxFps)
+        return result(ExportStatus::BadInput, out,
+            QStringLiteral("unsupported frame rate %1 (more than 0, up to %2)").arg(request.fps).arg(kMaxFps));
+    for (const QString &layer : request.layerFiles) {
+        QString error;
+        if (!face->addLayerFile(layer, &error))
+            return ExportResult {ExportStatus::BadInput, error};
+    }
+    const QString sound = soundPath(request);
+    const bool silent = request.format == AnimationFormat::Gif || request.format == AnimationFormat::PngSequence;
+    if (!silent && !sound.isEmpty() && !QFileInfo(sound).isFile())
+        return result(ExportStatus::BadInput, sound, QStringLiteral("the sound file does not exist"));
+    const QFileInfo target(QDir::cleanPath(out));
+    if (!target.absoluteDir().exists())
+        return result(ExportStatus::Failed, out,
+            QStringLiteral("cannot write: the folder %1 does not exist")
+                .arg(QDir::toNativeSeparators(target.absolutePath())));
+    if (request.format == AnimationFormat::PngSequence ? target.exists() && !target.isDir() : target.isDir())
+        return result(ExportStatus::Failed, out,
+            request.format == AnimationFormat::PngSequence
+                ? QStringLiteral("cannot write PNG frames: it is a file, not a folder")
+                : QStringLiteral("cannot write: it is a folder"));
+    return std::nullopt;
+}
+
+ExportResult exportDocument(const ExportRequest &request, const SvgFace &face, const Timeline &timeline,
+    Progress &progress, const std::atomic_bool *cancel)
+{
+    const QString out = request.outputPath;
+    AnimationExportOptions options;
+    options.audio = ExportAudio::Embed;
+    options.audioPath = request.audioPath;
+    options.layerFiles = request.layerFiles;
+    options.frame = face.frame();
+    options.cancel = cancel;
+    progress.stage(0, 0.95);
+    options.progress = [&progress](double f) { progress(f); };
+    QString error;
+    const QByteArray data = request.format == AnimationFormat::SmilSvg
+        ? exportSmilSvg(request.face, request.style, timeline, request.mouthShapes, options, &error)
+        : exportHtmlPlayer(request.face, request.style, timeline, request.mouthShapes, options, &error);
+    if (isCancelled(cancel))
+        return result(ExportStatus::Cancelled, out, QStringLiteral("cancelled"));
+    if (data.isEmpty())
+        return result(ExportStatus::Failed, out, error);
+    // QSaveFile writes beside the target and renames at commit(); it removes its temporary file
+    // when it is not committed.
+    QSaveFile file(out);
+    if (!file.open(QIODevice::WriteOnly) || file.write(data) != data.size())
+        return result(ExportStatus::Failed, out, QStringLiteral("cannot write: %1").arg(file.errorString()));
+    if (isCancelled(cancel)) {
+        file.cancelWriting();
+        return result(ExportStatus::Cancelled, out, QStringLiteral("cancelled"));
+    }
+    if (!file.commit())
+        return result(ExportStatus::Failed, out, QStringLiteral("cannot write: %1").arg(file.errorString()));
+    progress.finish();
+    return {ExportStatus::Done, {}};
+}
+
+// A hidden folder beside `target` that a PNG sequence is written into, removed with its
+// content unless released.
+class TemporaryFolder
+{
+public:
+    explicit TemporaryFolder(const QString &target)
+    {
+        const QFileInfo info(QDir::cleanPath(target));
+        static std::atomic<int> serial = 0;
+        for (int attempt = 0; attempt < 100 && m_path.isEmpty(); ++attempt) {
+            const QString name = QStringLiteral("%1/.%2.%3-%4.part")
+                                     .arg(info.absolutePath(), info.fileName())
+                                     .arg(QCoreApplication::applicationPid())
+                                     .arg(serial++);
+            if (!QFileInfo::exists(name) && QDir().mkdir(name))
+                m_path = name;
+        }
+    }
+    ~TemporaryFolder()
+    {
+        if (!m_path.isEmpty())
+            QDir(m_path).removeRecursively();
+    }
+    TemporaryFolder(const TemporaryFolder &) = delete;
+    TemporaryFolder &operator=(const TemporaryFolder &) = delete;
+
+    const QString &path() const { return m_path; }
+    void release() { m_path.clear(); }
+
+private:
+    QString m_path;
+};
+
+// Moves the frames of `from` (a finished sequence) to the folder `to`: the folder itself when
+// `to` does not exist; otherwise each frame over its namesake, and frames of an earlier, longer
+// sequence removed.
+bool placeFrames(TemporaryFolder &from, const QString &to, QString *problem)
+{
+    const QString target = QDir::cleanPath(QFileInfo(to).absoluteFilePath());
+    std::error_code ec;
+    if (!QFileInfo::exists(target)) {
+        std::filesystem::rename(
+            QFile::encodeName(from.path()).toStdString(), QFile::encodeName(target).toStdString(), ec);
+        if (ec) {
+            *problem = QStringLiteral("cannot write: %1").arg(QString::fromStdString(ec.message()));
+            return false;
+        }
+        from.release();
+        return true;
+    }
+    const QDir source(from.path());
+    const QDir dir(target);
+    const QStringList names = source.entryList({QStringLiteral("frame_*.png")}, QDir::Files, QDir::Name);
+    for (const QString &name : names) {
+        std::filesystem::rename(QFile::encodeName(source.filePath(name)).toStdString(),
+            QFile::encodeName(dir.filePath(name)).toStdString(), ec);
+        if (ec) {
+            *problem = QStringLiteral("cannot write %1: %2").arg(name, QString::fromStdString(ec.message()));
+            return false;
+        }
+    }
+    const QStringList old = dir.entryList({QStringLiteral("frame_*.png")}, QDir::Files);
+    for (const QString &name : old) {
+        const QRegularExpressionMatch m = pngFramePattern().match(name);
+        if (m.hasMatch() && m.captured(1).toLongLong() > names.size())
+            QFile::remove(dir.filePath(name));
+    }
+    return true;
+}
+
+ExportResult exportFrames(const ExportRequest &request, const SvgFace &face, const Timeline &timeline,
+    Progress &progress, const std::atomic_bool *cancel)
+{
+    const QString out = request.outputPath;
+    const QSize size = exportFrameSize(request);
+    const FrameRenderer renderer(face, timeline, request.mouthShapes, size);
+    VideoFormat format = VideoFormat::PngSequence;
+    if (request.format == AnimationFormat::Mp4)
+        format = VideoFormat::Mp4;
+    else if (request.format == AnimationFormat::Gif)
+        format = VideoFormat::Gif;
+
+    AudioSource audio;
+    if (format == VideoFormat::Mp4) {
+        audio.path = soundPath(request);
+        audio.offset = audio.path.isEmpty() || !timeline.audio() ? 0.0 : timeline.audio()->offset;
+    }
+    VideoOptions options;
+    if (format == VideoFormat::Gif) {
+        // The palette must know the open mouth and shut eyes, which frame 0 may not show.
+        Pose open = mouthPose(face.face(), request.mouthShapes, MouthShape::A);
+        open.leftEyeOpen = open.rightEyeOpen = 0;
+        options.paletteSamples << rasterizeSvg(face.svg(open), size);
+    }
+    std::optional<TemporaryFolder> folder;
+    QString path = out;
+    if (format == VideoFormat::PngSequence) {
+        folder.emplace(out);
+        if (folder->path().isEmpty())
+            return result(ExportStatus::Failed, out,
+                QStringLiteral("cannot write: cannot create a folder in %1")
+                    .arg(QDir::toNativeSeparators(QFileInfo(QDir::cleanPath(out)).absolutePath())));
+        path = folder->path();
+    }
+    // Messages about the temporary folder name the target.
+    const auto named = [&](const QString &error) {
+        QString e = error;
+        return folder ? e.replace(QDir::toNativeSeparators(path), QDir::toNativeSeparators(out)) : e;
+    };
+
+    QString error;
+    VideoWriter writer;
+    if (!writer.open(path, format, size, renderer.frameRate(), audio, &error, options))
+        return {ExportStatus::Failed, named(error)};
+    progress.stage(0, 0.98);
+    FrameRenderOptions frameOptions;
+    frameOptions.cancel = cancel;
+    frameOptions.progress = [&](int delivered, int total) { progress(total > 0 ? double(delivered) / total : 1.0); };
+    const bool rendered = renderFrames(
+        renderer, [&](int, const QImage &image) { return writer.addFrame(image, &error); }, frameOptions);
+    if (isCancelled(cancel)) {
+        writer.cancel();
+        return result(ExportStatus::Cancelled, out, QStringLiteral("cancelled"));
+    }
+    if (!rendered) {
+        writer.cancel();
+        return error.isEmpty() ? result(ExportStatus::Failed, out, QStringLiteral("rendering stopped"))
+                               : ExportResult {ExportStatus::Failed, named(error)};
+    }
+    if (!writer.finish(&error))
+        return {ExportStatus::Failed, named(error)};
+    if (folder) {
+        QString problem;
+        if (!placeFrames(*folder, out, &problem))
+            return result(ExportStatus::Failed, out, problem);
+    }
+    progress.finish();
+    return {ExportStatus::Done, {}};
+}
+
+} // namespace
+
+QString animationFormatSuffix(AnimationFormat format)
+{
+    switch (format) {
+    case AnimationFormat::SmilSvg: return QStringLiteral("svg");
+    case AnimationFormat::HtmlPlayer: return QStringLiteral("html");
+    case AnimationFormat::Mp4: return QStringLiteral("mp4");
+    case AnimationFormat::Gif: return QStringLiteral("gif");
+    case AnimationFormat::PngSequence: break;
+    }
+    return {};
+}
+
+std::optional<AnimationFormat> animationFormatForPath(const QString &path)
+{
+    if (path.endsWith(QLatin1Char('/')) || path.endsWith(QDir::separator()))
+        return AnimationFormat::PngSequence;
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix == u"htm")
+        return AnimationFormat::HtmlPlayer;
+    for (AnimationFormat format : kAllAnimationFormats) {
+        if (!suffix.isEmpty() && suffix == animationFormatSuffix(format))
+            return format;
+    }
+    return std::nullopt;
+}
+
+bool isRasterFormat(AnimationFormat format)
+{
+    return format == AnimationFormat::Mp4 || format == AnimationFormat::Gif || format == AnimationFormat::PngSequence;
+}
+
+QRectF exportFrame(const ExportRequest &request)
+{
+    SvgFace face(request.face, request.style);
+    face.setFrame(request.framing == ExportFraming::Head ? headFrame(request.face) : QRectF());
+    return face.frame();
+}
+
+QSize exportFrameSize(const ExportRequest &request)
+{
+    const QSizeF frame = exportFrame(request).size();
+    const QSizeF base = frame.isEmpty() ? QSizeF(512, 512) : frame;
+    // Automatic: the frame's own size, kept within 512-1280 pixels (the drawing is vector: a
+    // small head is drawn larger, not blurred).
+    const double side
+        = request.size > 0 ? double(request.size) : std::clamp(std::max(base.width(), base.height()), 512.0, 1280.0);
+    const QSize s = base.scaled(side, side, Qt::KeepAspectRatio).toSize();
+    // Even, as encoders want.
+    return QSize(std::max(2, s.width() & ~1), std::max(2, s.height() & ~1));
+}
+
+int exportFrameCount(const ExportRequest &request)
+{
+    return std::max(1, exportTimeline(request).frameCount());
+}
+
+ExportResult exportAnimation(
+    const ExportRequest &request, const std::function<void(double)> &report, const std::atomic_bool *cancel)
+{
+    SvgFace face(request.face, request.style);
+    face.setFrame(request.framing == ExportFraming::Head ? headFrame(request.face) : QRectF());
+    if (std::optional<ExportResult> invalid = checkRequest(request, &face))
+        return *invalid;
+    if (isCancelled(cancel))
+        return result(ExportStatus::Cancelled, request.outputPath, QStringLiteral("cancelled"));
+    Progress progress(report);
+    progress(0.0);
+    const Timeline timeline = exportTimeline(request);
+    if (isRasterFormat(request.format))
+        return exportFrames(request, face, timeline, progress, cancel);
+    return exportDocument(request, face, timeline, progress, cancel);
+}
+
+} // namespace toonface

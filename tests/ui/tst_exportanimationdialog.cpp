@@ -1,0 +1,240 @@
+#include "animationfixture.h"
+
+#include "dialogs/exportanimationdialog.h"
+#include "media/mediareader.h"
+#include "render/style.h"
+
+#include <QComboBox>
+#include <QDir>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProcess>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace toonface;
+
+namespace {
+
+QStringList entries(const QString &dir)
+{
+    return QDir(dir).entryList(QDir::AllEntries | QDir::Hidden | QDir::System | QDir::NoDotAndDotDot, QDir::Name);
+}
+
+void choose(QComboBox *combo, AnimationFormat format)
+{
+    combo->setCurrentIndex(combo->findData(int(format)));
+}
+
+} // namespace
+
+class TestExportAnimationDialog : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+    QString m_tone;
+
+    // The editor's animation as the main window hands it over: 2 s of talk with its sound.
+    ExportRequest base(const QString &outputPath) const
+    {
+        ExportRequest r;
+        r.format = AnimationFormat::SmilSvg;
+        r.outputPath = outputPath;
+        r.face = test::animationFace();
+        r.style = Style::preset(QStringLiteral("normal"));
+        Timeline t;
+        t.setFrameRate(25);
+        t.addMouthCues({{0.2, 0.5, MouthShape::A}, {0.5, 0.9, MouthShape::U}, {1.0, 1.6, MouthShape::E}});
+        t.addBlink({1.2, 0.18});
+        t.setAudio(AudioClip {m_tone, 0.0, 2.0});
+        r.timeline = t;
+        return r;
+    }
+
+    QString newFolder(const QString &name) const
+    {
+        const QString path = m_dir.filePath(name);
+        QDir(path).removeRecursively();
+        QDir().mkpath(path);
+        return path;
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        m_tone = m_dir.filePath(QStringLiteral("tone.wav"));
+        QVERIFY(test::writeToneWav(m_tone, 2.0));
+    }
+
+    void suffixFollowsFormat()
+    {
+        ExportAnimationDialog dialog(base(QStringLiteral("/tmp/x/talk.svg")));
+        auto *format = dialog.findChild<QComboBox *>(QStringLiteral("format"));
+        auto *path = dialog.findChild<QLineEdit *>(QStringLiteral("path"));
+        auto *size = dialog.findChild<QComboBox *>(QStringLiteral("size"));
+        QVERIFY(format && path && size);
+        QCOMPARE(path->text(), QStringLiteral("/tmp/x/talk.svg"));
+        QVERIFY(!size->isEnabled()); // a vector drawing has no pixel size
+        choose(format, AnimationFormat::Mp4);
+        QCOMPARE(path->text(), QStringLiteral("/tmp/x/talk.mp4"));
+        QVERIFY(size->isEnabled());
+        choose(format, AnimationFormat::PngSequence);
+        QCOMPARE(path->text(), QStringLiteral("/tmp/x/talk-frames/"));
+        choose(format, AnimationFormat::Gif);
+        QCOMPARE(path->text(), QStringLiteral("/tmp/x/talk.gif"));
+        choose(format, AnimationFormat::HtmlPlayer);
+        QCOMPARE(path->text(), QStringLiteral("/tmp/x/talk.html"));
+        // A name of the user's own keeps its dots.
+        path->setText(QStringLiteral("take.2"));
+        choose(format, AnimationFormat::Mp4);
+        QCOMPARE(path->text(), QStringLiteral("take.2.mp4"));
+        QCOMPARE(dialog.request().format, AnimationFormat::Mp4);
+        QCOMPARE(dialog.request().outputPath, QStringLiteral("take.2.mp4"));
+    }
+
+    void controlsMakeTheRequest()
+    {
+        ExportAnimationDialog dialog(base(QStringLiteral("a.svg")));
+        QCOMPARE(dialog.findChild<QSpinBox *>(QStringLiteral("fps"))->value(), 25);
+        choose(dialog.findChild<QComboBox *>(QStringLiteral("format")), AnimationFormat::Gif);
+        auto *size = dialog.findChild<QComboBox *>(QStringLiteral("size"));
+        size->setCurrentIndex(size->findData(480));
+        dialog.findChild<QSpinBox *>(QStringLiteral("fps"))->setValue(12);
+        auto *framing = dialog.findChild<QComboBox *>(QStringLiteral("framing"));
+        framing->setCurrentIndex(framing->findData(int(ExportFraming::Photo)));
+        const ExportRequest r = dialog.request();
+        QCOMPARE(r.size, 480);
+        QCOMPARE(r.fps, 12.0);
+        QCOMPARE(r.framing, ExportFraming::Photo);
+        QCOMPARE(r.timeline, base({}).timeline);
+        const QString summary = dialog.findChild<QLabel *>(QStringLiteral("summary"))->text();
+        QVERIFY2(summary.contains(QStringLiteral("24 frames")), qPrintable(summary)); // 2 s at 12 fps
+        QVERIFY2(summary.contains(QStringLiteral("480 × 480 px")), qPrintable(summary));
+        QVERIFY2(summary.contains(QStringLiteral("silent")), qPrintable(summary));
+    }
+
+    // Choose MP4, export, wait: the file has every frame and the sound; the dialog offers to
+    // show it.
+    void exportsMp4()
+    {
+        const QString dir = newFolder(QStringLiteral("mp4"));
+        ExportAnimationDialog dialog(base(QDir(dir).filePath(QStringLiteral("talk.svg"))));
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        choose(dialog.findChild<QComboBox *>(QStringLiteral("format")), AnimationFormat::Mp4);
+        auto *size = dialog.findChild<QComboBox *>(QStringLiteral("size"));
+        size->setCurrentIndex(size->findData(360));
+        QSignalSpy finished(&dialog, &ExportAnimationDialog::finished);
+        auto *exportButton = dialog.findChild<QPushButton *>(QStringLiteral("export"));
+        QTest::mouseClick(exportButton, Qt::LeftButton);
+        QVERIFY(dialog.isRunning());
+        QVERIFY(!exportButton->isEnabled());
+        QCOMPARE(dialog.findChild<QPushButton *>(QStringLiteral("close"))->text(), QStringLiteral("Cancel"));
+        QVERIFY(finished.wait(120000));
+        QVERIFY2(dialog.lastResult().ok(), qPrintable(dialog.lastResult().error));
+        const QString mp4 = QDir(dir).filePath(QStringLiteral("talk.mp4"));
+        QCOMPARE(dialog.exportedPath(), mp4);
+        QCOMPARE(dialog.exportedFolder(), QFileInfo(mp4).absolutePath());
+        QCOMPARE(entries(dir), QStringList {QStringLiteral("talk.mp4")});
+        QCOMPARE(dialog.findChild<QProgressBar *>(QStringLiteral("progress"))->value(),
+            dialog.findChild<QProgressBar *>(QStringLiteral("progress"))->maximum());
+        QVERIFY(dialog.findChild<QPushButton *>(QStringLiteral("showInFolder"))->isVisible());
+        QCOMPARE(dialog.findChild<QPushButton *>(QStringLiteral("close"))->text(), QStringLiteral("Close"));
+
+        QString error;
+        const std::optional<MediaInfo> info = probeMedia(mp4, &error);
+        QVERIFY2(info, qPrintable(error));
+        QCOMPARE(info->frameCount, 50); // 2 s at 25 fps
+        QCOMPARE(std::max(info->width, info->height), 360);
+        QVERIFY(info->hasAudio);
+        QVERIFY2(std::abs(info->audioDurationS - 2.0) < 0.05, qPrintable(QString::number(info->audioDurationS)));
+
+        const QString ffprobe = QStandardPaths::findExecutable(QStringLiteral("ffprobe"));
+        if (!ffprobe.isEmpty()) {
+            QProcess p;
+            p.start(ffprobe,
+                {QStringLiteral("-v"), QStringLiteral("error"), QStringLiteral("-count_frames"),
+                    QStringLiteral("-show_entries"), QStringLiteral("stream=codec_type,nb_read_frames"),
+                    QStringLiteral("-of"), QStringLiteral("csv=p=0"), mp4});
+            QVERIFY(p.waitForFinished(60000));
+            const QString streams = QString::fromUtf8(p.readAllStandardOutput());
+            QVERIFY2(streams.contains(QStringLiteral("video,50")), qPrintable(streams));
+            QVERIFY2(streams.contains(QStringLiteral("audio")), qPrintable(streams));
+        }
+
+        const QString shots = qEnvironmentVariable("TOONFACE_SCREENSHOTS");
+        if (!shots.isEmpty())
+            QVERIFY(dialog.grab().save(QDir(shots).filePath(QStringLiteral("exportanimationdialog-done.png"))));
+    }
+
+    // Cancel while it runs: no file, no temporary file; the dialog says so and stays open.
+    void cancelMidway()
+    {
+        const QString dir = newFolder(QStringLiteral("cancel"));
+        ExportRequest r = base(QDir(dir).filePath(QStringLiteral("long.mp4")));
+        r.format = AnimationFormat::Mp4;
+        r.timeline = test::animationTimeline(m_tone); // 10 s: 250 frames
+        r.size = 1080;
+        ExportAnimationDialog dialog(r);
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        QSignalSpy finished(&dialog, &ExportAnimationDialog::finished);
+        QVERIFY(dialog.start());
+        auto *progress = dialog.findChild<QProgressBar *>(QStringLiteral("progress"));
+        QTRY_VERIFY_WITH_TIMEOUT(progress->value() > 0, 60000);
+        QVERIFY(dialog.isRunning());
+        const QString shots = qEnvironmentVariable("TOONFACE_SCREENSHOTS");
+        if (!shots.isEmpty())
+            QVERIFY(dialog.grab().save(QDir(shots).filePath(QStringLiteral("exportanimationdialog-running.png"))));
+        QTest::mouseClick(dialog.findChild<QPushButton *>(QStringLiteral("close")), Qt::LeftButton);
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(dialog.lastResult().status, ExportStatus::Cancelled);
+        QVERIFY(dialog.isVisible());
+        QVERIFY(dialog.exportedPath().isEmpty());
+        QVERIFY(!dialog.findChild<QPushButton *>(QStringLiteral("showInFolder"))->isVisible());
+        QCOMPARE(entries(dir), QStringList());
+        QVERIFY(dialog.findChild<QLabel *>(QStringLiteral("status"))->text().contains(QStringLiteral("Cancelled")));
+    }
+
+    // A failed export says why in the dialog and leaves nothing.
+    void failureIsShown()
+    {
+        const QString dir = newFolder(QStringLiteral("failure"));
+        ExportRequest r = base(QDir(dir).filePath(QStringLiteral("missing/out.gif")));
+        r.format = AnimationFormat::Gif;
+        ExportAnimationDialog dialog(r);
+        QSignalSpy finished(&dialog, &ExportAnimationDialog::finished);
+        QVERIFY(dialog.start());
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(dialog.lastResult().status, ExportStatus::Failed);
+        const QString status = dialog.findChild<QLabel *>(QStringLiteral("status"))->text();
+        QVERIFY2(status.contains(QStringLiteral("out.gif")) && status.contains(QStringLiteral("does not exist")),
+            qPrintable(status));
+        QCOMPARE(entries(dir), QStringList());
+    }
+
+    // Closing the dialog while it exports cancels the export first.
+    void closingCancels()
+    {
+        const QString dir = newFolder(QStringLiteral("closing"));
+        ExportRequest r = base(QDir(dir).filePath(QStringLiteral("c.gif")));
+        r.format = AnimationFormat::Gif;
+        r.timeline = test::animationTimeline();
+        {
+            ExportAnimationDialog dialog(r);
+            QVERIFY(dialog.start());
+        } // destroyed while running: it waits for the cancelled export
+        QCOMPARE(entries(dir), QStringList());
+    }
+};
+
+QTEST_MAIN(TestExportAnimationDialog)
+#include "tst_exportanimationdialog.moc"
