@@ -5,8 +5,10 @@
 #include "export/smilexport.h"
 #include "export/videoencoder.h"
 #include "face/pose.h"
+#include "io/project.h"
 #include "media/pngframes.h"
 #include "render/svgface.h"
+#include "speech/progress.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -28,11 +30,6 @@ constexpr double kMaxFps = 120;
 ExportResult result(ExportStatus status, const QString &file, const QString &problem)
 {
     return {status, QDir::toNativeSeparators(file) + QStringLiteral(": ") + problem};
-}
-
-bool isCancelled(const std::atomic_bool *cancel)
-{
-    return cancel && cancel->load();
 }
 
 // Reports rising fractions of the whole export: [from, to] of it for one stage.
@@ -326,6 +323,17 @@ std::optional<AnimationFormat> animationFormatForPath(const QString &path)
 bool isRasterFormat(AnimationFormat format)
 {
     return format == AnimationFormat::Mp4 || format == AnimationFormat::Gif || format == AnimationFormat::PngSequence;
+}
+
+ExportRequest exportRequestFor(const Project &project)
+{
+    ExportRequest r;
+    r.face = project.face;
+    r.style = project.style;
+    r.timeline = project.timeline;
+    r.mouthShapes = project.mouthShapes;
+    r.layerFiles = project.layerPaths;
+    return r;
 }
 
 QRectF exportFrame(const ExportRequest &request)

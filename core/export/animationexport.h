@@ -17,6 +17,8 @@
 
 namespace toonface {
 
+struct Project;
+
 // What an animation is exported as.
 enum class AnimationFormat {
     SmilSvg, // one SVG document animated by SMIL, with its sound (exportSmilSvg)
@@ -67,6 +69,10 @@ struct ExportRequest
     // sequences are silent.
     QString audioPath;
 };
+
+// The animation of `project` (its face, style, timeline with its sound, mouth shapes and layers)
+// as a request; the format, output path, size, rate and framing keep their defaults.
+ExportRequest exportRequestFor(const Project &project);
 
 // Where the drawing of `request` shows, in photo pixels (its framing).
 QRectF exportFrame(const ExportRequest &request);

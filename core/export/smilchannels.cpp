@@ -6,9 +6,13 @@
 #include "face/facemodel.h"
 #include "face/fapu.h"
 #include "face/mouthshape.h"
+#include "face/pointtable.h"
 #include "face/pose.h"
 
+#include <QMap>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -165,6 +169,33 @@ void findTracks(QVector<Channel> &channels, const SvgFace &svg, const Timeline &
             p.offset[pt::idx("3.6")] = g * es0;
             p.offset[pt::idx("3.5")] = g * es0;
             probes.append({Track::Gaze, p});
+        }
+    }
+    if (!timeline.poseKeys().isEmpty()) {
+        // Pose key frames: every point they displace at its extremes over the keys, left, right,
+        // up and down (four probes however many keys there are).
+        const double es0 = face.fapu().es0;
+        QMap<int, std::array<double, 4>> extremes; // min x, max x, min y, max y in ES0
+        for (const PoseKey &key : timeline.poseKeys()) {
+            for (auto it = key.offsetsEs0.cbegin(); it != key.offsetsEs0.cend(); ++it) {
+                const int index = pointIndex(it.key());
+                if (index < 0)
+                    continue;
+                auto found = extremes.find(index);
+                if (found == extremes.end())
+                    found = extremes.insert(index, std::array<double, 4> {});
+                std::array<double, 4> &e = found.value();
+                e[0] = std::min(e[0], it.value().x());
+                e[1] = std::max(e[1], it.value().x());
+                e[2] = std::min(e[2], it.value().y());
+                e[3] = std::max(e[3], it.value().y());
+            }
+        }
+        for (int k = 0; k < 4; ++k) {
+            Pose p;
+            for (auto it = extremes.cbegin(); it != extremes.cend(); ++it)
+                p.offset[it.key()] = (k < 2 ? QPointF(it.value()[k], 0) : QPointF(0, it.value()[k])) * es0;
+            probes.append({Track::Pose, p});
         }
     }
 

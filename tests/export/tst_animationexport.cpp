@@ -1,6 +1,7 @@
 #include "animationfixture.h"
 
 #include "export/animationexport.h"
+#include "io/project.h"
 #include "media/mediareader.h"
 #include "render/style.h"
 
@@ -99,6 +100,36 @@ private Q_SLOTS:
             if (f != AnimationFormat::PngSequence)
                 QCOMPARE(animationFormatForPath(QStringLiteral("x.") + animationFormatSuffix(f)), f);
         }
+    }
+
+    // A project's animation, its sound included, becomes a request.
+    void requestFromAProject()
+    {
+        Project project;
+        project.face = test::animationFace();
+        project.style = Style::preset(QStringLiteral("cute"));
+        project.timeline = shortTimeline(m_tone);
+        project.mouthShapes = MouthShapeSet();
+        project.layerPaths = {QStringLiteral("/layers/hat.svg")};
+        const ExportRequest r = exportRequestFor(project);
+        QCOMPARE(r.face, project.face);
+        QCOMPARE(r.style, project.style);
+        QCOMPARE(r.timeline, project.timeline);
+        QCOMPARE(r.mouthShapes, project.mouthShapes);
+        QCOMPARE(r.layerFiles, project.layerPaths);
+        QVERIFY(r.audioPath.isEmpty()); // the timeline's clip is the sound
+        QCOMPARE(r.outputPath, QString());
+        const QString out = QDir(newFolder(QStringLiteral("project"))).filePath(QStringLiteral("p.mp4"));
+        ExportRequest withOutput = r;
+        withOutput.outputPath = out;
+        withOutput.layerFiles.clear();
+        withOutput.size = 64;
+        const ExportResult result = exportAnimation(withOutput);
+        QVERIFY2(result.ok(), qPrintable(result.error));
+        QString error;
+        const std::optional<MediaInfo> info = probeMedia(out, &error);
+        QVERIFY2(info, qPrintable(error));
+        QVERIFY(info->hasAudio);
     }
 
     void frameSizes()

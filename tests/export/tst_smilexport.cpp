@@ -615,6 +615,41 @@ private Q_SLOTS:
         QVERIFY2(worstHead <= 0.15, qPrintable(QString::number(worstHead)));
     }
 
+    // Pose key frames (control points dragged on the preview) are animated too: a brow that
+    // only they move, and a mouth corner.
+    void poseKeysAreAnimated()
+    {
+        Timeline t;
+        t.setFrameRate(25);
+        t.addPoseKey({0.5, {{QStringLiteral("8.4"), QPointF(0.15, -0.05)}, {QStringLiteral("4.4"), QPointF(0, -0.1)}}});
+        t.addPoseKey({1.5, {{QStringLiteral("8.4"), QPointF(-0.1, 0.05)}}});
+        t.addPoseKey({2.5, {}});
+        const Style style = Style::preset(QStringLiteral("normal"));
+        const Node doc = document(exported(silent(), style, t));
+        const SvgFace svgFace = browserFace(style);
+        const TimelineEvaluator evaluator(t, m_face, m_shapes);
+        double worst = 0;
+        QString where;
+        for (double time = 0; time <= t.duration(); time += 0.037) {
+            QString here;
+            const double d = worstDistance(doc, svgFace.parts(evaluator.evaluate(time)), time, &here);
+            if (d > worst) {
+                worst = d;
+                where = here;
+            }
+        }
+        QVERIFY2(worst <= 0.15, qPrintable(QStringLiteral("%1 px at %2").arg(worst).arg(where)));
+        // The brow moved: it is animated, not drawn still.
+        const Node *brow = findId(doc, QStringLiteral("eyebrow-right"));
+        const Node *otherBrow = findId(doc, QStringLiteral("eyebrow-left"));
+        QVERIFY(brow && otherBrow);
+        const auto animated = [](const Node *e) {
+            return std::any_of(e->children.cbegin(), e->children.cend(),
+                [](const Node &c) { return c.name == QLatin1StringView("animate"); });
+        };
+        QVERIFY(animated(brow) != animated(otherBrow));
+    }
+
     // Where an emotion starts without a fade the pose jumps; the animation follows within a
     // millisecond.
     void jumpsAreFollowed()
