@@ -145,6 +145,11 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
     connect(m_steps, &DetectionSteps::changed, this, &MainWindow::onDetectionStepsChanged);
 
     if (m_options.preloadLandmarkModel) {
+        // The model and the face detector made ready in the background (at once, when the
+        // application's start already began it), so that the first photo's points come as
+        // fast as any later one's. The watcher only waits for the model, to say when it is
+        // unavailable.
+        warmUpDetection();
         auto *watcher = new QFutureWatcher<QString>(this);
         connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
             watcher->deleteLater();

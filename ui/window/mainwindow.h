@@ -42,7 +42,7 @@ class MainWindow : public QMainWindow
 public:
     struct Options
     {
-        bool preloadLandmarkModel = true; // load the detector's model in the background at start
+        bool preloadLandmarkModel = true; // warm detection up in the background at start (warmUpDetection())
         QString recoveryDirectory; // empty: Autosaver::defaultDirectory()
     };
 

@@ -1,0 +1,29 @@
+#pragma once
+
+// dlib's HOG face detector, run on threads of its own (see facescan.cpp for why).
+
+#include <QImage>
+#include <QRectF>
+#include <QSize>
+
+#include <vector>
+
+namespace toonface {
+
+struct FaceBox
+{
+    QRectF box; // in the pixels of the image scanned (of the photo, once findFaces() scales it back)
+    double score = 0; // the detector's margin: 0 at its threshold
+};
+
+// The faces in `gray` (Format_Grayscale8), scanning at most `levels` levels of the detector's
+// image pyramid of 5/6 steps (0: all of them, down to the smallest layer its 80-pixel window
+// fits). Thread-safe: scans from several threads run side by side.
+std::vector<FaceBox> scanFaces(const QImage &gray, unsigned long levels);
+
+// Does now what the first scan of an image of `size` would otherwise do on its way: decodes
+// the detector (dlib keeps it as a compressed string), starts a scan thread, and scans a blank
+// image of that size so that its arrays are allocated on that thread's heap.
+void warmUpFaceScan(QSize size);
+
+} // namespace toonface
