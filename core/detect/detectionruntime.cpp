@@ -30,9 +30,10 @@ SharedModel &sharedModel()
     return shared;
 }
 
-// The warm-up's two threads: one loads the model, the other decodes the face detector, scans a
-// blank frame, then (the model loaded) runs the later stages once. With the caller's thread
-// going on with its own start-up, the two cores of a small machine are both at work.
+// The warm-up's two threads: one makes the colour stages ready (OpenCV's colour tables alone
+// take about 0.2 s, so it starts at once), the other loads the model and the face detector
+// and scans a blank frame. With the caller's thread going on with its own start-up, the two
+// cores of a small machine are both at work.
 class WarmUp
 {
 public:
@@ -48,11 +49,10 @@ public:
             // The application waits for the threads before it tears down what they use.
             qAddPostRoutine(&waitForDetectionWarmUp);
             std::lock_guard lock(m_mutex);
-            m_model = std::thread([] { sharedLandmarkModel(nullptr); });
-            m_stages = std::thread([] {
+            m_stages = std::thread([] { warmUpFaceRefinement(); });
+            m_model = std::thread([] {
+                sharedLandmarkModel(nullptr);
                 warmUpFaceScan(kFirstPassSize);
-                if (const auto model = sharedLandmarkModel(nullptr))
-                    warmUpFacePlacement(*model);
             });
         });
     }
@@ -95,7 +95,7 @@ std::shared_ptr<const LandmarkPredictor> sharedLandmarkModel(QString *error, Lan
         }
         return shared.model;
     }
-    LandmarkModelLoad loaded = loadLandmarkModel(path, landmarkCacheDir());
+    LandmarkModelLoad loaded = loadLandmarkModel(path, detectionCacheDir());
     if (load)
         *load = loaded;
     if (!loaded.model) {

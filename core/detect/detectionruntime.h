@@ -14,15 +14,16 @@
 namespace toonface {
 
 // The model for landmarkModelPath(), loaded at most once per path (a test or the user may
-// point TOONFACE_LANDMARK_MODEL elsewhere), through its cache in landmarkCacheDir(). A load
+// point TOONFACE_LANDMARK_MODEL elsewhere), through its cache in detectionCacheDir(). A load
 // under way on another thread (the warm-up's) is waited for, not repeated. Failures are not
 // kept, so that a file that appears later is found. The shared pointer keeps a model alive
 // for detections still using it. *load, when given, is the report of the load that made the
 // model (its time is 0 when this call did not load it).
 std::shared_ptr<const LandmarkPredictor> sharedLandmarkModel(QString *error, LandmarkModelLoad *load = nullptr);
 
-// Runs the stages after the face scan (landmarks, hair, regions) once on a made-up portrait,
-// so that their one-time work (tables, OpenCV's set-up, first allocations) is done (detector.cpp).
-void warmUpFacePlacement(const LandmarkPredictor &model);
+// Runs the stages after the landmarks (hair, regions) once on a made-up portrait with the
+// average face, so that their one-time work (tables, OpenCV's colour tables, first
+// allocations) is done; needs no model (detector.cpp).
+void warmUpFaceRefinement();
 
 } // namespace toonface

@@ -8,6 +8,7 @@
 #include "detect/headregions.h"
 #include "detect/landmarkmap.h"
 #include "detect/landmarkpredictor.h"
+#include "face/averageface.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -323,21 +324,12 @@ struct PlacedFace
     TrackingSeed seed;
 };
 
-// Places the 72 points of the face the detector boxed in `box`: the landmarks, then hair and
-// ears from the photo. `endStage` is told as each stage ends ("landmarks", "hair", "regions");
-// when it answers false the work stops there and false is returned.
-bool placeFace(const LandmarkPredictor &model, const QImage &image, const QImage &gray, const QRectF &box,
-    bool withDebugImages, PlacedFace *out, const std::function<bool(const QString &stage)> &endStage)
+// Hair and ears of out->geometric: the thesis' regions where they are usable; elsewhere the
+// colour search of hairsearch.h, which keeps the geometric estimate where the photo does not
+// settle a point. Then what tracking reuses.
+bool refineFace(const QImage &image, bool withDebugImages, PlacedFace *out,
+    const std::function<bool(const QString &stage)> &endStage)
 {
-    const GrayView view = viewOf(gray);
-    const auto first = model.predict(view, pixelBox(box));
-    out->ibug = fitUpright(model, view, box, first);
-    out->geometric = faceFromLandmarks68(out->ibug, image.size());
-    if (!endStage(QStringLiteral("landmarks")))
-        return false;
-
-    // Hair and ears: the thesis' regions where they are usable; elsewhere the colour search of
-    // hairsearch.h, which keeps the geometric estimate where the photo does not settle a point.
     FaceModel searched = out->geometric;
     refineFromPhoto(&searched, image, &out->hair, withDebugImages);
     if (!endStage(QStringLiteral("hair")))
@@ -360,6 +352,21 @@ bool placeFace(const LandmarkPredictor &model, const QImage &image, const QImage
     measureEdgeThresholds(image, &out->seed);
     out->seed.valid = out->head.seed.valid;
     return endStage(QStringLiteral("regions"));
+}
+
+// Places the 72 points of the face the detector boxed in `box`: the landmarks, then hair and
+// ears from the photo (refineFace). `endStage` is told as each stage ends ("landmarks",
+// "hair", "regions"); when it answers false the work stops there and false is returned.
+bool placeFace(const LandmarkPredictor &model, const QImage &image, const QImage &gray, const QRectF &box,
+    bool withDebugImages, PlacedFace *out, const std::function<bool(const QString &stage)> &endStage)
+{
+    const GrayView view = viewOf(gray);
+    const auto first = model.predict(view, pixelBox(box));
+    out->ibug = fitUpright(model, view, box, first);
+    out->geometric = faceFromLandmarks68(out->ibug, image.size());
+    if (!endStage(QStringLiteral("landmarks")))
+        return false;
+    return refineFace(image, withDebugImages, out, endStage);
 }
 
 // The thesis pipeline (classic.h): one face, found by its eye pair. Only a pair that passed the
@@ -648,11 +655,10 @@ DetectionResult detectFace(
     return result;
 }
 
-void warmUpFacePlacement(const LandmarkPredictor &model)
+void warmUpFaceRefinement()
 {
     // A made-up portrait at a webcam's size: a skin-coloured oval under a dark cap of hair on a
-    // grey-blue wall, so that every stage finds something to work on; the face box where the
-    // detector would put it.
+    // grey-blue wall, so that every stage finds something to work on, and the average face on it.
     constexpr int kWidth = 640, kHeight = 480;
     QImage photo(kWidth, kHeight, QImage::Format_RGB32);
     const QPointF centre(kWidth / 2.0, kHeight / 2.0 + 20);
@@ -660,7 +666,7 @@ void warmUpFacePlacement(const LandmarkPredictor &model)
         auto *row = reinterpret_cast<QRgb *>(photo.scanLine(y));
         for (int x = 0; x < kWidth; ++x) {
             const double fx = (x - centre.x()) / 110.0, fy = (y - centre.y()) / 140.0;
-            const double hy = (y - centre.y() + 40) / 150.0, hx = (x - centre.x()) / 125.0;
+            const double hx = (x - centre.x()) / 125.0, hy = (y - centre.y() + 40) / 150.0;
             if (fx * fx + fy * fy < 1)
                 row[x] = qRgb(215, 170, 140);
             else if (hx * hx + hy * hy < 1 && y < centre.y())
@@ -669,11 +675,10 @@ void warmUpFacePlacement(const LandmarkPredictor &model)
                 row[x] = qRgb(120, 130, 150);
         }
     }
-    const QImage gray = toGray(photo);
-    resizedGray(gray, 0.5);
+    resizedGray(toGray(photo), 0.5);
     PlacedFace placed;
-    placeFace(model, photo, gray, QRectF(centre.x() - 90, centre.y() - 80, 180, 180), false, &placed,
-        [](const QString &) { return true; });
+    placed.geometric = averageFace(QRectF(centre.x() - 110, centre.y() - 140, 220, 280), photo.size());
+    refineFace(photo, false, &placed, [](const QString &) { return true; });
 }
 
 } // namespace toonface

@@ -66,7 +66,7 @@ DetectionResult detectFace(const QImage &image, const DetectOptions &options = {
     const std::atomic_bool *cancel = nullptr);
 
 // Loads the landmark model now (it is otherwise loaded on first use), from its cache in
-// landmarkCacheDir() (modelcache.h), writing that cache the first time. Returns false with
+// detectionCacheDir() (modelcache.h, cachefile.h), writing that cache the first time. Returns false with
 // *error when the model file is missing or unreadable. Thread-safe; loads only once; waits for
 // a load under way (the warm-up's). *loadMs: this call's load, 0 when it found the model loaded.
 bool preloadLandmarkModel(QString *error = nullptr, double *loadMs = nullptr);

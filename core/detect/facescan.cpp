@@ -2,8 +2,13 @@
 
 #include "detect/grayview.h"
 
+#include <QDir>
+#include <QElapsedTimer>
+
 #include <dlib/image_processing.h>
 #include <dlib/image_processing/frontal_face_detector.h>
+#include <dlib/revision.h>
+#include <dlib/serialize.h>
 
 #include <condition_variable>
 #include <exception>
@@ -12,11 +17,78 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <sstream>
 #include <thread>
 
 namespace toonface {
 
 namespace {
+
+constexpr char kKind[5] = "HOGD";
+
+// The detector's cache belongs to the dlib that made it: its version is the key.
+CacheKey detectorKey()
+{
+    return {quint64(DLIB_MAJOR_VERSION) * 1000000 + DLIB_MINOR_VERSION * 1000 + DLIB_PATCH_VERSION, 0, 0};
+}
+
+QString detectorCachePath(const QString &cacheDir)
+{
+    return QDir(cacheDir).filePath(QStringLiteral("frontal_face_detector-dlib%1.%2.%3.detector-cache")
+                                       .arg(DLIB_MAJOR_VERSION)
+                                       .arg(DLIB_MINOR_VERSION)
+                                       .arg(DLIB_PATCH_VERSION));
+}
+
+std::span<const std::byte> bytesOf(const std::string &s)
+{
+    return std::as_bytes(std::span(s.data(), s.size()));
+}
+
+// dlib's frontal face detector, from its cache in `cacheDir` or decoded (and the cache written).
+FaceDetectorLoad loadDetector(const QString &cacheDir, dlib::frontal_face_detector *out)
+{
+    QElapsedTimer timer;
+    timer.start();
+    FaceDetectorLoad load;
+    if (!cacheDir.isEmpty()) {
+        load.cachePath = detectorCachePath(cacheDir);
+        CachedBlock cached;
+        if (readCacheFile(load.cachePath, kKind, detectorKey(), &cached, &load.cacheNote)) {
+            try {
+                std::istringstream in(
+                    std::string(reinterpret_cast<const char *>(cached.bytes.data()), cached.bytes.size()));
+                dlib::deserialize(*out, in);
+                if (out->num_detectors() > 0) {
+                    load.cache = CacheUse::Used;
+                    load.fingerprint = cacheChecksum(cached.bytes);
+                    load.ms = timer.nsecsElapsed() / 1e6;
+                    return load;
+                }
+                load.cacheNote = QStringLiteral("the cache is damaged (it holds no detector)");
+            } catch (const std::exception &e) {
+                load.cacheNote
+                    = QStringLiteral("the cache is damaged (%1)").arg(QString::fromLocal8Bit(e.what()).trimmed());
+            }
+        }
+    }
+    *out = dlib::get_frontal_face_detector();
+    std::ostringstream serialised;
+    dlib::serialize(*out, serialised);
+    const std::string bytes = serialised.str();
+    load.fingerprint = cacheChecksum(bytesOf(bytes));
+    if (!cacheDir.isEmpty()) {
+        QString error;
+        if (writeCacheFile(load.cachePath, kKind, detectorKey(), bytesOf(bytes), &error)) {
+            load.cache = CacheUse::Built;
+        } else {
+            load.cache = CacheUse::NotWritten;
+            load.cacheNote += QStringLiteral("; ") + error;
+        }
+    }
+    load.ms = timer.nsecsElapsed() / 1e6;
+    return load;
+}
 
 // dlib's face detector allocates a hundred or so arrays per scan (the HOG planes of every
 // pyramid level and their filtered copies), and its speed depends on where they fall: on
@@ -114,8 +186,20 @@ public:
 
     const dlib::frontal_face_detector &all()
     {
-        std::call_once(m_decoded, [this] { m_all.emplace(dlib::get_frontal_face_detector()); });
+        std::call_once(m_decoded, [this] {
+            dlib::frontal_face_detector detector;
+            const FaceDetectorLoad load = loadDetector(detectionCacheDir(), &detector);
+            std::lock_guard lock(m_mutex);
+            m_load = load;
+            m_all.emplace(std::move(detector));
+        });
         return *m_all;
+    }
+
+    FaceDetectorLoad load()
+    {
+        std::lock_guard lock(m_mutex);
+        return m_load;
     }
 
     // A scan thread for one scan, back among the idle ones when the lease ends.
@@ -151,6 +235,7 @@ private:
     std::once_flag m_decoded;
     std::optional<dlib::frontal_face_detector> m_all;
     std::mutex m_mutex;
+    FaceDetectorLoad m_load;
     std::vector<std::unique_ptr<ScanThread>> m_idle;
 };
 
@@ -170,6 +255,17 @@ std::vector<FaceBox> scanFaces(const QImage &gray, unsigned long levels)
     for (const auto &d : dets)
         out.push_back({QRectF(d.rect.left(), d.rect.top(), d.rect.width(), d.rect.height()), d.detection_confidence});
     return out;
+}
+
+FaceDetectorLoad loadFaceDetector(const QString &cacheDir)
+{
+    dlib::frontal_face_detector detector;
+    return loadDetector(cacheDir, &detector);
+}
+
+FaceDetectorLoad faceDetectorLoad()
+{
+    return FaceScanner::instance().load();
 }
 
 void warmUpFaceScan(QSize size)

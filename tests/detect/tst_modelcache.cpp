@@ -1,4 +1,5 @@
 #include "detect/detector.h"
+#include "detect/facescan.h"
 #include "detect/grayview.h"
 #include "detect/landmarkpredictor.h"
 #include "detect/modelcache.h"
@@ -12,6 +13,7 @@
 #include <QTest>
 
 #include <dlib/image_processing/shape_predictor.h>
+#include <dlib/revision.h>
 #include <dlib/serialize.h>
 
 #include <cmath>
@@ -122,6 +124,9 @@ private Q_SLOTS:
     void concurrentThreadsLeaveOneCache();
     void concurrentProcessesLeaveOneCache();
     void missingModelNamed();
+    void faceDetectorCache();
+    void faceDetectorCacheDamaged_data();
+    void faceDetectorCacheDamaged();
 
 private:
     std::unique_ptr<QTemporaryDir> m_dir;
@@ -142,9 +147,9 @@ void TestModelCache::cacheDirFollowsTheEnvironment()
 {
     const QByteArray old = qgetenv("TOONFACE_CACHE_DIR");
     qputenv("TOONFACE_CACHE_DIR", QFile::encodeName(m_cacheDir));
-    QCOMPARE(landmarkCacheDir(), m_cacheDir);
+    QCOMPARE(detectionCacheDir(), m_cacheDir);
     qunsetenv("TOONFACE_CACHE_DIR");
-    const QString fallback = landmarkCacheDir();
+    const QString fallback = detectionCacheDir();
     QVERIFY(fallback.endsWith(QStringLiteral("/toonface")));
     QVERIFY(fallback != m_cacheDir);
     if (!old.isEmpty())
@@ -265,10 +270,10 @@ void TestModelCache::damagedCacheRejectedAndRebuilt_data()
     QTest::newRow("a byte longer") << QStringLiteral("long1") << QStringLiteral("bytes, not the");
     QTest::newRow("a leaf byte changed") << QStringLiteral("flipEnd") << QStringLiteral("checksum");
     QTest::newRow("a table byte changed") << QStringLiteral("flipTable") << QStringLiteral("checksum");
-    QTest::newRow("magic") << QStringLiteral("magic") << QStringLiteral("not a landmark model cache");
+    QTest::newRow("magic") << QStringLiteral("magic") << QStringLiteral("not a cache of this kind");
     QTest::newRow("version") << QStringLiteral("version") << QStringLiteral("another version");
     QTest::newRow("text") << QStringLiteral("text") << QStringLiteral("cut short");
-    QTest::newRow("random bytes") << QStringLiteral("random") << QStringLiteral("not a landmark model cache");
+    QTest::newRow("random bytes") << QStringLiteral("random") << QStringLiteral("not a cache of this kind");
 }
 
 void TestModelCache::damagedCacheRejectedAndRebuilt()
@@ -450,6 +455,68 @@ void TestModelCache::missingModelNamed()
     QVERIFY(!load.model);
     QVERIFY2(load.error.contains(missing) && load.error.contains(QStringLiteral("is missing")), qPrintable(load.error));
     QVERIFY(entriesOf(m_cacheDir).isEmpty());
+}
+
+// dlib's face detector, decoded once (about 0.4 s) and then read from its cache: the same
+// detector either way.
+void TestModelCache::faceDetectorCache()
+{
+    const FaceDetectorLoad built = loadFaceDetector(m_cacheDir);
+    QCOMPARE(built.cache, CacheUse::Built);
+    QVERIFY(QFileInfo::exists(built.cachePath));
+    QCOMPARE(QFileInfo(built.cachePath).absolutePath(), QDir(m_cacheDir).absolutePath());
+    const FaceDetectorLoad used = loadFaceDetector(m_cacheDir);
+    QCOMPARE(used.cache, CacheUse::Used);
+    QCOMPARE(used.fingerprint, built.fingerprint);
+    const FaceDetectorLoad decoded = loadFaceDetector(QString());
+    QCOMPARE(decoded.cache, CacheUse::Off);
+    QCOMPARE(decoded.fingerprint, built.fingerprint);
+}
+
+void TestModelCache::faceDetectorCacheDamaged_data()
+{
+    QTest::addColumn<QString>("damage");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("cut") << QStringLiteral("cut") << QStringLiteral("bytes, not the");
+    QTest::newRow("a byte changed") << QStringLiteral("flip") << QStringLiteral("checksum");
+    // A whole file of the right kind whose content is not a detector.
+    QTest::newRow("not a detector") << QStringLiteral("garbage") << QStringLiteral("damaged");
+    QTest::newRow("a model's cache") << QStringLiteral("model") << QStringLiteral("not a cache of this kind");
+}
+
+void TestModelCache::faceDetectorCacheDamaged()
+{
+    QFETCH(QString, damage);
+    QFETCH(QString, expected);
+    const FaceDetectorLoad built = loadFaceDetector(m_cacheDir);
+    QCOMPARE(built.cache, CacheUse::Built);
+    if (damage == QLatin1StringView("garbage")) {
+        const QByteArray junk(4000, 'x');
+        QString error;
+        QVERIFY(writeCacheFile(built.cachePath, "HOGD",
+            {quint64(DLIB_MAJOR_VERSION) * 1000000 + DLIB_MINOR_VERSION * 1000 + DLIB_PATCH_VERSION, 0, 0},
+            std::as_bytes(std::span(junk.constData(), size_t(junk.size()))), &error));
+    } else if (damage == QLatin1StringView("model")) {
+        const LandmarkModelLoad model = loadLandmarkModel(m_model, m_cacheDir);
+        QVERIFY(QFile::remove(built.cachePath));
+        QVERIFY(QFile::copy(model.cachePath, built.cachePath));
+    } else {
+        QFile file(built.cachePath);
+        QVERIFY(file.open(QIODevice::ReadWrite));
+        if (damage == QLatin1StringView("cut")) {
+            QVERIFY(file.resize(file.size() - 100));
+        } else {
+            file.seek(5000);
+            const char c = file.read(1).at(0);
+            file.seek(5000);
+            file.write(QByteArray(1, char(c ^ 0x04)));
+        }
+    }
+    const FaceDetectorLoad again = loadFaceDetector(m_cacheDir);
+    QCOMPARE(again.cache, CacheUse::Built);
+    QVERIFY2(again.cacheNote.contains(expected), qPrintable(again.cacheNote));
+    QCOMPARE(again.fingerprint, built.fingerprint);
+    QCOMPARE(loadFaceDetector(m_cacheDir).cache, CacheUse::Used);
 }
 
 int main(int argc, char *argv[])
