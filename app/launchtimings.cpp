@@ -20,7 +20,7 @@ LaunchTimings::LaunchTimings(MainWindow *window, QElapsedTimer clock)
     window->installEventFilter(this);
     window->photoView()->viewport()->installEventFilter(this);
     connect(window, &MainWindow::fileOpened, this, [this] { print("photo-opened"); });
-    connect(window, &MainWindow::detectionDone, this, [this] {
+    connect(window, &MainWindow::pointsPlaced, this, [this] {
         m_awaitingPoints = true;
         m_window->photoView()->viewport()->update();
     });

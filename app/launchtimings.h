@@ -12,8 +12,8 @@ class MainWindow;
 // on stderr, as "toonface: timing: EVENT MS" in milliseconds since main() began, when the
 // window is first painted ("window-shown") and then idle ("window-usable"), when a photo was
 // asked for ("open"), opened ("photo-opened") and when its detected points have been painted
-// ("points-shown"). TOONFACE_TIMINGS_OPEN_DELAY_MS=N holds the photo of the command line back
-// N ms after the window is usable, as a person opening a photo after launch would.
+// ("points-shown", MainWindow::pointsPlaced()). TOONFACE_TIMINGS_OPEN_DELAY_MS=N holds the photo of the command line
+// back N ms after the window is usable, as a person opening a photo after launch would.
 class LaunchTimings : public QObject
 {
 public:

@@ -1,4 +1,5 @@
 #include "detect/detector.h"
+#include "detect/facescan.h"
 #include "detect/modelcache.h"
 
 #include <QDir>
@@ -95,7 +96,11 @@ void TestDetectionWarmUp::warmUpIsOncePerProcess()
     warmUpDetection();
     waitForDetectionWarmUp();
     QCOMPARE(landmarkModelLoad().model, model);
-    QCOMPARE(QDir(m_cache.path()).entryList(QDir::Files).size(), 1);
+    // One cache for the model, one for the face detector, each made once.
+    QCOMPARE(QDir(m_cache.path()).entryList(QDir::Files).size(), 2);
+    const FaceDetectorLoad detector = faceDetectorLoad();
+    QCOMPARE(detector.cache, CacheUse::Built);
+    QCOMPARE(QFileInfo(detector.cachePath).absolutePath(), QDir(m_cache.path()).absolutePath());
 }
 
 // The scan threads are shared by the process: detections at once each get one.
