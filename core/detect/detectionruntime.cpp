@@ -5,6 +5,7 @@
 
 #include <QCoreApplication>
 
+#include <future>
 #include <mutex>
 #include <thread>
 
@@ -49,12 +50,27 @@ public:
             // The application waits for the threads before it tears down what they use.
             qAddPostRoutine(&waitForDetectionWarmUp);
             std::lock_guard lock(m_mutex);
-            m_stages = std::thread([] { warmUpFaceRefinement(); });
+            m_refinementReady = m_refinementDone.get_future().share();
+            m_stages = std::thread([this] {
+                warmUpFaceRefinement();
+                m_refinementDone.set_value();
+            });
             m_model = std::thread([] {
                 sharedLandmarkModel(nullptr);
                 warmUpFaceScan(kFirstPassSize);
             });
         });
+    }
+
+    void awaitRefinement()
+    {
+        std::shared_future<void> ready;
+        {
+            std::lock_guard lock(m_mutex);
+            ready = m_refinementReady;
+        }
+        if (ready.valid())
+            ready.wait();
     }
 
     void wait()
@@ -77,6 +93,8 @@ private:
 
     std::once_flag m_started;
     std::mutex m_mutex;
+    std::promise<void> m_refinementDone;
+    std::shared_future<void> m_refinementReady; // valid once the warm-up started
     std::thread m_model;
     std::thread m_stages;
 };
@@ -128,6 +146,11 @@ LandmarkModelLoad landmarkModelLoad()
 void warmUpDetection()
 {
     WarmUp::instance().start();
+}
+
+void awaitFaceRefinementWarmUp()
+{
+    WarmUp::instance().awaitRefinement();
 }
 
 void waitForDetectionWarmUp()

@@ -26,4 +26,9 @@ std::shared_ptr<const LandmarkPredictor> sharedLandmarkModel(QString *error, Lan
 // allocations) is done; needs no model (detector.cpp).
 void warmUpFaceRefinement();
 
+// Waits until the warm-up's run of those stages has ended, when one is under way (at once
+// otherwise). OpenCV makes its colour tables without a lock: a detection reaching them while
+// the warm-up makes them would make them a second time beside it, so it waits instead.
+void awaitFaceRefinementWarmUp();
+
 } // namespace toonface

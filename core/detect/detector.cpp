@@ -366,6 +366,7 @@ bool placeFace(const LandmarkPredictor &model, const QImage &image, const QImage
     out->geometric = faceFromLandmarks68(out->ibug, image.size());
     if (!endStage(QStringLiteral("landmarks")))
         return false;
+    awaitFaceRefinementWarmUp();
     return refineFace(image, withDebugImages, out, endStage);
 }
 
