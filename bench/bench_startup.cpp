@@ -229,11 +229,11 @@ static QJsonObject benchFirstVsTenth()
         return {{QStringLiteral("skipped"), QStringLiteral("no portrait or no landmark model")}};
     const QString cache = warmCacheIn(QDir(dir.path()));
     QJsonObject out;
-    for (const QString mode : {QStringLiteral("warmed"), QStringLiteral("cli"), QStringLiteral("none")}) {
+    for (const QString &mode : {QStringLiteral("warmed"), QStringLiteral("cli"), QStringLiteral("none")}) {
         std::vector<double> first, tenth, firstTotal, tenthTotal, at;
         QJsonObject sample;
         for (int run = 0; run < 5; ++run) {
-            const QJsonObject r = runChild(
+            const QJsonObject r = bench::runChild(
                 QStringLiteral("detections"), {portrait, mode}, {QStringLiteral("TOONFACE_CACHE_DIR=") + cache});
             if (r.contains(QStringLiteral("error")))
                 return r;
@@ -271,7 +271,8 @@ static QJsonObject benchCli()
         return {{QStringLiteral("skipped"), QStringLiteral("no portrait or no landmark model")}};
     const QString cli = QStringLiteral(TOONFACE_CLI_PATH);
     const QString cache = warmCacheIn(scratch);
-    const QStringList detect {QStringLiteral("detect"), portrait, QStringLiteral("-o"), scratch.filePath("face.json")};
+    const QStringList detect {
+        QStringLiteral("detect"), portrait, QStringLiteral("-o"), scratch.filePath(QStringLiteral("face.json"))};
     const QStringList cartoon {
         QStringLiteral("cartoon"), portrait, QStringLiteral("-o"), scratch.filePath(QStringLiteral("face.svg"))};
     QJsonObject out;
