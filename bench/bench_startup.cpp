@@ -314,11 +314,12 @@ EditorRun launchEditor(const QString &photo, int openDelayMs, const QString &cac
     QElapsedTimer timer;
     timer.start();
     process.start(QStringLiteral(TOONFACE_EDITOR_PATH), {photo});
+    // The timings come on stderr: waitForReadyRead() waits on the channel read.
+    process.setReadChannel(QProcess::StandardError);
     QByteArray pending;
     while (timer.elapsed() < 30000 && !run.editorMs.contains(QStringLiteral("points-shown"))) {
         if (!process.waitForReadyRead(30000 - int(timer.elapsed())) && process.state() != QProcess::Running)
             break;
-        process.setReadChannel(QProcess::StandardError);
         pending += process.readAllStandardError();
         const double at = timer.nsecsElapsed() / 1e6;
         while (pending.contains('\n')) {
