@@ -1,4 +1,5 @@
 #include "cli/command.h"
+#include "detect/detector.h"
 
 #include <QGuiApplication>
 #include <QTextStream>
@@ -33,6 +34,34 @@ void printHelp()
            "5 the audio and the script could not be aligned, 1 other failures.\n";
 }
 
+const Command *findCommand(const QString &name)
+{
+    for (const Command &c : commands()) {
+        if (c.name == name)
+            return &c;
+    }
+    return nullptr;
+}
+
+// Whether the arguments of a detecting command may lead to the landmark method: not for
+// help, nor with --method classic, nor when the input is a face JSON or a project (their
+// points are given). A guess before the command parses its options (an argument right after
+// an option is taken for its value, not for the input): a wrong one costs only time.
+bool mayUseLandmarks(const QStringList &args)
+{
+    for (int i = 1; i < args.size(); ++i) {
+        const QString &a = args[i];
+        if (a == QLatin1StringView("--help") || a == QLatin1StringView("-h")
+            || a == QLatin1StringView("--method=classic")
+            || (a == QLatin1StringView("--method") && args.value(i + 1) == QLatin1StringView("classic")))
+            return false;
+        const bool input = !a.startsWith(QLatin1Char('-')) && (i == 1 || !args[i - 1].startsWith(QLatin1Char('-')));
+        if (input && (a.endsWith(QLatin1StringView(".json")) || a.endsWith(QLatin1StringView(".toonface"))))
+            return false;
+    }
+    return true;
+}
+
 } // namespace
 
 int main(int argc, char *argv[])
@@ -42,6 +71,10 @@ int main(int argc, char *argv[])
     QStringList args;
     for (int i = 1; i < argc; ++i)
         args << QString::fromLocal8Bit(argv[i]);
+    // A command that will detect a face starts detection's one-time work now, on the other
+    // core, while the application starts and the photo is read.
+    if (const Command *command = findCommand(args.value(0)); command && command->detects && mayUseLandmarks(args))
+        toonface::warmUpDetection();
     // Rendering text and SVG needs a GUI application, but never a display.
     if (!qEnvironmentVariableIsSet("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
@@ -61,9 +94,10 @@ int main(int argc, char *argv[])
         QTextStream(stdout) << "toonface-cli " << TOONFACE_VERSION << Qt::endl;
         return ExitOk;
     }
-    for (const Command &c : commands()) {
-        if (c.name == first)
-            return c.run(c, args);
+    if (const Command *command = findCommand(first)) {
+        const int code = command->run(*command, args);
+        toonface::waitForDetectionWarmUp();
+        return code;
     }
     return fail(ExitUsage, QStringLiteral("unknown command '%1'; try 'toonface-cli --help'").arg(first));
 }

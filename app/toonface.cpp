@@ -1,8 +1,10 @@
+#include "launchtimings.h"
 #include "window/mainwindow.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QTimer>
@@ -54,6 +56,11 @@ void scheduleScreenshot(toonface::MainWindow &window, const QString &path, const
 
 int main(int argc, char *argv[])
 {
+    QElapsedTimer clock;
+    clock.start();
+    // Detection's one-time work (the landmark model, the face detector) goes on in the
+    // background while the application and its window start.
+    toonface::warmUpDetection();
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("Toonface"));
     QApplication::setApplicationName(QStringLiteral("toonface"));
@@ -85,7 +92,15 @@ int main(int argc, char *argv[])
         window.setDetectionMethod(method);
     window.show();
     const QStringList files = parser.positionalArguments();
-    window.startup(files.isEmpty() ? QString() : QDir::current().absoluteFilePath(files.first()));
+    const QString file = files.isEmpty() ? QString() : QDir::current().absoluteFilePath(files.first());
+    if (toonface::LaunchTimings::wanted()) {
+        auto *timings = new toonface::LaunchTimings(&window, clock);
+        window.startup({});
+        if (!file.isEmpty())
+            timings->open(file);
+    } else {
+        window.startup(file);
+    }
 
     const QString screenshot = qEnvironmentVariable("TOONFACE_SCREENSHOT");
     if (!screenshot.isEmpty())

@@ -96,9 +96,9 @@ TOONFACE_BENCHMARK("io.project10min", [] {
     r.insert(QStringLiteral("jsonToTextMs"), textMs);
     r.insert(QStringLiteral("plainWriteMs"), plainWriteMs);
     r.insert(QStringLiteral("fileKB"), double(QFileInfo(file).size()) / 1024.0);
-    r.insert(QStringLiteral("mouthKeys"), project.timeline.mouthKeys().size());
-    r.insert(QStringLiteral("blinks"), project.timeline.blinks().size());
-    r.insert(QStringLiteral("headKeys"), project.timeline.headKeys().size());
+    r.insert(QStringLiteral("mouthKeys"), int(project.timeline.mouthKeys().size()));
+    r.insert(QStringLiteral("blinks"), int(project.timeline.blinks().size()));
+    r.insert(QStringLiteral("headKeys"), int(project.timeline.headKeys().size()));
     r.insert(QStringLiteral("ok"), ok);
     if (!ok)
         r.insert(QStringLiteral("error"), error);

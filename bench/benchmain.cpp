@@ -4,6 +4,7 @@
 #include <QFileInfo>
 #include <QGuiApplication>
 #include <QJsonDocument>
+#include <QProcess>
 #include <QTextStream>
 #include <QThread>
 
@@ -15,6 +16,25 @@ std::vector<Benchmark> &registry()
 {
     static std::vector<Benchmark> r;
     return r;
+}
+
+std::vector<Child> &children()
+{
+    static std::vector<Child> c;
+    return c;
+}
+
+QJsonObject runChild(const QString &name, const QStringList &args, const QStringList &env)
+{
+    QProcess process;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    for (const QString &entry : env)
+        environment.insert(entry.section(QLatin1Char('='), 0, 0), entry.section(QLatin1Char('='), 1));
+    process.setProcessEnvironment(environment);
+    process.start(QCoreApplication::applicationFilePath(), QStringList {QStringLiteral("--child"), name} + args);
+    if (!process.waitForFinished(300000) || process.exitCode() != 0)
+        return {{QStringLiteral("error"), QString::fromLocal8Bit(process.readAllStandardError()).trimmed()}};
+    return QJsonDocument::fromJson(process.readAllStandardOutput()).object();
 }
 
 double medianMs(const std::function<void()> &fn, int minRuns, double minMs)
@@ -48,6 +68,20 @@ QString sharedDataDir()
 // figures and the machine it ran on.
 int main(int argc, char *argv[])
 {
+    // A child measurement sets up its process itself (before any application object).
+    if (argc >= 3 && qstrcmp(argv[1], "--child") == 0) {
+        QStringList args;
+        for (int i = 3; i < argc; ++i)
+            args << QString::fromLocal8Bit(argv[i]);
+        for (const auto &c : toonface::bench::children()) {
+            if (c.name == QLatin1StringView(argv[2])) {
+                QTextStream(stdout) << QJsonDocument(c.run(args)).toJson(QJsonDocument::Compact) << Qt::endl;
+                return 0;
+            }
+        }
+        QTextStream(stderr) << "no child measurement " << argv[2] << Qt::endl;
+        return 2;
+    }
     QGuiApplication app(argc, argv);
     const QStringList filters = app.arguments().mid(1);
     QJsonObject results;

@@ -3,6 +3,7 @@
 #include <QElapsedTimer>
 #include <QJsonObject>
 #include <QString>
+#include <QStringList>
 
 #include <functional>
 #include <vector>
@@ -26,6 +27,28 @@ struct Registrar
     }
 };
 
+// A measurement that needs a process of its own (the first detection is first only once per
+// process): `toonface-bench --child NAME ARGS...` runs it and prints its JSON on stdout.
+struct Child
+{
+    QString name;
+    std::function<QJsonObject(const QStringList &args)> run;
+};
+
+std::vector<Child> &children();
+
+struct ChildRegistrar
+{
+    ChildRegistrar(const char *name, std::function<QJsonObject(const QStringList &args)> run)
+    {
+        children().push_back({QString::fromLatin1(name), std::move(run)});
+    }
+};
+
+// Runs the child measurement `name` in a new process of this executable with `args` and the
+// extra environment `env` ("NAME=value" entries); its JSON, or {"error": ...}.
+QJsonObject runChild(const QString &name, const QStringList &args, const QStringList &env = {});
+
 // Runs `fn` repeatedly for at least `minMs` milliseconds (and at least `minRuns` times);
 // returns the median time of one run in milliseconds.
 double medianMs(const std::function<void()> &fn, int minRuns = 5, double minMs = 200);
@@ -37,5 +60,7 @@ QString sharedDataDir();
 
 #define TOONFACE_BENCH_CONCAT2(a, b) a##b
 #define TOONFACE_BENCH_CONCAT(a, b) TOONFACE_BENCH_CONCAT2(a, b)
+#define TOONFACE_BENCH_CHILD(name, fn)                                                                                 \
+    static const toonface::bench::ChildRegistrar TOONFACE_BENCH_CONCAT(tfChild_, __LINE__)(name, fn)
 #define TOONFACE_BENCHMARK(name, fn)                                                                                   \
     static const toonface::bench::Registrar TOONFACE_BENCH_CONCAT(tfBench_, __LINE__)(name, fn)

@@ -194,7 +194,7 @@ const CommandRegistrar registrar({QStringLiteral("animate"),
     QStringLiteral("animate IMAGE|PROJECT [--audio A --script S | --say TEXT | --video CLIP] [--emotion NAME] "
                    "[--no-blink] [--fps N] [--style NAME] [--frame head|photo] [--project OUT.toonface] -o "
                    "OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"),
-    runAnimate});
+    runAnimate, true});
 
 } // namespace
 

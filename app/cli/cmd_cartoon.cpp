@@ -89,7 +89,7 @@ const CommandRegistrar registrar({QStringLiteral("cartoon"),
     QStringLiteral(
         "cartoon IMAGE|FACE.json|PROJECT.toonface -o OUT.svg [--png OUT.png [--size N]] [--frame head|photo] "
         "[--style NAME] [--emotion NAME]"),
-    runCartoon});
+    runCartoon, true});
 
 } // namespace
 

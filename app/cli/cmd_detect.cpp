@@ -73,7 +73,7 @@ int runDetect(const Command &self, const QStringList &args)
 const CommandRegistrar registrar({QStringLiteral("detect"),
     QStringLiteral("Find the face in a photo and write its 72 points as JSON (toonface.face/1)."),
     QStringLiteral("detect IMAGE [--method auto|classic|landmarks] [-o FACE.json] [--debug-dir DIR] [--face X,Y]"),
-    runDetect});
+    runDetect, true});
 
 } // namespace
 

@@ -27,6 +27,9 @@ struct Command
     QString summary;
     QString usage;
     std::function<int(const Command &self, const QStringList &args)> run;
+    // The command may detect a face in a photo: detection's one-time work starts in the
+    // background at launch (warmUpDetection()), beside the application's own start-up.
+    bool detects = false;
 };
 
 std::vector<Command> &commands();

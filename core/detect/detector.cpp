@@ -1,11 +1,14 @@
 #include "detect/detector.h"
 
 #include "detect/classic.h"
+#include "detect/detectionruntime.h"
+#include "detect/facescan.h"
 #include "detect/grayview.h"
 #include "detect/hairsearch.h"
 #include "detect/headregions.h"
 #include "detect/landmarkmap.h"
 #include "detect/landmarkpredictor.h"
+#include "face/averageface.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -14,21 +17,14 @@
 #include <QPainter>
 
 #include <dlib/image_processing.h>
-#include <dlib/image_processing/frontal_face_detector.h>
 #include <dlib/image_transforms.h>
-#include <dlib/serialize.h>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <condition_variable>
-#include <exception>
-#include <fstream>
-#include <map>
+#include <functional>
 #include <memory>
-#include <mutex>
 #include <numbers>
-#include <thread>
 
 namespace toonface {
 
@@ -47,49 +43,6 @@ constexpr double kPassFaceFractions[] = {1.0 / 3.0, 1.0 / 4.0, 1.0 / 8.0, 1.0 / 
 // Upsampling beyond 2x invents no detail; more than 4 megapixels costs too long.
 constexpr double kMaxUpsampling = 2.0;
 constexpr double kMaxPassPixels = 4.0e6;
-
-struct LoadedModel
-{
-    QString path;
-    std::shared_ptr<const LandmarkPredictor> model;
-};
-
-std::mutex &modelMutex()
-{
-    static std::mutex m;
-    return m;
-}
-
-LoadedModel &loadedModel()
-{
-    static LoadedModel model;
-    return model;
-}
-
-// The model for landmarkModelPath(), loaded at most once per path (a test or the user may
-// point TOONFACE_LANDMARK_MODEL elsewhere). Failures are not cached, so a file that appears
-// later is found. The shared pointer keeps a model alive for detections still using it.
-std::shared_ptr<const LandmarkPredictor> landmarkModel(QString *error, double *loadMs)
-{
-    const QString path = landmarkModelPath();
-    std::lock_guard lock(modelMutex());
-    LoadedModel &loaded = loadedModel();
-    if (loadMs)
-        *loadMs = 0;
-    if (loaded.model && loaded.path == path)
-        return loaded.model;
-
-    QElapsedTimer timer;
-    timer.start();
-    auto model = LandmarkPredictor::read(path, error);
-    if (!model)
-        return {};
-    loaded.path = path;
-    loaded.model = model;
-    if (loadMs)
-        *loadMs = timer.nsecsElapsed() / 1e6;
-    return loaded.model;
-}
 
 // Where the landmarks put the detector's box: the similarity transform (scale, rotation,
 // translation; least squares) that carries the model's mean shape onto `pts`.
@@ -175,32 +128,6 @@ std::array<QPointF, kIbugPointCount> fitUpright(const LandmarkPredictor &model, 
     return p;
 }
 
-// dlib's face detector scanning at most `levels` levels of its image pyramid (0: all of them,
-// down to the smallest layer its window fits). Not thread-safe (it keeps scratch buffers), so
-// one per thread and pyramid depth.
-dlib::frontal_face_detector &threadDetector(unsigned long levels)
-{
-    // dlib decodes its detector from a compressed string (tens of milliseconds): once per process.
-    static const dlib::frontal_face_detector all = dlib::get_frontal_face_detector();
-    thread_local std::map<unsigned long, dlib::frontal_face_detector> detectors;
-    auto it = detectors.find(levels);
-    if (it == detectors.end()) {
-        if (levels == 0) {
-            it = detectors.emplace(levels, all).first;
-        } else {
-            dlib::frontal_face_detector::image_scanner_type scanner;
-            scanner.copy_configuration(all.get_scanner());
-            scanner.set_max_pyramid_levels(levels);
-            std::vector<dlib::frontal_face_detector::feature_vector_type> filters;
-            for (unsigned long i = 0; i < all.num_detectors(); ++i)
-                filters.push_back(all.get_w(i));
-            it = detectors.emplace(levels, dlib::frontal_face_detector(scanner, all.get_overlap_tester(), filters))
-                     .first;
-        }
-    }
-    return it->second;
-}
-
 QImage resizedGray(const QImage &gray, double scale)
 {
     const int w = std::max(1, int(std::lround(gray.width() * scale)));
@@ -234,87 +161,15 @@ QImage toGray(const QImage &image)
     return gray;
 }
 
-struct FaceBox
-{
-    QRectF box; // in full-image pixels
-    double score = 0;
-};
-
-// dlib's face detector allocates a hundred or so arrays per scan (the HOG planes of every
-// pyramid level and their filtered copies), and its speed depends on where they fall: on
-// this project's machines the same 320 x 240 scan took 5.6 ms or 19 ms from one detection to
-// the next, following what the rest of the detection had allocated and freed on the thread's
-// heap. Scanning on a thread of its own, whose heap (glibc's per-thread arena) holds only the
-// scanner's arrays, gives the same layout every time: 5.6-6.3 ms. One such thread per calling
-// thread, so that detections on several threads still run side by side.
-class ScanThread
-{
-public:
-    ScanThread()
-        : m_thread([this] { loop(); })
-    { }
-    ~ScanThread()
-    {
-        {
-            std::lock_guard lock(m_mutex);
-            m_stop = true;
-        }
-        m_wake.notify_all();
-        m_thread.join();
-    }
-
-    // Runs `job` on the scan thread and waits for it; an exception it throws is rethrown here.
-    void run(const std::function<void()> &job)
-    {
-        std::unique_lock lock(m_mutex);
-        m_job = &job;
-        m_error = nullptr;
-        m_wake.notify_all();
-        m_wake.wait(lock, [this] { return m_job == nullptr; });
-        if (m_error)
-            std::rethrow_exception(m_error);
-    }
-
-private:
-    void loop()
-    {
-        std::unique_lock lock(m_mutex);
-        for (;;) {
-            m_wake.wait(lock, [this] { return m_stop || m_job != nullptr; });
-            if (m_stop)
-                return;
-            try {
-                (*m_job)();
-            } catch (...) {
-                m_error = std::current_exception();
-            }
-            m_job = nullptr;
-            m_wake.notify_all();
-        }
-    }
-
-    std::mutex m_mutex;
-    std::condition_variable m_wake;
-    const std::function<void()> *m_job = nullptr;
-    std::exception_ptr m_error;
-    bool m_stop = false;
-    std::thread m_thread; // last: started once the members it uses exist
-};
-
 // The faces in a copy of `gray` scaled by `scale`, scanning `levels` pyramid levels (0: all).
 std::vector<FaceBox> findFaces(const QImage &gray, double scale, unsigned long levels)
 {
     const QImage small = qFuzzyCompare(scale, 1.0) ? gray : resizedGray(gray, scale);
-    std::vector<dlib::rect_detection> dets;
-    thread_local ScanThread scanner;
-    scanner.run([&] { threadDetector(levels)(viewOf(small), dets); });
-    std::vector<FaceBox> out;
-    for (const auto &d : dets) {
-        // dlib's rectangles are inclusive: pixel columns left..right of the scaled copy,
-        // which cover [left / scale, (right + 1) / scale) of the photo.
-        const QRectF r(d.rect.left() / scale, d.rect.top() / scale, d.rect.width() / scale, d.rect.height() / scale);
-        out.push_back({r, d.detection_confidence});
-    }
+    std::vector<FaceBox> out = scanFaces(small, levels);
+    // dlib's rectangles are inclusive: pixel columns left..right of the scaled copy, which
+    // cover [left / scale, (right + 1) / scale) of the photo.
+    for (FaceBox &f : out)
+        f.box = QRectF(f.box.left() / scale, f.box.top() / scale, f.box.width() / scale, f.box.height() / scale);
     return out;
 }
 
@@ -457,6 +312,64 @@ bool wantsDebugImages(const DetectOptions &options)
     return options.keepDebugImages || !options.debugDir.isEmpty();
 }
 
+// What placeFace() found: the 68 landmarks, the 72 points mapped from them, the same refined
+// with the photo (hair, ears), and what tracking reuses.
+struct PlacedFace
+{
+    std::array<QPointF, kIbugPointCount> ibug {};
+    FaceModel geometric;
+    FaceModel refined;
+    HairSearchReport hair;
+    HeadRegionReport head;
+    TrackingSeed seed;
+};
+
+// Hair and ears of out->geometric: the thesis' regions where they are usable; elsewhere the
+// colour search of hairsearch.h, which keeps the geometric estimate where the photo does not
+// settle a point. Then what tracking reuses.
+bool refineFace(const QImage &image, bool withDebugImages, PlacedFace *out,
+    const std::function<bool(const QString &stage)> &endStage)
+{
+    FaceModel searched = out->geometric;
+    refineFromPhoto(&searched, image, &out->hair, withDebugImages);
+    if (!endStage(QStringLiteral("hair")))
+        return false;
+    FaceModel fromRegions = searched;
+    out->head = refineFromRegions(&fromRegions, image, withDebugImages);
+    out->refined = searched;
+    for (int i = 0; i < kPointCount; ++i) {
+        const PointGroup g = pointTable()[i].group;
+        const bool leftEar
+            = i == pt::idx("10.2") || i == pt::idx("10.4") || i == pt::idx("10.6") || i == pt::idx("10.10");
+        if ((g == PointGroup::Hair && out->head.hairUsable)
+            || (g == PointGroup::Ears && out->head.earUsable[leftEar ? 0 : 1]))
+            out->refined.setPoint(i, fromRegions.point(i));
+    }
+    // The seed for tracking: the regions' thresholds and colours, the geometry of the points,
+    // and the edge thresholds of the classic method's square around them (thesis 6.3).
+    out->seed = out->head.seed;
+    seedGeometryFromPoints(out->refined, &out->seed);
+    measureEdgeThresholds(image, &out->seed);
+    out->seed.valid = out->head.seed.valid;
+    return endStage(QStringLiteral("regions"));
+}
+
+// Places the 72 points of the face the detector boxed in `box`: the landmarks, then hair and
+// ears from the photo (refineFace). `endStage` is told as each stage ends ("landmarks",
+// "hair", "regions"); when it answers false the work stops there and false is returned.
+bool placeFace(const LandmarkPredictor &model, const QImage &image, const QImage &gray, const QRectF &box,
+    bool withDebugImages, PlacedFace *out, const std::function<bool(const QString &stage)> &endStage)
+{
+    const GrayView view = viewOf(gray);
+    const auto first = model.predict(view, pixelBox(box));
+    out->ibug = fitUpright(model, view, box, first);
+    out->geometric = faceFromLandmarks68(out->ibug, image.size());
+    if (!endStage(QStringLiteral("landmarks")))
+        return false;
+    awaitFaceRefinementWarmUp();
+    return refineFace(image, withDebugImages, out, endStage);
+}
+
 // The thesis pipeline (classic.h): one face, found by its eye pair. Only a pair that passed the
 // face checks (ClassicResult::eyePairInFace) is a face: where none did, the thesis' own choice
 // by eq. (3.5) is a dark pair anywhere in the photo (a sleeve, a curtain's folds), and 72 points
@@ -546,11 +459,6 @@ QString landmarkModelPath()
     return QStringLiteral("/usr/share/dlib/shape_predictor_68_face_landmarks.dat");
 }
 
-bool preloadLandmarkModel(QString *error, double *loadMs)
-{
-    return bool(landmarkModel(error, loadMs));
-}
-
 namespace {
 
 DetectionResult runDetection(
@@ -580,7 +488,7 @@ DetectionResult runDetection(
         return detectWithClassic(image, options, report);
 
     QString modelError;
-    const auto model = landmarkModel(&modelError, nullptr);
+    const auto model = sharedLandmarkModel(&modelError);
     if (!model) {
         result.status = DetectStatus::ModelMissing;
         result.error = modelError;
@@ -655,38 +563,24 @@ DetectionResult runDetection(
     }
 
     report(0.5, QStringLiteral("landmarks"));
-    const GrayView view = viewOf(gray);
-    const auto first = model->predict(view, pixelBox(face.box));
-    const std::array<QPointF, kIbugPointCount> ibug = fitUpright(*model, view, face.box, first);
-    const FaceModel geometric = faceFromLandmarks68(ibug, image.size());
-    lap(QStringLiteral("landmarks"));
-    if (cancelled())
+    PlacedFace placed;
+    const bool whole
+        = placeFace(*model, image, gray, face.box, wantsDebugImages(options), &placed, [&](const QString &stage) {
+              lap(stage);
+              if (stage == QLatin1StringView("landmarks")) {
+                  if (cancelled())
+                      return false;
+                  report(0.7, QStringLiteral("hair"));
+              }
+              return true;
+          });
+    if (!whole)
         return result;
-
-    // Hair and ears: the thesis' regions where they are usable; elsewhere the colour search of
-    // hairsearch.h, which keeps the geometric estimate where the photo does not settle a point.
-    report(0.7, QStringLiteral("hair"));
-    FaceModel searched = geometric;
-    HairSearchReport hair;
-    refineFromPhoto(&searched, image, &hair, wantsDebugImages(options));
-    lap(QStringLiteral("hair"));
-    FaceModel fromRegions = searched;
-    const HeadRegionReport head = refineFromRegions(&fromRegions, image, wantsDebugImages(options));
-    FaceModel refined = searched;
-    for (int i = 0; i < kPointCount; ++i) {
-        const PointGroup g = pointTable()[i].group;
-        const bool leftEar
-            = i == pt::idx("10.2") || i == pt::idx("10.4") || i == pt::idx("10.6") || i == pt::idx("10.10");
-        if ((g == PointGroup::Hair && head.hairUsable) || (g == PointGroup::Ears && head.earUsable[leftEar ? 0 : 1]))
-            refined.setPoint(i, fromRegions.point(i));
-    }
-    // The seed for tracking: the regions' thresholds and colours, the geometry of the points,
-    // and the edge thresholds of the classic method's square around them (thesis 6.3).
-    TrackingSeed seed = head.seed;
-    seedGeometryFromPoints(refined, &seed);
-    measureEdgeThresholds(image, &seed);
-    seed.valid = head.seed.valid;
-    lap(QStringLiteral("regions"));
+    const auto &ibug = placed.ibug;
+    const FaceModel &geometric = placed.geometric;
+    const FaceModel &refined = placed.refined;
+    const HairSearchReport &hair = placed.hair;
+    const HeadRegionReport &head = placed.head;
     result.timingMs.insert(QStringLiteral("total"), total.nsecsElapsed() / 1e6);
     if (cancelled())
         return result;
@@ -710,7 +604,7 @@ DetectionResult runDetection(
         (head.hairUsable ? 0.4 + 0.5 * head.hairFraction : 0.3 + 0.5 * hair.hairFraction) * base);
 
     result.regions = regionsFromPoints(refined);
-    result.tracking = seed;
+    result.tracking = placed.seed;
 
     if (wantsDebugImages(options))
         addLandmarkDebugImages(&result.debugImages, image, faces, chosen, ibug, geometric, refined, hair, head);
@@ -760,6 +654,32 @@ DetectionResult detectFace(
     if (!options.keepDebugImages)
         result.debugImages.clear();
     return result;
+}
+
+void warmUpFaceRefinement()
+{
+    // A made-up portrait at a webcam's size: a skin-coloured oval under a dark cap of hair on a
+    // grey-blue wall, so that every stage finds something to work on, and the average face on it.
+    constexpr int kWidth = 640, kHeight = 480;
+    QImage photo(kWidth, kHeight, QImage::Format_RGB32);
+    const QPointF centre(kWidth / 2.0, kHeight / 2.0 + 20);
+    for (int y = 0; y < kHeight; ++y) {
+        auto *row = reinterpret_cast<QRgb *>(photo.scanLine(y));
+        for (int x = 0; x < kWidth; ++x) {
+            const double fx = (x - centre.x()) / 110.0, fy = (y - centre.y()) / 140.0;
+            const double hx = (x - centre.x()) / 125.0, hy = (y - centre.y() + 40) / 150.0;
+            if (fx * fx + fy * fy < 1)
+                row[x] = qRgb(215, 170, 140);
+            else if (hx * hx + hy * hy < 1 && y < centre.y())
+                row[x] = qRgb(60, 40, 30);
+            else
+                row[x] = qRgb(120, 130, 150);
+        }
+    }
+    resizedGray(toGray(photo), 0.5);
+    PlacedFace placed;
+    placed.geometric = averageFace(QRectF(centre.x() - 110, centre.y() - 140, 220, 280), photo.size());
+    refineFace(photo, false, &placed, [](const QString &) { return true; });
 }
 
 } // namespace toonface

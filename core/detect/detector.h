@@ -1,6 +1,7 @@
 #pragma once
 
 #include "detect/faceregions.h"
+#include "detect/modelcache.h"
 #include "face/facemodel.h"
 
 #include <QImage>
@@ -64,9 +65,26 @@ using ProgressFn = std::function<void(double fraction, const QString &stage)>;
 DetectionResult detectFace(const QImage &image, const DetectOptions &options = {}, const ProgressFn &progress = {},
     const std::atomic_bool *cancel = nullptr);
 
-// Loads the landmark model now (it is otherwise loaded on first use). Returns false with
-// *error when the model file is missing or unreadable. Thread-safe; loads only once.
+// Loads the landmark model now (it is otherwise loaded on first use), from its cache in
+// detectionCacheDir() (modelcache.h, cachefile.h), writing that cache the first time. Returns false with
+// *error when the model file is missing or unreadable. Thread-safe; loads only once; waits for
+// a load under way (the warm-up's). *loadMs: this call's load, 0 when it found the model loaded.
 bool preloadLandmarkModel(QString *error = nullptr, double *loadMs = nullptr);
 QString landmarkModelPath(); // TOONFACE_LANDMARK_MODEL or Debian's libdlib-data file
+// How the model in use was loaded (from its cache or not, how long it took); no model when
+// none has been loaded yet.
+LandmarkModelLoad landmarkModelLoad();
+
+// Starts, in the background and once per process, what the first detection would otherwise
+// do on its way, one thing after another: the landmark model's load, the face detector's
+// decoding and its scan thread, and a first run of the stages after the scan (their tables,
+// OpenCV's set-up, first allocations). It runs on two threads of its own, beside the caller's
+// start-up; a detection started meanwhile waits only for what it needs. The CLI starts it
+// when a command will detect, the editor when its window opens. Calling it again does nothing.
+void warmUpDetection();
+// Waits until the warm-up has ended (returns at once when none was started). The warm-up's
+// threads must not outlive what they use: QCoreApplication's destructor calls this, and a
+// process without one calls it before it ends.
+void waitForDetectionWarmUp();
 
 } // namespace toonface

@@ -11,6 +11,10 @@
 // the chosen leaves with the next ones already on their way in: about 1.7 ms a fit from cold
 // caches. The pixel features are dlib's own (impl::extract_feature_pixel_values), so the
 // result is dlib's, less its rounding of the points to whole pixels.
+//
+// All the arrays lie in one block of bytes (flat()), which is what the model's cache file
+// holds (modelcache.h): a model is made from such a block in place, without copying it, so
+// that a block mapped from the cache is the model.
 
 #include "detect/landmarkmap.h"
 
@@ -19,7 +23,9 @@
 #include <QString>
 
 #include <array>
+#include <cstddef>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace toonface {
@@ -31,9 +37,19 @@ class LandmarkPredictor
 public:
     using Shape = std::array<QPointF, kIbugPointCount>;
 
-    // Reads a model file; nullptr with `error` naming the file and the problem when it is
-    // missing, unreadable, damaged or not a 68-point model.
+    // Reads a model file of dlib's; nullptr with `error` naming the file and the problem when
+    // it is missing, unreadable, damaged or not a 68-point model.
     static std::shared_ptr<const LandmarkPredictor> read(const QString &path, QString *error);
+
+    // The model held in `block` (as flat() gives it), used in place: `owner` keeps the bytes
+    // alive as long as the model. Every count and offset is checked against the block's size
+    // first, so that a damaged block gives nullptr and *error (the problem, without a file
+    // name), never a read outside it. requires: block.data() aligned to 8 bytes.
+    static std::shared_ptr<const LandmarkPredictor> fromFlat(
+        std::shared_ptr<const void> owner, std::span<const std::byte> block, QString *error);
+
+    // The model's arrays as one block of bytes, for fromFlat().
+    std::span<const std::byte> flat() const { return m_block; }
 
     // The 68 points in `image` for a face in `box` (pixels, inclusive of its right and bottom
     // edge as dlib's rectangles are), to sub-pixel precision.
@@ -48,6 +64,8 @@ public:
 private:
     LandmarkPredictor();
     struct Cascade;
+    std::shared_ptr<const void> m_owner; // keeps m_block's bytes alive
+    std::span<const std::byte> m_block;
     Shape m_meanShape {};
     std::vector<float> m_initial; // x0, y0, x1, y1, ... in the unit square
     std::vector<Cascade> m_cascades;

@@ -5,7 +5,9 @@
 
 #include "testphotos.h"
 
+#include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -15,6 +17,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QXmlStreamReader>
+
+#include <memory>
+#include <vector>
 
 using namespace toonface;
 
@@ -496,6 +501,87 @@ private Q_SLOTS:
             QStringLiteral("--script"), script, QStringLiteral("-o"), path(QStringLiteral("x.svg"))});
         QCOMPARE(r.code, 3);
         QVERIFY(r.err.contains("nope.wav"));
+    }
+
+    // The landmark model's cache: written by the first detecting run, used by the next ones,
+    // made again when damaged; the points the same every time.
+    void detectUsesTheModelCache()
+    {
+        requirePortrait();
+        const QString cacheDir = path(QStringLiteral("model-cache"));
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("TOONFACE_CACHE_DIR"), cacheDir);
+        auto pointsOf = [](const Run &r) {
+            return QJsonDocument::fromJson(r.out).object().value(QLatin1StringView("points")).toArray();
+        };
+        const Run first = cli({QStringLiteral("detect"), kPortrait}, env);
+        QCOMPARE(first.code, 0);
+        // The model's cache and the face detector's.
+        QCOMPARE(QDir(cacheDir).entryList(QDir::Files).size(), 2);
+        QCOMPARE(QDir(cacheDir).entryList({QStringLiteral("*.detector-cache")}, QDir::Files).size(), 1);
+        const QStringList files = QDir(cacheDir).entryList({QStringLiteral("*.landmarks-cache")}, QDir::Files);
+        QCOMPARE(files.size(), 1);
+        const QString cacheFile = QDir(cacheDir).filePath(files.first());
+        const qint64 size = QFileInfo(cacheFile).size();
+        const QDateTime written = QFileInfo(cacheFile).lastModified();
+
+        const Run second = cli({QStringLiteral("detect"), kPortrait}, env);
+        QCOMPARE(second.code, 0);
+        QCOMPARE(pointsOf(second), pointsOf(first));
+        QCOMPARE(QFileInfo(cacheFile).lastModified(), written);
+
+        QFile damaged(cacheFile);
+        QVERIFY(damaged.resize(size / 3));
+        const Run third = cli({QStringLiteral("detect"), kPortrait}, env);
+        QCOMPARE(third.code, 0);
+        QVERIFY2(third.err.isEmpty(), third.err.constData());
+        QCOMPARE(pointsOf(third), pointsOf(first));
+        QCOMPARE(QFileInfo(cacheFile).size(), size);
+        QCOMPARE(QDir(cacheDir).entryList(QDir::Files).size(), 2);
+
+        // Several processes at once with no cache yet: each finds the face, one cache is left.
+        const QString freshDir = path(QStringLiteral("model-cache-concurrent"));
+        env.insert(QStringLiteral("TOONFACE_CACHE_DIR"), freshDir);
+        std::vector<std::unique_ptr<QProcess>> runs;
+        for (int i = 0; i < 3; ++i) {
+            runs.push_back(std::make_unique<QProcess>());
+            runs.back()->setProcessEnvironment(env);
+            runs.back()->start(QStringLiteral(TOONFACE_CLI_PATH), {QStringLiteral("detect"), kPortrait});
+        }
+        for (auto &p : runs) {
+            QVERIFY(p->waitForFinished(120000));
+            QCOMPARE(p->exitCode(), 0);
+            const QJsonArray points = QJsonDocument::fromJson(p->readAllStandardOutput())
+                                          .object()
+                                          .value(QLatin1StringView("points"))
+                                          .toArray();
+            QCOMPARE(points, pointsOf(first));
+        }
+        QCOMPARE(QDir(freshDir).entryList(QDir::Files | QDir::Hidden).size(), 2);
+        const QStringList left = QDir(freshDir).entryList({QStringLiteral("*.landmarks-cache")}, QDir::Files);
+        QCOMPARE(left.size(), 1);
+        QCOMPARE(QFileInfo(QDir(freshDir).filePath(left.first())).size(), size);
+    }
+
+    // Runs that cannot use the landmark model do not start loading it.
+    void noModelWorkWithoutLandmarks()
+    {
+        requirePortrait();
+        const QString cacheDir = path(QStringLiteral("untouched-cache"));
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("TOONFACE_CACHE_DIR"), cacheDir);
+        Project project;
+        project.face = averageFace(QRectF(60, 80, 200, 240), QSize(320, 400));
+        const QString projectPath = path(QStringLiteral("no-model.toonface"));
+        QString error;
+        QVERIFY(saveProject(project, projectPath, &error));
+        QCOMPARE(
+            cli({QStringLiteral("cartoon"), projectPath, QStringLiteral("-o"), path(QStringLiteral("nm.svg"))}, env)
+                .code,
+            0);
+        QCOMPARE(cli({QStringLiteral("detect"), QStringLiteral("--help")}, env).code, 0);
+        cli({QStringLiteral("detect"), kPortrait, QStringLiteral("--method"), QStringLiteral("classic")}, env);
+        QVERIFY(!QFileInfo::exists(cacheDir));
     }
 
     void unwritableOutput()

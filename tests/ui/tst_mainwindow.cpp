@@ -508,6 +508,33 @@ private Q_SLOTS:
         QVERIFY(QRectF(0, 0, 320, 240).contains(doc->face().bounds(PointGroup::Mouth)));
     }
 
+    // The points are placed as soon as they are found, before the detection's steps (drawn
+    // after, in the background); the face then stays as it was placed, in one undo step.
+    void pointsComeBeforeTheSteps()
+    {
+        makeWindow();
+        if (!QFile::exists(kPortrait))
+            QSKIP("grace_hopper.jpg is not installed (package python-matplotlib-data)");
+        QStringList order;
+        FaceModel placed;
+        int stepsWhenPlaced = -1;
+        connect(m_window.get(), &MainWindow::pointsPlaced, this, [&] {
+            order << QStringLiteral("points");
+            placed = m_window->document()->face();
+            stepsWhenPlaced = int(m_window->detectionSteps()->names().size());
+        });
+        connect(m_window.get(), &MainWindow::detectionDone, this, [&] { order << QStringLiteral("done"); });
+        m_window->openFile(kPortrait);
+        QVERIFY(QTest::qWaitFor([&] { return order.contains(QStringLiteral("done")); }, 120000));
+        QCOMPARE(order, QStringList({QStringLiteral("points"), QStringLiteral("done")}));
+        QCOMPARE(stepsWhenPlaced, 0);
+        QVERIFY(!m_window->detectionSteps()->names().isEmpty());
+        const FaceModel &final = m_window->document()->face();
+        for (int i = 0; i < kPointCount; ++i)
+            QCOMPARE(final.point(i), placed.point(i));
+        QCOMPARE(m_window->document()->undoStack()->count(), 1);
+    }
+
     void detectionStepsNeedADetection()
     {
         makeWindow();

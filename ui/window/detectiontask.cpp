@@ -45,17 +45,31 @@ void DetectionTask::start(const QImage &image, const DetectOptions &options)
     drop();
     auto cancelFlag = std::make_shared<std::atomic_bool>(false);
     m_cancel = cancelFlag;
-    DetectOptions withSteps = options;
-    withSteps.keepDebugImages = true;
     QFuture<DetectionResult> future
-        = QtConcurrent::run([image, withSteps, cancelFlag](QPromise<DetectionResult> &promise) {
+        = QtConcurrent::run([image, options, cancelFlag](QPromise<DetectionResult> &promise) {
               promise.setProgressRange(0, kProgressSteps);
-              const ProgressFn report = [&promise](double fraction, const QString &stage) {
-                  promise.setProgressValueAndText(int(fraction * kProgressSteps), stage);
+              auto reporter = [&promise](double from, const QString &label) {
+                  return ProgressFn([&promise, from, label](double fraction, const QString &stage) {
+                      promise.setProgressValueAndText(
+                          int((from + 0.5 * fraction) * kProgressSteps), label.isEmpty() ? stage : label);
+                  });
               };
-              DetectionResult result = detectFace(image, withSteps, report, cancelFlag.get());
-              reduceStepImages(&result.debugImages);
-              promise.addResult(std::move(result));
+              // Result 0: the points alone.
+              DetectOptions pointsOnly = options;
+              pointsOnly.keepDebugImages = false;
+              pointsOnly.debugDir.clear();
+              DetectionResult points = detectFace(image, pointsOnly, reporter(0.0, {}), cancelFlag.get());
+              const bool stop = points.status == DetectStatus::Cancelled || cancelFlag->load();
+              promise.addResult(std::move(points));
+              if (stop)
+                  return;
+              // Result 1: the same with the intermediate images.
+              DetectOptions withSteps = options;
+              withSteps.keepDebugImages = true;
+              DetectionResult steps
+                  = detectFace(image, withSteps, reporter(0.5, QStringLiteral("steps")), cancelFlag.get());
+              reduceStepImages(&steps.debugImages);
+              promise.addResult(std::move(steps));
           });
 
     auto *watcher = new QFutureWatcher<DetectionResult>(this);
@@ -63,6 +77,13 @@ void DetectionTask::start(const QImage &image, const DetectOptions &options)
     connect(watcher, &QFutureWatcherBase::progressValueChanged, this, [this, watcher](int value) {
         if (watcher == m_watcher)
             Q_EMIT progress(double(value) / kProgressSteps, watcher->progressText());
+    });
+    connect(watcher, &QFutureWatcherBase::resultReadyAt, this, [this, watcher](int index) {
+        if (watcher != m_watcher || index != 0 || (m_cancel && m_cancel->load()))
+            return;
+        const DetectionResult points = watcher->resultAt(0);
+        if (points.status != DetectStatus::Cancelled)
+            Q_EMIT pointsReady(points);
     });
     connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] { onFinished(watcher); });
     watcher->setFuture(future);
@@ -93,11 +114,11 @@ void DetectionTask::onFinished(QFutureWatcher<DetectionResult> *watcher)
     const bool wasCancelled = m_cancel && m_cancel->load();
     m_cancel.reset();
     const QFuture<DetectionResult> future = watcher->future();
-    if (wasCancelled || future.resultCount() == 0) {
+    if (wasCancelled || future.resultCount() < 2) {
         Q_EMIT cancelled();
         return;
     }
-    const DetectionResult result = future.result();
+    const DetectionResult result = future.resultAt(1);
     if (result.status == DetectStatus::Cancelled)
         Q_EMIT cancelled();
     else

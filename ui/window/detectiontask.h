@@ -15,9 +15,12 @@ namespace toonface {
 // result by signals on the thread that owns the task. One detection at a time: start()
 // cancels a running one, whose result is then dropped.
 //
-// The result keeps the detection's intermediate images (DetectionResult::debugImages) for
-// the editor's overlays, reduced in the worker to at most kMaxStepImagePixels each and
-// converted for fast drawing, so that a large photo does not hold a dozen full-size copies.
+// The points come first (pointsReady(), without images), so that they are on screen as soon
+// as they are placed; then the worker runs the detection again keeping its intermediate
+// images (DetectionResult::debugImages) for the editor's overlays, and finished() brings them,
+// reduced in the worker to at most kMaxStepImagePixels each and converted for fast drawing, so
+// that a large photo does not hold a dozen full-size copies. Drawing the steps (the thesis'
+// figures beside the landmarks') costs several times the detection itself.
 class DetectionTask : public QObject
 {
     Q_OBJECT
@@ -44,6 +47,10 @@ public:
 
 Q_SIGNALS:
     void progress(double fraction, const QString &stage);
+    // The detection's result without its intermediate images; finished() follows (or
+    // cancelled(), when cancelled meanwhile).
+    void pointsReady(const toonface::DetectionResult &result);
+    // The same result with the intermediate images.
     void finished(const toonface::DetectionResult &result);
     void cancelled();
 

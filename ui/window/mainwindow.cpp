@@ -140,11 +140,17 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
         if (!stage.isEmpty())
             m_busyLabel->setText(tr("Detecting the face: %1").arg(stage));
     });
+    connect(m_detection, &DetectionTask::pointsReady, this, &MainWindow::onPointsReady);
     connect(m_detection, &DetectionTask::finished, this, &MainWindow::onDetectionFinished);
     connect(m_detection, &DetectionTask::cancelled, this, &MainWindow::onDetectionCancelled);
     connect(m_steps, &DetectionSteps::changed, this, &MainWindow::onDetectionStepsChanged);
 
     if (m_options.preloadLandmarkModel) {
+        // The model and the face detector made ready in the background (at once, when the
+        // application's start already began it), so that the first photo's points come as
+        // fast as any later one's. The watcher only waits for the model, to say when it is
+        // unavailable.
+        warmUpDetection();
         auto *watcher = new QFutureWatcher<QString>(this);
         connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
             watcher->deleteLater();
@@ -516,6 +522,7 @@ void MainWindow::startDetection(bool keepHandPlaced, std::optional<QPointF> face
     m_detectKeepsHandPlaced = keepHandPlaced && !faceAt;
     m_detectChoosesFace = faceAt.has_value();
     m_steps->clear(); // the new run's steps replace them
+    m_pointsApplied = false;
     DetectOptions options;
     options.method = detectionMethod();
     options.faceAt = faceAt;
@@ -523,21 +530,18 @@ void MainWindow::startDetection(bool keepHandPlaced, std::optional<QPointF> face
     setBusy(Job::Detecting, tr("Detecting the face…"));
 }
 
-void MainWindow::onDetectionFinished(const DetectionResult &result)
+// The points as soon as they are placed; the steps follow with onDetectionFinished(), which
+// also tells a failure.
+void MainWindow::onPointsReady(const DetectionResult &result)
 {
-    if (m_job == Job::Detecting)
-        setBusy(Job::None, {});
-    // Also when no face was found: the steps show how far the method got.
-    m_steps->setImages(result.debugImages);
-    if (result.status != DetectStatus::Ok) {
-        if (result.status == DetectStatus::BadImage || m_document->hasFace())
-            QMessageBox::warning(this, tr("Detection Failed"),
-                m_document->hasFace() ? tr("%1\nThe points are unchanged.").arg(result.error) : result.error);
-        else // no face, or no detector able to look for one: the user can still place the points
-            offerAverageFace(result.error);
-        Q_EMIT detectionDone();
+    if (result.status != DetectStatus::Ok)
         return;
-    }
+    applyDetectedFace(result);
+    m_pointsApplied = true;
+}
+
+void MainWindow::applyDetectedFace(const DetectionResult &result)
+{
     m_photoView->setOtherFaces(result.otherFaces);
     const bool showOtherFaces = !result.otherFaces.isEmpty() && !m_document->hasFace();
     if (!m_document->hasFace() || m_detectChoosesFace) {
@@ -576,6 +580,28 @@ void MainWindow::onDetectionFinished(const DetectionResult &result)
     if (!result.note.isEmpty())
         found += QLatin1Char(' ') + tr("The landmark method could not serve: %1").arg(result.note);
     statusBar()->showMessage(found, result.note.isEmpty() && result.faceCount <= 1 ? kStatusTimeoutMs : 0);
+    Q_EMIT pointsPlaced();
+}
+
+void MainWindow::onDetectionFinished(const DetectionResult &result)
+{
+    if (m_job == Job::Detecting)
+        setBusy(Job::None, {});
+    // Also when no face was found: the steps show how far the method got.
+    m_steps->setImages(result.debugImages);
+    if (result.status != DetectStatus::Ok) {
+        if (result.status == DetectStatus::BadImage || m_document->hasFace())
+            QMessageBox::warning(this, tr("Detection Failed"),
+                m_document->hasFace() ? tr("%1\nThe points are unchanged.").arg(result.error) : result.error);
+        else // no face, or no detector able to look for one: the user can still place the points
+            offerAverageFace(result.error);
+        Q_EMIT detectionDone();
+        return;
+    }
+    // The points came first (onPointsReady); a detection whose first report was lost places
+    // them now.
+    if (!std::exchange(m_pointsApplied, false))
+        applyDetectedFace(result);
     Q_EMIT detectionDone();
 }
 

@@ -42,7 +42,7 @@ class MainWindow : public QMainWindow
 public:
     struct Options
     {
-        bool preloadLandmarkModel = true; // load the detector's model in the background at start
+        bool preloadLandmarkModel = true; // warm detection up in the background at start (warmUpDetection())
         QString recoveryDirectory; // empty: Autosaver::defaultDirectory()
     };
 
@@ -84,6 +84,9 @@ public:
 Q_SIGNALS:
     void fileOpened(const QString &path);
     void openFailed(const QString &error);
+    // A detection's points are in the document (its steps may still be on their way).
+    void pointsPlaced();
+    // A detection ended: its points placed and its steps ready, or its failure told.
     void detectionDone();
     void exported(const QString &path, const QString &error); // error empty on success
 
@@ -118,6 +121,8 @@ private:
     void onLoaded();
     // faceAt: detect the face whose box holds this point (another face of the photo).
     void startDetection(bool keepHandPlaced, std::optional<QPointF> faceAt = std::nullopt);
+    void onPointsReady(const DetectionResult &result);
+    void applyDetectedFace(const DetectionResult &result);
     void onDetectionFinished(const DetectionResult &result);
     void onDetectionCancelled();
     void offerAverageFace(const QString &reason);
@@ -135,6 +140,7 @@ private:
     void showPointStatus(int index);
     QString dialogDirectory() const;
 
+    bool m_pointsApplied = false; // the running detection's points are in the document
     Options m_options;
     Document *m_document;
     Autosaver *m_autosaver;

@@ -1,0 +1,161 @@
+#include "detect/detectionruntime.h"
+
+#include "detect/detector.h"
+#include "detect/facescan.h"
+
+#include <QCoreApplication>
+
+#include <future>
+#include <mutex>
+#include <thread>
+
+namespace toonface {
+
+namespace {
+
+// The first pass of a detection scans a copy of the photo whose shorter side is 240 pixels
+// (detector.cpp): a 4:3 frame of that height is what the warm-up scans.
+constexpr QSize kFirstPassSize(320, 240);
+
+struct SharedModel
+{
+    std::mutex mutex;
+    QString path;
+    std::shared_ptr<const LandmarkPredictor> model;
+    LandmarkModelLoad load;
+};
+
+SharedModel &sharedModel()
+{
+    static SharedModel shared;
+    return shared;
+}
+
+// The warm-up's two threads: one makes the colour stages ready (OpenCV's colour tables alone
+// take about 0.2 s, so it starts at once), the other loads the model and the face detector
+// and scans a blank frame. With the caller's thread going on with its own start-up, the two
+// cores of a small machine are both at work.
+class WarmUp
+{
+public:
+    static WarmUp &instance()
+    {
+        static WarmUp warmUp;
+        return warmUp;
+    }
+
+    void start()
+    {
+        std::call_once(m_started, [this] {
+            // The application waits for the threads before it tears down what they use.
+            qAddPostRoutine(&waitForDetectionWarmUp);
+            std::lock_guard lock(m_mutex);
+            m_refinementReady = m_refinementDone.get_future().share();
+            m_stages = std::thread([this] {
+                warmUpFaceRefinement();
+                m_refinementDone.set_value();
+            });
+            m_model = std::thread([] {
+                sharedLandmarkModel(nullptr);
+                warmUpFaceScan(kFirstPassSize);
+            });
+        });
+    }
+
+    void awaitRefinement()
+    {
+        std::shared_future<void> ready;
+        {
+            std::lock_guard lock(m_mutex);
+            ready = m_refinementReady;
+        }
+        if (ready.valid())
+            ready.wait();
+    }
+
+    void wait()
+    {
+        std::lock_guard lock(m_mutex);
+        if (m_model.joinable())
+            m_model.join();
+        if (m_stages.joinable())
+            m_stages.join();
+    }
+
+    ~WarmUp() { wait(); }
+
+private:
+    WarmUp()
+    {
+        // Made before the threads start, so destroyed after they have been waited for.
+        sharedModel();
+    }
+
+    std::once_flag m_started;
+    std::mutex m_mutex;
+    std::promise<void> m_refinementDone;
+    std::shared_future<void> m_refinementReady; // valid once the warm-up started
+    std::thread m_model;
+    std::thread m_stages;
+};
+
+} // namespace
+
+std::shared_ptr<const LandmarkPredictor> sharedLandmarkModel(QString *error, LandmarkModelLoad *load)
+{
+    const QString path = landmarkModelPath();
+    SharedModel &shared = sharedModel();
+    std::lock_guard lock(shared.mutex);
+    if (shared.model && shared.path == path) {
+        if (load) {
+            *load = shared.load;
+            load->ms = 0;
+        }
+        return shared.model;
+    }
+    LandmarkModelLoad loaded = loadLandmarkModel(path, detectionCacheDir());
+    if (load)
+        *load = loaded;
+    if (!loaded.model) {
+        if (error)
+            *error = loaded.error;
+        return {};
+    }
+    shared.path = path;
+    shared.model = loaded.model;
+    shared.load = loaded;
+    return shared.model;
+}
+
+bool preloadLandmarkModel(QString *error, double *loadMs)
+{
+    LandmarkModelLoad load;
+    const bool ok = bool(sharedLandmarkModel(error, &load));
+    if (loadMs)
+        *loadMs = load.ms;
+    return ok;
+}
+
+LandmarkModelLoad landmarkModelLoad()
+{
+    SharedModel &shared = sharedModel();
+    std::lock_guard lock(shared.mutex);
+    return shared.load;
+}
+
+void warmUpDetection()
+{
+    WarmUp::instance().start();
+}
+
+void awaitFaceRefinementWarmUp()
+{
+    WarmUp::instance().awaitRefinement();
+}
+
+void waitForDetectionWarmUp()
+{
+    WarmUp::instance().wait();
+}
+
+} // namespace toonface
