@@ -2,6 +2,7 @@
 #include "cli/command.h"
 #include "cli/faceinput.h"
 #include "cli/speechinput.h"
+#include "cli/videotrack.h"
 #include "face/emotion.h"
 #include "io/project.h"
 #include "render/framerenderer.h"
@@ -9,6 +10,8 @@
 #include "render/smilexport.h"
 #include "render/svgface.h"
 #include "render/videoencoder.h"
+#include "speech/audio.h"
+#include "track/retarget.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -121,7 +124,10 @@ int runAnimate(const Command &self, const QStringList &args)
         QStringLiteral("OUT.svg, OUT.html, OUT.mp4, OUT.gif, or DIR/ for PNG frames."), QStringLiteral("OUT"));
     const QCommandLineOption frame = frameOption();
     parser.addOptions({audio, script, say, video, lang, emotion, noBlink, fps, style, frame, projectOut, output});
-    parser.addPositionalArgument(QStringLiteral("INPUT"), QStringLiteral("A photo or a project."));
+    const VideoTrackOptions trackOptions;
+    trackOptions.addTo(parser);
+    parser.addPositionalArgument(QStringLiteral("INPUT"),
+        QStringLiteral("A photo or a project; or a video clip, whose neutral frame's face it animates."));
     bool helped = false;
     if (!parseArguments(parser, self, args, &helped))
         return ExitUsage;
@@ -137,15 +143,19 @@ int runAnimate(const Command &self, const QStringList &args)
         return fail(ExitUsage,
             QStringLiteral("cannot tell the output type of '%1': use .svg, .html, .mp4, .gif or a folder ending in /")
                 .arg(parser.value(output)));
+    const QString inputPath = parser.positionalArguments().constFirst();
+    const bool clipInput = looksLikeVideo(inputPath);
     const int sources
         = int(parser.isSet(audio) || parser.isSet(script)) + int(parser.isSet(say)) + int(parser.isSet(video));
-    if (sources != 1)
+    if (sources != 1 && !(clipInput && sources == 0))
         return fail(ExitUsage,
             QStringLiteral("animate needs exactly one of --audio with --script, --say TEXT or --video CLIP"));
     if (parser.isSet(audio) != parser.isSet(script))
         return fail(ExitUsage, QStringLiteral("--audio and --script go together"));
-    if (parser.isSet(video))
-        return fail(ExitUsage, QStringLiteral("--video: driving the face by a video is not available in this version"));
+    const QString clipPath = parser.isSet(video) ? parser.value(video) : clipInput ? inputPath : QString();
+    TrackVideoOptions trackVideoOptions;
+    if (const int code = trackOptions.read(parser, &trackVideoOptions); code != ExitOk)
+        return code;
     bool fpsOk = false;
     const double frameRate = parser.value(fps).toDouble(&fpsOk);
     if (!fpsOk || !(frameRate >= 1 && frameRate <= 120))
@@ -163,37 +173,77 @@ int runAnimate(const Command &self, const QStringList &args)
     if (const int code = parseStyleOption(parser, style, &chosenStyle); code != ExitOk)
         return code;
 
-    const QString inputPath = parser.positionalArguments().constFirst();
     if (QFileInfo(inputPath).suffix().toLower() == QLatin1StringView("json"))
         return fail(
             ExitUsage, QStringLiteral("animate takes a photo or a project, not a face JSON (%1)").arg(inputPath));
+    const QFileInfo outInfo(parser.value(output));
+    const QString workDir
+        = kind == OutputKind::PngDir ? QDir(parser.value(output)).absolutePath() : outInfo.absolutePath();
+    const QString outputBase = kind == OutputKind::PngDir ? QStringLiteral("speech") : outInfo.completeBaseName();
+
     FaceInput input;
-    if (const int code = loadFaceInput(inputPath, DetectOptions {}, &input); code != ExitOk)
+    TrackResult track;
+    if (!clipPath.isEmpty()) {
+        if (const int code = trackClip(clipPath, trackVideoOptions, &track); code != ExitOk)
+            return code;
+    }
+    if (clipInput) {
+        // The thesis' path: the clip's neutral frame is the face.
+        input.face = track.neutral.face;
+        input.photo = track.neutralImage;
+        input.detection = track.neutral;
+        if (parser.isSet(projectOut)) {
+            input.photoPath = QFileInfo(parser.value(projectOut)).absolutePath() + QLatin1Char('/')
+                + QFileInfo(parser.value(projectOut)).completeBaseName() + QStringLiteral("-neutral.png");
+            if (!track.neutralImage.save(input.photoPath))
+                return fail(ExitFailed, QStringLiteral("%1: cannot write the neutral frame").arg(input.photoPath));
+        }
+    } else if (const int code = loadFaceInput(inputPath, DetectOptions {}, &input); code != ExitOk) {
         return code;
+    }
     const Style drawStyle = drawingStyle(input, chosenStyle);
     const MouthShapeSet shapes = input.mouthShapes;
 
-    // Speech: the mouth track and the sound.
-    SpeechRequest request;
-    request.audioPath = parser.value(audio);
-    request.scriptPath = parser.value(script);
-    request.sayText = parser.value(say);
-    request.language = language;
-    const QFileInfo outInfo(parser.value(output));
-    request.workDir = kind == OutputKind::PngDir ? QDir(parser.value(output)).absolutePath() : outInfo.absolutePath();
-    request.outputBase = kind == OutputKind::PngDir ? QStringLiteral("speech") : outInfo.completeBaseName();
-    SpeechTrack speech;
-    if (const int code = buildSpeechTrack(request, &speech); code != ExitOk)
-        return code;
-
     Timeline timeline;
     timeline.setFrameRate(frameRate);
-    timeline.addMouthCues(speech.cues);
-    timeline.setAudio(AudioClip {speech.audioPath, 0.0, speech.duration});
+    SpeechTrack speech;
+    if (!clipPath.isEmpty()) {
+        // The clip's motion, retargeted through ES0 units, and its own sound when it has one.
+        addTrackToTimeline(track.frames, track.fps, &timeline);
+        const double period = track.fps > 0 ? 1.0 / track.fps : 1.0 / frameRate;
+        speech.duration = track.frames.isEmpty() ? 0.0 : track.frames.last().time + period;
+        const AudioResult sound = track.hasAudio ? loadAudio(clipPath) : AudioResult {};
+        if (sound.ok()) {
+            speech.audioPath = workDir + QLatin1Char('/') + outputBase + QStringLiteral("-sound.wav");
+            QString error;
+            if (!writeAudio(speech.audioPath, sound.audio, &error))
+                return fail(ExitFailed, error);
+            speech.duration = std::max(speech.duration, sound.audio.duration());
+            timeline.setAudio(AudioClip {speech.audioPath, 0.0, sound.audio.duration()});
+        } else {
+            warn(track.hasAudio ? sound.error + QStringLiteral(": the animation is silent")
+                                : QStringLiteral("%1: the clip has no sound; the animation is silent").arg(clipPath));
+        }
+        if (parser.isSet(noBlink))
+            timeline.setBlinks({});
+    } else {
+        // Speech: the mouth track and the sound.
+        SpeechRequest request;
+        request.audioPath = parser.value(audio);
+        request.scriptPath = parser.value(script);
+        request.sayText = parser.value(say);
+        request.language = language;
+        request.workDir = workDir;
+        request.outputBase = outputBase;
+        if (const int code = buildSpeechTrack(request, &speech); code != ExitOk)
+            return code;
+        timeline.addMouthCues(speech.cues);
+        timeline.setAudio(AudioClip {speech.audioPath, 0.0, speech.duration});
+        if (!parser.isSet(noBlink))
+            timeline.generateBlinks(quint32(qHash(input.photoPath)), speech.duration);
+    }
     if (expression != Emotion::Neutral)
         timeline.addEmotionClip(EmotionClip {0.0, speech.duration, expression, 1.0, 0.4, 0.4});
-    if (!parser.isSet(noBlink))
-        timeline.generateBlinks(quint32(qHash(input.photoPath)), speech.duration);
 
     if (parser.isSet(projectOut)) {
         Project project;
@@ -242,9 +292,10 @@ int runAnimate(const Command &self, const QStringList &args)
 const CommandRegistrar registrar({QStringLiteral("animate"),
     QStringLiteral(
         "Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF or PNG frames)."),
-    QStringLiteral("animate IMAGE|PROJECT (--audio A --script S | --say TEXT | --video CLIP) [--emotion NAME] "
-                   "[--no-blink] [--fps N] [--style NAME] [--frame head|photo] [--project OUT.toonface] -o "
-                   "OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"),
+    QStringLiteral(
+        "animate IMAGE|PROJECT|CLIP (--audio A --script S | --say TEXT | --video CLIP) [--method "
+        "auto|classic|landmarks] [--neutral-frame N] [--snap-mouth] [--emotion NAME] [--no-blink] [--fps N] "
+        "[--style NAME] [--frame head|photo] [--project OUT.toonface] -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"),
     runAnimate});
 
 } // namespace
