@@ -147,9 +147,13 @@ int runAnimate(const Command &self, const QStringList &args)
     const bool clipInput = looksLikeVideo(inputPath);
     const int sources
         = int(parser.isSet(audio) || parser.isSet(script)) + int(parser.isSet(say)) + int(parser.isSet(video));
-    if (sources != 1 && !(clipInput && sources == 0))
+    // With none, a project plays its own timeline and a clip drives its own face.
+    const bool projectInput
+        = QFileInfo(parser.positionalArguments().value(0)).suffix().toLower() == QLatin1StringView("toonface");
+    if (sources > 1 || (sources == 0 && !projectInput && !clipInput))
         return fail(ExitUsage,
-            QStringLiteral("animate needs exactly one of --audio with --script, --say TEXT or --video CLIP"));
+            QStringLiteral("animate needs exactly one of --audio with --script, --say TEXT or --video CLIP (a project "
+                           "without them plays its own timeline)"));
     if (parser.isSet(audio) != parser.isSet(script))
         return fail(ExitUsage, QStringLiteral("--audio and --script go together"));
     const QString clipPath = parser.isSet(video) ? parser.value(video) : clipInput ? inputPath : QString();
@@ -205,10 +209,10 @@ int runAnimate(const Command &self, const QStringList &args)
     const MouthShapeSet shapes = input.mouthShapes;
 
     Timeline timeline;
-    timeline.setFrameRate(frameRate);
     SpeechTrack speech;
     if (!clipPath.isEmpty()) {
         // The clip's motion, retargeted through ES0 units, and its own sound when it has one.
+        timeline.setFrameRate(frameRate);
         addTrackToTimeline(track.frames, track.fps, &timeline);
         const double period = track.fps > 0 ? 1.0 / track.fps : 1.0 / frameRate;
         speech.duration = track.frames.isEmpty() ? 0.0 : track.frames.last().time + period;
@@ -224,8 +228,31 @@ int runAnimate(const Command &self, const QStringList &args)
             warn(track.hasAudio ? sound.error + QStringLiteral(": the animation is silent")
                                 : QStringLiteral("%1: the clip has no sound; the animation is silent").arg(clipPath));
         }
+        if (expression != Emotion::Neutral)
+            timeline.addEmotionClip(EmotionClip {0.0, speech.duration, expression, 1.0, 0.4, 0.4});
         if (parser.isSet(noBlink))
             timeline.setBlinks({});
+    } else if (sources == 0) {
+        if (!input.project)
+            return fail(ExitUsage,
+                QStringLiteral("animate needs one of --audio with --script, --say TEXT or --video CLIP (only a project "
+                               "plays its own timeline)"));
+        // The project's own animation, as the editor made it: the same frames as its preview.
+        timeline = input.project->timeline;
+        if (timeline.duration() <= 0)
+            return fail(ExitBadInput,
+                QStringLiteral("%1: the project has no animation to play (its timeline is empty)").arg(inputPath));
+        if (parser.isSet(fps))
+            timeline.setFrameRate(frameRate);
+        if (expression != Emotion::Neutral)
+            timeline.addEmotionClip(EmotionClip {0.0, timeline.duration(), expression, 1.0, 0.4, 0.4});
+        if (parser.isSet(noBlink))
+            timeline.setBlinks({});
+        speech.audioPath = input.project->audioPath();
+        speech.duration = timeline.duration();
+        speech.syllables = input.project->syllables;
+        speech.script = input.project->script;
+        speech.language = input.project->scriptLanguage;
     } else {
         // Speech: the mouth track and the sound.
         SpeechRequest request;
@@ -237,13 +264,15 @@ int runAnimate(const Command &self, const QStringList &args)
         request.outputBase = outputBase;
         if (const int code = buildSpeechTrack(request, &speech); code != ExitOk)
             return code;
+
+        timeline.setFrameRate(frameRate);
         timeline.addMouthCues(speech.cues);
         timeline.setAudio(AudioClip {speech.audioPath, 0.0, speech.duration});
+        if (expression != Emotion::Neutral)
+            timeline.addEmotionClip(EmotionClip {0.0, speech.duration, expression, 1.0, 0.4, 0.4});
         if (!parser.isSet(noBlink))
             timeline.generateBlinks(quint32(qHash(input.photoPath)), speech.duration);
     }
-    if (expression != Emotion::Neutral)
-        timeline.addEmotionClip(EmotionClip {0.0, speech.duration, expression, 1.0, 0.4, 0.4});
 
     if (parser.isSet(projectOut)) {
         Project project;
@@ -252,8 +281,8 @@ int runAnimate(const Command &self, const QStringList &args)
         project.style = drawStyle;
         project.mouthShapes = shapes;
         project.layerPaths = input.layerPaths;
-        project.timeline = timeline.toJson();
-        project.audioPath = speech.audioPath;
+        project.timeline = timeline;
+        project.syllables = speech.syllables;
         project.script = speech.script;
         project.scriptLanguage = speech.language;
         QString error;
@@ -293,7 +322,7 @@ const CommandRegistrar registrar({QStringLiteral("animate"),
     QStringLiteral(
         "Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF or PNG frames)."),
     QStringLiteral(
-        "animate IMAGE|PROJECT|CLIP (--audio A --script S | --say TEXT | --video CLIP) [--method "
+        "animate IMAGE|PROJECT|CLIP [--audio A --script S | --say TEXT | --video CLIP] [--method "
         "auto|classic|landmarks] [--neutral-frame N] [--snap-mouth] [--emotion NAME] [--no-blink] [--fps N] "
         "[--style NAME] [--frame head|photo] [--project OUT.toonface] -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"),
     runAnimate});
