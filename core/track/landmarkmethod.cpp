@@ -4,6 +4,8 @@
 
 #include <QLineF>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -22,6 +24,49 @@ double logistic(double x)
     return 1.0 / (1.0 + std::exp(-x));
 }
 
+// The face's look at a glance: the grey levels of a kPatch x kPatch grid over `box`, less their
+// mean, divided by their spread (all 0 for a flat patch).
+constexpr int kPatch = 16;
+using Patch = std::array<float, kPatch * kPatch>;
+
+Patch facePatch(const QImage &gray, const QRectF &box)
+{
+    Patch p {};
+    double sum = 0;
+    for (int j = 0; j < kPatch; ++j) {
+        const int y = std::clamp(int(box.top() + (j + 0.5) * box.height() / kPatch), 0, gray.height() - 1);
+        const uchar *row = gray.constScanLine(y);
+        for (int i = 0; i < kPatch; ++i) {
+            const int x = std::clamp(int(box.left() + (i + 0.5) * box.width() / kPatch), 0, gray.width() - 1);
+            p[j * kPatch + i] = row[x];
+            sum += row[x];
+        }
+    }
+    const float mean = float(sum / p.size());
+    double sq = 0;
+    for (float &v : p) {
+        v -= mean;
+        sq += double(v) * v;
+    }
+    const float spread = float(std::sqrt(sq / p.size()));
+    for (float &v : p)
+        v = spread > 2.0f ? v / spread : 0.0f;
+    return p;
+}
+
+// Normalised cross-correlation of two patches: 1 alike, 0 unrelated.
+double similarity(const Patch &a, const Patch &b)
+{
+    double s = 0;
+    for (size_t i = 0; i < a.size(); ++i)
+        s += double(a[i]) * b[i];
+    return s / a.size();
+}
+
+// Below this the face region looks different from the frame before (a face gone, covered or
+// swapped): the detector checks at once instead of waiting for its turn.
+constexpr double kMinSimilarity = 0.7;
+
 class LandmarkMethod : public TrackingMethod
 {
 public:
@@ -39,6 +84,7 @@ public:
     void forget() override
     {
         m_previous.reset();
+        m_lastPatch.reset();
         m_misses = 0;
     }
 
@@ -72,7 +118,9 @@ public:
         const QRectF inFrame = implied.box.intersected(QRectF(frame.rect()));
         const bool plausible = implied.residual < kMaxResidual && implied.box.width() > 16
             && inFrame.width() * inFrame.height() > 0.5 * implied.box.width() * implied.box.height();
-        if (plausible && !verified && (++m_sinceCheck >= m_verifyInterval || m_misses > 0)) {
+        const Patch patch = plausible ? facePatch(gray, implied.box) : Patch {};
+        const bool changed = !m_lastPatch || similarity(patch, *m_lastPatch) < kMinSimilarity;
+        if (plausible && !verified && (++m_sinceCheck >= m_verifyInterval || m_misses > 0 || changed)) {
             m_sinceCheck = 0;
             const double side = implied.box.width();
             const FaceCandidate check
@@ -95,6 +143,7 @@ public:
         m_misses = 0;
         m_lastScore = score;
         m_previous = shape;
+        m_lastPatch = patch;
         m_lastBox = implied.box;
 
         const FaceModel face = faceFromLandmarks68(shape, frame.size());
@@ -117,6 +166,7 @@ private:
     std::shared_ptr<const LandmarkPredictor> m_model;
     QVector<int> m_stable;
     std::optional<Landmarks68> m_previous;
+    std::optional<Patch> m_lastPatch;
     QRectF m_lastBox;
     int m_verifyInterval = 1;
     int m_sinceCheck = 0;

@@ -33,8 +33,9 @@ struct TrackerOptions
     // Snap each frame's mouth to the nearest of the nine shapes (thesis 6.4).
     bool snapMouth = false;
     MouthShapeSet shapes; // the shapes to snap to
-    // The landmark method checks with the face detector every n-th frame that a face is there.
-    int verifyInterval = 1;
+    // The landmark method checks with the face detector every n-th frame that a face is there,
+    // and at once when the face region looks different from the frame before.
+    int verifyInterval = 5;
 };
 
 // One tracked frame.

@@ -7,6 +7,7 @@
 #include <QJsonArray>
 
 #include <condition_variable>
+#include <ctime>
 #include <deque>
 #include <mutex>
 #include <thread>
@@ -73,6 +74,13 @@ private:
     bool m_stop = false;
     std::thread m_thread; // last: started once the members it uses exist
 };
+
+double processCpuMs()
+{
+    timespec t {};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
+}
 
 TrackStatus statusOf(DetectStatus s)
 {
@@ -150,6 +158,7 @@ TrackResult trackVideo(const QString &path, const TrackVideoOptions &options,
     // Every frame from the first.
     QElapsedTimer timer;
     timer.start();
+    const double cpuStart = processCpuMs();
     if (options.neutralFrame > 0 && !source.open(path, &error)) {
         result.error = error;
         return result;
@@ -171,6 +180,7 @@ TrackResult trackVideo(const QString &path, const TrackVideoOptions &options,
         }
     }
     result.trackingMs = timer.nsecsElapsed() / 1e6;
+    result.trackingCpuMs = processCpuMs() - cpuStart;
     if (result.status == TrackStatus::Cancelled)
         return result;
     if (!source.error().isEmpty())

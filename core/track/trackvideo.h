@@ -39,7 +39,8 @@ struct TrackResult
     QImage neutralImage; // the neutral frame
     double neutralEs0 = 0; // pixels: the unit of the displacements
     QVector<TrackedFrame> frames; // every decoded frame, in order
-    double trackingMs = 0; // decoding and tracking, the neutral's detection excluded
+    double trackingMs = 0; // decoding and tracking, the neutral's detection excluded (wall clock)
+    double trackingCpuMs = 0; // the same in CPU time of the process (every thread): what it costs
 };
 
 // Tracks every frame of the video at `path`, the face of frame options.neutralFrame being the

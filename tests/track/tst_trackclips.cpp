@@ -1,4 +1,4 @@
-#include "render/videoencoder.h"
+#include "export/videoencoder.h"
 #include "talkingface.h"
 #include "track/trackaccuracy.h"
 #include "track/trackvideo.h"

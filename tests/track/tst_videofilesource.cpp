@@ -1,4 +1,4 @@
-#include "render/videoencoder.h"
+#include "export/videoencoder.h"
 #include "track/videofilesource.h"
 
 #include <QElapsedTimer>
