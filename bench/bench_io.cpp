@@ -88,6 +88,7 @@ TOONFACE_BENCHMARK("io.project10min", [] {
         QFile f(plain);
         ok = f.open(QIODevice::WriteOnly) && f.write(text) == text.size() && ok;
     });
+    const QJsonObject tracks = project.timeline.toJson();
     QJsonObject r;
     r.insert(QStringLiteral("saveMs"), saveMs);
     r.insert(QStringLiteral("loadMs"), loadMs);

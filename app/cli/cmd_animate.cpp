@@ -2,9 +2,17 @@
 #include "cli/command.h"
 #include "cli/faceinput.h"
 #include "cli/speechinput.h"
+#include "cli/videotrack.h"
 #include "export/animationexport.h"
+#include "export/framerenderer.h"
+#include "export/htmlplayer.h"
+#include "export/smilexport.h"
+#include "export/videoencoder.h"
 #include "face/emotion.h"
 #include "io/project.h"
+#include "render/svgface.h"
+#include "speech/audio.h"
+#include "track/retarget.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -45,7 +53,10 @@ int runAnimate(const Command &self, const QStringList &args)
         QStringLiteral("OUT.svg, OUT.html, OUT.mp4, OUT.gif, or DIR/ for PNG frames."), QStringLiteral("OUT"));
     const QCommandLineOption frame = frameOption();
     parser.addOptions({audio, script, say, video, lang, emotion, noBlink, fps, style, frame, projectOut, output});
-    parser.addPositionalArgument(QStringLiteral("INPUT"), QStringLiteral("A photo or a project."));
+    const VideoTrackOptions trackOptions;
+    trackOptions.addTo(parser);
+    parser.addPositionalArgument(QStringLiteral("INPUT"),
+        QStringLiteral("A photo or a project; or a video clip, whose neutral frame's face it animates."));
     bool helped = false;
     if (!parseArguments(parser, self, args, &helped))
         return ExitUsage;
@@ -61,19 +72,23 @@ int runAnimate(const Command &self, const QStringList &args)
         return fail(ExitUsage,
             QStringLiteral("cannot tell the output type of '%1': use .svg, .html, .mp4, .gif or a folder ending in /")
                 .arg(parser.value(output)));
+    const QString inputPath = parser.positionalArguments().constFirst();
+    const bool clipInput = looksLikeVideo(inputPath);
     const int sources
         = int(parser.isSet(audio) || parser.isSet(script)) + int(parser.isSet(say)) + int(parser.isSet(video));
-    // With none, a project plays its own timeline.
+    // With none, a project plays its own timeline and a clip drives its own face.
     const bool projectInput
         = QFileInfo(parser.positionalArguments().value(0)).suffix().toLower() == QLatin1StringView("toonface");
-    if (sources > 1 || (sources == 0 && !projectInput))
+    if (sources > 1 || (sources == 0 && !projectInput && !clipInput))
         return fail(ExitUsage,
             QStringLiteral("animate needs exactly one of --audio with --script, --say TEXT or --video CLIP (a project "
                            "without them plays its own timeline)"));
     if (parser.isSet(audio) != parser.isSet(script))
         return fail(ExitUsage, QStringLiteral("--audio and --script go together"));
-    if (parser.isSet(video))
-        return fail(ExitUsage, QStringLiteral("--video: driving the face by a video is not available in this version"));
+    const QString clipPath = parser.isSet(video) ? parser.value(video) : clipInput ? inputPath : QString();
+    TrackVideoOptions trackVideoOptions;
+    if (const int code = trackOptions.read(parser, &trackVideoOptions); code != ExitOk)
+        return code;
     bool fpsOk = false;
     const double frameRate = parser.value(fps).toDouble(&fpsOk);
     if (!fpsOk || !(frameRate >= 1 && frameRate <= 120))
@@ -91,19 +106,62 @@ int runAnimate(const Command &self, const QStringList &args)
     if (const int code = parseStyleOption(parser, style, &chosenStyle); code != ExitOk)
         return code;
 
-    const QString inputPath = parser.positionalArguments().constFirst();
     if (QFileInfo(inputPath).suffix().toLower() == QLatin1StringView("json"))
         return fail(
             ExitUsage, QStringLiteral("animate takes a photo or a project, not a face JSON (%1)").arg(inputPath));
+    const QFileInfo outInfo(parser.value(output));
+    const QString workDir
+        = *format == AnimationFormat::PngSequence ? QDir(parser.value(output)).absolutePath() : outInfo.absolutePath();
+    const QString outputBase = *format == AnimationFormat::PngSequence ? QStringLiteral("speech") : outInfo.completeBaseName();
+
     FaceInput input;
-    if (const int code = loadFaceInput(inputPath, DetectOptions {}, &input); code != ExitOk)
+    TrackResult track;
+    if (!clipPath.isEmpty()) {
+        if (const int code = trackClip(clipPath, trackVideoOptions, &track); code != ExitOk)
+            return code;
+    }
+    if (clipInput) {
+        // The thesis' path: the clip's neutral frame is the face.
+        input.face = track.neutral.face;
+        input.photo = track.neutralImage;
+        input.detection = track.neutral;
+        if (parser.isSet(projectOut)) {
+            input.photoPath = QFileInfo(parser.value(projectOut)).absolutePath() + QLatin1Char('/')
+                + QFileInfo(parser.value(projectOut)).completeBaseName() + QStringLiteral("-neutral.png");
+            if (!track.neutralImage.save(input.photoPath))
+                return fail(ExitFailed, QStringLiteral("%1: cannot write the neutral frame").arg(input.photoPath));
+        }
+    } else if (const int code = loadFaceInput(inputPath, DetectOptions {}, &input); code != ExitOk) {
         return code;
+    }
     const Style drawStyle = drawingStyle(input, chosenStyle);
     const MouthShapeSet shapes = input.mouthShapes;
 
     Timeline timeline;
     SpeechTrack speech;
-    if (sources == 0) {
+    if (!clipPath.isEmpty()) {
+        // The clip's motion, retargeted through ES0 units, and its own sound when it has one.
+        timeline.setFrameRate(frameRate);
+        addTrackToTimeline(track.frames, track.fps, &timeline);
+        const double period = track.fps > 0 ? 1.0 / track.fps : 1.0 / frameRate;
+        speech.duration = track.frames.isEmpty() ? 0.0 : track.frames.last().time + period;
+        const AudioResult sound = track.hasAudio ? loadAudio(clipPath) : AudioResult {};
+        if (sound.ok()) {
+            speech.audioPath = workDir + QLatin1Char('/') + outputBase + QStringLiteral("-sound.wav");
+            QString error;
+            if (!writeAudio(speech.audioPath, sound.audio, &error))
+                return fail(ExitFailed, error);
+            speech.duration = std::max(speech.duration, sound.audio.duration());
+            timeline.setAudio(AudioClip {speech.audioPath, 0.0, sound.audio.duration()});
+        } else {
+            warn(track.hasAudio ? sound.error + QStringLiteral(": the animation is silent")
+                                : QStringLiteral("%1: the clip has no sound; the animation is silent").arg(clipPath));
+        }
+        if (expression != Emotion::Neutral)
+            timeline.addEmotionClip(EmotionClip {0.0, speech.duration, expression, 1.0, 0.4, 0.4});
+        if (parser.isSet(noBlink))
+            timeline.setBlinks({});
+    } else if (sources == 0) {
         if (!input.project)
             return fail(ExitUsage,
                 QStringLiteral("animate needs one of --audio with --script, --say TEXT or --video CLIP (only a project "
@@ -131,11 +189,8 @@ int runAnimate(const Command &self, const QStringList &args)
         request.scriptPath = parser.value(script);
         request.sayText = parser.value(say);
         request.language = language;
-        const QFileInfo outInfo(parser.value(output));
-        request.workDir = *format == AnimationFormat::PngSequence ? QDir(parser.value(output)).absolutePath()
-                                                                  : outInfo.absolutePath();
-        request.outputBase
-            = *format == AnimationFormat::PngSequence ? QStringLiteral("speech") : outInfo.completeBaseName();
+        request.workDir = workDir;
+        request.outputBase = outputBase;
         if (const int code = buildSpeechTrack(request, &speech); code != ExitOk)
             return code;
 
@@ -191,9 +246,10 @@ int runAnimate(const Command &self, const QStringList &args)
 const CommandRegistrar registrar({QStringLiteral("animate"),
     QStringLiteral(
         "Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF or PNG frames)."),
-    QStringLiteral("animate IMAGE|PROJECT [--audio A --script S | --say TEXT | --video CLIP] [--emotion NAME] "
-                   "[--no-blink] [--fps N] [--style NAME] [--frame head|photo] [--project OUT.toonface] -o "
-                   "OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"),
+    QStringLiteral(
+        "animate IMAGE|PROJECT|CLIP [--audio A --script S | --say TEXT | --video CLIP] [--method "
+        "auto|classic|landmarks] [--neutral-frame N] [--snap-mouth] [--emotion NAME] [--no-blink] [--fps N] "
+        "[--style NAME] [--frame head|photo] [--project OUT.toonface] -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"),
     runAnimate, true});
 
 } // namespace

@@ -6,6 +6,7 @@
 #include "detect/grayview.h"
 #include "detect/hairsearch.h"
 #include "detect/headregions.h"
+#include "detect/landmarkfit.h"
 #include "detect/landmarkmap.h"
 #include "detect/landmarkpredictor.h"
 #include "face/averageface.h"
@@ -88,20 +89,16 @@ Similarity fitMeanShape(
 // When the implied box already matches the one the first fit started from (roll under 3
 // degrees, centre and size within 3% of the box), the re-fit would start where the first did,
 // and is skipped.
-std::array<QPointF, kIbugPointCount> fitUpright(const LandmarkPredictor &model, const GrayView &image,
-    const QRectF &startBox, const std::array<QPointF, kIbugPointCount> &first)
+// The 68 points fitted in the upright box of the similarity `s` (the mean shape carried onto a
+// face): the face cut out upright, twice the box around its centre, at most 600 px across
+// (larger faces are sampled down: the predictor needs no more detail than that). `fallback` when
+// the box is degenerate or a point comes out non-finite.
+std::array<QPointF, kIbugPointCount> fitInUprightBox(const LandmarkPredictor &model, const GrayView &image,
+    const Similarity &s, const std::array<QPointF, kIbugPointCount> &fallback)
 {
-    const Similarity s = fitMeanShape(model.meanShape(), first);
     const double box = s.scale();
     if (!(box > 8) || !std::isfinite(box))
-        return first;
-    const QPointF implied = s.map(QPointF(0.5, 0.5));
-    const double size = std::max(startBox.width(), 1.0);
-    if (std::abs(s.angle()) < 3.0 * std::numbers::pi / 180.0
-        && QLineF(implied, startBox.center()).length() < 0.03 * size && std::abs(box / size - 1.0) < 0.03)
-        return first;
-    // The cut-out: twice the box around its centre, at most 600 px across (larger faces are
-    // sampled down: the predictor needs no more detail than that).
+        return fallback;
     const QPointF centre = s.map(QPointF(0.5, 0.5));
     const long side = std::lround(std::min(2.0 * box, 600.0));
     const double zoom = side / (2.0 * box);
@@ -123,9 +120,24 @@ std::array<QPointF, kIbugPointCount> fitUpright(const LandmarkPredictor &model, 
         const dlib::dpoint q = back(dlib::dpoint(shape[i].x(), shape[i].y()));
         p[i] = QPointF(q.x(), q.y());
         if (!std::isfinite(p[i].x()) || !std::isfinite(p[i].y()))
-            return first;
+            return fallback;
     }
     return p;
+}
+
+std::array<QPointF, kIbugPointCount> fitUpright(const LandmarkPredictor &model, const GrayView &image,
+    const QRectF &startBox, const std::array<QPointF, kIbugPointCount> &first)
+{
+    const Similarity s = fitMeanShape(model.meanShape(), first);
+    const double box = s.scale();
+    if (!(box > 8) || !std::isfinite(box))
+        return first;
+    const QPointF implied = s.map(QPointF(0.5, 0.5));
+    const double size = std::max(startBox.width(), 1.0);
+    if (std::abs(s.angle()) < 3.0 * std::numbers::pi / 180.0
+        && QLineF(implied, startBox.center()).length() < 0.03 * size && std::abs(box / size - 1.0) < 0.03)
+        return first;
+    return fitInUprightBox(model, image, s, first);
 }
 
 QImage resizedGray(const QImage &gray, double scale)
@@ -235,6 +247,40 @@ void mergeFaces(std::vector<FaceBox> *kept, const std::vector<FaceBox> &found)
         if (!seen)
             kept->push_back(f);
     }
+}
+
+// The faces of `gray` by passes from large faces to small ones. Every pass runs until one finds
+// a face (and the face `faceAt` asks for, when set), so that faces much smaller than the first
+// one found are counted too; a face seen by several passes counts once. *lastScale receives the
+// scale of the last pass (0: the image is too small for any).
+std::vector<FaceBox> scanForFaces(const QImage &gray, const std::optional<QPointF> &faceAt,
+    const std::function<bool()> &cancelled, double *lastScaleOut)
+{
+    const double shortSide = std::min(gray.width(), gray.height());
+    std::vector<FaceBox> faces;
+    double lastScale = 0;
+    for (double fraction : kPassFaceFractions) {
+        double scale = std::min(kDetectorWindow / (fraction * shortSide), kMaxUpsampling);
+        scale = std::min(scale, std::sqrt(kMaxPassPixels / (double(gray.width()) * gray.height())));
+        if (scale < lastScale * 1.2 || shortSide * scale < kDetectorWindow)
+            continue;
+        // A finer pass need not look again for the faces the pass before looked for: its
+        // pyramid stops at the first level (of 5/6) at or past the scale where the coarser
+        // pass's began, so the two overlap by less than a level.
+        const unsigned long levels = lastScale > 0
+            ? 1 + (unsigned long)std::ceil(std::log(scale / lastScale) / std::log(kPyramidStep) - 1e-9)
+            : 0;
+        mergeFaces(&faces, findFaces(gray, scale, levels));
+        lastScale = scale;
+        // Each finer pass costs about four times the one before: once a pass has found a face,
+        // smaller faces are not looked for (the 30 ms budget of a 640x480 photo), unless the
+        // face asked for is not among them yet.
+        const bool asked = !faceAt || faceHolding(faces, *faceAt) >= 0;
+        if ((!faces.empty() && asked) || (cancelled && cancelled()))
+            break;
+    }
+    *lastScaleOut = lastScale;
+    return faces;
 }
 
 double logistic(double x)
@@ -507,36 +553,13 @@ DetectionResult runDetection(
 
     report(0.0, QStringLiteral("prepare"));
     const QImage gray = toGray(image);
-    const double shortSide = std::min(gray.width(), gray.height());
     lap(QStringLiteral("prepare"));
     if (cancelled())
         return result;
 
     report(0.1, QStringLiteral("faces"));
-    // Every pass runs, so that faces much smaller than the first one found are counted too; a
-    // face seen by several passes counts once.
-    std::vector<FaceBox> faces;
     double lastScale = 0;
-    for (double fraction : kPassFaceFractions) {
-        double scale = std::min(kDetectorWindow / (fraction * shortSide), kMaxUpsampling);
-        scale = std::min(scale, std::sqrt(kMaxPassPixels / (double(gray.width()) * gray.height())));
-        if (scale < lastScale * 1.2 || shortSide * scale < kDetectorWindow)
-            continue;
-        // A finer pass need not look again for the faces the pass before looked for: its
-        // pyramid stops at the first level (of 5/6) at or past the scale where the coarser
-        // pass's began, so the two overlap by less than a level.
-        const unsigned long levels = lastScale > 0
-            ? 1 + (unsigned long)std::ceil(std::log(scale / lastScale) / std::log(kPyramidStep) - 1e-9)
-            : 0;
-        mergeFaces(&faces, findFaces(gray, scale, levels));
-        lastScale = scale;
-        // Each finer pass costs about four times the one before: once a pass has found a face,
-        // smaller faces are not looked for (the 30 ms budget of a 640x480 photo), unless the
-        // face asked for is not among them yet.
-        const bool asked = !options.faceAt || faceHolding(faces, *options.faceAt) >= 0;
-        if ((!faces.empty() && asked) || cancelled())
-            break;
-    }
+    const std::vector<FaceBox> faces = scanForFaces(gray, options.faceAt, cancelled, &lastScale);
     lap(QStringLiteral("faces"));
     if (cancelled())
         return result;
@@ -680,6 +703,85 @@ void warmUpFaceRefinement()
     PlacedFace placed;
     placed.geometric = averageFace(QRectF(centre.x() - 110, centre.y() - 140, 220, 280), photo.size());
     refineFace(photo, false, &placed, [](const QString &) { return true; });
+}
+
+std::shared_ptr<const LandmarkPredictor> sharedLandmarkModel(QString *error)
+{
+    return landmarkModel(error, nullptr);
+}
+
+QImage landmarkGray(const QImage &image)
+{
+    return toGray(image);
+}
+
+std::vector<FaceCandidate> findFaceCandidates(const QImage &gray)
+{
+    double lastScale = 0;
+    std::vector<FaceCandidate> out;
+    for (const FaceBox &f : scanForFaces(gray, std::nullopt, {}, &lastScale))
+        out.push_back({f.box, f.score});
+    return out;
+}
+
+FaceCandidate verifyFace(const QImage &gray, const QRectF &region, double faceSize)
+{
+    const QRect crop = region.toAlignedRect().intersected(gray.rect());
+    if (crop.isEmpty() || !(faceSize > 0))
+        return {};
+    // The face 1.15 windows across at the first pyramid level; four levels reach faces 1.6x
+    // the expected size, the detector's tolerance faces a little smaller.
+    const double scale = std::min(kMaxUpsampling, 1.15 * kDetectorWindow / faceSize);
+    const QImage cut = gray.copy(crop);
+    if (std::min(cut.width(), cut.height()) * scale < kDetectorWindow)
+        return {};
+    FaceCandidate best;
+    for (const FaceBox &f : findFaces(cut, scale, 4)) {
+        if (best.box.isEmpty() || f.score > best.score)
+            best = {f.box.translated(crop.topLeft()), f.score};
+    }
+    return best;
+}
+
+Landmarks68 fitLandmarksInBox(const LandmarkPredictor &model, const QImage &gray, const QRectF &box)
+{
+    const GrayView view = viewOf(gray);
+    return fitUpright(model, view, box, model.predict(view, pixelBox(box)));
+}
+
+Landmarks68 fitLandmarksFrom(const LandmarkPredictor &model, const QImage &gray, const Landmarks68 &previous)
+{
+    const Similarity s = fitMeanShape(model.meanShape(), previous);
+    const GrayView view = viewOf(gray);
+    if (std::abs(s.angle()) < 3.0 * std::numbers::pi / 180.0) {
+        // Upright enough: the implied box itself, no cut-out (the model tolerates a few degrees).
+        const double side = s.scale();
+        const QPointF c = s.map(QPointF(0.5, 0.5));
+        if (!(side > 8) || !std::isfinite(side))
+            return previous;
+        const Landmarks68 shape = model.predict(view, pixelBox(QRectF(c.x() - side / 2, c.y() - side / 2, side, side)));
+        for (const QPointF &q : shape) {
+            if (!std::isfinite(q.x()) || !std::isfinite(q.y()))
+                return previous;
+        }
+        return shape;
+    }
+    return fitInUprightBox(model, view, s, previous);
+}
+
+ImpliedBox impliedBox(const LandmarkPredictor &model, const Landmarks68 &points)
+{
+    const Similarity s = fitMeanShape(model.meanShape(), points);
+    ImpliedBox out;
+    const double side = s.scale();
+    const QPointF c = s.map(QPointF(0.5, 0.5));
+    out.box = QRectF(c.x() - side / 2, c.y() - side / 2, side, side);
+    out.rollDeg = s.angle() * 180.0 / std::numbers::pi;
+    double sum = 0;
+    for (int i = 0; i < kIbugPointCount; ++i)
+        sum += QLineF(s.map(model.meanShape()[i]), points[i]).length();
+    out.residual = side > 0 ? sum / kIbugPointCount / side : 1.0;
+    return out;
 }
 
 } // namespace toonface

@@ -4,6 +4,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   detect/hairsearch.h detect/hairsearch.cpp
   detect/headregions.h detect/headregions.cpp
   detect/landmarkmap.h detect/landmarkmap.cpp
+  detect/landmarkfit.h
   detect/grayview.h
   detect/landmarkpredictor.h detect/landmarkpredictor.cpp
   detect/cachefile.h detect/cachefile.cpp

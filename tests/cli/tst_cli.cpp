@@ -400,8 +400,9 @@ private Q_SLOTS:
         QTest::newRow("bad fps") << QStringList {QStringLiteral("animate"), in, QStringLiteral("--say"),
             QStringLiteral("ni3"), QStringLiteral("--fps"), QStringLiteral("0"), QStringLiteral("-o"),
             QStringLiteral("a.svg")};
-        QTest::newRow("video not available") << QStringList {QStringLiteral("animate"), in, QStringLiteral("--video"),
-            QStringLiteral("clip.mpg"), QStringLiteral("-o"), QStringLiteral("a.svg")};
+        QTest::newRow("video and text") << QStringList {QStringLiteral("animate"), in, QStringLiteral("--video"),
+            QStringLiteral("clip.mpg"), QStringLiteral("--say"), QStringLiteral("ni3"), QStringLiteral("-o"),
+            QStringLiteral("a.svg")};
     }
 
     void animateUsageErrors()

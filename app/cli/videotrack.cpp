@@ -1,0 +1,53 @@
+#include "cli/videotrack.h"
+
+#include "cli/command.h"
+
+#include <QFileInfo>
+
+namespace toonface::cli {
+
+int VideoTrackOptions::read(const QCommandLineParser &parser, TrackVideoOptions *out) const
+{
+    if (!detectionMethodFromName(parser.value(method), &out->tracker.method))
+        return fail(
+            ExitUsage, QStringLiteral("unknown --method '%1' (auto, classic or landmarks)").arg(parser.value(method)));
+    bool ok = false;
+    out->neutralFrame = parser.value(neutralFrame).toInt(&ok);
+    if (!ok || out->neutralFrame < 0)
+        return fail(ExitUsage,
+            QStringLiteral("--neutral-frame takes a frame number from 0, not '%1'").arg(parser.value(neutralFrame)));
+    out->tracker.snapMouth = parser.isSet(snapMouth);
+    return ExitOk;
+}
+
+int trackClip(const QString &path, const TrackVideoOptions &options, TrackResult *out)
+{
+    int lastPercent = -1;
+    *out = trackVideo(path, options, [&](int done, int total) {
+        const int percent = total > 0 ? std::min(100, done * 100 / total) : -1;
+        if (percent >= 0 && percent / 10 != lastPercent / 10)
+            progress(QStringLiteral("tracking %1: %2 %").arg(QFileInfo(path).fileName()).arg(percent));
+        lastPercent = percent;
+    });
+    switch (out->status) {
+    case TrackStatus::Ok: break;
+    case TrackStatus::NoFace: return fail(ExitNoFace, out->error);
+    case TrackStatus::ModelMissing: return fail(ExitFailed, out->error);
+    case TrackStatus::Cancelled: return fail(ExitFailed, out->error);
+    case TrackStatus::BadVideo: return fail(ExitBadInput, out->error);
+    }
+    for (const QString &w : std::as_const(out->warnings))
+        warn(w);
+    return ExitOk;
+}
+
+bool looksLikeVideo(const QString &path)
+{
+    static const QStringList suffixes
+        = {QStringLiteral("mp4"), QStringLiteral("m4v"), QStringLiteral("mov"), QStringLiteral("mpg"),
+            QStringLiteral("mpeg"), QStringLiteral("avi"), QStringLiteral("mkv"), QStringLiteral("webm"),
+            QStringLiteral("ogv"), QStringLiteral("wmv"), QStringLiteral("flv"), QStringLiteral("ts")};
+    return suffixes.contains(QFileInfo(path).suffix().toLower());
+}
+
+} // namespace toonface::cli

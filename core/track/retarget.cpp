@@ -1,0 +1,114 @@
+#include "track/retarget.h"
+
+#include <algorithm>
+
+namespace toonface {
+
+namespace {
+
+// Blink durations are clamped to the blink generator's range.
+constexpr double kShutMiddle = 0.5 * (kBlinkPhases.closing + (kBlinkPhases.closing + kBlinkPhases.shut));
+
+} // namespace
+
+double blinkMiddle(const BlinkEvent &blink)
+{
+    return blink.time + kShutMiddle * blink.duration;
+}
+
+QVector<BlinkEvent> detectBlinks(
+    const QVector<double> &times, const QVector<double> &openness, double fps, double closedBelow)
+{
+    QVector<BlinkEvent> blinks;
+    const qsizetype n = std::min(times.size(), openness.size());
+    if (n < 3)
+        return blinks;
+    QVector<double> sorted(openness.cbegin(), openness.cbegin() + n);
+    std::sort(sorted.begin(), sorted.end());
+    const double median = sorted[n / 2];
+    if (!(median > 0))
+        return blinks;
+    const double period = fps > 0 ? 1.0 / fps : (times[n - 1] - times[0]) / double(n - 1);
+    const double limit = closedBelow * median;
+    qsizetype i = 0;
+    while (i < n) {
+        if (openness[i] >= limit) {
+            ++i;
+            continue;
+        }
+        qsizetype last = i;
+        // The run, bridging single open frames.
+        for (qsizetype j = i + 1; j < n; ++j) {
+            if (openness[j] < limit)
+                last = j;
+            else if (j - last > 1)
+                break;
+        }
+        const double first = times[i];
+        const double end = times[last];
+        const double middle = (first + end) / 2;
+        const double duration
+            = std::clamp(end - first + 3 * period, Timeline::kBlinkDurationMin, Timeline::kBlinkDurationMax);
+        blinks.append({std::max(0.0, middle - kShutMiddle * duration), duration});
+        i = last + 1;
+    }
+    return blinks;
+}
+
+void addTrackToTimeline(
+    const QVector<TrackedFrame> &frames, double fps, Timeline *timeline, const RetargetOptions &options, double offset)
+{
+    QVector<const char *> ids = {"8.9", "8.2", "8.4", "8.3", "4.6", "4.4a", "4.4", "4.2", "4.1", "4.3", "4.3a", "4.5"};
+    bool snapped = options.mouthKeysFromShapes;
+    for (const TrackedFrame &f : frames)
+        snapped = snapped && (f.lost || f.mouthShape);
+    if (snapped)
+        ids.remove(0, 4);
+
+    QVector<PoseKey> pose;
+    QVector<GazeKey> gaze;
+    QVector<HeadKey> head;
+    QVector<MouthKey> mouth;
+    QVector<double> times, open;
+    for (const TrackedFrame &f : frames) {
+        if (f.lost)
+            continue;
+        const double t = f.time + offset;
+        PoseKey key;
+        key.time = t;
+        for (const char *id : std::as_const(ids))
+            key.offsetsEs0.insert(QString::fromLatin1(id), f.motion.displacementEs0[pt::idx(id)]);
+        pose.append(key);
+        gaze.append({t, f.motion.gazeEs0});
+        head.append({t, f.motion.rotationDeg, f.motion.translationEs0, f.motion.scale});
+        if (snapped && f.mouthShape && (mouth.isEmpty() || mouth.last().shape != *f.mouthShape))
+            mouth.append({t, *f.mouthShape, 1.0, std::nullopt});
+        times.append(t);
+        open.append((f.motion.leftEyeOpen + f.motion.rightEyeOpen) / 2);
+    }
+    if (options.pose)
+        timeline->setPoseKeys(pose);
+    if (options.gaze)
+        timeline->setGazeKeys(gaze);
+    if (options.head)
+        timeline->setHeadKeys(head);
+    if (options.blinks)
+        timeline->setBlinks(detectBlinks(times, open, fps));
+    // Each shape sounds until the next one (the last until the last frame's end).
+    for (qsizetype k = 0; k < mouth.size(); ++k) {
+        const double end = k + 1 < mouth.size() ? mouth[k + 1].time : times.last() + (fps > 0 ? 1.0 / fps : 0.04);
+        mouth[k].duration = std::max(0.0, end - mouth[k].time);
+    }
+    if (snapped && options.pose) {
+        // Tracked shapes follow each other at the frame rate: no minimum hold or anticipation
+        // beyond a frame, and the mouth shuts only in real pauses.
+        MouthSmoothing smoothing = timeline->smoothing();
+        const double period = fps > 0 ? 1.0 / fps : 0.04;
+        smoothing.minHold = std::min(smoothing.minHold, period);
+        smoothing.coarticulation = std::min(smoothing.coarticulation, period);
+        timeline->setSmoothing(smoothing);
+        timeline->setMouthKeys(mouth);
+    }
+}
+
+} // namespace toonface

@@ -1,0 +1,39 @@
+#pragma once
+
+#include "anim/timeline.h"
+#include "track/tracker.h"
+
+#include <QVector>
+
+namespace toonface {
+
+// Blinks in a series of lid openings (1 = the neutral's, 0 = shut), one per frame at `times`:
+// runs of frames below `closedBelow` times the clip's median opening, runs one frame apart
+// merged. Each becomes a BlinkEvent whose shut phase (kBlinkPhases) lies on the run: its
+// closing starts before the run's first frame and its opening ends after the last.
+QVector<BlinkEvent> detectBlinks(
+    const QVector<double> &times, const QVector<double> &openness, double fps, double closedBelow = 0.6);
+
+// The moment of a blink's deepest closure (the middle of its shut phase).
+double blinkMiddle(const BlinkEvent &blink);
+
+struct RetargetOptions
+{
+    bool pose = true; // mouth and brow motion as pose keys
+    bool blinks = true;
+    bool gaze = true;
+    bool head = true;
+    // Frames whose mouthShape is set (the tracker snapped them) give mouth keys, one per change
+    // of shape, instead of mouth motion in the pose track.
+    bool mouthKeysFromShapes = true;
+};
+
+// Puts tracked frames onto `timeline` as ordinary key frames, `offset` seconds added to their
+// times: a pose key per frame (the mouth controls 8.9 8.2 8.4 8.3 and the eight brow points, in
+// ES0 units, so any face can play them), a gaze key and a head key per frame, and the blinks
+// the lids show. Lost frames give no keys (the keys around them ease across). The tracks it
+// fills are replaced.
+void addTrackToTimeline(const QVector<TrackedFrame> &frames, double fps, Timeline *timeline,
+    const RetargetOptions &options = {}, double offset = 0.0);
+
+} // namespace toonface

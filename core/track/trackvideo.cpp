@@ -1,0 +1,271 @@
+#include "track/trackvideo.h"
+
+#include "io/facejson.h"
+#include "track/videofilesource.h"
+
+#include <QElapsedTimer>
+#include <QJsonArray>
+
+#include <condition_variable>
+#include <ctime>
+#include <deque>
+#include <mutex>
+#include <thread>
+
+namespace toonface {
+
+namespace {
+
+// Decodes a source on a thread of its own into a short queue, so that decoding and tracking
+// overlap. The queue holds at most kDepth frames.
+class DecodeAhead
+{
+public:
+    explicit DecodeAhead(FrameSource &source)
+        : m_source(source)
+        , m_thread([this] { run(); })
+    { }
+    ~DecodeAhead()
+    {
+        {
+            std::lock_guard lock(m_mutex);
+            m_stop = true;
+        }
+        m_changed.notify_all();
+        m_thread.join();
+    }
+
+    std::optional<VideoFrame> next()
+    {
+        std::unique_lock lock(m_mutex);
+        m_changed.wait(lock, [this] { return !m_queue.empty() || m_done; });
+        if (m_queue.empty())
+            return std::nullopt;
+        VideoFrame f = std::move(m_queue.front());
+        m_queue.pop_front();
+        m_changed.notify_all();
+        return f;
+    }
+
+private:
+    static constexpr size_t kDepth = 8;
+
+    void run()
+    {
+        for (;;) {
+            std::optional<VideoFrame> f = m_source.next();
+            std::unique_lock lock(m_mutex);
+            if (!f || m_stop) {
+                m_done = true;
+                m_changed.notify_all();
+                return;
+            }
+            m_changed.wait(lock, [this] { return m_queue.size() < kDepth || m_stop; });
+            m_queue.push_back(std::move(*f));
+            m_changed.notify_all();
+        }
+    }
+
+    FrameSource &m_source;
+    std::mutex m_mutex;
+    std::condition_variable m_changed;
+    std::deque<VideoFrame> m_queue;
+    bool m_done = false;
+    bool m_stop = false;
+    std::thread m_thread; // last: started once the members it uses exist
+};
+
+double processCpuMs()
+{
+    timespec t {};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
+}
+
+TrackStatus statusOf(DetectStatus s)
+{
+    switch (s) {
+    case DetectStatus::ModelMissing: return TrackStatus::ModelMissing;
+    case DetectStatus::Cancelled: return TrackStatus::Cancelled;
+    case DetectStatus::BadImage: return TrackStatus::BadVideo;
+    default: return TrackStatus::NoFace;
+    }
+}
+
+} // namespace
+
+TrackResult trackVideo(const QString &path, const TrackVideoOptions &options,
+    const std::function<void(int, int)> &progress, const std::atomic_bool *cancel)
+{
+    TrackResult result;
+    result.videoPath = path;
+    result.neutralFrame = options.neutralFrame;
+    auto cancelled = [&] {
+        if (cancel && cancel->load()) {
+            result.status = TrackStatus::Cancelled;
+            result.error = path + QStringLiteral(": tracking was cancelled");
+            return true;
+        }
+        return false;
+    };
+    if (options.neutralFrame < 0) {
+        result.error = path + QStringLiteral(": the neutral frame must be 0 or later");
+        return result;
+    }
+
+    // The neutral frame first.
+    VideoFileSource source;
+    QString error;
+    if (!source.open(path, &error)) {
+        result.error = error;
+        return result;
+    }
+    result.size = source.frameSize();
+    result.fps = source.frameRate();
+    result.hasAudio = source.hasAudio();
+    std::optional<VideoFrame> neutral;
+    int seen = 0;
+    while (!neutral && !cancelled()) {
+        std::optional<VideoFrame> f = source.next();
+        if (!f)
+            break;
+        if (seen++ == options.neutralFrame)
+            neutral = std::move(f);
+    }
+    if (result.status == TrackStatus::Cancelled)
+        return result;
+    if (!neutral) {
+        result.error = !source.error().isEmpty() ? source.error()
+            : seen == 0                          ? path + QStringLiteral(": no video frame could be decoded")
+                                                 : path
+                + QStringLiteral(": the neutral frame %1 is past the video's end (it has %2 frames)")
+                      .arg(options.neutralFrame)
+                      .arg(seen);
+        return result;
+    }
+    Tracker tracker(options.tracker);
+    DetectStatus status = DetectStatus::NoFace;
+    if (!tracker.setNeutral(neutral->image, &error, &status)) {
+        result.status = statusOf(status);
+        result.error = path + QStringLiteral(": frame %1: %2").arg(options.neutralFrame).arg(error);
+        return result;
+    }
+    result.method = tracker.methodName();
+    result.neutral = tracker.neutralDetection();
+    result.neutralImage = neutral->image;
+    result.neutralEs0 = tracker.neutralEs0();
+
+    // Every frame from the first.
+    QElapsedTimer timer;
+    timer.start();
+    const double cpuStart = processCpuMs();
+    if (options.neutralFrame > 0 && !source.open(path, &error)) {
+        result.error = error;
+        return result;
+    }
+    const int total = source.frameCount();
+    {
+        DecodeAhead ahead(source);
+        if (options.neutralFrame == 0)
+            result.frames.append(tracker.track(*neutral));
+        while (!cancelled()) {
+            std::optional<VideoFrame> f = ahead.next();
+            if (!f)
+                break;
+            if (options.neutralFrame == 0 && f->index == 0)
+                continue;
+            result.frames.append(tracker.track(*f));
+            if (progress)
+                progress(int(result.frames.size()), total);
+        }
+    }
+    result.trackingMs = timer.nsecsElapsed() / 1e6;
+    result.trackingCpuMs = processCpuMs() - cpuStart;
+    if (result.status == TrackStatus::Cancelled)
+        return result;
+    if (!source.error().isEmpty())
+        result.warnings << source.error() + QStringLiteral(" (tracked the %1 frames before)").arg(result.frames.size());
+    if (source.damagedPackets() > 0)
+        result.warnings << path
+                + QStringLiteral(": %1 damaged packets were skipped; the frames around them may be wrong")
+                      .arg(source.damagedPackets());
+    int lost = 0;
+    for (const TrackedFrame &f : std::as_const(result.frames))
+        lost += f.lost;
+    if (lost > 0)
+        result.warnings << path
+                + QStringLiteral(": the face was lost in %1 of %2 frames (they hold the last pose)")
+                      .arg(lost)
+                      .arg(result.frames.size());
+    result.status = TrackStatus::Ok;
+    return result;
+}
+
+QJsonObject trackToJson(const TrackResult &track)
+{
+    QJsonObject json;
+    json.insert(QStringLiteral("format"), QString::fromLatin1(kTrackFormat));
+    QJsonObject video;
+    video.insert(QStringLiteral("path"), track.videoPath);
+    video.insert(QStringLiteral("width"), track.size.width());
+    video.insert(QStringLiteral("height"), track.size.height());
+    video.insert(QStringLiteral("fps"), track.fps);
+    video.insert(QStringLiteral("frames"), int(track.frames.size()));
+    video.insert(QStringLiteral("hasAudio"), track.hasAudio);
+    json.insert(QStringLiteral("video"), video);
+    json.insert(QStringLiteral("neutralFrame"), track.neutralFrame);
+    json.insert(QStringLiteral("method"), track.method);
+    json.insert(QStringLiteral("neutral"), faceToJson(track.neutral.face, track.videoPath, &track.neutral));
+    json.insert(QStringLiteral("units"), QStringLiteral("ES0"));
+    json.insert(QStringLiteral("es0"), track.neutralEs0);
+
+    // Points and displacements of the points that move: the control points and the mouth's
+    // derived points.
+    QVector<int> moving;
+    for (int i = 0; i < kPointCount; ++i) {
+        const PointInfo &p = pointTable()[i];
+        if (p.control || p.group == PointGroup::Mouth)
+            moving.append(i);
+    }
+    auto round = [](double v, double unit) { return std::round(v / unit) * unit; };
+    QJsonArray frames;
+    for (const TrackedFrame &f : track.frames) {
+        QJsonObject o;
+        o.insert(QStringLiteral("time"), round(f.time, 1e-6));
+        o.insert(QStringLiteral("lost"), f.lost);
+        o.insert(QStringLiteral("confidence"), round(f.confidence, 1e-4));
+        QJsonArray points;
+        QJsonObject displacements;
+        for (int i : std::as_const(moving)) {
+            QJsonObject p;
+            p.insert(QStringLiteral("id"), pointId(i));
+            p.insert(QStringLiteral("x"), round(f.points[i].x(), 1e-3));
+            p.insert(QStringLiteral("y"), round(f.points[i].y(), 1e-3));
+            points.append(p);
+            const QPointF d = f.motion.displacementEs0[i];
+            displacements.insert(pointId(i), QJsonArray {round(d.x(), 1e-5), round(d.y(), 1e-5)});
+        }
+        o.insert(QStringLiteral("points"), points);
+        o.insert(QStringLiteral("displacements"), displacements);
+        QJsonObject eyes;
+        eyes.insert(QStringLiteral("left"), round(f.motion.leftEyeOpen, 1e-4));
+        eyes.insert(QStringLiteral("right"), round(f.motion.rightEyeOpen, 1e-4));
+        o.insert(QStringLiteral("eyes"), eyes);
+        QJsonObject head;
+        head.insert(QStringLiteral("rotation"), round(f.motion.rotationDeg, 1e-3));
+        head.insert(QStringLiteral("x"), round(f.motion.translationEs0.x(), 1e-5));
+        head.insert(QStringLiteral("y"), round(f.motion.translationEs0.y(), 1e-5));
+        head.insert(QStringLiteral("scale"), round(f.motion.scale, 1e-5));
+        o.insert(QStringLiteral("head"), head);
+        o.insert(
+            QStringLiteral("gaze"), QJsonArray {round(f.motion.gazeEs0.x(), 1e-5), round(f.motion.gazeEs0.y(), 1e-5)});
+        o.insert(QStringLiteral("mouthOpen"), round(f.motion.mouthOpenEs0, 1e-5));
+        if (f.mouthShape)
+            o.insert(QStringLiteral("mouthShape"), mouthShapeName(*f.mouthShape));
+        frames.append(o);
+    }
+    json.insert(QStringLiteral("frames"), frames);
+    return json;
+}
+
+} // namespace toonface

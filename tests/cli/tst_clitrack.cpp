@@ -1,0 +1,213 @@
+#include "export/videoencoder.h"
+#include "talkingface.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace toonface;
+
+namespace {
+
+const QString kPortrait = QStringLiteral("/usr/lib/python3/dist-packages/skimage/data/astronaut.png");
+const QString kGrid = QStringLiteral(TOONFACE_SHARED_DATA "/video/bbaf2n.mpg");
+
+struct Run
+{
+    int code = -1;
+    QByteArray out;
+    QByteArray err;
+};
+
+Run cli(const QStringList &args)
+{
+    QProcess p;
+    p.start(QStringLiteral(TOONFACE_CLI_PATH), args);
+    if (!p.waitForFinished(300000))
+        return {};
+    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
+        p.readAllStandardError()};
+}
+
+bool isOneErrorLine(const QByteArray &err)
+{
+    static const QRegularExpression re(QStringLiteral("^toonface-cli: error: [^\\n]+\\n$"));
+    return re.match(QString::fromUtf8(err)).hasMatch();
+}
+
+// A silent clip: `frames` from `frame(i)`.
+template<class Frame>
+QString writeClip(const QString &path, int frames, Frame frame)
+{
+    VideoWriter writer;
+    QString error;
+    const QImage first = frame(0);
+    if (!writer.open(path, VideoFormat::Mp4, first.size(), 25, AudioSource {}, &error))
+        return error;
+    for (int i = 0; i < frames; ++i) {
+        if (!writer.addFrame(i == 0 ? first : frame(i), &error))
+            return error;
+    }
+    return writer.finish(&error) ? QString() : error;
+}
+
+} // namespace
+
+class TestCliTrack : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        if (!QFileInfo::exists(kPortrait))
+            return;
+        const testing::TalkingFace talking {QImage(kPortrait).scaled(320, 320)};
+        QVERIFY(talking.isValid());
+        m_drawn = m_dir.filePath(QStringLiteral("drawn.mp4"));
+        const QString error = writeClip(m_drawn, 25,
+            [&](int i) { return talking.frame(i >= 8 && i < 14 ? 1.0 : 0.0, i == 18 || i == 19 ? 0.0 : 1.0); });
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+    }
+
+    void trackWritesTheTrackJson()
+    {
+        if (m_drawn.isEmpty())
+            QSKIP("astronaut.png is not installed (package python3-skimage)");
+        const QString out = m_dir.filePath(QStringLiteral("drawn.json"));
+        const Run r = cli({QStringLiteral("track"), m_drawn, QStringLiteral("-o"), out});
+        QVERIFY2(r.code == 0, r.err.constData());
+        QFile f(out);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QJsonObject json = QJsonDocument::fromJson(f.readAll()).object();
+        QCOMPARE(json.value(QStringLiteral("format")).toString(), QStringLiteral("toonface.track/1"));
+        QCOMPARE(json.value(QStringLiteral("method")).toString(), QStringLiteral("landmarks"));
+        const QJsonArray frames = json.value(QStringLiteral("frames")).toArray();
+        QCOMPARE(frames.size(), 25);
+        const auto open = [&](int i) { return frames[i].toObject().value(QStringLiteral("mouthOpen")).toDouble(); };
+        QVERIFY(open(11) > open(3) + 0.1);
+        QVERIFY(!frames[11].toObject().value(QStringLiteral("lost")).toBool());
+
+        // Snapped, to stdout.
+        const Run snapped = cli({QStringLiteral("track"), m_drawn, QStringLiteral("--snap-mouth"),
+            QStringLiteral("--method"), QStringLiteral("landmarks")});
+        QVERIFY2(snapped.code == 0, snapped.err.constData());
+        const QJsonArray s = QJsonDocument::fromJson(snapped.out).object().value(QStringLiteral("frames")).toArray();
+        QCOMPARE(s.size(), 25);
+        QCOMPARE(s[2].toObject().value(QStringLiteral("mouthShape")).toString(), QStringLiteral("m"));
+        QVERIFY(s[11].toObject().value(QStringLiteral("mouthShape")).toString() != QStringLiteral("m"));
+    }
+
+    void trackGridClip()
+    {
+        if (!QFileInfo::exists(kGrid))
+            QSKIP("the GRID clips of shared/data/video are absent");
+        const Run r = cli({QStringLiteral("track"), kGrid, QStringLiteral("--neutral-frame"), QStringLiteral("3")});
+        QVERIFY2(r.code == 0, r.err.constData());
+        const QJsonObject json = QJsonDocument::fromJson(r.out).object();
+        QCOMPARE(json.value(QStringLiteral("neutralFrame")).toInt(), 3);
+        QCOMPARE(json.value(QStringLiteral("video")).toObject().value(QStringLiteral("frames")).toInt(), 75);
+        QVERIFY(json.value(QStringLiteral("video")).toObject().value(QStringLiteral("hasAudio")).toBool());
+    }
+
+    void animateClipAloneIsSilentButMoves()
+    {
+        if (m_drawn.isEmpty())
+            QSKIP("astronaut.png is not installed (package python3-skimage)");
+        const QString out = m_dir.filePath(QStringLiteral("alone.svg"));
+        const QString project = m_dir.filePath(QStringLiteral("alone.toonface"));
+        const Run r = cli(
+            {QStringLiteral("animate"), m_drawn, QStringLiteral("-o"), out, QStringLiteral("--project"), project});
+        QVERIFY2(r.code == 0, r.err.constData());
+        QVERIFY2(r.err.contains("no sound"), r.err.constData()); // said, not an error
+        QFile svg(out);
+        QVERIFY(svg.open(QIODevice::ReadOnly));
+        const QByteArray text = svg.readAll();
+        QVERIFY(text.contains("<animate"));
+        QVERIFY(!text.contains("<audio"));
+        QFile p(project);
+        QVERIFY(p.open(QIODevice::ReadOnly));
+        const QJsonObject timeline
+            = QJsonDocument::fromJson(p.readAll()).object().value(QStringLiteral("timeline")).toObject();
+        QCOMPARE(timeline.value(QStringLiteral("pose")).toArray().size(), 25);
+        QCOMPARE(timeline.value(QStringLiteral("blink")).toArray().size(), 1);
+        QVERIFY(QFileInfo::exists(m_dir.filePath(QStringLiteral("alone-neutral.png"))));
+    }
+
+    void animateAnotherFaceByAClipWithSound()
+    {
+        if (!QFileInfo::exists(kGrid) || !QFileInfo::exists(kPortrait))
+            QSKIP("needs the GRID clips and astronaut.png");
+        const QString out = m_dir.filePath(QStringLiteral("driven.html"));
+        const Run r = cli({QStringLiteral("animate"), kPortrait, QStringLiteral("--video"), kGrid,
+            QStringLiteral("--snap-mouth"), QStringLiteral("-o"), out});
+        QVERIFY2(r.code == 0, r.err.constData());
+        QVERIFY(QFileInfo(out).size() > 1000);
+        QVERIFY(QFileInfo::exists(m_dir.filePath(QStringLiteral("driven-sound.wav"))));
+    }
+
+    void badClipsAndUsage_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<int>("code");
+        QTest::addColumn<QString>("mention");
+        const QString missing = m_dir.filePath(QStringLiteral("missing.mp4"));
+        QTest::newRow("missing") << QStringList {QStringLiteral("track"), missing} << 3 << missing;
+        QTest::newRow("garbage") << QStringList {QStringLiteral("track"), m_dir.filePath(QStringLiteral("garbage.mp4"))}
+                                 << 3 << m_dir.filePath(QStringLiteral("garbage.mp4"));
+        QTest::newRow("no face") << QStringList {QStringLiteral("track"), m_dir.filePath(QStringLiteral("wall.mp4"))}
+                                 << 4 << m_dir.filePath(QStringLiteral("wall.mp4"));
+        QTest::newRow("no face, animate") << QStringList {QStringLiteral("animate"),
+            m_dir.filePath(QStringLiteral("wall.mp4")), QStringLiteral("-o"), m_dir.filePath(QStringLiteral("x.svg"))}
+                                          << 4 << m_dir.filePath(QStringLiteral("wall.mp4"));
+        QTest::newRow("past the end") << QStringList {QStringLiteral("track"),
+            m_dir.filePath(QStringLiteral("wall.mp4")), QStringLiteral("--neutral-frame"), QStringLiteral("99")}
+                                      << 3 << QStringLiteral("past the video's end");
+        QTest::newRow("negative frame") << QStringList {QStringLiteral("track"), missing,
+            QStringLiteral("--neutral-frame"), QStringLiteral("-1")}
+                                        << 2 << QStringLiteral("--neutral-frame");
+        QTest::newRow("method") << QStringList {QStringLiteral("track"), missing, QStringLiteral("--method"),
+            QStringLiteral("magic")}
+                                << 2 << QStringLiteral("magic");
+        QTest::newRow("no video") << QStringList {QStringLiteral("track")} << 2 << QStringLiteral("VIDEO");
+    }
+
+    void badClipsAndUsage()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(int, code);
+        QFETCH(QString, mention);
+        {
+            QFile garbage(m_dir.filePath(QStringLiteral("garbage.mp4")));
+            QVERIFY(garbage.open(QIODevice::WriteOnly));
+            garbage.write(QByteArray(4000, '\x17'));
+        }
+        const QString wall = m_dir.filePath(QStringLiteral("wall.mp4"));
+        if (!QFileInfo::exists(wall)) {
+            const QString error = writeClip(wall, 8, [](int i) {
+                QImage image(160, 120, QImage::Format_RGB32);
+                image.fill(QColor(100 + 5 * i, 120, 140));
+                return image;
+            });
+            QVERIFY2(error.isEmpty(), qPrintable(error));
+        }
+        const Run r = cli(args);
+        QCOMPARE(r.code, code);
+        QVERIFY2(isOneErrorLine(r.err), r.err.constData());
+        QVERIFY2(QString::fromUtf8(r.err).contains(mention), r.err.constData());
+    }
+
+private:
+    QTemporaryDir m_dir;
+    QString m_drawn;
+};
+
+QTEST_GUILESS_MAIN(TestCliTrack)
+#include "tst_clitrack.moc"
