@@ -6,6 +6,7 @@
 #include "views/themedicon.h"
 
 #include <QAction>
+#include <QAudioDevice>
 #include <QDir>
 #include <QFileInfo>
 #include <QMediaDevices>
@@ -105,8 +106,8 @@ void PlaybackController::updateActions()
     const bool any = m_document->timeline().frameCount() > 0;
     for (QAction *action : actions())
         action->setEnabled(any || action == m_loop);
-    m_playPause->setIcon(m_playing ? themedIcon("media-playback-pause", "pause.svg")
-                                   : themedIcon("media-playback-start", "play.svg"));
+    m_playPause->setIcon(
+        m_playing ? themedIcon("media-playback-pause", "pause.svg") : themedIcon("media-playback-start", "play.svg"));
     m_playPause->setText(m_playing ? tr("&Pause") : tr("&Play"));
     m_playPause->setToolTip(QStringLiteral("%1 (%2)").arg(
         m_playPause->text().remove(QLatin1Char('&')), m_playPause->shortcut().toString(QKeySequence::NativeText)));

@@ -88,15 +88,15 @@ PoseKeyDrag::PoseKeyDrag(
     , m_before(document->animation())
     , m_mergeId(nextMergeId())
 {
-    m_startOffsetEs0 = poseTrackOffsetEs0(
-        *m_evaluator, m_es0, m_time, QString::fromLatin1(poseHandles().at(m_handle).control));
+    m_startOffsetEs0
+        = poseTrackOffsetEs0(*m_evaluator, m_es0, m_time, QString::fromLatin1(poseHandles().at(m_handle).control));
 }
 
 Animation PoseKeyDrag::after(QPointF photoDelta) const
 {
     const QPointF offset = m_startOffsetEs0 + (m_es0 > 0 ? photoDelta / m_es0 : QPointF());
-    return withPoseOffset(m_before, *m_evaluator, m_es0, m_time,
-        QString::fromLatin1(poseHandles().at(m_handle).control), offset);
+    return withPoseOffset(
+        m_before, *m_evaluator, m_es0, m_time, QString::fromLatin1(poseHandles().at(m_handle).control), offset);
 }
 
 void PoseKeyDrag::moveBy(QPointF photoDelta)

@@ -194,8 +194,8 @@ void PreviewRenderer::startJob()
     m_jobScene = m_sceneSerial;
     m_jobSize = m_imageSize;
     m_jobClock.start();
-    m_watcher.setFuture(QtConcurrent::run(&PreviewRenderer::render, m_face, m_evaluator, m_frame, m_imageSize,
-        m_jobTime, m_jobScene, m_extraCostMs));
+    m_watcher.setFuture(QtConcurrent::run(
+        &PreviewRenderer::render, m_face, m_evaluator, m_frame, m_imageSize, m_jobTime, m_jobScene, m_extraCostMs));
 }
 
 void PreviewRenderer::onJobFinished()

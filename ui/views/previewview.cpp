@@ -195,8 +195,11 @@ std::optional<QPointF> PreviewView::handlePosition(const QString &id) const
     const auto face = m_renderer->svgFace();
     if (!isEditingPose() || !face)
         return std::nullopt;
+    const QVector<PoseHandle> &handles = poseHandles();
+    const bool isHandle = std::any_of(
+        handles.begin(), handles.end(), [&](const PoseHandle &h) { return id == QLatin1StringView(h.shownAt); });
     const int index = pointIndex(id);
-    if (index < 0)
+    if (!isHandle || index < 0)
         return std::nullopt;
     const std::array<QPointF, kPointCount> points = posedPoints(face->face(), m_renderer->current().pose);
     return photoToWidget().map(points[index]);
@@ -267,8 +270,7 @@ void PreviewView::mouseMoveEvent(QMouseEvent *event)
         m_hovered = hovered;
         if (hovered >= 0) {
             setCursor(Qt::OpenHandCursor);
-            setToolTip(
-                QCoreApplication::translate("PoseKeyDrag", poseHandles().at(hovered).label) + QLatin1Char(' ')
+            setToolTip(QCoreApplication::translate("PoseKeyDrag", poseHandles().at(hovered).label) + QLatin1Char(' ')
                 + QString::fromLatin1(poseHandles().at(hovered).control));
         } else {
             unsetCursor();

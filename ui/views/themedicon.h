@@ -9,8 +9,8 @@ namespace toonface {
 // `:/toonface/icons/<bundledFile>` (resources/icons/, listed in ui/CMakeLists.txt).
 inline QIcon themedIcon(const char *themeName, const char *bundledFile)
 {
-    return QIcon::fromTheme(QString::fromLatin1(themeName),
-        QIcon(QStringLiteral(":/toonface/icons/") + QString::fromLatin1(bundledFile)));
+    return QIcon::fromTheme(
+        QString::fromLatin1(themeName), QIcon(QStringLiteral(":/toonface/icons/") + QString::fromLatin1(bundledFile)));
 }
 
 } // namespace toonface
