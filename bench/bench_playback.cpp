@@ -132,7 +132,10 @@ TOONFACE_BENCHMARK("playback.frameBudget30fps", [] {
     const QRectF frame = headFrame(face, 1.0);
     svgFace.setFrame(frame);
 
-    QVector<double> evaluateMs, svgMs, rasterMs, totalMs;
+    QVector<double> evaluateMs;
+    QVector<double> svgMs;
+    QVector<double> rasterMs;
+    QVector<double> totalMs;
     QImage image(kPreviewSize, QImage::Format_ARGB32_Premultiplied);
     qint64 sink = 0;
     const int first = int(120 * fps);
