@@ -110,7 +110,8 @@ TOONFACE_BENCHMARK("playback.scrubLatency512", [] {
         key.time = playhead.time();
         key.offsetsEs0.insert(QStringLiteral("8.4"), QPointF(-0.001 * i, 0));
         animation.timeline.addPoseKey(key);
-        edit.append(msToPicture(renderer, [&] { document.changeAnimation(animation, QStringLiteral("drag"), 77, false); }));
+        edit.append(
+            msToPicture(renderer, [&] { document.changeAnimation(animation, QStringLiteral("drag"), 77, false); }));
     }
     QJsonObject r;
     insert(r, QStringLiteral("scrubMs"), stats(scrub));

@@ -1,6 +1,7 @@
 #include "playbackfixture.h"
 #include "uifixture.h"
 
+#include "playback/mediaaudiotrack.h"
 #include "playback/playbackclock.h"
 #include "playback/playbackcontroller.h"
 #include "playback/playhead.h"
@@ -59,6 +60,19 @@ class TestPlayback : public QObject
             file.open(QIODevice::WriteOnly);
             file.write("RIFF");
         }
+        return path;
+    }
+    // A real sound file: `seconds` of a 440 Hz tone.
+    QString toneFile(double seconds)
+    {
+        Audio tone;
+        tone.sampleRate = 16000;
+        for (int i = 0; i < int(seconds * tone.sampleRate); ++i)
+            tone.samples.append(0.3f * float(std::sin(2 * std::numbers::pi * 440.0 * i / tone.sampleRate)));
+        const QString path = m_dir.filePath(QStringLiteral("tone.wav"));
+        QString error;
+        if (!writeAudio(path, tone, &error))
+            qWarning() << error;
         return path;
     }
     fixture::FakeAudioTrack *useFakeTrack()
@@ -386,19 +400,63 @@ private Q_SLOTS:
         QVERIFY(track->heard() - m_now * 1e-9 > 10 / fps);
     }
 
+    void mediaTrackNamesAMissingFile()
+    {
+        MediaAudioTrack track;
+        QString error;
+        QVERIFY(!track.open(m_dir.filePath(QStringLiteral("gone.wav")), &error));
+        QVERIFY2(
+            error.contains(QStringLiteral("gone.wav")) && error.contains(QStringLiteral("missing")), qPrintable(error));
+        QVERIFY(!track.open(m_dir.path(), &error)); // a folder
+        QVERIFY2(error.contains(QStringLiteral("cannot be read")), qPrintable(error));
+        QVERIFY(!track.isPlaying());
+        QVERIFY(!track.position().has_value());
+    }
+
+    // The controller locked to a QMediaPlayer's clock. Without an output device GStreamer may
+    // still play into a null sink on its own clock; where it cannot play at all, skip.
+    void audioClockThroughTheMediaPlayer()
+    {
+        const QString path = toneFile(3.0);
+        auto owned = std::make_unique<MediaAudioTrack>();
+        MediaAudioTrack *track = owned.get();
+        m_controller->setAudioTrack(std::move(owned));
+        setAudio(path, 0.5, 2.5, 3.0);
+        QVERIFY2(m_controller->hasSound(), qPrintable(m_controller->soundProblem()));
+        QTest::qWait(300); // the player loads the file
+        m_controller->play();
+        // The lead-in: silent for half a second.
+        QTest::qWait(250);
+        QVERIFY(!track->isPlaying());
+        bool flowed = false;
+        double worst = 0;
+        QElapsedTimer clock;
+        clock.start();
+        while (clock.elapsed() < 1500) {
+            QTest::qWait(20);
+            if (const std::optional<double> p = track->position()) {
+                flowed = true;
+                worst = std::max(worst, std::abs(m_playhead->time() - (0.5 + *p)));
+            }
+        }
+        m_controller->pause();
+        if (!flowed)
+            QSKIP("QMediaPlayer cannot play sound on this machine (no output device and no null sink)");
+        qInfo("picture - sound at most %.1f ms, %d re-syncs, largest slewed error %.1f ms", worst * 1000,
+            m_controller->audioResyncs(), m_controller->maxAudioError() * 1000);
+        QVERIFY(!track->isPlaying());
+        // Within a frame of the sound, plus the frame the playhead shows and one timer tick.
+        QVERIFY2(worst < 2.0 / 25 + 0.02, qPrintable(QString::number(worst)));
+        QVERIFY(m_controller->audioResyncs() <= 2);
+    }
+
     // The audio clock through QtMultimedia needs an output device.
     void audioClockWithARealDevice()
     {
         if (QMediaDevices::audioOutputs().isEmpty())
             QSKIP("No audio output device (QMediaDevices::audioOutputs() is empty): the sound "
                   "cannot be played, so the audio clock cannot be tested here");
-        Audio tone;
-        tone.sampleRate = 16000;
-        for (int i = 0; i < 3 * tone.sampleRate; ++i)
-            tone.samples.append(0.3f * float(std::sin(2 * std::numbers::pi * 440.0 * i / tone.sampleRate)));
-        const QString path = m_dir.filePath(QStringLiteral("tone.wav"));
-        QString error;
-        QVERIFY2(writeAudio(path, tone, &error), qPrintable(error));
+        const QString path = toneFile(3.0);
         setAudio(path, 0.0, 3.0, 3.0);
         QVERIFY(m_controller->hasSound());
         QTest::qWait(500); // the player loads the file

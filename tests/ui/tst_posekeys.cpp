@@ -98,6 +98,9 @@ private Q_SLOTS:
     {
         QVERIFY(m_preview->handlePosition(QStringLiteral("8.4")).has_value());
         QVERIFY(!m_preview->handlePosition(QStringLiteral("9.15")).has_value()); // the nose tip is no handle
+        m_playhead->setPlaying(true); // they rest while the animation plays
+        QVERIFY(!m_preview->handlePosition(QStringLiteral("8.4")).has_value());
+        m_playhead->setPlaying(false);
         m_preview->editPoseAction()->setChecked(false);
         QVERIFY(!m_preview->handlePosition(QStringLiteral("8.4")).has_value());
         // Without handles a drag on the mouth corner changes nothing.

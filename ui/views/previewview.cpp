@@ -69,6 +69,12 @@ PreviewView::PreviewView(Document *document, Playhead *playhead, QWidget *parent
         unsetCursor();
         update();
     });
+    if (m_playhead) {
+        connect(m_playhead, &Playhead::playingChanged, this, [this] {
+            m_hovered = -1;
+            update();
+        });
+    }
     updateImageSize();
 }
 
@@ -76,7 +82,8 @@ PreviewView::~PreviewView() = default;
 
 bool PreviewView::isEditingPose() const
 {
-    return m_editPoseAction->isChecked() && m_renderer->hasScene();
+    // The handles rest while the animation plays: a key is set on a still frame.
+    return m_editPoseAction->isChecked() && m_renderer->hasScene() && !(m_playhead && m_playhead->isPlaying());
 }
 
 QByteArray PreviewView::svg()

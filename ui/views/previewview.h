@@ -49,6 +49,7 @@ public:
 
     // A checkable action toggling the pose handles.
     QAction *editPoseAction() const { return m_editPoseAction; }
+    // Whether the handles are shown: "Edit Pose" on, a face, and the playhead not playing.
     bool isEditingPose() const;
     // Where the handle of point `id` ("8.4", "2.1", ...) is drawn now, in widget coordinates;
     // nullopt when it is not shown.
