@@ -1,8 +1,13 @@
 #include "speech/pinyindictionary.h"
 
+#include <QDateTime>
+#include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QMutex>
 #include <QMutexLocker>
+#include <QSaveFile>
+#include <QStandardPaths>
 
 #include <bzlib.h>
 
@@ -177,36 +182,70 @@ double rimeWeight(const QString &w) // "98%" → 98, "4221" → 4221, "" → -1
     return ok ? d : -1;
 }
 
-} // namespace
-
-std::shared_ptr<const PinyinDictionary> PinyinDictionary::shared(QString *error)
+// The parsed sources, before they become an index.
+struct Sources
 {
-    static QMutex mutex;
-    static std::shared_ptr<const PinyinDictionary> dict;
-    static QString loadError;
-    QMutexLocker lock(&mutex);
-    if (!dict && loadError.isEmpty()) {
-        QString root = qEnvironmentVariable("TOONFACE_DICT_ROOT");
-        if (root.isEmpty())
-            root = QStringLiteral("/usr/share");
-        dict = load(root, &loadError);
+    QHash<char32_t, QVector<PinyinSyllable>> readings;
+    QHash<QString, QVector<PinyinSyllable>> phrases;
+    void addPhrase(const QString &key, const QVector<PinyinSyllable> &reading)
+    {
+        if (!phrases.contains(key))
+            phrases.insert(key, reading);
     }
-    if (!dict && error)
-        *error = loadError;
-    return dict;
+};
+
+// Bumped whenever the parsing below changes what it makes of the same sources.
+constexpr quint64 kParserVersion = 1;
+
+// The source files, in the order they are read: the plain file beside each .bz2 is read
+// instead when it exists.
+QStringList sourcePaths(const QString &root)
+{
+    QStringList paths;
+    for (const char *bz2 : {"/unicode/Unihan_Readings.txt.bz2", "/unicode/Unihan_Variants.txt.bz2"}) {
+        QString path = root + QString::fromLatin1(bz2);
+        QString plain = path;
+        plain.chop(4);
+        paths.append(QFile::exists(plain) ? plain : path);
+    }
+    paths.append(root + QStringLiteral("/rime-data/terra_pinyin.dict.yaml"));
+    paths.append(root + QStringLiteral("/rime-data/pinyin_simp.dict.yaml"));
+    return paths;
 }
 
-std::shared_ptr<const PinyinDictionary> PinyinDictionary::load(const QString &root, QString *error)
+// What the sources are now: their paths, sizes and modification times (and the parser's
+// version), hashed. Any source replaced, edited, added or removed changes it.
+quint64 sourceSignature(const QString &root)
+{
+    QByteArray all = QByteArray::number(kParserVersion);
+    for (const QString &path : sourcePaths(root)) {
+        const QFileInfo info(path);
+        all += '\n' + path.toUtf8();
+        if (info.exists())
+            all += ' ' + QByteArray::number(info.size()) + ' '
+                + QByteArray::number(info.lastModified().toMSecsSinceEpoch());
+        else
+            all += " missing";
+    }
+    quint64 h = 1469598103934665603ull; // FNV-1a
+    for (char c : all) {
+        h ^= quint8(c);
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+std::optional<Sources> parseSources(const QString &root, QString *error)
 {
     QString err;
-    std::shared_ptr<PinyinDictionary> d(new PinyinDictionary);
+    Sources d;
 
     const QString readingsPath = root + QStringLiteral("/unicode/Unihan_Readings.txt.bz2");
     const QByteArray readings = readMaybeCompressed(readingsPath, &err);
     if (readings.isEmpty()) {
         *error = QStringLiteral("Chinese character readings are missing (%1; install the Debian package unicode-data)")
                      .arg(err);
-        return nullptr;
+        return std::nullopt;
     }
     // Field order decides which reading comes first: kMandarin is the usual one.
     static const string_view fields[] = {"kMandarin", "kHanyuPinlu", "kTGHZ2013", "kXHC1983", "kHanyuPinyin"};
@@ -230,11 +269,11 @@ std::shared_ptr<const PinyinDictionary> PinyinDictionary::load(const QString &ro
             for (const auto &s : list)
                 appendReading(all, s);
         if (!all.isEmpty())
-            d->m_readings.insert(it.key(), all);
+            d.readings.insert(it.key(), all);
     }
-    if (d->m_readings.size() < 1000) {
+    if (d.readings.size() < 1000) {
         *error = QStringLiteral("%1 holds no Mandarin readings").arg(readingsPath);
-        return nullptr;
+        return std::nullopt;
     }
 
     QHash<char32_t, char32_t> simplified;
@@ -257,7 +296,7 @@ std::shared_ptr<const PinyinDictionary> PinyinDictionary::load(const QString &ro
         *error
             = QStringLiteral("the phrase dictionary %1 is missing (install the Debian package rime-data-terra-pinyin)")
                   .arg(terraPath);
-        return nullptr;
+        return std::nullopt;
     }
     QHash<char32_t, QVector<QPair<PinyinSyllable, double>>> charWeights;
     forEachRimeEntry(terra.readAll(), [&](const QString &text, const QString &code, const QString &weight) {
@@ -278,12 +317,12 @@ std::shared_ptr<const PinyinDictionary> PinyinDictionary::load(const QString &ro
                 charWeights[han[0]].append({reading[0], w});
             return;
         }
-        d->addPhrase(text, reading, false);
+        d.addPhrase(text, reading);
         std::u32string simp = han;
         for (char32_t &c : simp)
             c = simplified.value(c, c);
         if (simp != han)
-            d->addPhrase(QString::fromStdU32String(simp), reading, false);
+            d.addPhrase(QString::fromStdU32String(simp), reading);
     });
     // Terra lists phrases only where its own usual readings would be wrong, so a character's
     // usual reading must be terra's when terra weighs several.
@@ -296,9 +335,9 @@ std::shared_ptr<const PinyinDictionary> PinyinDictionary::load(const QString &ro
         QVector<PinyinSyllable> ordered;
         for (const auto &w : weighted)
             appendReading(ordered, w.first);
-        for (const auto &s : d->m_readings.value(it.key()))
+        for (const auto &s : d.readings.value(it.key()))
             appendReading(ordered, s);
-        d->m_readings.insert(it.key(), ordered);
+        d.readings.insert(it.key(), ordered);
     }
 
     QFile simp(root + QStringLiteral("/rime-data/pinyin_simp.dict.yaml"));
@@ -316,7 +355,7 @@ std::shared_ptr<const PinyinDictionary> PinyinDictionary::load(const QString &ro
                     return;
                 PinyinSyllable s = *toneless;
                 // The tone of the character's own reading with this spelling.
-                for (const auto &r : d->m_readings.value(han[i])) {
+                for (const auto &r : d.readings.value(han[i])) {
                     if (r.pinyin == s.pinyin) {
                         s.tone = r.tone;
                         break;
@@ -330,26 +369,102 @@ std::shared_ptr<const PinyinDictionary> PinyinDictionary::load(const QString &ro
                 best.insert(text, {reading, w});
         });
         for (auto it = best.cbegin(); it != best.cend(); ++it)
-            d->addPhrase(it.key(), it.value().first, false);
+            d.addPhrase(it.key(), it.value().first);
     }
     return d;
 }
 
-void PinyinDictionary::addPhrase(const QString &key, const QVector<PinyinSyllable> &reading, bool replace)
+// The index block built from the sources under `root`, or empty with *error set.
+QByteArray buildBlock(const QString &root, QString *error)
 {
-    if (!replace && m_phrases.contains(key))
-        return;
-    m_phrases.insert(key, reading);
-    m_maxPhraseLength = std::max(m_maxPhraseLength, int(reading.size()));
+    const quint64 signature = sourceSignature(root);
+    const std::optional<Sources> sources = parseSources(root, error);
+    if (!sources)
+        return {};
+    return PinyinIndex::build(sources->readings, sources->phrases, signature);
 }
 
-std::optional<QVector<PinyinSyllable>> PinyinDictionary::phrase(
-    const std::u32string &han, size_t from, size_t len) const
+} // namespace
+
+std::shared_ptr<const PinyinDictionary> PinyinDictionary::shared(QString *error)
 {
-    const auto it = m_phrases.constFind(QString::fromUcs4(han.data() + from, qsizetype(len)));
-    if (it == m_phrases.cend())
-        return std::nullopt;
-    return *it;
+    static QMutex mutex;
+    static std::shared_ptr<const PinyinDictionary> dict;
+    static QString loadError;
+    QMutexLocker lock(&mutex);
+    if (!dict && loadError.isEmpty()) {
+        QString root = qEnvironmentVariable("TOONFACE_DICT_ROOT");
+        if (root.isEmpty())
+            root = QStringLiteral("/usr/share");
+        dict = loadCached(root, cacheDirectory(), &loadError);
+    }
+    if (!dict && error)
+        *error = loadError;
+    return dict;
+}
+
+QString PinyinDictionary::cacheDirectory()
+{
+    const QString env = qEnvironmentVariable("TOONFACE_CACHE_DIR");
+    if (!env.isEmpty())
+        return env;
+    return QStandardPaths::writableLocation(QStandardPaths::GenericCacheLocation) + QStringLiteral("/toonface");
+}
+
+std::shared_ptr<const PinyinDictionary> PinyinDictionary::load(const QString &root, QString *error)
+{
+    QByteArray block = buildBlock(root, error);
+    if (block.isEmpty())
+        return nullptr;
+    std::optional<PinyinIndex> index = PinyinIndex::fromBlock(std::move(block), error);
+    if (!index)
+        return nullptr;
+    return std::shared_ptr<const PinyinDictionary>(new PinyinDictionary(std::move(*index)));
+}
+
+std::shared_ptr<const PinyinDictionary> PinyinDictionary::loadCached(
+    const QString &root, const QString &cacheDir, QString *error, CacheUse *use, QString *cacheNote)
+{
+    CacheUse how = CacheUse::Built;
+    QString note;
+    const QString cachePath = cacheDir + QStringLiteral("/pinyin-index.bin");
+    const quint64 signature = sourceSignature(root);
+    QFile cached(cachePath);
+    if (cached.exists()) {
+        QString why;
+        std::optional<PinyinIndex> index;
+        if (cached.open(QIODevice::ReadOnly))
+            index = PinyinIndex::fromBlock(cached.readAll(), &why);
+        else
+            why = cached.errorString();
+        cached.close();
+        if (index && index->sourceSignature() == signature) {
+            if (use)
+                *use = CacheUse::Reused;
+            return std::shared_ptr<const PinyinDictionary>(new PinyinDictionary(std::move(*index)));
+        }
+        how = index ? CacheUse::RebuiltStale : CacheUse::RebuiltDamaged;
+        note = index ? QStringLiteral("%1: built from other sources").arg(cachePath)
+                     : QStringLiteral("%1: %2").arg(cachePath, why);
+    }
+    QByteArray block = buildBlock(root, error);
+    if (block.isEmpty())
+        return nullptr;
+    // Written whole or not at all: a reader never sees half a file.
+    QSaveFile out(cachePath);
+    if (!QDir().mkpath(cacheDir) || !out.open(QIODevice::WriteOnly) || out.write(block) != block.size()
+        || !out.commit()) {
+        how = CacheUse::NotWritten;
+        note = QStringLiteral("cannot write %1: %2").arg(cachePath, out.errorString());
+    }
+    std::optional<PinyinIndex> index = PinyinIndex::fromBlock(std::move(block), error);
+    if (!index)
+        return nullptr;
+    if (use)
+        *use = how;
+    if (cacheNote)
+        *cacheNote = note;
+    return std::shared_ptr<const PinyinDictionary>(new PinyinDictionary(std::move(*index)));
 }
 
 QVector<PinyinSyllable> PinyinDictionary::readRun(const std::u32string &han) const
@@ -369,9 +484,9 @@ QVector<PinyinSyllable> PinyinDictionary::readRun(const std::u32string &han) con
     for (size_t i = 0; i < n; ++i) {
         if (best[i].words == std::numeric_limits<int>::max())
             continue;
-        const size_t maxLen = std::min(n - i, size_t(m_maxPhraseLength));
+        const size_t maxLen = std::min(n - i, size_t(m_index.maxPhraseLength()));
         for (size_t len = 1; len <= maxLen; ++len) {
-            const bool isPhrase = len > 1 && phrase(han, i, len).has_value();
+            const bool isPhrase = len > 1 && m_index.phrase(han, i, len).has_value();
             if (len > 1 && !isPhrase)
                 continue;
             Cell c {best[i].words + 1, best[i].squares + int(len * len), i, isPhrase};
@@ -385,13 +500,11 @@ QVector<PinyinSyllable> PinyinDictionary::readRun(const std::u32string &han) con
     for (size_t end = n; end > 0;) {
         const Cell &c = best[end];
         if (c.phrase) {
-            const auto reading = *phrase(han, c.from, end - c.from);
+            const auto reading = *m_index.phrase(han, c.from, end - c.from);
             for (size_t k = c.from; k < end; ++k)
                 out[qsizetype(k)] = reading[qsizetype(k - c.from)];
         } else {
-            const auto r = m_readings.constFind(han[c.from]);
-            out[qsizetype(c.from)]
-                = r != m_readings.cend() && !r->isEmpty() ? r->first() : PinyinSyllable {QString(), 5};
+            out[qsizetype(c.from)] = m_index.usualReading(han[c.from]).value_or(PinyinSyllable {QString(), 5});
         }
         end = c.from;
     }

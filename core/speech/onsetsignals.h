@@ -1,0 +1,132 @@
+#pragma once
+
+#include "speech/features.h"
+#include "speech/script.h"
+
+#include <algorithm>
+#include <bit>
+#include <vector>
+
+namespace toonface {
+
+// The aligner's view of a recording's syllable boundaries: pauses, loudness valleys, voiced
+// nuclei, and the evidence that a syllable of a given kind starts at a frame.
+
+// How a syllable begins, which decides what its onset looks like in the signal.
+enum class OnsetKind { Voiceless, Sonorant, Vowel, Any };
+
+OnsetKind onsetKind(const ScriptSyllable &s);
+
+// The recording's frame signals the segmentation scores, with O(1) window sums and maxima.
+class OnsetSignals
+{
+public:
+    explicit OnsetSignals(const SpeechFeatures &f);
+
+    double nucleus(int t) const { return m_nucleus[size_t(std::clamp(t, 0, m_frames - 1))]; }
+    // The first pause frame at or after t (frames() when none).
+    int nextPause(int t) const { return m_nextPause[size_t(std::clamp(t, 0, m_frames))]; }
+    // The first frame at or after t that is not a pause (frames() when none).
+    int nextSpeech(int t) const { return m_nextSpeech[size_t(std::clamp(t, 0, m_frames))]; }
+
+    int frames() const { return m_frames; }
+    bool isPause(int t) const { return t >= 0 && t < m_frames && m_pause[size_t(t)] > 0.5f; }
+    double pauseFrames(int from, int to) const { return sum(m_sumPause, from, to); }
+
+    // Evidence (about -1..1) that a syllable of this kind starts at frame b. Loudness
+    // contrasts are in natural-log power units, which do not depend on the recording level:
+    // ln 10^1.3 ≈ 3 (13 dB) is a clear fall from a vowel into a closure or frication, half of
+    // that from a vowel into a nasal or liquid.
+    double onsetEvidence(int b, OnsetKind kind, bool first) const;
+
+    // The strongest nucleus within [from, to).
+    double maxNucleus(int from, int to) const { return rangeMax(m_maxNucleus, from, to); }
+    // The loudest frame within [from, to) (0..1 between the recording's quiet and loud frames).
+    double maxLoud(int from, int to) const { return rangeMax(m_maxLoud, from, to); }
+    // The deepest valley (ln units) between two peaks that both lie inside [from, to).
+    double innerValley(int from, int to) const
+    {
+        double deepest = 0;
+        for (size_t v = size_t(m_firstValley[size_t(std::clamp(from, 0, m_frames))]);
+             v < m_valleys.size() && m_valleys[v].at < to; ++v) {
+            if (m_valleys[v].left > from + 1 && m_valleys[v].right < to - 1)
+                deepest = std::max(deepest, m_valleys[v].depth);
+        }
+        return deepest;
+    }
+
+private:
+    using SparseMax = std::vector<std::vector<float>>;
+    static SparseMax sparseMax(const std::vector<float> &v)
+    {
+        SparseMax table {v};
+        for (size_t len = 2; len <= v.size(); len *= 2) {
+            const auto &prev = table.back();
+            std::vector<float> next(v.size() - len + 1);
+            for (size_t i = 0; i + len <= v.size(); ++i)
+                next[i] = std::max(prev[i], prev[i + len / 2]);
+            table.push_back(std::move(next));
+        }
+        return table;
+    }
+    double rangeMax(const SparseMax &table, int from, int to) const
+    {
+        from = std::max(from, 0);
+        to = std::min(to, m_frames);
+        if (to <= from)
+            return 0;
+        const int k = std::bit_width(unsigned(to - from)) - 1;
+        const auto &row = table[size_t(k)];
+        return std::max(row[size_t(from)], row[size_t(to - (1 << k))]);
+    }
+
+    static std::vector<double> prefix(const std::vector<float> &v)
+    {
+        std::vector<double> p(v.size() + 1, 0.0);
+        for (size_t i = 0; i < v.size(); ++i)
+            p[i + 1] = p[i] + v[i];
+        return p;
+    }
+    double sum(const std::vector<double> &p, int from, int to) const
+    {
+        from = std::clamp(from, 0, m_frames);
+        to = std::clamp(to, 0, m_frames);
+        return to > from ? p[size_t(to)] - p[size_t(from)] : 0.0;
+    }
+    double mean(const std::vector<double> &p, int from, int to) const
+    {
+        const int a = std::clamp(from, 0, m_frames), b = std::clamp(to, 0, m_frames);
+        return b > a ? sum(p, a, b) / (b - a) : 0.0;
+    }
+    double lnLoud(int t) const { return m_ln[size_t(std::clamp(t, 0, m_frames - 1))]; }
+    double lnVoiced(int t) const { return m_lnVoiced[size_t(std::clamp(t, 0, m_frames - 1))]; }
+    double maxLn(int from, int to) const
+    {
+        double m = lnLoud(from);
+        for (int t = from; t <= to; ++t)
+            m = std::max(m, lnLoud(t));
+        return m;
+    }
+    double minLn(int from, int to) const
+    {
+        double m = lnLoud(from);
+        for (int t = from; t <= to; ++t)
+            m = std::min(m, lnLoud(t));
+        return m;
+    }
+
+    int m_frames;
+    std::vector<float> m_ln, m_lnVoiced, m_loud, m_nucleus, m_pause;
+    std::vector<double> m_sumLoud, m_sumNucleus, m_sumSpeech, m_sumPause;
+    SparseMax m_maxNucleus, m_maxLoud;
+    std::vector<int> m_nextPause, m_nextSpeech;
+    std::vector<int> m_firstValley; // per frame: the first valley at or after it
+    struct Valley
+    {
+        int at, left, right;
+        double depth;
+    };
+    std::vector<Valley> m_valleys;
+};
+
+} // namespace toonface
