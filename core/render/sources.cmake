@@ -1,7 +1,10 @@
 list(APPEND TOONFACE_CORE_SOURCES
   render/curves.h render/curves.cpp
   render/style.h render/style.cpp
+  render/colourbalance.h render/colourbalance.cpp
   render/svgface.h render/svgface.cpp
+  render/svgparts.h
+  render/svgfeatures.h render/svgfeatures.cpp
   render/videoencoder.h render/videoencoder.cpp
   render/smilexport.h render/smilexport.cpp
   render/htmlplayer.h render/htmlplayer.cpp

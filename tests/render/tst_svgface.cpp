@@ -1175,6 +1175,11 @@ private Q_SLOTS:
             << QStringLiteral("bold-blink-layer") << QStringLiteral("bold") << QStringLiteral("blink") << true;
         QTest::newRow("soft-smile") << QStringLiteral("soft-smile") << QStringLiteral("soft")
                                     << QStringLiteral("emotion smile") << false;
+        // With what a person wears: round glasses, moustache, beard and hat, the jaw dropped.
+        QTest::newRow("normal-worn-surprise") << QStringLiteral("normal-worn-surprise") << QStringLiteral("normal+worn")
+                                              << QStringLiteral("emotion surprise") << false;
+        QTest::newRow("bold-bald-angry") << QStringLiteral("bold-bald-angry") << QStringLiteral("bold+bald")
+                                         << QStringLiteral("emotion angry") << false;
     }
 
     // Golden SVGs, compared as parsed XML with numbers within 0.02. After an intended change
@@ -1187,7 +1192,12 @@ private Q_SLOTS:
         QFETCH(QString, pose);
         QFETCH(bool, layer);
         const FaceModel face = testFace();
-        SvgFace svgFace(face, Style::preset(style));
+        Style drawing = Style::preset(style.section(QLatin1Char('+'), 0, 0));
+        if (style.endsWith(QLatin1StringView("+worn")))
+            drawing.appearance = {GlassesShape::Round, true, true, true, false};
+        if (style.endsWith(QLatin1StringView("+bald")))
+            drawing.appearance = {GlassesShape::Rectangular, false, false, false, true};
+        SvgFace svgFace(face, drawing);
         if (layer)
             svgFace.addLayer(kShirtLayer);
         const QByteArray svg = svgFace.svg(namedPoses(face).value(pose));
