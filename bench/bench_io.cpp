@@ -17,40 +17,36 @@ namespace {
 
 // A synthetic but realistically dense 10-minute timeline: speech at about 12 mouth keys a
 // second with pauses, a blink every ~4 s, a few emotion clips and a head key every ~2 s.
-QJsonObject tenMinuteTimeline()
+Timeline tenMinuteTimeline()
 {
     std::mt19937 rng(20240611);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    const char *shapes[] = {"m", "f", "h", "a", "i", "u", "e", "o", "n"};
     const double duration = 600.0;
 
-    QJsonArray mouth;
+    Timeline timeline;
+    QVector<MouthKey> mouth;
     for (double t = 0; t < duration;) {
-        mouth.append(
-            QJsonObject {{QStringLiteral("t"), t}, {QStringLiteral("shape"), QLatin1StringView(shapes[rng() % 9])}});
-        t += unit(rng) < 0.02 ? 0.4 + unit(rng) : 1.0 / 12.0 * (0.5 + 0.6 * unit(rng));
+        const double hold = unit(rng) < 0.02 ? 0.4 + unit(rng) : 1.0 / 12.0 * (0.5 + 0.6 * unit(rng));
+        mouth.append(MouthKey {t, kAllMouthShapes[rng() % kAllMouthShapes.size()], 1.0, hold});
+        t += hold;
     }
-    QJsonArray blinks;
+    timeline.setMouthKeys(mouth);
+    QVector<BlinkEvent> blinks;
     for (double t = 1.0 + 2.0 * unit(rng); t < duration; t += 2.5 + 3.0 * unit(rng))
-        blinks.append(QJsonObject {{QStringLiteral("t"), t}, {QStringLiteral("duration"), 0.12 + 0.08 * unit(rng)}});
-    QJsonArray emotions;
-    const char *names[] = {"smile", "sad", "angry", "surprise"};
+        blinks.append(BlinkEvent {t, 0.12 + 0.08 * unit(rng)});
+    timeline.setBlinks(blinks);
+    const Emotion emotions[] = {Emotion::Smile, Emotion::Sad, Emotion::Angry, Emotion::Surprise};
     for (int i = 0; i < 8; ++i) {
         const double start = 20.0 + i * 70.0 + 10.0 * unit(rng);
-        emotions.append(QJsonObject {{QStringLiteral("emotion"), QLatin1StringView(names[i % 4])},
-            {QStringLiteral("start"), start}, {QStringLiteral("end"), start + 5.0 + 20.0 * unit(rng)},
-            {QStringLiteral("intensity"), 0.4 + 0.6 * unit(rng)}, {QStringLiteral("fadeIn"), 0.3},
-            {QStringLiteral("fadeOut"), 0.5}});
+        timeline.addEmotionClip(
+            EmotionClip {start, start + 5.0 + 20.0 * unit(rng), emotions[i % 4], 0.4 + 0.6 * unit(rng), 0.3, 0.5});
     }
-    QJsonArray head;
-    for (double t = 0; t < duration; t += 1.5 + unit(rng)) {
-        head.append(QJsonObject {{QStringLiteral("t"), t}, {QStringLiteral("yaw"), 8.0 * (unit(rng) - 0.5)},
-            {QStringLiteral("pitch"), 5.0 * (unit(rng) - 0.5)}, {QStringLiteral("roll"), 3.0 * (unit(rng) - 0.5)},
-            {QStringLiteral("easing"), QStringLiteral("inOutCubic")}});
-    }
-    QJsonObject tracks {{QStringLiteral("mouth"), mouth}, {QStringLiteral("blink"), blinks},
-        {QStringLiteral("emotion"), emotions}, {QStringLiteral("head"), head}};
-    return QJsonObject {{QStringLiteral("duration"), duration}, {QStringLiteral("tracks"), tracks}};
+    QVector<HeadKey> head;
+    for (double t = 0; t < duration; t += 1.5 + unit(rng))
+        head.append(HeadKey {t, 3.0 * (unit(rng) - 0.5), QPointF(0.05 * (unit(rng) - 0.5), 0.05 * (unit(rng) - 0.5)),
+            1.0 + 0.02 * (unit(rng) - 0.5)});
+    timeline.setHeadKeys(head);
+    return timeline;
 }
 
 Project benchProject(const QString &dir)
@@ -62,7 +58,7 @@ Project benchProject(const QString &dir)
     p.style.components.insert(QStringLiteral("hair"), {QColor(51, 34, 26), QColor(), 0, true});
     p.layerPaths = {dir + QStringLiteral("/layers/hat.svg")};
     p.timeline = tenMinuteTimeline();
-    p.audioPath = dir + QStringLiteral("/voice.wav");
+    p.timeline.setAudio(AudioClip {dir + QStringLiteral("/voice.wav"), 0.0, 600.0});
     p.script = QString(3000, QChar(0x4f60));
     p.scriptLanguage = QStringLiteral("cmn");
     return p;

@@ -139,9 +139,13 @@ int runAnimate(const Command &self, const QStringList &args)
                 .arg(parser.value(output)));
     const int sources
         = int(parser.isSet(audio) || parser.isSet(script)) + int(parser.isSet(say)) + int(parser.isSet(video));
-    if (sources != 1)
+    // With none, a project plays its own timeline.
+    const bool projectInput
+        = QFileInfo(parser.positionalArguments().value(0)).suffix().toLower() == QLatin1StringView("toonface");
+    if (sources > 1 || (sources == 0 && !projectInput))
         return fail(ExitUsage,
-            QStringLiteral("animate needs exactly one of --audio with --script, --say TEXT or --video CLIP"));
+            QStringLiteral("animate needs exactly one of --audio with --script, --say TEXT or --video CLIP (a project "
+                           "without them plays its own timeline)"));
     if (parser.isSet(audio) != parser.isSet(script))
         return fail(ExitUsage, QStringLiteral("--audio and --script go together"));
     if (parser.isSet(video))
@@ -173,27 +177,51 @@ int runAnimate(const Command &self, const QStringList &args)
     const Style drawStyle = drawingStyle(input, chosenStyle);
     const MouthShapeSet shapes = input.mouthShapes;
 
-    // Speech: the mouth track and the sound.
-    SpeechRequest request;
-    request.audioPath = parser.value(audio);
-    request.scriptPath = parser.value(script);
-    request.sayText = parser.value(say);
-    request.language = language;
-    const QFileInfo outInfo(parser.value(output));
-    request.workDir = kind == OutputKind::PngDir ? QDir(parser.value(output)).absolutePath() : outInfo.absolutePath();
-    request.outputBase = kind == OutputKind::PngDir ? QStringLiteral("speech") : outInfo.completeBaseName();
-    SpeechTrack speech;
-    if (const int code = buildSpeechTrack(request, &speech); code != ExitOk)
-        return code;
-
     Timeline timeline;
-    timeline.setFrameRate(frameRate);
-    timeline.addMouthCues(speech.cues);
-    timeline.setAudio(AudioClip {speech.audioPath, 0.0, speech.duration});
-    if (expression != Emotion::Neutral)
-        timeline.addEmotionClip(EmotionClip {0.0, speech.duration, expression, 1.0, 0.4, 0.4});
-    if (!parser.isSet(noBlink))
-        timeline.generateBlinks(quint32(qHash(input.photoPath)), speech.duration);
+    SpeechTrack speech;
+    if (sources == 0) {
+        if (!input.project)
+            return fail(ExitUsage,
+                QStringLiteral("animate needs one of --audio with --script, --say TEXT or --video CLIP (only a project "
+                               "plays its own timeline)"));
+        // The project's own animation, as the editor made it: the same frames as its preview.
+        timeline = input.project->timeline;
+        if (timeline.duration() <= 0)
+            return fail(ExitBadInput,
+                QStringLiteral("%1: the project has no animation to play (its timeline is empty)").arg(inputPath));
+        if (parser.isSet(fps))
+            timeline.setFrameRate(frameRate);
+        if (expression != Emotion::Neutral)
+            timeline.addEmotionClip(EmotionClip {0.0, timeline.duration(), expression, 1.0, 0.4, 0.4});
+        if (parser.isSet(noBlink))
+            timeline.setBlinks({});
+        speech.audioPath = input.project->audioPath();
+        speech.duration = timeline.duration();
+        speech.syllables = input.project->syllables;
+        speech.script = input.project->script;
+        speech.language = input.project->scriptLanguage;
+    } else {
+        // Speech: the mouth track and the sound.
+        SpeechRequest request;
+        request.audioPath = parser.value(audio);
+        request.scriptPath = parser.value(script);
+        request.sayText = parser.value(say);
+        request.language = language;
+        const QFileInfo outInfo(parser.value(output));
+        request.workDir
+            = kind == OutputKind::PngDir ? QDir(parser.value(output)).absolutePath() : outInfo.absolutePath();
+        request.outputBase = kind == OutputKind::PngDir ? QStringLiteral("speech") : outInfo.completeBaseName();
+        if (const int code = buildSpeechTrack(request, &speech); code != ExitOk)
+            return code;
+
+        timeline.setFrameRate(frameRate);
+        timeline.addMouthCues(speech.cues);
+        timeline.setAudio(AudioClip {speech.audioPath, 0.0, speech.duration});
+        if (expression != Emotion::Neutral)
+            timeline.addEmotionClip(EmotionClip {0.0, speech.duration, expression, 1.0, 0.4, 0.4});
+        if (!parser.isSet(noBlink))
+            timeline.generateBlinks(quint32(qHash(input.photoPath)), speech.duration);
+    }
 
     if (parser.isSet(projectOut)) {
         Project project;
@@ -202,8 +230,8 @@ int runAnimate(const Command &self, const QStringList &args)
         project.style = drawStyle;
         project.mouthShapes = shapes;
         project.layerPaths = input.layerPaths;
-        project.timeline = timeline.toJson();
-        project.audioPath = speech.audioPath;
+        project.timeline = timeline;
+        project.syllables = speech.syllables;
         project.script = speech.script;
         project.scriptLanguage = speech.language;
         QString error;
@@ -242,7 +270,7 @@ int runAnimate(const Command &self, const QStringList &args)
 const CommandRegistrar registrar({QStringLiteral("animate"),
     QStringLiteral(
         "Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF or PNG frames)."),
-    QStringLiteral("animate IMAGE|PROJECT (--audio A --script S | --say TEXT | --video CLIP) [--emotion NAME] "
+    QStringLiteral("animate IMAGE|PROJECT [--audio A --script S | --say TEXT | --video CLIP] [--emotion NAME] "
                    "[--no-blink] [--fps N] [--style NAME] [--frame head|photo] [--project OUT.toonface] -o "
                    "OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"),
     runAnimate});

@@ -54,6 +54,7 @@ int loadFaceInput(const QString &path, const DetectOptions &options, FaceInput *
         out->photoPath = project->photoPath;
         out->layerPaths = project->layerPaths;
         out->mouthShapes = project->mouthShapes;
+        out->project = project;
         if (!out->photoPath.isEmpty() && QFileInfo::exists(out->photoPath))
             out->photo = loadPhoto(out->photoPath, &error);
         return ExitOk;

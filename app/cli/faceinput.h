@@ -1,5 +1,9 @@
 #pragma once
 
+#include "io/project.h"
+
+#include <optional>
+
 #include "detect/detector.h"
 #include "face/emotion.h"
 #include "face/facemodel.h"
@@ -26,6 +30,7 @@ struct FaceInput
     QStringList layerPaths;
     MouthShapeSet mouthShapes; // the project's presets, or the defaults
     DetectionResult detection; // set when the input was a photo
+    std::optional<Project> project; // set when the input was a project
 };
 
 // Reads `path` into *out. Returns ExitOk, or prints the error line and returns the exit code

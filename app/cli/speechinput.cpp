@@ -53,6 +53,7 @@ int buildSpeechTrack(const SpeechRequest &request, SpeechTrack *out)
             out->script = QString::fromUtf8(scriptFile.readAll());
     }
     out->cues = result.mouthCues;
+    out->syllables = result.syllables;
     out->duration = result.duration;
     out->language = languageCode(result.language);
     return ExitOk;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "anim/timeline.h"
+#include "speech/lipsync.h"
 
 #include <QString>
 #include <QVector>
@@ -22,6 +23,7 @@ struct SpeechRequest
 struct SpeechTrack
 {
     QVector<MouthCue> cues;
+    QVector<LipsyncSyllable> syllables;
     QString audioPath; // the recording, or the synthesized one
     double duration = 0;
     QString script;

@@ -2,6 +2,7 @@
 
 #include "io/jsonfield.h"
 #include "io/pointsjson.h"
+#include "io/syllablesjson.h"
 
 #include <QDir>
 #include <QFile>
@@ -286,14 +287,20 @@ QJsonObject projectToJson(const Project &project, const QString &projectDir)
     for (const QString &layer : project.layerPaths)
         layers.append(pathToDisk(layer, dir));
     json.insert(QStringLiteral("layers"), layers);
-    json.insert(QStringLiteral("timeline"), project.timeline);
+    Timeline timeline = project.timeline;
+    AudioClip clip = timeline.audio().value_or(AudioClip {});
+    clip.path = pathToDisk(clip.path, dir);
+    if (timeline.audio())
+        timeline.setAudio(clip);
+    json.insert(QStringLiteral("timeline"), timeline.toJson());
     QJsonObject audio;
-    audio.insert(QStringLiteral("path"), pathToDisk(project.audioPath, dir));
-    audio.insert(QStringLiteral("offset"), project.audioOffset);
+    audio.insert(QStringLiteral("path"), clip.path);
+    audio.insert(QStringLiteral("offset"), clip.offset);
     json.insert(QStringLiteral("audio"), audio);
     QJsonObject script;
     script.insert(QStringLiteral("text"), project.script);
     script.insert(QStringLiteral("language"), project.scriptLanguage);
+    script.insert(QStringLiteral("syllables"), syllablesToJson(project.syllables));
     json.insert(QStringLiteral("script"), script);
     return json;
 }
@@ -364,16 +371,34 @@ std::optional<Project> projectFromJson(const QJsonObject &json, const QString &p
         p.layerPaths << pathFromDisk(layer, dir);
     }
 
-    if (!root.member("timeline").toObject(&p.timeline, error))
+    QJsonObject timelineJson;
+    if (!root.member("timeline").toObject(&timelineJson, error))
         return std::nullopt;
+    QString timelineError;
+    std::optional<Timeline> timeline = Timeline::fromJson(timelineJson, &timelineError);
+    if (!timeline) {
+        *error = QStringLiteral("timeline.") + timelineError;
+        return std::nullopt;
+    }
+    p.timeline = std::move(*timeline);
 
     const JsonField audio = root.member("audio");
     QJsonObject unused;
     QString audioPath;
+    double audioOffset = 0;
     if (!audio.toObject(&unused, error) || !audio.member("path").toString(&audioPath, error)
-        || !audio.member("offset").toNumber(&p.audioOffset, error))
+        || !audio.member("offset").toNumber(&audioOffset, error))
         return std::nullopt;
-    p.audioPath = pathFromDisk(audioPath, dir);
+    if (!audioPath.isEmpty()) {
+        AudioClip clip = p.timeline.audio().value_or(AudioClip {});
+        clip.path = pathFromDisk(audioPath, dir);
+        clip.offset = audioOffset;
+        p.timeline.setAudio(clip);
+    } else if (p.timeline.audio()) {
+        AudioClip clip = *p.timeline.audio();
+        clip.path = pathFromDisk(clip.path, dir);
+        p.timeline.setAudio(clip);
+    }
 
     const JsonField script = root.member("script");
     const JsonField language = script.member("language");
@@ -385,6 +410,10 @@ std::optional<Project> projectFromJson(const QJsonObject &json, const QString &p
         language.expected(QStringLiteral("\"cmn\", \"en\" or \"\""), error);
         return std::nullopt;
     }
+    // Older files have no syllables.
+    const JsonField syllables = script.member("syllables");
+    if (!syllables.isMissing() && !syllablesFromJson(syllables, &p.syllables, error))
+        return std::nullopt;
     return p;
 }
 

@@ -1,12 +1,15 @@
 #pragma once
 
+#include "anim/timeline.h"
 #include "face/facemodel.h"
 #include "face/mouthshape.h"
 #include "render/style.h"
+#include "speech/lipsync.h"
 
 #include <QJsonObject>
 #include <QString>
 #include <QStringList>
+#include <QVector>
 
 #include <optional>
 
@@ -20,10 +23,14 @@ namespace toonface {
 // [{id, x, y, handPlaced}] in face-model.md order, style {name, cornerCutDepth, cute, eyebrows,
 // nose, components {name: {fill, stroke, strokeWidth, visible}}}, mouthShapes {m, f, h, a, i, u,
 // e, o, n: {up, dn, lf, rt: {dx, dy: {mns, mw, lowerLip, px}}, cornersAtLipMiddle,
-// cornersFromPrevious}}, layers [path], timeline {...}, audio {path, offset}, script {text,
-// language}. Colours are "#rrggbb", "#aarrggbb" or "none" (8 bits a channel: an in-memory colour
-// round-trips when it is an 8-bit RGB colour). Numbers are written in their shortest exact form,
-// so a save and a load give back an equal Project.
+// cornersFromPrevious}}, layers [path], timeline {...} (Timeline::toJson), audio {path, offset},
+// script {text, language, syllables [...] (syllablesToJson)}. The timeline's audio clip is the
+// project's sound: its path is written relative to the project in both `audio` and
+// `timeline.audio`; `audio` wins when a file's two disagree (older files kept the timeline's
+// path absolute), and a file with only `audio` gets a clip of unknown duration (0).
+// Colours are "#rrggbb", "#aarrggbb" or "none" (8 bits a channel: an in-memory colour
+// round-trips when it is an 8-bit RGB colour). Numbers are written in their shortest exact
+// form, so a save and a load give back an equal Project.
 struct Project
 {
     QString photoPath;
@@ -31,11 +38,13 @@ struct Project
     Style style;
     MouthShapeSet mouthShapes;
     QStringList layerPaths; // extra SVG layers
-    QJsonObject timeline; // owned by core/anim; stored verbatim until then
-    QString audioPath;
-    double audioOffset = 0; // seconds
+    Timeline timeline; // its audio() is the project's sound
+    QVector<LipsyncSyllable> syllables; // the script's syllables at their aligned times
     QString script;
     QString scriptLanguage; // "cmn", "en" or empty (detect)
+
+    // The project's sound file (absolute), or empty.
+    QString audioPath() const { return timeline.audio() ? timeline.audio()->path : QString(); }
 
     bool operator==(const Project &) const = default;
 };

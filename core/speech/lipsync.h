@@ -25,6 +25,8 @@ struct LipsyncSyllable
     double end = 0;
     double confidence = 1;
     QVector<ShapeKey> shapes; // Mandarin: face-model.md's fractions; English: phoneme times
+
+    bool operator==(const LipsyncSyllable &) const = default;
 };
 
 struct LipsyncResult

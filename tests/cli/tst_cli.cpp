@@ -385,8 +385,8 @@ private Q_SLOTS:
         const QString in = QStringLiteral("face.toonface");
         QTest::newRow("no output") << QStringList {
             QStringLiteral("animate"), in, QStringLiteral("--say"), QStringLiteral("ni3 hao3")};
-        QTest::newRow("no speech") << QStringList {
-            QStringLiteral("animate"), in, QStringLiteral("-o"), QStringLiteral("a.svg")};
+        QTest::newRow("no speech for a photo") << QStringList {
+            QStringLiteral("animate"), QStringLiteral("face.png"), QStringLiteral("-o"), QStringLiteral("a.svg")};
         QTest::newRow("two speeches") << QStringList {QStringLiteral("animate"), in, QStringLiteral("--say"),
             QStringLiteral("ni3"), QStringLiteral("--audio"), QStringLiteral("a.wav"), QStringLiteral("--script"),
             QStringLiteral("s.txt"), QStringLiteral("-o"), QStringLiteral("a.svg")};
@@ -434,8 +434,23 @@ private Q_SLOTS:
         QVERIFY2(QFile::exists(path(QStringLiteral("talk.wav"))), "the spoken recording is kept beside the output");
         const auto reloaded = loadProject(saved, &error);
         QVERIFY2(reloaded, qPrintable(error));
-        QVERIFY(!reloaded->timeline.isEmpty());
+        QVERIFY(!reloaded->timeline.mouthKeys().isEmpty());
+        QCOMPARE(reloaded->syllables.size(), 4);
+        QCOMPARE(reloaded->syllables[1].pinyin, QStringLiteral("hao"));
         QCOMPARE(reloaded->script, QStringLiteral("ni3 hao3, shi4 jie4"));
+        QCOMPARE(reloaded->audioPath(), QFileInfo(path(QStringLiteral("talk.wav"))).absoluteFilePath());
+
+        // The saved project plays its own timeline: the same frames as the animation it came from.
+        const QString replay = path(QStringLiteral("replay.svg"));
+        r = cli({QStringLiteral("animate"), saved, QStringLiteral("-o"), replay});
+        QCOMPARE(r.code, 0);
+        QFile replayFile(replay);
+        QVERIFY(replayFile.open(QIODevice::ReadOnly));
+        QCOMPARE(replayFile.readAll(), content);
+        // A project without an animation says so.
+        r = cli({QStringLiteral("animate"), projectPath, QStringLiteral("-o"), path(QStringLiteral("none.svg"))});
+        QCOMPARE(r.code, 3);
+        QVERIFY2(r.err.contains("no animation") && r.err.contains("talker.toonface"), r.err.constData());
 
         const QString html = path(QStringLiteral("talk.html"));
         QCOMPARE(cli({QStringLiteral("animate"), saved, QStringLiteral("--say"), QStringLiteral("ni3 hao3"),

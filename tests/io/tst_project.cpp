@@ -58,20 +58,24 @@ Project richProject(const QString &dir)
     p.layerPaths
         = {dir + QStringLiteral("/layers/hat.svg"), QDir::cleanPath(dir + QStringLiteral("/../elsewhere/glasses.svg"))};
 
-    QJsonObject timeline;
-    timeline.insert(QStringLiteral("duration"), 12.345678901234567);
-    QJsonArray mouth;
+    // Every track of the timeline, with numbers that need all their digits.
+    Timeline timeline;
+    timeline.setFrameRate(29.97);
     for (int i = 0; i < 5; ++i)
-        mouth.append(QJsonObject {{QStringLiteral("t"), i / 12.0}, {QStringLiteral("shape"), QStringLiteral("a")}});
-    timeline.insert(QStringLiteral("mouth"), mouth);
-    timeline.insert(QStringLiteral("notes"), QJsonValue::Null);
-    timeline.insert(QStringLiteral("loop"), false);
-    timeline.insert(
-        QStringLiteral("nested"), QJsonObject {{QStringLiteral("deep"), QJsonArray {1, 2.5, QStringLiteral("x")}}});
+        timeline.addMouthKey(MouthKey {i / 12.0 + 1e-9, MouthShape::A, 0.75, 1 / 24.0});
+    timeline.addEmotionClip(EmotionClip {0.5, 2.25, Emotion::Smile, 0.6, 0.2, 0.4});
+    timeline.addBlink(BlinkEvent {1.1, 0.17});
+    timeline.addGazeKey(GazeKey {0.3, QPointF(0.05, -0.02)});
+    timeline.addHeadKey(HeadKey {0.7, 3.5, QPointF(0.01, 0.02), 1.05});
+    timeline.setAudio(AudioClip {dir + QStringLiteral("/audio/voice.wav"), 0.125 + 1e-9, 12.345678901234567});
     p.timeline = timeline;
 
-    p.audioPath = dir + QStringLiteral("/audio/voice.wav");
-    p.audioOffset = 0.125 + 1e-9;
+    LipsyncSyllable ni {QStringLiteral("你"), QStringLiteral("ni"), 3, 0.1, 0.35, 0.9, {}};
+    ni.shapes = {{MouthShape::I, 0.1}};
+    LipsyncSyllable hao {QStringLiteral("好"), QStringLiteral("hao"), 3, 0.35, 0.7 + 1e-12, 0.5, {}};
+    hao.shapes = {{MouthShape::A, 0.35}, {MouthShape::U, 0.35 + 0.8095 * 0.35}};
+    p.syllables = {ni, hao};
+
     p.script = QStringLiteral("你好，世界 — \"hello\"\n第二行");
     p.scriptLanguage = QStringLiteral("cmn");
     return p;
@@ -169,8 +173,8 @@ private Q_SLOTS:
         QVERIFY(!loaded->mouthShapes.isDefault(MouthShape::A));
         QCOMPARE(loaded->layerPaths, original.layerPaths);
         QCOMPARE(loaded->timeline, original.timeline);
-        QCOMPARE(loaded->audioPath, original.audioPath);
-        QCOMPARE(loaded->audioOffset, original.audioOffset);
+        QCOMPARE(loaded->syllables, original.syllables);
+        QCOMPARE(loaded->audioPath(), original.audioPath());
         QCOMPARE(loaded->script, original.script);
         QCOMPARE(loaded->scriptLanguage, original.scriptLanguage);
         QVERIFY(*loaded == original);
@@ -264,7 +268,7 @@ private Q_SLOTS:
         QVERIFY2(loaded, qPrintable(error));
         QCOMPARE(loaded->photoPath, QDir::cleanPath(b.filePath(QStringLiteral("photos/face.jpg"))));
         QVERIFY(QFileInfo::exists(loaded->photoPath));
-        QCOMPARE(loaded->audioPath, QDir::cleanPath(b.filePath(QStringLiteral("audio/voice.wav"))));
+        QCOMPARE(loaded->audioPath(), QDir::cleanPath(b.filePath(QStringLiteral("audio/voice.wav"))));
         QCOMPARE(loaded->layerPaths.at(1), QDir::cleanPath(b.path() + QStringLiteral("/../elsewhere/glasses.svg")));
         QVERIFY(loaded->face == original.face);
     }
@@ -308,8 +312,13 @@ private Q_SLOTS:
         }
         QCOMPARE(p->mouthShapes.preset(MouthShape::A).offsets[Down].dy.mns, 0.95);
         QCOMPARE(p->layerPaths, QStringList {QDir::cleanPath(kData + QStringLiteral("/v1/layers/hat.svg"))});
-        QCOMPARE(p->timeline.value(QStringLiteral("duration")).toDouble(), 2.5);
-        QCOMPARE(p->audioOffset, 0.25);
+        QCOMPARE(p->timeline.mouthKeys().size(), 2);
+        QCOMPARE(p->timeline.mouthKeys()[1].time, 0.4);
+        QCOMPARE(p->timeline.mouthKeys()[1].shape, MouthShape::A);
+        QCOMPARE(p->audioPath(), QDir::cleanPath(kData + QStringLiteral("/v1/voice.wav")));
+        QVERIFY(p->syllables.isEmpty()); // a file from before syllables were saved
+        QVERIFY(p->timeline.audio());
+        QCOMPARE(p->timeline.audio()->offset, 0.25);
         QCOMPARE(p->scriptLanguage, QStringLiteral("cmn"));
     }
 
@@ -340,6 +349,8 @@ private Q_SLOTS:
         row("mouth-flag-number.toonface", "mouthShapes.n.cornersFromPrevious: expected true or false, found 1");
         row("layer-empty.toonface", "layers[1]: expected a file path");
         row("timeline-array.toonface", "timeline: expected an object, found an array");
+        row("timeline-mouth-shape.toonface", "timeline.mouth[1].shape");
+        row("syllable-end-before-start.toonface", "script.syllables[0].end: expected a time after the start");
         row("audio-offset-string.toonface", "audio.offset: expected a number");
         row("script-language.toonface", "script.language: expected \"cmn\", \"en\" or \"\"");
         row("image-size-negative.toonface", "imageSize.width: expected an integer from 0 to 1000000, found -640");

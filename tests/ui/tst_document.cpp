@@ -213,6 +213,123 @@ private Q_SLOTS:
         QCOMPARE(doc.style(), before);
     }
 
+    void changeAnimationIsOneUndoStepAndRestoresExactly()
+    {
+        Document doc;
+        fixture::fill(doc);
+        QSignalSpy spy(&doc, &Document::changed);
+        const Animation before = doc.animation();
+
+        Animation after = before;
+        after.timeline.addMouthKey(MouthKey {0.5, MouthShape::A, 1.0, 0.2});
+        after.timeline.addEmotionClip(EmotionClip {0.2, 1.4, Emotion::Sad, 0.7, 0.1, 0.2});
+        LipsyncSyllable ma {QStringLiteral("妈"), QStringLiteral("ma"), 1, 0.5, 0.7, 1.0, {}};
+        ma.shapes = {{MouthShape::M, 0.5}, {MouthShape::A, 0.5 + 0.8095 * 0.2}};
+        after.syllables = {ma};
+        after.script = QStringLiteral("妈");
+        after.scriptLanguage = QStringLiteral("cmn");
+        doc.changeAnimation(after, QStringLiteral("Lip Sync"));
+        QCOMPARE(doc.animation(), after);
+        QCOMPARE(doc.timeline(), after.timeline);
+        QCOMPARE(doc.syllables(), after.syllables);
+        QVERIFY(allChanges(spy).testFlag(Change::Animation));
+        QVERIFY(doc.isModified());
+        QCOMPARE(doc.undoStack()->undoText(), QStringLiteral("Lip Sync"));
+
+        doc.undoStack()->undo();
+        QCOMPARE(doc.animation(), before);
+        QVERIFY(!doc.isModified());
+        doc.undoStack()->redo();
+        QCOMPARE(doc.animation(), after);
+
+        // The same value again is no step.
+        doc.changeAnimation(after, QStringLiteral("Nothing"));
+        QCOMPARE(doc.undoStack()->count(), 1);
+    }
+
+    void animationDragIsOneUndoStep()
+    {
+        Document doc;
+        fixture::fill(doc);
+        Animation a = doc.animation();
+        a.timeline.addMouthKey(MouthKey {1.0, MouthShape::O, 1.0, 0.3});
+        doc.changeAnimation(a, QStringLiteral("Insert"));
+        const Animation beforeDrag = doc.animation();
+
+        constexpr int kDrag = 7;
+        for (int step = 1; step <= 5; ++step) {
+            Animation moved = beforeDrag;
+            QVector<MouthKey> keys = moved.timeline.mouthKeys();
+            keys[0].time = 1.0 + 0.01 * step;
+            moved.timeline.setMouthKeys(keys);
+            doc.changeAnimation(moved, QStringLiteral("Move Key"), kDrag, step == 5);
+        }
+        QCOMPARE(doc.undoStack()->count(), 2);
+        QCOMPARE(doc.timeline().mouthKeys().constFirst().time, 1.05);
+        // A later drag with the same id is a step of its own: the first one was committed.
+        Animation again = doc.animation();
+        QVector<MouthKey> keys = again.timeline.mouthKeys();
+        keys[0].time = 1.2;
+        again.timeline.setMouthKeys(keys);
+        doc.changeAnimation(again, QStringLiteral("Move Key"), kDrag, false);
+        doc.changeAnimation(again, QStringLiteral("Move Key"), kDrag, true);
+        QCOMPARE(doc.undoStack()->count(), 3);
+
+        doc.undoStack()->undo();
+        QCOMPARE(doc.timeline().mouthKeys().constFirst().time, 1.05);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.animation(), beforeDrag);
+    }
+
+    void changeMouthShapesIsUndoable()
+    {
+        Document doc;
+        fixture::fill(doc);
+        QSignalSpy spy(&doc, &Document::changed);
+        const MouthShapeSet before = doc.mouthShapes();
+        MouthShapeSet after = before;
+        MouthShapePreset a = after.preset(MouthShape::A);
+        a.offsets[1].dy.mns = 0.95;
+        after.setPreset(MouthShape::A, a);
+        doc.changeMouthShapes(after, QStringLiteral("Edit Mouth Shape a"));
+        QCOMPARE(doc.mouthShapes(), after);
+        QVERIFY(allChanges(spy).testFlag(Change::MouthShapes));
+        doc.undoStack()->undo();
+        QCOMPARE(doc.mouthShapes(), before);
+    }
+
+    void animationSavesAndLoads()
+    {
+        const QString photoPath = m_dir.filePath(QStringLiteral("talker.png"));
+        QVERIFY(fixture::photo().save(photoPath));
+        Document doc;
+        fixture::fill(doc, photoPath);
+        Animation a = doc.animation();
+        a.timeline.addMouthKey(MouthKey {0.25, MouthShape::U, 0.8, 0.15});
+        a.timeline.generateBlinks(7, 4.0);
+        a.timeline.addNod(1.0, 2.0);
+        a.timeline.setAudio(AudioClip {m_dir.filePath(QStringLiteral("sound/voice.wav")), 0.5, 3.5});
+        LipsyncSyllable wo {QStringLiteral("我"), QStringLiteral("wo"), 3, 0.25, 0.4, 0.75, {}};
+        wo.shapes = {{MouthShape::U, 0.25}, {MouthShape::O, 0.25 + 0.8095 * 0.15}};
+        a.syllables = {wo};
+        a.script = QStringLiteral("我");
+        a.scriptLanguage = QStringLiteral("cmn");
+        doc.changeAnimation(a, QStringLiteral("Animate"));
+
+        const QString projectPath = m_dir.filePath(QStringLiteral("talker.toonface"));
+        QString error;
+        QVERIFY2(doc.save(projectPath, &error), qPrintable(error));
+        Document loaded;
+        QVERIFY2(loaded.load(projectPath, &error), qPrintable(error));
+        QCOMPARE(loaded.animation(), doc.animation());
+        // The sound is referred to relative to the project, so the pair can move together.
+        QFile file(projectPath);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray text = file.readAll();
+        QVERIFY(text.contains("\"sound/voice.wav\""));
+        QVERIFY(!text.contains(m_dir.path().toUtf8()));
+    }
+
     void saveLoadRoundTrip()
     {
         const QString photoPath = m_dir.filePath(QStringLiteral("portrait.png"));

@@ -8,6 +8,8 @@ enum class CommandId : int {
     MovePoint = 1,
     ReplaceFace,
     ChangeStyle,
+    ChangeAnimation,
+    ChangeMouthShapes,
 };
 
 } // namespace toonface

@@ -1,5 +1,7 @@
 #include "document/document.h"
 
+#include "document/changeanimationcommand.h"
+#include "document/changemouthshapescommand.h"
 #include "document/changestylecommand.h"
 #include "document/loadedfile.h"
 #include "document/movepointcommand.h"
@@ -27,7 +29,8 @@ void Document::reset(const Project &project, const QImage &photo, const QString 
     m_hasFace = hasFace;
     m_filePath = filePath;
     m_undoStack->setClean();
-    emitChanged(Change::Photo | Change::Face | Change::Points | Change::Style | Change::FileState);
+    emitChanged(Change::Photo | Change::Face | Change::Points | Change::Style | Change::FileState | Change::Animation
+        | Change::MouthShapes);
 }
 
 void Document::open(const LoadedFile &file)
@@ -102,6 +105,40 @@ void Document::replaceFace(const FaceModel &face, bool keepHandPlaced, const QSt
 void Document::changeStyle(const Style &style, const QString &text)
 {
     m_undoStack->push(new ChangeStyleCommand(this, style, text));
+}
+
+Animation Document::animation() const
+{
+    return Animation {m_project.timeline, m_project.syllables, m_project.script, m_project.scriptLanguage};
+}
+
+void Document::changeAnimation(const Animation &after, const QString &text, int mergeId, bool commit)
+{
+    if (mergeId == 0 && after == animation())
+        return;
+    m_undoStack->push(new ChangeAnimationCommand(this, after, text, mergeId, commit));
+}
+
+void Document::changeMouthShapes(const MouthShapeSet &shapes, const QString &text, int mergeId, bool commit)
+{
+    if (mergeId == 0 && shapes == m_project.mouthShapes)
+        return;
+    m_undoStack->push(new ChangeMouthShapesCommand(this, shapes, text, mergeId, commit));
+}
+
+void Document::applyAnimation(const Animation &animation)
+{
+    m_project.timeline = animation.timeline;
+    m_project.syllables = animation.syllables;
+    m_project.script = animation.script;
+    m_project.scriptLanguage = animation.scriptLanguage;
+    emitChanged(Change::Animation);
+}
+
+void Document::applyMouthShapes(const MouthShapeSet &shapes)
+{
+    m_project.mouthShapes = shapes;
+    emitChanged(Change::MouthShapes);
 }
 
 void Document::applyPoint(int index, QPointF pos, bool handPlaced)

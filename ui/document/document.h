@@ -1,5 +1,6 @@
 #pragma once
 
+#include "document/animation.h"
 #include "io/project.h"
 
 #include <QFlags>
@@ -20,6 +21,8 @@ enum class Change : unsigned {
     Style = 0x04, // the drawing style
     Photo = 0x08, // the photo (a new document)
     FileState = 0x10, // file path or modified state
+    Animation = 0x20, // the timeline, the script's syllables, the script or the audio clip
+    MouthShapes = 0x40, // the character's mouth-shape presets
 };
 Q_DECLARE_FLAGS(ChangeFlags, Change)
 Q_DECLARE_OPERATORS_FOR_FLAGS(ChangeFlags)
@@ -56,6 +59,11 @@ public:
     const Project &project() const { return m_project; }
     const FaceModel &face() const { return m_project.face; }
     const Style &style() const { return m_project.style; }
+    const Timeline &timeline() const { return m_project.timeline; }
+    const QVector<LipsyncSyllable> &syllables() const { return m_project.syllables; }
+    const MouthShapeSet &mouthShapes() const { return m_project.mouthShapes; }
+    // The timeline, syllables and script as one value (what changeAnimation() replaces).
+    Animation animation() const;
     bool hasFace() const { return m_hasFace; }
     const QImage &photo() const { return m_photo; }
     // The drawing's size: the photo's, else the face's image size.
@@ -81,11 +89,19 @@ public:
     // keepHandPlaced is true and a face is present) in one undoable step.
     void replaceFace(const FaceModel &face, bool keepHandPlaced, const QString &text);
     void changeStyle(const Style &style, const QString &text);
+    // Replaces the animation in one undoable step. While dragging, push commit = false for each
+    // move and commit = true on release with one non-zero mergeId for the drag: the moves merge
+    // into one step. mergeId 0 never merges. Pushes nothing when `after` equals the current
+    // animation and no drag is under way.
+    void changeAnimation(const Animation &after, const QString &text, int mergeId = 0, bool commit = true);
+    void changeMouthShapes(const MouthShapeSet &shapes, const QString &text, int mergeId = 0, bool commit = true);
 
     // Applied by the commands only; each emits changed().
     void applyPoint(int index, QPointF pos, bool handPlaced);
     void applyFace(const FaceModel &face, bool hasFace);
     void applyStyle(const Style &style);
+    void applyAnimation(const Animation &animation);
+    void applyMouthShapes(const MouthShapeSet &shapes);
 
 Q_SIGNALS:
     void changed(toonface::ChangeFlags what);
