@@ -12,6 +12,13 @@ constexpr int kMeasureSide = 320; // the estimate runs on a copy this large at m
 constexpr double kEdgeNorm = 6.0; // Minkowski norm of the edge strengths (shades of grey)
 constexpr double kGreyChroma = 3.0; // mean |r-g| + |g-b| below this: a greyscale photo
 constexpr int kClipped = 250; // pixels this bright in a channel are clipped: no information
+constexpr int kTiles = 3; // the consistency check's grid
+// The largest distance between a tile's illuminant chromaticity and the whole's: up to kSpreadFull
+// the cast is corrected fully, from kSpreadNone on not at all.
+// Photographs of people measured 0.04 (grace_hopper, uncast and cast alike); a face drawn on flat
+// colour fields 0.09 to 0.31.
+constexpr double kSpreadFull = 0.05;
+constexpr double kSpreadNone = 0.09;
 
 QColor mixRgb(QColor a, QColor b, double t)
 {
@@ -48,9 +55,15 @@ ColourBalance ColourBalance::measure(const QImage &photo, const QRectF &region)
     if (std::max(small.width(), small.height()) > kMeasureSide)
         small = small.scaled(kMeasureSide, kMeasureSide, Qt::KeepAspectRatio, Qt::SmoothTransformation);
     const int w = small.width(), h = small.height();
+    // Edge strength per channel (Minkowski sums), over the whole and per tile of a 3 x 3 grid.
+    struct Sums
+    {
+        std::array<double, 3> sum {};
+        long count = 0;
+    };
+    Sums all;
+    std::array<Sums, kTiles * kTiles> tiles {};
     double chroma = 0;
-    std::array<double, 3> sum {};
-    long count = 0;
     for (int y = 0; y < h; ++y) {
         const auto *line = reinterpret_cast<const QRgb *>(small.constScanLine(y));
         const auto *next = y + 1 < h ? reinterpret_cast<const QRgb *>(small.constScanLine(y + 1)) : nullptr;
@@ -68,23 +81,51 @@ ColourBalance ColourBalance::measure(const QImage &photo, const QRectF &region)
                 clipped = clipped || std::max({c[k], cr[k], cd[k]}) >= kClipped;
             if (clipped)
                 continue;
+            Sums &tile = tiles[(y * kTiles / h) * kTiles + x * kTiles / w];
+            double e[3];
             for (int k = 0; k < 3; ++k)
-                sum[k] += std::pow(std::hypot(double(cr[k] - c[k]), double(cd[k] - c[k])), kEdgeNorm);
-            ++count;
+                e[k] = std::pow(std::hypot(double(cr[k] - c[k]), double(cd[k] - c[k])), kEdgeNorm);
+            if (e[0] + e[1] + e[2] <= 0)
+                continue;
+            for (int k = 0; k < 3; ++k) {
+                all.sum[k] += e[k];
+                tile.sum[k] += e[k];
+            }
+            ++all.count;
+            ++tile.count;
         }
     }
     b.greyscale = chroma / std::max(1, w * h) < kGreyChroma;
-    if (b.greyscale || count == 0)
+    if (b.greyscale || all.count == 0)
         return b;
+    // The illuminant's chromaticity (r, g shares) from a set of sums.
+    auto illuminant = [](const Sums &s, std::array<double, 3> *e) {
+        for (int k = 0; k < 3; ++k)
+            (*e)[k] = std::pow(s.sum[k] / double(std::max(1L, s.count)), 1.0 / kEdgeNorm);
+        const double total = (*e)[0] + (*e)[1] + (*e)[2];
+        return total > 0 ? std::pair {(*e)[0] / total, (*e)[1] / total} : std::pair {1.0 / 3, 1.0 / 3};
+    };
     std::array<double, 3> e {};
-    for (int k = 0; k < 3; ++k)
-        e[k] = std::pow(sum[k] / double(count), 1.0 / kEdgeNorm);
+    const auto [r0, g0] = illuminant(all, &e);
     if (e[0] <= 0 || e[1] <= 0 || e[2] <= 0)
         return b;
+    // A cast lies over the whole scene: every part of it shows the same one. Where the tiles
+    // disagree, the "cast" is the scene's own colours (a coloured backdrop, a few large areas),
+    // and the correction fades out.
+    double spread = 0;
+    const long minCount = all.count / (4 * kTiles * kTiles);
+    for (const Sums &t : tiles) {
+        if (t.count <= minCount)
+            continue;
+        std::array<double, 3> te {};
+        const auto [r, g] = illuminant(t, &te);
+        spread = std::max(spread, std::hypot(r - r0, g - g0));
+    }
+    const double strength = std::clamp((kSpreadNone - spread) / (kSpreadNone - kSpreadFull), 0.0, 1.0);
     const double mean = (e[0] + e[1] + e[2]) / 3.0;
     double gains[3];
     for (int k = 0; k < 3; ++k)
-        gains[k] = std::clamp(mean / e[k], 1.0 / kMaxGain, kMaxGain);
+        gains[k] = std::pow(std::clamp(mean / e[k], 1.0 / kMaxGain, kMaxGain), strength);
     const double norm = (gains[0] + gains[1] + gains[2]) / 3.0;
     for (int k = 0; k < 3; ++k)
         b.gain[k] = gains[k] / norm;

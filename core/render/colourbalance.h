@@ -9,7 +9,9 @@ namespace toonface {
 // The photo's white balance, estimated by the grey-edge hypothesis (the average edge of a scene
 // is grey: a colour cast shows as unequal edge strength per channel), as channel gains that take
 // the cast out. Large areas of one colour (a wall, a suit) have few edges, so they do not pull
-// the estimate the way they pull a grey-world average. A plain value type.
+// the estimate the way they pull a grey-world average; and since a cast lies over the whole
+// scene, the correction fades out where parts of the picture disagree about it (a face on a
+// plain coloured backdrop keeps its colours). A plain value type.
 struct ColourBalance
 {
     double gain[3] = {1.0, 1.0, 1.0}; // red, green, blue; their mean is 1
