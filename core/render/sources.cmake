@@ -4,8 +4,4 @@ list(APPEND TOONFACE_CORE_SOURCES
   render/colourbalance.h render/colourbalance.cpp
   render/svgface.h render/svgface.cpp
   render/svgparts.h
-  render/svgfeatures.h render/svgfeatures.cpp
-  render/videoencoder.h render/videoencoder.cpp
-  render/smilexport.h render/smilexport.cpp
-  render/htmlplayer.h render/htmlplayer.cpp
-  render/framerenderer.h render/framerenderer.cpp)
+  render/svgfeatures.h render/svgfeatures.cpp)
