@@ -65,7 +65,7 @@ QMap<QString, ComponentStyle> baseComponents()
 // Measured brow thickness is drawn within these line weights (ES0/100): thinner is a brow not
 // seen (too light or under a fringe), thicker is hair or a shadow.
 constexpr double kMinBrowWidth = 2.5;
-constexpr double kMaxBrowWidth = 10.0;
+constexpr double kMaxBrowWidth = 8.0;
 
 double hueDistance(double a, double b)
 {
@@ -313,15 +313,19 @@ void Style::sampleColours(const QImage &original, const FaceModel &face)
         components[QStringLiteral("eyebrows")].stroke = brow;
     }
 
-    // Brow thickness: the run of pixels clearly darker than the skin across each brow's middle.
+    // Brow thickness: the unbroken run of pixels clearly darker than the skin through each brow's
+    // middle, up and down from it (a shadow or a lid apart from the brow does not count).
     if (skin.isValid()) {
         std::vector<int> runs;
+        auto dark = [&](QPointF q) {
+            const auto px = sampler.disc(q, 0.5);
+            return !px.empty() && qGray(px.front()) < 0.8 * qGray(skin.rgb());
+        };
         for (const auto &[a, b] : {std::pair {"4.4a", "4.4"}, std::pair {"4.3", "4.3a"}}) {
             const QPointF mid = (p(a) + p(b)) / 2.0;
             int run = 0;
-            for (double dy = -0.12 * es0; dy <= 0.12 * es0; dy += 1.0) {
-                const auto px = sampler.disc(mid + QPointF(0, dy), 0.5);
-                if (!px.empty() && qGray(px.front()) < 0.8 * qGray(skin.rgb()))
+            for (int dir : {-1, 1}) {
+                for (double d = dir > 0 ? 1.0 : 0.0; d <= 0.12 * es0 && dark(mid + QPointF(0, dir * d)); d += 1.0)
                     ++run;
             }
             runs.push_back(run);
