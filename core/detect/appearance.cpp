@@ -20,6 +20,7 @@ constexpr double kSkinShade[2] = {0.55, 1.6}; // ... and its luma within these m
 constexpr double kHairHues[2] = {345.0, 55.0};
 constexpr double kDarkest = 0.2;
 constexpr double kGreyest = 0.2;
+constexpr int kColourless = 4; // a skin whose channels differ by less has no colour (a greyscale photo)
 constexpr double kEdgeFloor = 2.0; // luma units: the texture floor of perfectly smooth skin
 
 double lumaOf(QRgb p)
@@ -267,7 +268,11 @@ void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor 
         return;
     const auto scalp = std::count_if(crown.begin(), crown.end(), [&](QRgb c) { return skinLike(c, skin); });
     out->baldScore = double(scalp) / double(crown.size());
-    out->appearance.bald = out->baldScore >= AppearanceFindings::kBaldThreshold;
+    // Without colour, a scalp and grey or white hair look alike: a greyscale photo is never bald.
+    const bool colourless
+        = std::max({skin.red(), skin.green(), skin.blue()}) - std::min({skin.red(), skin.green(), skin.blue()})
+        < kColourless;
+    out->appearance.bald = !colourless && out->baldScore >= AppearanceFindings::kBaldThreshold;
     if (out->appearance.bald)
         return;
     // A hat: the crown's colour is none that hair grows in (black, browns, blondes, reds, greys and

@@ -143,6 +143,18 @@ private Q_SLOTS:
         QVERIFY(widths[1] > widths[0] + 3);
     }
 
+    // In a greyscale photo a scalp and white hair cannot be told apart: never bald.
+    void greyscaleIsNeverBald()
+    {
+        DrawnFaceOptions o;
+        o.bald = true;
+        const QImage grey = testing::drawnFace(o).convertToFormat(QImage::Format_Grayscale8);
+        const QColor skin(qGray(o.skin.rgb()), qGray(o.skin.rgb()), qGray(o.skin.rgb()));
+        const AppearanceFindings f = findAppearance(grey, testing::drawnFaceModel(), skin);
+        QVERIFY(f.baldScore >= AppearanceFindings::kBaldThreshold); // it looks like skin...
+        QVERIFY(!f.appearance.bald); // ...but it may be white hair
+    }
+
     void outsideThePhotoIsAbsent()
     {
         FaceModel face = testing::drawnFaceModel();
@@ -194,6 +206,7 @@ private Q_SLOTS:
             "", "his moustache is grey, hardly darker than his skin: facial hair is found by darkness", Continue);
         QVERIFY(style.appearance.moustache);
         QVERIFY(!style.appearance.hat);
+        QVERIFY(!style.appearance.bald); // white hair in a greyscale photo is not a scalp
         QVERIFY(style.appearance.glasses == GlassesShape::None);
     }
 
