@@ -28,8 +28,11 @@ int runCartoon(const Command &self, const QStringList &args)
     const QCommandLineOption method(QStringLiteral("method"),
         QStringLiteral("Detection method for a photo: auto, classic or landmarks."),
         QStringLiteral("auto|classic|landmarks"), QStringLiteral("auto"));
+    const QCommandLineOption caricature(QStringLiteral("caricature"),
+        QStringLiteral("How much to exaggerate what makes the face its own: 0 (exact) to 1 (default: the style's)."),
+        QStringLiteral("F"));
     const QCommandLineOption frame = frameOption();
-    parser.addOptions({output, png, size, style, emotion, method, frame});
+    parser.addOptions({output, png, size, style, emotion, method, frame, caricature});
     parser.addPositionalArgument(QStringLiteral("INPUT"), QStringLiteral("A photo, a face JSON or a project."));
     bool helped = false;
     if (!parseArguments(parser, self, args, &helped))
@@ -45,6 +48,14 @@ int runCartoon(const Command &self, const QStringList &args)
     if (!sizeOk || pngSize < 16 || pngSize > 8192)
         return fail(
             ExitUsage, QStringLiteral("--size takes a whole number from 16 to 8192, not '%1'").arg(parser.value(size)));
+    double caricatureFactor = -1;
+    if (parser.isSet(caricature)) {
+        bool ok = false;
+        caricatureFactor = parser.value(caricature).toDouble(&ok);
+        if (!ok || caricatureFactor < 0 || caricatureFactor > kMaxCaricature)
+            return fail(ExitUsage,
+                QStringLiteral("--caricature takes a number from 0 to 1, not '%1'").arg(parser.value(caricature)));
+    }
     Emotion expression = Emotion::Neutral;
     std::optional<Style> chosenStyle;
     DetectOptions options;
@@ -61,7 +72,9 @@ int runCartoon(const Command &self, const QStringList &args)
     FaceInput input;
     if (const int code = loadFaceInput(parser.positionalArguments().constFirst(), options, &input); code != ExitOk)
         return code;
-    const Style drawStyle = drawingStyle(input, chosenStyle);
+    Style drawStyle = drawingStyle(input, chosenStyle);
+    if (caricatureFactor >= 0)
+        drawStyle.caricature = caricatureFactor;
 
     SvgFace face(input.face, drawStyle);
     face.setFrame(drawingFrame(input.face, wholePhoto));
@@ -88,7 +101,7 @@ const CommandRegistrar registrar({QStringLiteral("cartoon"),
     QStringLiteral("Draw the cartoon face of a photo, a face JSON or a project as SVG (and PNG)."),
     QStringLiteral(
         "cartoon IMAGE|FACE.json|PROJECT.toonface -o OUT.svg [--png OUT.png [--size N]] [--frame head|photo] "
-        "[--style NAME] [--emotion NAME]"),
+        "[--style NAME] [--emotion NAME] [--caricature F]"),
     runCartoon, true});
 
 } // namespace

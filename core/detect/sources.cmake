@@ -1,6 +1,7 @@
 list(APPEND TOONFACE_CORE_SOURCES
   detect/detector.h detect/detector.cpp
   detect/faceregions.h detect/faceregions.cpp
+  detect/appearance.h detect/appearance.cpp
   detect/hairsearch.h detect/hairsearch.cpp
   detect/headregions.h detect/headregions.cpp
   detect/landmarkmap.h detect/landmarkmap.cpp

@@ -39,23 +39,34 @@ const char *mirrorPointId(const char *id)
 
 const EmotionPreset &emotionPreset(Emotion emotion)
 {
-    // Offsets in ES0 (eye distance) units, y down; the image-left side and centre only.
+    // Offsets in ES0 (eye distance) units, y down; the image-left side and centre only, so +x
+    // is toward the face's middle for the brows and lids and -x is outward for the mouth corner.
     // 4.6 outer brow end, 4.4a, 4.4, 4.2 inner end; 3.2 upper lid, 3.4 lower lid;
-    // 8.4 left mouth corner, 8.9 upper lip, 8.2 lower lip.
+    // 8.4 left mouth corner, 8.9 upper lip, 8.2 lower lip (and with it the jaw).
+    //
+    // Drawn as a cartoonist draws them, past the small MPEG-4 ranges of a real face, so that
+    // each reads at a glance and still reads at half intensity (the moves are linear):
+    // - smile: corners well up and back, the mouth open on the teeth, lower lids up (the cheeks
+    //   push them), brows lifted a little;
+    // - sad: inner brow ends high and outer ends low (the brows slant down outward), heavy
+    //   upper lids, corners well down under a lower lip pushed up (a frown's arch);
+    // - angry: inner brow ends down and together (a V), upper lids lowered onto a glare, lower
+    //   lids tensed, lips pressed thin and narrow, corners down;
+    // - surprise: brows high and arched, eyes wide, the jaw dropped under rounded lips.
     static const std::array<EmotionPreset, 5> presets = {{
         {{}, 1.0},
-        {{{"4.6", {0, -0.02}}, {"4.4a", {0, -0.04}}, {"4.4", {0, -0.04}}, {"4.2", {0, -0.02}}, {"3.4", {0, -0.03}},
-             {"8.4", {-0.05, -0.08}}, {"8.9", {0, -0.01}}, {"8.2", {0, 0.03}}},
-            0.9},
-        {{{"4.6", {0, 0.05}}, {"4.4a", {0, 0.0}}, {"4.4", {0, -0.05}}, {"4.2", {0.01, -0.09}}, {"3.2", {0, 0.03}},
-             {"8.4", {0.02, 0.08}}, {"8.2", {0, 0.01}}},
+        {{{"4.6", {0, -0.03}}, {"4.4a", {0, -0.05}}, {"4.4", {0, -0.05}}, {"4.2", {0, -0.03}}, {"3.2", {0, 0.02}},
+             {"3.4", {0, -0.06}}, {"8.4", {-0.10, -0.17}}, {"8.9", {0, -0.03}}, {"8.2", {0, 0.17}}},
             0.85},
-        {{{"4.6", {0, -0.02}}, {"4.4a", {0, 0.03}}, {"4.4", {0.01, 0.06}}, {"4.2", {0.04, 0.10}}, {"3.2", {0, 0.03}},
-             {"3.4", {0, -0.02}}, {"8.4", {0.03, 0.04}}, {"8.9", {0, 0.01}}},
-            0.9},
-        {{{"4.6", {0, -0.12}}, {"4.4a", {0, -0.15}}, {"4.4", {0, -0.15}}, {"4.2", {0, -0.12}}, {"3.2", {0, -0.04}},
-             {"3.4", {0, 0.02}}, {"8.4", {0.06, 0.02}}, {"8.9", {0, -0.02}}, {"8.2", {0, 0.18}}},
-            1.15},
+        {{{"4.6", {0, 0.08}}, {"4.4a", {0, -0.02}}, {"4.4", {0.015, -0.11}}, {"4.2", {0.03, -0.2}}, {"3.2", {0, 0.03}},
+             {"8.4", {0.04, 0.2}}, {"8.9", {0, 0.02}}, {"8.2", {0, -0.06}}},
+            0.75},
+        {{{"4.6", {0, -0.04}}, {"4.4a", {0.01, 0.03}}, {"4.4", {0.03, 0.09}}, {"4.2", {0.06, 0.15}}, {"3.2", {0, 0.06}},
+             {"3.4", {0, -0.04}}, {"8.4", {0.07, 0.06}}, {"8.9", {0, 0.03}}, {"8.2", {0, -0.05}}},
+            0.85},
+        {{{"4.6", {0, -0.17}}, {"4.4a", {0, -0.23}}, {"4.4", {0, -0.23}}, {"4.2", {0, -0.18}}, {"3.2", {0, -0.05}},
+             {"3.4", {0, 0.03}}, {"8.4", {0.10, 0.04}}, {"8.9", {0, -0.04}}, {"8.2", {0, 0.40}}},
+            1.3},
     }};
     return presets[int(emotion)];
 }

@@ -5,4 +5,5 @@ list(APPEND TOONFACE_CORE_SOURCES
   face/mouthshape.h face/mouthshape.cpp
   face/emotion.h face/emotion.cpp
   face/pose.h face/pose.cpp
-  face/averageface.h face/averageface.cpp)
+  face/averageface.h face/averageface.cpp
+  face/caricature.h face/caricature.cpp)

@@ -28,6 +28,8 @@ constexpr std::array<const char *, 4> kOffsetKeys = {"up", "dn", "lf", "rt"}; //
 constexpr std::array<EyebrowVariant, 3> kEyebrowVariants
     = {EyebrowVariant::Polyline, EyebrowVariant::Bezier, EyebrowVariant::Thick};
 constexpr std::array<NoseVariant, 3> kNoseVariants = {NoseVariant::Full, NoseVariant::Simple, NoseVariant::Tip};
+constexpr std::array<GlassesShape, 4> kGlassesShapes
+    = {GlassesShape::None, GlassesShape::Round, GlassesShape::Rectangular, GlassesShape::Rimless};
 
 template<typename Enum, std::size_t N>
 bool enumFromJson(
@@ -131,6 +133,14 @@ QJsonObject styleToJson(const Style &style)
     s.insert(QStringLiteral("cute"), style.cute);
     s.insert(QStringLiteral("eyebrows"), eyebrowVariantName(style.eyebrows));
     s.insert(QStringLiteral("nose"), noseVariantName(style.nose));
+    s.insert(QStringLiteral("caricature"), style.caricature);
+    QJsonObject look;
+    look.insert(QStringLiteral("glasses"), glassesShapeName(style.appearance.glasses));
+    look.insert(QStringLiteral("moustache"), style.appearance.moustache);
+    look.insert(QStringLiteral("beard"), style.appearance.beard);
+    look.insert(QStringLiteral("hat"), style.appearance.hat);
+    look.insert(QStringLiteral("bald"), style.appearance.bald);
+    s.insert(QStringLiteral("appearance"), look);
     QJsonObject components;
     for (auto it = style.components.cbegin(); it != style.components.cend(); ++it) {
         QJsonObject c;
@@ -153,6 +163,23 @@ bool styleFromJson(const JsonField &field, Style *style, QString *error)
         || !enumFromJson(kEyebrowVariants, &eyebrowVariantName, field.member("eyebrows"), &style->eyebrows, error)
         || !enumFromJson(kNoseVariants, &noseVariantName, field.member("nose"), &style->nose, error))
         return false;
+    // Added later: files without them keep their drawing (no exaggeration, nothing worn).
+    style->caricature = 0;
+    if (const JsonField c = field.member("caricature"); !c.isMissing()) {
+        if (!c.toNumber(&style->caricature, error))
+            return false;
+        if (style->caricature < 0 || style->caricature > kMaxCaricature)
+            return c.expected(QStringLiteral("a number from 0 to %1").arg(kMaxCaricature), error);
+    }
+    style->appearance = Appearance();
+    if (const JsonField look = field.member("appearance"); !look.isMissing()) {
+        Appearance &a = style->appearance;
+        if (!look.toObject(&unused, error)
+            || !enumFromJson(kGlassesShapes, &glassesShapeName, look.member("glasses"), &a.glasses, error)
+            || !look.member("moustache").toBool(&a.moustache, error) || !look.member("beard").toBool(&a.beard, error)
+            || !look.member("hat").toBool(&a.hat, error) || !look.member("bald").toBool(&a.bald, error))
+            return false;
+    }
     const JsonField components = field.member("components");
     QJsonObject all;
     if (!components.toObject(&all, error))

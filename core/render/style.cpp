@@ -1,7 +1,9 @@
 #include "render/style.h"
 
+#include "detect/appearance.h"
 #include "face/facemodel.h"
 #include "face/fapu.h"
+#include "render/colourbalance.h"
 
 #include <QImage>
 #include <QLineF>
@@ -50,10 +52,20 @@ QMap<QString, ComponentStyle> baseComponents()
     cheeks.fill.setAlpha(77); // 30 %, in the 8 bits a project file keeps
     cheeks.visible = false;
     c.insert(QStringLiteral("cheeks"), cheeks);
+    // Drawn only when the appearance has them; these are the colours until a photo gives its own.
+    c.insert(QStringLiteral("glasses"), paint(nullptr, "#2a2a2e", 2.6));
+    c.insert(QStringLiteral("moustache"), paint("#3d2b1f", "#22170f", 1.2));
+    c.insert(QStringLiteral("beard"), paint("#3d2b1f", "#22170f", 1.2));
+    c.insert(QStringLiteral("hat"), paint("#2b3a55", "#151c2a", 2.2));
     return c;
 }
 
 // ---- colour sampling ----
+
+// Measured brow thickness is drawn within these line weights (ES0/100): thinner is a brow not
+// seen (too light or under a fringe), thicker is hair or a shadow.
+constexpr double kMinBrowWidth = 2.5;
+constexpr double kMaxBrowWidth = 8.0;
 
 double hueDistance(double a, double b)
 {
@@ -221,12 +233,17 @@ Style Style::preset(const QString &name, bool *ok)
     return s;
 }
 
-void Style::sampleColours(const QImage &photo, const FaceModel &face)
+void Style::sampleColours(const QImage &original, const FaceModel &face)
 {
-    if (photo.isNull())
+    if (original.isNull())
         return;
     if (components.isEmpty())
         components = baseComponents();
+    // Every colour is read from the photo with its colour cast taken out, as seen around the head.
+    const QRectF head = face.bounds();
+    const ColourBalance balance = ColourBalance::measure(
+        original, head.adjusted(-head.width(), -0.5 * head.height(), head.width(), 0.5 * head.height()));
+    const QImage photo = balance.apply(original);
     const PixelSampler sampler(photo);
     const Fapu f = Fapu::measure(face);
     const double es0 = f.es0 > 0 ? f.es0 : std::max(1.0, face.bounds().width() / 2.5);
@@ -244,14 +261,15 @@ void Style::sampleColours(const QImage &photo, const FaceModel &face)
     const QPointF chin = (p("8.2") + p("2.1") * 2.0) / 3.0;
     const QColor skin = medianColour(std::vector<QColor> {regionMedian(leftCheek, rs), regionMedian(rightCheek, rs),
         regionMedian(forehead, rs), regionMedian(bridge, rs * 0.6), regionMedian(chin, rs * 0.6)});
-    // A black-and-white photo says nothing about skin, lips or eyes: those keep the preset's
-    // colours, and only the hair takes its shade from the photo.
-    const bool monochrome = photo.allGray();
-    const bool skinOk = !monochrome && plausibleSkin(skin);
-    const QColor skinUsed = skinOk ? skin : components.value(QStringLiteral("face")).fill;
+    // A photo without colour says nothing about hues: skin and hair take natural colours of the
+    // photo's tones, lips follow the skin and the irises a dark brown.
+    const bool monochrome = balance.greyscale || original.allGray();
+    const bool skinOk = skin.isValid() && (monochrome || plausibleSkin(skin));
+    const QColor skinDrawn = monochrome && skin.isValid() ? skinFromGrey(qGray(skin.rgb())) : skin;
+    const QColor skinUsed = skinOk ? skinDrawn : components.value(QStringLiteral("face")).fill;
     if (skinOk) {
         for (const char *key : {"face", "jaw", "ears"})
-            components[QLatin1StringView(key)].fill = skin;
+            components[QLatin1StringView(key)].fill = skinDrawn;
     }
 
     // Hair: a band inside the outline h.3..h.17, a quarter and half way to the hairline;
@@ -276,16 +294,17 @@ void Style::sampleColours(const QImage &photo, const FaceModel &face)
         const auto b = sampler.disc(h - in * (0.12 * es0), radius);
         outside.insert(outside.end(), b.begin(), b.end());
     }
-    const QColor hair = litMedianColour(inside);
+    const QColor hairSeen = litMedianColour(inside);
     const QColor background = medianColour(outside);
-    bool hairOk = hair.isValid();
+    bool hairOk = hairSeen.isValid();
     if (hairOk && background.isValid()) {
         const auto nearBackground = std::count_if(
             inside.begin(), inside.end(), [&](QRgb c) { return rgbDistance(QColor(c), background) < 40.0; });
         hairOk = nearBackground * 2 < qsizetype(inside.size());
     }
-    if (hairOk && rgbDistance(hair, skinUsed) < 30.0)
+    if (hairOk && rgbDistance(hairSeen, skin) < 30.0)
         hairOk = false; // bald or the band fell on the forehead
+    const QColor hair = hairOk && monochrome ? hairFromGrey(qGray(hairSeen.rgb())) : hairSeen;
     if (hairOk) {
         components[QStringLiteral("hair")].fill = hair;
         components[QStringLiteral("hair")].stroke = hair.darker(170);
@@ -294,8 +313,64 @@ void Style::sampleColours(const QImage &photo, const FaceModel &face)
         components[QStringLiteral("eyebrows")].stroke = brow;
     }
 
-    if (monochrome)
+    // Brow thickness: the unbroken run of pixels clearly darker than the skin through each brow's
+    // middle, up and down from it (a shadow or a lid apart from the brow does not count).
+    if (skin.isValid()) {
+        std::vector<int> runs;
+        auto dark = [&](QPointF q) {
+            const auto px = sampler.disc(q, 0.5);
+            return !px.empty() && qGray(px.front()) < 0.8 * qGray(skin.rgb());
+        };
+        for (const auto &[a, b] : {std::pair {"4.4a", "4.4"}, std::pair {"4.3", "4.3a"}}) {
+            const QPointF mid = (p(a) + p(b)) / 2.0;
+            int run = 0;
+            for (int dir : {-1, 1}) {
+                for (double d = dir > 0 ? 1.0 : 0.0; d <= 0.12 * es0 && dark(mid + QPointF(0, dir * d)); d += 1.0)
+                    ++run;
+            }
+            runs.push_back(run);
+        }
+        const double thickness = (runs[0] + runs[1]) / 2.0 / (es0 / 100.0); // in ES0/100
+        if (thickness >= kMinBrowWidth)
+            components[QStringLiteral("eyebrows")].strokeWidth = std::min(thickness, kMaxBrowWidth);
+    }
+
+    // What the person wears or grows, found on the balanced photo against its own skin.
+    const AppearanceFindings found = findAppearance(photo, face, skin);
+    appearance = found.appearance;
+    if (found.glassesFrame.isValid()) {
+        const QColor frame = monochrome
+            ? QColor(qGray(found.glassesFrame.rgb()), qGray(found.glassesFrame.rgb()), qGray(found.glassesFrame.rgb()))
+            : found.glassesFrame;
+        components[QStringLiteral("glasses")].stroke = frame;
+    }
+    if (found.facialHair.isValid()) {
+        // In the person's hair colour where the hair was seen; stubble (not much darker than the
+        // skin) is drawn see-through.
+        const QColor seen = monochrome ? hairFromGrey(qGray(found.facialHair.rgb())) : found.facialHair;
+        QColor fill = hairOk ? mix(seen, hair, 0.5) : seen;
+        const bool stubble = qGray(found.facialHair.rgb()) > 0.55 * qGray(skin.rgb());
+        const QColor stroke = fill.darker(140);
+        if (stubble)
+            fill.setAlpha(150);
+        for (const char *key : {"moustache", "beard"}) {
+            components[QLatin1StringView(key)].fill = fill;
+            components[QLatin1StringView(key)].stroke = stroke;
+        }
+    }
+    if (found.hat.isValid()) {
+        const QColor hat = monochrome ? hairFromGrey(qGray(found.hat.rgb())) : found.hat;
+        components[QStringLiteral("hat")].fill = hat;
+        components[QStringLiteral("hat")].stroke = hat.darker(160);
+    }
+
+    if (monochrome) {
+        const QColor lipUsed = mix(skinUsed, QColor(0xc0, 0x50, 0x4d), 0.45);
+        components[QStringLiteral("lips")].fill = lipUsed;
+        components[QStringLiteral("lips")].stroke = lipUsed.darker(150);
+        components[QStringLiteral("eyeballs")].fill = QColor(0x5a, 0x3d, 0x2b);
         return;
+    }
 
     // Lips: the middle of each lip.
     const double rl = std::max(1.0, 0.3 * std::min(f.upperLipH, f.lowerLipH));
@@ -344,6 +419,28 @@ QString noseVariantName(NoseVariant v)
     case NoseVariant::Tip: return QStringLiteral("tip");
     }
     return {};
+}
+
+QString glassesShapeName(GlassesShape v)
+{
+    switch (v) {
+    case GlassesShape::None: return QStringLiteral("none");
+    case GlassesShape::Round: return QStringLiteral("round");
+    case GlassesShape::Rectangular: return QStringLiteral("rectangular");
+    case GlassesShape::Rimless: return QStringLiteral("rimless");
+    }
+    return {};
+}
+
+bool glassesShapeFromName(const QString &name, GlassesShape *v)
+{
+    for (GlassesShape g : {GlassesShape::None, GlassesShape::Round, GlassesShape::Rectangular, GlassesShape::Rimless}) {
+        if (glassesShapeName(g) == name) {
+            *v = g;
+            return true;
+        }
+    }
+    return false;
 }
 
 bool noseVariantFromName(const QString &name, NoseVariant *v)

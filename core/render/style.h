@@ -13,7 +13,8 @@ class FaceModel;
 
 // How one drawn component looks. Component names are the style keys of SvgFace's parts:
 // "hair", "ears", "face", "jaw", "cheeks", "nose", "eyebrows", "eyes", "eyeballs", "pupils",
-// "highlights", "lips", "mouth-inner", "teeth", "tongue". A key missing from a Style's map
+// "highlights", "lips", "mouth-inner", "teeth", "tongue", "glasses", "moustache", "beard",
+// "hat". A key missing from a Style's map
 // is drawn as in the "normal" preset.
 struct ComponentStyle
 {
@@ -26,6 +27,27 @@ struct ComponentStyle
 };
 
 enum class EyebrowVariant { Polyline, Bezier, Thick };
+enum class GlassesShape { None, Round, Rectangular, Rimless };
+
+// What a photo shows of the person beyond the 72 points: things worn and kinds of hair that the
+// drawing adds as layers of their own (SVG ids "glasses", "moustache", "beard", "hat"), each only
+// when found. Their colours are the components "glasses" (stroke: frame; fill: lens tint, usually
+// transparent), "moustache", "beard" and "hat"; a component's `visible` switches its layer off.
+struct Appearance
+{
+    GlassesShape glasses = GlassesShape::None;
+    bool moustache = false;
+    bool beard = false; // on the chin and along the jaw; it opens with the jaw
+    bool hat = false; // the top of the head is a hat, not hair
+    bool bald = false; // the head shows the skull: the hair outline is drawn as skin
+
+    bool operator==(const Appearance &) const = default;
+};
+
+// How much the drawing exaggerates what makes the face differ from the average face
+// (0 = exactly the points; 1 = twice the difference). New styles start mild.
+inline constexpr double kDefaultCaricature = 0.35;
+inline constexpr double kMaxCaricature = 1.0;
 enum class NoseVariant { Full, Simple, Tip };
 
 // A drawing style: a named preset ("normal", "cute", ...) plus the user's overrides.
@@ -37,13 +59,17 @@ struct Style
     bool cute = false; // thesis Fig. 7.8c: rounder jaw, larger eyeballs, smaller nose
     EyebrowVariant eyebrows = EyebrowVariant::Polyline;
     NoseVariant nose = NoseVariant::Full;
+    double caricature = kDefaultCaricature;
+    Appearance appearance;
     QMap<QString, ComponentStyle> components;
 
     // The built-in presets; unknown names give an empty optional-like result via ok=false.
     static QStringList presetNames();
     static Style preset(const QString &name, bool *ok = nullptr);
 
-    // Sets skin, hair, lip and iris colours from the photo under the face's points.
+    // Sets skin, hair, lip and iris colours from the photo under the face's points, corrected
+    // for the photo's white balance (a greyscale photo gets natural colours from its tones), and
+    // the appearance (glasses, facial hair, hat, bald head) with the colours of what it finds.
     void sampleColours(const QImage &photo, const FaceModel &face);
 
     bool operator==(const Style &) const = default;
@@ -52,6 +78,8 @@ struct Style
 QString eyebrowVariantName(EyebrowVariant v);
 bool eyebrowVariantFromName(const QString &name, EyebrowVariant *v);
 QString noseVariantName(NoseVariant v);
+QString glassesShapeName(GlassesShape v); // "none", "round", "rectangular", "rimless"
+bool glassesShapeFromName(const QString &name, GlassesShape *v);
 bool noseVariantFromName(const QString &name, NoseVariant *v);
 
 } // namespace toonface

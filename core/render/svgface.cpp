@@ -1,7 +1,10 @@
 #include "render/svgface.h"
 
+#include "face/caricature.h"
 #include "face/fapu.h"
 #include "render/curves.h"
+#include "render/svgfeatures.h"
+#include "render/svgparts.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -19,209 +22,7 @@ namespace toonface {
 
 namespace {
 
-using Points = std::array<QPointF, kPointCount>;
-
-// ---- compact SVG text ----
-
-// At most two decimals, no trailing zeros, no "-0".
-void appendNumber(QByteArray &out, double v)
-{
-    if (!std::isfinite(v))
-        v = 0;
-    v = std::clamp(v, -1e12, 1e12);
-    long long n = std::llround(v * 100.0);
-    if (n < 0) {
-        out += '-';
-        n = -n;
-    }
-    char buf[32];
-    int len = 0;
-    long long whole = n / 100;
-    do {
-        buf[len++] = char('0' + whole % 10);
-        whole /= 10;
-    } while (whole > 0);
-    while (len > 0)
-        out += buf[--len];
-    const int frac = int(n % 100);
-    if (frac != 0) {
-        out += '.';
-        out += char('0' + frac / 10);
-        if (frac % 10 != 0)
-            out += char('0' + frac % 10);
-    }
-}
-
-QByteArray number(double v)
-{
-    QByteArray s;
-    appendNumber(s, v);
-    return s;
-}
-
-void appendPoint(QByteArray &out, QPointF p)
-{
-    appendNumber(out, p.x());
-    out += ',';
-    appendNumber(out, p.y());
-}
-
-// An SVG path "d" built from absolute commands.
-class PathData
-{
-public:
-    PathData &moveTo(QPointF p) { return command('M', p); }
-    PathData &lineTo(QPointF p) { return command('L', p); }
-    PathData &cubic(const CubicBezier &b)
-    {
-        m_d += 'C';
-        appendPoint(m_d, b.q1);
-        m_d += ' ';
-        appendPoint(m_d, b.q2);
-        m_d += ' ';
-        appendPoint(m_d, b.q3);
-        return *this;
-    }
-    PathData &cubics(const QVector<CubicBezier> &chain)
-    {
-        for (const CubicBezier &b : chain)
-            cubic(b);
-        return *this;
-    }
-    PathData &horizontalTo(double x)
-    {
-        m_d += 'H';
-        appendNumber(m_d, x);
-        return *this;
-    }
-    PathData &verticalTo(double y)
-    {
-        m_d += 'V';
-        appendNumber(m_d, y);
-        return *this;
-    }
-    PathData &close()
-    {
-        m_d += 'Z';
-        return *this;
-    }
-    QByteArray data() const { return m_d; }
-
-private:
-    PathData &command(char c, QPointF p)
-    {
-        m_d += c;
-        appendPoint(m_d, p);
-        return *this;
-    }
-    QByteArray m_d;
-};
-
-QByteArray pointList(const QVector<QPointF> &points)
-{
-    QByteArray s;
-    s.reserve(points.size() * 12);
-    for (qsizetype i = 0; i < points.size(); ++i) {
-        if (i)
-            s += ' ';
-        appendPoint(s, points[i]);
-    }
-    return s;
-}
-
-// ---- geometry helpers ----
-
-double length(QPointF v)
-{
-    return std::hypot(v.x(), v.y());
-}
-
-QPointF unit(QPointF v)
-{
-    const double l = length(v);
-    return l > 1e-12 ? v / l : QPointF();
-}
-
-QPointF lerp(QPointF a, QPointF b, double t)
-{
-    return a + (b - a) * t;
-}
-
-QPointF perpendicular(QPointF v)
-{
-    return {-v.y(), v.x()};
-}
-
-CubicBezier reversed(const CubicBezier &b)
-{
-    return {b.q3, b.q2, b.q1, b.q0};
-}
-
-// The curve whose control points are (1 - t) a + t b: at every parameter, the point that far
-// from a's point toward b's.
-CubicBezier blend(const CubicBezier &a, const CubicBezier &b, double t)
-{
-    return {lerp(a.q0, b.q0, t), lerp(a.q1, b.q1, t), lerp(a.q2, b.q2, t), lerp(a.q3, b.q3, t)};
-}
-
-// Exact bounding box of a cubic Bezier: its end points and the extrema where a coordinate's
-// derivative vanishes.
-QRectF bezierBounds(const CubicBezier &b)
-{
-    double minX = std::min(b.q0.x(), b.q3.x()), maxX = std::max(b.q0.x(), b.q3.x());
-    double minY = std::min(b.q0.y(), b.q3.y()), maxY = std::max(b.q0.y(), b.q3.y());
-    auto extrema = [&](double p0, double p1, double p2, double p3, bool isX) {
-        // d/dt of the cubic = 3[(a t^2 + b t + c)] with:
-        const double a = -p0 + 3 * p1 - 3 * p2 + p3;
-        const double bb = 2 * (p0 - 2 * p1 + p2);
-        const double c = p1 - p0;
-        double roots[2];
-        int count = 0;
-        if (std::abs(a) < 1e-12) {
-            if (std::abs(bb) > 1e-12)
-                roots[count++] = -c / bb;
-        } else {
-            const double disc = bb * bb - 4 * a * c;
-            if (disc >= 0) {
-                const double s = std::sqrt(disc);
-                roots[count++] = (-bb + s) / (2 * a);
-                roots[count++] = (-bb - s) / (2 * a);
-            }
-        }
-        for (int i = 0; i < count; ++i) {
-            const double t = roots[i];
-            if (t > 0 && t < 1) {
-                const QPointF p = b.at(t);
-                if (isX) {
-                    minX = std::min(minX, p.x());
-                    maxX = std::max(maxX, p.x());
-                } else {
-                    minY = std::min(minY, p.y());
-                    maxY = std::max(maxY, p.y());
-                }
-            }
-        }
-    };
-    extrema(b.q0.x(), b.q1.x(), b.q2.x(), b.q3.x(), true);
-    extrema(b.q0.y(), b.q1.y(), b.q2.y(), b.q3.y(), false);
-    return QRectF(QPointF(minX, minY), QPointF(maxX, maxY));
-}
-
-// ---- parts ----
-
-enum Paint { FillAndStroke, FillOnly, StrokeOnly };
-
-// A part while it is being built; parts() and svg() both read these.
-struct Part
-{
-    const char *id;
-    bool dynamic;
-    const char *element;
-    std::vector<std::pair<const char *, QByteArray>> geometry; // in attribute order
-    const char *styleKey;
-    Paint paint = FillAndStroke;
-    const char *clipPath = nullptr;
-};
+using namespace svgparts;
 
 // The proportions of the drawing, in ES0 (eye distance) units unless said otherwise.
 constexpr double kEyeballRadius = 0.105;
@@ -242,17 +43,6 @@ constexpr double kLowerLipSpread = 1.5; // method B: the lower lip rounder than 
 constexpr double kTeethShare = 0.3;
 constexpr double kTongueShare = 0.28;
 constexpr double kHairInset = 0.15; // how far the hair's hidden closing runs inside the face
-// Curves of moving parts are fitted through their targets to this tolerance (pixels), not the
-// fitting functions' default 0.5 px: with a loose tolerance a control point jumps by up to 2/3 px
-// when the fitting error crosses it, so an animated mouth or lid would pop between frames and
-// its geometry would not follow the pose continuously (which SMIL interpolation relies on).
-constexpr double kMovingFitTolerance = 1e-3;
-
-struct Pt
-{
-    const Points &p;
-    QPointF operator()(const char *id) const { return p[pt::idx(id)]; }
-};
 
 // Everything about a face that does not depend on the pose.
 struct SvgFaceGeometry
@@ -269,31 +59,35 @@ struct SvgFaceGeometry
     QMap<QString, ComponentStyle> components;
 };
 
-// ---- the style's rules (cute) ----
+// ---- the style's rules (caricature, cute) ----
 
 // What the cute rules add to the points, from the neutral face: the same in every pose.
-std::array<QPointF, kPointCount> styleRuleOffsets(const FaceModel &face, const Style &style)
+std::array<QPointF, kPointCount> styleRuleOffsets(const FaceModel &original, const Style &style)
 {
-    std::array<QPointF, kPointCount> off {};
+    // First the caricature (the person's own proportions, exaggerated), then the cute rules on it.
+    std::array<QPointF, kPointCount> off = caricatureOffsets(original, style.caricature);
     if (!style.cute)
         return off;
+    FaceModel face = original;
+    for (int i = 0; i < kPointCount; ++i)
+        face.setPoint(i, original.point(i) + off[i], original.isHandPlaced(i));
     const Pt P {face.points()};
     const Fapu f = face.fapu();
     // A shorter, rounder jaw: the chin comes up, and the lower jaw points move onto the quarter
     // ellipses from the jaw sides (2.14, 2.13) to the raised chin.
     const QPointF chin = P("2.1") + QPointF(0, -kCuteChinRaise * f.jawH);
-    off[pt::idx("2.1")] = chin - P("2.1");
+    off[pt::idx("2.1")] += chin - P("2.1");
     const double c = std::cos(std::numbers::pi / 4);
     for (const auto &[lower, side] : {std::pair {"2.12", "2.14"}, std::pair {"2.11", "2.13"}}) {
         const QPointF s = P(side);
         const QPointF centre(chin.x(), s.y());
         const QPointF onEllipse = centre + QPointF((s.x() - chin.x()) * c, (chin.y() - s.y()) * c);
-        off[pt::idx(lower)] = onEllipse - P(lower);
+        off[pt::idx(lower)] += onEllipse - P(lower);
     }
     // A smaller nose, shrunk about its tip.
     const QPointF tip = P("9.15");
     for (const char *id : {"9.6", "9.7", "9.14", "9.13", "9.2", "9.1", "9.4", "9.5"})
-        off[pt::idx(id)] = (P(id) - tip) * (kCuteNoseScale - 1.0);
+        off[pt::idx(id)] += (P(id) - tip) * (kCuteNoseScale - 1.0);
     return off;
 }
 
@@ -388,8 +182,10 @@ void makeEar(const Pt &P, const SvgFaceGeometry &g, bool left, std::vector<Part>
     out->push_back({left ? "ear-left-inner" : "ear-right-inner", false, "path", {{"d", f.data()}}, "ears", StrokeOnly});
 }
 
-Part makeFace(const Pt &P, const SvgFaceGeometry &g)
+Part makeFace(const Pt &P, const SvgFaceGeometry &g, bool bald)
 {
+    if (bald) // the skull is the face's: no hair, no hairline
+        return {"face", false, "path", {{"d", baldFaceOutline(P, g.jawStartTangent, g.jawEndTangent)}}, "face"};
     // Open path: the fill closes it with the straight line 2.13 -> 2.14 (where the jaw takes
     // over), the stroke does not.
     const QVector<CubicBezier> chain = fitBezierChain({P("2.14"), P("11.2"), P("11.3"), P("2.13")},
@@ -700,14 +496,15 @@ SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
     g.eyeballRadius = kEyeballRadius * g.es0 * (style.cute ? kCuteEyeballScale : 1.0);
 
     auto visible = [&](const char *key) { return componentStyle(style.components, key).visible; };
-    if (visible("hair"))
+    const Appearance &look = style.appearance;
+    if (visible("hair") && !look.bald)
         g.staticParts.push_back(makeHair(P, g, style.cornerCutDepth));
     if (visible("ears")) {
         makeEar(P, g, true, &g.staticParts);
         makeEar(P, g, false, &g.staticParts);
     }
     if (visible("face"))
-        g.staticParts.push_back(makeFace(P, g));
+        g.staticParts.push_back(makeFace(P, g, look.bald));
     if (visible("cheeks")) {
         // Blush on the cheeks, between the lower lid, the face side, the nose wing and the mouth.
         const double r = kCheekRadius * g.es0;
@@ -720,6 +517,8 @@ SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
     }
     if (visible("nose"))
         makeNose(P, style.nose, g.es0, &g.staticParts);
+    if (look.hat && visible("hat"))
+        g.staticParts.push_back(makeHat(P, g.es0, style.cornerCutDepth));
     return g;
 }
 
@@ -738,9 +537,16 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
         makeEyebrows(P, style, g.es0, &parts);
     if (componentStyle(style.components, "jaw").visible)
         parts.push_back(makeJaw(P, g));
+    const Appearance &look = style.appearance;
+    if (look.beard)
+        parts.push_back(makeBeard(P, g.es0));
     makeMouth(P, &parts);
+    if (look.moustache)
+        parts.push_back(makeMoustache(P, g.es0));
     makeEye(P, g, true, eyeCovers, &parts);
     makeEye(P, g, false, eyeCovers, &parts);
+    if (look.glasses != GlassesShape::None)
+        parts.push_back(makeGlasses(P, look.glasses, g.es0));
     std::erase_if(parts, [&](const Part &p) { return !componentStyle(style.components, p.styleKey).visible; });
     return parts;
 }

@@ -32,11 +32,16 @@ struct FacePart
 //
 // Layout: <svg viewBox="0 0 W H"> (W x H = the photo's size) holding
 //   <defs> clip paths (eyes), then <g id="head" transform=head motion> with
-//   <g id="static-layer"> hair, ears, face, nose, eyebrows and
-//   <g id="dynamic-layer"> eyes (eyeballs clipped by the eye outline), mouth, jaw,
+//   <g id="static-layer"> hair, ears, face, nose, hat, eyebrows and
+//   <g id="dynamic-layer"> jaw, beard, mouth, moustache, eyes (eyeballs clipped by the eye
+//   outline), glasses,
 // and then the user's extra layers (<g id="layer-N">) in order. Because QSvgRenderer before
 // Qt 6.7 ignores clip-path, each eye also has a skin-coloured cover ("eye-left-cover") around
 // its opening, so the eyeballs stay hidden outside the lids in every renderer.
+//
+// The style's appearance adds the elements "glasses", "moustache", "beard" and "hat" only when
+// it has them (a bald head has no hair element: the face's outline runs over the skull), and
+// its caricature factor exaggerates the face's own proportions (face/caricature.h).
 class SvgFace
 {
 public:

@@ -113,6 +113,8 @@ private Q_SLOTS:
         QTest::newRow("cartoon without -o") << QStringList {QStringLiteral("cartoon"), QStringLiteral("a.jpg")};
         QTest::newRow("bad emotion") << QStringList {QStringLiteral("cartoon"), QStringLiteral("a.jpg"),
             QStringLiteral("-o"), QStringLiteral("x.svg"), QStringLiteral("--emotion"), QStringLiteral("bored")};
+        QTest::newRow("bad caricature") << QStringList {QStringLiteral("cartoon"), QStringLiteral("a.jpg"),
+            QStringLiteral("-o"), QStringLiteral("x.svg"), QStringLiteral("--caricature"), QStringLiteral("3")};
         QTest::newRow("bad style") << QStringList {QStringLiteral("cartoon"), QStringLiteral("a.jpg"),
             QStringLiteral("-o"), QStringLiteral("x.svg"), QStringLiteral("--style"), QStringLiteral("cubist")};
         QTest::newRow("bad size") << QStringList {QStringLiteral("cartoon"), QStringLiteral("a.jpg"),

@@ -1,5 +1,6 @@
 #include "window/mainwindow.h"
 
+#include "appearance/appearancepanel.h"
 #include "document/autosaver.h"
 #include "document/undomacro.h"
 #include "face/averageface.h"
@@ -18,6 +19,7 @@
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDir>
+#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QImageReader>
@@ -122,6 +124,10 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
     m_splitter->setStretchFactor(1, 2);
     m_splitter->setChildrenCollapsible(false);
     setCentralWidget(m_splitter);
+    auto *appearanceDock = new QDockWidget(tr("Appearance"), this);
+    appearanceDock->setObjectName(QStringLiteral("appearanceDock"));
+    appearanceDock->setWidget(new AppearancePanel(m_document));
+    addDockWidget(Qt::RightDockWidgetArea, appearanceDock);
 
     createActions();
     createMenus();

@@ -1,0 +1,307 @@
+#include "detect/appearance.h"
+
+#include "face/fapu.h"
+
+#include <QLineF>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace toonface {
+
+namespace {
+
+constexpr double kDarkRatio = 0.72; // a pixel this much darker than the skin is hair-dark
+constexpr double kSkinChroma = 0.035; // chromaticity distance within which a pixel is skin-coloured
+constexpr double kSkinShade[2] = {0.55, 1.6}; // ... and its luma within these multiples of the skin's
+// Hair colours: hues from red through orange to yellow (kHairHues[0] .. 360 and 0 .. kHairHues[1]),
+// and any colour too dark or too grey to have a hue that shows.
+constexpr double kHairHues[2] = {345.0, 55.0};
+constexpr double kDarkest = 0.2;
+constexpr double kGreyest = 0.2;
+constexpr int kColourless = 4; // a skin whose channels differ by less has no colour (a greyscale photo)
+constexpr double kEdgeFloor = 2.0; // luma units: the texture floor of perfectly smooth skin
+
+double lumaOf(QRgb p)
+{
+    return 0.299 * qRed(p) + 0.587 * qGreen(p) + 0.114 * qBlue(p);
+}
+
+// Skin under the same light: the same chromaticity, lit more or less (a scalp shines, a jaw is
+// in shadow).
+bool skinLike(QRgb c, const QColor &skin)
+{
+    const double sum = std::max(1, qRed(c) + qGreen(c) + qBlue(c));
+    const double skinSum = std::max(1, skin.red() + skin.green() + skin.blue());
+    const double dr = qRed(c) / sum - skin.red() / skinSum, dg = qGreen(c) / sum - skin.green() / skinSum;
+    const double shade = lumaOf(c) / std::max(1.0, lumaOf(skin.rgb()));
+    return std::hypot(dr, dg) < kSkinChroma && shade > kSkinShade[0] && shade < kSkinShade[1];
+}
+
+class Pixels
+{
+public:
+    explicit Pixels(const QImage &photo)
+        : m_image(photo.convertToFormat(QImage::Format_RGB32))
+    { }
+    bool inside(int x, int y) const { return x >= 0 && y >= 0 && x < m_image.width() && y < m_image.height(); }
+    QRgb at(int x, int y) const { return reinterpret_cast<const QRgb *>(m_image.constScanLine(y))[x]; }
+    double luma(int x, int y) const { return lumaOf(at(x, y)); }
+
+    // The pixels of an axis-aligned box (clipped to the photo).
+    std::vector<QRgb> box(QRectF r) const
+    {
+        std::vector<QRgb> out;
+        r = r.normalized();
+        const int x0 = std::max(0, int(std::floor(r.left()))), x1 = std::min(m_image.width() - 1, int(r.right()));
+        const int y0 = std::max(0, int(std::floor(r.top()))), y1 = std::min(m_image.height() - 1, int(r.bottom()));
+        for (int y = y0; y <= y1; ++y) {
+            for (int x = x0; x <= x1; ++x)
+                out.push_back(at(x, y));
+        }
+        return out;
+    }
+
+    // The mean of |d luma / dy| along each row of the box (horizontal edges), top to bottom.
+    std::vector<double> rowEdges(QRectF r) const
+    {
+        std::vector<double> rows;
+        r = r.normalized();
+        const int x0 = std::max(0, int(std::floor(r.left()))), x1 = std::min(m_image.width() - 1, int(r.right()));
+        const int y0 = std::max(1, int(std::floor(r.top()))), y1 = std::min(m_image.height() - 2, int(r.bottom()));
+        for (int y = y0; y <= y1; ++y) {
+            double sum = 0;
+            int n = 0;
+            for (int x = x0; x <= x1; ++x, ++n)
+                sum += std::abs(luma(x, y + 1) - luma(x, y - 1)) / 2.0;
+            if (n > 0)
+                rows.push_back(sum / n);
+        }
+        return rows;
+    }
+
+    bool covers(QRectF r) const { return QRectF(m_image.rect()).contains(r.normalized()); }
+
+private:
+    QImage m_image;
+};
+
+QColor median(std::vector<QRgb> px)
+{
+    if (px.empty())
+        return {};
+    auto channel = [&](int (*f)(QRgb)) {
+        std::vector<int> v;
+        v.reserve(px.size());
+        for (QRgb p : px)
+            v.push_back(f(p));
+        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+        return v[v.size() / 2];
+    };
+    return QColor(channel(qRed), channel(qGreen), channel(qBlue));
+}
+
+// The darkest `share` of the pixels, as their median colour.
+QColor darkest(std::vector<QRgb> px, double share)
+{
+    std::sort(px.begin(), px.end(), [](QRgb a, QRgb b) { return lumaOf(a) < lumaOf(b); });
+    px.resize(std::max<size_t>(1, size_t(px.size() * share)));
+    return median(px);
+}
+
+double darkShare(const std::vector<QRgb> &px, double skinLuma)
+{
+    if (px.empty())
+        return 0;
+    const auto n = std::count_if(px.begin(), px.end(), [&](QRgb p) { return lumaOf(p) < kDarkRatio * skinLuma; });
+    return double(n) / double(px.size());
+}
+
+QRectF around(QPointF c, double rx, double ry)
+{
+    return QRectF(c.x() - rx, c.y() - ry, 2 * rx, 2 * ry);
+}
+
+double percentile(std::vector<double> v, double q)
+{
+    if (v.empty())
+        return 0;
+    auto it = v.begin() + qsizetype(q * double(v.size() - 1));
+    std::nth_element(v.begin(), it, v.end());
+    return *it;
+}
+
+void findGlasses(const Pixels &px, const FaceModel &face, double es0, AppearanceFindings *out)
+{
+    auto p = [&](const char *id) { return face.point(id); };
+    // Skin texture: horizontal edges on the cheeks well below any rim.
+    std::vector<double> reference;
+    std::vector<QRgb> rimPixels;
+    double rimScore = 0;
+    double rimCurve = 0;
+    for (bool left : {true, false}) {
+        const QPointF outer = p(left ? "3.12" : "3.7"), inner = p(left ? "3.8" : "3.11");
+        const QPointF ball = p(left ? "3.6" : "3.5");
+        const double x0 = std::min(outer.x(), inner.x()), x1 = std::max(outer.x(), inner.x());
+        const QRectF band(QPointF(x0, ball.y() + 0.16 * es0), QPointF(x1, ball.y() + 0.42 * es0));
+        const QRectF cheek(QPointF(x0, ball.y() + 0.5 * es0), QPointF(x1, ball.y() + 0.62 * es0));
+        if (!px.covers(band) || !px.covers(cheek))
+            return;
+        const std::vector<double> rows = px.rowEdges(band);
+        const std::vector<double> ref = px.rowEdges(cheek);
+        reference.insert(reference.end(), ref.begin(), ref.end());
+        const auto best = std::max_element(rows.begin(), rows.end());
+        if (best == rows.end())
+            return;
+        rimScore += *best / 2.0;
+        const double rimY = band.top() + double(best - rows.begin()) + 1;
+        const double w = x1 - x0;
+        // The rim's row in narrow column strips across the lens, which reaches past the eye's
+        // corners: a round lens curves up toward its sides, a rectangular one stays level.
+        std::vector<double> middle, ends;
+        const double reach = 0.1 * es0, l0 = x0 - reach, span = w + 2 * reach;
+        const double strip = std::max(2.0, span / 12.0);
+        for (double xa = l0; xa + strip <= l0 + span; xa += strip / 2) {
+            const std::vector<double> r = px.rowEdges(
+                QRectF(QPointF(xa, band.top()), QPointF(xa + strip, std::min(band.bottom(), rimY + 0.04 * es0))));
+            if (r.empty())
+                continue;
+            const double row = double(std::max_element(r.begin(), r.end()) - r.begin());
+            const double at = (xa + strip / 2 - l0) / span;
+            if (at > 0.33 && at < 0.67)
+                middle.push_back(row);
+            else if (at < 0.2 || at > 0.8)
+                ends.push_back(row);
+        }
+        if (!middle.empty() && !ends.empty())
+            rimCurve += (percentile(middle, 0.5) - percentile(ends, 0.5)) / es0 / 2.0;
+        for (int x = int(x0); x <= int(x1); ++x) {
+            for (int dy = -1; dy <= 1; ++dy) {
+                if (px.inside(x, int(rimY) + dy))
+                    rimPixels.push_back(px.at(x, int(rimY) + dy));
+            }
+        }
+    }
+    // The bridge: a horizontal edge over the nose between the inner corners, at eye level.
+    const QPointF in1 = p("3.8"), in2 = p("3.11");
+    const double eyeY = (p("3.6").y() + p("3.5").y()) / 2.0;
+    const QRectF bridge(QPointF(in1.x() + 0.3 * (in2.x() - in1.x()), eyeY - 0.2 * es0),
+        QPointF(in1.x() + 0.7 * (in2.x() - in1.x()), eyeY + 0.06 * es0));
+    if (!px.covers(bridge))
+        return;
+    const std::vector<double> bridgeRows = px.rowEdges(bridge);
+    const double bridgeEdge = bridgeRows.empty() ? 0 : *std::max_element(bridgeRows.begin(), bridgeRows.end());
+    const double texture = percentile(reference, 0.9) + kEdgeFloor;
+    // Both must show: a rim alone may be a lid's crease or a bag, a bridge alone a brow or a fold.
+    out->glassesScore = std::sqrt(std::max(0.0, rimScore) * std::max(0.0, bridgeEdge)) / texture;
+    if (out->glassesScore < AppearanceFindings::kGlassesThreshold)
+        return;
+    out->appearance.glasses = rimCurve > 0.035 ? GlassesShape::Round : GlassesShape::Rectangular;
+    out->glassesFrame = darkest(rimPixels, 0.3);
+}
+
+void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double skinLuma, AppearanceFindings *out)
+{
+    auto p = [&](const char *id) { return face.point(id); };
+    const Fapu f = face.fapu();
+    // Moustache: between the nose's bottom and the upper lip, the lip's middle half wide.
+    const double noseBottom = std::max({p("9.15").y(), p("9.4").y(), p("9.5").y()});
+    const double lipTop = std::min({p("8.9").y(), p("8.1").y(), p("8.10").y()});
+    const double gap = lipTop - noseBottom;
+    std::vector<QRgb> lipHair, chinHair;
+    if (gap > 2) {
+        const double xl = p("8.4").x() + 0.2 * f.mw0, xr = p("8.3").x() - 0.2 * f.mw0;
+        lipHair = px.box(QRectF(QPointF(xl, noseBottom + 0.35 * gap), QPointF(xr, lipTop - 0.1 * gap)));
+    }
+    // Beard: the chin below the lip's shadow, and both jaw sides inside the contour.
+    const double jawH = p("2.1").y() - p("8.2").y();
+    if (jawH > 2) {
+        const QPointF chin(p("2.1").x(), p("8.2").y() + 0.6 * jawH);
+        const auto c = px.box(around(chin, 0.2 * f.mw0, 0.2 * jawH));
+        chinHair.insert(chinHair.end(), c.begin(), c.end());
+        const QPointF mid = (p("5.2") + p("5.1")) / 2.0;
+        for (const char *side : {"2.12", "2.11"}) {
+            const QPointF s = p(side) + (mid - p(side)) * 0.12;
+            const auto j = px.box(around(s, 0.05 * es0, 0.05 * es0));
+            chinHair.insert(chinHair.end(), j.begin(), j.end());
+        }
+    }
+    out->moustacheScore = darkShare(lipHair, skinLuma);
+    out->beardScore = darkShare(chinHair, skinLuma);
+    out->appearance.moustache = out->moustacheScore >= AppearanceFindings::kMoustacheThreshold;
+    out->appearance.beard = out->beardScore >= AppearanceFindings::kBeardThreshold;
+    std::vector<QRgb> hair;
+    if (out->appearance.moustache)
+        hair.insert(hair.end(), lipHair.begin(), lipHair.end());
+    if (out->appearance.beard)
+        hair.insert(hair.end(), chinHair.begin(), chinHair.end());
+    if (!hair.empty())
+        out->facialHair = darkest(hair, 0.5);
+}
+
+void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor &skin, AppearanceFindings *out)
+{
+    // Between the face's top contour and the hair outline over the crown (h.8..h.12 above the
+    // hairline 11.1 and the temples).
+    // The inner part of that band is scalp on a bald head, hair or a hat otherwise, even when
+    // the outline strayed into the background.
+    auto band = [&](int first, int last, const std::vector<const char *> &contour, double t0, double t1) {
+        std::vector<QRgb> pxs;
+        for (int k = first; k <= last; ++k) {
+            const QPointF h = face.point(pt::idx("h.1") + k - 1);
+            QPointF base = face.point(contour.front());
+            for (const char *id : contour) {
+                if (QLineF(h, face.point(id)).length() < QLineF(h, base).length())
+                    base = face.point(id);
+            }
+            for (int i = 0; i < 4; ++i) {
+                const QPointF q = base + (h - base) * (t0 + (t1 - t0) * i / 3.0);
+                const auto b = px.box(around(q, 0.025 * es0, 0.025 * es0));
+                pxs.insert(pxs.end(), b.begin(), b.end());
+            }
+        }
+        return pxs;
+    };
+    const std::vector<QRgb> crown = band(8, 12, {"11.2", "11.1", "11.3"}, 0.15, 0.5);
+    if (crown.empty())
+        return;
+    const auto scalp = std::count_if(crown.begin(), crown.end(), [&](QRgb c) { return skinLike(c, skin); });
+    out->baldScore = double(scalp) / double(crown.size());
+    // Without colour, a scalp and grey or white hair look alike: a greyscale photo is never bald.
+    const bool colourless
+        = std::max({skin.red(), skin.green(), skin.blue()}) - std::min({skin.red(), skin.green(), skin.blue()})
+        < kColourless;
+    out->appearance.bald = !colourless && out->baldScore >= AppearanceFindings::kBaldThreshold;
+    if (out->appearance.bald)
+        return;
+    // A hat: the crown's colour is none that hair grows in (black, browns, blondes, reds, greys and
+    // white); its score is how far its hue lies outside that range, weighted by its saturation.
+    // A black, brown or white hat passes for hair.
+    const QColor top = median(crown);
+    const double hue = top.hsvHueF() * 360.0, sat = top.hsvSaturationF();
+    const bool hairHue = hue < 0 || hue <= kHairHues[1] || hue >= kHairHues[0];
+    const double outside = hairHue ? 0.0 : std::min(hue - kHairHues[1], kHairHues[0] - hue);
+    out->hatScore = top.valueF() < kDarkest || sat < kGreyest ? 0.0 : outside * sat;
+    if (out->hatScore >= AppearanceFindings::kHatThreshold) {
+        out->appearance.hat = true;
+        out->hat = top;
+    }
+}
+
+} // namespace
+
+AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, const QColor &skin)
+{
+    AppearanceFindings out;
+    if (photo.isNull() || !face.isValid() || !skin.isValid())
+        return out;
+    const Pixels px(photo);
+    const double es0 = face.fapu().es0;
+    findGlasses(px, face, es0, &out);
+    findFacialHair(px, face, es0, std::max(1.0, lumaOf(skin.rgb())), &out);
+    findHead(px, face, es0, skin, &out);
+    return out;
+}
+
+} // namespace toonface

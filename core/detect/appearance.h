@@ -1,0 +1,43 @@
+#pragma once
+
+#include "face/facemodel.h"
+#include "render/style.h"
+
+#include <QColor>
+#include <QImage>
+
+namespace toonface {
+
+// What findAppearance() saw: the appearance and the colours to draw it in, and the measures it
+// decided on (for tests, debugging and the editor's confidence).
+struct AppearanceFindings
+{
+    Appearance appearance;
+    QColor glassesFrame; // the rims' colour
+    bool tintedLenses = false; // lenses clearly darker than the skin around them
+    QColor facialHair;
+    QColor hat;
+
+    // Measures, each compared with its threshold below.
+    double glassesScore = 0; // rim and bridge edge strength over the skin's texture
+    double moustacheScore = 0; // share of dark, hair-like pixels between the nose and the upper lip
+    double beardScore = 0; // the same on the chin and along the jaw
+    double baldScore = 0; // share of skin-coloured pixels in the hair's band over the crown
+    double hatScore = 0; // the crown's hue outside hair's hues, in degrees, times its saturation
+
+    static constexpr double kGlassesThreshold = 2.5;
+    static constexpr double kMoustacheThreshold = 0.5;
+    static constexpr double kBeardThreshold = 0.5;
+    static constexpr double kBaldThreshold = 0.6;
+    static constexpr double kHatThreshold = 10.0;
+};
+
+// Looks for glasses (rims under the eyes and a bridge over the nose: horizontal edges where skin
+// is smooth), a moustache and a beard (pixels clearly darker than the cheeks' skin between the
+// nose and the upper lip, and on the chin and jaw), a bald head (the crown inside the hair
+// outline coloured like the skin, as lit) and a hat (the crown in a colour no hair has).
+// `photo` should be white-balanced (ColourBalance); `skin` is the skin colour sampled from it.
+// Never invents what it does not see: anything outside the photo counts as absent.
+AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, const QColor &skin);
+
+} // namespace toonface

@@ -1,0 +1,164 @@
+#include "render/svgfeatures.h"
+
+#include <numbers>
+
+namespace toonface::svgparts {
+
+namespace {
+
+// Proportions in ES0 (eye distance) units.
+constexpr double kLensHalfWidth = 0.37;
+constexpr double kRoundLensHalfHeight = 0.31;
+constexpr double kRectLensHalfHeight = 0.24;
+constexpr double kLensCornerRound = 0.45; // share of the half height rounded at a rectangle's corners
+constexpr double kLensDrop = 0.03; // lenses sit a little below the eye line
+constexpr double kBeardFullness = 0.05; // the beard stands out beyond the jaw
+constexpr double kBeardBelowLip = 0.10;
+constexpr double kMoustacheGap = 0.12; // share of nose-to-lip left bare under the nose
+constexpr double kMoustacheOverLip = 0.025;
+constexpr double kHatBrimReach = 0.06;
+
+// An ellipse (closed, four cubics) about c with half axes a, b.
+void ellipse(PathData &d, QPointF c, double a, double b)
+{
+    constexpr double k = 0.5522847498; // 4/3 (sqrt 2 - 1): the quarter circle's handle
+    d.moveTo(c + QPointF(a, 0));
+    d.cubic({c + QPointF(a, 0), c + QPointF(a, k * b), c + QPointF(k * a, b), c + QPointF(0, b)});
+    d.cubic({c + QPointF(0, b), c + QPointF(-k * a, b), c + QPointF(-a, k * b), c + QPointF(-a, 0)});
+    d.cubic({c + QPointF(-a, 0), c + QPointF(-a, -k * b), c + QPointF(-k * a, -b), c + QPointF(0, -b)});
+    d.cubic({c + QPointF(0, -b), c + QPointF(k * a, -b), c + QPointF(a, -k * b), c + QPointF(a, 0)});
+    d.close();
+}
+
+// A rectangle about c with half sides a, b and corners rounded by r.
+void roundedRect(PathData &d, QPointF c, double a, double b, double r)
+{
+    constexpr double k = 0.5522847498;
+    const double l = c.x() - a, rt = c.x() + a, t = c.y() - b, bt = c.y() + b;
+    d.moveTo({l + r, t}).lineTo({rt - r, t});
+    d.cubic({{rt - r, t}, {rt - r + k * r, t}, {rt, t + r - k * r}, {rt, t + r}}).lineTo({rt, bt - r});
+    d.cubic({{rt, bt - r}, {rt, bt - r + k * r}, {rt - r + k * r, bt}, {rt - r, bt}}).lineTo({l + r, bt});
+    d.cubic({{l + r, bt}, {l + r - k * r, bt}, {l, bt - r + k * r}, {l, bt - r}}).lineTo({l, t + r});
+    d.cubic({{l, t + r}, {l, t + r - k * r}, {l + r - k * r, t}, {l + r, t}}).close();
+}
+
+} // namespace
+
+Part makeGlasses(const Pt &P, GlassesShape shape, double es0)
+{
+    // Each lens about its eye, a little wider on the outer side; the bridge over the nose between
+    // the lenses' inner edges, the arms from their outer edges to the face's sides.
+    const QPointF leftMid = (P("3.12") + P("3.8")) / 2.0;
+    const QPointF rightMid = (P("3.11") + P("3.7")) / 2.0;
+    const QPointF across = unit(rightMid - leftMid);
+    const QPointF down = QPointF(-across.y(), across.x());
+    const double a = kLensHalfWidth * es0;
+    const double b = (shape == GlassesShape::Round ? kRoundLensHalfHeight : kRectLensHalfHeight) * es0;
+    const QPointF leftLens = leftMid - across * (0.02 * es0) + down * (kLensDrop * es0);
+    const QPointF rightLens = rightMid + across * (0.02 * es0) + down * (kLensDrop * es0);
+    PathData d;
+    for (const QPointF &c : {leftLens, rightLens}) {
+        if (shape == GlassesShape::Round)
+            ellipse(d, c, a, b);
+        else
+            roundedRect(d, c, a, b, kLensCornerRound * b);
+    }
+    // Bridge: an arch between the lenses' inner edges, a third of the way up.
+    const QPointF bridgeL = leftLens + QPointF(a, -0.3 * b);
+    const QPointF bridgeR = rightLens + QPointF(-a, -0.3 * b);
+    d.moveTo(bridgeL).cubic(fitBezierThrough(bridgeL, (bridgeL + bridgeR) / 2.0 - QPointF(0, 0.06 * es0), bridgeR));
+    // Arms: from the outer edges back toward the ears' tops.
+    const QPointF armL = leftLens - QPointF(a, 0.3 * b);
+    const QPointF armR = rightLens + QPointF(a, -0.3 * b);
+    d.moveTo(armL).lineTo(lerp(armL, P("10.2"), 0.85));
+    d.moveTo(armR).lineTo(lerp(armR, P("10.1"), 0.85));
+    return {"glasses", true, "path", {{"d", d.data()}}, "glasses"};
+}
+
+Part makeMoustache(const Pt &P, double es0)
+{
+    // Under the nose, down to the upper lip and out past its corners, drooping a little at the
+    // ends; its lower edge follows the upper lip's outline, so it moves with it.
+    const QPointF l = P("8.4"), r = P("8.3");
+    const double noseBottom = std::max({P("9.15").y(), P("9.4").y(), P("9.5").y()});
+    const double lipTop = std::min({P("8.9").y(), P("8.1").y(), P("8.10").y()});
+    const double top = noseBottom + std::max(0.0, lipTop - noseBottom) * kMoustacheGap;
+    const QPointF endL = l + QPointF(-0.05 * es0, 0.03 * es0);
+    const QPointF endR = r + QPointF(0.05 * es0, 0.03 * es0);
+    const QPointF topL(lerp(P("9.2"), P("9.4"), 0.5).x(), top);
+    const QPointF topR(lerp(P("9.1"), P("9.5"), 0.5).x(), top);
+    const QPointF topMid(P("9.15").x(), top + 0.02 * es0);
+    const QPointF lift(0, -kMoustacheOverLip * es0);
+    PathData d;
+    d.moveTo(endL)
+        .cubics(fitBezierChain({endL, topL, topR, endR},
+            {lerp(endL, topL, 0.5) - QPointF(0.02 * es0, 0.02 * es0), topMid,
+                lerp(topR, endR, 0.5) + QPointF(0.02 * es0, -0.02 * es0)},
+            {}, kMovingFitTolerance))
+        .cubics(fitBezierChain({endR, r + lift, P("8.1") + lift, l + lift, endL},
+            {P("8.10") + lift + QPointF(0, 0.01 * es0), (P("8.10") + P("8.1")) / 2.0 + lift,
+                (P("8.9") + P("8.1")) / 2.0 + lift, P("8.9") + lift + QPointF(0, 0.01 * es0)},
+            {}, kMovingFitTolerance))
+        .close();
+    return {"moustache", true, "path", {{"d", d.data()}}, "moustache"};
+}
+
+Part makeBeard(const Pt &P, double es0)
+{
+    // Outer edge: the jaw from the cheeks down round the chin, stood off by the beard's fullness;
+    // inner edge: up from the jaw's sides to beside the mouth corners and under the lower lip.
+    const QPointF centre = (P("5.2") + P("5.1") + P("8.2")) / 3.0;
+    auto out = [&](QPointF p) { return p + unit(p - centre) * (kBeardFullness * es0); };
+    const QPointF startL = lerp(P("5.2"), P("2.14"), 0.45);
+    const QPointF startR = lerp(P("5.1"), P("2.13"), 0.45);
+    const QPointF belowLip = P("8.2") + QPointF(0, kBeardBelowLip * es0);
+    const QPointF cornerL = P("8.4") + QPointF(-0.04 * es0, 0.08 * es0);
+    const QPointF cornerR = P("8.3") + QPointF(0.04 * es0, 0.08 * es0);
+    PathData d;
+    d.moveTo(startL)
+        .cubics(fitBezierChain({startL, out(P("2.14")), out(P("2.1")), out(P("2.13")), startR},
+            {lerp(startL, out(P("2.14")), 0.5), out(P("2.12")), out(P("2.11")), lerp(out(P("2.13")), startR, 0.5)}, {},
+            kMovingFitTolerance))
+        .cubics(fitBezierChain({startR, cornerR, belowLip, cornerL, startL},
+            {lerp(startR, cornerR, 0.5) + QPointF(0, 0.04 * es0), lerp(cornerR, belowLip, 0.5) + QPointF(0, 0.02 * es0),
+                lerp(belowLip, cornerL, 0.5) + QPointF(0, 0.02 * es0),
+                lerp(cornerL, startL, 0.5) + QPointF(0, 0.04 * es0)},
+            {}, kMovingFitTolerance))
+        .close();
+    return {"beard", true, "path", {{"d", d.data()}}, "beard"};
+}
+
+Part makeHat(const Pt &P, double es0, int depth)
+{
+    // The crown: the hair outline above the brim; the brim: across the forehead where the hair
+    // would start (the hairline 11.1), reaching a little past the hair on both sides.
+    const double brim = P("11.1").y();
+    QVector<QPointF> crown;
+    for (int i = 0; i < 19; ++i) {
+        const QPointF h = P.p[pt::idx("h.1") + i];
+        if (h.y() < brim)
+            crown.append(h);
+    }
+    const double left = std::min(P("11.2").x(), crown.isEmpty() ? P("11.2").x() : crown.first().x());
+    const double right = std::max(P("11.3").x(), crown.isEmpty() ? P("11.3").x() : crown.last().x());
+    const double reach = kHatBrimReach * es0;
+    QVector<QPointF> outline;
+    outline.append({left - reach, brim + 0.02 * es0});
+    outline.append(crown);
+    outline.append({right + reach, brim + 0.02 * es0});
+    outline.append({(left + right) / 2.0, brim + 0.1 * es0});
+    const QVector<QPointF> shape = cornerCutPolyline(outline, depth, true);
+    return {"hat", false, "polygon", {{"points", pointList(shape)}}, "hat"};
+}
+
+QByteArray baldFaceOutline(const Pt &P, QPointF startTangent, QPointF endTangent)
+{
+    const QVector<CubicBezier> chain = fitBezierChain({P("2.14"), P("5.2"), P("h.10"), P("5.1"), P("2.13")},
+        {lerp(P("2.14"), P("5.2"), 0.5), P("h.6"), P("h.14"), lerp(P("5.1"), P("2.13"), 0.5)},
+        {-startTangent, -endTangent});
+    PathData d;
+    d.moveTo(P("2.14")).cubics(chain);
+    return d.data();
+}
+
+} // namespace toonface::svgparts

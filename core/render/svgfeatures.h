@@ -1,0 +1,24 @@
+#pragma once
+
+// The layers of what a person wears or grows (Style::appearance): glasses, moustache, beard and
+// hat, each one SVG element named by its id. Internal to core/render (SvgFace draws them).
+
+#include "render/style.h"
+#include "render/svgparts.h"
+
+namespace toonface::svgparts {
+
+// Static: the hat, over the hair and the top of the face, below the brows.
+Part makeHat(const Pt &P, double es0, int depth);
+// Dynamic: the beard follows the jaw (it opens with it) and the lower lip; drawn before the mouth.
+Part makeBeard(const Pt &P, double es0);
+// Dynamic: the moustache follows the upper lip and its corners; drawn after the mouth.
+Part makeMoustache(const Pt &P, double es0);
+// Dynamic layer (above the eyes), but fixed to the eye corners: rims, bridge and arms.
+Part makeGlasses(const Pt &P, GlassesShape shape, double es0);
+
+// The face outline over the skull of a bald head: the jaw sides, the cheeks and the hair
+// outline's crown, with the jaw's tangents at both ends (so the jaw joins it smoothly).
+QByteArray baldFaceOutline(const Pt &P, QPointF startTangent, QPointF endTangent);
+
+} // namespace toonface::svgparts

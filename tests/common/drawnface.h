@@ -1,0 +1,134 @@
+#pragma once
+
+// A face drawn from the average face's points, with what a photo of a person may show: glasses,
+// a moustache, a beard, a hat, a bald head, any skin and hair colour. The tests of appearance
+// detection and colour sampling read these, knowing exactly what is there.
+
+#include "face/averageface.h"
+#include "face/facemodel.h"
+
+#include <QImage>
+#include <QPainter>
+#include <QPainterPath>
+#include <QRandomGenerator>
+
+namespace toonface::testing {
+
+struct DrawnFaceOptions
+{
+    QColor skin = QColor(226, 184, 156);
+    QColor hair = QColor(70, 48, 34);
+    QColor hatColour = QColor(40, 60, 140);
+    bool glasses = false;
+    bool roundGlasses = false;
+    bool moustache = false;
+    bool beard = false;
+    bool hat = false;
+    bool bald = false;
+    double browWidth = 0.07; // in ES0
+};
+
+inline FaceModel drawnFaceModel()
+{
+    return averageFace(QRectF(150, 190, 200, 240), QSize(500, 560));
+}
+
+inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawnFaceModel())
+{
+    QImage img(face.imageSize(), QImage::Format_RGB32);
+    // A background of several colours with edges, as rooms and walls have.
+    QPainter p(&img);
+    const QColor wall[] = {QColor(120, 150, 190), QColor(200, 200, 190), QColor(90, 120, 80), QColor(180, 120, 90)};
+    for (int i = 0; i < 10; ++i)
+        p.fillRect(QRect(i * img.width() / 10, 0, img.width() / 10 + 1, img.height()), wall[i % 4]);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setPen(Qt::NoPen);
+    auto P = [&](const char *id) { return face.point(id); };
+    QPolygonF hairShape;
+    for (int i = 0; i < 19; ++i)
+        hairShape << face.point(pt::idx("h.1") + i);
+    hairShape << P("2.13") << P("2.14");
+    p.setBrush(o.bald ? o.skin : o.hair);
+    p.drawPolygon(hairShape);
+    if (o.hat) {
+        // The crown above the hairline is the hat; the hair shows at the sides below it.
+        QPainterPath clip;
+        clip.addRect(QRectF(0, 0, img.width(), P("11.1").y()));
+        p.save();
+        p.setClipPath(clip);
+        p.setBrush(o.hatColour);
+        p.drawPolygon(hairShape);
+        p.restore();
+    }
+    QPolygonF faceShape;
+    for (const char *id : {"11.2", "11.1", "11.3", "5.1", "2.13", "2.11", "2.1", "2.12", "2.14", "5.2"})
+        faceShape << P(id);
+    QPainterPath facePath;
+    facePath.addPolygon(faceShape);
+    p.setBrush(o.skin);
+    p.drawPath(facePath);
+    const double es0 = QLineF(P("3.6"), P("3.5")).length();
+    // Brows, eyes, nose shadow, lips.
+    p.setBrush(Qt::NoBrush);
+    p.setPen(QPen(o.bald ? QColor(90, 70, 60) : o.hair.darker(120), o.browWidth * es0, Qt::SolidLine, Qt::RoundCap));
+    p.drawPolyline(QPolygonF {P("4.6"), P("4.4a"), P("4.4"), P("4.2")});
+    p.drawPolyline(QPolygonF {P("4.1"), P("4.3"), P("4.3a"), P("4.5")});
+    p.setPen(Qt::NoPen);
+    for (bool left : {true, false}) {
+        const QPointF a = P(left ? "3.12" : "3.11"), b = P(left ? "3.8" : "3.7");
+        const double h = P(left ? "3.4" : "3.3").y() - P(left ? "3.2" : "3.1").y();
+        p.setBrush(QColor(245, 245, 240));
+        p.drawEllipse((a + b) / 2.0, QLineF(a, b).length() / 2.0, h / 2.0);
+        p.setBrush(QColor(70, 50, 35));
+        p.drawEllipse(P(left ? "3.6" : "3.5"), h * 0.4, h * 0.4);
+    }
+    p.setBrush(o.skin.darker(125));
+    p.drawEllipse(P("9.4"), 0.04 * es0, 0.025 * es0);
+    p.drawEllipse(P("9.5"), 0.04 * es0, 0.025 * es0);
+    p.setBrush(QColor(190, 90, 90));
+    p.drawPolygon(QPolygonF {P("8.4"), P("8.9"), P("8.1"), P("8.10"), P("8.3"), P("8.2")});
+    const QColor beardColour = o.hair.darker(110);
+    if (o.moustache) {
+        p.setBrush(beardColour);
+        const double top = std::max(P("9.4").y(), P("9.15").y()) + 0.03 * es0;
+        p.drawPolygon(QPolygonF {P("8.4") + QPointF(-0.03 * es0, 0), QPointF(P("9.2").x(), top),
+            QPointF(P("9.1").x(), top), P("8.3") + QPointF(0.03 * es0, 0), P("8.10") - QPointF(0, 0.01 * es0),
+            P("8.9") - QPointF(0, 0.01 * es0)});
+    }
+    if (o.beard) {
+        p.setBrush(beardColour);
+        p.drawPolygon(QPolygonF {QLineF(P("5.2"), P("2.14")).pointAt(0.4), P("2.14"), P("2.12"), P("2.1"), P("2.11"),
+            P("2.13"), QLineF(P("5.1"), P("2.13")).pointAt(0.4), P("8.3") + QPointF(0.04 * es0, 0.06 * es0),
+            P("8.2") + QPointF(0, 0.06 * es0), P("8.4") + QPointF(-0.04 * es0, 0.06 * es0)});
+    }
+    if (o.glasses) {
+        p.setBrush(Qt::NoBrush);
+        p.setPen(QPen(QColor(25, 25, 30), std::max(2.0, 0.03 * es0)));
+        QPointF inner[2];
+        for (bool left : {true, false}) {
+            const QPointF c = (P(left ? "3.12" : "3.11") + P(left ? "3.8" : "3.7")) / 2.0 + QPointF(0, 0.03 * es0);
+            const QRectF r(c.x() - 0.36 * es0, c.y() - 0.25 * es0, 0.72 * es0, (o.roundGlasses ? 0.6 : 0.5) * es0);
+            if (o.roundGlasses)
+                p.drawEllipse(r);
+            else
+                p.drawRoundedRect(r, 0.08 * es0, 0.08 * es0);
+            inner[left ? 0 : 1] = QPointF(left ? r.right() : r.left(), r.top() + 0.3 * r.height());
+        }
+        p.drawLine(inner[0], inner[1]);
+    }
+    p.end();
+    // Skin and hair are never flat: a little noise everywhere.
+    QRandomGenerator rng(7);
+    for (int y = 0; y < img.height(); ++y) {
+        auto *line = reinterpret_cast<QRgb *>(img.scanLine(y));
+        for (int x = 0; x < img.width(); ++x) {
+            const int n = int(rng.bounded(7)) - 3;
+            const QRgb c = line[x];
+            line[x] = qRgb(
+                std::clamp(qRed(c) + n, 0, 255), std::clamp(qGreen(c) + n, 0, 255), std::clamp(qBlue(c) + n, 0, 255));
+        }
+    }
+    return img;
+}
+
+} // namespace toonface::testing

@@ -1,0 +1,201 @@
+#include "face/averageface.h"
+#include "face/emotion.h"
+#include "face/facemodel.h"
+#include "face/fapu.h"
+#include "face/mouthshape.h"
+#include "face/pose.h"
+
+#include <QTest>
+
+using namespace toonface;
+
+namespace {
+
+// How far a preset must move a feature at full intensity to read "from across the room", in ES0.
+constexpr double kClear = 0.1;
+
+FaceModel testFace()
+{
+    return averageFace(QRectF(100, 150, 200, 240), QSize(400, 500));
+}
+
+struct Posed
+{
+    std::array<QPointF, kPointCount> n, p;
+    double es0;
+    QPointF at(const char *id) const { return p[pt::idx(id)]; }
+    QPointF at0(const char *id) const { return n[pt::idx(id)]; }
+    // Displacement in ES0 units.
+    QPointF d(const char *id) const { return (at(id) - at0(id)) / es0; }
+    double eyeOpening(bool left) const { return left ? at("3.4").y() - at("3.2").y() : at("3.3").y() - at("3.1").y(); }
+    double eyeOpening0(bool left) const
+    {
+        return left ? at0("3.4").y() - at0("3.2").y() : at0("3.3").y() - at0("3.1").y();
+    }
+    double mouthWidth() const { return at("8.3").x() - at("8.4").x(); }
+    double mouthWidth0() const { return at0("8.3").x() - at0("8.4").x(); }
+    double opening() const { return at("2.3").y() - at("2.2").y(); }
+    // How far the brows' inner ends sit above (negative: below) their outer ends, in ES0.
+    double innerAboveOuter(bool left) const
+    {
+        return left ? (at("4.6").y() - at("4.2").y()) / es0 : (at("4.5").y() - at("4.1").y()) / es0;
+    }
+    double innerAboveOuter0(bool left) const
+    {
+        return left ? (at0("4.6").y() - at0("4.2").y()) / es0 : (at0("4.5").y() - at0("4.1").y()) / es0;
+    }
+};
+
+Posed posed(const FaceModel &face, const Pose &pose)
+{
+    return {face.points(), posedPoints(face, pose), face.fapu().es0};
+}
+
+} // namespace
+
+class TestEmotion : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void names()
+    {
+        for (Emotion e : kAllEmotions)
+            QCOMPARE(emotionFromName(emotionName(e)), std::optional<Emotion>(e));
+        QVERIFY(!emotionFromName(QStringLiteral("bored")));
+    }
+
+    void neutralMovesNothing()
+    {
+        const FaceModel face = testFace();
+        QCOMPARE(emotionPose(face, Emotion::Neutral, 1.0), Pose());
+    }
+
+    // Each preset moves its features in the stated directions, clearly at full intensity and
+    // the same way, half as far, at half intensity; both sides mirror each other.
+    void directions_data()
+    {
+        QTest::addColumn<double>("intensity");
+        QTest::newRow("full") << 1.0;
+        QTest::newRow("half") << 0.5;
+    }
+
+    void directions()
+    {
+        QFETCH(double, intensity);
+        const FaceModel face = testFace();
+        const double clear = kClear * intensity;
+
+        // Smile: corners up and back, the mouth open on the teeth, lower lids up, brows a little up.
+        {
+            const Posed s = posed(face, emotionPose(face, Emotion::Smile, intensity));
+            QVERIFY(s.d("8.4").y() < -clear && s.d("8.3").y() < -clear);
+            QVERIFY(s.d("8.4").x() < -clear / 2 && s.d("8.3").x() > clear / 2);
+            QVERIFY(s.opening() > clear * s.es0);
+            QVERIFY(s.d("3.4").y() < 0 && s.d("3.3").y() < 0);
+            QVERIFY(s.d("4.4").y() < 0 && s.d("4.3").y() < 0);
+            // The corners end above the upper lip's middle: the mouth curves up.
+            QVERIFY(s.at("8.4").y() < s.at("8.1").y() || intensity < 1);
+        }
+        // Sad: inner brow ends raised above their outer ends, heavy lids, corners down.
+        {
+            const Posed s = posed(face, emotionPose(face, Emotion::Sad, intensity));
+            for (bool left : {true, false}) {
+                QVERIFY(s.innerAboveOuter(left) - s.innerAboveOuter0(left) > clear);
+                QVERIFY(s.eyeOpening(left) < s.eyeOpening0(left) * (1 - 0.1 * intensity));
+            }
+            QVERIFY(s.d("4.2").y() < -clear && s.d("4.1").y() < -clear);
+            QVERIFY(s.d("4.6").y() > 0 && s.d("4.5").y() > 0);
+            QVERIFY(s.d("3.2").y() > 0 && s.d("3.1").y() > 0);
+            QVERIFY(s.d("8.4").y() > clear && s.d("8.3").y() > clear);
+            QVERIFY(s.d("8.2").y() < 0); // the lower lip pushed up under the frown
+        }
+        // Angry: inner brow ends down and together (a V), lids narrowed, lips pressed and narrow.
+        {
+            const Posed s = posed(face, emotionPose(face, Emotion::Angry, intensity));
+            for (bool left : {true, false})
+                QVERIFY(s.innerAboveOuter(left) - s.innerAboveOuter0(left) < -clear);
+            QVERIFY(s.d("4.2").y() > clear && s.d("4.1").y() > clear);
+            QVERIFY(s.d("4.2").x() > clear / 3 && s.d("4.1").x() < -clear / 3);
+            QVERIFY(s.eyeOpening(true) < s.eyeOpening0(true));
+            QVERIFY(s.mouthWidth() < s.mouthWidth0() - clear * s.es0);
+            QVERIFY(s.d("8.4").y() > 0 && s.d("8.3").y() > 0);
+            QVERIFY(s.opening() <= posed(face, Pose()).opening()); // pressed, not parted
+        }
+        // Surprise: brows high, eyes wide, the jaw dropped under rounded lips.
+        {
+            const Posed s = posed(face, emotionPose(face, Emotion::Surprise, intensity));
+            for (const char *id : {"4.6", "4.4a", "4.4", "4.2", "4.1", "4.3", "4.3a", "4.5"})
+                QVERIFY(s.d(id).y() < -clear);
+            QVERIFY(s.eyeOpening(true) > s.eyeOpening0(true) * (1 + 0.2 * intensity));
+            QVERIFY(s.eyeOpening(false) > s.eyeOpening0(false) * (1 + 0.2 * intensity));
+            QVERIFY(s.d("8.2").y() > 3 * clear);
+            QVERIFY(s.d("2.1").y() > 3 * clear); // the chin drops with the lower lip
+            QVERIFY(s.mouthWidth() < s.mouthWidth0());
+        }
+    }
+
+    void halfIsHalfOfFull()
+    {
+        const FaceModel face = testFace();
+        for (Emotion e : kAllEmotions) {
+            const Pose full = emotionPose(face, e, 1.0), half = emotionPose(face, e, 0.5);
+            for (int i = 0; i < kPointCount; ++i) {
+                QVERIFY(std::abs(half.offset[i].x() - full.offset[i].x() / 2) < 1e-9);
+                QVERIFY(std::abs(half.offset[i].y() - full.offset[i].y() / 2) < 1e-9);
+            }
+        }
+    }
+
+    void sidesMirror()
+    {
+        const FaceModel face = testFace();
+        for (Emotion e : kAllEmotions) {
+            const Pose pose = emotionPose(face, e, 1.0);
+            for (const char *id : {"4.6", "4.4a", "4.4", "4.2", "3.2", "3.4", "8.4"}) {
+                const QPointF a = pose.offset[pt::idx(id)], b = pose.offset[pt::idx(mirrorPointId(id))];
+                QCOMPARE(a.x(), -b.x());
+                QCOMPARE(a.y(), b.y());
+            }
+        }
+    }
+
+    // The five presets are far apart from each other: no two read alike.
+    void presetsDiffer()
+    {
+        const FaceModel face = testFace();
+        const double es0 = face.fapu().es0;
+        for (Emotion a : kAllEmotions) {
+            for (Emotion b : kAllEmotions) {
+                if (a >= b)
+                    continue;
+                const auto pa = posedPoints(face, emotionPose(face, a, 1.0));
+                const auto pb = posedPoints(face, emotionPose(face, b, 1.0));
+                double far = 0;
+                for (int i = 0; i < kPointCount; ++i)
+                    far = std::max(far, QLineF(pa[i], pb[i]).length() / es0);
+                QVERIFY2(far > 0.15, qPrintable(emotionName(a) + QLatin1Char('/') + emotionName(b)));
+            }
+        }
+    }
+
+    // A sad face still speaks: with an open mouth shape the corners stay down and the brows
+    // slanted, and the mouth opens.
+    void combinesWithSpeech()
+    {
+        const FaceModel face = testFace();
+        const MouthShapeSet shapes;
+        const Pose speech = mouthPose(face, shapes, MouthShape::A);
+        const Posed talk = posed(face, speech);
+        const Posed sad = posed(face, speech + emotionPose(face, Emotion::Sad, 1.0));
+        QVERIFY(sad.opening() > 0.5 * talk.opening());
+        QVERIFY(sad.at("8.4").y() > talk.at("8.4").y() + kClear * sad.es0);
+        QVERIFY(sad.innerAboveOuter(true) > sad.innerAboveOuter0(true) + kClear);
+        const Posed smile = posed(face, speech + emotionPose(face, Emotion::Smile, 1.0));
+        QVERIFY(smile.at("8.4").y() < talk.at("8.4").y() - kClear * smile.es0);
+        QVERIFY(smile.opening() > talk.opening());
+    }
+};
+
+QTEST_APPLESS_MAIN(TestEmotion)
+#include "tst_emotion.moc"

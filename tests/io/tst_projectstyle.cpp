@@ -1,0 +1,113 @@
+#include "face/averageface.h"
+#include "io/project.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace toonface;
+
+namespace {
+
+const QString kData = QStringLiteral(TOONFACE_TEST_DATA "/io");
+
+Project projectWith(const Style &style)
+{
+    Project p;
+    p.face = averageFace(QRectF(100, 120, 200, 240), QSize(400, 500));
+    p.style = style;
+    return p;
+}
+
+} // namespace
+
+// The style's caricature factor and appearance in the project file (the rest of the format is
+// tst_project's).
+class TestProjectStyle : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void roundTrips_data()
+    {
+        QTest::addColumn<double>("caricature");
+        QTest::addColumn<int>("glasses");
+        QTest::addColumn<bool>("flags");
+        QTest::newRow("default") << kDefaultCaricature << int(GlassesShape::None) << false;
+        QTest::newRow("exact, round glasses, all worn") << 0.0 << int(GlassesShape::Round) << true;
+        QTest::newRow("strong, rimless") << 0.9 << int(GlassesShape::Rimless) << false;
+        QTest::newRow("rectangular, bald") << 0.5 << int(GlassesShape::Rectangular) << true;
+    }
+
+    void roundTrips()
+    {
+        QFETCH(double, caricature);
+        QFETCH(int, glasses);
+        QFETCH(bool, flags);
+        Style style = Style::preset(QStringLiteral("bold"));
+        style.caricature = caricature;
+        style.appearance = {GlassesShape(glasses), flags, flags, flags, flags};
+        style.components[QStringLiteral("glasses")].stroke = QColor(0x80, 0x20, 0x20);
+        style.components[QStringLiteral("hat")].visible = false;
+        QTemporaryDir tmp;
+        const QString file = tmp.filePath(QStringLiteral("p.toonface"));
+        QString error;
+        QVERIFY2(saveProject(projectWith(style), file, &error), qPrintable(error));
+        const auto loaded = loadProject(file, &error);
+        QVERIFY2(loaded, qPrintable(error));
+        QCOMPARE(loaded->style.caricature, caricature);
+        QCOMPARE(loaded->style.appearance, style.appearance);
+        QVERIFY(loaded->style == style);
+    }
+
+    // Files from before keep their drawing: no exaggeration, nothing worn.
+    void oldFilesLoadUnchanged()
+    {
+        QString error;
+        const auto p = loadProject(kData + QStringLiteral("/v1/project.toonface"), &error);
+        QVERIFY2(p, qPrintable(error));
+        QCOMPARE(p->style.caricature, 0.0);
+        QCOMPARE(p->style.appearance, Appearance());
+    }
+
+    void badValuesNameTheField_data()
+    {
+        QTest::addColumn<QString>("key");
+        QTest::addColumn<QByteArray>("value");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("caricature too big") << QStringLiteral("caricature") << QByteArray("5")
+                                            << QStringLiteral("style.caricature: expected a number from 0 to 1");
+        QTest::newRow("caricature negative") << QStringLiteral("caricature") << QByteArray("-0.1")
+                                             << QStringLiteral("style.caricature: expected a number from 0 to 1");
+        QTest::newRow("caricature string") << QStringLiteral("caricature") << QByteArray("\"mild\"")
+                                           << QStringLiteral("style.caricature: expected a number");
+        QTest::newRow("glasses shape")
+            << QStringLiteral("appearance")
+            << QByteArray(R"({"glasses":"square","moustache":false,"beard":false,"hat":false,"bald":false})")
+            << QStringLiteral("style.appearance.glasses: expected one of \"none\"");
+        QTest::newRow("beard number") << QStringLiteral(
+            "appearance") << QByteArray(R"({"glasses":"none","moustache":false,"beard":1,"hat":false,"bald":false})")
+                                      << QStringLiteral("style.appearance.beard: expected true or false");
+        QTest::newRow("appearance array") << QStringLiteral("appearance") << QByteArray("[]")
+                                          << QStringLiteral("style.appearance: expected an object");
+    }
+
+    void badValuesNameTheField()
+    {
+        QFETCH(QString, key);
+        QFETCH(QByteArray, value);
+        QFETCH(QString, expected);
+        QTemporaryDir tmp;
+        QJsonObject json = projectToJson(projectWith(Style()), tmp.path());
+        QJsonObject style = json.value(QStringLiteral("style")).toObject();
+        style.insert(key, QJsonDocument::fromJson("[" + value + "]").array().at(0));
+        json.insert(QStringLiteral("style"), style);
+        QString error;
+        QVERIFY(!projectFromJson(json, tmp.path(), &error));
+        QVERIFY2(error.contains(expected), qPrintable(error));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestProjectStyle)
+#include "tst_projectstyle.moc"

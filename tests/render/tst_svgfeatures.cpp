@@ -1,0 +1,229 @@
+#include "face/averageface.h"
+#include "face/caricature.h"
+#include "face/emotion.h"
+#include "face/fapu.h"
+#include "face/mouthshape.h"
+#include "render/svgface.h"
+
+#include <QRegularExpression>
+#include <QTest>
+
+using namespace toonface;
+
+namespace {
+
+FaceModel testFace()
+{
+    return averageFace(QRectF(106, 130, 300, 330), QSize(512, 512));
+}
+
+const FacePart *partById(const QVector<FacePart> &parts, const char *id)
+{
+    for (const FacePart &p : parts) {
+        if (p.id == QLatin1StringView(id))
+            return &p;
+    }
+    return nullptr;
+}
+
+QString geometryOf(const QVector<FacePart> &parts, const char *id)
+{
+    const FacePart *p = partById(parts, id);
+    return p ? p->geometry.value(QStringLiteral("d")) + p->geometry.value(QStringLiteral("points")) : QString();
+}
+
+// The lowest y among a path's or polygon's numbers (every second number is a y).
+double lowest(const QString &geometry)
+{
+    static const QRegularExpression number(QStringLiteral("-?\\d+(\\.\\d+)?"));
+    double y = -1e300;
+    int k = 0;
+    for (auto it = number.globalMatch(geometry); it.hasNext(); ++k) {
+        const double v = it.next().captured().toDouble();
+        if (k % 2 == 1)
+            y = std::max(y, v);
+    }
+    return y;
+}
+
+// A face unlike the average: wide nose, wide mouth, eyes set low, a long chin.
+FaceModel distinctFace()
+{
+    FaceModel f = testFace();
+    auto move = [&](const char *id, QPointF d) { f.setPoint(pt::idx(id), f.point(id) + d); };
+    for (const char *id : {"9.2", "9.4"})
+        move(id, {-12, 0});
+    for (const char *id : {"9.1", "9.5"})
+        move(id, {12, 0});
+    move("8.4", {-10, 0});
+    move("8.3", {10, 0});
+    for (const char *id : {"2.1", "2.12", "2.11"})
+        move(id, {0, 18});
+    return f;
+}
+
+} // namespace
+
+class TestSvgFeatures : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    // The layers of what a person wears exist only when the appearance has them, by their ids.
+    void layersOnlyWhenFound_data()
+    {
+        QTest::addColumn<QString>("id");
+        QTest::newRow("glasses") << QStringLiteral("glasses");
+        QTest::newRow("moustache") << QStringLiteral("moustache");
+        QTest::newRow("beard") << QStringLiteral("beard");
+        QTest::newRow("hat") << QStringLiteral("hat");
+    }
+
+    void layersOnlyWhenFound()
+    {
+        QFETCH(QString, id);
+        const FaceModel face = testFace();
+        Style style = Style::preset(QStringLiteral("normal"));
+        const QByteArray plain = SvgFace(face, style).svg();
+        for (const char *worn : {"glasses", "moustache", "beard", "hat"})
+            QVERIFY(!plain.contains(QByteArray("id=\"") + worn + '"'));
+        Appearance &a = style.appearance;
+        a.glasses = id == QLatin1StringView("glasses") ? GlassesShape::Round : GlassesShape::None;
+        a.moustache = id == QLatin1StringView("moustache");
+        a.beard = id == QLatin1StringView("beard");
+        a.hat = id == QLatin1StringView("hat");
+        const QByteArray svg = SvgFace(face, style).svg();
+        QCOMPARE(svg.count(QByteArray("id=\"") + id.toLatin1() + '"'), 1);
+        for (const char *worn : {"glasses", "moustache", "beard", "hat"}) {
+            if (id != QLatin1StringView(worn))
+                QVERIFY(!svg.contains(QByteArray("id=\"") + worn + '"'));
+        }
+        // Switched off in the style: gone.
+        style.components[id].visible = false;
+        QVERIFY(!SvgFace(face, style).svg().contains(QByteArray("id=\"") + id.toLatin1() + '"'));
+    }
+
+    // The beard opens with the jaw, the moustache follows the upper lip, the glasses and the hat
+    // stay with the head.
+    void layersMoveWithTheFace()
+    {
+        const FaceModel face = testFace();
+        Style style = Style::preset(QStringLiteral("normal"));
+        style.appearance = {GlassesShape::Rectangular, true, true, true, false};
+        const SvgFace svg(face, style);
+        const QVector<FacePart> still = svg.parts();
+        const Pose open = mouthPose(face, MouthShapeSet(), MouthShape::A);
+        const QVector<FacePart> talking = svg.parts(open);
+        const double es0 = face.fapu().es0;
+        QVERIFY(lowest(geometryOf(talking, "beard")) > lowest(geometryOf(still, "beard")) + 0.1 * es0);
+        QVERIFY(geometryOf(talking, "moustache") != geometryOf(still, "moustache"));
+        const QVector<FacePart> surprised = svg.parts(emotionPose(face, Emotion::Surprise, 1.0));
+        QCOMPARE(geometryOf(surprised, "glasses"), geometryOf(still, "glasses"));
+        QCOMPARE(geometryOf(surprised, "hat"), geometryOf(still, "hat"));
+        // Glasses are drawn over the eyes; the beard under the mouth; the moustache over the lips.
+        auto order = [&](const char *id) {
+            for (int i = 0; i < still.size(); ++i) {
+                if (still[i].id == QLatin1StringView(id))
+                    return i;
+            }
+            return -1;
+        };
+        QVERIFY(order("glasses") > order("eye-right-line"));
+        QVERIFY(order("beard") < order("mouth-upper-lip") && order("beard") > order("jaw"));
+        QVERIFY(order("moustache") > order("mouth-upper-lip"));
+        QVERIFY(order("hat") > order("face"));
+        // The head's motion moves them all (one transform over the head group).
+        Pose turned;
+        turned.head.rotationDeg = 10;
+        const QByteArray text = svg.svg(turned);
+        const qsizetype head = text.indexOf("<g id=\"head\"");
+        QVERIFY(head >= 0 && text.indexOf("id=\"glasses\"") > head && text.indexOf("id=\"hat\"") > head);
+    }
+
+    // A bald head: no hair element; the face's outline runs over the skull (up to the crown).
+    void baldHeadShowsTheSkull()
+    {
+        const FaceModel face = testFace();
+        Style style = Style::preset(QStringLiteral("normal"));
+        const QVector<FacePart> haired = SvgFace(face, style).parts();
+        QVERIFY(partById(haired, "hair"));
+        style.appearance.bald = true;
+        const QVector<FacePart> bald = SvgFace(face, style).parts();
+        QVERIFY(!partById(bald, "hair"));
+        static const QRegularExpression number(QStringLiteral("-?\\d+(\\.\\d+)?"));
+        auto top = [&](const QString &d) {
+            double y = 1e300;
+            int k = 0;
+            for (auto it = number.globalMatch(d); it.hasNext(); ++k) {
+                const double v = it.next().captured().toDouble();
+                if (k % 2 == 1)
+                    y = std::min(y, v);
+            }
+            return y;
+        };
+        const double crown = face.point("h.10").y();
+        QVERIFY(top(geometryOf(bald, "face")) < crown + 2);
+        QVERIFY(top(geometryOf(haired, "face")) > crown + 10);
+    }
+
+    // Caricature: nothing at 0 (and nothing for the average face itself); a face's differences
+    // from the average grow with the factor; two faces drawn further apart than their points.
+    void caricature()
+    {
+        // The template in a square box is the average face itself (in a taller box it is a
+        // longer face, which the caricature lengthens).
+        const FaceModel average = averageFace(QRectF(50, 40, 300, 300), QSize(400, 400));
+        for (const QPointF &d : caricatureOffsets(average, 1.0))
+            QVERIFY(std::hypot(d.x(), d.y()) < 1e-6);
+        const auto longer = caricatureOffsets(averageFace(QRectF(50, 40, 300, 360), QSize(400, 440)), 0.5);
+        QVERIFY(longer[pt::idx("2.1")].y() > 1.0 && longer[pt::idx("11.1")].y() < -1.0);
+        const FaceModel face = distinctFace();
+        for (const QPointF &d : caricatureOffsets(face, 0.0))
+            QCOMPARE(d, QPointF());
+        auto noseWidth = [](const QVector<FacePart> &parts) {
+            static const QRegularExpression number(QStringLiteral("-?\\d+(\\.\\d+)?"));
+            double lo = 1e300, hi = -1e300;
+            int k = 0;
+            for (auto it = number.globalMatch(geometryOf(parts, "nose-bottom")); it.hasNext(); ++k) {
+                const double v = it.next().captured().toDouble();
+                if (k % 2 == 0) {
+                    lo = std::min(lo, v);
+                    hi = std::max(hi, v);
+                }
+            }
+            return hi - lo;
+        };
+        Style style = Style::preset(QStringLiteral("normal"));
+        double previous = 0;
+        double exact = 0;
+        for (double factor : {0.0, 0.35, 0.7}) {
+            style.caricature = factor;
+            const double w = noseWidth(SvgFace(face, style).parts());
+            if (factor == 0)
+                exact = w;
+            QVERIFY2(w > previous, qPrintable(QString::number(w)));
+            previous = w;
+        }
+        QVERIFY(previous > exact * 1.05);
+        // The chin, longer than the average's, comes out longer still.
+        const auto off = caricatureOffsets(face, 0.35);
+        QVERIFY(off[pt::idx("2.1")].y() > 1.0);
+        // Offsets are bounded: a wild point cannot tear the drawing.
+        FaceModel wild = testFace();
+        wild.setPoint(pt::idx("9.15"), wild.point("9.15") + QPointF(0, 400));
+        const double es0 = wild.fapu().es0;
+        for (const QPointF &d : caricatureOffsets(wild, 1.0))
+            QVERIFY(std::hypot(d.x(), d.y()) <= kMaxCaricatureShift * es0 + 1e-9);
+    }
+
+    // New styles start mildly caricatured.
+    void defaultIsMild()
+    {
+        QCOMPARE(Style().caricature, kDefaultCaricature);
+        QVERIFY(kDefaultCaricature > 0 && kDefaultCaricature <= 0.5);
+        QCOMPARE(Style::preset(QStringLiteral("cute")).caricature, kDefaultCaricature);
+    }
+};
+
+QTEST_MAIN(TestSvgFeatures)
+#include "tst_svgfeatures.moc"

@@ -1,0 +1,105 @@
+#include "appearance/appearancepanel.h"
+#include "uifixture.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QPushButton>
+#include <QSlider>
+#include <QTest>
+#include <QUndoStack>
+
+using namespace toonface;
+
+class TestAppearancePanel : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void showsTheDocumentsStyle()
+    {
+        Document doc;
+        fixture::fill(doc);
+        Style s = doc.style();
+        s.caricature = 0.6;
+        s.appearance.beard = true;
+        s.appearance.glasses = GlassesShape::Round;
+        s.eyebrows = EyebrowVariant::Thick;
+        doc.changeStyle(s, QStringLiteral("set"));
+        AppearancePanel panel(&doc);
+        QCOMPARE(panel.findChild<QSlider *>(QStringLiteral("caricature"))->value(), 60);
+        QVERIFY(panel.findChild<QCheckBox *>(QStringLiteral("beard"))->isChecked());
+        QVERIFY(!panel.findChild<QCheckBox *>(QStringLiteral("moustache"))->isChecked());
+        QCOMPARE(panel.findChild<QComboBox *>(QStringLiteral("glasses"))->currentText(), QStringLiteral("round"));
+        QCOMPARE(
+            panel.findChild<QComboBox *>(QStringLiteral("eyebrowVariant"))->currentText(), QStringLiteral("thick"));
+        // Undo shows the change going back.
+        doc.undoStack()->undo();
+        QVERIFY(!panel.findChild<QCheckBox *>(QStringLiteral("beard"))->isChecked());
+        QCOMPARE(panel.findChild<QSlider *>(QStringLiteral("caricature"))->value(),
+            int(std::lround(kDefaultCaricature * 100)));
+    }
+
+    // Every control is one undo step that changes just its part of the style.
+    void eachChangeIsOneStep()
+    {
+        Document doc;
+        fixture::fill(doc);
+        AppearancePanel panel(&doc);
+        QUndoStack *undo = doc.undoStack();
+
+        panel.findChild<QCheckBox *>(QStringLiteral("moustache"))->click();
+        QCOMPARE(undo->count(), 1);
+        QVERIFY(doc.style().appearance.moustache);
+
+        auto *glasses = panel.findChild<QComboBox *>(QStringLiteral("glasses"));
+        glasses->setCurrentIndex(glasses->findText(QStringLiteral("rectangular")));
+        Q_EMIT glasses->activated(glasses->currentIndex());
+        QCOMPARE(undo->count(), 2);
+        QCOMPARE(doc.style().appearance.glasses, GlassesShape::Rectangular);
+
+        // A slider drag: many values while down, one step on release.
+        auto *slider = panel.findChild<QSlider *>(QStringLiteral("caricature"));
+        slider->setSliderDown(true);
+        for (int v : {10, 20, 30, 80})
+            slider->setValue(v);
+        QCOMPARE(undo->count(), 2);
+        slider->setSliderDown(false);
+        QCOMPARE(undo->count(), 3);
+        QCOMPARE(doc.style().caricature, 0.8);
+
+        auto *hideHair = panel.findChild<QCheckBox *>(QStringLiteral("visible-hair"));
+        hideHair->click();
+        QCOMPARE(undo->count(), 4);
+        QVERIFY(!doc.style().components.value(QStringLiteral("hair")).visible);
+
+        // The skin's weight changes face, jaw and ears together, in one step.
+        auto *width = panel.findChild<QDoubleSpinBox *>(QStringLiteral("width-face"));
+        width->setValue(5.0);
+        Q_EMIT width->editingFinished();
+        QCOMPARE(undo->count(), 5);
+        for (const char *key : {"face", "jaw", "ears"})
+            QCOMPARE(doc.style().components.value(QLatin1StringView(key)).strokeWidth, 5.0);
+
+        // Resampling from the photo is one step too.
+        panel.findChild<QPushButton *>(QStringLiteral("resample"))->click();
+        QVERIFY(undo->count() <= 6);
+
+        for (int i = undo->count(); i > 0; --i)
+            undo->undo();
+        QCOMPARE(doc.style(), Style::preset(QStringLiteral("normal")));
+        QVERIFY(!panel.findChild<QCheckBox *>(QStringLiteral("moustache"))->isChecked());
+    }
+
+    void disabledWithoutAFace()
+    {
+        Document doc;
+        AppearancePanel panel(&doc);
+        QVERIFY(!panel.isEnabled());
+        panel.findChild<QCheckBox *>(QStringLiteral("beard"))->click();
+        QCOMPARE(doc.undoStack()->count(), 0);
+    }
+};
+
+QTEST_MAIN(TestAppearancePanel)
+#include "tst_appearancepanel.moc"
