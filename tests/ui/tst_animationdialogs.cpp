@@ -174,7 +174,10 @@ private Q_SLOTS:
         emotion->setCurrentIndex(emotion->findData(int(Emotion::Surprise)));
         QVERIFY(preview->image() != neutral); // the preview wears the emotion
         auto *slider = dialog.findChild<QSlider *>(QStringLiteral("intensity"));
+        auto *percent = dialog.findChild<QSpinBox *>(QStringLiteral("intensityValue"));
+        QCOMPARE(percent->value(), slider->value()); // the two show one value from the start
         slider->setValue(50);
+        QCOMPARE(percent->value(), 50);
         auto *start = dialog.findChild<QDoubleSpinBox *>(QStringLiteral("start"));
         auto *end = dialog.findChild<QDoubleSpinBox *>(QStringLiteral("end"));
         start->setValue(2.0);

@@ -7,12 +7,22 @@
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
+#include <QLineF>
 #include <QListWidget>
 #include <QTest>
 #include <QUndoStack>
 
 using namespace toonface;
 using namespace toonface::dialogfixture;
+
+namespace {
+
+FapuOffset termsOf(const MouthShapePreset &preset, int control)
+{
+    return preset.offsets[control];
+}
+
+} // namespace
 
 class TestMouthShapesDialog : public QObject
 {
@@ -92,6 +102,42 @@ private Q_SLOTS:
         again.accept();
         QVERIFY(doc.mouthShapes() == MouthShapeSet());
         QCOMPARE(doc.undoStack()->count(), 2);
+    }
+
+    void draggingAPointOnThePreviewEditsTheShape()
+    {
+        Document doc;
+        fixture::fill(doc);
+        MouthShapesDialog dialog(&doc);
+        dialog.resize(dialog.sizeHint());
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        dialog.setCurrentShape(MouthShape::A);
+        auto *preview = dialog.findChild<PosePreview *>(QStringLiteral("preview"));
+        const FaceModel &face = doc.face();
+        const QPointF lowerLip = face.point("8.2") + dialog.shapes().displacements(MouthShape::A, face)[Down];
+        const QPoint from = preview->toWidget(lowerLip).toPoint();
+        const QPoint to = from + QPoint(6, 25);
+        QTest::mousePress(preview, Qt::LeftButton, {}, from);
+        QTest::mouseMove(preview, from + QPoint(3, 10));
+        QTest::mouseMove(preview, to);
+        QTest::mouseRelease(preview, Qt::LeftButton, {}, to);
+        // The lower lip is where it was dropped: lower in MNS0, sideways in ES0/100.
+        const QPointF moved = face.point("8.2") + dialog.shapes().displacements(MouthShape::A, face)[Down];
+        const QPointF dropped = preview->toPhoto(to);
+        QVERIFY2(QLineF(moved, dropped).length() < 0.1,
+            qPrintable(
+                QStringLiteral("%1,%2 vs %3,%4").arg(moved.x()).arg(moved.y()).arg(dropped.x()).arg(dropped.y())));
+        const MouthShapePreset a = dialog.shapes().preset(MouthShape::A);
+        QVERIFY(a.offsets[Down].dy.mns > 0.8);
+        QVERIFY(a.offsets[Down].dx.px > 0);
+        QCOMPARE(a.offsets[Down].dx.mw, 0.0);
+        QCOMPARE(termsOf(a, Up), termsOf(MouthShapeSet::defaultPreset(MouthShape::A), Up));
+        // A press away from every point moves nothing.
+        const MouthShapeSet before = dialog.shapes();
+        QTest::mousePress(preview, Qt::LeftButton, {}, QPoint(2, 2));
+        QTest::mouseRelease(preview, Qt::LeftButton, {}, QPoint(40, 40));
+        QVERIFY(dialog.shapes() == before);
     }
 
     void unchangedValuesKeepTheirExactDefaults()

@@ -98,6 +98,7 @@ EmotionDialog::EmotionDialog(Document *document, QWidget *parent)
 
     m_intensity->setObjectName(QStringLiteral("intensity"));
     m_intensity->setRange(0, 100);
+    m_intensityValue->setObjectName(QStringLiteral("intensityValue"));
     m_intensityValue->setRange(0, 100);
     m_intensityValue->setSuffix(tr(" %"));
     auto *intensityRow = new QHBoxLayout;
@@ -145,6 +146,9 @@ EmotionDialog::EmotionDialog(Document *document, QWidget *parent)
     layout->addLayout(body, 1);
     layout->addWidget(buttons);
 
+    connect(m_intensity, &QSlider::valueChanged, m_intensityValue, &QSpinBox::setValue);
+    connect(m_intensityValue, &QSpinBox::valueChanged, m_intensity, &QSlider::setValue);
+
     EmotionClip initial;
     initial.emotion = Emotion::Smile;
     initial.intensity = 0.8;
@@ -152,8 +156,6 @@ EmotionDialog::EmotionDialog(Document *document, QWidget *parent)
     initial.end = duration > 0 ? duration : kEmptyAnimationRange;
     setClip(initial);
 
-    connect(m_intensity, &QSlider::valueChanged, m_intensityValue, &QSpinBox::setValue);
-    connect(m_intensityValue, &QSpinBox::valueChanged, m_intensity, &QSlider::setValue);
     connect(m_intensity, &QSlider::valueChanged, this, &EmotionDialog::updatePreview);
     connect(m_emotion, &QComboBox::currentIndexChanged, this, &EmotionDialog::updatePreview);
     connect(buttons, &QDialogButtonBox::accepted, this, &EmotionDialog::accept);

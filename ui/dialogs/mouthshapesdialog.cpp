@@ -120,6 +120,9 @@ MouthShapesDialog::MouthShapesDialog(Document *document, QWidget *parent)
 
     m_preview->setObjectName(QStringLiteral("preview"));
     m_preview->setMinimumSize(360, 240);
+    m_preview->setMarkersDraggable(true);
+    m_preview->setMouseTracking(true);
+    m_preview->setToolTip(tr("Drag a point to move it"));
     if (m_document->hasFace()) {
         m_preview->setFace(m_face);
         m_preview->setFrame(m_mouthFrame);
@@ -175,6 +178,8 @@ MouthShapesDialog::MouthShapesDialog(Document *document, QWidget *parent)
     });
     for (QDoubleSpinBox *box : m_terms)
         connect(box, &QDoubleSpinBox::valueChanged, this, &MouthShapesDialog::readEditor);
+    connect(m_preview, &PosePreview::markerDragged, this,
+        [this](int control, QPointF photoPos, bool) { dragControl(control, photoPos); });
     connect(m_cornersAtLipMiddle, &QCheckBox::toggled, this, &MouthShapesDialog::readEditor);
     connect(m_cornersFromPrevious, &QCheckBox::toggled, this, &MouthShapesDialog::readEditor);
     connect(m_resetShape, &QPushButton::clicked, this, &MouthShapesDialog::resetShape);
@@ -303,6 +308,29 @@ void MouthShapesDialog::refreshIcon(MouthShape shape)
     if (m_document->hasFace())
         item->setIcon(QIcon(QPixmap::fromImage(renderPose(m_face, mouthPose(m_document->face(), m_shapes, shape),
             m_mouthFrame, QSize(kThumbnailSize, kThumbnailSize)))));
+}
+
+// A coordinate's displacement is affine in each of its terms, whatever the face's resting
+// mouth adds: moving one term by (wanted - now) / unit brings the point where it is dragged.
+// A coordinate a corner rule sets (o's corner height, n's corners) does not follow the drag.
+void MouthShapesDialog::dragControl(int control, QPointF photoPos)
+{
+    const FaceModel &face = m_document->face();
+    const Fapu f = face.fapu();
+    const QPointF now = m_shapes.displacements(m_current, face)[control];
+    const QPointF wanted = photoPos - face.point(kMouthControlIds[control]);
+    const bool corner = control == Left || control == Right;
+    // x: corners in MW0, lips in ES0/100; y: lips in MNS0, corners in ES0/100.
+    const int xTerm = corner ? 1 : 3;
+    const int yTerm = corner ? 3 : 0;
+    const auto unit = [&f](int term) { return term == 0 ? f.mns0 : term == 1 ? f.mw0 : f.pixel(); };
+    QDoubleSpinBox *xBox = termBox(control, 0, xTerm);
+    QDoubleSpinBox *yBox = termBox(control, 1, yTerm);
+    m_loading = true; // one update for both boxes
+    xBox->setValue(xBox->value() + (wanted.x() - now.x()) / unit(xTerm));
+    yBox->setValue(yBox->value() + (wanted.y() - now.y()) / unit(yTerm));
+    m_loading = false;
+    readEditor();
 }
 
 void MouthShapesDialog::resetShape()

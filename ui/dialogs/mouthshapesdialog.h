@@ -23,9 +23,10 @@ class PosePreview;
 // each edited with a live preview of this character's mouth. A shape is the displacement of
 // the four mouth control points (8.9, 8.2, 8.4, 8.3), each coordinate a sum of FAPU terms
 // (MNS0, MW0, LowerLipH, ES0/100) so that it fits any face; the preview marks where each
-// control point moves from and to. Reset Shape / Reset All restore the defaults. The edits
-// reach the project on OK as one undo step (undo restores the exact previous presets);
-// Cancel changes nothing.
+// control point moves from and to; dragging a marker there moves that control (corners
+// sideways in MW0, lips up and down in MNS0, the other axis in ES0/100). Reset Shape / Reset All restore the defaults.
+// The edits reach the project on OK as one undo step (undo restores the exact previous presets); Cancel changes
+// nothing.
 class MouthShapesDialog : public QDialog
 {
     Q_OBJECT
@@ -56,6 +57,7 @@ private:
     void readEditor();
     void refresh();
     void refreshIcon(MouthShape shape);
+    void dragControl(int control, QPointF photoPos);
 
     Document *m_document;
     MouthShapeSet m_shapes;

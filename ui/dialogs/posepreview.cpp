@@ -1,5 +1,6 @@
 #include "dialogs/posepreview.h"
 
+#include <QMouseEvent>
 #include <QPaintEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -11,6 +12,7 @@ namespace toonface {
 namespace {
 
 constexpr int kMargin = 8; // widget pixels around the drawing
+constexpr double kGrabRadius = 9; // widget pixels around a marker that pick it up
 
 QRectF fitted(const QRectF &frame, const QRectF &area)
 {
@@ -116,8 +118,7 @@ void PosePreview::paintEvent(QPaintEvent *)
     if (m_markers.isEmpty() || target.isEmpty() || m_frame.isEmpty())
         return;
     painter.setRenderHint(QPainter::Antialiasing);
-    const double k = target.width() / m_frame.width();
-    const auto map = [&](QPointF p) { return target.topLeft() + (p - m_frame.topLeft()) * k; };
+    const auto map = [this](QPointF p) { return toWidget(p); };
     const QColor accent = palette().color(QPalette::Highlight);
     for (const Marker &m : m_markers) {
         const QPointF a = map(m.from);
@@ -135,6 +136,63 @@ void PosePreview::paintEvent(QPaintEvent *)
             painter.drawText(b + QPointF(8, -6), m.label);
         }
     }
+}
+
+QPointF PosePreview::toWidget(QPointF photo) const
+{
+    const QRectF target = targetRect();
+    if (target.isEmpty() || m_frame.isEmpty())
+        return QPointF();
+    return target.topLeft() + (photo - m_frame.topLeft()) * (target.width() / m_frame.width());
+}
+
+QPointF PosePreview::toPhoto(QPointF widget) const
+{
+    const QRectF target = targetRect();
+    if (target.isEmpty() || m_frame.isEmpty())
+        return QPointF();
+    return m_frame.topLeft() + (widget - target.topLeft()) * (m_frame.width() / target.width());
+}
+
+void PosePreview::mousePressEvent(QMouseEvent *event)
+{
+    m_dragged = -1;
+    if (!m_draggable || event->button() != Qt::LeftButton)
+        return QWidget::mousePressEvent(event);
+    double best = kGrabRadius;
+    for (int i = 0; i < m_markers.size(); ++i) {
+        const double d = QLineF(toWidget(m_markers[i].to), event->position()).length();
+        if (d <= best) {
+            best = d;
+            m_dragged = i;
+        }
+    }
+    if (m_dragged >= 0)
+        setCursor(Qt::ClosedHandCursor);
+}
+
+void PosePreview::mouseMoveEvent(QMouseEvent *event)
+{
+    if (m_dragged >= 0) {
+        Q_EMIT markerDragged(m_dragged, toPhoto(event->position()), false);
+        return;
+    }
+    if (m_draggable) {
+        bool over = false;
+        for (const Marker &m : std::as_const(m_markers))
+            over |= QLineF(toWidget(m.to), event->position()).length() <= kGrabRadius;
+        setCursor(over ? Qt::OpenHandCursor : Qt::ArrowCursor);
+    }
+}
+
+void PosePreview::mouseReleaseEvent(QMouseEvent *event)
+{
+    if (m_dragged < 0 || event->button() != Qt::LeftButton)
+        return QWidget::mouseReleaseEvent(event);
+    const int index = m_dragged;
+    m_dragged = -1;
+    unsetCursor();
+    Q_EMIT markerDragged(index, toPhoto(event->position()), true);
 }
 
 void PosePreview::resizeEvent(QResizeEvent *event)

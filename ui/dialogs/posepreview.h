@@ -42,6 +42,13 @@ public:
         QString label;
     };
     void setMarkers(const QVector<Marker> &markers);
+    // Lets the user drag a marker's posed end: markerDragged() reports where to, in photo
+    // pixels, for each move (finished = false) and on release (finished = true).
+    void setMarkersDraggable(bool draggable) { m_draggable = draggable; }
+
+    // Widget <-> photo pixels, as drawn now.
+    QPointF toWidget(QPointF photo) const;
+    QPointF toPhoto(QPointF widget) const;
 
     // The drawing as shown (without the markers), at the widget's size.
     QImage image();
@@ -49,8 +56,14 @@ public:
     QSize sizeHint() const override { return QSize(320, 240); }
     QSize minimumSizeHint() const override { return QSize(120, 90); }
 
+Q_SIGNALS:
+    void markerDragged(int index, QPointF photoPos, bool finished);
+
 protected:
     void paintEvent(QPaintEvent *event) override;
+    void mousePressEvent(QMouseEvent *event) override;
+    void mouseMoveEvent(QMouseEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
 
 private:
@@ -61,6 +74,8 @@ private:
     Pose m_pose;
     QRectF m_frame;
     QVector<Marker> m_markers;
+    bool m_draggable = false;
+    int m_dragged = -1;
     QImage m_cache;
     bool m_cacheValid = false;
 };
