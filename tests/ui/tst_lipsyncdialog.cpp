@@ -148,6 +148,29 @@ private Q_SLOTS:
         QVERIFY(doc.animation() == after);
     }
 
+    void videoSoundInEnglish()
+    {
+        const QString video = QDir(sharedData()).filePath(QStringLiteral("video/id2_vcd_swwp2s.mpg"));
+        if (!QFileInfo::exists(video))
+            QSKIP("the research video video/id2_vcd_swwp2s.mpg is absent");
+        Document doc;
+        fixture::fill(doc);
+        LipSyncDialog dialog(&doc);
+        dialog.show();
+        fillIn(dialog, QFileInfo(video).absoluteFilePath(), QStringLiteral("set white with p two soon"));
+        QSignalSpy applied(&dialog, &LipSyncDialog::applied);
+        QSignalSpy failed(&dialog, &LipSyncDialog::failed);
+        QVERIFY(click(&dialog, "start"));
+        QVERIFY2(applied.wait(kAlignTimeoutMs) || !failed.isEmpty(), qPrintable(dialog.message()));
+        QVERIFY2(failed.isEmpty(), qPrintable(dialog.message()));
+        QCOMPARE(doc.syllables().size(), 6);
+        QCOMPARE(doc.syllables().first().text, QStringLiteral("set"));
+        QCOMPARE(doc.project().scriptLanguage, QStringLiteral("en"));
+        QCOMPARE(doc.timeline().audio()->path, QFileInfo(video).absoluteFilePath());
+        QVERIFY(std::abs(doc.timeline().audio()->duration - 3.0) < 0.2);
+        QVERIFY(!doc.timeline().mouthKeys().isEmpty());
+    }
+
     void startsWithTheProjectsSoundAndScript()
     {
         Document doc;
