@@ -4,10 +4,8 @@
 #include "dialogs/jobstatus.h"
 #include "dialogs/languagebox.h"
 #include "dialogs/secondsbox.h"
-#include "dialogs/speechtask.h"
 #include "document/document.h"
 
-#include <QDialogButtonBox>
 #include <QDir>
 #include <QFile>
 #include <QFileDialog>
@@ -37,26 +35,18 @@ bool LipSyncDialog::run(QWidget *parent, Document *document)
 }
 
 LipSyncDialog::LipSyncDialog(Document *document, QWidget *parent)
-    : QDialog(parent)
-    , m_document(document)
-    , m_task(new SpeechTask(this))
+    : SpeechDialog(document, tr("Lip Sync"), parent)
     , m_recording(new QLineEdit(this))
     , m_offset(new SecondsBox(this))
     , m_language(new LanguageBox(this))
     , m_script(new QPlainTextEdit(this))
     , m_scriptState(new QLabel(this))
     , m_scriptCheck(new QTimer(this))
-    , m_status(new JobStatus(this))
-    , m_buttons(new QDialogButtonBox(this))
 {
     setWindowTitle(tr("Lip Sync from Recording"));
-    setMinimumWidth(600);
-
-    auto *intro = new QLabel(tr("Aligns a recording with the script it speaks, syllable by syllable. The mouth keys "
-                                "and the script's syllables where the recording plays are replaced; the rest of the "
-                                "timeline is kept."),
-        this);
-    intro->setWordWrap(true);
+    const QString intro = tr("Aligns a recording with the script it speaks, syllable by syllable. The mouth keys "
+                             "and the script's syllables where the recording plays are replaced; the rest of the "
+                             "timeline is kept.");
 
     m_recording->setObjectName(QStringLiteral("recording"));
     m_recording->setPlaceholderText(tr("An audio file, or a video whose sound is used"));
@@ -94,19 +84,7 @@ LipSyncDialog::LipSyncDialog(Document *document, QWidget *parent)
     static_cast<QLabel *>(form->labelForField(recordingRow))->setBuddy(m_recording);
     static_cast<QLabel *>(form->labelForField(scriptBox))->setBuddy(m_script);
 
-    m_startButton = m_buttons->addButton(tr("Lip Sync"), QDialogButtonBox::AcceptRole);
-    m_startButton->setObjectName(QStringLiteral("start"));
-    m_startButton->setDefault(true);
-    m_cancelButton = m_buttons->addButton(QDialogButtonBox::Cancel);
-    m_cancelButton->setObjectName(QStringLiteral("cancel"));
-
-    auto *layout = new QVBoxLayout(this);
-    layout->addWidget(intro);
-    layout->addLayout(form, 1);
-    layout->addWidget(m_status);
-    layout->addWidget(m_buttons);
-
-    m_inputs = {m_recording, browse, m_offset, m_language, m_script, openScriptButton};
+    setBody(intro, form, {m_recording, browse, m_offset, m_language, m_script, openScriptButton});
 
     m_scriptCheck->setSingleShot(true);
     m_scriptCheck->setInterval(kScriptCheckDelayMs);
@@ -116,47 +94,33 @@ LipSyncDialog::LipSyncDialog(Document *document, QWidget *parent)
     connect(m_recording, &QLineEdit::textChanged, this, &LipSyncDialog::updateButtons);
     connect(browse, &QPushButton::clicked, this, &LipSyncDialog::browseRecording);
     connect(openScriptButton, &QPushButton::clicked, this, &LipSyncDialog::browseScript);
-    connect(m_buttons, &QDialogButtonBox::accepted, this, &LipSyncDialog::start);
-    connect(m_buttons, &QDialogButtonBox::rejected, this, &LipSyncDialog::reject);
-    connect(m_task, &SpeechTask::progress, m_status, &JobStatus::showProgress);
-    connect(m_task, &SpeechTask::finished, this, &LipSyncDialog::onFinished);
 
     // Start from what the project has: its sound and its script.
-    if (const std::optional<AudioClip> &clip = m_document->timeline().audio()) {
+    if (const std::optional<AudioClip> &clip = document->timeline().audio()) {
         m_recording->setText(clip->path);
         m_offset->setValue(clip->offset);
     }
-    m_language->setLanguageCode(m_document->project().scriptLanguage);
-    m_script->setPlainText(m_document->project().script);
+    m_language->setLanguageCode(document->project().scriptLanguage);
+    m_script->setPlainText(document->project().script);
     checkScript();
 }
 
 LipSyncDialog::~LipSyncDialog() = default;
 
-bool LipSyncDialog::isRunning() const
-{
-    return m_task->isRunning();
-}
-
-QString LipSyncDialog::message() const
-{
-    return m_status->message();
-}
-
 bool LipSyncDialog::openScript(const QString &path)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        m_status->showError(tr("%1: cannot be read (%2)").arg(path, file.errorString()));
+        status()->showError(tr("%1: cannot be read (%2)").arg(path, file.errorString()));
         return false;
     }
     QStringDecoder decode(QStringDecoder::Utf8);
     const QString text = decode(file.readAll());
     if (decode.hasError()) {
-        m_status->showError(tr("%1: not a UTF-8 text file").arg(path));
+        status()->showError(tr("%1: not a UTF-8 text file").arg(path));
         return false;
     }
-    m_status->clear();
+    status()->clear();
     m_script->setPlainText(text.trimmed());
     checkScript();
     return true;
@@ -164,7 +128,7 @@ bool LipSyncDialog::openScript(const QString &path)
 
 void LipSyncDialog::browseRecording()
 {
-    const QString start = m_recording->text().isEmpty() ? QFileInfo(m_document->filePath()).absolutePath()
+    const QString start = m_recording->text().isEmpty() ? QFileInfo(document()->filePath()).absolutePath()
                                                         : QFileInfo(m_recording->text()).absolutePath();
     const QString path = QFileDialog::getOpenFileName(this, tr("Recording"), start,
         tr("Sound and video (*.wav *.flac *.mp3 *.ogg *.opus *.m4a *.aac *.mp4 *.mov *.mkv *.webm *.avi);;"
@@ -207,79 +171,31 @@ void LipSyncDialog::checkScript()
     updateButtons();
 }
 
-void LipSyncDialog::updateButtons()
+bool LipSyncDialog::canStart() const
 {
-    const bool running = m_task->isRunning();
-    m_startButton->setEnabled(!running && m_scriptOk && !m_recording->text().trimmed().isEmpty());
+    return m_scriptOk && !m_recording->text().trimmed().isEmpty();
 }
 
-void LipSyncDialog::setRunning(bool running)
-{
-    for (QWidget *w : std::as_const(m_inputs))
-        w->setEnabled(!running);
-    m_cancelButton->setEnabled(true);
-    updateButtons();
-}
-
-void LipSyncDialog::start()
+std::optional<SpeechTask::Job> LipSyncDialog::prepare()
 {
     checkScript();
-    if (m_task->isRunning() || !m_startButton->isEnabled())
-        return;
+    if (!m_scriptOk)
+        return std::nullopt;
     const ScriptParse parse = parseScript(m_script->toPlainText(), m_language->language());
     m_runAudio = QFileInfo(m_recording->text().trimmed()).absoluteFilePath();
     m_runScript = m_script->toPlainText();
     m_runOffset = m_offset->value();
-    const QString audio = m_runAudio;
-    const Script script = parse.script;
-    const QString scriptName = tr("the script");
-    m_status->showProgress(0, tr("Reading %1").arg(QFileInfo(audio).fileName()));
-    m_task->start([audio, script, scriptName](const SpeechProgressFn &progress, const std::atomic_bool *cancel) {
-        return lipsyncRecording(audio, script, scriptName, progress, cancel);
-    });
-    setRunning(true);
+    status()->showProgress(0, tr("Reading %1").arg(QFileInfo(m_runAudio).fileName()));
+    return
+        [audio = m_runAudio, script = parse.script, scriptName = tr("the script")](const SpeechProgressFn &progress,
+            const std::atomic_bool *cancel) { return lipsyncRecording(audio, script, scriptName, progress, cancel); };
 }
 
-void LipSyncDialog::cancel()
+void LipSyncDialog::apply(const LipsyncResult &result)
 {
-    if (!m_task->isRunning())
-        return;
-    m_task->cancel();
-    m_cancelButton->setEnabled(false);
-    m_status->showProgress(0, tr("Cancelling…"));
-}
-
-void LipSyncDialog::reject()
-{
-    // Escape or Cancel while aligning stops the alignment and keeps the dialog open.
-    if (m_task->isRunning()) {
-        cancel();
-        return;
-    }
-    QDialog::reject();
-}
-
-void LipSyncDialog::onFinished(const LipsyncOutcome &outcome)
-{
-    setRunning(false);
-    switch (outcome.status) {
-    case LipsyncStatus::Cancelled:
-        m_status->showNote(tr("Cancelled: nothing was changed."));
-        Q_EMIT cancelled();
-        return;
-    case LipsyncStatus::BadInput:
-    case LipsyncStatus::CannotAlign:
-        m_status->showError(outcome.error + QLatin1Char('\n') + tr("Nothing was changed."));
-        Q_EMIT failed(m_status->message());
-        return;
-    case LipsyncStatus::Ok: break;
-    }
     const Animation after
-        = withSpeech(m_document->animation(), outcome.result, SpeechPlacement {m_runAudio, m_runOffset, m_runScript});
-    m_document->changeAnimation(after, tr("Lip Sync from %1").arg(QFileInfo(m_runAudio).fileName()));
-    m_status->clear();
-    Q_EMIT applied();
-    accept();
+        = withSpeech(document()->animation(), result, SpeechPlacement {m_runAudio, m_runOffset, m_runScript});
+    document()->changeAnimation(after, tr("Lip Sync from %1").arg(QFileInfo(m_runAudio).fileName()));
 }
 
 } // namespace toonface

@@ -4,10 +4,8 @@
 #include "dialogs/jobstatus.h"
 #include "dialogs/languagebox.h"
 #include "dialogs/secondsbox.h"
-#include "dialogs/speechtask.h"
 #include "document/document.h"
 
-#include <QDialogButtonBox>
 #include <QDir>
 #include <QFile>
 #include <QFileDialog>
@@ -67,9 +65,7 @@ QString SayTextDialog::defaultSoundPath(const Document &document)
 }
 
 SayTextDialog::SayTextDialog(Document *document, QWidget *parent)
-    : QDialog(parent)
-    , m_document(document)
-    , m_task(new SpeechTask(this))
+    : SpeechDialog(document, tr("Say"), parent)
     , m_text(new QPlainTextEdit(this))
     , m_language(new LanguageBox(this))
     , m_rate(new QSpinBox(this))
@@ -77,16 +73,10 @@ SayTextDialog::SayTextDialog(Document *document, QWidget *parent)
     , m_offset(new SecondsBox(this))
     , m_soundPath(new QLineEdit(this))
     , m_soundNote(new QLabel(this))
-    , m_status(new JobStatus(this))
-    , m_buttons(new QDialogButtonBox(this))
 {
     setWindowTitle(tr("Say Text"));
-    setMinimumWidth(600);
-
-    auto *intro = new QLabel(tr("The built-in voice speaks the text and the face says it with the voice's exact "
-                                "timings. The mouth keys and syllables where the speech plays are replaced."),
-        this);
-    intro->setWordWrap(true);
+    const QString intro = tr("The built-in voice speaks the text and the face says it with the voice's exact "
+                             "timings. The mouth keys and syllables where the speech plays are replaced.");
 
     m_text->setObjectName(QStringLiteral("text"));
     m_text->setPlaceholderText(tr("Chinese characters, pinyin, Zhuyin or English, e.g. 您好，我是葛麗絲。"));
@@ -110,7 +100,7 @@ SayTextDialog::SayTextDialog(Document *document, QWidget *parent)
     voiceRow->addStretch(1);
 
     m_soundPath->setObjectName(QStringLiteral("soundPath"));
-    m_soundPath->setText(QDir::toNativeSeparators(defaultSoundPath(*m_document)));
+    m_soundPath->setText(QDir::toNativeSeparators(defaultSoundPath(*document)));
     auto *choose = new QPushButton(tr("Choose…"), this);
     choose->setObjectName(QStringLiteral("chooseSound"));
     auto *soundRow = new QHBoxLayout;
@@ -118,9 +108,9 @@ SayTextDialog::SayTextDialog(Document *document, QWidget *parent)
     soundRow->addWidget(choose);
     m_soundNote->setObjectName(QStringLiteral("soundNote"));
     m_soundNote->setWordWrap(true);
-    m_soundNote->setText(!m_document->filePath().isEmpty()
+    m_soundNote->setText(!document->filePath().isEmpty()
             ? tr("The sound is saved beside the project.")
-            : (m_document->project().photoPath.isEmpty()
+            : (document->project().photoPath.isEmpty()
                     ? tr("The project is not saved yet: the sound is saved in your documents folder.")
                     : tr("The project is not saved yet: the sound is saved beside the photo. Save the project "
                          "in the same folder to keep them together.")));
@@ -138,43 +128,16 @@ SayTextDialog::SayTextDialog(Document *document, QWidget *parent)
     static_cast<QLabel *>(form->labelForField(voiceRow))->setBuddy(m_rate);
     static_cast<QLabel *>(form->labelForField(soundBox))->setBuddy(m_soundPath);
 
-    m_startButton = m_buttons->addButton(tr("Say"), QDialogButtonBox::AcceptRole);
-    m_startButton->setObjectName(QStringLiteral("start"));
-    m_startButton->setDefault(true);
-    m_cancelButton = m_buttons->addButton(QDialogButtonBox::Cancel);
-    m_cancelButton->setObjectName(QStringLiteral("cancel"));
-
-    auto *layout = new QVBoxLayout(this);
-    layout->addWidget(intro);
-    layout->addLayout(form, 1);
-    layout->addWidget(m_status);
-    layout->addWidget(m_buttons);
-
-    m_inputs = {m_text, m_language, m_rate, m_pitch, m_offset, m_soundPath, choose};
+    setBody(intro, form, {m_text, m_language, m_rate, m_pitch, m_offset, m_soundPath, choose});
 
     connect(m_text, &QPlainTextEdit::textChanged, this, &SayTextDialog::updateButtons);
     connect(m_soundPath, &QLineEdit::textChanged, this, &SayTextDialog::updateButtons);
     connect(choose, &QPushButton::clicked, this, &SayTextDialog::chooseSoundPath);
-    connect(m_buttons, &QDialogButtonBox::accepted, this, &SayTextDialog::start);
-    connect(m_buttons, &QDialogButtonBox::rejected, this, &SayTextDialog::reject);
-    connect(m_task, &SpeechTask::progress, m_status, &JobStatus::showProgress);
-    connect(m_task, &SpeechTask::finished, this, &SayTextDialog::onFinished);
 
-    m_language->setLanguageCode(m_document->project().scriptLanguage);
-    updateButtons();
+    m_language->setLanguageCode(document->project().scriptLanguage);
 }
 
 SayTextDialog::~SayTextDialog() = default;
-
-bool SayTextDialog::isRunning() const
-{
-    return m_task->isRunning();
-}
-
-QString SayTextDialog::message() const
-{
-    return m_status->message();
-}
 
 QString SayTextDialog::soundPath() const
 {
@@ -189,29 +152,17 @@ void SayTextDialog::chooseSoundPath()
         m_soundPath->setText(QDir::toNativeSeparators(path));
 }
 
-void SayTextDialog::updateButtons()
+bool SayTextDialog::canStart() const
 {
-    m_startButton->setEnabled(
-        !m_task->isRunning() && !m_text->toPlainText().trimmed().isEmpty() && !m_soundPath->text().trimmed().isEmpty());
+    return !m_text->toPlainText().trimmed().isEmpty() && !m_soundPath->text().trimmed().isEmpty();
 }
 
-void SayTextDialog::setRunning(bool running)
+std::optional<SpeechTask::Job> SayTextDialog::prepare()
 {
-    for (QWidget *w : std::as_const(m_inputs))
-        w->setEnabled(!running);
-    m_cancelButton->setEnabled(true);
-    updateButtons();
-}
-
-void SayTextDialog::start()
-{
-    if (m_task->isRunning() || !m_startButton->isEnabled())
-        return;
     const ScriptParse parse = parseScript(m_text->toPlainText(), m_language->language());
     if (!parse.ok() || parse.script.syllables.isEmpty()) {
-        m_status->showError(parse.ok() ? tr("The text has nothing to say.") : parse.error);
-        Q_EMIT failed(m_status->message());
-        return;
+        fail(parse.ok() ? tr("The text has nothing to say.") : parse.error);
+        return std::nullopt;
     }
     m_runPath = soundPath();
     m_runText = m_text->toPlainText();
@@ -220,10 +171,9 @@ void SayTextDialog::start()
     TtsOptions options;
     options.rate = m_rate->value();
     options.pitch = m_pitch->value();
-    const Script script = parse.script;
-    const QString path = m_runPath;
-    m_status->showProgress(0, tr("Speaking"));
-    m_task->start([script, options, path](const SpeechProgressFn &progress, const std::atomic_bool *cancel) {
+    status()->showProgress(0, tr("Speaking"));
+    return [script = parse.script, options, path = m_runPath](
+               const SpeechProgressFn &progress, const std::atomic_bool *cancel) {
         LipsyncOutcome out;
         const TtsResult spoken = synthesize(script, options, progress, cancel);
         if (isCancelled(cancel)) {
@@ -243,50 +193,21 @@ void SayTextDialog::start()
         out.status = LipsyncStatus::Ok;
         out.result = lipsyncResult(script, spoken);
         return out;
-    });
-    setRunning(true);
+    };
 }
 
-void SayTextDialog::cancel()
+void SayTextDialog::apply(const LipsyncResult &result)
 {
-    if (!m_task->isRunning())
-        return;
-    m_task->cancel();
-    m_cancelButton->setEnabled(false);
-    m_status->showProgress(0, tr("Cancelling…"));
-}
-
-void SayTextDialog::reject()
-{
-    if (m_task->isRunning()) {
-        cancel();
-        return;
-    }
-    QDialog::reject();
-}
-
-void SayTextDialog::onFinished(const LipsyncOutcome &outcome)
-{
-    setRunning(false);
-    if (!outcome.ok()) {
-        // A sound written just before the cancel is not the user's: leave no new file.
-        if (m_runCreatesFile)
-            QFile::remove(m_runPath);
-        if (outcome.status == LipsyncStatus::Cancelled) {
-            m_status->showNote(tr("Cancelled: nothing was changed."));
-            Q_EMIT cancelled();
-        } else {
-            m_status->showError(outcome.error + QLatin1Char('\n') + tr("Nothing was changed."));
-            Q_EMIT failed(m_status->message());
-        }
-        return;
-    }
     const Animation after
-        = withSpeech(m_document->animation(), outcome.result, SpeechPlacement {m_runPath, m_runOffset, m_runText});
-    m_document->changeAnimation(after, tr("Say Text"));
-    m_status->clear();
-    Q_EMIT applied();
-    accept();
+        = withSpeech(document()->animation(), result, SpeechPlacement {m_runPath, m_runOffset, m_runText});
+    document()->changeAnimation(after, tr("Say Text"));
+}
+
+// A sound written just before a cancel is not the user's: leave no new file.
+void SayTextDialog::discard()
+{
+    if (m_runCreatesFile && !m_runPath.isEmpty())
+        QFile::remove(m_runPath);
 }
 
 } // namespace toonface

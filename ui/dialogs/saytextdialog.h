@@ -1,23 +1,16 @@
 #pragma once
 
-#include "speech/lipsync.h"
+#include "dialogs/speechdialog.h"
 
-#include <QDialog>
-
-class QDialogButtonBox;
 class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
-class QPushButton;
 class QSpinBox;
 
 namespace toonface {
 
-class Document;
-class JobStatus;
 class LanguageBox;
 class SecondsBox;
-class SpeechTask;
 
 // Say Text…: the built-in voice (espeak-ng; cmn-latn-pinyin for Mandarin) speaks a text. The
 // sound is saved as a WAV file beside the project — or, for a project not saved yet, beside
@@ -25,7 +18,7 @@ class SpeechTask;
 // timeline's sound; the mouth keys and syllables take the synthesizer's exact timings. One
 // undo step. Runs off the GUI thread with a progress bar and Cancel; a cancelled or failed
 // run changes nothing and leaves no new file.
-class SayTextDialog : public QDialog
+class SayTextDialog : public SpeechDialog
 {
     Q_OBJECT
 
@@ -40,28 +33,17 @@ public:
     // user's documents; named after the project (or photo) and not taken yet.
     static QString defaultSoundPath(const Document &document);
 
-    bool isRunning() const;
-    QString message() const;
     QString soundPath() const;
 
-public Q_SLOTS:
-    void start();
-    void cancel();
-    void reject() override;
-
-Q_SIGNALS:
-    void applied();
-    void failed(const QString &message);
-    void cancelled();
+protected:
+    std::optional<SpeechTask::Job> prepare() override;
+    void apply(const LipsyncResult &result) override;
+    void discard() override;
+    bool canStart() const override;
 
 private:
     void chooseSoundPath();
-    void updateButtons();
-    void setRunning(bool running);
-    void onFinished(const LipsyncOutcome &outcome);
 
-    Document *m_document;
-    SpeechTask *m_task;
     QPlainTextEdit *m_text;
     LanguageBox *m_language;
     QSpinBox *m_rate;
@@ -69,11 +51,6 @@ private:
     SecondsBox *m_offset;
     QLineEdit *m_soundPath;
     QLabel *m_soundNote;
-    JobStatus *m_status;
-    QDialogButtonBox *m_buttons;
-    QPushButton *m_startButton;
-    QPushButton *m_cancelButton;
-    QList<QWidget *> m_inputs;
     // What the running job was started with.
     QString m_runPath;
     QString m_runText;
