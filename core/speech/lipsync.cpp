@@ -91,12 +91,19 @@ LipsyncResult lipsyncResult(const Script &script, const TtsResult &spoken)
 LipsyncOutcome lipsyncFiles(const QString &audioPath, const QString &scriptPath, Language language,
     const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
-    LipsyncOutcome out;
     const ScriptParse script = readScriptFile(scriptPath, language);
     if (!script.ok()) {
+        LipsyncOutcome out;
         out.error = script.error;
         return out;
     }
+    return lipsyncRecording(audioPath, script.script, scriptPath, progress, cancel);
+}
+
+LipsyncOutcome lipsyncRecording(const QString &audioPath, const Script &script, const QString &scriptName,
+    const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+{
+    LipsyncOutcome out;
     const AudioResult audio = loadAudio(
         audioPath,
         [&](double f, const QString &stage) {
@@ -114,7 +121,7 @@ LipsyncOutcome lipsyncFiles(const QString &audioPath, const QString &scriptPath,
         return out;
     }
     const AlignResult aligned = alignScript(
-        audio.audio, script.script, {},
+        audio.audio, script, {},
         [&](double f, const QString &stage) {
             if (progress)
                 progress(0.2 + 0.8 * f, stage);
@@ -128,12 +135,12 @@ LipsyncOutcome lipsyncFiles(const QString &audioPath, const QString &scriptPath,
         return out;
     case AlignStatus::CannotAlign:
         out.status = LipsyncStatus::CannotAlign;
-        out.error = QStringLiteral("%1 and %2 could not be aligned: %3").arg(audioPath, scriptPath, aligned.error);
+        out.error = QStringLiteral("%1 and %2 could not be aligned: %3").arg(audioPath, scriptName, aligned.error);
         return out;
     case AlignStatus::BadInput: out.error = QStringLiteral("%1: %2").arg(audioPath, aligned.error); return out;
     }
     out.status = LipsyncStatus::Ok;
-    out.result = lipsyncResult(script.script, aligned, audio.audio.duration());
+    out.result = lipsyncResult(script, aligned, audio.audio.duration());
     return out;
 }
 

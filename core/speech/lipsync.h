@@ -68,6 +68,11 @@ struct LipsyncOutcome
 LipsyncOutcome lipsyncFiles(const QString &audioPath, const QString &scriptPath, Language language = Language::Auto,
     const SpeechProgressFn &progress = {}, const std::atomic_bool *cancel = nullptr);
 
+// The same with the script already read: `scriptName` names it in errors (its file, or
+// "the script"). Reads the sound of any file loadAudio() reads, a video's included.
+LipsyncOutcome lipsyncRecording(const QString &audioPath, const Script &script, const QString &scriptName,
+    const SpeechProgressFn &progress = {}, const std::atomic_bool *cancel = nullptr);
+
 // JSON `toonface.lipsync/1`: {format, language, duration, syllables: [{text, pinyin, start,
 // end, confidence, shapes: [{shape, start}]}], mouthCues: [{start, end, shape}]}, seconds
 // rounded to the millisecond.

@@ -168,6 +168,24 @@ private Q_SLOTS:
         QCOMPARE(tooLong.status, LipsyncStatus::CannotAlign);
     }
 
+    void recordingWithAScriptInMemory()
+    {
+        const QString wav = recordingOf(QStringLiteral("你好"), "memory.wav");
+        QVERIFY(!wav.isEmpty());
+        const LipsyncOutcome ok
+            = lipsyncRecording(wav, parseScript(QStringLiteral("你好")).script, QStringLiteral("the script"));
+        QVERIFY2(ok.ok(), qPrintable(ok.error));
+        QCOMPARE(ok.result.syllables.size(), 2);
+        QString longText;
+        for (int i = 0; i < 12; ++i)
+            longText += QStringLiteral("我们明天早上八点在学校门口见面。");
+        const LipsyncOutcome tooLong
+            = lipsyncRecording(wav, parseScript(longText).script, QStringLiteral("the typed script"));
+        QCOMPARE(tooLong.status, LipsyncStatus::CannotAlign);
+        QVERIFY(tooLong.error.contains(wav));
+        QVERIFY(tooLong.error.contains(QStringLiteral("the typed script")));
+    }
+
     void cliLipsync()
     {
         const QString wav = recordingOf(QStringLiteral("春眠不觉晓"), "cli.wav");

@@ -1,0 +1,96 @@
+#include "dialogs/animationedits.h"
+
+#include <algorithm>
+
+namespace toonface {
+
+Animation withSpeech(const Animation &before, const LipsyncResult &result, const SpeechPlacement &placement)
+{
+    Animation after = before;
+    const double from = placement.offset;
+    const double to = placement.offset + result.duration;
+
+    QVector<MouthCue> cues = result.mouthCues;
+    for (MouthCue &cue : cues) {
+        cue.start += from;
+        cue.end += from;
+    }
+    // The cues cover [0, duration]; an empty result still clears its range.
+    if (cues.isEmpty() && result.duration > 0)
+        cues.append({from, to, MouthShape::M});
+    after.timeline.addMouthCues(cues);
+
+    QVector<LipsyncSyllable> syllables;
+    for (const LipsyncSyllable &s : before.syllables) {
+        const bool inside = s.end > from && s.start < to;
+        if (!inside)
+            syllables.append(s);
+    }
+    for (LipsyncSyllable s : result.syllables) {
+        s.start += from;
+        s.end += from;
+        for (ShapeKey &key : s.shapes)
+            key.start += from;
+        syllables.append(s);
+    }
+    std::stable_sort(syllables.begin(), syllables.end(),
+        [](const LipsyncSyllable &a, const LipsyncSyllable &b) { return a.start < b.start; });
+    after.syllables = syllables;
+
+    after.timeline.setAudio(AudioClip {placement.audioPath, from, result.duration});
+    after.script = placement.script;
+    after.scriptLanguage = languageCode(result.language);
+    return after;
+}
+
+Animation withBlinks(const Animation &before, quint32 seed, double start, double end)
+{
+    Animation after = before;
+    QVector<BlinkEvent> blinks;
+    for (const BlinkEvent &b : before.timeline.blinks())
+        if (b.time < start || b.time >= end)
+            blinks.append(b);
+    for (BlinkEvent b : Timeline::randomBlinks(seed, end - start)) {
+        b.time += start;
+        if (b.time < end)
+            blinks.append(b);
+    }
+    after.timeline.setBlinks(blinks);
+    return after;
+}
+
+namespace {
+
+// `clip` cut to [start, end], its fades no longer than the part kept.
+EmotionClip cutTo(EmotionClip clip, double start, double end)
+{
+    clip.start = start;
+    clip.end = end;
+    const double length = end - start;
+    clip.fadeIn = std::min(clip.fadeIn, length);
+    clip.fadeOut = std::min(clip.fadeOut, length);
+    return clip;
+}
+
+} // namespace
+
+Animation withEmotion(const Animation &before, const EmotionClip &clip, bool replace)
+{
+    Animation after = before;
+    QVector<EmotionClip> clips;
+    for (const EmotionClip &c : before.timeline.emotionClips()) {
+        if (!replace || c.end <= clip.start || c.start >= clip.end) {
+            clips.append(c);
+            continue;
+        }
+        if (c.start < clip.start)
+            clips.append(cutTo(c, c.start, clip.start));
+        if (c.end > clip.end)
+            clips.append(cutTo(c, clip.end, c.end));
+    }
+    clips.append(clip);
+    after.timeline.setEmotionClips(clips);
+    return after;
+}
+
+} // namespace toonface

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <QWidget>
+
+class QLabel;
+class QProgressBar;
+
+namespace toonface {
+
+// The foot of a dialog that runs long work: a progress bar with what is being done while it
+// runs, and afterwards a message (an error, or a note such as "cancelled") that stays until
+// the next run. The message is selectable text, so the user can copy an error.
+class JobStatus : public QWidget
+{
+    Q_OBJECT
+
+public:
+    explicit JobStatus(QWidget *parent = nullptr);
+
+    void showProgress(double fraction, const QString &stage);
+    void showError(const QString &message);
+    void showNote(const QString &message);
+    void clear();
+
+    // The message shown now (empty while running or when none).
+    QString message() const;
+    bool isError() const { return m_error; }
+
+private:
+    void showMessage(const QString &message, bool error);
+
+    QProgressBar *m_progress;
+    QLabel *m_stage;
+    QLabel *m_icon;
+    QLabel *m_message;
+    bool m_error = false;
+};
+
+} // namespace toonface
