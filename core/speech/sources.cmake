@@ -11,4 +11,5 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/aligner.h speech/aligner.cpp
   speech/englishshapes.h speech/englishshapes.cpp
   speech/lipsync.h speech/lipsync.cpp
-  speech/syllableshapes.h speech/syllableshapes.cpp)
+  speech/syllableshapes.h speech/syllableshapes.cpp
+  speech/waveformpeaks.h speech/waveformpeaks.cpp)
