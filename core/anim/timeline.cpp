@@ -33,6 +33,7 @@ auto clipTime = [](const EmotionClip &c) { return c.start; };
 auto blinkTime = [](const BlinkEvent &b) { return b.time; };
 auto gazeTime = [](const GazeKey &k) { return k.time; };
 auto headTime = [](const HeadKey &k) { return k.time; };
+auto poseTime = [](const PoseKey &k) { return k.time; };
 
 HeadKey lerpHead(const HeadKey &a, const HeadKey &b, double s)
 {
@@ -89,6 +90,8 @@ double Timeline::duration() const
         end = std::max(end, m_gaze.last().time);
     if (!m_head.isEmpty())
         end = std::max(end, m_head.last().time);
+    if (!m_pose.isEmpty())
+        end = std::max(end, m_pose.last().time);
     return end;
 }
 
@@ -217,6 +220,22 @@ void Timeline::setHeadKeys(QVector<HeadKey> keys)
 void Timeline::addHeadKey(const HeadKey &key)
 {
     insertByTime(m_head, key, headTime);
+}
+
+void Timeline::setPoseKeys(QVector<PoseKey> keys)
+{
+    sortByTime(keys, poseTime);
+    m_pose = std::move(keys);
+}
+
+void Timeline::addPoseKey(const PoseKey &key)
+{
+    const auto at = std::lower_bound(m_pose.begin(), m_pose.end(), key.time - kPoseTimeTolerance,
+        [](const PoseKey &k, double t) { return k.time < t; });
+    if (at != m_pose.end() && std::abs(at->time - key.time) <= kPoseTimeTolerance)
+        *at = key;
+    else
+        m_pose.insert(at, key);
 }
 
 HeadKey Timeline::headAt(double t) const

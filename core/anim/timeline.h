@@ -5,6 +5,7 @@
 
 #include <QFlags>
 #include <QJsonObject>
+#include <QMap>
 #include <QPointF>
 #include <QString>
 #include <QVector>
@@ -97,6 +98,19 @@ struct HeadKey
     bool operator==(const HeadKey &) const = default;
 };
 
+// A key frame of control-point displacements (thesis 2.2.4: "the positions of the control points
+// are defined in corresponding key frames"; frames between are interpolated with ease()).
+// Offsets are keyed by point ID (face-model.md, e.g. "8.4") and expressed in ES0 units (the
+// eyeball distance of the face being animated), so one pose track animates any face
+// (retargeting). A point absent from a key has offset 0 there. Tracked video lands here.
+struct PoseKey
+{
+    double time = 0;
+    QMap<QString, QPointF> offsetsEs0;
+
+    bool operator==(const PoseKey &) const = default;
+};
+
 // The sound the animation plays: the file starts `offset` seconds into the animation and
 // lasts `duration` seconds.
 struct AudioClip
@@ -125,13 +139,13 @@ struct MouthSmoothing
 };
 
 // The tracks of a timeline, for selecting which ones a question is about.
-enum class Track { Mouth = 0x1, Emotion = 0x2, Blink = 0x4, Gaze = 0x8, Head = 0x10 };
+enum class Track { Mouth = 0x1, Emotion = 0x2, Blink = 0x4, Gaze = 0x8, Head = 0x10, Pose = 0x20 };
 Q_DECLARE_FLAGS(Tracks, Track)
 Q_DECLARE_OPERATORS_FOR_FLAGS(Tracks)
-inline constexpr Tracks kAllTracks = Tracks(0x1f);
+inline constexpr Tracks kAllTracks = Tracks(0x3f);
 
-// The key frames of one animation: mouth shapes, emotions, blinks, gaze, head motion and the
-// audio clip they play with. A plain value type holding no face: the same timeline animates
+// The key frames of one animation: mouth shapes, emotions, blinks, gaze, head motion, control-point
+// poses and the audio clip they play with. A plain value type holding no face: the same timeline animates
 // any FaceModel through TimelineEvaluator, which turns it into a Pose at time t.
 class Timeline
 {
@@ -199,6 +213,13 @@ public:
     void addShake(double start, double end, double amplitudeDeg = 8.0, double swingsPerSecond = 5.0);
     void addNod(double start, double end, double amplitudeEs0 = 0.06, double swingsPerSecond = 4.0);
 
+    // The pose track: control-point displacements per key frame, sorted by time.
+    const QVector<PoseKey> &poseKeys() const { return m_pose; }
+    void setPoseKeys(QVector<PoseKey> keys);
+    // Replaces a key at the same time (within kPoseTimeTolerance), else inserts in time order.
+    void addPoseKey(const PoseKey &key);
+    static constexpr double kPoseTimeTolerance = 1e-9;
+
     const std::optional<AudioClip> &audio() const { return m_audio; }
     void setAudio(std::optional<AudioClip> audio) { m_audio = std::move(audio); }
 
@@ -207,7 +228,8 @@ public:
     Pose evaluate(double t, const FaceModel &face, const MouthShapeSet &shapes) const;
 
     // The timeline as the project file's `timeline` object: {version, fps, smoothing, mouth,
-    // emotion, blink, gaze, head, audio}. Lossless: fromJson(toJson()) == *this.
+    // emotion, blink, gaze, head, pose, audio}; a pose key is {time, offsets: {ID: [dx, dy]}}. Lossless:
+    // fromJson(toJson()) == *this.
     QJsonObject toJson() const;
     // Validates every field; on failure returns nullopt with *error naming the field by its
     // path, e.g. "mouth[3].shape: unknown mouth shape 'x'". Unknown fields are ignored.
@@ -224,6 +246,7 @@ private:
     QVector<BlinkEvent> m_blinks;
     QVector<GazeKey> m_gaze;
     QVector<HeadKey> m_head;
+    QVector<PoseKey> m_pose;
     std::optional<AudioClip> m_audio;
 };
 

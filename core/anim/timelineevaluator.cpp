@@ -6,6 +6,7 @@
 #include "face/facemodel.h"
 #include "face/fapu.h"
 #include "face/mouthshape.h"
+#include "face/pointtable.h"
 
 #include <algorithm>
 #include <cmath>
@@ -133,6 +134,49 @@ TimelineEvaluator::TimelineEvaluator(const Timeline &timeline, const FaceModel &
         m_headTimes.append(h.time);
         m_headValues.append(HeadPose {h.rotationDeg, h.translationEs0 * fapu.es0, h.scale});
     }
+    buildPose(timeline, fapu.es0);
+}
+
+void TimelineEvaluator::buildPose(const Timeline &timeline, double es0)
+{
+    const QVector<PoseKey> &keys = timeline.poseKeys();
+    for (const PoseKey &k : keys) {
+        for (auto it = k.offsetsEs0.cbegin(); it != k.offsetsEs0.cend(); ++it) {
+            const int index = pointIndex(it.key());
+            if (index >= 0 && !m_posePoints.contains(index))
+                m_posePoints.append(index);
+        }
+    }
+    std::sort(m_posePoints.begin(), m_posePoints.end());
+    const qsizetype stride = m_posePoints.size();
+    for (const PoseKey &k : keys) {
+        if (m_poseTimes.isEmpty() || m_poseTimes.last() != k.time) {
+            m_poseTimes.append(k.time);
+            m_poseValues.resize(m_poseValues.size() + stride);
+        }
+        QPointF *values = m_poseValues.data() + (m_poseTimes.size() - 1) * stride;
+        for (qsizetype j = 0; j < stride; ++j)
+            values[j] = k.offsetsEs0.value(pointId(m_posePoints[j])) * es0;
+    }
+}
+
+QVector<QPointF> TimelineEvaluator::poseOffsetsAt(double t) const
+{
+    const qsizetype stride = m_posePoints.size();
+    QVector<QPointF> out(stride);
+    if (m_poseTimes.isEmpty())
+        return out;
+    qsizetype i = segmentAt(m_poseTimes, t);
+    double s = 0;
+    if (i < 0) {
+        i = 0;
+    } else if (i + 1 < m_poseTimes.size()) {
+        s = ease((t - m_poseTimes[i]) / (m_poseTimes[i + 1] - m_poseTimes[i]));
+    }
+    const QPointF *a = m_poseValues.constData() + i * stride;
+    for (qsizetype j = 0; j < stride; ++j)
+        out[j] = s == 0 ? a[j] : a[j] + (a[j + stride] - a[j]) * s;
+    return out;
 }
 
 void TimelineEvaluator::buildMouth(const Timeline &timeline, const FaceModel &face, const MouthShapeSet &shapes)
@@ -291,6 +335,12 @@ Pose TimelineEvaluator::evaluate(double t) const
 
     if (!m_headTimes.isEmpty())
         pose.head = easedAt(m_headTimes, m_headValues, t, lerpHead);
+
+    if (!m_poseTimes.isEmpty()) {
+        const QVector<QPointF> offsets = poseOffsetsAt(t);
+        for (qsizetype j = 0; j < offsets.size(); ++j)
+            pose.offset[m_posePoints[j]] += offsets[j];
+    }
     return pose;
 }
 
@@ -338,6 +388,13 @@ TimelineEvaluator::ExportKeys TimelineEvaluator::exportKeys(Tracks tracks) const
         addCurve(m_gazeTimes, [&](qsizetype i) { return m_gazeValues[i] != m_gazeValues[i + 1]; });
     if (tracks & Track::Head)
         addCurve(m_headTimes, [&](qsizetype i) { return !(m_headValues[i] == m_headValues[i + 1]); });
+    if (tracks & Track::Pose) {
+        const qsizetype stride = m_posePoints.size();
+        addCurve(m_poseTimes, [&](qsizetype i) {
+            const QPointF *a = m_poseValues.constData() + i * stride;
+            return !std::equal(a, a + stride, a + stride);
+        });
+    }
 
     // Times closer than a microsecond are one time (sums like start + fade may round apart).
     constexpr double eps = 1e-6;

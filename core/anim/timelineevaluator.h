@@ -38,8 +38,11 @@ class MouthShapeSet;
 // - blink: the lid opening eases 1 -> 0 over the blink's closing phase, stays 0, eases back to
 //   1 over the (longer) opening phase (kBlinkPhases); overlapping blinks take the smaller opening.
 // - head: eased between head keys (translation in pixels).
+// - pose: the pose track's control-point offsets (ES0 units times this face's ES0, pixels) eased
+//   between pose keys and added last, on top of speech, emotion and gaze (derived points follow
+//   by the control rules in posedPoints()); a point absent from a key is at 0 there.
 // Between two key values every quantity follows ease() (see easing.h); before the first key of
-// a gaze or head track its first value holds, after the last its last value.
+// a gaze, head or pose track its first value holds, after the last its last value.
 class TimelineEvaluator
 {
 public:
@@ -71,7 +74,8 @@ public:
     // A value jumps only at the edge of an emotion clip with no fade (fadeIn or fadeOut 0).
     // An exporter asks, per animated element, for the tracks that move it, so each element gets
     // only its own key times: the mouth and jaw Mouth | Emotion, the lids Blink | Emotion, the
-    // eyeballs Gaze, the brows Emotion, the head transform Head.
+    // eyeballs Gaze, the brows Emotion, the head transform Head; Pose moves whichever control points
+    // its keys name (poseTrackPoints()).
     enum class Segment { Hold, Ease, Mixed };
     struct ExportKeys
     {
@@ -80,6 +84,11 @@ public:
     };
     ExportKeys exportKeys(Tracks tracks = kAllTracks) const;
     QVector<double> keyTimes(Tracks tracks = kAllTracks) const { return exportKeys(tracks).times; }
+
+    // Indices (pointTable()) of the points the pose track moves, ascending.
+    const QVector<int> &poseTrackPoints() const { return m_posePoints; }
+    // The pose track's offsets at t, pixels, in poseTrackPoints() order.
+    QVector<QPointF> poseOffsetsAt(double t) const;
 
     // The resolved mouth track: the mouth displacements of kMouthControlIds at these times, eased
     // between neighbours (for inspection and tests; mouthAt() samples it).
@@ -106,6 +115,7 @@ private:
     };
 
     void buildMouth(const Timeline &timeline, const FaceModel &face, const MouthShapeSet &shapes);
+    void buildPose(const Timeline &timeline, double es0);
 
     double m_duration = 0;
     std::array<int, 4> m_mouthIndex {};
@@ -129,6 +139,10 @@ private:
 
     QVector<double> m_headTimes;
     QVector<HeadPose> m_headValues; // translation in pixels
+
+    QVector<int> m_posePoints;
+    QVector<double> m_poseTimes; // distinct, ascending (the later of equal-time keys wins)
+    QVector<QPointF> m_poseValues; // pixels, m_posePoints.size() per key, key after key
 };
 
 } // namespace toonface

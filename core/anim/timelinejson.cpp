@@ -1,5 +1,7 @@
 #include "anim/timeline.h"
 
+#include "face/pointtable.h"
+
 #include <QJsonArray>
 #include <QJsonValue>
 
@@ -190,6 +192,18 @@ QJsonObject Timeline::toJson() const
     }
     json.insert(QStringLiteral("head"), head);
 
+    QJsonArray pose;
+    for (const PoseKey &k : m_pose) {
+        QJsonObject offsets;
+        for (auto it = k.offsetsEs0.cbegin(); it != k.offsetsEs0.cend(); ++it)
+            offsets.insert(it.key(), QJsonArray {it.value().x(), it.value().y()});
+        QJsonObject o;
+        o.insert(QStringLiteral("time"), k.time);
+        o.insert(QStringLiteral("offsets"), offsets);
+        pose.append(o);
+    }
+    json.insert(QStringLiteral("pose"), pose);
+
     if (m_audio) {
         QJsonObject audio;
         audio.insert(QStringLiteral("path"), m_audio->path);
@@ -297,6 +311,36 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
         h.translationEs0 = {x, y};
         timeline.m_head.append(h);
         return true;
+    }) && readArray(json, "pose", error, [&](const QJsonObject &o, const QString &path) {
+        FieldReader r(o, path, error);
+        PoseKey k;
+        if (!r.number("time", &k.time, true))
+            return false;
+        const QJsonValue offsets = o.value(QStringLiteral("offsets"));
+        if (offsets.isUndefined()) {
+            timeline.m_pose.append(k);
+            return true;
+        }
+        if (!offsets.isObject())
+            return r.fail("offsets", QStringLiteral("expected an object"));
+        const QJsonObject map = offsets.toObject();
+        for (auto it = map.constBegin(); it != map.constEnd(); ++it) {
+            const QString where = r.pathOf("offsets") + u'.' + it.key() + QStringLiteral(": ");
+            auto failWith = [&](const QString &problem) {
+                if (error)
+                    *error = where + problem;
+                return false;
+            };
+            if (pointIndex(it.key()) < 0)
+                return failWith(QStringLiteral("unknown point ID"));
+            const QJsonArray xy = it.value().toArray();
+            if (!it.value().isArray() || xy.size() != 2 || !xy[0].isDouble() || !xy[1].isDouble()
+                || !std::isfinite(xy[0].toDouble()) || !std::isfinite(xy[1].toDouble()))
+                return failWith(QStringLiteral("expected [dx, dy], two numbers"));
+            k.offsetsEs0.insert(it.key(), QPointF(xy[0].toDouble(), xy[1].toDouble()));
+        }
+        timeline.m_pose.append(k);
+        return true;
     });
     if (!tracksOk)
         return std::nullopt;
@@ -322,6 +366,7 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
     timeline.setBlinks(timeline.m_blinks);
     timeline.setGazeKeys(timeline.m_gaze);
     timeline.setHeadKeys(timeline.m_head);
+    timeline.setPoseKeys(timeline.m_pose);
     return timeline;
 }
 

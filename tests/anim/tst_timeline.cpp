@@ -3,6 +3,7 @@
 #include "face/averageface.h"
 #include "face/mouthshape.h"
 
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QTest>
 
@@ -30,6 +31,8 @@ Timeline fullTimeline()
     t.addHeadKey({2.0, 3.5, {0.01, -0.02}, 1.05});
     t.addShake(3.0, 4.0);
     t.addNod(5.0, 6.0);
+    t.addPoseKey({0.04, {{QStringLiteral("8.2"), {0.0, 0.125}}, {QStringLiteral("8.4"), {-0.01 / 3.0, 0.0}}}});
+    t.addPoseKey({0.08, {{QStringLiteral("3.2"), {0.0, 0.05}}}});
     t.setAudio(AudioClip {QStringLiteral("/tmp/speech (1).wav"), 0.125, 11.9});
     return t;
 }
@@ -258,6 +261,64 @@ private Q_SLOTS:
         QCOMPARE(fromText->toJson(), json);
     }
 
+    void poseKeysStaySortedAndReplaceAtEqualTime()
+    {
+        Timeline t;
+        const PoseKey open {2.0, {{QStringLiteral("8.2"), {0.0, 0.3}}}};
+        const PoseKey wide {1.0, {{QStringLiteral("8.4"), {-0.1, 0.0}}, {QStringLiteral("8.3"), {0.1, 0.0}}}};
+        t.addPoseKey(open);
+        t.addPoseKey(wide);
+        QCOMPARE(t.poseKeys().size(), 2);
+        QCOMPARE(t.poseKeys()[0], wide);
+        QCOMPARE(t.poseKeys()[1], open);
+        QCOMPARE(t.duration(), 2.0);
+
+        // A key at the same time (within the tolerance) replaces the old one.
+        PoseKey shut = open;
+        shut.time = 2.0 + Timeline::kPoseTimeTolerance / 2;
+        shut.offsetsEs0[QStringLiteral("8.2")] = {0.0, 0.0};
+        t.addPoseKey(shut);
+        QCOMPARE(t.poseKeys().size(), 2);
+        QCOMPARE(t.poseKeys()[1], shut);
+        // Further apart it is a key of its own, in time order.
+        t.addPoseKey({1.5, {}});
+        QCOMPARE(t.poseKeys().size(), 3);
+        QCOMPARE(t.poseKeys()[1].time, 1.5);
+
+        t.setPoseKeys({open, wide});
+        QCOMPARE(t.poseKeys()[0], wide);
+    }
+
+    void oldFilesLoadWithAnEmptyPoseTrack()
+    {
+        QJsonObject json = fullTimeline().toJson();
+        QVERIFY(json.value(QStringLiteral("pose")).isArray());
+        QCOMPARE(json.value(QStringLiteral("pose")).toArray().size(), 2);
+        const QJsonArray offsets = json.value(QStringLiteral("pose"))
+                                       .toArray()[0]
+                                       .toObject()
+                                       .value(QStringLiteral("offsets"))
+                                       .toObject()
+                                       .value(QStringLiteral("8.2"))
+                                       .toArray();
+        QCOMPARE(offsets.size(), 2);
+        QCOMPARE(offsets[0].toDouble(), 0.0);
+        QCOMPARE(offsets[1].toDouble(), 0.125);
+        json.remove(QStringLiteral("pose"));
+        QString error;
+        const auto t = Timeline::fromJson(json, &error);
+        QVERIFY2(t, qPrintable(error));
+        QVERIFY(t->poseKeys().isEmpty());
+        QCOMPARE(t->mouthKeys(), fullTimeline().mouthKeys());
+
+        const QByteArray unsorted = R"({"pose": [{"time": 2, "offsets": {"8.9": [0, -0.1]}}, {"time": 1}]})";
+        const auto u = Timeline::fromJson(QJsonDocument::fromJson(unsorted).object(), &error);
+        QVERIFY2(u, qPrintable(error));
+        QCOMPARE(u->poseKeys().size(), 2);
+        QCOMPARE(u->poseKeys()[0], (PoseKey {1.0, {}}));
+        QCOMPARE(u->poseKeys()[1].offsetsEs0.value(QStringLiteral("8.9")), QPointF(0, -0.1));
+    }
+
     void jsonDefaultsAndOrder()
     {
         QString error;
@@ -306,6 +367,17 @@ private Q_SLOTS:
                                 << QStringLiteral("gaze[0].x: expected a number");
         QTest::newRow("head scale") << QByteArray(R"({"head": [{"time": 0}, {"time": 1, "scale": -1}]})")
                                     << QStringLiteral("head[1].scale: must be positive");
+        QTest::newRow("pose time") << QByteArray(R"({"pose": [{"offsets": {}}]})")
+                                   << QStringLiteral("pose[0].time: missing");
+        QTest::newRow("pose offsets type") << QByteArray(R"({"pose": [{"time": 0, "offsets": [1, 2]}]})")
+                                           << QStringLiteral("pose[0].offsets: expected an object");
+        QTest::newRow("pose unknown point")
+            << QByteArray(R"({"pose": [{"time": 0}, {"time": 1, "offsets": {"99.1": [0, 1]}}]})")
+            << QStringLiteral("pose[1].offsets.99.1: unknown point ID");
+        QTest::newRow("pose offset shape") << QByteArray(R"({"pose": [{"time": 0, "offsets": {"8.2": [1]}}]})")
+                                           << QStringLiteral("pose[0].offsets.8.2: expected [dx, dy], two numbers");
+        QTest::newRow("pose offset number") << QByteArray(R"({"pose": [{"time": 0, "offsets": {"8.2": [1, "a"]}}]})")
+                                            << QStringLiteral("pose[0].offsets.8.2: expected [dx, dy], two numbers");
         QTest::newRow("fps") << QByteArray(R"({"fps": 0})") << QStringLiteral("fps: must be positive");
         QTest::newRow("newer version") << QByteArray(R"({"version": 2})")
                                        << QStringLiteral("version: 2 is newer than this Toonface reads (1)");

@@ -444,6 +444,88 @@ private Q_SLOTS:
         QVERIFY(std::abs(e.evaluate(0.5).head.rotationDeg - 10.0 * ease(0.25)) < 1e-12);
     }
 
+    void poseTrackEasesControlPointsInEs0Units()
+    {
+        const FaceModel face = testFace();
+        const double es0 = face.fapu().es0;
+        QVERIFY(es0 > 0);
+        Timeline t;
+        t.addPoseKey({1.0, {{QStringLiteral("8.2"), {0.0, 0.2}}, {QStringLiteral("4.4"), {0.0, -0.05}}}});
+        t.addPoseKey({2.0, {{QStringLiteral("8.2"), {0.1, 0.4}}}}); // 4.4 absent: back to 0
+        const MouthShapeSet shapes;
+        const TimelineEvaluator e(t, face, shapes);
+        const Pose rest = TimelineEvaluator(Timeline(), face, shapes).evaluate(0.0);
+        const int chin = pt::idx("8.2");
+        const int brow = pt::idx("4.4");
+        QCOMPARE(e.poseTrackPoints(), (QVector<int> {std::min(chin, brow), std::max(chin, brow)}));
+
+        auto added = [&](double time, int index) { return e.evaluate(time).offset[index] - rest.offset[index]; };
+        // Before the first key its value holds, after the last the last one.
+        QVERIFY(QLineF(added(0.0, chin), QPointF(0, 0.2 * es0)).length() < kTol);
+        QVERIFY(QLineF(added(1.0, brow), QPointF(0, -0.05 * es0)).length() < kTol);
+        QVERIFY(QLineF(added(3.0, chin), QPointF(0.1 * es0, 0.4 * es0)).length() < kTol);
+        QVERIFY(QLineF(added(3.0, brow), QPointF()).length() < kTol);
+        // Between keys: ease().
+        for (double u : {0.25, 0.5, 0.8}) {
+            const QPointF expected = QPointF(0, 0.2 * es0) + QPointF(0.1 * es0, 0.2 * es0) * ease(u);
+            QVERIFY(QLineF(added(1.0 + u, chin), expected).length() < kTol);
+            QVERIFY(QLineF(added(1.0 + u, brow), QPointF(0, -0.05 * es0) * (1 - ease(u))).length() < kTol);
+        }
+        // Only the named points move; the pose adds to speech.
+        const Pose p = e.evaluate(1.5);
+        for (int i = 0; i < kPointCount; ++i) {
+            if (i != chin && i != brow)
+                QCOMPARE(p.offset[i], rest.offset[i]);
+        }
+        Timeline speech;
+        speech.addMouthKey({1.5, MouthShape::A, 1.0, 0.5});
+        Timeline speaking = t;
+        speaking.setMouthKeys(speech.mouthKeys());
+        const TimelineEvaluator both(speaking, face, shapes);
+        const QPointF spoken = TimelineEvaluator(speech, face, shapes).evaluate(1.5).offset[chin];
+        QVERIFY(QLineF(both.evaluate(1.5).offset[chin], spoken + added(1.5, chin)).length() < kTol);
+
+        // The same track on a face twice the size moves twice as far (retargeting by ES0).
+        const FaceModel big = averageFace(QRectF(200, 300, 400, 480), QSize(800, 1000));
+        const TimelineEvaluator onBig(t, big, shapes);
+        const Pose bigRest = TimelineEvaluator(Timeline(), big, shapes).evaluate(0.0);
+        const QPointF bigAdded = onBig.evaluate(1.5).offset[chin] - bigRest.offset[chin];
+        QVERIFY(QLineF(bigAdded, added(1.5, chin) * (big.fapu().es0 / es0)).length() < 1e-6);
+
+        // The derived points follow: the inner lower lip and the chin move with 8.2.
+        const auto posed = posedPoints(face, e.evaluate(3.0));
+        const auto neutral = posedPoints(face, rest);
+        QVERIFY(posed[pt::idx("2.1")].y() - neutral[pt::idx("2.1")].y() > 0.39 * es0);
+    }
+
+    void poseTrackExportKeys()
+    {
+        const FaceModel face = testFace();
+        Timeline t;
+        t.addPoseKey({0.5, {{QStringLiteral("8.2"), {0.0, 0.2}}}});
+        t.addPoseKey({1.0, {{QStringLiteral("8.2"), {0.0, 0.2}}}}); // holds
+        t.addPoseKey({1.5, {{QStringLiteral("8.2"), {0.0, 0.0}}}});
+        t.addGazeKey({3.0, {0.1, 0.0}});
+        const TimelineEvaluator e(t, face, MouthShapeSet());
+        const auto keys = e.exportKeys(Track::Pose);
+        QCOMPARE(keys.times, (QVector<double> {0.0, 0.5, 1.0, 1.5, 3.0}));
+        using S = TimelineEvaluator::Segment;
+        QCOMPARE(keys.segments, (QVector<S> {S::Hold, S::Hold, S::Ease, S::Hold}));
+        for (qsizetype i = 0; i < keys.segments.size(); ++i) {
+            const double t0 = keys.times[i], t1 = keys.times[i + 1];
+            const Pose p0 = e.evaluate(t0), p1 = e.evaluate(t1);
+            for (double u : {0.2, 0.5, 0.9}) {
+                const Pose inside = e.evaluate(t0 + (t1 - t0) * u);
+                const double s = keys.segments[i] == S::Ease ? ease(u) : 0.0;
+                QVERIFY(std::abs(inside.offset[pt::idx("8.2")].y()
+                            - (p0.offset[pt::idx("8.2")].y() * (1 - s) + p1.offset[pt::idx("8.2")].y() * s))
+                    < kTol);
+            }
+        }
+        QVERIFY(e.keyTimes(kAllTracks).contains(1.5));
+        QVERIFY(!e.keyTimes(Track::Mouth).contains(1.5));
+    }
+
     void shakeAndNodMoveTheHead()
     {
         Timeline t;

@@ -5,8 +5,8 @@
 
 namespace toonface {
 
-ChangeMouthShapesCommand::ChangeMouthShapesCommand(Document *document, const MouthShapeSet &shapes,
-    const QString &text, int mergeId, bool commit, QUndoCommand *parent)
+ChangeMouthShapesCommand::ChangeMouthShapesCommand(Document *document, const MouthShapeSet &shapes, const QString &text,
+    int mergeId, bool commit, QUndoCommand *parent)
     : QUndoCommand(text, parent)
     , m_document(document)
     , m_before(document->mouthShapes())
