@@ -88,7 +88,6 @@ TOONFACE_BENCHMARK("io.project10min", [] {
         QFile f(plain);
         ok = f.open(QIODevice::WriteOnly) && f.write(text) == text.size() && ok;
     });
-    const auto tracks = project.timeline.value(QStringLiteral("tracks")).toObject();
     QJsonObject r;
     r.insert(QStringLiteral("saveMs"), saveMs);
     r.insert(QStringLiteral("loadMs"), loadMs);
@@ -97,9 +96,9 @@ TOONFACE_BENCHMARK("io.project10min", [] {
     r.insert(QStringLiteral("jsonToTextMs"), textMs);
     r.insert(QStringLiteral("plainWriteMs"), plainWriteMs);
     r.insert(QStringLiteral("fileKB"), double(QFileInfo(file).size()) / 1024.0);
-    r.insert(QStringLiteral("mouthKeys"), tracks.value(QStringLiteral("mouth")).toArray().size());
-    r.insert(QStringLiteral("blinks"), tracks.value(QStringLiteral("blink")).toArray().size());
-    r.insert(QStringLiteral("headKeys"), tracks.value(QStringLiteral("head")).toArray().size());
+    r.insert(QStringLiteral("mouthKeys"), int(project.timeline.mouthKeys().size()));
+    r.insert(QStringLiteral("blinks"), int(project.timeline.blinks().size()));
+    r.insert(QStringLiteral("headKeys"), int(project.timeline.headKeys().size()));
     r.insert(QStringLiteral("ok"), ok);
     if (!ok)
         r.insert(QStringLiteral("error"), error);

@@ -2,7 +2,7 @@
 
 #include <QDir>
 #include <QFileInfo>
-#include <QGuiApplication>
+#include <QApplication>
 #include <QJsonDocument>
 #include <QTextStream>
 #include <QThread>
@@ -48,7 +48,7 @@ QString sharedDataDir()
 // figures and the machine it ran on.
 int main(int argc, char *argv[])
 {
-    QGuiApplication app(argc, argv);
+    QApplication app(argc, argv); // the timeline benchmarks paint widgets
     const QStringList filters = app.arguments().mid(1);
     QJsonObject results;
     for (const auto &b : toonface::bench::registry()) {

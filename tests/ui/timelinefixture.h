@@ -36,6 +36,8 @@ inline Animation talkingAnimation()
     a.timeline.addHeadKey({1.0, 4, {}, 1});
     a.timeline.addHeadKey({2.0, -3, {}, 1});
     a.timeline.addGazeKey({1.2, QPointF(0.1, 0)});
+    a.timeline.addPoseKey({0.6, {{QStringLiteral("8.4"), QPointF(0.02, -0.03)}}});
+    a.timeline.addPoseKey({1.4, {{QStringLiteral("8.4"), QPointF(0, 0)}}});
     return a;
 }
 

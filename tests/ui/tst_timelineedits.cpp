@@ -264,6 +264,28 @@ private Q_SLOTS:
         QVERIFY(near(after.timeline.blinks()[0].time, 0.9 + applied)); // moved with it
     }
 
+    void poseKeysMoveDeleteAndPaste()
+    {
+        const Animation before = fixture::talkingAnimation(); // pose keys at 0.6 and 1.4
+        Animation after = moveItems(before, {{ItemKind::Pose, 0}}, 0.3, kFrame);
+        QVERIFY(near(after.timeline.poseKeys()[0].time, 0.9));
+        QCOMPARE(after.timeline.poseKeys()[0].offsetsEs0, before.timeline.poseKeys()[0].offsetsEs0);
+        double applied = 0;
+        moveItems(before, {{ItemKind::Pose, 0}}, 5, kFrame, &applied);
+        QVERIFY(applied < 0.8); // stays before the key at 1.4
+        after = deleteItems(before, {{ItemKind::Pose, 1}});
+        QCOMPARE(after.timeline.poseKeys().size(), 1);
+        QString error;
+        Selection pasted;
+        const std::optional<Animation> copied
+            = pasteItems(before, copyItems(before, {{ItemKind::Pose, 0}}), 2.0, &error, &pasted);
+        QVERIFY2(copied, qPrintable(error));
+        QCOMPARE(copied->timeline.poseKeys().size(), 3);
+        QVERIFY(near(copied->timeline.poseKeys()[2].time, 2.0));
+        QCOMPARE(copied->timeline.poseKeys()[2].offsetsEs0, before.timeline.poseKeys()[0].offsetsEs0);
+        QCOMPARE(pasted, Selection({{ItemKind::Pose, 2}}));
+    }
+
     void copyPasteRoundTrip()
     {
         const Animation before = fixture::talkingAnimation();

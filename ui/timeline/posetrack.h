@@ -6,49 +6,35 @@
 
 namespace toonface {
 
-// POSE TRACK HOOK. The pose key-frame track (Timeline::poseKeys, the "track" branch) may not
-// be on this branch yet; the timeline reaches it only through these three functions, which
-// see an empty track until Timeline has poseKeys() and then use it with no other change.
+// The pose key-frame track as the timeline's edits see it: key times only (the offsets are set
+// on the preview, not here).
 
-template<class T = Timeline>
-QVector<double> poseKeyTimes(const T &timeline)
+inline QVector<double> poseKeyTimes(const Timeline &timeline)
 {
     QVector<double> times;
-    if constexpr (requires { timeline.poseKeys(); })
-        for (const auto &key : timeline.poseKeys())
-            times.append(key.time);
+    times.reserve(timeline.poseKeys().size());
+    for (const PoseKey &key : timeline.poseKeys())
+        times.append(key.time);
     return times;
 }
 
 // Gives the pose keys new times (one per key, in key order); the track is re-sorted.
-template<class T = Timeline>
-void setPoseKeyTimes(T &timeline, const QVector<double> &times)
+inline void setPoseKeyTimes(Timeline &timeline, const QVector<double> &times)
 {
-    if constexpr (requires { timeline.poseKeys(); }) {
-        auto keys = timeline.poseKeys();
-        for (qsizetype i = 0; i < keys.size() && i < times.size(); ++i)
-            keys[i].time = times[i];
-        timeline.setPoseKeys(keys);
-    } else {
-        Q_UNUSED(timeline);
-        Q_UNUSED(times);
-    }
+    QVector<PoseKey> keys = timeline.poseKeys();
+    for (qsizetype i = 0; i < keys.size() && i < times.size(); ++i)
+        keys[i].time = times[i];
+    timeline.setPoseKeys(keys);
 }
 
 // Removes the pose keys at `indices` (ascending).
-template<class T = Timeline>
-void removePoseKeys(T &timeline, const QVector<int> &indices)
+inline void removePoseKeys(Timeline &timeline, const QVector<int> &indices)
 {
-    if constexpr (requires { timeline.poseKeys(); }) {
-        auto keys = timeline.poseKeys();
-        for (qsizetype i = indices.size() - 1; i >= 0; --i)
-            if (indices[i] >= 0 && indices[i] < keys.size())
-                keys.removeAt(indices[i]);
-        timeline.setPoseKeys(keys);
-    } else {
-        Q_UNUSED(timeline);
-        Q_UNUSED(indices);
-    }
+    QVector<PoseKey> keys = timeline.poseKeys();
+    for (qsizetype i = indices.size() - 1; i >= 0; --i)
+        if (indices[i] >= 0 && indices[i] < keys.size())
+            keys.removeAt(indices[i]);
+    timeline.setPoseKeys(keys);
 }
 
 } // namespace toonface

@@ -75,9 +75,13 @@ QJsonObject copyItems(const Animation &animation, const Selection &selection)
         k.time -= origin;
         copy.addGazeKey(k);
     }
-    if (copy == Timeline()
-        || (copy.mouthKeys().isEmpty() && copy.emotionClips().isEmpty() && copy.blinks().isEmpty()
-            && copy.headKeys().isEmpty() && copy.gazeKeys().isEmpty()))
+    for (int i : selection.indices(ItemKind::Pose)) {
+        PoseKey k = tl.poseKeys()[i];
+        k.time -= origin;
+        copy.addPoseKey(k);
+    }
+    if (copy.mouthKeys().isEmpty() && copy.emotionClips().isEmpty() && copy.blinks().isEmpty()
+        && copy.headKeys().isEmpty() && copy.gazeKeys().isEmpty() && copy.poseKeys().isEmpty())
         return {};
     return QJsonObject {{QStringLiteral("format"), kFormat}, {QStringLiteral("timeline"), copy.toJson()}};
 }
@@ -138,6 +142,9 @@ std::optional<Animation> pasteItems(
     const QVector<GazeKey> gaze = shifted(copy->gazeKeys(), time, [](GazeKey &k) -> double & { return k.time; });
     for (const GazeKey &k : gaze)
         tl.addGazeKey(k);
+    const QVector<PoseKey> pose = shifted(copy->poseKeys(), time, [](PoseKey &k) -> double & { return k.time; });
+    for (const PoseKey &k : pose)
+        tl.addPoseKey(k);
 
     if (pasted) {
         pasted->clear();
@@ -151,6 +158,8 @@ std::optional<Animation> pasteItems(
             pasted->insert({ItemKind::Head, i});
         for (int i : indicesOf(tl.gazeKeys(), gaze))
             pasted->insert({ItemKind::Gaze, i});
+        for (int i : indicesOf(tl.poseKeys(), pose))
+            pasted->insert({ItemKind::Pose, i});
     }
     return out;
 }

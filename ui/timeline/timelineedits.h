@@ -97,13 +97,13 @@ Animation addNod(const Animation &animation, double start, double end);
 // The time span the selection covers (from its first start to its last end).
 std::optional<Span> selectionRange(const Animation &animation, const Selection &selection);
 
-// Copy and paste: the selected mouth keys, emotion clips, blinks, head and gaze keys with
+// Copy and paste: the selected mouth keys, emotion clips, blinks, head, gaze and pose keys with
 // times relative to the earliest of them, as JSON (mime type kTimelineItemsMime).
 inline constexpr char kTimelineItemsMime[] = "application/x-toonface-timeline-items";
 QJsonObject copyItems(const Animation &animation, const Selection &selection);
 // Pastes at `time`: mouth keys replace the keys in the range they cover; clips, blinks and keys
-// are added. nullopt with *error when `items` is not what copyItems writes. *pasted receives the
-// pasted items.
+// are added (a pose key replaces one at the same time). nullopt with *error when `items` is not what copyItems writes.
+// *pasted receives the pasted items.
 std::optional<Animation> pasteItems(
     const Animation &animation, const QJsonObject &items, double time, QString *error, Selection *pasted = nullptr);
 

@@ -15,6 +15,7 @@ inline constexpr double kRowInset = 3; // items keep this far from their row's t
 inline constexpr double kEdgeGrip = 5; // pixels either side of an edge that take hold of it
 inline constexpr double kKeySize = 11; // a key's diamond
 inline constexpr double kHandleRadius = 4.5;
+inline constexpr double kClipHandlesMinWidth = 30; // narrower clips show no handles (nor name)
 
 inline QRectF rowBand(const TimelineScene &s, RowKind row)
 {

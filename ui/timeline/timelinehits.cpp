@@ -69,7 +69,8 @@ bool hitEmotionHandles(const TimelineScene &s, QPointF pos, TimelineHit *hit)
     const QVector<EmotionClip> &clips = s.animation.timeline.emotionClips();
     for (qsizetype i = clips.size() - 1; i >= 0; --i) {
         const QRectF r = spanRect(s, RowKind::Emotion, {clips[i].start, clips[i].end});
-        if (r.width() <= 3 * kHandleRadius || pos.x() < r.left() - kHandleRadius || pos.x() > r.right() + kHandleRadius)
+        if (r.width() <= kClipHandlesMinWidth || pos.x() < r.left() - kHandleRadius
+            || pos.x() > r.right() + kHandleRadius)
             continue;
         const ClipHandles h = clipHandles(s, clips[i]);
         const double reach = kHandleRadius + 2;

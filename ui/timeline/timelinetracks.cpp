@@ -1,5 +1,6 @@
 #include "timeline/timelinetracks.h"
 
+#include "anim/keycurve.h"
 #include "speech/pinyin.h"
 #include "timeline/mouthicons.h"
 #include "timeline/posetrack.h"
@@ -17,20 +18,42 @@ using namespace geometry;
 
 namespace {
 
-// Skips items that would land on a pixel column already drawn (zoomed far out).
-class ColumnFilter
+// Items narrower than kDenseWidth pixels (zoomed far out) are not drawn one by one: each
+// pixel column takes the colour of the first such item in it, and the columns are drawn as one
+// image stretched over the row. A 10-minute track then costs one blit, not thousands of shapes.
+constexpr double kDenseWidth = 3.0;
+
+class DenseStrip
 {
 public:
-    bool skip(double x0, double x1)
+    explicit DenseStrip(const TimelineScene &s)
+        : m_line(std::max(1, s.width), 1, QImage::Format_ARGB32_Premultiplied)
     {
-        if (x1 - x0 < 1.5 && std::floor(x0) <= m_last)
-            return true;
-        m_last = std::floor(x1);
-        return false;
+        m_line.fill(Qt::transparent);
+    }
+    // Whether [x0, x1] is narrow enough for the strip; if so it is taken.
+    bool take(double x0, double x1, const QColor &color)
+    {
+        if (x1 - x0 >= kDenseWidth)
+            return false;
+        const int from = std::max(0, int(std::floor(x0))), to = std::min(m_line.width() - 1, int(std::ceil(x1)) - 1);
+        auto *pixels = reinterpret_cast<QRgb *>(m_line.scanLine(0));
+        for (int x = from; x <= std::max(from, to) && x < m_line.width(); ++x)
+            if (pixels[x] == 0) {
+                pixels[x] = color.rgba();
+                m_used = true;
+            }
+        return true;
+    }
+    void draw(QPainter &p, const QRectF &band)
+    {
+        if (m_used)
+            p.drawImage(QRectF(0, band.top(), m_line.width(), band.height()), m_line);
     }
 
 private:
-    double m_last = -1e9;
+    QImage m_line;
+    bool m_used = false;
 };
 
 void outlineSelected(QPainter &p, const QRectF &r, double radius)
@@ -62,18 +85,29 @@ QVector<Span> pointSpans(const QVector<double> &times)
     return spans;
 }
 
+QVector<double> headTimes(const QVector<HeadKey> &keys)
+{
+    QVector<double> times;
+    times.reserve(keys.size());
+    for (const HeadKey &k : keys)
+        times.append(k.time);
+    return times;
+}
+
 // Diamonds at `times` on `row`, one per pixel column at most.
 void paintKeys(QPainter &p, const TimelineScene &s, RowKind row, ItemKind kind, const QVector<double> &times,
     const QColor &color, double t0, double t1)
 {
     const double pad = kKeySize / s.layout->pixelsPerSecond();
     const auto [first, last] = visibleRange(pointSpans(times), t0 - pad, t1 + pad);
-    ColumnFilter columns;
+    double lastColumn = -1e9;
     for (qsizetype i = first; i < last; ++i) {
         const QRectF r = keyRect(s, row, times[i]);
         const bool selected = s.selection->contains({kind, int(i)});
-        if (!selected && columns.skip(r.center().x(), r.center().x()))
+        // Keys closer than a few pixels overlap: the first of each such cluster stands for them.
+        if (!selected && r.center().x() - lastColumn < 3)
             continue;
+        lastColumn = r.center().x();
         drawDiamond(p, r, color, selected);
     }
 }
@@ -102,14 +136,14 @@ void paintScriptRow(QPainter &p, const TimelineScene &s, double t0, double t1)
     big.setPointSizeF(base.pointSizeF() * 1.15);
     QFont small = base;
     small.setPointSizeF(base.pointSizeF() * 0.8);
-    ColumnFilter columns;
+    DenseStrip strip(s);
     for (qsizetype i = first; i < last; ++i) {
         const LipsyncSyllable &syl = syllables[i];
         const QRectF r = spanRect(s, RowKind::Script, spans[i]);
         const bool selected = s.selection->contains({ItemKind::Syllable, int(i)});
-        if (!selected && columns.skip(r.left(), r.right()))
-            continue;
         const QColor fill = syl.confidence < 0.5 ? QColor(0x5a, 0x47, 0x3a) : QColor(0x3b, 0x41, 0x4d);
+        if (strip.take(r.left(), r.right(), selected ? kSelection : fill.lighter(130)))
+            continue;
         p.setPen(QPen(fill.lighter(150), 1));
         p.setBrush(selected ? fill.lighter(140) : fill);
         p.drawRoundedRect(r.adjusted(0.5, 0.5, -0.5, -0.5), 3, 3);
@@ -134,6 +168,7 @@ void paintScriptRow(QPainter &p, const TimelineScene &s, double t0, double t1)
                 Qt::AlignHCenter | Qt::AlignTop, toneMarkSpelling({syl.pinyin, syl.tone}));
         }
     }
+    strip.draw(p, rowBand(s, RowKind::Script));
     p.setFont(base);
 }
 
@@ -147,14 +182,14 @@ void paintMouthRow(QPainter &p, const TimelineScene &s, double t0, double t1)
     letter.setBold(true);
     p.setFont(letter);
     const QFontMetricsF metrics(letter);
-    ColumnFilter columns;
+    DenseStrip strip(s);
     for (qsizetype i = first; i < last && i < keys.size(); ++i) {
         const MouthKey &k = keys[i];
         const QRectF r = spanRect(s, RowKind::Mouth, spans[i]);
         const bool selected = s.selection->contains({ItemKind::Mouth, int(i)});
-        if (!selected && columns.skip(r.left(), r.right()))
-            continue;
         const QColor color = mouthShapeColor(k.shape);
+        if (strip.take(r.left(), r.right(), selected ? kSelection : color.darker(125)))
+            continue;
         const bool wide = r.width() >= 6;
         p.setPen(wide ? QPen(color.darker(190), 1) : Qt::NoPen);
         p.setBrush(selected ? color.lighter(125) : color.darker(125));
@@ -185,6 +220,7 @@ void paintMouthRow(QPainter &p, const TimelineScene &s, double t0, double t1)
             p.drawText(r, Qt::AlignCenter, name);
         }
     }
+    strip.draw(p, rowBand(s, RowKind::Mouth));
     p.setFont(base);
 }
 
@@ -202,19 +238,19 @@ void paintEmotionRow(QPainter &p, const TimelineScene &s, double t0, double t1)
         const QRectF r = spanRect(s, RowKind::Emotion, {c.start, c.end});
         const bool selected = s.selection->contains({ItemKind::Emotion, int(i)});
         const QColor color = emotionColor(c.emotion);
-        p.setPen(QPen(color.darker(160), 1));
-        p.setBrush(QColor(color.red(), color.green(), color.blue(), 45));
-        p.drawRoundedRect(r.adjusted(0.5, 0.5, -0.5, -0.5), 3, 3);
+        const bool wide = r.width() > kClipHandlesMinWidth;
+        if (wide) {
+            p.setPen(QPen(color.darker(160), 1));
+            p.setBrush(QColor(color.red(), color.green(), color.blue(), 45));
+            p.drawRoundedRect(r.adjusted(0.5, 0.5, -0.5, -0.5), 3, 3);
+        } else {
+            p.fillRect(r, QColor(color.red(), color.green(), color.blue(), 45));
+        }
         const ClipHandles h = clipHandles(s, c);
-        QPainterPath envelope;
-        envelope.moveTo(r.left(), r.bottom());
-        envelope.lineTo(h.fadeIn);
-        envelope.lineTo(h.fadeOut);
-        envelope.lineTo(r.right(), r.bottom());
-        envelope.closeSubpath();
-        p.setPen(QPen(color.lighter(120), 1.5));
+        const QPointF envelope[] = {r.bottomLeft(), h.fadeIn, h.fadeOut, r.bottomRight()};
+        p.setPen(wide ? QPen(color.lighter(120), 1.5) : Qt::NoPen);
         p.setBrush(QColor(color.red(), color.green(), color.blue(), selected ? 170 : 130));
-        p.drawPath(envelope);
+        p.drawPolygon(envelope, 4);
         if (selected)
             outlineSelected(p, r, 3);
         if (r.width() > 40) {
@@ -222,7 +258,7 @@ void paintEmotionRow(QPainter &p, const TimelineScene &s, double t0, double t1)
             p.drawText(r.adjusted(5, 0, -4, 0), Qt::AlignTop | Qt::AlignLeft,
                 QStringLiteral("%1  %2%").arg(emotionName(c.emotion)).arg(qRound(c.intensity * 100)));
         }
-        if (r.width() > 3 * kHandleRadius) {
+        if (wide) {
             p.setPen(QPen(color.darker(200), 1));
             p.setBrush(selected ? kSelection : kText);
             p.drawEllipse(h.fadeIn, kHandleRadius, kHandleRadius);
@@ -241,11 +277,11 @@ void paintBlinkRow(QPainter &p, const TimelineScene &s, double t0, double t1)
         spans.append({b.time, b.time + b.duration});
     const auto [first, last] = visibleRange(spans, t0, t1);
     const QColor color(0x7c, 0xb7, 0xe6);
-    ColumnFilter columns;
+    DenseStrip strip(s);
     for (qsizetype i = first; i < last; ++i) {
         const QRectF r = spanRect(s, RowKind::Blink, spans[i]);
         const bool selected = s.selection->contains({ItemKind::Blink, int(i)});
-        if (!selected && columns.skip(r.left(), r.right()))
+        if (strip.take(r.left() - 1, r.right() + 1, selected ? kSelection : color))
             continue;
         p.setPen(QPen(selected ? kSelection : color.darker(150), selected ? 2 : 1));
         p.setBrush(selected ? color.lighter(120) : color.darker(115));
@@ -262,12 +298,12 @@ void paintBlinkRow(QPainter &p, const TimelineScene &s, double t0, double t1)
             p.drawPath(lid);
         }
     }
+    strip.draw(p, rowBand(s, RowKind::Blink).adjusted(0, 3, 0, -3));
 }
 
 void paintHeadRow(QPainter &p, const TimelineScene &s, double t0, double t1)
 {
-    const Timeline &tl = s.animation.timeline;
-    const QVector<HeadKey> &keys = tl.headKeys();
+    const QVector<HeadKey> &keys = s.animation.timeline.headKeys();
     if (keys.isEmpty())
         return;
     const QRectF band = rowBand(s, RowKind::Head);
@@ -277,21 +313,31 @@ void paintHeadRow(QPainter &p, const TimelineScene &s, double t0, double t1)
     const int x1 = std::min(s.width, int(s.layout->xOf(std::min(t1, keys.last().time))) + 1);
     if (x1 > x0) {
         QPolygonF rotation, nod;
-        for (int x = x0; x <= x1; x += 2) {
-            const HeadKey h = tl.headAt(s.layout->timeAt(x));
+        auto add = [&](double x, const HeadKey &h) {
             rotation.append(QPointF(x, mid - std::clamp(h.rotationDeg / 12.0, -1.0, 1.0) * half));
             nod.append(QPointF(x, mid + std::clamp(h.translationEs0.y() / 0.08, -1.0, 1.0) * half));
+        };
+        const QVector<double> times = headTimes(keys);
+        const auto [first, last] = visibleRange(pointSpans(times), t0, t1);
+        if ((last - first) * 2 > x1 - x0) {
+            // Keys denser than every other pixel: the line through them is the curve.
+            for (qsizetype i = std::max<qsizetype>(0, first - 1); i < std::min(keys.size(), last + 1); ++i)
+                add(s.layout->xOf(keys[i].time), keys[i]);
+        } else {
+            // The head's curve as the evaluator eases it (Timeline::headAt), times gathered once.
+            const auto lerp = [](const HeadKey &a, const HeadKey &b, double u) {
+                return HeadKey {0, a.rotationDeg + (b.rotationDeg - a.rotationDeg) * u,
+                    a.translationEs0 + (b.translationEs0 - a.translationEs0) * u, 1.0};
+            };
+            for (int x = x0; x <= x1; x += 2)
+                add(x, easedAt(times, keys, s.layout->timeAt(x), lerp));
         }
         p.setPen(QPen(QColor(0xf0, 0x9a, 0x5a), 1.3));
         p.drawPolyline(rotation);
         p.setPen(QPen(QColor(0x8f, 0xd0, 0x6a), 1.3));
         p.drawPolyline(nod);
     }
-    QVector<double> times;
-    times.reserve(keys.size());
-    for (const HeadKey &k : keys)
-        times.append(k.time);
-    paintKeys(p, s, RowKind::Head, ItemKind::Head, times, QColor(0xd8, 0xc4, 0x8a), t0, t1);
+    paintKeys(p, s, RowKind::Head, ItemKind::Head, headTimes(keys), QColor(0xd8, 0xc4, 0x8a), t0, t1);
 }
 
 void paintGazeRow(QPainter &p, const TimelineScene &s, double t0, double t1)
