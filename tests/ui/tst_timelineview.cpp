@@ -118,6 +118,15 @@ private Q_SLOTS:
         undoAllAndCompare();
     }
 
+    // A drag that ends where it began (or is clamped at once) changes nothing and leaves no step.
+    void dragThatChangesNothing()
+    {
+        const QPoint body = centre({ItemKind::Blink, 0});
+        drag(viewport(), body, body + QPoint(0, 6)); // vertical: no time moved
+        QCOMPARE(m_doc->undoStack()->count(), 0);
+        QCOMPARE(m_doc->animation(), m_before);
+    }
+
     void dragSyllableEdge()
     {
         const QRectF hao = m_view->itemRect({ItemKind::Syllable, 1});

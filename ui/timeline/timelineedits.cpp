@@ -417,6 +417,10 @@ Animation moveItems(const Animation &animation, const Selection &selection, doub
             dt = clampKeyMove(keyTimes(animation, kind), indices, dt);
         }
     }
+    if (applied)
+        *applied = dt;
+    if (dt == 0)
+        return animation; // exactly: spans written back would differ in their last bits
     Animation out = animation;
     for (int k = 0; k < kItemKindCount; ++k) {
         const auto kind = ItemKind(k);
@@ -435,8 +439,6 @@ Animation moveItems(const Animation &animation, const Selection &selection, doub
             setKeyTimes(out, kind, times);
         }
     }
-    if (applied)
-        *applied = dt;
     return out;
 }
 

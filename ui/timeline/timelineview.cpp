@@ -459,11 +459,16 @@ void TimelineView::dragTo(QPoint pos, bool commit)
     }
     case DragMode::Move: {
         const double from = itemTime(m_drag.start, m_drag.item);
-        const double to = snapped(pointer + m_drag.grabOffset, &toBoundary);
+        // Not moved sideways: not moved (snapping alone would shift an item that is off the frames).
+        const double to = pos.x() == m_drag.pressPos.x() ? from : snapped(pointer + m_drag.grabOffset, &toBoundary);
         after = moveItems(m_drag.start, m_selection, to - from, minSpan());
         break;
     }
     case DragMode::Edge: {
+        if (pos.x() == m_drag.pressPos.x()) {
+            after = m_drag.start;
+            break;
+        }
         const double to = snapped(pointer + m_drag.grabOffset, &toBoundary);
         after = dragItemEdge(m_drag.start, m_drag.item, m_drag.edge, to, minSpan());
         if (toBoundary)
@@ -495,8 +500,12 @@ void TimelineView::dragTo(QPoint pos, bool commit)
     }
     if (m_drag.mode == DragMode::Move && toBoundary)
         m_snapLine = snapped(pointer + m_drag.grabOffset);
-    if (after)
+    // Nothing is pushed until the drag changes something, so a drag that changes nothing leaves
+    // no empty step in the history.
+    if (after && (m_drag.pushed || !(*after == m_drag.start))) {
+        m_drag.pushed = true;
         m_document->changeAnimation(*after, dragText(), m_drag.mergeId, commit);
+    }
 }
 
 void TimelineView::mouseDoubleClickEvent(QMouseEvent *event)

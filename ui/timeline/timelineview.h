@@ -113,6 +113,7 @@ private:
         DragMode mode = DragMode::None;
         QPoint pressPos;
         bool started = false;
+        bool pushed = false; // a step of this drag is on the undo stack
         Animation start;
         ItemRef item;
         SpanEdge edge = SpanEdge::Start;
