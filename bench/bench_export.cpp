@@ -1,10 +1,10 @@
 #include "benchmark.h"
 
 #include "anim/timeline.h"
+#include "export/framerenderer.h"
+#include "export/smilexport.h"
 #include "face/averageface.h"
 #include "face/mouthshape.h"
-#include "render/framerenderer.h"
-#include "render/smilexport.h"
 #include "render/svgface.h"
 
 #include <QDir>

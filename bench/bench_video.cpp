@@ -1,6 +1,6 @@
 #include "benchmark.h"
 
-#include "render/videoencoder.h"
+#include "export/videoencoder.h"
 
 #include <QDir>
 #include <QFile>

@@ -2,13 +2,13 @@
 #include "cli/command.h"
 #include "cli/faceinput.h"
 #include "cli/speechinput.h"
+#include "export/framerenderer.h"
+#include "export/htmlplayer.h"
+#include "export/smilexport.h"
+#include "export/videoencoder.h"
 #include "face/emotion.h"
 #include "io/project.h"
-#include "render/framerenderer.h"
-#include "render/htmlplayer.h"
-#include "render/smilexport.h"
 #include "render/svgface.h"
-#include "render/videoencoder.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -1,8 +1,4 @@
 list(APPEND TOONFACE_CORE_SOURCES
   render/curves.h render/curves.cpp
   render/style.h render/style.cpp
-  render/svgface.h render/svgface.cpp
-  render/videoencoder.h render/videoencoder.cpp
-  render/smilexport.h render/smilexport.cpp
-  render/htmlplayer.h render/htmlplayer.cpp
-  render/framerenderer.h render/framerenderer.cpp)
+  render/svgface.h render/svgface.cpp)

@@ -1,7 +1,7 @@
 #include "face/averageface.h"
 #include "io/project.h"
+#include "media/mediareader.h"
 #include "render/svgface.h"
-#include "render/videoencoder.h"
 
 #include "testphotos.h"
 

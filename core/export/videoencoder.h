@@ -1,5 +1,7 @@
 #pragma once
 
+#include "media/audiosource.h"
+
 #include <QColor>
 #include <QImage>
 #include <QSize>
@@ -22,21 +24,6 @@ enum class VideoFormat {
 // .mp4 -> Mp4, .gif -> Gif (any case); a path ending in '/' or naming an existing folder ->
 // PngSequence; nullopt otherwise.
 std::optional<VideoFormat> videoFormatForPath(const QString &path);
-
-// The sound of a video: mono samples in memory, or a file that FFmpeg decodes (any format and
-// channel count it reads; channels are mixed down to mono). The sound starts `offset` seconds
-// into the video (a negative offset skips the sound's beginning).
-struct AudioSource
-{
-    QVector<float> samples; // in [-1, 1]
-    int sampleRate = 0;
-    QString path;
-    double offset = 0;
-
-    static AudioSource fromSamples(QVector<float> samples, int sampleRate, double offset = 0);
-    static AudioSource fromFile(const QString &path, double offset = 0);
-    bool isEmpty() const { return samples.isEmpty() && path.isEmpty(); }
-};
 
 struct VideoOptions
 {
@@ -121,35 +108,5 @@ bool writeVideo(const QString &path, VideoFormat format, QSize size, double fps,
     const std::function<QImage(int)> &renderFrame, const AudioSource &audio, QString *error,
     const VideoOptions &options = {}, const std::function<void(int, int)> &progress = {},
     const std::atomic<bool> *cancel = nullptr);
-
-// What a media file holds, read back by decoding it with FFmpeg (or, for a folder, by counting
-// its frame_NNNNN.png files).
-struct MediaInfo
-{
-    QString container; // FFmpeg's demuxer name ("mov,mp4,m4a,3gp,3g2,mj2", "gif", ...) or "png sequence"
-    int frameCount = 0; // decoded video frames
-    double fps = 0; // the stream's average frame rate (0 when unknown)
-    int width = 0;
-    int height = 0;
-    double videoDurationS = 0; // from the first frame's start to the last frame's end
-    QString videoCodec; // "h264", "gif", "png"
-    QString pixelFormat; // "yuv420p", "pal8", ...
-    bool hasAudio = false;
-    double audioDurationS = 0; // decoded samples / sample rate
-    int audioSampleRate = 0;
-    int audioChannels = 0;
-    QString audioCodec; // "aac", ...
-};
-
-// On failure returns nullopt and sets *error to "<path>: <problem>".
-std::optional<MediaInfo> probeMedia(const QString &path, QString *error);
-
-// Frame `index` (0-based, in display order) of a video file as an RGB32 image; nullopt with
-// *error "<path>: <problem>" when the file cannot be decoded or has fewer frames.
-std::optional<QImage> readVideoFrame(const QString &path, int index, QString *error);
-
-// The sound of a file (audio, or a video's sound track) decoded, mixed down to mono and
-// resampled to `sampleRate`; nullopt with *error "<path>: <problem>" on failure.
-std::optional<QVector<float>> readAudio(const QString &path, int sampleRate, QString *error);
 
 } // namespace toonface

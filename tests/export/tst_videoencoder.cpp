@@ -1,4 +1,5 @@
-#include "render/videoencoder.h"
+#include "export/videoencoder.h"
+#include "media/mediareader.h"
 
 #include <QDataStream>
 #include <QDir>

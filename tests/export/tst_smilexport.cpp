@@ -2,12 +2,12 @@
 
 #include "anim/timeline.h"
 #include "anim/timelineevaluator.h"
+#include "export/htmlplayer.h"
+#include "export/smilexport.h"
 #include "face/pose.h"
-#include "render/htmlplayer.h"
-#include "render/smilexport.h"
+#include "media/mediareader.h"
 #include "render/style.h"
 #include "render/svgface.h"
-#include "render/videoencoder.h"
 #include "speech/audio.h"
 #include "xmltree.h"
 

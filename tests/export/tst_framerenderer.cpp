@@ -2,7 +2,7 @@
 
 #include "anim/timeline.h"
 #include "anim/timelineevaluator.h"
-#include "render/framerenderer.h"
+#include "export/framerenderer.h"
 #include "render/svgface.h"
 
 #include <QTest>

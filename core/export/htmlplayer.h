@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/smilexport.h"
+#include "export/smilexport.h"
 
 #include <QByteArray>
 #include <QString>

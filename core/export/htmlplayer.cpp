@@ -1,4 +1,4 @@
-#include "render/htmlplayer.h"
+#include "export/htmlplayer.h"
 
 #include <QString>
 

@@ -1,4 +1,4 @@
-#include "render/framerenderer.h"
+#include "export/framerenderer.h"
 
 #include "anim/timeline.h"
 

@@ -1,11 +1,11 @@
 #include "animationfixture.h"
 
 #include "anim/timeline.h"
+#include "export/framerenderer.h"
+#include "export/htmlplayer.h"
+#include "export/smilexport.h"
 #include "face/facemodel.h"
 #include "face/fapu.h"
-#include "render/framerenderer.h"
-#include "render/htmlplayer.h"
-#include "render/smilexport.h"
 #include "render/svgface.h"
 
 #include <QDir>

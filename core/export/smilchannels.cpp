@@ -1,0 +1,209 @@
+#include "export/smilchannels.h"
+
+#include "anim/timelineevaluator.h"
+#include "export/svgnumbers.h"
+#include "face/emotion.h"
+#include "face/facemodel.h"
+#include "face/fapu.h"
+#include "face/mouthshape.h"
+#include "face/pose.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace toonface::smil {
+
+bool readChannel(const Channel &c, const QVector<FacePart> &parts, const QVector<double> &head, double *out)
+{
+    switch (c.kind) {
+    case ChannelKind::Translate:
+        out[0] = head[0];
+        out[1] = head[1];
+        return true;
+    case ChannelKind::Rotate: out[0] = head[2]; return true;
+    case ChannelKind::Scale: out[0] = head[3]; return true;
+    default: break;
+    }
+    const QByteArray text = parts[c.part].geometry.value(c.attribute).toLatin1();
+    QVector<double> numbers;
+    numbers.reserve(c.size);
+    if (c.kind == ChannelKind::Path) {
+        QByteArray commands;
+        if (!parsePath(text, &numbers, &commands) || commands != c.commands)
+            return false;
+    } else {
+        parseNumbers(text, &numbers);
+    }
+    if (numbers.size() != c.size)
+        return false;
+    std::copy(numbers.cbegin(), numbers.cend(), out);
+    return true;
+}
+
+bool headNumbers(const SvgFace &svg, const HeadPose &head, QVector<double> *out)
+{
+    out->clear();
+    parseNumbers(svg.headTransform(head).toLatin1(), out);
+    return out->size() == 6;
+}
+
+bool Sampler::sample(double t, const QVector<int> &which, double *out) const
+{
+    const Pose pose = m_evaluator.evaluate(t);
+    bool needParts = false, needHead = false;
+    for (int c : which)
+        (m_channels[c].part < 0 ? needHead : needParts) = true;
+    QVector<FacePart> parts;
+    if (needParts) {
+        parts = m_svg.parts(pose);
+        if (parts.size() != m_partCount)
+            return false;
+    }
+    QVector<double> head;
+    if (needHead && !headNumbers(m_svg, pose.head, &head))
+        return false;
+    for (int c : which) {
+        if (!readChannel(m_channels[c], parts, head, out))
+            return false;
+        out += m_channels[c].size;
+    }
+    return true;
+}
+
+QVector<Channel> makeChannels(const QVector<FacePart> &parts, const QVector<double> &neutralHead, QRectF canvas)
+{
+    QVector<Channel> channels;
+    for (qsizetype i = 0; i < parts.size(); ++i) {
+        const FacePart &part = parts[i];
+        for (auto it = part.geometry.cbegin(); it != part.geometry.cend(); ++it) {
+            const QByteArray text = it.value().toLatin1();
+            Channel c;
+            c.part = int(i);
+            c.attribute = it.key();
+            QVector<double> numbers;
+            if (it.key() == QLatin1StringView("d")) {
+                if (!parsePath(text, &numbers, &c.commands))
+                    continue;
+                c.kind = ChannelKind::Path;
+            } else {
+                QByteArray letters;
+                parseNumbers(text, &numbers, &letters);
+                if (!letters.isEmpty() || numbers.isEmpty())
+                    continue; // not geometry that can move (fill-rule, ...)
+                c.kind = numbers.size() == 1 ? ChannelKind::Number : ChannelKind::Points;
+            }
+            c.size = int(numbers.size());
+            c.base = numbers;
+            channels.append(c);
+        }
+    }
+    // The head turns and scales about its centre: an angle or scale error moves points by
+    // up to the farthest corner's distance from it.
+    const QPointF centre(neutralHead[0], neutralHead[1]);
+    double reach = 1;
+    for (const QPointF corner : {canvas.topLeft(), canvas.topRight(), canvas.bottomLeft(), canvas.bottomRight()})
+        reach = std::max(reach, std::hypot(corner.x() - centre.x(), corner.y() - centre.y()));
+    auto decimalsFor = [](double weight) { return std::clamp(int(std::ceil(std::log10(weight / 0.1))), 1, 8); };
+    Channel translate;
+    translate.kind = ChannelKind::Translate;
+    translate.size = 2;
+    Channel rotate;
+    rotate.kind = ChannelKind::Rotate;
+    rotate.size = 1;
+    rotate.weight = reach * std::numbers::pi / 180.0;
+    rotate.decimals = decimalsFor(rotate.weight);
+    Channel scale;
+    scale.kind = ChannelKind::Scale;
+    scale.size = 1;
+    scale.weight = reach;
+    scale.decimals = decimalsFor(scale.weight);
+    for (Channel *c : {&translate, &rotate, &scale}) {
+        c->tracks = Track::Head;
+        channels.append(*c);
+    }
+    return channels;
+}
+
+void findTracks(QVector<Channel> &channels, const SvgFace &svg, const Timeline &timeline, const MouthShapeSet &shapes)
+{
+    const FaceModel &face = svg.face();
+    struct Probe
+    {
+        Track track;
+        Pose pose;
+    };
+    QVector<Probe> probes;
+    if (!timeline.mouthKeys().isEmpty()) {
+        for (MouthShape s : kAllMouthShapes)
+            probes.append({Track::Mouth, mouthPose(face, shapes, s)});
+    }
+    QVector<Emotion> emotions;
+    for (const EmotionClip &clip : timeline.emotionClips()) {
+        if (!emotions.contains(clip.emotion))
+            emotions.append(clip.emotion);
+    }
+    for (Emotion e : emotions)
+        probes.append({Track::Emotion, emotionPose(face, e, 1.0)});
+    if (!timeline.blinks().isEmpty()) {
+        for (double open : {0.0, 0.5}) {
+            Pose p;
+            p.leftEyeOpen = p.rightEyeOpen = open;
+            probes.append({Track::Blink, p});
+        }
+    }
+    if (!timeline.gazeKeys().isEmpty()) {
+        const double es0 = face.fapu().es0;
+        const auto &keys = timeline.gazeKeys();
+        auto extreme = [&](auto less) { return std::min_element(keys.cbegin(), keys.cend(), less)->offsetEs0; };
+        const QPointF offsets[] = {extreme([](auto &a, auto &b) { return a.offsetEs0.x() < b.offsetEs0.x(); }),
+            extreme([](auto &a, auto &b) { return a.offsetEs0.x() > b.offsetEs0.x(); }),
+            extreme([](auto &a, auto &b) { return a.offsetEs0.y() < b.offsetEs0.y(); }),
+            extreme([](auto &a, auto &b) { return a.offsetEs0.y() > b.offsetEs0.y(); })};
+        for (const QPointF &g : offsets) {
+            Pose p;
+            p.offset[pt::idx("3.6")] = g * es0;
+            p.offset[pt::idx("3.5")] = g * es0;
+            probes.append({Track::Gaze, p});
+        }
+    }
+
+    QVector<std::pair<Track, Pose>> bases {{Track(0), Pose {}}};
+    for (const Probe &p : probes) {
+        if (std::none_of(bases.cbegin(), bases.cend(), [&](const auto &b) { return b.first == p.track; }))
+            bases.append({p.track, p.pose});
+    }
+    for (const auto &[baseTrack, base] : bases) {
+        const QVector<FacePart> before = svg.parts(base);
+        for (const Probe &probe : probes) {
+            if (probe.track == baseTrack)
+                continue;
+            const QVector<FacePart> after = svg.parts(base + probe.pose);
+            if (after.size() != before.size())
+                continue;
+            for (Channel &c : channels) {
+                if (c.part >= 0
+                    && after[c.part].geometry.value(c.attribute) != before[c.part].geometry.value(c.attribute))
+                    c.tracks |= probe.track;
+            }
+        }
+    }
+}
+
+void appendValue(QByteArray &out, const Channel &c, const qint64 *v)
+{
+    switch (c.kind) {
+    case ChannelKind::Path: appendAbsolutePath(out, c.commands, v, c.decimals); break;
+    case ChannelKind::Points:
+    case ChannelKind::Translate:
+        for (int j = 0; j < c.size; ++j) {
+            if (j)
+                out += j % 2 ? ',' : ' ';
+            appendFixed(out, v[j], c.decimals);
+        }
+        break;
+    default: appendFixed(out, v[0], c.decimals); break;
+    }
+}
+
+} // namespace toonface::smil

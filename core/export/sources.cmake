@@ -1,0 +1,11 @@
+list(APPEND TOONFACE_CORE_SOURCES
+  export/framerenderer.h export/framerenderer.cpp
+  export/videoencoder.h export/videoencoder.cpp
+  export/videosink.h export/muxedsink.cpp export/mp4sink.cpp export/gifsink.cpp export/pngsink.cpp
+  export/smilexport.h export/smilexport.cpp export/smilutil.h
+  export/smilchannels.h export/smilchannels.cpp
+  export/smilkeys.h export/smilkeys.cpp
+  export/smilaudio.h export/smilaudio.cpp
+  export/svgnumbers.h export/svgnumbers.cpp
+  export/svgxml.h export/svgxml.cpp
+  export/htmlplayer.h export/htmlplayer.cpp)

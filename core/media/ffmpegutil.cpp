@@ -1,0 +1,65 @@
+#include "media/ffmpegutil.h"
+
+#include <QDir>
+#include <QFile>
+
+#include <mutex>
+
+namespace toonface::av {
+
+QString avError(int code)
+{
+    char buf[AV_ERROR_MAX_STRING_SIZE] = {};
+    av_strerror(code, buf, sizeof buf);
+    return QString::fromUtf8(buf);
+}
+
+bool fail(QString *error, const QString &path, const QString &problem)
+{
+    if (error)
+        *error = QDir::toNativeSeparators(path) + QStringLiteral(": ") + problem;
+    return false;
+}
+
+void quietFfmpegLogs()
+{
+    static std::once_flag once;
+    std::call_once(once, [] {
+        if (av_log_get_level() == AV_LOG_INFO)
+            av_log_set_level(AV_LOG_ERROR);
+    });
+}
+
+QByteArray localPath(const QString &path)
+{
+    return QFile::encodeName(path);
+}
+
+CodecPtr openDecoder(AVFormatContext *input, AVMediaType type, int *streamIndex, QString *problem)
+{
+    const int index = av_find_best_stream(input, type, -1, -1, nullptr, 0);
+    if (index < 0)
+        return {};
+    const AVStream *stream = input->streams[index];
+    const AVCodec *codec = avcodec_find_decoder(stream->codecpar->codec_id);
+    if (!codec) {
+        *problem = QStringLiteral("no decoder for its %1 codec '%2'")
+                       .arg(QString::fromLatin1(av_get_media_type_string(type)),
+                           QString::fromLatin1(avcodec_get_name(stream->codecpar->codec_id)));
+        return {};
+    }
+    CodecPtr ctx(avcodec_alloc_context3(codec));
+    int r = avcodec_parameters_to_context(ctx.get(), stream->codecpar);
+    if (r >= 0) {
+        ctx->pkt_timebase = stream->time_base;
+        r = avcodec_open2(ctx.get(), codec, nullptr);
+    }
+    if (r < 0) {
+        *problem = QStringLiteral("cannot open its %1 decoder: %2").arg(QString::fromLatin1(codec->name), avError(r));
+        return {};
+    }
+    *streamIndex = index;
+    return ctx;
+}
+
+} // namespace toonface::av

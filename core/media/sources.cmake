@@ -1,0 +1,6 @@
+list(APPEND TOONFACE_CORE_SOURCES
+  media/ffmpegutil.h media/ffmpegutil.cpp
+  media/audiosource.h
+  media/audiofeed.h media/audiofeed.cpp
+  media/pngframes.h
+  media/mediareader.h media/mediareader.cpp)
