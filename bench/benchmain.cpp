@@ -2,7 +2,7 @@
 
 #include <QDir>
 #include <QFileInfo>
-#include <QGuiApplication>
+#include <QApplication>
 #include <QJsonDocument>
 #include <QProcess>
 #include <QTextStream>
@@ -82,7 +82,7 @@ int main(int argc, char *argv[])
         QTextStream(stderr) << "no child measurement " << argv[2] << Qt::endl;
         return 2;
     }
-    QGuiApplication app(argc, argv);
+    QApplication app(argc, argv); // the timeline benchmarks paint widgets
     const QStringList filters = app.arguments().mid(1);
     QJsonObject results;
     for (const auto &b : toonface::bench::registry()) {

@@ -14,4 +14,5 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/lipsync.h speech/lipsync.cpp
   speech/syllableshapes.h speech/syllableshapes.cpp
   speech/syllableduration.h speech/syllableduration.cpp
-  speech/pinyinindex.h speech/pinyinindex.cpp)
+  speech/pinyinindex.h speech/pinyinindex.cpp
+  speech/waveformpeaks.h speech/waveformpeaks.cpp)

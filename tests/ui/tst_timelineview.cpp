@@ -1,0 +1,398 @@
+#include "timelinefixture.h"
+#include "uifixture.h"
+
+#include "playback/playhead.h"
+#include "timeline/emotionpalette.h"
+#include "timeline/shapepalette.h"
+#include "timeline/timelineview.h"
+#include "timeline/timelinewidget.h"
+
+#include <QApplication>
+#include <QLineEdit>
+#include <QMimeData>
+#include <QTest>
+#include <QToolButton>
+#include <QUndoStack>
+
+#include <cmath>
+#include <memory>
+
+using namespace toonface;
+
+namespace {
+
+constexpr double kPps = 300; // pixels per second in these tests: 3 s in 900 pixels
+
+void drag(QWidget *viewport, QPoint from, QPoint to, Qt::KeyboardModifiers modifiers = Qt::NoModifier, int steps = 6)
+{
+    QTest::mousePress(viewport, Qt::LeftButton, modifiers, from);
+    for (int s = 1; s <= steps; ++s)
+        QTest::mouseMove(viewport, from + (to - from) * s / steps);
+    QTest::mouseRelease(viewport, Qt::LeftButton, modifiers, to);
+}
+
+bool near(double a, double b, double tolerance = 1e-6)
+{
+    return std::abs(a - b) < tolerance;
+}
+
+} // namespace
+
+class TestTimelineView : public QObject
+{
+    Q_OBJECT
+
+private:
+    std::unique_ptr<Document> m_doc;
+    std::unique_ptr<Playhead> m_playhead;
+    std::unique_ptr<TimelineWidget> m_widget;
+    TimelineView *m_view = nullptr;
+    Animation m_before;
+
+    QWidget *viewport() const { return m_view->viewport(); }
+    QPoint at(double t, RowKind row, double dy = 0) const
+    {
+        const QRect r = m_view->timelineLayout().rowRect(row, viewport()->width());
+        return QPoint(int(std::lround(m_view->xOf(t))), int(r.center().y() + dy));
+    }
+    QPoint centre(const ItemRef &item) const { return m_view->itemRect(item).center().toPoint(); }
+    int undoCount() const { return m_doc->undoStack()->count(); }
+    // Undoes back to the fixture and checks the document holds it exactly.
+    void undoAllAndCompare()
+    {
+        while (m_doc->undoStack()->canUndo())
+            m_doc->undoStack()->undo();
+        QCOMPARE(m_doc->animation(), m_before);
+    }
+
+private Q_SLOTS:
+    void init()
+    {
+        m_doc = std::make_unique<Document>();
+        Project project;
+        project.face = fixture::face();
+        project.style = Style::preset(QStringLiteral("normal"));
+        const Animation a = fixture::talkingAnimation();
+        project.timeline = a.timeline;
+        project.syllables = a.syllables;
+        project.script = a.script;
+        project.scriptLanguage = a.scriptLanguage;
+        m_doc->reset(project, fixture::photo(), {}, true);
+        m_before = m_doc->animation();
+        m_playhead = std::make_unique<Playhead>();
+        m_widget = std::make_unique<TimelineWidget>(m_doc.get(), m_playhead.get());
+        m_widget->resize(1200, 440);
+        m_widget->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_widget.get()));
+        m_view = m_widget->view();
+        m_view->setPixelsPerSecond(kPps, TimelineLayout::kLabelWidth);
+        m_view->setFocus();
+        QCOMPARE(m_view->timelineLayout().scrollTime(), 0.0);
+    }
+
+    void cleanup()
+    {
+        m_widget.reset();
+        m_playhead.reset();
+        m_doc.reset();
+    }
+
+    // Dragging the end of a cue moves the boundary: the next cue (touching it) gives way.
+    void dragCueEdge()
+    {
+        const int a = fixture::mouthKeyAt(m_before, 0.5); // hao's a, then its u
+        QVERIFY(a >= 0);
+        const QVector<Span> before = itemSpans(m_before, ItemKind::Mouth);
+        const QRectF block = m_view->itemRect({ItemKind::Mouth, a});
+        const QPoint grab(int(std::lround(block.right())), int(block.center().y()));
+        QCOMPARE(m_view->hitAt(grab).part, HitPart::EndEdge);
+        const int steps = undoCount();
+        drag(viewport(), grab, grab + QPoint(30, 0)); // 0.1 s later
+        QCOMPARE(undoCount(), steps + 1); // one drag, one step
+        const QVector<Span> after = itemSpans(m_doc->animation(), ItemKind::Mouth);
+        const double expected = std::round((before[a].end + 0.1) * 25) / 25; // snapped to a frame
+        QVERIFY2(near(after[a].end, expected, 1e-3), qPrintable(QString::number(after[a].end)));
+        QVERIFY(near(after[a + 1].start, after[a].end));
+        QVERIFY(near(after[a + 1].end, before[a + 1].end) || after[a + 1].end > before[a + 1].end);
+        QCOMPARE(after.size(), before.size());
+        undoAllAndCompare();
+    }
+
+    // A drag that ends where it began (or is clamped at once) changes nothing and leaves no step.
+    void dragThatChangesNothing()
+    {
+        const QPoint body = centre({ItemKind::Blink, 0});
+        drag(viewport(), body, body + QPoint(0, 6)); // vertical: no time moved
+        QCOMPARE(m_doc->undoStack()->count(), 0);
+        QCOMPARE(m_doc->animation(), m_before);
+    }
+
+    void dragSyllableEdge()
+    {
+        const QRectF hao = m_view->itemRect({ItemKind::Syllable, 1});
+        const QPoint grab(int(std::lround(hao.right())) - 1, int(hao.center().y()));
+        QCOMPARE(m_view->hitAt(grab).part, HitPart::EndEdge);
+        const double target = m_before.syllables[1].end + 27 / kPps; // 0.89: frame 22 is 0.88
+        drag(viewport(), grab, grab + QPoint(27, 0));
+        const Animation after = m_doc->animation();
+        const LipsyncSyllable &syl = after.syllables[1];
+        QVERIFY2(near(syl.end, std::round(target * 25) / 25, 1e-6), qPrintable(QString::number(syl.end)));
+        QVERIFY(near(syl.shapes[1].start, syl.start + shapeStartFraction(2, 1) * (syl.end - syl.start)));
+        QVERIFY(fixture::mouthKeyAt(after, syl.shapes[1].start) >= 0); // the u key went with it
+        QVERIFY(near(after.syllables[2].start, syl.end)); // ma gave way
+        QCOMPARE(m_doc->undoStack()->count(), 1);
+        undoAllAndCompare();
+    }
+
+    void dragEmotionClip()
+    {
+        const EmotionClip clip = m_before.timeline.emotionClips()[0]; // smile 0.3 .. 1.5
+        // Its body (below the intensity line, away from the handles) moves it.
+        const QRectF r = m_view->itemRect({ItemKind::Emotion, 0});
+        const QPoint body(int(r.center().x()), int(r.bottom()) - 3);
+        QCOMPARE(m_view->hitAt(body).part, HitPart::Body);
+        drag(viewport(), body, body + QPoint(60, 0));
+        EmotionClip moved = m_doc->timeline().emotionClips()[0];
+        QVERIFY(near(moved.start, clip.start + 0.2, 1e-3) && near(moved.end, clip.end + 0.2, 1e-3));
+        QCOMPARE(moved.intensity, clip.intensity);
+
+        // The fade-in handle sets the fade; the intensity line, dragged up, the intensity.
+        const QPoint fadeIn = m_view->emotionHandle(0, HitPart::FadeIn).toPoint();
+        QCOMPARE(m_view->hitAt(fadeIn).part, HitPart::FadeIn);
+        drag(viewport(), fadeIn, fadeIn + QPoint(45, 0));
+        moved = m_doc->timeline().emotionClips()[0];
+        QVERIFY2(near(moved.fadeIn, clip.fadeIn + 0.15, 0.021), qPrintable(QString::number(moved.fadeIn)));
+        const QPoint line = m_view->emotionHandle(0, HitPart::Intensity).toPoint();
+        QCOMPARE(m_view->hitAt(line).part, HitPart::Intensity);
+        drag(viewport(), line, line - QPoint(0, 30));
+        QCOMPARE(m_doc->timeline().emotionClips()[0].intensity, 1.0);
+        QCOMPARE(m_doc->undoStack()->count(), 3);
+        undoAllAndCompare();
+    }
+
+    void keyboardReplacesShape()
+    {
+        const int a = fixture::mouthKeyAt(m_before, 0.5);
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, centre({ItemKind::Mouth, a}));
+        QCOMPARE(m_view->selection(), Selection({{ItemKind::Mouth, a}}));
+        QCOMPARE(m_view->focusRow(), std::optional(RowKind::Mouth));
+        QTest::keyClick(m_view, Qt::Key_O);
+        QCOMPARE(m_doc->timeline().mouthKeys()[a].shape, MouthShape::O);
+        Animation expected = m_before;
+        QVector<MouthKey> keys = expected.timeline.mouthKeys();
+        keys[a].shape = MouthShape::O;
+        expected.timeline.setMouthKeys(keys);
+        QCOMPARE(m_doc->animation(), expected); // nothing else changed
+
+        // Nothing selected: a key is inserted at the playhead.
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, at(2.9, RowKind::Mouth, -10));
+        m_playhead->setTime(2.7);
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, at(0.05, RowKind::Script)); // empty: clears
+        QVERIFY(m_view->selection().isEmpty());
+        m_view->setFocusRow(RowKind::Mouth);
+        QTest::keyClick(m_view, Qt::Key_E);
+        const int e = fixture::mouthKeyAt(m_doc->animation(), 2.72); // snapped to frame 68
+        QVERIFY(e >= 0 || fixture::mouthKeyAt(m_doc->animation(), 2.68) >= 0);
+        QCOMPARE(m_doc->undoStack()->count(), 2);
+        undoAllAndCompare();
+    }
+
+    void shapePaletteShowsTheLips()
+    {
+        const MouthIcons &icons = m_view->mouthIcons();
+        for (MouthShape shape : kAllMouthShapes)
+            QVERIFY(!icons.icon(shape).isNull());
+        QVERIFY(icons.icon(MouthShape::A) != icons.icon(MouthShape::M)); // open and shut differ
+        // New presets rebuild the pictures.
+        const int builds = icons.buildCount();
+        const QImage a = icons.icon(MouthShape::A);
+        MouthShapeSet shapes = m_doc->mouthShapes();
+        shapes.setPreset(MouthShape::A, shapes.preset(MouthShape::O));
+        m_doc->changeMouthShapes(shapes, QStringLiteral("edit"));
+        QCOMPARE(icons.buildCount(), builds + 1);
+        QVERIFY(icons.icon(MouthShape::A) != a);
+        // The palette's button replaces the selected key's shape.
+        m_view->setSelection({{ItemKind::Mouth, 1}});
+        auto *button = m_widget->findChild<QToolButton *>(QStringLiteral("shape-u"));
+        QVERIFY(button);
+        button->click();
+        QCOMPARE(m_doc->timeline().mouthKeys()[1].shape, MouthShape::U);
+    }
+
+    void dropEmotionPreset()
+    {
+        const QPoint pos = at(2.0, RowKind::Emotion);
+        std::unique_ptr<QMimeData> mime(emotionMimeData(Emotion::Angry));
+        QDragEnterEvent enter(pos, Qt::CopyAction, mime.get(), Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(viewport(), &enter);
+        QVERIFY(enter.isAccepted());
+        QDragMoveEvent move(pos, Qt::CopyAction, mime.get(), Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(viewport(), &move);
+        QVERIFY(move.isAccepted());
+        QDropEvent drop(QPointF(pos), Qt::CopyAction, mime.get(), Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(viewport(), &drop);
+        const QVector<EmotionClip> &clips = m_doc->timeline().emotionClips();
+        QCOMPARE(clips.size(), 2);
+        QCOMPARE(clips[1].emotion, Emotion::Angry);
+        QVERIFY(near(clips[1].start, 2.0, 0.021));
+        QVERIFY(near(clips[1].end - clips[1].start, 2.0));
+        QCOMPARE(m_view->selection(), Selection({{ItemKind::Emotion, 1}}));
+        // A preset applied to a selected range fills it.
+        m_view->setSelection({{ItemKind::Syllable, 0}, {ItemKind::Syllable, 2}});
+        m_widget->findChild<QToolButton *>(QStringLiteral("emotion-sad"))->click();
+        bool found = false;
+        for (const EmotionClip &c : m_doc->timeline().emotionClips())
+            found = found || (c.emotion == Emotion::Sad && near(c.start, 0.2) && near(c.end, 1.1));
+        QVERIFY(found);
+        undoAllAndCompare();
+    }
+
+    void rubberBandSelectAndDelete()
+    {
+        // From the empty start of the script row to the pause, across the mouth row.
+        drag(viewport(), at(0.05, RowKind::Script, -8), at(1.3, RowKind::Mouth));
+        const Selection selected = m_view->selection();
+        QCOMPARE(selected.indices(ItemKind::Syllable), QVector<int>({0, 1, 2}));
+        QVERIFY(selected.indices(ItemKind::Mouth).size() >= 5);
+        QVERIFY(!selected.hasKind(ItemKind::Emotion)); // rows outside the band are not taken
+        QTest::keyClick(m_view, Qt::Key_Delete);
+        QCOMPARE(m_doc->syllables().size(), 2);
+        QCOMPARE(m_doc->syllables()[0].text, QStringLiteral("明"));
+        QVERIFY(m_view->selection().isEmpty());
+        QCOMPARE(m_doc->undoStack()->count(), 1);
+        undoAllAndCompare();
+    }
+
+    void shiftAndCtrlClick()
+    {
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, centre({ItemKind::Blink, 0}));
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::ShiftModifier, centre({ItemKind::Blink, 1}));
+        QCOMPARE(m_view->selection(), Selection({{ItemKind::Blink, 0}, {ItemKind::Blink, 1}}));
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::ControlModifier, centre({ItemKind::Blink, 0}));
+        QCOMPARE(m_view->selection(), Selection({{ItemKind::Blink, 1}}));
+        QCOMPARE(m_doc->undoStack()->count(), 0); // selecting is no edit
+    }
+
+    void copyAndPaste()
+    {
+        const int a = fixture::mouthKeyAt(m_before, 0.5);
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, centre({ItemKind::Mouth, a}));
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::ControlModifier, centre({ItemKind::Mouth, a + 1}));
+        QTest::keyClick(m_view, Qt::Key_C, Qt::ControlModifier);
+        m_playhead->setTime(2.6);
+        QTest::keyClick(m_view, Qt::Key_V, Qt::ControlModifier);
+        const Animation after = m_doc->animation();
+        const int pasted = fixture::mouthKeyAt(after, 2.6);
+        QVERIFY(pasted >= 0);
+        QCOMPARE(after.timeline.mouthKeys()[pasted].shape, m_before.timeline.mouthKeys()[a].shape);
+        const double gap = m_before.timeline.mouthKeys()[a + 1].time - m_before.timeline.mouthKeys()[a].time;
+        QCOMPARE(after.timeline.mouthKeys()[pasted + 1].shape, m_before.timeline.mouthKeys()[a + 1].shape);
+        QVERIFY(near(after.timeline.mouthKeys()[pasted + 1].time, 2.6 + gap));
+        QCOMPARE(m_view->selection().indices(ItemKind::Mouth), QVector<int>({pasted, pasted + 1}));
+        QCOMPARE(m_doc->undoStack()->count(), 1);
+        undoAllAndCompare();
+    }
+
+    void mouthWeightFromTheBlockTop()
+    {
+        const int a = fixture::mouthKeyAt(m_before, 0.5);
+        const QRectF r = m_view->itemRect({ItemKind::Mouth, a});
+        const QPoint top(int(r.center().x()), int(std::lround(r.top())) + 1);
+        QCOMPARE(m_view->hitAt(top).part, HitPart::Weight);
+        drag(viewport(), top, top + QPoint(0, int((r.height() - 4) / 2)));
+        QVERIFY(near(m_doc->timeline().mouthKeys()[a].weight, 0.5, 0.05));
+        undoAllAndCompare();
+    }
+
+    void pinyinEditedInPlace()
+    {
+        QTest::mouseDClick(viewport(), Qt::LeftButton, Qt::NoModifier, centre({ItemKind::Syllable, 2}));
+        auto *editor = viewport()->findChild<QLineEdit *>(QStringLiteral("pinyinEditor"));
+        QVERIFY(editor && editor->isVisible());
+        QCOMPARE(editor->text(), QStringLiteral("ma5"));
+        editor->selectAll();
+        QTest::keyClicks(editor, QStringLiteral("miao4"));
+        QTest::keyClick(editor, Qt::Key_Return);
+        QCOMPARE(m_doc->syllables()[2].pinyin, QStringLiteral("miao"));
+        QCOMPARE(m_doc->syllables()[2].shapes.size(), 4);
+        QCOMPARE(m_doc->undoStack()->count(), 1);
+        undoAllAndCompare();
+    }
+
+    void headAndBlinkActions()
+    {
+        m_playhead->setTime(1.0);
+        m_widget->timelineActions().addShake->trigger();
+        QVERIFY(m_doc->timeline().headKeys().size() > m_before.timeline.headKeys().size());
+        m_widget->timelineActions().regenerateBlinks->trigger();
+        QVERIFY(m_doc->timeline().blinks() != m_before.timeline.blinks());
+        QCOMPARE(m_doc->undoStack()->count(), 2);
+        const TimelineActions &actions = m_widget->timelineActions();
+        for (QAction *action : {actions.zoomIn, actions.zoomOut, actions.zoomToFit, actions.snap, actions.deleteItems,
+                 actions.copy, actions.paste, actions.regenerateBlinks, actions.addShake, actions.addNod,
+                 actions.applyEmotion[int(Emotion::Smile)]})
+            QVERIFY2(!action->icon().pixmap(20, 20).isNull(), qPrintable(action->text()));
+        undoAllAndCompare();
+    }
+
+    void rulerScrubs()
+    {
+        QVERIFY(!m_playhead->isScrubbing());
+        const QPoint from = at(0.5, RowKind::Ruler);
+        QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, from);
+        QVERIFY(m_playhead->isScrubbing());
+        QVERIFY(near(m_playhead->time(), 0.5, 0.021));
+        QTest::mouseMove(viewport(), at(1.5, RowKind::Ruler));
+        QVERIFY(near(m_playhead->time(), 1.5, 0.021));
+        QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, at(1.5, RowKind::Ruler));
+        QVERIFY(!m_playhead->isScrubbing());
+        QCOMPARE(m_doc->undoStack()->count(), 0);
+    }
+
+    void wheelZoomsAboutTheCursor()
+    {
+        const QPoint cursor = at(1.0, RowKind::Mouth);
+        const double before = m_view->timelineLayout().timeAt(cursor.x());
+        QWheelEvent zoom(QPointF(cursor), QPointF(viewport()->mapToGlobal(cursor)), QPoint(), QPoint(0, 240),
+            Qt::NoButton, Qt::ControlModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(viewport(), &zoom);
+        QVERIFY(near(m_view->timelineLayout().pixelsPerSecond(), kPps * 1.25 * 1.25, 1e-6));
+        QVERIFY(near(m_view->timelineLayout().timeAt(cursor.x()), before, 1e-9));
+        QWheelEvent scroll(QPointF(cursor), QPointF(viewport()->mapToGlobal(cursor)), QPoint(), QPoint(0, -120),
+            Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        const double scrolled = m_view->timelineLayout().scrollTime();
+        QApplication::sendEvent(viewport(), &scroll);
+        QVERIFY(m_view->timelineLayout().scrollTime() > scrolled);
+        m_widget->timelineActions().zoomToFit->trigger();
+        QCOMPARE(m_view->timelineLayout().scrollTime(), 0.0);
+        QVERIFY(m_view->xOf(m_doc->timeline().duration()) <= viewport()->width());
+    }
+
+    void waveformIsPainted()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("tone.wav"));
+        Audio audio;
+        audio.samples.resize(3 * audio.sampleRate);
+        for (qsizetype i = 0; i < audio.samples.size(); ++i)
+            audio.samples[i] = float(0.8 * std::sin(2 * M_PI * 220 * double(i) / audio.sampleRate));
+        QString error;
+        QVERIFY2(writeAudio(path, audio, &error), qPrintable(error));
+        Animation a = m_doc->animation();
+        a.timeline.setAudio(AudioClip {path, 0, 3});
+        m_doc->changeAnimation(a, QStringLiteral("sound"));
+        m_view->waveform()->waitForFinished();
+        QVERIFY2(!m_view->waveform()->peaks().isEmpty(), qPrintable(m_view->waveform()->error()));
+        const QImage image = viewport()->grab().toImage();
+        // The row is drawn from the peaks: near full height at 0.8 of full scale.
+        const QRect row = m_view->timelineLayout().rowRect(RowKind::Waveform, viewport()->width());
+        const int x = int(m_view->xOf(1.5));
+        int lit = 0;
+        for (int y = row.top(); y <= row.bottom(); ++y)
+            lit += qGreen(image.pixel(x, y)) > 150 ? 1 : 0;
+        QVERIFY2(lit > row.height() / 2, qPrintable(QString::number(lit)));
+    }
+};
+
+QTEST_MAIN(TestTimelineView)
+#include "tst_timelineview.moc"

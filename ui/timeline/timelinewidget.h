@@ -1,0 +1,80 @@
+#pragma once
+
+#include "face/emotion.h"
+#include "timeline/timelinepainter.h"
+
+#include <QDockWidget>
+#include <QList>
+#include <QWidget>
+
+#include <array>
+
+class QAction;
+
+namespace toonface {
+
+class Document;
+class Playhead;
+class TimelineView;
+class ShapePalette;
+class EmotionPalette;
+
+// The timeline's commands, for the main window's menus and toolbars. Their shortcuts act while
+// the timeline has focus (Qt::WidgetWithChildrenShortcut).
+struct TimelineActions
+{
+    QAction *zoomIn = nullptr;
+    QAction *zoomOut = nullptr;
+    QAction *zoomToFit = nullptr;
+    QAction *snap = nullptr; // checkable: snap to frames and syllable boundaries
+    QAction *deleteItems = nullptr;
+    QAction *copy = nullptr;
+    QAction *paste = nullptr;
+    QAction *selectAll = nullptr;
+    QAction *regenerateBlinks = nullptr;
+    QAction *addShake = nullptr;
+    QAction *addNod = nullptr;
+    std::array<QAction *, 5> applyEmotion {}; // by Emotion, over the selected range
+
+    QList<QAction *> all() const;
+};
+
+// The timeline dock's contents: a tool bar (zoom, snap, edit, blinks and head motion, the
+// emotion presets and the mouth-shape palette) above the TimelineView. Takes the document and
+// the shared playhead; holds nothing of the main window.
+class TimelineWidget : public QWidget
+{
+    Q_OBJECT
+
+public:
+    TimelineWidget(Document *document, Playhead *playhead, QWidget *parent = nullptr);
+
+    TimelineView *view() const { return m_view; }
+    const TimelineActions &timelineActions() const { return m_actions; }
+
+private:
+    void createActions();
+    void updateActions();
+    void showContextMenu(const TimelineHit &hit, const QPoint &globalPos);
+
+    Document *m_document;
+    TimelineView *m_view;
+    ShapePalette *m_shapes;
+    EmotionPalette *m_emotions;
+    TimelineActions m_actions;
+};
+
+// The timeline as a dock for the main window ("Timeline", object name "timelineDock").
+class TimelineDock : public QDockWidget
+{
+    Q_OBJECT
+
+public:
+    TimelineDock(Document *document, Playhead *playhead, QWidget *parent = nullptr);
+    TimelineWidget *timeline() const { return m_timeline; }
+
+private:
+    TimelineWidget *m_timeline;
+};
+
+} // namespace toonface
