@@ -3,6 +3,7 @@
 
 #include <QGuiApplication>
 #include <QTextStream>
+#include <QThread>
 
 #include <algorithm>
 
@@ -73,6 +74,9 @@ int main(int argc, char *argv[])
         args << QString::fromLocal8Bit(argv[i]);
     // A command that will detect a face starts detection's one-time work now, on the other
     // core, while the application starts and the photo is read.
+    // Qt takes the first thread that asks for its thread data for the main thread: claim it
+    // before the warm-up's threads (which use Qt types) can.
+    QThread::currentThread();
     if (const Command *command = findCommand(args.value(0)); command && command->detects && mayUseLandmarks(args))
         toonface::warmUpDetection();
     // Rendering text and SVG needs a GUI application, but never a display.

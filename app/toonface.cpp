@@ -7,6 +7,7 @@
 #include <QElapsedTimer>
 #include <QLibraryInfo>
 #include <QLocale>
+#include <QThread>
 #include <QTimer>
 #include <QTranslator>
 
@@ -58,6 +59,9 @@ int main(int argc, char *argv[])
 {
     QElapsedTimer clock;
     clock.start();
+    // Qt takes the first thread that asks for its thread data for the main thread: claim it
+    // here, before the warm-up's threads (which use Qt types) can.
+    QThread::currentThread();
     // Detection's one-time work (the landmark model, the face detector) goes on in the
     // background while the application and its window start.
     toonface::warmUpDetection();

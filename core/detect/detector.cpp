@@ -705,11 +705,6 @@ void warmUpFaceRefinement()
     refineFace(photo, false, &placed, [](const QString &) { return true; });
 }
 
-std::shared_ptr<const LandmarkPredictor> sharedLandmarkModel(QString *error)
-{
-    return landmarkModel(error, nullptr);
-}
-
 QImage landmarkGray(const QImage &image)
 {
     return toGray(image);

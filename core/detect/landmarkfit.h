@@ -5,6 +5,7 @@
 // the face detector's boxes, and fits of the 68 points from a box or from the face of the frame
 // before.
 
+#include "detect/detectionruntime.h"
 #include "detect/landmarkmap.h"
 
 #include <QImage>
@@ -21,9 +22,7 @@ namespace toonface {
 class LandmarkPredictor;
 using Landmarks68 = std::array<QPointF, kIbugPointCount>;
 
-// The landmark model of landmarkModelPath(), loaded once per process and shared (thread-safe);
-// nullptr with *error naming the file when it is missing or unreadable.
-std::shared_ptr<const LandmarkPredictor> sharedLandmarkModel(QString *error);
+// The landmark model: sharedLandmarkModel() of detect/detectionruntime.h.
 
 // Grey levels as the landmark model and the face detector were trained on: (R + G + B) / 3.
 QImage landmarkGray(const QImage &image);

@@ -199,25 +199,6 @@ void findTracks(QVector<Channel> &channels, const SvgFace &svg, const Timeline &
         }
     }
 
-    if (!timeline.poseKeys().isEmpty()) {
-        // Two probes: every point the pose track moves at its largest offset each way.
-        const double es0 = face.fapu().es0;
-        Pose high, low;
-        for (const PoseKey &k : timeline.poseKeys()) {
-            for (auto it = k.offsetsEs0.cbegin(); it != k.offsetsEs0.cend(); ++it) {
-                const int i = pointIndex(it.key());
-                if (i < 0)
-                    continue;
-                QPointF &h = high.offset[i];
-                QPointF &l = low.offset[i];
-                h = QPointF(std::max(h.x(), it.value().x() * es0), std::max(h.y(), it.value().y() * es0));
-                l = QPointF(std::min(l.x(), it.value().x() * es0), std::min(l.y(), it.value().y() * es0));
-            }
-        }
-        probes.append({Track::Pose, high});
-        probes.append({Track::Pose, low});
-    }
-
     QVector<std::pair<Track, Pose>> bases {{Track(0), Pose {}}};
     for (const Probe &p : probes) {
         if (std::none_of(bases.cbegin(), bases.cend(), [&](const auto &b) { return b.first == p.track; }))

@@ -2,12 +2,16 @@
 
 #include "detect/detector.h"
 #include "document/autosaver.h"
+#include "playback/playhead.h"
+#include "timeline/timelinewidget.h"
 #include "views/photoview.h"
 #include "views/pointhandle.h"
+#include "views/previewview.h"
 #include "views/stepimagedialog.h"
 #include "window/detectionsteps.h"
 #include "window/mainwindow.h"
 #include "window/settings.h"
+#include "window/studio.h"
 
 #include "testphotos.h"
 #include <QAbstractButton>
@@ -15,9 +19,11 @@
 #include <QApplication>
 #include <QComboBox>
 
+#include <QDockWidget>
 #include <QFile>
 #include <QGraphicsPixmapItem>
 #include <QMenu>
+#include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QSignalSpy>
@@ -226,6 +232,37 @@ private Q_SLOTS:
         QCOMPARE(actions.first()->text(), QStringLiteral("portrait.toonface"));
         actions.first()->trigger();
         QTRY_COMPARE(m_window->document()->filePath(), m_projectPath);
+    }
+
+    // The animation studio is wired in: its menus, the timeline dock, the transport, and the
+    // preview following the studio's playhead.
+    void studioIsWiredIn()
+    {
+        makeWindow();
+        QStringList menus;
+        for (QAction *a : m_window->menuBar()->actions())
+            menus << a->text();
+        QVERIFY2(menus.indexOf(QStringLiteral("&Animation")) > 0, qPrintable(menus.join(u',')));
+        QVERIFY(menus.indexOf(QStringLiteral("&Playback")) > menus.indexOf(QStringLiteral("&Animation")));
+        QCOMPARE(menus.constLast(), QStringLiteral("&Help"));
+        Studio *studio = m_window->studio();
+        QVERIFY(studio->timelineDock());
+        QCOMPARE(m_window->dockWidgetArea(studio->timelineDock()), Qt::BottomDockWidgetArea);
+        QMenu *file = m_window->menuBar()->actions().constFirst()->menu();
+        QVERIFY(file->actions().contains(studio->exportAnimationAction()));
+        QVERIFY(studio->animationMenu()->actions().contains(m_window->previewView()->editPoseAction()));
+        // Without a face there is nothing to animate.
+        QVERIFY(!studio->exportAnimationAction()->isEnabled());
+        // The preview draws the pose at the studio's playhead.
+        if (!openPortrait())
+            return;
+        QVERIFY(studio->exportAnimationAction()->isEnabled());
+        Animation a = m_window->document()->animation();
+        a.timeline.addMouthKey(MouthKey {1.0, MouthShape::A, 1.0, 0.5});
+        m_window->document()->changeAnimation(a, QStringLiteral("Open the mouth"));
+        const QByteArray shut = m_window->previewView()->svg();
+        studio->playhead()->setTime(1.2);
+        QTRY_VERIFY(m_window->previewView()->svg() != shut);
     }
 
     void windowGeometryPersists()
@@ -553,6 +590,10 @@ private Q_SLOTS:
     void detectionStepsOfThePortraitShowOverThePhoto()
     {
         makeWindow();
+        // The photo at the size this check was made for: the docks closed, so that the view does
+        // not shrink the photo (a shrunk photo shows only some of its pixels).
+        for (QDockWidget *dock : m_window->findChildren<QDockWidget *>())
+            dock->close();
         if (!openPortrait())
             return;
         Document *doc = m_window->document();

@@ -12,6 +12,7 @@
 #include "window/detectionsteps.h"
 #include "window/detectiontask.h"
 #include "window/settings.h"
+#include "window/studio.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -32,6 +33,7 @@
 #include <QPushButton>
 #include <QSaveFile>
 #include <QScreen>
+#include <QScrollArea>
 #include <QSlider>
 #include <QSplitter>
 #include <QStatusBar>
@@ -114,7 +116,8 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
 
     m_photoView = new PhotoView(m_document);
     m_photoView->setObjectName(QStringLiteral("photoView"));
-    m_previewView = new PreviewView(m_document);
+    m_studio = new Studio(m_document, this);
+    m_previewView = new PreviewView(m_document, m_studio->playhead());
     m_previewView->setObjectName(QStringLiteral("previewView"));
     m_splitter = new QSplitter(Qt::Horizontal);
     m_splitter->setObjectName(QStringLiteral("splitter"));
@@ -126,13 +129,23 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
     setCentralWidget(m_splitter);
     auto *appearanceDock = new QDockWidget(tr("Appearance"), this);
     appearanceDock->setObjectName(QStringLiteral("appearanceDock"));
-    appearanceDock->setWidget(new AppearancePanel(m_document));
+    // Scrolled, so that its many controls never set the window's height.
+    auto *appearanceScroll = new QScrollArea;
+    appearanceScroll->setWidgetResizable(true);
+    appearanceScroll->setFrameShape(QFrame::NoFrame);
+    appearanceScroll->setWidget(new AppearancePanel(m_document));
+    appearanceDock->setWidget(appearanceScroll);
     addDockWidget(Qt::RightDockWidgetArea, appearanceDock);
 
     createActions();
     createMenus();
     createToolBar();
     createStatusBar();
+    m_studio->install(m_previewView, menuBar()->actions().constLast());
+    if (QMenu *file = menuBar()->actions().constFirst()->menu())
+        file->insertAction(m_exportAction, m_studio->exportAnimationAction());
+    connect(m_studio, &Studio::message, this,
+        [this](const QString &text) { statusBar()->showMessage(text, kStatusTimeoutMs); });
     restoreSettings();
 
     connect(m_document, &Document::changed, this, &MainWindow::onDocumentChanged);

@@ -31,6 +31,7 @@ class DetectionTask;
 class PhotoView;
 class PreviewView;
 class StepImageDialog;
+class Studio;
 
 // The editor window: the photo with its points beside the live cartoon, the menus, and the
 // wiring of the long jobs (opening, detection, export) that run off the GUI thread and come
@@ -54,6 +55,8 @@ public:
     PhotoView *photoView() const { return m_photoView; }
     PreviewView *previewView() const { return m_previewView; }
     Autosaver *autosaver() const { return m_autosaver; }
+    // The animation studio: playhead, playback, timeline dock, animation menus.
+    Studio *studio() const { return m_studio; }
     // The intermediate images of the last detection of the open photo.
     DetectionSteps *detectionSteps() const { return m_steps; }
 
@@ -147,6 +150,7 @@ private:
     DetectionTask *m_detection;
     PhotoView *m_photoView;
     PreviewView *m_previewView;
+    Studio *m_studio;
     QSplitter *m_splitter;
     DetectionSteps *m_steps;
     QString m_overlayStep; // the step drawn over the photo now

@@ -1,0 +1,153 @@
+#include "window/studio.h"
+
+#include "dialogs/blinksdialog.h"
+#include "dialogs/emotiondialog.h"
+#include "dialogs/exportanimationdialog.h"
+#include "dialogs/lipsyncdialog.h"
+#include "dialogs/mouthshapesdialog.h"
+#include "dialogs/saytextdialog.h"
+#include "document/document.h"
+#include "export/animationexport.h"
+#include "playback/playbackcontroller.h"
+#include "playback/playhead.h"
+#include "timeline/timelinewidget.h"
+#include "views/previewview.h"
+
+#include <QAction>
+#include <QDir>
+#include <QFileInfo>
+#include <QIcon>
+#include <QMainWindow>
+#include <QMenu>
+#include <QMenuBar>
+#include <QStandardPaths>
+#include <QToolBar>
+
+namespace toonface {
+
+namespace {
+
+QIcon themed(const char *name, const char *fallback)
+{
+    return QIcon::fromTheme(QString::fromLatin1(name), QIcon(QString::fromLatin1(fallback)));
+}
+
+} // namespace
+
+Studio::Studio(Document *document, QMainWindow *window)
+    : QObject(window)
+    , m_document(document)
+    , m_window(window)
+    , m_playhead(new Playhead(this))
+    , m_playback(new PlaybackController(document, m_playhead, this))
+{
+    connect(m_playback, &PlaybackController::message, this, &Studio::message);
+    connect(m_document, &Document::changed, this, [this](ChangeFlags what) {
+        if (what & (Change::Face | Change::Photo))
+            updateEnabled();
+    });
+}
+
+void Studio::install(PreviewView *preview, QAction *beforeMenu)
+{
+    m_timelineDock = new TimelineDock(m_document, m_playhead, m_window);
+    // A few rows at least; the dock scrolls the others, so it never sets the window's height.
+    m_timelineDock->widget()->setMinimumHeight(160);
+    m_window->addDockWidget(Qt::BottomDockWidgetArea, m_timelineDock);
+
+    m_lipSync = new QAction(
+        themed("audio-x-generic", ":/toonface/icons/emotion-neutral.svg"), tr("&Lip Sync from Recording…"), this);
+    m_lipSync->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+    m_lipSync->setStatusTip(tr("Time the mouth to a speech recording and its script"));
+    connect(m_lipSync, &QAction::triggered, this, [this] { LipSyncDialog::run(m_window, m_document); });
+    m_sayText = new QAction(themed("media-record", ":/toonface/icons/play.svg"), tr("&Say Text…"), this);
+    m_sayText->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
+    m_sayText->setStatusTip(tr("Speak a text with the built-in voice and lip-sync the face to it"));
+    connect(m_sayText, &QAction::triggered, this, [this] { SayTextDialog::run(m_window, m_document); });
+    m_addBlinks = new QAction(QIcon(QStringLiteral(":/toonface/icons/timeline-blinks.svg")), tr("Add &Blinks…"), this);
+    connect(m_addBlinks, &QAction::triggered, this, [this] { BlinksDialog::run(m_window, m_document); });
+    m_addEmotion = new QAction(QIcon(QStringLiteral(":/toonface/icons/emotion-smile.svg")), tr("Add &Emotion…"), this);
+    connect(m_addEmotion, &QAction::triggered, this, &Studio::addEmotion);
+    m_mouthShapes = new QAction(tr("&Mouth Shapes…"), this);
+    m_mouthShapes->setStatusTip(tr("Edit this character's nine mouth shapes"));
+    connect(m_mouthShapes, &QAction::triggered, this, [this] { MouthShapesDialog::run(m_window, m_document); });
+    m_exportAnimation
+        = new QAction(themed("document-export", ":/toonface/icons/toonface.svg"), tr("Export &Animation…"), this);
+    m_exportAnimation->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
+    m_exportAnimation->setStatusTip(tr("Export the animation as SVG, HTML, MP4, GIF or PNG frames"));
+    connect(m_exportAnimation, &QAction::triggered, this, &Studio::exportAnimation);
+
+    m_animationMenu = new QMenu(tr("&Animation"), m_window);
+    m_animationMenu->addAction(m_lipSync);
+    m_animationMenu->addAction(m_sayText);
+    m_animationMenu->addSeparator();
+    m_animationMenu->addAction(m_addEmotion);
+    m_animationMenu->addAction(m_addBlinks);
+    m_animationMenu->addAction(preview->editPoseAction());
+    m_animationMenu->addSeparator();
+    m_animationMenu->addAction(m_mouthShapes);
+    const TimelineActions &timeline = m_timelineDock->timeline()->timelineActions();
+    QMenu *edit = m_animationMenu->addMenu(tr("&Timeline"));
+    edit->addActions({timeline.copy, timeline.paste, timeline.deleteItems, timeline.selectAll});
+    edit->addSeparator();
+    edit->addActions({timeline.regenerateBlinks, timeline.addShake, timeline.addNod});
+    edit->addSeparator();
+    for (QAction *a : timeline.applyEmotion)
+        edit->addAction(a);
+    edit->addSeparator();
+    edit->addActions({timeline.snap, timeline.zoomIn, timeline.zoomOut, timeline.zoomToFit});
+    m_animationMenu->addSeparator();
+    m_animationMenu->addAction(m_exportAnimation);
+
+    m_playbackMenu = new QMenu(tr("&Playback"), m_window);
+    m_playbackMenu->addActions(m_playback->actions());
+    m_window->menuBar()->insertMenu(beforeMenu, m_animationMenu);
+    m_window->menuBar()->insertMenu(beforeMenu, m_playbackMenu);
+
+    m_transport = m_window->addToolBar(tr("Transport"));
+    m_transport->setObjectName(QStringLiteral("transportToolBar"));
+    m_transport->addActions(m_playback->actions());
+    m_transport->addSeparator();
+    m_transport->addAction(m_lipSync);
+    m_transport->addAction(preview->editPoseAction());
+    m_transport->addAction(m_exportAnimation);
+    // The transport's shortcuts (Space, arrows, Home, End) work anywhere in the window.
+    m_window->addActions(m_playback->actions());
+    updateEnabled();
+}
+
+QString Studio::defaultExportPath(const QString &suffix) const
+{
+    const QString from = !m_document->filePath().isEmpty() ? m_document->filePath() : m_document->project().photoPath;
+    if (from.isEmpty())
+        return QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation))
+            .filePath(QStringLiteral("animation.") + suffix);
+    const QFileInfo info(from);
+    return info.absoluteDir().filePath(info.completeBaseName() + QLatin1Char('.') + suffix);
+}
+
+void Studio::exportAnimation()
+{
+    m_playback->pause();
+    ExportRequest base = exportRequestFor(m_document->project());
+    base.outputPath = defaultExportPath(QStringLiteral("mp4"));
+    const QString written = ExportAnimationDialog::run(m_window, base);
+    if (!written.isEmpty())
+        Q_EMIT message(tr("Exported %1").arg(QDir::toNativeSeparators(written)));
+}
+
+void Studio::addEmotion()
+{
+    EmotionDialog::run(m_window, m_document);
+}
+
+void Studio::updateEnabled()
+{
+    const bool face = m_document->hasFace();
+    for (QAction *a : {m_lipSync, m_sayText, m_addBlinks, m_addEmotion, m_mouthShapes, m_exportAnimation}) {
+        if (a)
+            a->setEnabled(face);
+    }
+}
+
+} // namespace toonface
