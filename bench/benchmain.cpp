@@ -1,8 +1,8 @@
 #include "benchmark.h"
 
+#include <QApplication>
 #include <QDir>
 #include <QFileInfo>
-#include <QApplication>
 #include <QJsonDocument>
 #include <QProcess>
 #include <QTextStream>

@@ -112,7 +112,8 @@ int runAnimate(const Command &self, const QStringList &args)
     const QFileInfo outInfo(parser.value(output));
     const QString workDir
         = *format == AnimationFormat::PngSequence ? QDir(parser.value(output)).absolutePath() : outInfo.absolutePath();
-    const QString outputBase = *format == AnimationFormat::PngSequence ? QStringLiteral("speech") : outInfo.completeBaseName();
+    const QString outputBase
+        = *format == AnimationFormat::PngSequence ? QStringLiteral("speech") : outInfo.completeBaseName();
 
     FaceInput input;
     TrackResult track;
