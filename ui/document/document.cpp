@@ -1,7 +1,6 @@
 #include "document/document.h"
 
 #include "document/changeanimationcommand.h"
-#include "document/changemouthshapescommand.h"
 #include "document/changestylecommand.h"
 #include "document/loadedfile.h"
 #include "document/movepointcommand.h"
@@ -116,14 +115,16 @@ void Document::changeAnimation(const Animation &after, const QString &text, int 
 {
     if (mergeId == 0 && after == animation())
         return;
-    m_undoStack->push(new ChangeAnimationCommand(this, after, text, mergeId, commit));
+    m_undoStack->push(
+        new ChangeAnimationCommand(this, &Document::applyAnimation, animation(), after, text, mergeId, commit));
 }
 
 void Document::changeMouthShapes(const MouthShapeSet &shapes, const QString &text, int mergeId, bool commit)
 {
     if (mergeId == 0 && shapes == m_project.mouthShapes)
         return;
-    m_undoStack->push(new ChangeMouthShapesCommand(this, shapes, text, mergeId, commit));
+    m_undoStack->push(new ChangeMouthShapesCommand(
+        this, &Document::applyMouthShapes, m_project.mouthShapes, shapes, text, mergeId, commit));
 }
 
 void Document::applyAnimation(const Animation &animation)
