@@ -60,14 +60,7 @@ int runDetect(const Command &self, const QStringList &args)
         return code;
     const QByteArray json
         = QJsonDocument(faceToJson(input.face, input.photoPath, &input.detection)).toJson(QJsonDocument::Indented);
-    if (!parser.isSet(output)) {
-        QTextStream(stdout) << json;
-        return ExitOk;
-    }
-    QString error;
-    if (!writeFileAtomically(parser.value(output), json, &error))
-        return fail(ExitFailed, error);
-    return ExitOk;
+    return writeOutput(parser, output, json);
 }
 
 const CommandRegistrar registrar({QStringLiteral("detect"),

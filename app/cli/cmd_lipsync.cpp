@@ -46,14 +46,7 @@ int runLipsync(const Command &self, const QStringList &args)
     const bool tsv = parser.isSet(output) && QFileInfo(parser.value(output)).suffix().toLower() == QLatin1String("tsv");
     const QByteArray data
         = tsv ? lipsyncToTsv(out.result) : QJsonDocument(lipsyncToJson(out.result)).toJson(QJsonDocument::Indented);
-    if (!parser.isSet(output)) {
-        QTextStream(stdout) << data;
-        return ExitOk;
-    }
-    QString error;
-    if (!writeFileAtomically(parser.value(output), data, &error))
-        return fail(ExitFailed, error);
-    return ExitOk;
+    return writeOutput(parser, output, data);
 }
 
 const CommandRegistrar registrar({QStringLiteral("lipsync"),

@@ -31,14 +31,8 @@ int runTrack(const Command &self, const QStringList &args)
     if (const int code = trackClip(parser.positionalArguments().constFirst(), options, &track); code != ExitOk)
         return code;
     const QByteArray json = QJsonDocument(trackToJson(track)).toJson(QJsonDocument::Compact);
-    if (!parser.isSet(output)) {
-        QTextStream(stdout) << json << '\n';
-        return ExitOk;
-    }
-    QString error;
-    if (!writeFileAtomically(parser.value(output), json, &error))
-        return fail(ExitFailed, error);
-    return ExitOk;
+    // On a terminal the compact line ends with a newline; the file holds the JSON alone.
+    return writeOutput(parser, output, parser.isSet(output) ? json : json + '\n');
 }
 
 const CommandRegistrar registrar({QStringLiteral("track"),

@@ -54,6 +54,18 @@ bool parseArguments(QCommandLineParser &parser, const Command &command, const QS
     return true;
 }
 
+int writeOutput(const QCommandLineParser &parser, const QCommandLineOption &output, const QByteArray &data)
+{
+    if (!parser.isSet(output)) {
+        QTextStream(stdout) << data;
+        return ExitOk;
+    }
+    QString error;
+    if (!writeFileAtomically(parser.value(output), data, &error))
+        return fail(ExitFailed, error);
+    return ExitOk;
+}
+
 bool writeFileAtomically(const QString &path, const QByteArray &data, QString *error)
 {
     QSaveFile file(path);

@@ -52,5 +52,8 @@ bool parseArguments(QCommandLineParser &parser, const Command &command, const QS
 
 // Writes `data` atomically to `path` (QSaveFile); on failure sets *error naming the file.
 bool writeFileAtomically(const QString &path, const QByteArray &data, QString *error);
+// A command's result: written atomically to the file of the `output` option when it is set,
+// else to stdout. Returns ExitOk, or prints the error line and returns ExitFailed.
+int writeOutput(const QCommandLineParser &parser, const QCommandLineOption &output, const QByteArray &data);
 
 } // namespace toonface::cli

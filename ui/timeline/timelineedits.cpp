@@ -501,26 +501,33 @@ Animation deleteItems(const Animation &animation, const Selection &selection)
     return out;
 }
 
-Animation setMouthShape(const Animation &animation, const QVector<int> &keys, MouthShape shape)
+namespace {
+
+// `animation` with `change` applied to each of its mouth keys at `keys` (indices out of range
+// are passed over).
+template<typename Change>
+Animation withMouthKeys(const Animation &animation, const QVector<int> &keys, Change change)
 {
     Animation out = animation;
     QVector<MouthKey> mouth = out.timeline.mouthKeys();
     for (int i : keys)
         if (i >= 0 && i < mouth.size())
-            mouth[i].shape = shape;
+            change(mouth[i]);
     out.timeline.setMouthKeys(mouth);
     return out;
 }
 
+} // namespace
+
+Animation setMouthShape(const Animation &animation, const QVector<int> &keys, MouthShape shape)
+{
+    return withMouthKeys(animation, keys, [shape](MouthKey &k) { k.shape = shape; });
+}
+
 Animation setMouthWeight(const Animation &animation, const QVector<int> &keys, double weight)
 {
-    Animation out = animation;
-    QVector<MouthKey> mouth = out.timeline.mouthKeys();
-    for (int i : keys)
-        if (i >= 0 && i < mouth.size())
-            mouth[i].weight = std::clamp(weight, 0.0, 1.0);
-    out.timeline.setMouthKeys(mouth);
-    return out;
+    const double w = std::clamp(weight, 0.0, 1.0);
+    return withMouthKeys(animation, keys, [w](MouthKey &k) { k.weight = w; });
 }
 
 Animation insertMouthKey(const Animation &animation, double time, MouthShape shape, double minSpan, int *index)
