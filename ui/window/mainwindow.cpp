@@ -8,6 +8,7 @@
 #include "views/photoview.h"
 #include "views/pointhandle.h"
 #include "views/previewview.h"
+#include "views/themedicon.h"
 #include "window/detectionsteps.h"
 #include "window/detectionstepsui.h"
 #include "window/detectiontask.h"
@@ -203,14 +204,15 @@ void MainWindow::createActions()
     };
 
     m_openAction = make(QStringLiteral("actionOpen"), tr("&Open Photo or Project…"), QKeySequence::Open);
-    m_openAction->setIcon(QIcon::fromTheme(QStringLiteral("document-open")));
+    m_openAction->setIcon(themedIcon("document-open", "document-open.svg"));
     connect(m_openAction, &QAction::triggered, this, &MainWindow::openDialog);
     m_saveAction = make(QStringLiteral("actionSave"), tr("&Save"), QKeySequence::Save);
-    m_saveAction->setIcon(QIcon::fromTheme(QStringLiteral("document-save")));
+    m_saveAction->setIcon(themedIcon("document-save", "document-save.svg"));
     connect(m_saveAction, &QAction::triggered, this, &MainWindow::save);
     m_saveAsAction = make(QStringLiteral("actionSaveAs"), tr("Save &As…"), QKeySequence::SaveAs);
     connect(m_saveAsAction, &QAction::triggered, this, &MainWindow::saveAs);
     m_exportAction = make(QStringLiteral("actionExport"), tr("&Export Cartoon…"), QKeySequence(Qt::CTRL | Qt::Key_E));
+    m_exportAction->setIcon(themedIcon("image-x-generic", "toonface.svg"));
     connect(m_exportAction, &QAction::triggered, this, &MainWindow::exportCartoon);
     m_quitAction = make(QStringLiteral("actionQuit"), tr("&Quit"), QKeySequence::Quit);
     m_quitAction->setMenuRole(QAction::QuitRole);
@@ -219,14 +221,15 @@ void MainWindow::createActions()
     m_undoAction = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
     m_undoAction->setObjectName(QStringLiteral("actionUndo"));
     m_undoAction->setShortcut(QKeySequence::Undo);
-    m_undoAction->setIcon(QIcon::fromTheme(QStringLiteral("edit-undo")));
+    m_undoAction->setIcon(themedIcon("edit-undo", "edit-undo.svg"));
     m_redoAction = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
     m_redoAction->setObjectName(QStringLiteral("actionRedo"));
     m_redoAction->setShortcut(QKeySequence::Redo);
-    m_redoAction->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo")));
+    m_redoAction->setIcon(themedIcon("edit-redo", "edit-redo.svg"));
     m_redetectAction
         = make(QStringLiteral("actionRedetect"), tr("Re-&detect Points"), QKeySequence(Qt::CTRL | Qt::Key_D));
     m_redetectAction->setToolTip(tr("Detect the face again and replace every point"));
+    m_redetectAction->setIcon(themedIcon("view-refresh", "redetect.svg"));
     connect(m_redetectAction, &QAction::triggered, this, [this] { startDetection(false); });
     m_redetectKeepAction = make(QStringLiteral("actionRedetectKeep"), tr("Re-detect &Keeping My Points"),
         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
@@ -271,10 +274,10 @@ void MainWindow::createActions()
         = make(QStringLiteral("actionActualSize"), tr("&Actual Size"), QKeySequence(Qt::CTRL | Qt::Key_1));
     connect(m_actualSizeAction, &QAction::triggered, m_photoView, &PhotoView::zoomToActualSize);
     m_fitAction = make(QStringLiteral("actionFit"), tr("&Fit to Window"), QKeySequence(Qt::CTRL | Qt::Key_0));
-    m_fitAction->setIcon(QIcon::fromTheme(QStringLiteral("zoom-fit-best")));
+    m_fitAction->setIcon(themedIcon("zoom-fit-best", "zoom-fit.svg"));
     connect(m_fitAction, &QAction::triggered, m_photoView, &PhotoView::fitToWindow);
     m_zoomFaceAction = make(QStringLiteral("actionZoomFace"), tr("Zoom to F&ace"), QKeySequence(Qt::CTRL | Qt::Key_2));
-    m_zoomFaceAction->setIcon(QIcon::fromTheme(QStringLiteral("zoom-in")));
+    m_zoomFaceAction->setIcon(themedIcon("zoom-in", "zoom-face.svg"));
     connect(m_zoomFaceAction, &QAction::triggered, m_photoView, &PhotoView::zoomToFace);
     m_showIdsAction = make(QStringLiteral("actionShowIds"), tr("Show Point &IDs"), QKeySequence(Qt::CTRL | Qt::Key_I));
     m_showIdsAction->setCheckable(true);
@@ -337,7 +340,9 @@ void MainWindow::createToolBar()
 {
     QToolBar *bar = addToolBar(tr("Main"));
     bar->setObjectName(QStringLiteral("mainToolBar"));
-    bar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    // Icons only (each says what it does in its tool tip), so that the studio's transport fits beside
+    // it on a 1280-pixel screen.
+    bar->setToolButtonStyle(Qt::ToolButtonIconOnly);
     bar->addAction(m_openAction);
     bar->addAction(m_saveAction);
     bar->addSeparator();
