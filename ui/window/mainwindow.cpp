@@ -3,7 +3,6 @@
 #include "appearance/appearancepanel.h"
 #include "document/autosaver.h"
 #include "export/cartoonfile.h"
-#include "face/averageface.h"
 #include "render/svgface.h"
 #include "views/photoview.h"
 #include "views/pointhandle.h"
@@ -13,6 +12,7 @@
 #include "window/detectionsteps.h"
 #include "window/detectionstepsui.h"
 #include "window/detectiontask.h"
+#include "window/questions.h"
 #include "window/settings.h"
 #include "window/studio.h"
 
@@ -27,7 +27,6 @@
 #include <QFileInfo>
 #include <QImageReader>
 #include <QLabel>
-#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -143,27 +142,13 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
     connect(m_detection, &DetectionTask::cancelled, this, &MainWindow::onDetectionCancelled);
     connect(m_steps, &DetectionSteps::changed, this, &MainWindow::updateDetectionStepsEnabled);
 
-    if (m_options.preloadLandmarkModel) {
-        // The model and the face detector made ready in the background (at once, when the
-        // application's start already began it), so that the first photo's points come as
-        // fast as any later one's. The watcher only waits for the model, to say when it is
-        // unavailable.
-        warmUpDetection();
-        auto *watcher = new QFutureWatcher<QString>(this);
-        connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
-            watcher->deleteLater();
-            const QString error = watcher->result();
-            if (!error.isEmpty())
-                statusBar()->showMessage(
-                    tr("Landmark model unavailable (%1): detection may fail, but points can be placed by hand.")
-                        .arg(error),
-                    kStatusTimeoutMs);
-        });
-        watcher->setFuture(QtConcurrent::run([] {
-            QString error;
-            return preloadLandmarkModel(&error) ? QString() : error;
-        }));
-    }
+    connect(m_detection, &DetectionTask::preloadFailed, this, [this](const QString &error) {
+        statusBar()->showMessage(
+            tr("Landmark model unavailable (%1): detection may fail, but points can be placed by hand.").arg(error),
+            kStatusTimeoutMs);
+    });
+    if (m_options.preloadLandmarkModel)
+        m_detection->preload();
 
     onDocumentChanged(Change::Photo | Change::Face | Change::Style | Change::FileState);
     updateDetectionStepsEnabled();
@@ -393,18 +378,7 @@ void MainWindow::startup(const QString &path)
         m_options.recoveryDirectory.isEmpty() ? Autosaver::defaultDirectory() : m_options.recoveryDirectory);
     if (!leftovers.isEmpty()) {
         const RecoveryFile &newest = leftovers.first();
-        const QString name
-            = newest.originalPath.isEmpty() ? tr("an untitled project") : QFileInfo(newest.originalPath).fileName();
-        QMessageBox box(QMessageBox::Question, tr("Restore Unsaved Work"),
-            tr("Toonface did not close properly. Unsaved work on %1 from %2 was kept.")
-                .arg(name, QLocale().toString(newest.written, QLocale::ShortFormat)),
-            QMessageBox::NoButton, this);
-        box.setInformativeText(tr("Restore it? Discarding deletes the kept copy."));
-        QPushButton *restore = box.addButton(tr("&Restore"), QMessageBox::AcceptRole);
-        box.addButton(tr("&Discard"), QMessageBox::DestructiveRole);
-        box.setDefaultButton(restore);
-        box.exec();
-        if (box.clickedButton() == restore) {
+        if (askToRestore(this, newest)) {
             startLoading(newest.path, newest);
             return;
         }
@@ -537,7 +511,7 @@ void MainWindow::onDetectionFinished(const DetectionResult &result)
             QMessageBox::warning(this, tr("Detection Failed"),
                 m_document->hasFace() ? tr("%1\nThe points are unchanged.").arg(result.error) : result.error);
         else // no face, or no detector able to look for one: the user can still place the points
-            offerAverageFace(result.error);
+            offerAverageFace(this, m_document, result.error);
         Q_EMIT detectionDone();
         return;
     }
@@ -554,26 +528,6 @@ void MainWindow::onDetectionCancelled()
         setBusy(Job::None, {});
     statusBar()->showMessage(tr("Detection cancelled."), kStatusTimeoutMs);
     Q_EMIT detectionDone();
-}
-
-void MainWindow::offerAverageFace(const QString &reason)
-{
-    // The detector's reason already says what was missing: say it once, naming the file.
-    const QString text = reason.isEmpty() ? tr("No face was found in %1.").arg(m_document->displayName())
-                                          : tr("%1: %2").arg(m_document->displayName(), reason);
-    QMessageBox box(QMessageBox::Information, tr("No Face Found"), text, QMessageBox::NoButton, this);
-    box.setInformativeText(tr("You can place an average face on the photo and drag its points into place by hand."));
-    QPushButton *place = box.addButton(tr("&Place Average Face"), QMessageBox::AcceptRole);
-    box.addButton(QMessageBox::Cancel);
-    box.setDefaultButton(place);
-    box.exec();
-    if (box.clickedButton() != place)
-        return;
-    const QSizeF size = m_document->canvasSize();
-    const double width = 0.4 * std::min(size.width(), size.height());
-    QRectF faceBox(0, 0, width, 1.2 * width);
-    faceBox.moveCenter(QPointF(size.width() / 2, size.height() / 2));
-    m_document->replaceFace(averageFace(faceBox, m_document->canvasSize()), false, tr("Place average face"));
 }
 
 void MainWindow::cancelJob()
