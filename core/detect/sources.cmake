@@ -3,6 +3,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   detect/faceregions.h detect/faceregions.cpp
   detect/appearance.h detect/appearance.cpp
   detect/hairsearch.h detect/hairsearch.cpp
+  detect/labcolour.h detect/labcolour.cpp
   detect/headregions.h detect/headregions.cpp
   detect/landmarkmap.h detect/landmarkmap.cpp
   detect/landmarkfit.h
