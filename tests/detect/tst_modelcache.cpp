@@ -84,6 +84,7 @@ private Q_SLOTS:
     void damagedCacheRejectedAndRebuilt_data();
     void damagedCacheRejectedAndRebuilt();
     void damagedBlockNeverTrusted();
+    void cacheWrittenLater();
     void unwritableCacheStillLoads();
     void staleTemporaryFilesRemoved();
     void concurrentThreadsLeaveOneCache();
@@ -145,6 +146,38 @@ void TestModelCache::builtOnFirstUseThenReused()
     QCOMPARE(second.cachePath, first.cachePath);
     QCOMPARE(QFileInfo(first.cachePath).lastModified(), written);
     QCOMPARE(entriesOf(m_cacheDir).size(), 1);
+}
+
+// Asked to, the load leaves the cache's writing to its caller: the model first, the file
+// once the writing runs, and a cache then that a later load uses.
+void TestModelCache::cacheWrittenLater()
+{
+    LandmarkModelLoad first = loadLandmarkModel(m_model, m_cacheDir, CacheWrite::Later);
+    QVERIFY2(first.model, qPrintable(first.error));
+    QVERIFY(first.writeCache);
+    QVERIFY(!QFileInfo::exists(first.cachePath));
+    first.writeCache(&first);
+    QCOMPARE(first.cache, Cache::Built);
+    QCOMPARE(QFileInfo(first.cachePath).size(), qint64(first.model->flat().size()) + 64);
+    const LandmarkModelLoad second = loadLandmarkModel(m_model, m_cacheDir, CacheWrite::Later);
+    QCOMPARE(second.cache, Cache::Used);
+    QVERIFY(!second.writeCache); // nothing to write
+    const QImage gray = testImage();
+    QCOMPARE(largestDifference(predictOn(*first.model, gray, QRect(60, 40, 150, 150)),
+                 predictOn(*second.model, gray, QRect(60, 40, 150, 150))),
+        0.0);
+
+    // A folder that cannot be made: the writing says why, and the model is still there.
+    QFile blocker(m_dir->filePath(QStringLiteral("blocker")));
+    QVERIFY(blocker.open(QIODevice::WriteOnly));
+    blocker.close();
+    LandmarkModelLoad blocked
+        = loadLandmarkModel(m_model, m_dir->filePath(QStringLiteral("blocker/cache")), CacheWrite::Later);
+    QVERIFY(blocked.model);
+    QVERIFY(blocked.writeCache);
+    blocked.writeCache(&blocked);
+    QCOMPARE(blocked.cache, Cache::NotWritten);
+    QVERIFY2(blocked.cacheNote.contains(QStringLiteral("blocker")), qPrintable(blocked.cacheNote));
 }
 
 void TestModelCache::cachedModelGivesTheSamePoints()
