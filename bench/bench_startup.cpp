@@ -7,6 +7,7 @@
 #include "benchmark.h"
 
 #include "detect/detector.h"
+#include "detect/facescan.h"
 #include "detect/modelcache.h"
 
 #include <QDir>
@@ -128,11 +129,13 @@ QJsonObject timeProcess(
         {QStringLiteral("wallMs"), toArray(wall)}};
 }
 
-// A model cache made once for the whole-process measurements that want it warm.
+// The caches (the landmark model's and the face detector's) made once for the whole-process
+// measurements that want them warm.
 QString warmCacheIn(const QDir &scratch)
 {
     const QString dir = scratch.filePath(QStringLiteral("warm-cache"));
     loadLandmarkModel(landmarkModelPath(), dir);
+    loadFaceDetector(dir);
     return dir;
 }
 
