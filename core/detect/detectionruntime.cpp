@@ -5,6 +5,8 @@
 
 #include <QCoreApplication>
 
+#include <opencv2/core/utility.hpp>
+
 #include <future>
 #include <mutex>
 #include <thread>
@@ -16,6 +18,15 @@ namespace {
 // The first pass of a detection scans a copy of the photo whose shorter side is 240 pixels
 // (detector.cpp): a 4:3 frame of that height is what the warm-up scans.
 constexpr QSize kFirstPassSize(320, 240);
+
+// OpenCV's first parallel loop starts its pool of threads (TBB's here: a library loaded,
+// workers started; 10-30 ms, more than the detection's whole regions stage), and the
+// regions' connected components run the first of a detection: started here instead, beside
+// the other one-time work.
+void startParallelLoops()
+{
+    cv::parallel_for_(cv::Range(0, 2), [](const cv::Range &) {});
+}
 
 struct SharedModel
 {
@@ -34,7 +45,7 @@ SharedModel &sharedModel()
 // The warm-up's two threads: one makes the face detector ready (decoding it takes 0.4 s when
 // its cache is not made yet), scans a blank frame, then runs the stages after the landmarks
 // once; the other loads the landmark model (0.2 s to read dlib's file when its cache is not
-// made yet) and writes its cache. With the caller's thread going on with its own start-up,
+// made yet), writes its cache and starts OpenCV's threads. With the caller's thread going on with its own start-up,
 // the two cores of a small machine are both at work, and a first run that makes both caches
 // pays for the longer of the two, not their sum.
 class WarmUp
@@ -58,7 +69,10 @@ public:
                 warmUpFaceRefinement();
                 m_refinementDone.set_value();
             });
-            m_model = std::thread([] { sharedLandmarkModel(nullptr); });
+            m_model = std::thread([] {
+                sharedLandmarkModel(nullptr);
+                startParallelLoops();
+            });
         });
     }
 
