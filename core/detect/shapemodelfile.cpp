@@ -113,6 +113,8 @@ public:
     std::pair<qint64, qint64> matrixSize()
     {
         qint64 rows = signedInt<qint64>(), columns = signedInt<qint64>();
+        if (rows == std::numeric_limits<qint64>::min() || columns == std::numeric_limits<qint64>::min())
+            malformed("a matrix of impossible size");
         if (rows < 0 || columns < 0) {
             rows = -rows;
             columns = -columns;
