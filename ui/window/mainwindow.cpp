@@ -2,13 +2,14 @@
 
 #include "appearance/appearancepanel.h"
 #include "document/autosaver.h"
-#include "document/undomacro.h"
+#include "export/cartoonfile.h"
 #include "face/averageface.h"
 #include "render/svgface.h"
 #include "views/photoview.h"
 #include "views/pointhandle.h"
 #include "views/previewview.h"
 #include "views/themedicon.h"
+#include "window/applydetection.h"
 #include "window/detectionsteps.h"
 #include "window/detectionstepsui.h"
 #include "window/detectiontask.h"
@@ -32,7 +33,6 @@
 #include <QMimeData>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QScreen>
 #include <QScrollArea>
 #include <QSlider>
@@ -66,28 +66,6 @@ bool isOpenablePath(const QString &path)
         return true;
     const QByteArray suffix = QFileInfo(path).suffix().toLower().toLatin1();
     return QImageReader::supportedImageFormats().contains(suffix);
-}
-
-// Writes the cartoon to `path` (.svg as is, anything else rasterised at `size`); returns an
-// error message or an empty string. Runs off the GUI thread.
-QString writeCartoon(const QByteArray &svg, QSize size, const QString &path)
-{
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return QCoreApplication::translate("MainWindow", "%1: cannot write: %2").arg(path, file.errorString());
-    if (QFileInfo(path).suffix().compare(QLatin1StringView("svg"), Qt::CaseInsensitive) == 0) {
-        if (file.write(svg) != svg.size())
-            return QCoreApplication::translate("MainWindow", "%1: cannot write: %2").arg(path, file.errorString());
-    } else {
-        const QImage image = rasterizeSvg(svg, size);
-        if (image.isNull())
-            return QCoreApplication::translate("MainWindow", "%1: the cartoon could not be drawn").arg(path);
-        if (!image.save(&file, QFileInfo(path).suffix().toLatin1().constData()))
-            return QCoreApplication::translate("MainWindow", "%1: cannot encode the image").arg(path);
-    }
-    if (!file.commit())
-        return QCoreApplication::translate("MainWindow", "%1: cannot write: %2").arg(path, file.errorString());
-    return {};
 }
 
 } // namespace
@@ -533,42 +511,18 @@ void MainWindow::applyDetectedFace(const DetectionResult &result)
 {
     m_photoView->setOtherFaces(result.otherFaces);
     const bool showOtherFaces = !result.otherFaces.isEmpty() && !m_document->hasFace();
-    if (!m_document->hasFace() || m_detectChoosesFace) {
-        // The first face of a photo, or another person in it: the points and the colours
-        // sampled under them, one step.
-        const QString text = m_detectChoosesFace ? tr("Use another face") : tr("Detect face");
-        Style style = m_document->style();
-        style.sampleColours(m_document->photo(), result.face);
-        const UndoMacro step(m_document->undoStack(), text);
-        m_document->replaceFace(result.face, false, text);
-        m_document->changeStyle(style, tr("Sample colours"));
-    } else {
-        m_document->replaceFace(result.face, m_detectKeepsHandPlaced,
-            m_detectKeepsHandPlaced ? tr("Re-detect keeping my points") : tr("Re-detect points"));
-    }
+    const DetectionUse use = !m_document->hasFace() || m_detectChoosesFace ? DetectionUse::NewFace
+        : m_detectKeepsHandPlaced                                          ? DetectionUse::KeepHandPlaced
+                                                                           : DetectionUse::Replace;
+    applyDetection(m_document, result, use, m_detectChoosesFace);
     // A photo of several people, first seen: the whole photo, so that the other faces' boxes
     // can be clicked.
     if (showOtherFaces)
         m_photoView->fitToWindow();
-    const int ms = qRound(result.timingMs.value(QStringLiteral("total")));
-    QString found;
-    if (result.faceCount <= 1)
-        found = tr("Face found by the %1 method in %2 ms.").arg(result.method).arg(ms);
-    else if (m_detectChoosesFace)
-        found = tr("%n faces found: using the one you chose (%1, %2 ms).", nullptr, result.faceCount)
-                    .arg(result.method)
-                    .arg(ms);
-    else
-        found = tr("%n faces found: using the largest, most central one (%1, %2 ms). Click another face's box "
-                   "to switch.",
-            nullptr, result.faceCount)
-                    .arg(result.method)
-                    .arg(ms);
-    // Auto fell back to the thesis' pipeline: say why. That, and the choice of faces, stay up
-    // until the next message.
-    if (!result.note.isEmpty())
-        found += QLatin1Char(' ') + tr("The landmark method could not serve: %1").arg(result.note);
-    statusBar()->showMessage(found, result.note.isEmpty() && result.faceCount <= 1 ? kStatusTimeoutMs : 0);
+    // Auto's fallback to the thesis' pipeline, and the choice of faces, stay up until the next
+    // message.
+    statusBar()->showMessage(detectionSummary(result, m_detectChoosesFace),
+        result.note.isEmpty() && result.faceCount <= 1 ? kStatusTimeoutMs : 0);
     Q_EMIT pointsPlaced();
 }
 
@@ -727,7 +681,11 @@ void MainWindow::exportTo(const QString &path)
             QMessageBox::warning(this, tr("Cannot Export"), error);
         Q_EMIT exported(path, error);
     });
-    watcher->setFuture(QtConcurrent::run([svg, size, path] { return writeCartoon(svg, size, path); }));
+    watcher->setFuture(QtConcurrent::run([svg, size, path] {
+        QString error;
+        writeCartoonFile(svg, size, path, &error);
+        return error;
+    }));
 }
 
 bool MainWindow::maybeSave()
