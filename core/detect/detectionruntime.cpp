@@ -5,6 +5,8 @@
 
 #include <QCoreApplication>
 
+#include <opencv2/core/utility.hpp>
+
 #include <future>
 #include <mutex>
 #include <thread>
@@ -16,6 +18,15 @@ namespace {
 // The first pass of a detection scans a copy of the photo whose shorter side is 240 pixels
 // (detector.cpp): a 4:3 frame of that height is what the warm-up scans.
 constexpr QSize kFirstPassSize(320, 240);
+
+// OpenCV's first parallel loop starts its pool of threads (TBB's here: a library loaded,
+// workers started; 10-30 ms, more than the detection's whole regions stage), and the
+// regions' connected components run the first of a detection: started here instead, beside
+// the other one-time work.
+void startParallelLoops()
+{
+    cv::parallel_for_(cv::Range(0, 2), [](const cv::Range &) {});
+}
 
 struct SharedModel
 {
@@ -31,10 +42,12 @@ SharedModel &sharedModel()
     return shared;
 }
 
-// The warm-up's two threads: one makes the colour stages ready (OpenCV's colour tables alone
-// take about 0.2 s, so it starts at once), the other loads the model and the face detector
-// and scans a blank frame. With the caller's thread going on with its own start-up, the two
-// cores of a small machine are both at work.
+// The warm-up's two threads: one makes the face detector ready (decoding it takes 0.4 s when
+// its cache is not made yet), scans a blank frame, then runs the stages after the landmarks
+// once; the other loads the landmark model (0.2 s to read dlib's file when its cache is not
+// made yet), writes its cache and starts OpenCV's threads. With the caller's thread going on with its own start-up,
+// the two cores of a small machine are both at work, and a first run that makes both caches
+// pays for the longer of the two, not their sum.
 class WarmUp
 {
 public:
@@ -52,12 +65,13 @@ public:
             std::lock_guard lock(m_mutex);
             m_refinementReady = m_refinementDone.get_future().share();
             m_stages = std::thread([this] {
+                warmUpFaceScan(kFirstPassSize);
                 warmUpFaceRefinement();
                 m_refinementDone.set_value();
             });
             m_model = std::thread([] {
                 sharedLandmarkModel(nullptr);
-                warmUpFaceScan(kFirstPassSize);
+                startParallelLoops();
             });
         });
     }
@@ -105,7 +119,7 @@ std::shared_ptr<const LandmarkPredictor> sharedLandmarkModel(QString *error, Lan
 {
     const QString path = landmarkModelPath();
     SharedModel &shared = sharedModel();
-    std::lock_guard lock(shared.mutex);
+    std::unique_lock lock(shared.mutex);
     if (shared.model && shared.path == path) {
         if (load) {
             *load = shared.load;
@@ -113,10 +127,12 @@ std::shared_ptr<const LandmarkPredictor> sharedLandmarkModel(QString *error, Lan
         }
         return shared.model;
     }
-    LandmarkModelLoad loaded = loadLandmarkModel(path, detectionCacheDir());
-    if (load)
-        *load = loaded;
+    LandmarkModelLoad loaded = loadLandmarkModel(path, detectionCacheDir(), CacheWrite::Later);
+    const auto writeCache = std::move(loaded.writeCache);
+    loaded.writeCache = nullptr;
     if (!loaded.model) {
+        if (load)
+            *load = loaded;
         if (error)
             *error = loaded.error;
         return {};
@@ -124,7 +140,20 @@ std::shared_ptr<const LandmarkPredictor> sharedLandmarkModel(QString *error, Lan
     shared.path = path;
     shared.model = loaded.model;
     shared.load = loaded;
-    return shared.model;
+    if (writeCache) {
+        // The model is handed on first: a detection waiting for it goes on while its cache is
+        // written (on the warm-up's thread, when the warm-up loaded it).
+        lock.unlock();
+        writeCache(&loaded);
+        lock.lock();
+        if (shared.model == loaded.model) {
+            shared.load.cache = loaded.cache;
+            shared.load.cacheNote = loaded.cacheNote;
+        }
+    }
+    if (load)
+        *load = loaded;
+    return loaded.model;
 }
 
 bool preloadLandmarkModel(QString *error, double *loadMs)

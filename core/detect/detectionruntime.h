@@ -22,13 +22,13 @@ namespace toonface {
 std::shared_ptr<const LandmarkPredictor> sharedLandmarkModel(QString *error, LandmarkModelLoad *load = nullptr);
 
 // Runs the stages after the landmarks (hair, regions) once on a made-up portrait with the
-// average face, so that their one-time work (tables, OpenCV's colour tables, first
-// allocations) is done; needs no model (detector.cpp).
+// average face, so that their one-time work (tables, first allocations) is done; needs no
+// model (detector.cpp).
 void warmUpFaceRefinement();
 
 // Waits until the warm-up's run of those stages has ended, when one is under way (at once
-// otherwise). OpenCV makes its colour tables without a lock: a detection reaching them while
-// the warm-up makes them would make them a second time beside it, so it waits instead.
+// otherwise): a detection reaching them meanwhile would do their one-time work a second time
+// beside the warm-up, on a machine whose cores the start-up keeps busy.
 void awaitFaceRefinementWarmUp();
 
 } // namespace toonface

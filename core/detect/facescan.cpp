@@ -207,29 +207,42 @@ public:
     {
         FaceScanner *owner;
         std::unique_ptr<ScanThread> thread;
-        ~Lease() { owner->giveBack(std::move(thread)); }
+        bool warmUp;
+        ~Lease() { owner->giveBack(std::move(thread), warmUp); }
     };
 
-    Lease lease()
+    // An idle scan thread, or a new one. While the warm-up scans its blank frame, a scan
+    // waits for the thread it warms (a few milliseconds) instead of starting one whose heap
+    // is cold: the first detection of a process is served by the warmed thread.
+    Lease lease(bool warmUp)
     {
         std::unique_ptr<ScanThread> thread;
         {
-            std::lock_guard lock(m_mutex);
+            std::unique_lock lock(m_mutex);
+            if (!warmUp)
+                m_returned.wait(lock, [this] { return !m_idle.empty() || m_warming == 0; });
             if (!m_idle.empty()) {
                 thread = std::move(m_idle.back());
                 m_idle.pop_back();
             }
+            if (warmUp)
+                ++m_warming;
         }
         if (!thread)
             thread = std::make_unique<ScanThread>();
-        return Lease {this, std::move(thread)};
+        return Lease {this, std::move(thread), warmUp};
     }
 
 private:
-    void giveBack(std::unique_ptr<ScanThread> thread)
+    void giveBack(std::unique_ptr<ScanThread> thread, bool warmUp)
     {
-        std::lock_guard lock(m_mutex);
-        m_idle.push_back(std::move(thread));
+        {
+            std::lock_guard lock(m_mutex);
+            m_idle.push_back(std::move(thread));
+            if (warmUp)
+                --m_warming;
+        }
+        m_returned.notify_all();
     }
 
     std::once_flag m_decoded;
@@ -237,17 +250,17 @@ private:
     std::mutex m_mutex;
     FaceDetectorLoad m_load;
     std::vector<std::unique_ptr<ScanThread>> m_idle;
+    std::condition_variable m_returned; // a thread back among the idle ones
+    int m_warming = 0; // warm-up scans under way
 };
 
-} // namespace
-
-std::vector<FaceBox> scanFaces(const QImage &gray, unsigned long levels)
+std::vector<FaceBox> scan(const QImage &gray, unsigned long levels, bool warmUp)
 {
     FaceScanner &scanner = FaceScanner::instance();
     const dlib::frontal_face_detector &all = scanner.all();
     std::vector<dlib::rect_detection> dets;
     {
-        const FaceScanner::Lease lease = scanner.lease();
+        const FaceScanner::Lease lease = scanner.lease(warmUp);
         ScanThread *thread = lease.thread.get();
         thread->run([&] { thread->detector(all, levels)(viewOf(gray), dets); });
     }
@@ -255,6 +268,13 @@ std::vector<FaceBox> scanFaces(const QImage &gray, unsigned long levels)
     for (const auto &d : dets)
         out.push_back({QRectF(d.rect.left(), d.rect.top(), d.rect.width(), d.rect.height()), d.detection_confidence});
     return out;
+}
+
+} // namespace
+
+std::vector<FaceBox> scanFaces(const QImage &gray, unsigned long levels)
+{
+    return scan(gray, levels, false);
 }
 
 FaceDetectorLoad loadFaceDetector(const QString &cacheDir)
@@ -272,7 +292,7 @@ void warmUpFaceScan(QSize size)
 {
     QImage blank(size.expandedTo(QSize(1, 1)), QImage::Format_Grayscale8);
     blank.fill(128);
-    scanFaces(blank, 0);
+    scan(blank, 0, true);
 }
 
 } // namespace toonface

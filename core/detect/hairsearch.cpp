@@ -1,5 +1,6 @@
 #include "detect/hairsearch.h"
 
+#include "detect/labcolour.h"
 #include "detect/landmarkmap.h"
 
 #include <QLineF>
@@ -185,7 +186,7 @@ void refineFromPhoto(FaceModel *face, const QImage &image, HairSearchReport *rep
         const cv::Size size(std::max(1, int(std::lround(rgb.width() * ws.scale))),
             std::max(1, int(std::lround(rgb.height() * ws.scale))));
         cv::resize(src, small, size, 0, 0, cv::INTER_AREA);
-        cv::cvtColor(small, ws.lab, cv::COLOR_RGB2Lab);
+        rgbToLab8(small, ws.lab); // not cv::cvtColor: its Lab tables cost 0.15-0.2 s to make (labcolour.h)
     }
     ws.imageBox = QRectF((QPointF(0, 0) - ws.origin) * ws.scale, QSizeF(image.size()) * ws.scale);
     const double dw = d * ws.scale; // eye distance in cut-out pixels

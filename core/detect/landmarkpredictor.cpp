@@ -1,6 +1,8 @@
 #include "detect/landmarkpredictor.h"
 
 #include "detect/grayview.h"
+#include "detect/landmarkflat.h"
+#include "detect/shapemodelfile.h"
 
 #include <QDir>
 #include <QFile>
@@ -40,41 +42,18 @@ LandmarkPredictor::~LandmarkPredictor() = default;
 
 namespace {
 
-constexpr int kShapeValues = 2 * kIbugPointCount;
+const QString kMissing = QStringLiteral("is missing (install the package libdlib-data, or set "
+                                        "TOONFACE_LANDMARK_MODEL to shape_predictor_68_face_landmarks.dat).");
 
-// The block's layout: a header, the mean shape, a table of cascades, then each cascade's
-// arrays, every one starting on a 64-byte boundary. Offsets count from the block's start.
-constexpr char kFlatMagic[8] = {'T', 'F', 'L', 'M', 'F', 'L', 'A', 'T'};
-constexpr quint32 kFlatVersion = 1;
-constexpr size_t kSectionAlignment = 64;
-constexpr quint32 kMaxCascades = 1000;
-constexpr quint32 kMaxTrees = 100000;
-constexpr quint32 kMaxSplitsPerTree = 65535;
-constexpr quint32 kMaxFeatures = 65536; // a split names its features in 16 bits
-
-struct FlatHeader
-{
-    char magic[8];
-    quint32 version;
-    quint32 points;
-    quint32 cascades;
-    quint32 reserved;
-    quint64 initialAt; // 2 x points floats
-    quint64 tableAt; // `cascades` FlatCascade
-};
-
-struct FlatCascade
-{
-    quint32 trees;
-    quint32 splitsPerTree;
-    quint32 features;
-    quint32 reserved;
-    quint64 anchorsAt; // `features` quint32
-    quint64 deltasAt; // `features` pairs of floats
-    quint64 splitFeaturesAt; // trees x splitsPerTree x 2 quint16
-    quint64 thresholdsAt; // trees x splitsPerTree floats
-    quint64 leavesAt; // trees x (splitsPerTree + 1) x 136 floats
-};
+using flat::alignUp;
+using flat::kMagic;
+using flat::kMaxCascades;
+using flat::kMaxFeatures;
+using flat::kMaxSplitsPerTree;
+using flat::kMaxTrees;
+using flat::kSectionAlignment;
+using flat::kShapeValues;
+using flat::kVersion;
 
 // A cascade as read from dlib's file, before it is laid out in a block.
 struct ReadCascade
@@ -128,11 +107,6 @@ void readForest(std::istream &in, std::vector<ReadCascade> *cascades)
     }
 }
 
-size_t alignUp(size_t at)
-{
-    return (at + kSectionAlignment - 1) / kSectionAlignment * kSectionAlignment;
-}
-
 // A block of `size` bytes aligned as the sections are, zeroed (the padding between sections
 // is part of the cache file).
 std::shared_ptr<std::byte> alignedBlock(size_t size)
@@ -143,30 +117,28 @@ std::shared_ptr<std::byte> alignedBlock(size_t size)
         bytes, [](std::byte *p) { ::operator delete(p, std::align_val_t(kSectionAlignment)); });
 }
 
-// Lays out a model read from dlib's file in one block (the layout of FlatHeader).
+// Lays out a model read from dlib's file in one block (the layout of flat::Header).
 std::pair<std::shared_ptr<std::byte>, size_t> layOut(
     const dlib::matrix<float, 0, 1> &initial, const std::vector<ReadCascade> &cascades)
 {
-    FlatHeader header {};
-    std::copy(std::begin(kFlatMagic), std::end(kFlatMagic), header.magic);
-    header.version = kFlatVersion;
+    flat::Header header {};
+    std::copy(std::begin(kMagic), std::end(kMagic), header.magic);
+    header.version = kVersion;
     header.points = kIbugPointCount;
     header.cascades = quint32(cascades.size());
-    size_t at = alignUp(sizeof(FlatHeader));
+    size_t at = alignUp(sizeof(flat::Header));
     header.initialAt = at;
     at = alignUp(at + kShapeValues * sizeof(float));
     header.tableAt = at;
-    at = alignUp(at + cascades.size() * sizeof(FlatCascade));
-    std::vector<FlatCascade> table;
+    at = alignUp(at + cascades.size() * sizeof(flat::Cascade));
+    // In the order of dlib's file, as shapemodelfile.cpp lays them out: each cascade's trees,
+    // then every cascade's anchors, then every cascade's offsets.
+    std::vector<flat::Cascade> table;
     for (const ReadCascade &c : cascades) {
-        FlatCascade entry {};
+        flat::Cascade entry {};
         entry.trees = quint32(c.trees);
         entry.splitsPerTree = quint32(c.splitsPerTree);
         entry.features = quint32(c.anchors.size());
-        entry.anchorsAt = at;
-        at = alignUp(at + c.anchors.size() * sizeof(quint32));
-        entry.deltasAt = at;
-        at = alignUp(at + c.deltas.size() * 2 * sizeof(float));
         entry.splitFeaturesAt = at;
         at = alignUp(at + c.features.size() * sizeof(quint16));
         entry.thresholdsAt = at;
@@ -175,16 +147,26 @@ std::pair<std::shared_ptr<std::byte>, size_t> layOut(
         at = alignUp(at + c.leaves.size() * sizeof(float));
         table.push_back(entry);
     }
-    const size_t size = at;
+    for (flat::Cascade &entry : table) {
+        entry.anchorsAt = at;
+        at = alignUp(at + entry.features * sizeof(quint32));
+    }
+    size_t end = at;
+    for (flat::Cascade &entry : table) {
+        entry.deltasAt = alignUp(end);
+        end = entry.deltasAt + entry.features * 2 * sizeof(float);
+    }
+    // The block ends where its last array does: a block cut short is one missing data.
+    const size_t size = end;
     std::shared_ptr<std::byte> block = alignedBlock(size);
     std::byte *out = block.get();
     auto put = [out](quint64 offset, const void *data, size_t bytes) { std::memcpy(out + offset, data, bytes); };
     put(0, &header, sizeof header);
     put(header.initialAt, &initial(0), kShapeValues * sizeof(float));
-    put(header.tableAt, table.data(), table.size() * sizeof(FlatCascade));
+    put(header.tableAt, table.data(), table.size() * sizeof(flat::Cascade));
     for (size_t i = 0; i < cascades.size(); ++i) {
         const ReadCascade &c = cascades[i];
-        const FlatCascade &e = table[i];
+        const flat::Cascade &e = table[i];
         std::vector<quint32> anchors(c.anchors.begin(), c.anchors.end());
         std::vector<float> deltas;
         for (const auto &d : c.deltas) {
@@ -221,8 +203,29 @@ std::shared_ptr<const LandmarkPredictor> LandmarkPredictor::read(const QString &
     };
     const QFileInfo info(path);
     if (!info.isFile() || !info.isReadable())
-        return fail(QStringLiteral("is missing (install the package libdlib-data, or set "
-                                   "TOONFACE_LANDMARK_MODEL to shape_predictor_68_face_landmarks.dat)."));
+        return fail(kMissing);
+    const ShapeModelFile file = readShapeModelFile(path);
+    if (file.status == ShapeModelFile::Status::OldFormat)
+        return readThroughDlib(path, error);
+    if (file.status != ShapeModelFile::Status::Read)
+        return fail(file.error);
+    QString why;
+    auto model = fromFlat(file.owner, file.block, &why);
+    if (!model)
+        return fail(QStringLiteral("could not be read: %1").arg(why));
+    return model;
+}
+
+std::shared_ptr<const LandmarkPredictor> LandmarkPredictor::readThroughDlib(const QString &path, QString *error)
+{
+    auto fail = [&](const QString &why) {
+        if (error)
+            *error = QStringLiteral("The landmark model %1 %2").arg(QDir::toNativeSeparators(path), why);
+        return std::shared_ptr<const LandmarkPredictor>();
+    };
+    const QFileInfo info(path);
+    if (!info.isFile() || !info.isReadable())
+        return fail(kMissing);
 
     std::shared_ptr<std::byte> block;
     size_t size = 0;
@@ -271,20 +274,21 @@ std::shared_ptr<const LandmarkPredictor> LandmarkPredictor::fromFlat(
             *error = QString::fromLatin1(why);
         return std::shared_ptr<const LandmarkPredictor>();
     };
-    FlatHeader header {};
+    flat::Header header {};
     if (block.size() < sizeof header)
         return fail("the block is shorter than its header");
     std::memcpy(&header, block.data(), sizeof header);
-    if (!std::equal(std::begin(kFlatMagic), std::end(kFlatMagic), header.magic))
+    if (!std::equal(std::begin(kMagic), std::end(kMagic), header.magic))
         return fail("the block is not a landmark model");
-    if (header.version != kFlatVersion)
+    if (header.version != kVersion)
         return fail("the block has another layout version");
     if (header.points != kIbugPointCount)
         return fail("the model is not one of the 68 iBUG points");
     if (header.cascades == 0 || header.cascades > kMaxCascades)
         return fail("implausible number of cascades");
     const float *initial = section<float>(block, header.initialAt, kShapeValues);
-    const auto *tableBytes = section<std::byte>(block, header.tableAt, quint64(header.cascades) * sizeof(FlatCascade));
+    const auto *tableBytes
+        = section<std::byte>(block, header.tableAt, quint64(header.cascades) * sizeof(flat::Cascade));
     if (!initial || !tableBytes)
         return fail("the mean shape or the table of cascades lies outside the block");
 
@@ -293,8 +297,8 @@ std::shared_ptr<const LandmarkPredictor> LandmarkPredictor::fromFlat(
     for (int i = 0; i < kIbugPointCount; ++i)
         model->m_meanShape[i] = QPointF(initial[2 * i], initial[2 * i + 1]);
     for (quint32 c = 0; c < header.cascades; ++c) {
-        FlatCascade e {};
-        std::memcpy(&e, tableBytes + c * sizeof(FlatCascade), sizeof e);
+        flat::Cascade e {};
+        std::memcpy(&e, tableBytes + c * sizeof(flat::Cascade), sizeof e);
         if (e.trees == 0 || e.trees > kMaxTrees || e.splitsPerTree > kMaxSplitsPerTree || e.features > kMaxFeatures)
             return fail("a cascade has implausible counts");
         const quint64 splits = quint64(e.trees) * e.splitsPerTree;

@@ -37,9 +37,14 @@ class LandmarkPredictor
 public:
     using Shape = std::array<QPointF, kIbugPointCount>;
 
-    // Reads a model file of dlib's; nullptr with `error` naming the file and the problem when
-    // it is missing, unreadable, damaged or not a 68-point model.
+    // Reads a model file of dlib's (shapemodelfile.h: decoded straight into the flat arrays;
+    // a file in dlib's old text form through dlib's own reader); nullptr with `error` naming the
+    // file and the problem when it is missing, unreadable, damaged or not a 68-point model.
     static std::shared_ptr<const LandmarkPredictor> read(const QString &path, QString *error);
+
+    // The same through dlib's stream deserialisation (ten times slower): the reference the
+    // tests hold read() to, byte for byte of flat(), and the reader of dlib's old text form.
+    static std::shared_ptr<const LandmarkPredictor> readThroughDlib(const QString &path, QString *error);
 
     // The model held in `block` (as flat() gives it), used in place: `owner` keeps the bytes
     // alive as long as the model. Every count and offset is checked against the block's size

@@ -52,7 +52,7 @@ QString landmarkCachePath(const QString &modelPath, const QString &cacheDir)
         model.completeBaseName() + QLatin1Char('-') + QString::fromLatin1(id) + QStringLiteral(".landmarks-cache"));
 }
 
-LandmarkModelLoad loadLandmarkModel(const QString &modelPath, const QString &cacheDir)
+LandmarkModelLoad loadLandmarkModel(const QString &modelPath, const QString &cacheDir, CacheWrite write)
 {
     QElapsedTimer timer;
     timer.start();
@@ -81,13 +81,22 @@ LandmarkModelLoad loadLandmarkModel(const QString &modelPath, const QString &cac
     load.model = LandmarkPredictor::read(modelPath, &load.error);
     if (!load.model)
         return finish();
-    QString writeError;
-    if (writeCacheFile(load.cachePath, kKind, key, load.model->flat(), &writeError)) {
-        load.cache = CacheUse::Built;
-    } else {
-        load.cache = CacheUse::NotWritten;
-        load.cacheNote += QStringLiteral("; ") + writeError;
-    }
+    // The model's block written as it is, in one write, to a temporary file renamed over the
+    // cache (cachefile.h); nothing waits for it to reach the disk.
+    auto writeCache = [path = load.cachePath, key, model = load.model](LandmarkModelLoad *report) {
+        QString writeError;
+        if (writeCacheFile(path, kKind, key, model->flat(), &writeError)) {
+            report->cache = CacheUse::Built;
+        } else {
+            report->cache = CacheUse::NotWritten;
+            report->cacheNote += QStringLiteral("; ") + writeError;
+        }
+    };
+    load.cache = CacheUse::Built;
+    if (write == CacheWrite::Later)
+        load.writeCache = writeCache;
+    else
+        writeCache(&load);
     return finish();
 }
 

@@ -11,6 +11,7 @@
 
 #include <QString>
 
+#include <functional>
 #include <memory>
 
 namespace toonface {
@@ -27,6 +28,15 @@ struct LandmarkModelLoad
     // NotWritten, why it could not be written.
     QString cacheNote;
     double ms = 0; // wall time of the whole load
+    // With CacheWrite::Later and a cache to (re)write: the writing, for the caller to run once
+    // it has handed the model on (cache is Built until then; the writing sets cache and
+    // cacheNote to how it went). Empty otherwise.
+    std::function<void(LandmarkModelLoad *)> writeCache;
+};
+
+enum class CacheWrite {
+    Now, // before loadLandmarkModel() returns
+    Later, // by the caller, through LandmarkModelLoad::writeCache
 };
 
 // The cache file of the model at `modelPath` in `cacheDir`: one per model path.
@@ -36,6 +46,7 @@ QString landmarkCachePath(const QString &modelPath, const QString &cacheDir);
 // very file and is whole; otherwise read from the file, and its cache (re)written. An empty
 // `cacheDir` uses no cache. Thread-safe: loads in several threads or processes at once each
 // get a model, and leave one good cache file.
-LandmarkModelLoad loadLandmarkModel(const QString &modelPath, const QString &cacheDir);
+LandmarkModelLoad loadLandmarkModel(
+    const QString &modelPath, const QString &cacheDir, CacheWrite write = CacheWrite::Now);
 
 } // namespace toonface

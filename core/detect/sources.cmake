@@ -3,18 +3,21 @@ list(APPEND TOONFACE_CORE_SOURCES
   detect/faceregions.h detect/faceregions.cpp
   detect/appearance.h detect/appearance.cpp
   detect/hairsearch.h detect/hairsearch.cpp
+  detect/labcolour.h detect/labcolour.cpp
   detect/headregions.h detect/headregions.cpp
   detect/landmarkmap.h detect/landmarkmap.cpp
   detect/landmarkfit.h
   detect/grayview.h
   detect/landmarkpredictor.h detect/landmarkpredictor.cpp
+  detect/landmarkflat.h
+  detect/shapemodelfile.h detect/shapemodelfile.cpp
   detect/cachefile.h detect/cachefile.cpp
   detect/facescan.h detect/facescan.cpp
   detect/modelcache.h detect/modelcache.cpp
   detect/detectionruntime.h detect/detectionruntime.cpp)
 # dlib's detector and predictor are header templates: unoptimised they run ~40x slower, so
 # these files are optimised even in Debug builds.
-set_source_files_properties(detect/detector.cpp detect/landmarkpredictor.cpp detect/facescan.cpp detect/cachefile.cpp PROPERTIES COMPILE_OPTIONS "-O2")
+set_source_files_properties(detect/detector.cpp detect/landmarkpredictor.cpp detect/shapemodelfile.cpp detect/facescan.cpp detect/cachefile.cpp PROPERTIES COMPILE_OPTIONS "-O2")
 list(APPEND TOONFACE_CORE_SOURCES
   detect/tsai.h detect/tsai.cpp
   detect/regions.h detect/regions.cpp

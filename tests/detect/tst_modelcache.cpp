@@ -3,6 +3,7 @@
 #include "detect/grayview.h"
 #include "detect/landmarkpredictor.h"
 #include "detect/modelcache.h"
+#include "madeupmodel.h"
 
 #include <QDir>
 #include <QFile>
@@ -22,6 +23,7 @@
 #include <thread>
 
 using namespace toonface;
+using toonface::testing::writeModel;
 
 namespace {
 
@@ -31,43 +33,6 @@ const QString kGracePath = QStringLiteral("/usr/share/matplotlib/mpl-data/sample
 const char *const kChildArgument = "--load-through-cache";
 
 using Cache = LandmarkModelLoad::Cache;
-
-// A small made-up 68-point model in dlib's format: `cascades` cascades of `trees` trees of
-// depth `depth`, its splits and leaves drawn from `seed`; `leafSign` -1 flips every leaf,
-// which changes the model but not the size of its file.
-void writeModel(const QString &path, unsigned seed, int cascades = 3, int trees = 40, int depth = 3, float leafSign = 1)
-{
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    dlib::matrix<float, 0, 1> initial(2 * kIbugPointCount);
-    for (int i = 0; i < kIbugPointCount; ++i) {
-        const double a = 2 * M_PI * i / kIbugPointCount;
-        initial(2 * i) = float(0.5 + 0.35 * std::cos(a));
-        initial(2 * i + 1) = float(0.5 + 0.35 * std::sin(a));
-    }
-    constexpr int kFeatures = 50;
-    std::vector<std::vector<dlib::impl::regression_tree>> forests(cascades);
-    std::vector<std::vector<dlib::vector<float, 2>>> pixels(cascades);
-    const int splits = (1 << depth) - 1;
-    for (int c = 0; c < cascades; ++c) {
-        for (int f = 0; f < kFeatures; ++f)
-            pixels[c].emplace_back(unit(random), unit(random));
-        for (int t = 0; t < trees; ++t) {
-            dlib::impl::regression_tree tree;
-            for (int s = 0; s < splits; ++s)
-                tree.splits.push_back({random() % kFeatures, random() % kFeatures, 60 * unit(random) - 30});
-            for (int l = 0; l <= splits; ++l) {
-                dlib::matrix<float, 0, 1> leaf(2 * kIbugPointCount);
-                for (long v = 0; v < leaf.size(); ++v)
-                    leaf(v) = leafSign * 0.004f * (unit(random) - 0.5f);
-                tree.leaf_values.push_back(leaf);
-            }
-            forests[c].push_back(tree);
-        }
-    }
-    const dlib::shape_predictor model(initial, forests, pixels);
-    dlib::serialize(QFile::encodeName(path).toStdString()) << model;
-}
 
 QImage testImage()
 {
@@ -119,6 +84,7 @@ private Q_SLOTS:
     void damagedCacheRejectedAndRebuilt_data();
     void damagedCacheRejectedAndRebuilt();
     void damagedBlockNeverTrusted();
+    void cacheWrittenLater();
     void unwritableCacheStillLoads();
     void staleTemporaryFilesRemoved();
     void concurrentThreadsLeaveOneCache();
@@ -180,6 +146,38 @@ void TestModelCache::builtOnFirstUseThenReused()
     QCOMPARE(second.cachePath, first.cachePath);
     QCOMPARE(QFileInfo(first.cachePath).lastModified(), written);
     QCOMPARE(entriesOf(m_cacheDir).size(), 1);
+}
+
+// Asked to, the load leaves the cache's writing to its caller: the model first, the file
+// once the writing runs, and a cache then that a later load uses.
+void TestModelCache::cacheWrittenLater()
+{
+    LandmarkModelLoad first = loadLandmarkModel(m_model, m_cacheDir, CacheWrite::Later);
+    QVERIFY2(first.model, qPrintable(first.error));
+    QVERIFY(first.writeCache);
+    QVERIFY(!QFileInfo::exists(first.cachePath));
+    first.writeCache(&first);
+    QCOMPARE(first.cache, Cache::Built);
+    QCOMPARE(QFileInfo(first.cachePath).size(), qint64(first.model->flat().size()) + 64);
+    const LandmarkModelLoad second = loadLandmarkModel(m_model, m_cacheDir, CacheWrite::Later);
+    QCOMPARE(second.cache, Cache::Used);
+    QVERIFY(!second.writeCache); // nothing to write
+    const QImage gray = testImage();
+    QCOMPARE(largestDifference(predictOn(*first.model, gray, QRect(60, 40, 150, 150)),
+                 predictOn(*second.model, gray, QRect(60, 40, 150, 150))),
+        0.0);
+
+    // A folder that cannot be made: the writing says why, and the model is still there.
+    QFile blocker(m_dir->filePath(QStringLiteral("blocker")));
+    QVERIFY(blocker.open(QIODevice::WriteOnly));
+    blocker.close();
+    LandmarkModelLoad blocked
+        = loadLandmarkModel(m_model, m_dir->filePath(QStringLiteral("blocker/cache")), CacheWrite::Later);
+    QVERIFY(blocked.model);
+    QVERIFY(blocked.writeCache);
+    blocked.writeCache(&blocked);
+    QCOMPARE(blocked.cache, Cache::NotWritten);
+    QVERIFY2(blocked.cacheNote.contains(QStringLiteral("blocker")), qPrintable(blocked.cacheNote));
 }
 
 void TestModelCache::cachedModelGivesTheSamePoints()
