@@ -79,6 +79,14 @@ class TestCli : public QObject
 private:
     QTemporaryDir m_dir;
     QString path(const QString &name) const { return m_dir.filePath(name); }
+    // A project holding an average face, saved as `name`; its path, or empty if it could not be saved.
+    QString faceProject(const QString &name) const
+    {
+        Project project;
+        project.face = averageFace(QRectF(60, 80, 200, 240), QSize(320, 400));
+        QString error;
+        return saveProject(project, path(name), &error) ? path(name) : QString();
+    }
     void requirePortrait()
     {
         if (!QFile::exists(kPortrait))
@@ -420,11 +428,9 @@ private Q_SLOTS:
     // The main job: a face talks from text alone, as SMIL SVG, HTML and MP4 with sound.
     void animateSaysText()
     {
-        Project project;
-        project.face = averageFace(QRectF(60, 80, 200, 240), QSize(320, 400));
-        const QString projectPath = path(QStringLiteral("talker.toonface"));
+        const QString projectPath = faceProject(QStringLiteral("talker.toonface"));
+        QVERIFY(!projectPath.isEmpty());
         QString error;
-        QVERIFY2(saveProject(project, projectPath, &error), qPrintable(error));
 
         const QString svg = path(QStringLiteral("talk.svg"));
         const QString saved = path(QStringLiteral("talk-project.toonface"));
@@ -483,11 +489,9 @@ private Q_SLOTS:
 
     void animateCannotAlign()
     {
-        Project project;
-        project.face = averageFace(QRectF(60, 80, 200, 240), QSize(320, 400));
-        const QString projectPath = path(QStringLiteral("aligner.toonface"));
+        const QString projectPath = faceProject(QStringLiteral("aligner.toonface"));
+        QVERIFY(!projectPath.isEmpty());
         QString error;
-        QVERIFY(saveProject(project, projectPath, &error));
         // One spoken syllable against a script of forty.
         const QString wav = path(QStringLiteral("one.wav"));
         QCOMPARE(cli({QStringLiteral("say"), QStringLiteral("hao3"), QStringLiteral("-o"), wav}).code, 0);
@@ -512,11 +516,9 @@ private Q_SLOTS:
     // whole in the saved project.
     void animateScriptFromAPipe()
     {
-        Project project;
-        project.face = averageFace(QRectF(60, 80, 200, 240), QSize(320, 400));
-        const QString projectPath = path(QStringLiteral("piped.toonface"));
+        const QString projectPath = faceProject(QStringLiteral("piped.toonface"));
+        QVERIFY(!projectPath.isEmpty());
         QString error;
-        QVERIFY(saveProject(project, projectPath, &error));
         const QString wav = path(QStringLiteral("piped.wav"));
         QCOMPARE(cli({QStringLiteral("say"), QStringLiteral("ni3 hao3 shi4 jie4"), QStringLiteral("-o"), wav}).code, 0);
         const QString fifo = path(QStringLiteral("script.fifo"));
@@ -604,11 +606,9 @@ private Q_SLOTS:
         const QString cacheDir = path(QStringLiteral("untouched-cache"));
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert(QStringLiteral("TOONFACE_CACHE_DIR"), cacheDir);
-        Project project;
-        project.face = averageFace(QRectF(60, 80, 200, 240), QSize(320, 400));
-        const QString projectPath = path(QStringLiteral("no-model.toonface"));
+        const QString projectPath = faceProject(QStringLiteral("no-model.toonface"));
+        QVERIFY(!projectPath.isEmpty());
         QString error;
-        QVERIFY(saveProject(project, projectPath, &error));
         QCOMPARE(
             cli({QStringLiteral("cartoon"), projectPath, QStringLiteral("-o"), path(QStringLiteral("nm.svg"))}, env)
                 .code,
@@ -620,11 +620,9 @@ private Q_SLOTS:
 
     void unwritableOutput()
     {
-        Project project;
-        project.face = averageFace(QRectF(60, 80, 200, 240), QSize(320, 400));
-        const QString projectPath = path(QStringLiteral("w.toonface"));
+        const QString projectPath = faceProject(QStringLiteral("w.toonface"));
+        QVERIFY(!projectPath.isEmpty());
         QString error;
-        QVERIFY(saveProject(project, projectPath, &error));
         const Run r = cli({QStringLiteral("cartoon"), projectPath, QStringLiteral("-o"),
             path(QStringLiteral("no/such/dir/out.svg"))});
         QCOMPARE(r.code, 1);

@@ -1,8 +1,10 @@
 #pragma once
 
 #include "document/animation.h"
+#include "document/document.h"
 #include "speech/lipsync.h"
 #include "speech/syllableshapes.h"
+#include "uifixture.h"
 
 // A talking animation made in code for the timeline tests: five Mandarin syllables (a phrase,
 // a pause, two more), the mouth keys lip sync makes of them, a smile, blinks and head keys.
@@ -39,6 +41,21 @@ inline Animation talkingAnimation()
     a.timeline.addPoseKey({0.6, {{QStringLiteral("8.4"), QPointF(0.02, -0.03)}}});
     a.timeline.addPoseKey({1.4, {{QStringLiteral("8.4"), QPointF(0, 0)}}});
     return a;
+}
+
+// A document holding the fixture face and photo with talkingAnimation() on its timeline,
+// unmodified.
+inline void fillTalking(Document &document)
+{
+    Project project;
+    project.face = face();
+    project.style = Style::preset(QStringLiteral("normal"));
+    const Animation a = talkingAnimation();
+    project.timeline = a.timeline;
+    project.syllables = a.syllables;
+    project.script = a.script;
+    project.scriptLanguage = a.scriptLanguage;
+    document.reset(project, photo(), {}, true);
 }
 
 // The index of the mouth key at `time` (within a microsecond), or -1.

@@ -320,13 +320,8 @@ private Q_SLOTS:
         options.recoveryDirectory = m_recovery.path();
         MainWindow window(options);
         window.show();
-        Project project;
-        project.face = fixture::face();
-        project.style = Style::preset(QStringLiteral("normal"));
-        const Animation a = fixture::talkingAnimation();
-        project.timeline = a.timeline;
-        project.syllables = a.syllables;
-        window.document()->reset(project, fixture::photo(), {}, true);
+        fixture::fillTalking(*window.document());
+        const Animation a = window.document()->animation();
         auto *addEmotion = window.findChild<QAction *>(QStringLiteral("actionAddEmotion"));
         QVERIFY(addEmotion && addEmotion->isEnabled());
         const auto offered = [addEmotion] {

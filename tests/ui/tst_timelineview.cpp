@@ -69,15 +69,7 @@ private Q_SLOTS:
     void init()
     {
         m_doc = std::make_unique<Document>();
-        Project project;
-        project.face = fixture::face();
-        project.style = Style::preset(QStringLiteral("normal"));
-        const Animation a = fixture::talkingAnimation();
-        project.timeline = a.timeline;
-        project.syllables = a.syllables;
-        project.script = a.script;
-        project.scriptLanguage = a.scriptLanguage;
-        m_doc->reset(project, fixture::photo(), {}, true);
+        fixture::fillTalking(*m_doc);
         m_before = m_doc->animation();
         m_playhead = std::make_unique<Playhead>();
         m_widget = std::make_unique<TimelineWidget>(m_doc.get(), m_playhead.get());
