@@ -1,5 +1,7 @@
 #include "window/studio.h"
 
+#include "capture/importvideodialog.h"
+#include "capture/videoview.h"
 #include "dialogs/blinksdialog.h"
 #include "dialogs/emotiondialog.h"
 #include "dialogs/exportanimationdialog.h"
@@ -113,8 +115,42 @@ void Studio::install(PreviewView *preview, QAction *beforeMenu)
     m_transport->addAction(m_exportAnimation);
     // The transport's shortcuts (Space, arrows, Home, End) work anywhere in the window.
     m_window->addActions(m_playback->actions());
+    installVideo();
     updateEnabled();
 }
+
+// --- Import Video and the video dock (issue 11) ---------------------------------------------
+// Animation ▸ Import Video… tracks a clip onto the timeline; the Video dock beside the preview
+// shows the clip at the playhead. The dock's toggle joins View (else the Animation menu).
+void Studio::installVideo()
+{
+    m_importVideo
+        = new QAction(themed("video-x-generic", ":/toonface/icons/import-video.svg"), tr("Import &Video…"), this);
+    m_importVideo->setObjectName(QStringLiteral("importVideo"));
+    m_importVideo->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_V));
+    m_importVideo->setStatusTip(tr("Track a clip of a person speaking and put the motion on the timeline"));
+    connect(m_importVideo, &QAction::triggered, this, [this] {
+        m_playback->pause();
+        if (ImportVideoDialog::run(m_window, m_document, m_playhead->time()))
+            Q_EMIT message(tr("Imported %1").arg(QFileInfo(m_document->timeline().video()->path).fileName()));
+    });
+    const QList<QAction *> animationActions = m_animationMenu->actions();
+    m_animationMenu->insertAction(animationActions.value(2), m_importVideo);
+
+    m_videoDock = new VideoDock(m_document, m_playhead, m_window);
+    m_window->addDockWidget(Qt::RightDockWidgetArea, m_videoDock);
+    QAction *toggle = m_videoDock->toggleViewAction();
+    toggle->setObjectName(QStringLiteral("showVideo"));
+    toggle->setStatusTip(tr("Show the imported clip beside the cartoon"));
+    QMenu *view = nullptr;
+    for (QAction *a : m_window->menuBar()->actions()) {
+        if (a->menu() && a->text().remove(QLatin1Char('&')) == tr("View"))
+            view = a->menu();
+    }
+    (view ? view : m_animationMenu)->addAction(toggle);
+    m_transport->insertAction(m_exportAnimation, m_importVideo);
+}
+// --- end of Import Video ---------------------------------------------------------------------
 
 QString Studio::defaultExportPath(const QString &suffix) const
 {
