@@ -21,6 +21,7 @@
 
 using namespace toonface;
 using namespace toonface::videofixture;
+using namespace toonface::dialogfixture;
 
 namespace {
 
@@ -49,6 +50,13 @@ template<class T>
 T *child(QWidget &parent, const char *name)
 {
     return parent.findChild<T *>(QString::fromLatin1(name));
+}
+
+// Clicks a check box or radio button on its box, as a user would (the rows are wider than the
+// text, so the middle of the widget may be past it).
+void clickBox(QAbstractButton *button)
+{
+    QTest::mouseClick(button, Qt::LeftButton, {}, QPoint(6, button->height() / 2));
 }
 
 // Waits until the dialog shows frame `index` large.
@@ -181,8 +189,9 @@ private Q_SLOTS:
         ImportVideoDialog dialog(&doc, 0.0);
         dialog.show();
         QVERIFY(dialog.openClip(m_talking));
-        QTest::mouseClick(child<QRadioButton>(dialog, "snapMouth"), Qt::LeftButton);
-        QTest::mouseClick(child<QCheckBox>(dialog, "useSound"), Qt::LeftButton); // keep the project's sound
+        clickBox(child<QRadioButton>(dialog, "snapMouth"));
+        clickBox(child<QCheckBox>(dialog, "useSound")); // keep the project's sound
+        QVERIFY(child<QRadioButton>(dialog, "snapMouth")->isChecked());
         QVERIFY(!child<QCheckBox>(dialog, "useSound")->isChecked());
         QSignalSpy applied(&dialog, &ImportVideoDialog::applied);
         QSignalSpy failed(&dialog, &ImportVideoDialog::failed);
@@ -292,6 +301,9 @@ private Q_SLOTS:
         QVERIFY(child<QCheckBox>(dialog, "usePhoto")->isChecked());
         QVERIFY(child<QCheckBox>(dialog, "useSound")->isChecked());
         QVERIFY(waitForFrame(dialog, 0));
+        dialog.adjustSize();
+        dialog.layout()->activate();
+        QTest::qWait(50);
         dialogfixture::grab(&dialog, QStringLiteral("importvideo"));
         QSignalSpy applied(&dialog, &ImportVideoDialog::applied);
         QSignalSpy failed(&dialog, &ImportVideoDialog::failed);

@@ -112,14 +112,12 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     m_method->addItem(tr("Classic (thesis ch. 6)"), int(DetectionMethod::Classic));
     m_snap->setObjectName(QStringLiteral("snapMouth"));
     m_continuous->setObjectName(QStringLiteral("continuousMouth"));
-    m_continuous->setChecked(true);
     auto *mouthBox = new QVBoxLayout;
     mouthBox->addWidget(m_continuous);
     mouthBox->addWidget(m_snap);
     m_useSound->setObjectName(QStringLiteral("useSound"));
     m_atPlayhead->setObjectName(QStringLiteral("atPlayhead"));
     m_atStart->setObjectName(QStringLiteral("atStart"));
-    (playheadTime > 0 ? m_atPlayhead : m_atStart)->setChecked(true);
     auto *placeBox = new QHBoxLayout;
     placeBox->addWidget(m_atStart);
     placeBox->addWidget(m_atPlayhead);
@@ -130,19 +128,30 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     m_usePhoto->setToolTip(tr("The project has no face yet: the neutral frame becomes its photo, saved as a PNG "
                               "beside the clip"));
 
+    // Each pair of choices is its own group (they share a parent).
+    auto *mouthGroup = new QButtonGroup(this);
+    mouthGroup->addButton(m_continuous);
+    mouthGroup->addButton(m_snap);
+    auto *placeGroup = new QButtonGroup(this);
+    placeGroup->addButton(m_atStart);
+    placeGroup->addButton(m_atPlayhead);
+    m_continuous->setChecked(true);
+    (playheadTime > 0 ? m_atPlayhead : m_atStart)->setChecked(true);
+
+    auto *clipForm = new QFormLayout;
+    clipForm->addRow(tr("&Clip:"), clipRow);
+    clipForm->addRow(QString(), m_clipInfo);
+    static_cast<QLabel *>(clipForm->labelForField(clipRow))->setBuddy(m_clip);
+    auto *neutralLabel = new QLabel(tr("&Neutral frame:"), this);
+    neutralLabel->setBuddy(m_slider);
+    neutralRow->insertWidget(0, neutralLabel);
     auto *form = new QFormLayout;
-    form->addRow(tr("&Clip:"), clipRow);
-    form->addRow(QString(), m_clipInfo);
-    form->addRow(m_frame);
-    form->addRow(tr("&Neutral frame:"), neutralRow);
     form->addRow(tr("&Method:"), m_method);
     form->addRow(tr("Mouth:"), mouthBox);
     form->addRow(tr("Sound:"), m_useSound);
     form->addRow(tr("Starts:"), placeBox);
     if (!document->hasFace())
         form->addRow(tr("Photo:"), m_usePhoto);
-    static_cast<QLabel *>(form->labelForField(clipRow))->setBuddy(m_clip);
-    static_cast<QLabel *>(form->labelForField(neutralRow))->setBuddy(m_slider);
 
     m_startButton = m_buttons->addButton(tr("&Import"), QDialogButtonBox::AcceptRole);
     m_startButton->setObjectName(QStringLiteral("start"));
@@ -151,8 +160,12 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     m_cancelButton->setObjectName(QStringLiteral("cancel"));
 
     auto *layout = new QVBoxLayout(this);
+    layout->setSizeConstraint(QLayout::SetMinimumSize); // the frame never covers the rows below
     layout->addWidget(intro);
-    layout->addLayout(form, 1);
+    layout->addLayout(clipForm);
+    layout->addWidget(m_frame, 1);
+    layout->addLayout(neutralRow);
+    layout->addLayout(form);
     layout->addWidget(m_status);
     layout->addWidget(m_buttons);
     m_inputs = {m_clip, browseButton, m_slider, m_spin, m_method, m_snap, m_continuous, m_useSound, m_atPlayhead,

@@ -40,6 +40,7 @@ VideoView::VideoView(Document *document, Playhead *playhead, QWidget *parent)
         m_shown = -1;
         m_view->setText(error);
     });
+    m_view->setText(noClipText());
     syncClip();
 }
 
@@ -73,6 +74,11 @@ int VideoView::wantedFrame() const
     return count >= 0 && index >= count ? -1 : index;
 }
 
+QString VideoView::noClipText() const
+{
+    return tr("No video: Animation ▸ Import Video… tracks a clip and shows it here.");
+}
+
 void VideoView::syncClip()
 {
     const std::optional<VideoClip> &clip = m_document->timeline().video();
@@ -87,7 +93,7 @@ void VideoView::syncClip()
     m_error.clear();
     m_decoder->close();
     if (path.isEmpty()) {
-        m_view->setText(tr("No video: Animation ▸ Import Video… tracks a clip and shows it here."));
+        m_view->setText(noClipText());
     } else if (!m_decoder->open(path, &m_error)) {
         m_view->setText(m_error);
     }

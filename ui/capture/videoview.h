@@ -41,6 +41,7 @@ Q_SIGNALS:
     void hasClipChanged(bool hasClip);
 
 private:
+    QString noClipText() const;
     void syncClip();
     void follow();
     // Shows m_decoded, which is frame `index`.
