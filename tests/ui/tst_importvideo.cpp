@@ -10,6 +10,7 @@
 #include <QCheckBox>
 #include <QDir>
 #include <QFile>
+#include <QLayout>
 #include <QPushButton>
 #include <QRadioButton>
 #include <QSignalSpy>

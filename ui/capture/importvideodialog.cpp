@@ -94,7 +94,7 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     m_clipInfo->setWordWrap(true);
 
     m_frame->setObjectName(QStringLiteral("neutralView"));
-    m_frame->setMinimumSize(360, 240);
+    m_frame->setMinimumSize(320, 180); // the dialog fits an 800 x 600 screen
     m_frame->setText(tr("Choose a clip"));
     m_slider->setObjectName(QStringLiteral("neutralSlider"));
     m_spin->setObjectName(QStringLiteral("neutralFrame"));
