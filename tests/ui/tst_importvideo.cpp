@@ -33,10 +33,14 @@ Animation busyAnimation()
 {
     Animation a;
     a.timeline.addMouthKey({0.5, MouthShape::A, 1.0, 0.2});
+    a.timeline.addMouthKey({2.0, MouthShape::O, 1.0, 0.2}); // where a clip placed at 1.5 s plays
+    a.syllables.append({QStringLiteral("好"), QStringLiteral("hao"), 3, 0.4, 0.7, 1.0, {{MouthShape::A, 0.5}}});
+    a.syllables.append({QStringLiteral("远"), QStringLiteral("yuan"), 3, 2.0, 2.3, 1.0, {{MouthShape::O, 2.0}}});
     a.timeline.addEmotionClip({0.0, 3.0, Emotion::Smile, 0.8, 0.3, 0.3});
     a.timeline.addBlink({1.0, 0.18});
     a.timeline.addHeadKey({2.0, 5.0, QPointF(0.01, 0), 1.0});
-    a.script = QStringLiteral("好");
+    a.script = QStringLiteral("好远");
+    a.scriptLanguage = QStringLiteral("cmn");
     return a;
 }
 
@@ -160,8 +164,14 @@ private Q_SLOTS:
         // One blink, where the eyes shut (frames 18-19 from 1.5 s).
         QCOMPARE(t.blinks().size(), 1);
         QVERIFY(std::abs(blinkMiddle(t.blinks()[0]) - (1.5 + 18.5 / kFps)) <= 1.5 / kFps);
-        // Continuous mouth: the mouth keys are kept; so are the emotions.
-        QCOMPARE(t.mouthKeys(), before.timeline.mouthKeys());
+        // Continuous mouth: the pose track moves the mouth where the clip plays, so the mouth keys
+        // there go and those elsewhere stay; the clip's sound replaces the project's, so the
+        // syllables timed to the old sound there go too. The emotions stay.
+        QCOMPARE(t.mouthKeys().size(), 1);
+        QCOMPARE(t.mouthKeys()[0], before.timeline.mouthKeys()[0]);
+        QCOMPARE(doc.syllables().size(), 1);
+        QCOMPARE(doc.syllables()[0], before.syllables[0]);
+        QCOMPARE(doc.project().script, before.script);
         QCOMPARE(t.emotionClips(), before.timeline.emotionClips());
         // The clip is the sound and the video, from the playhead.
         QVERIFY(t.audio());
@@ -212,7 +222,8 @@ private Q_SLOTS:
         };
         QCOMPARE(shapeAt(3 / kFps), MouthShape::M);
         QVERIFY(shapeAt(11 / kFps) != MouthShape::M);
-        QVERIFY(!t.audio()); // the sound was not taken
+        QVERIFY(!t.audio()); // the sound was not taken, so the script's syllables stay
+        QCOMPARE(doc.syllables(), busyAnimation().syllables);
         QVERIFY(t.video());
         QCOMPARE(doc.undoStack()->count(), 1);
     }

@@ -395,8 +395,26 @@ void ImportVideoDialog::apply(const TrackResult &result)
     RetargetOptions retarget;
     retarget.mouthKeysFromShapes = m_runSnap;
     addTrackToTimeline(result.frames, fps, &after.timeline, retarget, m_runOffset);
-    if (m_runSound)
+    const double end = m_runOffset + duration;
+    const auto inClip = [&](double from, double to) { return to > m_runOffset && from < end; };
+    if (!m_runSnap) {
+        // The pose track moves the mouth where the clip plays: mouth keys there would fight it.
+        QVector<MouthKey> mouth;
+        for (const MouthKey &k : after.timeline.mouthKeys()) {
+            if (!inClip(k.time, k.time + std::max(k.duration.value_or(0.0), 1e-9)))
+                mouth.append(k);
+        }
+        after.timeline.setMouthKeys(mouth);
+    }
+    if (m_runSound) {
         after.timeline.setAudio(AudioClip {m_runPath, m_runOffset, duration});
+        // The script's syllables were timed to the sound replaced.
+        after.syllables.removeIf([&](const LipsyncSyllable &s) { return inClip(s.start, s.end); });
+        if (after.syllables.isEmpty()) {
+            after.script.clear();
+            after.scriptLanguage.clear();
+        }
+    }
     after.timeline.setVideo(VideoClip {m_runPath, m_runOffset, duration, fps});
     m_document->changeAnimation(after, tr("Import Video %1").arg(QFileInfo(m_runPath).fileName()));
     m_status->clear();

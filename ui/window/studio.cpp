@@ -17,6 +17,7 @@
 
 #include <QAction>
 #include <QDir>
+#include <QDockWidget>
 #include <QFileInfo>
 #include <QIcon>
 #include <QMainWindow>
@@ -28,6 +29,8 @@
 namespace toonface {
 
 namespace {
+
+constexpr int kVideoDockWidth = 320;
 
 QIcon themed(const char *name, const char *fallback)
 {
@@ -139,6 +142,18 @@ void Studio::installVideo()
 
     m_videoDock = new VideoDock(m_document, m_playhead, m_window);
     m_window->addDockWidget(Qt::RightDockWidgetArea, m_videoDock);
+    // Beside the preview: a column of its own left of the docks already on the right.
+    for (QDockWidget *other : m_window->findChildren<QDockWidget *>()) {
+        if (other != m_videoDock && other->parentWidget() == m_window
+            && m_window->dockWidgetArea(other) == Qt::RightDockWidgetArea && !other->isFloating()) {
+            m_window->splitDockWidget(m_videoDock, other, Qt::Horizontal);
+            break;
+        }
+    }
+    connect(m_videoDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible)
+            m_window->resizeDocks({m_videoDock}, {kVideoDockWidth}, Qt::Horizontal);
+    });
     QAction *toggle = m_videoDock->toggleViewAction();
     toggle->setObjectName(QStringLiteral("showVideo"));
     toggle->setStatusTip(tr("Show the imported clip beside the cartoon"));
