@@ -6,8 +6,13 @@
 #include "document/document.h"
 #include "media/mediareader.h"
 #include "playback/playhead.h"
+#include "views/previewview.h"
+#include "window/studio.h"
 
+#include <QAction>
 #include <QMainWindow>
+#include <QMenu>
+#include <QMenuBar>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -163,6 +168,34 @@ private Q_SLOTS:
         QVERIFY(dock->isHidden());
         doc.undoStack()->redo();
         QVERIFY(!dock->isHidden());
+    }
+
+    // The studio offers Import Video in the Animation menu and the dock's toggle in View.
+    void studioWiresTheVideo()
+    {
+        Document doc;
+        fixture::fill(doc);
+        QMainWindow window;
+        QMenu *view = window.menuBar()->addMenu(QStringLiteral("&View"));
+        Studio studio(&doc, &window);
+        PreviewView preview(&doc, studio.playhead());
+        window.setCentralWidget(&preview);
+        studio.install(&preview, nullptr);
+        window.show();
+        QVERIFY(studio.importVideoAction());
+        QVERIFY(studio.animationMenu()->actions().contains(studio.importVideoAction()));
+        QVERIFY(studio.importVideoAction()->isEnabled());
+        VideoDock *dock = studio.videoDock();
+        QVERIFY(dock);
+        QVERIFY(view->actions().contains(dock->toggleViewAction()));
+        QVERIFY(dock->isHidden());
+        setClip(doc, VideoClip {m_grey, 0.0, kFrames / kFps, kFps});
+        QVERIFY(!dock->isHidden());
+        // It follows the studio's playhead.
+        studio.playhead()->setTime(timeOf(6) - kOffset);
+        QVERIFY(waitShown(*dock->view(), 6));
+        window.setCentralWidget(nullptr);
+        preview.setParent(nullptr);
     }
 
     // The project remembers the clip, relative to the project file.

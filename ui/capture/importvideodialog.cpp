@@ -124,7 +124,7 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     placeBox->addStretch(1);
     m_usePhoto->setObjectName(QStringLiteral("usePhoto"));
     m_usePhoto->setVisible(!document->hasFace());
-    m_usePhoto->setChecked(!document->hasFace());
+    m_usePhoto->setChecked(!document->hasFace() && document->photo().isNull());
     m_usePhoto->setToolTip(tr("The project has no face yet: the neutral frame becomes its photo, saved as a PNG "
                               "beside the clip"));
 
