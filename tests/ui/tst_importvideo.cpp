@@ -276,6 +276,93 @@ private Q_SLOTS:
         QCOMPARE(doc.undoStack()->count(), 0);
     }
 
+    // An MP4 cut short whose frames are all past the cut: its header reads, but no frame
+    // decodes; the view and the import say so, naming the file, and nothing changes.
+    void truncatedMp4SaysSo()
+    {
+        if (m_talking.isEmpty())
+            QSKIP("astronaut.png is not installed (package python3-skimage)");
+        QFile whole(m_talking);
+        QVERIFY(whole.open(QIODevice::ReadOnly));
+        const QString cut = m_dir.filePath(QStringLiteral("cut.mp4"));
+        QFile part(cut);
+        QVERIFY(part.open(QIODevice::WriteOnly));
+        part.write(whole.read(whole.size() * 6 / 10));
+        part.close();
+        QString error;
+        const std::optional<MediaInfo> info = probeMedia(cut, &error);
+        if (info && info->frameCount > 0)
+            QSKIP("this encoder's MP4 keeps frames before the cut; the GRID row below covers that case");
+        Document doc;
+        fillBusy(doc);
+        ImportVideoDialog dialog(&doc, 0.0);
+        dialog.show();
+        if (dialog.openClip(cut))
+            QVERIFY(QTest::qWaitFor([&] { return dialog.frameText().contains(cut); }, 20000));
+        QVERIFY2(dialog.message().contains(cut) || dialog.frameText().contains(cut), qPrintable(dialog.message()));
+        if (child<QPushButton>(dialog, "start")->isEnabled()) {
+            QSignalSpy failed(&dialog, &ImportVideoDialog::failed);
+            QSignalSpy applied(&dialog, &ImportVideoDialog::applied);
+            QVERIFY(click(&dialog, "start"));
+            QVERIFY(QTest::qWaitFor([&] { return !applied.isEmpty() || !failed.isEmpty(); }, kTrackTimeoutMs));
+            QCOMPARE(failed.size(), 1);
+            QVERIFY2(dialog.message().contains(cut), qPrintable(dialog.message()));
+        }
+        QCOMPARE(doc.animation(), busyAnimation());
+        QCOMPARE(doc.undoStack()->count(), 0);
+    }
+
+    // A clip cut short (a copy that stopped downloading) plays up to the cut: a neutral frame
+    // past it says so in the view, and the import tracks the frames there are.
+    void truncatedClipImportsWhatIsThere_data()
+    {
+        QTest::addColumn<QString>("clip");
+        QTest::addColumn<int>("frames");
+        QTest::newRow("GRID mpg") << QDir(dialogfixture::sharedData()).filePath(QStringLiteral("video/bbaf2n.mpg"))
+                                  << 75;
+    }
+
+    void truncatedClipImportsWhatIsThere()
+    {
+        QFETCH(QString, clip);
+        QFETCH(int, frames);
+        if (clip.isEmpty() || !QFileInfo::exists(clip))
+            QSKIP("the clip is absent (astronaut.png from python3-skimage, or the research data's GRID clip)");
+        QFile whole(clip);
+        QVERIFY(whole.open(QIODevice::ReadOnly));
+        const QByteArray bytes = whole.readAll();
+        const QString cut = m_dir.filePath(QStringLiteral("cut.") + QFileInfo(clip).suffix());
+        QFile part(cut);
+        QVERIFY(part.open(QIODevice::WriteOnly));
+        part.write(bytes.left(bytes.size() * 6 / 10));
+        part.close();
+        Document doc;
+        fillBusy(doc);
+        ImportVideoDialog dialog(&doc, 0.0);
+        dialog.show();
+        QVERIFY2(dialog.openClip(cut), qPrintable(dialog.message()));
+        QString error;
+        const std::optional<MediaInfo> info = probeMedia(cut, &error);
+        QVERIFY2(info, qPrintable(error));
+        QVERIFY2(info->frameCount > 0 && info->frameCount < frames, qPrintable(QString::number(info->frameCount)));
+        auto *spin = child<QSpinBox>(dialog, "neutralFrame");
+        if (spin->maximum() >= info->frameCount) {
+            // The header promises more frames than there are: the view says which is missing.
+            spin->setValue(spin->maximum());
+            QVERIFY(QTest::qWaitFor(
+                [&] { return dialog.shownFrame().isNull() && dialog.frameText().contains(cut); }, 20000));
+        }
+        spin->setValue(0);
+        QVERIFY(waitForFrame(dialog, 0));
+        QSignalSpy applied(&dialog, &ImportVideoDialog::applied);
+        QSignalSpy failed(&dialog, &ImportVideoDialog::failed);
+        QVERIFY(click(&dialog, "start"));
+        QVERIFY(QTest::qWaitFor([&] { return !applied.isEmpty() || !failed.isEmpty(); }, kTrackTimeoutMs));
+        QVERIFY2(failed.isEmpty(), qPrintable(dialog.message()));
+        QVERIFY(doc.timeline().poseKeys().size() <= info->frameCount);
+        QVERIFY(doc.timeline().poseKeys().size() >= info->frameCount - 3);
+    }
+
     void noFaceOnTheNeutralFrameSaysSo()
     {
         Document doc;

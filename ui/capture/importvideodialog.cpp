@@ -186,7 +186,10 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
         m_decoder->request(index);
     });
     connect(m_decoder, &FrameDecoder::frameReady, this, &ImportVideoDialog::onFrameReady);
-    connect(m_decoder, &FrameDecoder::failed, this, [this](int, const QString &error) { m_frame->setText(error); });
+    connect(m_decoder, &FrameDecoder::failed, this, [this](int, const QString &error) {
+        m_shownIndex = -1;
+        m_frame->setText(error);
+    });
     connect(m_task, &TrackTask::progress, this, [this](int done, int total) {
         const int count = total > 0 ? total : m_decoder->frameCount();
         m_status->showProgress(count > 0 ? double(done) / count : 0,
@@ -258,6 +261,11 @@ void ImportVideoDialog::setNeutralFrame(int index)
 QImage ImportVideoDialog::shownFrame() const
 {
     return m_frame->image();
+}
+
+QString ImportVideoDialog::frameText() const
+{
+    return m_frame->text();
 }
 
 bool ImportVideoDialog::isRunning() const
@@ -418,8 +426,7 @@ void ImportVideoDialog::apply(const TrackResult &result)
     after.timeline.setVideo(VideoClip {m_runPath, m_runOffset, duration, fps});
     m_document->changeAnimation(after, tr("Import Video %1").arg(QFileInfo(m_runPath).fileName()));
     m_status->clear();
-    if (!result.warnings.isEmpty())
-        m_status->showNote(result.warnings.join(QLatin1Char('\n')));
+    m_warnings = result.warnings;
     Q_EMIT applied();
     accept();
 }

@@ -51,7 +51,12 @@ public:
     void setNeutralFrame(int index);
     QImage shownFrame() const;
     int shownFrameIndex() const { return m_shownIndex; }
+    // What the large view says instead of a frame (e.g. a frame past the end of a cut file).
+    QString frameText() const;
     bool isRunning() const;
+    // What the last import noted but went on with (e.g. a damaged file decoded around its bad
+    // packets); empty when none.
+    QStringList warnings() const { return m_warnings; }
     // The message under the form (an error, or a note such as "cancelled"), or empty.
     QString message() const;
 
@@ -102,6 +107,7 @@ private:
     QPushButton *m_cancelButton;
     QList<QWidget *> m_inputs;
     int m_shownIndex = -1;
+    QStringList m_warnings;
     // What the running job was started with.
     QString m_runPath;
     double m_runOffset = 0;

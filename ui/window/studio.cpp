@@ -134,8 +134,12 @@ void Studio::installVideo()
     m_importVideo->setStatusTip(tr("Track a clip of a person speaking and put the motion on the timeline"));
     connect(m_importVideo, &QAction::triggered, this, [this] {
         m_playback->pause();
-        if (ImportVideoDialog::run(m_window, m_document, m_playhead->time()))
-            Q_EMIT message(tr("Imported %1").arg(QFileInfo(m_document->timeline().video()->path).fileName()));
+        ImportVideoDialog dialog(m_document, m_playhead->time(), m_window);
+        if (dialog.exec() != QDialog::Accepted)
+            return;
+        const QString imported = tr("Imported %1").arg(QFileInfo(m_document->timeline().video()->path).fileName());
+        Q_EMIT message(dialog.warnings().isEmpty() ? imported
+                                                   : imported + QStringLiteral(" — ") + dialog.warnings().join(u' '));
     });
     const QList<QAction *> animationActions = m_animationMenu->actions();
     m_animationMenu->insertAction(animationActions.value(2), m_importVideo);
