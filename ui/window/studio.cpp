@@ -12,8 +12,11 @@
 #include "export/animationexport.h"
 #include "playback/playbackcontroller.h"
 #include "playback/playhead.h"
+#include "timeline/timelineedits.h"
+#include "timeline/timelineview.h"
 #include "timeline/timelinewidget.h"
 #include "views/previewview.h"
+#include "views/themedicon.h"
 
 #include <QAction>
 #include <QDir>
@@ -30,12 +33,9 @@ namespace toonface {
 
 namespace {
 
+constexpr double kEmotionFromPlayhead = 2.0; // seconds Add Emotion offers from the playhead
+constexpr double kShortestEmotion = 0.5; // less than this before the end: the whole animation
 constexpr int kVideoDockWidth = 320;
-
-QIcon themed(const char *name, const char *fallback)
-{
-    return QIcon::fromTheme(QString::fromLatin1(name), QIcon(QString::fromLatin1(fallback)));
-}
 
 } // namespace
 
@@ -60,24 +60,24 @@ void Studio::install(PreviewView *preview, QAction *beforeMenu)
     m_timelineDock->widget()->setMinimumHeight(160);
     m_window->addDockWidget(Qt::BottomDockWidgetArea, m_timelineDock);
 
-    m_lipSync = new QAction(
-        themed("audio-x-generic", ":/toonface/icons/emotion-neutral.svg"), tr("&Lip Sync from Recording…"), this);
+    m_lipSync = new QAction(themedIcon("audio-x-generic", "lip-sync.svg"), tr("&Lip Sync from Recording…"), this);
     m_lipSync->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
     m_lipSync->setStatusTip(tr("Time the mouth to a speech recording and its script"));
     connect(m_lipSync, &QAction::triggered, this, [this] { LipSyncDialog::run(m_window, m_document); });
-    m_sayText = new QAction(themed("media-record", ":/toonface/icons/play.svg"), tr("&Say Text…"), this);
+    m_sayText = new QAction(themedIcon("insert-text", "say-text.svg"), tr("&Say Text…"), this);
     m_sayText->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
     m_sayText->setStatusTip(tr("Speak a text with the built-in voice and lip-sync the face to it"));
     connect(m_sayText, &QAction::triggered, this, [this] { SayTextDialog::run(m_window, m_document); });
     m_addBlinks = new QAction(QIcon(QStringLiteral(":/toonface/icons/timeline-blinks.svg")), tr("Add &Blinks…"), this);
     connect(m_addBlinks, &QAction::triggered, this, [this] { BlinksDialog::run(m_window, m_document); });
     m_addEmotion = new QAction(QIcon(QStringLiteral(":/toonface/icons/emotion-smile.svg")), tr("Add &Emotion…"), this);
+    m_addEmotion->setObjectName(QStringLiteral("actionAddEmotion"));
     connect(m_addEmotion, &QAction::triggered, this, &Studio::addEmotion);
     m_mouthShapes = new QAction(tr("&Mouth Shapes…"), this);
     m_mouthShapes->setStatusTip(tr("Edit this character's nine mouth shapes"));
     connect(m_mouthShapes, &QAction::triggered, this, [this] { MouthShapesDialog::run(m_window, m_document); });
     m_exportAnimation
-        = new QAction(themed("document-export", ":/toonface/icons/toonface.svg"), tr("Export &Animation…"), this);
+        = new QAction(themedIcon("document-export", "document-export.svg"), tr("Export &Animation…"), this);
     m_exportAnimation->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
     m_exportAnimation->setStatusTip(tr("Export the animation as SVG, HTML, MP4, GIF or PNG frames"));
     connect(m_exportAnimation, &QAction::triggered, this, &Studio::exportAnimation);
@@ -127,8 +127,7 @@ void Studio::install(PreviewView *preview, QAction *beforeMenu)
 // shows the clip at the playhead. The dock's toggle joins View (else the Animation menu).
 void Studio::installVideo()
 {
-    m_importVideo
-        = new QAction(themed("video-x-generic", ":/toonface/icons/import-video.svg"), tr("Import &Video…"), this);
+    m_importVideo = new QAction(themedIcon("video-x-generic", "import-video.svg"), tr("Import &Video…"), this);
     m_importVideo->setObjectName(QStringLiteral("importVideo"));
     m_importVideo->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_V));
     m_importVideo->setStatusTip(tr("Track a clip of a person speaking and put the motion on the timeline"));
@@ -138,8 +137,8 @@ void Studio::installVideo()
         if (dialog.exec() != QDialog::Accepted)
             return;
         const QString imported = tr("Imported %1").arg(QFileInfo(m_document->timeline().video()->path).fileName());
-        Q_EMIT message(dialog.warnings().isEmpty() ? imported
-                                                   : imported + QStringLiteral(" — ") + dialog.warnings().join(u' '));
+        Q_EMIT message(
+            dialog.warnings().isEmpty() ? imported : imported + QStringLiteral(" — ") + dialog.warnings().join(u' '));
     });
     const QList<QAction *> animationActions = m_animationMenu->actions();
     m_animationMenu->insertAction(animationActions.value(2), m_importVideo);
@@ -193,7 +192,18 @@ void Studio::exportAnimation()
 
 void Studio::addEmotion()
 {
-    EmotionDialog::run(m_window, m_document);
+    // Over the timeline's selected range; else two seconds from the playhead; else (at the
+    // end, or an empty animation) the whole of it.
+    const TimelineView *view = m_timelineDock->timeline()->view();
+    const std::optional<Span> selected = selectionRange(m_document->animation(), view->selection());
+    const double duration = m_document->timeline().duration();
+    const double at = m_playhead->time();
+    if (selected && selected->end > selected->start)
+        EmotionDialog::run(m_window, m_document, selected->start, selected->end);
+    else if (at + kShortestEmotion <= duration)
+        EmotionDialog::run(m_window, m_document, at, std::min(at + kEmotionFromPlayhead, duration));
+    else
+        EmotionDialog::run(m_window, m_document);
 }
 
 void Studio::updateEnabled()

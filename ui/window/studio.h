@@ -35,6 +35,8 @@ public:
     // Import Video (issue 11): the action and the dock showing the clip beside the cartoon.
     QAction *importVideoAction() const { return m_importVideo; }
     VideoDock *videoDock() const { return m_videoDock; }
+    QAction *lipSyncAction() const { return m_lipSync; }
+    QAction *sayTextAction() const { return m_sayText; }
     QMenu *animationMenu() const { return m_animationMenu; }
     QMenu *playbackMenu() const { return m_playbackMenu; }
 
