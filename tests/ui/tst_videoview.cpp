@@ -110,6 +110,7 @@ private Q_SLOTS:
         fixture::fill(doc);
         Playhead playhead;
         VideoView view(&doc, &playhead);
+        view.show();
         setClip(doc, VideoClip {m_grey, 0.0, kFrames / kFps, kFps});
         QVERIFY(waitShown(view, 0));
         QSignalSpy shown(&view, &VideoView::frameShown);
@@ -164,6 +165,16 @@ private Q_SLOTS:
         setClip(doc, VideoClip {m_grey, 0.0, kFrames / kFps, kFps});
         QVERIFY(!dock->isHidden());
         QVERIFY(waitShown(*dock->view(), 0));
+        // Closed by the user, it decodes nothing while the playhead moves; shown again, it
+        // catches up with the playhead.
+        dock->close();
+        QSignalSpy shown(dock->view(), &VideoView::frameShown);
+        playhead.setTime(timeOf(9) - kOffset);
+        QTest::qWait(100);
+        QVERIFY(shown.isEmpty());
+        QVERIFY(!dock->view()->decoder()->isBusy());
+        dock->show();
+        QVERIFY(waitShown(*dock->view(), 9));
         doc.undoStack()->undo();
         QVERIFY(dock->isHidden());
         doc.undoStack()->redo();

@@ -102,10 +102,17 @@ void VideoView::syncClip()
     follow();
 }
 
+void VideoView::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    follow();
+}
+
 void VideoView::follow()
 {
     const std::optional<VideoClip> &clip = m_document->timeline().video();
-    if (!clip || !m_decoder->isOpen())
+    // A closed dock decodes nothing; it catches up when shown.
+    if (!clip || !m_decoder->isOpen() || !isVisible())
         return;
     const int index = wantedFrame();
     if (index < 0) {

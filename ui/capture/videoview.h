@@ -17,7 +17,7 @@ class Playhead;
 // together during playback and scrubbing. Frames are decoded off the GUI thread by a
 // FrameDecoder (latest request wins: when decoding falls behind playback, frames are dropped,
 // never queued). Before the clip starts and after it ends, a line says so. Holds no document
-// state: it re-reads the clip on Change::Animation.
+// state: it re-reads the clip on Change::Animation. Hidden (its dock closed), it decodes nothing.
 class VideoView : public QWidget
 {
     Q_OBJECT
@@ -39,6 +39,9 @@ Q_SIGNALS:
     void frameShown(int index);
     // Whether the document has a clip to show changed.
     void hasClipChanged(bool hasClip);
+
+protected:
+    void showEvent(QShowEvent *event) override;
 
 private:
     QString noClipText() const;
