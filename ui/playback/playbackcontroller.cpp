@@ -339,6 +339,9 @@ void PlaybackController::tick()
         // instead of waiting at a stale one.
         const std::optional<double> position = m_track->position();
         if (position && position != m_lastAudioPosition) {
+            // The first position tells how late the sound started: the clock locks on to it, but
+            // the picture waits for the sound rather than stepping back.
+            const bool lockIn = !m_soundFlowed;
             m_soundFlowed = true;
             m_lastAudioPosition = position;
             jumped = m_clock.syncToAudio(m_document->timeline().audio()->offset + *position, wall);
@@ -346,6 +349,8 @@ void PlaybackController::tick()
                 ++m_resyncs;
             else
                 m_maxAudioError = std::max(m_maxAudioError, std::abs(m_clock.lastError()));
+            if (lockIn)
+                jumped = false;
         }
     }
     double time = m_clock.time(wall);

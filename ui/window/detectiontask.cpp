@@ -100,6 +100,22 @@ void DetectionTask::abandon()
     drop();
 }
 
+void DetectionTask::preload()
+{
+    warmUpDetection();
+    // The watcher only waits for the model, to say when it is unavailable.
+    auto *watcher = new QFutureWatcher<QString>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
+        watcher->deleteLater();
+        if (const QString error = watcher->result(); !error.isEmpty())
+            Q_EMIT preloadFailed(error);
+    });
+    watcher->setFuture(QtConcurrent::run([] {
+        QString error;
+        return preloadLandmarkModel(&error) ? QString() : error;
+    }));
+}
+
 bool DetectionTask::isRunning() const
 {
     return m_watcher != nullptr;

@@ -44,8 +44,13 @@ public:
     // Stops the running detection and reports nothing about it (its document is gone).
     void abandon();
     bool isRunning() const;
+    // Makes the landmark model and the face detector ready in the background (at once when the
+    // application's start already began it), so that the first photo's points come as fast as
+    // any later one's; preloadFailed() says when the model is unavailable.
+    void preload();
 
 Q_SIGNALS:
+    void preloadFailed(const QString &error);
     void progress(double fraction, const QString &stage);
     // The detection's result without its intermediate images; finished() follows (or
     // cancelled(), when cancelled meanwhile).

@@ -2,16 +2,17 @@
 
 #include "appearance/appearancepanel.h"
 #include "document/autosaver.h"
-#include "document/undomacro.h"
-#include "face/averageface.h"
+#include "export/cartoonfile.h"
 #include "render/svgface.h"
 #include "views/photoview.h"
 #include "views/pointhandle.h"
 #include "views/previewview.h"
 #include "views/themedicon.h"
+#include "window/applydetection.h"
 #include "window/detectionsteps.h"
 #include "window/detectionstepsui.h"
 #include "window/detectiontask.h"
+#include "window/questions.h"
 #include "window/settings.h"
 #include "window/studio.h"
 
@@ -26,13 +27,11 @@
 #include <QFileInfo>
 #include <QImageReader>
 #include <QLabel>
-#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QScreen>
 #include <QScrollArea>
 #include <QSlider>
@@ -66,28 +65,6 @@ bool isOpenablePath(const QString &path)
         return true;
     const QByteArray suffix = QFileInfo(path).suffix().toLower().toLatin1();
     return QImageReader::supportedImageFormats().contains(suffix);
-}
-
-// Writes the cartoon to `path` (.svg as is, anything else rasterised at `size`); returns an
-// error message or an empty string. Runs off the GUI thread.
-QString writeCartoon(const QByteArray &svg, QSize size, const QString &path)
-{
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return QCoreApplication::translate("MainWindow", "%1: cannot write: %2").arg(path, file.errorString());
-    if (QFileInfo(path).suffix().compare(QLatin1StringView("svg"), Qt::CaseInsensitive) == 0) {
-        if (file.write(svg) != svg.size())
-            return QCoreApplication::translate("MainWindow", "%1: cannot write: %2").arg(path, file.errorString());
-    } else {
-        const QImage image = rasterizeSvg(svg, size);
-        if (image.isNull())
-            return QCoreApplication::translate("MainWindow", "%1: the cartoon could not be drawn").arg(path);
-        if (!image.save(&file, QFileInfo(path).suffix().toLatin1().constData()))
-            return QCoreApplication::translate("MainWindow", "%1: cannot encode the image").arg(path);
-    }
-    if (!file.commit())
-        return QCoreApplication::translate("MainWindow", "%1: cannot write: %2").arg(path, file.errorString());
-    return {};
 }
 
 } // namespace
@@ -165,27 +142,13 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
     connect(m_detection, &DetectionTask::cancelled, this, &MainWindow::onDetectionCancelled);
     connect(m_steps, &DetectionSteps::changed, this, &MainWindow::updateDetectionStepsEnabled);
 
-    if (m_options.preloadLandmarkModel) {
-        // The model and the face detector made ready in the background (at once, when the
-        // application's start already began it), so that the first photo's points come as
-        // fast as any later one's. The watcher only waits for the model, to say when it is
-        // unavailable.
-        warmUpDetection();
-        auto *watcher = new QFutureWatcher<QString>(this);
-        connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
-            watcher->deleteLater();
-            const QString error = watcher->result();
-            if (!error.isEmpty())
-                statusBar()->showMessage(
-                    tr("Landmark model unavailable (%1): detection may fail, but points can be placed by hand.")
-                        .arg(error),
-                    kStatusTimeoutMs);
-        });
-        watcher->setFuture(QtConcurrent::run([] {
-            QString error;
-            return preloadLandmarkModel(&error) ? QString() : error;
-        }));
-    }
+    connect(m_detection, &DetectionTask::preloadFailed, this, [this](const QString &error) {
+        statusBar()->showMessage(
+            tr("Landmark model unavailable (%1): detection may fail, but points can be placed by hand.").arg(error),
+            kStatusTimeoutMs);
+    });
+    if (m_options.preloadLandmarkModel)
+        m_detection->preload();
 
     onDocumentChanged(Change::Photo | Change::Face | Change::Style | Change::FileState);
     updateDetectionStepsEnabled();
@@ -415,18 +378,7 @@ void MainWindow::startup(const QString &path)
         m_options.recoveryDirectory.isEmpty() ? Autosaver::defaultDirectory() : m_options.recoveryDirectory);
     if (!leftovers.isEmpty()) {
         const RecoveryFile &newest = leftovers.first();
-        const QString name
-            = newest.originalPath.isEmpty() ? tr("an untitled project") : QFileInfo(newest.originalPath).fileName();
-        QMessageBox box(QMessageBox::Question, tr("Restore Unsaved Work"),
-            tr("Toonface did not close properly. Unsaved work on %1 from %2 was kept.")
-                .arg(name, QLocale().toString(newest.written, QLocale::ShortFormat)),
-            QMessageBox::NoButton, this);
-        box.setInformativeText(tr("Restore it? Discarding deletes the kept copy."));
-        QPushButton *restore = box.addButton(tr("&Restore"), QMessageBox::AcceptRole);
-        box.addButton(tr("&Discard"), QMessageBox::DestructiveRole);
-        box.setDefaultButton(restore);
-        box.exec();
-        if (box.clickedButton() == restore) {
+        if (askToRestore(this, newest)) {
             startLoading(newest.path, newest);
             return;
         }
@@ -533,42 +485,18 @@ void MainWindow::applyDetectedFace(const DetectionResult &result)
 {
     m_photoView->setOtherFaces(result.otherFaces);
     const bool showOtherFaces = !result.otherFaces.isEmpty() && !m_document->hasFace();
-    if (!m_document->hasFace() || m_detectChoosesFace) {
-        // The first face of a photo, or another person in it: the points and the colours
-        // sampled under them, one step.
-        const QString text = m_detectChoosesFace ? tr("Use another face") : tr("Detect face");
-        Style style = m_document->style();
-        style.sampleColours(m_document->photo(), result.face);
-        const UndoMacro step(m_document->undoStack(), text);
-        m_document->replaceFace(result.face, false, text);
-        m_document->changeStyle(style, tr("Sample colours"));
-    } else {
-        m_document->replaceFace(result.face, m_detectKeepsHandPlaced,
-            m_detectKeepsHandPlaced ? tr("Re-detect keeping my points") : tr("Re-detect points"));
-    }
+    const DetectionUse use = !m_document->hasFace() || m_detectChoosesFace ? DetectionUse::NewFace
+        : m_detectKeepsHandPlaced                                          ? DetectionUse::KeepHandPlaced
+                                                                           : DetectionUse::Replace;
+    applyDetection(m_document, result, use, m_detectChoosesFace);
     // A photo of several people, first seen: the whole photo, so that the other faces' boxes
     // can be clicked.
     if (showOtherFaces)
         m_photoView->fitToWindow();
-    const int ms = qRound(result.timingMs.value(QStringLiteral("total")));
-    QString found;
-    if (result.faceCount <= 1)
-        found = tr("Face found by the %1 method in %2 ms.").arg(result.method).arg(ms);
-    else if (m_detectChoosesFace)
-        found = tr("%n faces found: using the one you chose (%1, %2 ms).", nullptr, result.faceCount)
-                    .arg(result.method)
-                    .arg(ms);
-    else
-        found = tr("%n faces found: using the largest, most central one (%1, %2 ms). Click another face's box "
-                   "to switch.",
-            nullptr, result.faceCount)
-                    .arg(result.method)
-                    .arg(ms);
-    // Auto fell back to the thesis' pipeline: say why. That, and the choice of faces, stay up
-    // until the next message.
-    if (!result.note.isEmpty())
-        found += QLatin1Char(' ') + tr("The landmark method could not serve: %1").arg(result.note);
-    statusBar()->showMessage(found, result.note.isEmpty() && result.faceCount <= 1 ? kStatusTimeoutMs : 0);
+    // Auto's fallback to the thesis' pipeline, and the choice of faces, stay up until the next
+    // message.
+    statusBar()->showMessage(detectionSummary(result, m_detectChoosesFace),
+        result.note.isEmpty() && result.faceCount <= 1 ? kStatusTimeoutMs : 0);
     Q_EMIT pointsPlaced();
 }
 
@@ -583,7 +511,7 @@ void MainWindow::onDetectionFinished(const DetectionResult &result)
             QMessageBox::warning(this, tr("Detection Failed"),
                 m_document->hasFace() ? tr("%1\nThe points are unchanged.").arg(result.error) : result.error);
         else // no face, or no detector able to look for one: the user can still place the points
-            offerAverageFace(result.error);
+            offerAverageFace(this, m_document, result.error);
         Q_EMIT detectionDone();
         return;
     }
@@ -600,26 +528,6 @@ void MainWindow::onDetectionCancelled()
         setBusy(Job::None, {});
     statusBar()->showMessage(tr("Detection cancelled."), kStatusTimeoutMs);
     Q_EMIT detectionDone();
-}
-
-void MainWindow::offerAverageFace(const QString &reason)
-{
-    // The detector's reason already says what was missing: say it once, naming the file.
-    const QString text = reason.isEmpty() ? tr("No face was found in %1.").arg(m_document->displayName())
-                                          : tr("%1: %2").arg(m_document->displayName(), reason);
-    QMessageBox box(QMessageBox::Information, tr("No Face Found"), text, QMessageBox::NoButton, this);
-    box.setInformativeText(tr("You can place an average face on the photo and drag its points into place by hand."));
-    QPushButton *place = box.addButton(tr("&Place Average Face"), QMessageBox::AcceptRole);
-    box.addButton(QMessageBox::Cancel);
-    box.setDefaultButton(place);
-    box.exec();
-    if (box.clickedButton() != place)
-        return;
-    const QSizeF size = m_document->canvasSize();
-    const double width = 0.4 * std::min(size.width(), size.height());
-    QRectF faceBox(0, 0, width, 1.2 * width);
-    faceBox.moveCenter(QPointF(size.width() / 2, size.height() / 2));
-    m_document->replaceFace(averageFace(faceBox, m_document->canvasSize()), false, tr("Place average face"));
 }
 
 void MainWindow::cancelJob()
@@ -727,7 +635,11 @@ void MainWindow::exportTo(const QString &path)
             QMessageBox::warning(this, tr("Cannot Export"), error);
         Q_EMIT exported(path, error);
     });
-    watcher->setFuture(QtConcurrent::run([svg, size, path] { return writeCartoon(svg, size, path); }));
+    watcher->setFuture(QtConcurrent::run([svg, size, path] {
+        QString error;
+        writeCartoonFile(svg, size, path, &error);
+        return error;
+    }));
 }
 
 bool MainWindow::maybeSave()

@@ -124,7 +124,6 @@ private:
     void applyDetectedFace(const DetectionResult &result);
     void onDetectionFinished(const DetectionResult &result);
     void onDetectionCancelled();
-    void offerAverageFace(const QString &reason);
     void cancelJob();
     void setBusy(Job job, const QString &text);
 

@@ -1,0 +1,62 @@
+#include "window/questions.h"
+
+#include "document/autosaver.h"
+#include "document/document.h"
+#include "face/averageface.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QLocale>
+#include <QMessageBox>
+#include <QPushButton>
+
+#include <algorithm>
+
+namespace toonface {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("MainWindow", text);
+}
+
+} // namespace
+
+bool askToRestore(QWidget *parent, const RecoveryFile &kept)
+{
+    const QString name
+        = kept.originalPath.isEmpty() ? tr("an untitled project") : QFileInfo(kept.originalPath).fileName();
+    QMessageBox box(QMessageBox::Question, tr("Restore Unsaved Work"),
+        tr("Toonface did not close properly. Unsaved work on %1 from %2 was kept.")
+            .arg(name, QLocale().toString(kept.written, QLocale::ShortFormat)),
+        QMessageBox::NoButton, parent);
+    box.setInformativeText(tr("Restore it? Discarding deletes the kept copy."));
+    QPushButton *restore = box.addButton(tr("&Restore"), QMessageBox::AcceptRole);
+    box.addButton(tr("&Discard"), QMessageBox::DestructiveRole);
+    box.setDefaultButton(restore);
+    box.exec();
+    return box.clickedButton() == restore;
+}
+
+void offerAverageFace(QWidget *parent, Document *document, const QString &reason)
+{
+    // The detector's reason already says what was missing: say it once, naming the file.
+    const QString text = reason.isEmpty() ? tr("No face was found in %1.").arg(document->displayName())
+                                          : tr("%1: %2").arg(document->displayName(), reason);
+    QMessageBox box(QMessageBox::Information, tr("No Face Found"), text, QMessageBox::NoButton, parent);
+    box.setInformativeText(tr("You can place an average face on the photo and drag its points into place by hand."));
+    QPushButton *place = box.addButton(tr("&Place Average Face"), QMessageBox::AcceptRole);
+    box.addButton(QMessageBox::Cancel);
+    box.setDefaultButton(place);
+    box.exec();
+    if (box.clickedButton() != place)
+        return;
+    const QSizeF size = document->canvasSize();
+    const double width = 0.4 * std::min(size.width(), size.height());
+    QRectF faceBox(0, 0, width, 1.2 * width);
+    faceBox.moveCenter(QPointF(size.width() / 2, size.height() / 2));
+    document->replaceFace(averageFace(faceBox, document->canvasSize()), false, tr("Place average face"));
+}
+
+} // namespace toonface
