@@ -122,6 +122,19 @@ struct AudioClip
     bool operator==(const AudioClip &) const = default;
 };
 
+// The video the animation was tracked from (Import Video), shown beside the cartoon: its first
+// frame is at `offset` seconds into the animation; it lasts `duration` seconds at `fps` frames
+// a second (0 when unknown). Only a reference: the clip plays no part in the pose.
+struct VideoClip
+{
+    QString path;
+    double offset = 0;
+    double duration = 0;
+    double fps = 0;
+
+    bool operator==(const VideoClip &) const = default;
+};
+
 // How the mouth track is smoothed (the thesis' contribution 8), in seconds.
 struct MouthSmoothing
 {
@@ -223,13 +236,17 @@ public:
     const std::optional<AudioClip> &audio() const { return m_audio; }
     void setAudio(std::optional<AudioClip> audio) { m_audio = std::move(audio); }
 
+    // The clip the motion was tracked from, if any.
+    const std::optional<VideoClip> &video() const { return m_video; }
+    void setVideo(std::optional<VideoClip> video) { m_video = std::move(video); }
+
     // The pose at time t on `face` with `shapes`. Convenient for one time; it builds a
     // TimelineEvaluator every call, so sample many times through one evaluator instead.
     Pose evaluate(double t, const FaceModel &face, const MouthShapeSet &shapes) const;
 
     // The timeline as the project file's `timeline` object: {version, fps, smoothing, mouth,
-    // emotion, blink, gaze, head, pose, audio}; a pose key is {time, offsets: {ID: [dx, dy]}}. Lossless:
-    // fromJson(toJson()) == *this.
+    // emotion, blink, gaze, head, pose, audio, video {path, offset, duration, fps}}; a pose key is {time, offsets: {ID:
+    // [dx, dy]}}. Lossless: fromJson(toJson()) == *this.
     QJsonObject toJson() const;
     // Validates every field; on failure returns nullopt with *error naming the field by its
     // path, e.g. "mouth[3].shape: unknown mouth shape 'x'". Unknown fields are ignored.
@@ -248,6 +265,7 @@ private:
     QVector<HeadKey> m_head;
     QVector<PoseKey> m_pose;
     std::optional<AudioClip> m_audio;
+    std::optional<VideoClip> m_video;
 };
 
 } // namespace toonface

@@ -211,6 +211,14 @@ QJsonObject Timeline::toJson() const
         audio.insert(QStringLiteral("duration"), m_audio->duration);
         json.insert(QStringLiteral("audio"), audio);
     }
+    if (m_video) {
+        QJsonObject video;
+        video.insert(QStringLiteral("path"), m_video->path);
+        video.insert(QStringLiteral("offset"), m_video->offset);
+        video.insert(QStringLiteral("duration"), m_video->duration);
+        video.insert(QStringLiteral("fps"), m_video->fps);
+        json.insert(QStringLiteral("video"), video);
+    }
     return json;
 }
 
@@ -358,6 +366,22 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
             || !r.number("duration", &clip.duration, false, nonNegative))
             return std::nullopt;
         timeline.m_audio = clip;
+    }
+
+    const QJsonValue videoValue = json.value(QStringLiteral("video"));
+    if (!videoValue.isUndefined() && !videoValue.isNull()) {
+        if (!videoValue.isObject()) {
+            if (error)
+                *error = QStringLiteral("video: expected an object");
+            return std::nullopt;
+        }
+        FieldReader r(videoValue.toObject(), QStringLiteral("video"), error);
+        VideoClip clip;
+        if (!r.string("path", &clip.path, true) || !r.number("offset", &clip.offset, false)
+            || !r.number("duration", &clip.duration, false, nonNegative)
+            || !r.number("fps", &clip.fps, false, nonNegative))
+            return std::nullopt;
+        timeline.m_video = clip;
     }
 
     // Files written by hand may list keys out of order; the tracks keep them sorted.

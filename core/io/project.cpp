@@ -292,6 +292,10 @@ QJsonObject projectToJson(const Project &project, const QString &projectDir)
     clip.path = pathToDisk(clip.path, dir);
     if (timeline.audio())
         timeline.setAudio(clip);
+    if (std::optional<VideoClip> video = timeline.video()) {
+        video->path = pathToDisk(video->path, dir);
+        timeline.setVideo(video);
+    }
     json.insert(QStringLiteral("timeline"), timeline.toJson());
     QJsonObject audio;
     audio.insert(QStringLiteral("path"), clip.path);
@@ -398,6 +402,10 @@ std::optional<Project> projectFromJson(const QJsonObject &json, const QString &p
         AudioClip clip = *p.timeline.audio();
         clip.path = pathFromDisk(clip.path, dir);
         p.timeline.setAudio(clip);
+    }
+    if (std::optional<VideoClip> video = p.timeline.video()) {
+        video->path = pathFromDisk(video->path, dir);
+        p.timeline.setVideo(video);
     }
 
     const JsonField script = root.member("script");

@@ -27,7 +27,8 @@ namespace toonface {
 // script {text, language, syllables [...] (syllablesToJson)}. The timeline's audio clip is the
 // project's sound: its path is written relative to the project in both `audio` and
 // `timeline.audio`; `audio` wins when a file's two disagree (older files kept the timeline's
-// path absolute), and a file with only `audio` gets a clip of unknown duration (0).
+// path absolute), and a file with only `audio` gets a clip of unknown duration (0). The
+// timeline's video clip (Import Video) is written relative to the project too.
 // Colours are "#rrggbb", "#aarrggbb" or "none" (8 bits a channel: an in-memory colour
 // round-trips when it is an 8-bit RGB colour). Numbers are written in their shortest exact
 // form, so a save and a load give back an equal Project.

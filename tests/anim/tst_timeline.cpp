@@ -389,6 +389,26 @@ private Q_SLOTS:
                                     << QStringLiteral("audio.path: missing");
         QTest::newRow("audio type") << QByteArray(R"({"audio": "a.wav"})")
                                     << QStringLiteral("audio: expected an object");
+        QTest::newRow("video path") << QByteArray(R"({"video": {"offset": 1}})")
+                                    << QStringLiteral("video.path: missing");
+        QTest::newRow("video fps") << QByteArray(R"({"video": {"path": "a.mpg", "fps": -25}})")
+                                   << QStringLiteral("video.fps: must not be negative");
+        QTest::newRow("video type") << QByteArray(R"({"video": 3})") << QStringLiteral("video: expected an object");
+    }
+
+    void videoClipRoundTrips()
+    {
+        Timeline t = fullTimeline();
+        QVERIFY(!t.video());
+        t.setVideo(VideoClip {QStringLiteral("/clips/talk.mpg"), 0.25, 3.0, 25.0});
+        QString error;
+        const auto back = Timeline::fromJson(t.toJson(), &error);
+        QVERIFY2(back, qPrintable(error));
+        QVERIFY(back->video());
+        QCOMPARE(*back->video(), *t.video());
+        QCOMPARE(*back, t);
+        // Without a clip nothing is written, and older files (no "video") load without one.
+        QVERIFY(!fullTimeline().toJson().contains(QStringLiteral("video")));
     }
 
     void jsonErrorsNameThePath()

@@ -68,6 +68,7 @@ Project richProject(const QString &dir)
     timeline.addGazeKey(GazeKey {0.3, QPointF(0.05, -0.02)});
     timeline.addHeadKey(HeadKey {0.7, 3.5, QPointF(0.01, 0.02), 1.05});
     timeline.setAudio(AudioClip {dir + QStringLiteral("/audio/voice.wav"), 0.125 + 1e-9, 12.345678901234567});
+    timeline.setVideo(VideoClip {dir + QStringLiteral("/video/talk.mpg"), 0.5 + 1e-9, 2.999999999, 29.97});
     p.timeline = timeline;
 
     LipsyncSyllable ni {QStringLiteral("你"), QStringLiteral("ni"), 3, 0.1, 0.35, 0.9, {}};
@@ -225,6 +226,10 @@ private Q_SLOTS:
             QStringLiteral("../elsewhere/glasses.svg"));
         QCOMPARE(json.value(QStringLiteral("audio")).toObject().value(QStringLiteral("path")).toString(),
             QStringLiteral("audio/voice.wav"));
+        const QJsonObject video
+            = json.value(QStringLiteral("timeline")).toObject().value(QStringLiteral("video")).toObject();
+        QCOMPARE(video.value(QStringLiteral("path")).toString(), QStringLiteral("video/talk.mpg"));
+        QCOMPARE(video.value(QStringLiteral("fps")).toDouble(), 29.97);
         // Points in face-model order with their flags.
         const QJsonArray points = json.value(QStringLiteral("points")).toArray();
         QCOMPARE(points.size(), kPointCount);
@@ -269,6 +274,9 @@ private Q_SLOTS:
         QCOMPARE(loaded->photoPath, QDir::cleanPath(b.filePath(QStringLiteral("photos/face.jpg"))));
         QVERIFY(QFileInfo::exists(loaded->photoPath));
         QCOMPARE(loaded->audioPath(), QDir::cleanPath(b.filePath(QStringLiteral("audio/voice.wav"))));
+        QVERIFY(loaded->timeline.video());
+        QCOMPARE(loaded->timeline.video()->path, QDir::cleanPath(b.filePath(QStringLiteral("video/talk.mpg"))));
+        QCOMPARE(loaded->timeline.video()->offset, original.timeline.video()->offset);
         QCOMPARE(loaded->layerPaths.at(1), QDir::cleanPath(b.path() + QStringLiteral("/../elsewhere/glasses.svg")));
         QVERIFY(loaded->face == original.face);
     }
@@ -319,6 +327,7 @@ private Q_SLOTS:
         QVERIFY(p->syllables.isEmpty()); // a file from before syllables were saved
         QVERIFY(p->timeline.audio());
         QCOMPARE(p->timeline.audio()->offset, 0.25);
+        QVERIFY(!p->timeline.video()); // a file from before Import Video
         QCOMPARE(p->scriptLanguage, QStringLiteral("cmn"));
     }
 

@@ -1,5 +1,7 @@
 #include "window/studio.h"
 
+#include "capture/importvideodialog.h"
+#include "capture/videoview.h"
 #include "dialogs/blinksdialog.h"
 #include "dialogs/emotiondialog.h"
 #include "dialogs/exportanimationdialog.h"
@@ -18,6 +20,7 @@
 
 #include <QAction>
 #include <QDir>
+#include <QDockWidget>
 #include <QFileInfo>
 #include <QIcon>
 #include <QMainWindow>
@@ -32,6 +35,7 @@ namespace {
 
 constexpr double kEmotionFromPlayhead = 2.0; // seconds Add Emotion offers from the playhead
 constexpr double kShortestEmotion = 0.5; // less than this before the end: the whole animation
+constexpr int kVideoDockWidth = 320;
 
 } // namespace
 
@@ -114,8 +118,57 @@ void Studio::install(PreviewView *preview, QAction *beforeMenu)
     m_transport->addAction(m_exportAnimation);
     // The transport's shortcuts (Space, arrows, Home, End) work anywhere in the window.
     m_window->addActions(m_playback->actions());
+    installVideo();
     updateEnabled();
 }
+
+// --- Import Video and the video dock (issue 11) ---------------------------------------------
+// Animation ▸ Import Video… tracks a clip onto the timeline; the Video dock beside the preview
+// shows the clip at the playhead. The dock's toggle joins View (else the Animation menu).
+void Studio::installVideo()
+{
+    m_importVideo = new QAction(themedIcon("video-x-generic", "import-video.svg"), tr("Import &Video…"), this);
+    m_importVideo->setObjectName(QStringLiteral("importVideo"));
+    m_importVideo->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_V));
+    m_importVideo->setStatusTip(tr("Track a clip of a person speaking and put the motion on the timeline"));
+    connect(m_importVideo, &QAction::triggered, this, [this] {
+        m_playback->pause();
+        ImportVideoDialog dialog(m_document, m_playhead->time(), m_window);
+        if (dialog.exec() != QDialog::Accepted)
+            return;
+        const QString imported = tr("Imported %1").arg(QFileInfo(m_document->timeline().video()->path).fileName());
+        Q_EMIT message(
+            dialog.warnings().isEmpty() ? imported : imported + QStringLiteral(" — ") + dialog.warnings().join(u' '));
+    });
+    const QList<QAction *> animationActions = m_animationMenu->actions();
+    m_animationMenu->insertAction(animationActions.value(2), m_importVideo);
+
+    m_videoDock = new VideoDock(m_document, m_playhead, m_window);
+    m_window->addDockWidget(Qt::RightDockWidgetArea, m_videoDock);
+    // Beside the preview: a column of its own left of the docks already on the right.
+    for (QDockWidget *other : m_window->findChildren<QDockWidget *>()) {
+        if (other != m_videoDock && other->parentWidget() == m_window
+            && m_window->dockWidgetArea(other) == Qt::RightDockWidgetArea && !other->isFloating()) {
+            m_window->splitDockWidget(m_videoDock, other, Qt::Horizontal);
+            break;
+        }
+    }
+    connect(m_videoDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible)
+            m_window->resizeDocks({m_videoDock}, {kVideoDockWidth}, Qt::Horizontal);
+    });
+    QAction *toggle = m_videoDock->toggleViewAction();
+    toggle->setObjectName(QStringLiteral("showVideo"));
+    toggle->setStatusTip(tr("Show the imported clip beside the cartoon"));
+    QMenu *view = nullptr;
+    for (QAction *a : m_window->menuBar()->actions()) {
+        if (a->menu() && a->text().remove(QLatin1Char('&')) == tr("View"))
+            view = a->menu();
+    }
+    (view ? view : m_animationMenu)->addAction(toggle);
+    m_transport->insertAction(m_exportAnimation, m_importVideo);
+}
+// --- end of Import Video ---------------------------------------------------------------------
 
 QString Studio::defaultExportPath(const QString &suffix) const
 {

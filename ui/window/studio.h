@@ -14,6 +14,7 @@ class Playhead;
 class PlaybackController;
 class PreviewView;
 class TimelineDock;
+class VideoDock;
 
 // The animation studio in the main window: the shared playhead, the playback transport, the
 // timeline dock, and the Animation and Playback menus with their dialogs (lip sync, say text,
@@ -31,6 +32,9 @@ public:
     PlaybackController *playback() const { return m_playback; }
     TimelineDock *timelineDock() const { return m_timelineDock; }
     QAction *exportAnimationAction() const { return m_exportAnimation; }
+    // Import Video (issue 11): the action and the dock showing the clip beside the cartoon.
+    QAction *importVideoAction() const { return m_importVideo; }
+    VideoDock *videoDock() const { return m_videoDock; }
     QAction *lipSyncAction() const { return m_lipSync; }
     QAction *sayTextAction() const { return m_sayText; }
     QMenu *animationMenu() const { return m_animationMenu; }
@@ -51,6 +55,7 @@ private:
     void exportAnimation();
     void addEmotion();
     void updateEnabled();
+    void installVideo();
 
     Document *m_document;
     QMainWindow *m_window;
@@ -66,6 +71,9 @@ private:
     QAction *m_addEmotion = nullptr;
     QAction *m_mouthShapes = nullptr;
     QAction *m_exportAnimation = nullptr;
+    // Import Video.
+    QAction *m_importVideo = nullptr;
+    VideoDock *m_videoDock = nullptr;
 };
 
 } // namespace toonface

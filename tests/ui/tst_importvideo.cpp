@@ -1,0 +1,431 @@
+#include "dialogfixture.h"
+#include "uifixture.h"
+#include "videofixture.h"
+
+#include "capture/importvideodialog.h"
+#include "document/document.h"
+#include "media/mediareader.h"
+#include "track/retarget.h"
+
+#include <QCheckBox>
+#include <QDir>
+#include <QFile>
+#include <QLayout>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QSpinBox>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+using namespace toonface;
+using namespace toonface::videofixture;
+using namespace toonface::dialogfixture;
+
+namespace {
+
+constexpr int kTrackTimeoutMs = 240000;
+
+// Something on the tracks an import replaces and on the ones it keeps.
+Animation busyAnimation()
+{
+    Animation a;
+    a.timeline.addMouthKey({0.5, MouthShape::A, 1.0, 0.2});
+    a.timeline.addMouthKey({2.0, MouthShape::O, 1.0, 0.2}); // where a clip placed at 1.5 s plays
+    a.syllables.append({QStringLiteral("好"), QStringLiteral("hao"), 3, 0.4, 0.7, 1.0, {{MouthShape::A, 0.5}}});
+    a.syllables.append({QStringLiteral("远"), QStringLiteral("yuan"), 3, 2.0, 2.3, 1.0, {{MouthShape::O, 2.0}}});
+    a.timeline.addEmotionClip({0.0, 3.0, Emotion::Smile, 0.8, 0.3, 0.3});
+    a.timeline.addBlink({1.0, 0.18});
+    a.timeline.addHeadKey({2.0, 5.0, QPointF(0.01, 0), 1.0});
+    a.script = QStringLiteral("好远");
+    a.scriptLanguage = QStringLiteral("cmn");
+    return a;
+}
+
+void fillBusy(Document &doc)
+{
+    fixture::fill(doc);
+    doc.changeAnimation(busyAnimation(), QStringLiteral("setup"));
+    doc.undoStack()->clear();
+}
+
+template<class T>
+T *child(QWidget &parent, const char *name)
+{
+    return parent.findChild<T *>(QString::fromLatin1(name));
+}
+
+// Clicks a check box or radio button on its box, as a user would (the rows are wider than the
+// text, so the middle of the widget may be past it).
+void clickBox(QAbstractButton *button)
+{
+    QTest::mouseClick(button, Qt::LeftButton, {}, QPoint(6, button->height() / 2));
+}
+
+// Waits until the dialog shows frame `index` large.
+bool waitForFrame(ImportVideoDialog &dialog, int index)
+{
+    return QTest::qWaitFor([&] { return !dialog.shownFrame().isNull() && dialog.shownFrameIndex() == index; }, 20000);
+}
+
+} // namespace
+
+class TestImportVideo : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+    QString m_talking; // the drawn face, with a tone
+    QString m_grey; // no face
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        fixture::isolateSettings();
+        QVERIFY(m_dir.isValid());
+        bool skipped = false;
+        const QString path = m_dir.filePath(QStringLiteral("talking.mp4"));
+        const QString error = writeTalkingClip(path, true, &skipped);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        if (!skipped)
+            m_talking = path;
+        m_grey = m_dir.filePath(QStringLiteral("grey.mp4"));
+        QCOMPARE(writeGreyClip(m_grey, 20), QString());
+    }
+
+    // The slider picks the neutral frame and shows it large, decoded as core decodes it.
+    void neutralFramePickerShowsTheFrame()
+    {
+        Document doc;
+        fillBusy(doc);
+        ImportVideoDialog dialog(&doc, 0.0);
+        dialog.show();
+        QVERIFY(!child<QPushButton>(dialog, "start")->isEnabled()); // no clip yet
+        QVERIFY(dialog.openClip(m_grey));
+        QCOMPARE(child<QSlider>(dialog, "neutralSlider")->maximum(), 19);
+        QVERIFY(!child<QCheckBox>(dialog, "useSound")->isChecked()); // the clip has none
+        QVERIFY(!child<QCheckBox>(dialog, "useSound")->isEnabled());
+        QVERIFY(child<QPushButton>(dialog, "start")->isEnabled());
+        QVERIFY(waitForFrame(dialog, 0));
+
+        // Dragging the slider through many frames: the last one asked for is shown.
+        auto *slider = child<QSlider>(dialog, "neutralSlider");
+        for (int i = 1; i <= 12; ++i)
+            slider->setValue(i);
+        QCOMPARE(child<QSpinBox>(dialog, "neutralFrame")->value(), 12);
+        QVERIFY(waitForFrame(dialog, 12));
+        QString error;
+        const std::optional<QImage> expected = readVideoFrame(m_grey, 12, &error);
+        QVERIFY2(expected, qPrintable(error));
+        QVERIFY(meanDifference(dialog.shownFrame(), *expected) < 1.0);
+        // Back to an earlier frame (the file is reopened).
+        child<QSpinBox>(dialog, "neutralFrame")->setValue(3);
+        QVERIFY(waitForFrame(dialog, 3));
+        QVERIFY(meanDifference(dialog.shownFrame(), *readVideoFrame(m_grey, 3, &error)) < 1.0);
+        QCOMPARE(doc.animation(), busyAnimation()); // looking changes nothing
+    }
+
+    void importsTheMotionAsOneUndoStep()
+    {
+        if (m_talking.isEmpty())
+            QSKIP("astronaut.png is not installed (package python3-skimage)");
+        Document doc;
+        fillBusy(doc);
+        const Animation before = doc.animation();
+        ImportVideoDialog dialog(&doc, 1.5);
+        dialog.show();
+        QVERIFY(dialog.openClip(m_talking));
+        QVERIFY(child<QCheckBox>(dialog, "useSound")->isChecked()); // on: the clip has sound
+        QVERIFY(child<QRadioButton>(dialog, "atPlayhead")->isChecked());
+        QVERIFY(child<QRadioButton>(dialog, "continuousMouth")->isChecked());
+        QVERIFY(!child<QCheckBox>(dialog, "usePhoto")->isVisible()); // the project has a face
+        QSignalSpy applied(&dialog, &ImportVideoDialog::applied);
+        QSignalSpy failed(&dialog, &ImportVideoDialog::failed);
+        QVERIFY(click(&dialog, "start"));
+        QVERIFY(dialog.isRunning());
+        QVERIFY(QTest::qWaitFor([&] { return !applied.isEmpty() || !failed.isEmpty(); }, kTrackTimeoutMs));
+        QVERIFY2(failed.isEmpty(), qPrintable(dialog.message()));
+        QCOMPARE(dialog.result(), int(QDialog::Accepted));
+        QCOMPARE(doc.undoStack()->count(), 1);
+
+        // The same keys as the track put onto the timeline by core, at the playhead.
+        const Timeline &t = doc.timeline();
+        QCOMPARE(t.poseKeys().size(), kTalkingFrames);
+        QCOMPARE(t.poseKeys().first().time, 1.5);
+        QCOMPARE(t.gazeKeys().size(), kTalkingFrames);
+        QCOMPARE(t.headKeys().size(), kTalkingFrames);
+        // The mouth opens where the drawing opens it (pose keys carry the lower lip, 8.2).
+        const auto lowerLip
+            = [&](int frame) { return t.poseKeys()[frame].offsetsEs0.value(QStringLiteral("8.2")).y(); };
+        QVERIFY2(lowerLip(11) > lowerLip(3) + 0.05,
+            qPrintable(QStringLiteral("%1 vs %2").arg(lowerLip(11)).arg(lowerLip(3))));
+        // One blink, where the eyes shut (frames 18-19 from 1.5 s).
+        QCOMPARE(t.blinks().size(), 1);
+        QVERIFY(std::abs(blinkMiddle(t.blinks()[0]) - (1.5 + 18.5 / kFps)) <= 1.5 / kFps);
+        // Continuous mouth: the pose track moves the mouth where the clip plays, so the mouth keys
+        // there go and those elsewhere stay; the clip's sound replaces the project's, so the
+        // syllables timed to the old sound there go too. The emotions stay.
+        QCOMPARE(t.mouthKeys().size(), 1);
+        QCOMPARE(t.mouthKeys()[0], before.timeline.mouthKeys()[0]);
+        QCOMPARE(doc.syllables().size(), 1);
+        QCOMPARE(doc.syllables()[0], before.syllables[0]);
+        QCOMPARE(doc.project().script, before.script);
+        QCOMPARE(t.emotionClips(), before.timeline.emotionClips());
+        // The clip is the sound and the video, from the playhead.
+        QVERIFY(t.audio());
+        QCOMPARE(t.audio()->path, m_talking);
+        QCOMPARE(t.audio()->offset, 1.5);
+        QVERIFY(std::abs(t.audio()->duration - kTalkingFrames / kFps) < 0.05);
+        QVERIFY(t.video());
+        QCOMPARE(t.video()->path, m_talking);
+        QCOMPARE(t.video()->offset, 1.5);
+        QCOMPARE(t.video()->fps, kFps);
+
+        // One undo restores the exact animation before; redo brings the import back.
+        const Animation imported = doc.animation();
+        doc.undoStack()->undo();
+        QCOMPARE(doc.animation(), before);
+        doc.undoStack()->redo();
+        QCOMPARE(doc.animation(), imported);
+    }
+
+    void snappedMouthGivesMouthKeys()
+    {
+        if (m_talking.isEmpty())
+            QSKIP("astronaut.png is not installed (package python3-skimage)");
+        Document doc;
+        fillBusy(doc);
+        ImportVideoDialog dialog(&doc, 0.0);
+        dialog.show();
+        QVERIFY(dialog.openClip(m_talking));
+        clickBox(child<QRadioButton>(dialog, "snapMouth"));
+        clickBox(child<QCheckBox>(dialog, "useSound")); // keep the project's sound
+        QVERIFY(child<QRadioButton>(dialog, "snapMouth")->isChecked());
+        QVERIFY(!child<QCheckBox>(dialog, "useSound")->isChecked());
+        QSignalSpy applied(&dialog, &ImportVideoDialog::applied);
+        QSignalSpy failed(&dialog, &ImportVideoDialog::failed);
+        QVERIFY(click(&dialog, "start"));
+        QVERIFY(QTest::qWaitFor([&] { return !applied.isEmpty() || !failed.isEmpty(); }, kTrackTimeoutMs));
+        QVERIFY2(failed.isEmpty(), qPrintable(dialog.message()));
+        const Timeline &t = doc.timeline();
+        QVERIFY(!t.mouthKeys().isEmpty());
+        // Shut before, open while the drawing's mouth is open.
+        const auto shapeAt = [&](double time) {
+            MouthShape shape = MouthShape::M;
+            for (const MouthKey &k : t.mouthKeys()) {
+                if (k.time <= time + 1e-9)
+                    shape = k.shape;
+            }
+            return shape;
+        };
+        QCOMPARE(shapeAt(3 / kFps), MouthShape::M);
+        QVERIFY(shapeAt(11 / kFps) != MouthShape::M);
+        QVERIFY(!t.audio()); // the sound was not taken, so the script's syllables stay
+        QCOMPARE(doc.syllables(), busyAnimation().syllables);
+        QVERIFY(t.video());
+        QCOMPARE(doc.undoStack()->count(), 1);
+    }
+
+    void cancelChangesNothing()
+    {
+        if (m_talking.isEmpty())
+            QSKIP("astronaut.png is not installed (package python3-skimage)");
+        Document doc;
+        fillBusy(doc);
+        ImportVideoDialog dialog(&doc, 0.0);
+        dialog.show();
+        QVERIFY(dialog.openClip(m_talking));
+        QSignalSpy cancelled(&dialog, &ImportVideoDialog::cancelled);
+        QSignalSpy applied(&dialog, &ImportVideoDialog::applied);
+        QVERIFY(click(&dialog, "start"));
+        QVERIFY(click(&dialog, "cancel"));
+        QVERIFY(QTest::qWaitFor([&] { return !cancelled.isEmpty() || !applied.isEmpty(); }, kTrackTimeoutMs));
+        QCOMPARE(cancelled.size(), 1);
+        QVERIFY(applied.isEmpty());
+        QCOMPARE(doc.animation(), busyAnimation());
+        QCOMPARE(doc.undoStack()->count(), 0);
+        QVERIFY(dialog.isVisible()); // still open, ready to try again
+        QVERIFY(dialog.message().contains(QStringLiteral("nothing was changed")));
+        QVERIFY(child<QPushButton>(dialog, "start")->isEnabled());
+    }
+
+    void unreadableFileSaysSoAndChangesNothing()
+    {
+        Document doc;
+        fillBusy(doc);
+        const QString broken = m_dir.filePath(QStringLiteral("broken.mp4"));
+        QFile f(broken);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(QByteArray(4096, 'x'));
+        f.close();
+        ImportVideoDialog dialog(&doc, 0.0);
+        dialog.show();
+        QVERIFY(!dialog.openClip(broken));
+        QVERIFY2(dialog.message().contains(broken), qPrintable(dialog.message()));
+        QVERIFY(!child<QPushButton>(dialog, "start")->isEnabled());
+        // A sound file has no picture.
+        const QString tone = writeTone(m_dir.filePath(QStringLiteral("tone.wav")), 0.5);
+        QVERIFY(!tone.isEmpty());
+        QVERIFY(!dialog.openClip(tone));
+        QVERIFY2(dialog.message().contains(QStringLiteral("video")), qPrintable(dialog.message()));
+        QVERIFY(!dialog.openClip(m_dir.filePath(QStringLiteral("missing.mp4"))));
+        QVERIFY(dialog.message().contains(QStringLiteral("missing.mp4")));
+        QCOMPARE(doc.animation(), busyAnimation());
+        QCOMPARE(doc.undoStack()->count(), 0);
+    }
+
+    // An MP4 cut short whose frames are all past the cut: its header reads, but no frame
+    // decodes; the view and the import say so, naming the file, and nothing changes.
+    void truncatedMp4SaysSo()
+    {
+        if (m_talking.isEmpty())
+            QSKIP("astronaut.png is not installed (package python3-skimage)");
+        QFile whole(m_talking);
+        QVERIFY(whole.open(QIODevice::ReadOnly));
+        const QString cut = m_dir.filePath(QStringLiteral("cut.mp4"));
+        QFile part(cut);
+        QVERIFY(part.open(QIODevice::WriteOnly));
+        part.write(whole.read(whole.size() * 6 / 10));
+        part.close();
+        QString error;
+        const std::optional<MediaInfo> info = probeMedia(cut, &error);
+        if (info && info->frameCount > 0)
+            QSKIP("this encoder's MP4 keeps frames before the cut; the GRID row below covers that case");
+        Document doc;
+        fillBusy(doc);
+        ImportVideoDialog dialog(&doc, 0.0);
+        dialog.show();
+        if (dialog.openClip(cut))
+            QVERIFY(QTest::qWaitFor([&] { return dialog.frameText().contains(cut); }, 20000));
+        QVERIFY2(dialog.message().contains(cut) || dialog.frameText().contains(cut), qPrintable(dialog.message()));
+        if (child<QPushButton>(dialog, "start")->isEnabled()) {
+            QSignalSpy failed(&dialog, &ImportVideoDialog::failed);
+            QSignalSpy applied(&dialog, &ImportVideoDialog::applied);
+            QVERIFY(click(&dialog, "start"));
+            QVERIFY(QTest::qWaitFor([&] { return !applied.isEmpty() || !failed.isEmpty(); }, kTrackTimeoutMs));
+            QCOMPARE(failed.size(), 1);
+            QVERIFY2(dialog.message().contains(cut), qPrintable(dialog.message()));
+        }
+        QCOMPARE(doc.animation(), busyAnimation());
+        QCOMPARE(doc.undoStack()->count(), 0);
+    }
+
+    // A clip cut short (a copy that stopped downloading) plays up to the cut: a neutral frame
+    // past it says so in the view, and the import tracks the frames there are.
+    void truncatedClipImportsWhatIsThere_data()
+    {
+        QTest::addColumn<QString>("clip");
+        QTest::addColumn<int>("frames");
+        QTest::newRow("GRID mpg") << QDir(dialogfixture::sharedData()).filePath(QStringLiteral("video/bbaf2n.mpg"))
+                                  << 75;
+    }
+
+    void truncatedClipImportsWhatIsThere()
+    {
+        QFETCH(QString, clip);
+        QFETCH(int, frames);
+        if (clip.isEmpty() || !QFileInfo::exists(clip))
+            QSKIP("the clip is absent (astronaut.png from python3-skimage, or the research data's GRID clip)");
+        QFile whole(clip);
+        QVERIFY(whole.open(QIODevice::ReadOnly));
+        const QByteArray bytes = whole.readAll();
+        const QString cut = m_dir.filePath(QStringLiteral("cut.") + QFileInfo(clip).suffix());
+        QFile part(cut);
+        QVERIFY(part.open(QIODevice::WriteOnly));
+        part.write(bytes.left(bytes.size() * 6 / 10));
+        part.close();
+        Document doc;
+        fillBusy(doc);
+        ImportVideoDialog dialog(&doc, 0.0);
+        dialog.show();
+        QVERIFY2(dialog.openClip(cut), qPrintable(dialog.message()));
+        QString error;
+        const std::optional<MediaInfo> info = probeMedia(cut, &error);
+        QVERIFY2(info, qPrintable(error));
+        QVERIFY2(info->frameCount > 0 && info->frameCount < frames, qPrintable(QString::number(info->frameCount)));
+        auto *spin = child<QSpinBox>(dialog, "neutralFrame");
+        if (spin->maximum() >= info->frameCount) {
+            // The header promises more frames than there are: the view says which is missing.
+            spin->setValue(spin->maximum());
+            QVERIFY(QTest::qWaitFor(
+                [&] { return dialog.shownFrame().isNull() && dialog.frameText().contains(cut); }, 20000));
+        }
+        spin->setValue(0);
+        QVERIFY(waitForFrame(dialog, 0));
+        QSignalSpy applied(&dialog, &ImportVideoDialog::applied);
+        QSignalSpy failed(&dialog, &ImportVideoDialog::failed);
+        QVERIFY(click(&dialog, "start"));
+        QVERIFY(QTest::qWaitFor([&] { return !applied.isEmpty() || !failed.isEmpty(); }, kTrackTimeoutMs));
+        QVERIFY2(failed.isEmpty(), qPrintable(dialog.message()));
+        QVERIFY(doc.timeline().poseKeys().size() <= info->frameCount);
+        QVERIFY(doc.timeline().poseKeys().size() >= info->frameCount - 3);
+    }
+
+    void noFaceOnTheNeutralFrameSaysSo()
+    {
+        Document doc;
+        fillBusy(doc);
+        ImportVideoDialog dialog(&doc, 0.0);
+        dialog.show();
+        QVERIFY(dialog.openClip(m_grey));
+        QSignalSpy failed(&dialog, &ImportVideoDialog::failed);
+        QSignalSpy applied(&dialog, &ImportVideoDialog::applied);
+        QVERIFY(click(&dialog, "start"));
+        QVERIFY(QTest::qWaitFor([&] { return !applied.isEmpty() || !failed.isEmpty(); }, kTrackTimeoutMs));
+        QCOMPARE(failed.size(), 1);
+        QVERIFY2(dialog.message().contains(m_grey), qPrintable(dialog.message()));
+        QVERIFY(dialog.message().contains(QStringLiteral("Nothing was changed")));
+        QCOMPARE(doc.animation(), busyAnimation());
+        QCOMPARE(doc.undoStack()->count(), 0);
+        QVERIFY(dialog.isVisible());
+    }
+
+    // A GRID clip onto a project with no face yet: its neutral frame becomes the photo.
+    void gridClipBecomesTheProject()
+    {
+        const QString grid = QDir(dialogfixture::sharedData()).filePath(QStringLiteral("video/bbaf2n.mpg"));
+        if (!QFileInfo::exists(grid))
+            QSKIP("the GRID clip video/bbaf2n.mpg of the research data is absent");
+        // A copy, so that the neutral frame's PNG is written beside it and not into the data.
+        const QString clip = m_dir.filePath(QStringLiteral("bbaf2n.mpg"));
+        QVERIFY(QFile::copy(grid, clip));
+        Document doc;
+        QVERIFY(!doc.hasFace());
+        ImportVideoDialog dialog(&doc, 0.0);
+        dialog.show();
+        QVERIFY(dialog.openClip(clip));
+        QVERIFY(child<QCheckBox>(dialog, "usePhoto")->isVisible());
+        QVERIFY(child<QCheckBox>(dialog, "usePhoto")->isChecked());
+        QVERIFY(child<QCheckBox>(dialog, "useSound")->isChecked());
+        QVERIFY(waitForFrame(dialog, 0));
+        dialog.adjustSize();
+        dialog.layout()->activate();
+        QTest::qWait(50);
+        dialogfixture::grab(&dialog, QStringLiteral("importvideo"));
+        QSignalSpy applied(&dialog, &ImportVideoDialog::applied);
+        QSignalSpy failed(&dialog, &ImportVideoDialog::failed);
+        QVERIFY(click(&dialog, "start"));
+        QVERIFY(QTest::qWaitFor([&] { return !applied.isEmpty() || !failed.isEmpty(); }, kTrackTimeoutMs));
+        QVERIFY2(failed.isEmpty(), qPrintable(dialog.message()));
+        QVERIFY(doc.hasFace());
+        QVERIFY(QFileInfo::exists(doc.project().photoPath));
+        QCOMPARE(QFileInfo(doc.project().photoPath).absolutePath(), QFileInfo(clip).absolutePath());
+        QCOMPARE(doc.photo().size(), QSize(360, 288));
+        const Timeline &t = doc.timeline();
+        // 75 frames; a lost frame gives no key, but the speaker faces the camera throughout.
+        QVERIFY2(t.poseKeys().size() >= 70, qPrintable(QString::number(t.poseKeys().size())));
+        QCOMPARE(t.headKeys().size(), t.poseKeys().size());
+        QCOMPARE(t.gazeKeys().size(), t.poseKeys().size());
+        QVERIFY(t.audio());
+        QCOMPARE(t.audio()->path, clip);
+        QVERIFY(t.video());
+        QCOMPARE(doc.undoStack()->count(), 1); // the import on the new project
+        doc.undoStack()->undo();
+        QCOMPARE(doc.animation(), Animation {});
+    }
+};
+
+QTEST_MAIN(TestImportVideo)
+#include "tst_importvideo.moc"
