@@ -120,7 +120,11 @@ AudioMouthFrame AudioMouth::analyse(double sumSquares, double sumDiffSquares, in
     const int window = std::max(1, int(std::lround(o.floorWindowS / step)));
     while (m_averages.size() > window)
         m_averages.removeFirst();
-    m_floorDb = *std::min_element(m_averages.cbegin(), m_averages.cend());
+    const double quietest = *std::min_element(m_averages.cbegin(), m_averages.cend());
+    if (!m_started || quietest < m_floorDb)
+        m_floorDb = quietest;
+    else
+        m_floorDb = std::min(quietest, m_floorDb + o.floorRiseDbPerS * step);
     if (!m_started) {
         m_started = true;
         m_peakDb = std::max(f.levelDb, o.initialPeakDb);
@@ -129,22 +133,30 @@ AudioMouthFrame AudioMouth::analyse(double sumSquares, double sumDiffSquares, in
     if (f.levelDb > m_peakDb)
         m_peakDb = f.levelDb;
     else
-        m_peakDb += (m_floorDb - m_peakDb) * alpha(step, o.peakDecayS);
+        m_peakDb = std::max(m_floorDb, m_peakDb - o.peakDecayDbPerS * step);
     f.floorDb = m_floorDb;
 
+    // Openness is the hop's amplitude between the opening level's and the peak's: a voice
+    // opens the mouth in proportion to its loudness (the speech envelope), not to its decibels.
     const double opensAt = m_floorDb + o.openAboveFloorDb;
-    const double range = std::max(o.minimumRangeDb, m_peakDb - opensAt);
+    const double top = std::max(m_peakDb, opensAt + o.minimumRangeDb);
     double raw = 0;
-    if (f.levelDb >= o.absoluteGateDb)
-        raw = std::clamp((f.levelDb - opensAt) / range, 0.0, 1.0);
+    if (f.levelDb >= o.absoluteGateDb && f.levelDb > opensAt) {
+        const double a = std::pow(10.0, f.levelDb / 20.0);
+        const double a0 = std::pow(10.0, opensAt / 20.0);
+        const double a1 = std::pow(10.0, top / 20.0);
+        raw = std::clamp((a - a0) / (a1 - a0), 0.0, 1.0);
+    }
     m_openness += (raw - m_openness) * alpha(step, raw > m_openness ? o.attackMs / 1000.0 : o.releaseMs / 1000.0);
     f.openness = m_openness;
 
-    if (raw > 0 && f.brightnessHz > 0) {
+    if (raw >= o.vowelFrom && f.brightnessHz > 0 && f.brightnessHz < o.vowelBrightnessBelowHz) {
+        const double logB = std::log(f.brightnessHz);
         if (m_averageBrightness <= 0)
             m_averageBrightness = f.brightnessHz;
         else
-            m_averageBrightness += (f.brightnessHz - m_averageBrightness) * alpha(step, o.brightnessAverageS);
+            m_averageBrightness
+                = std::exp(std::log(m_averageBrightness) + (logB - std::log(m_averageBrightness)) * alpha(step, o.brightnessAverageS));
     }
 
     MouthShape wanted = MouthShape::M;

@@ -16,27 +16,34 @@ struct AudioMouthOptions
     // Openness follows the level up fast and falls back slower, as lips do.
     double attackMs = 25;
     double releaseMs = 90;
-    // The noise floor: the quietest level (averaged over levelAverageMs) of the last
-    // floorWindowS seconds. A steady background (a fan, a hum) sinks under it; speech, which
-    // pauses every second or so, does not.
+    // The noise floor follows the quietest level (averaged over levelAverageMs) of the last
+    // floorWindowS seconds: down at once, up by at most floorRiseDbPerS. A steady background
+    // (a fan, a hum) sinks under it within seconds; speech, with its dips between syllables,
+    // stays above it through long sentences.
     double floorWindowS = 2.0;
+    double floorRiseDbPerS = 3.0;
     double levelAverageMs = 100;
-    // The loudest level seen decays over peakDecayS, so that openness fits the voice's range
-    // whatever the microphone's gain.
-    double peakDecayS = 3.0;
+    // The loudest level seen decays by peakDecayDbPerS (toward the floor), so that openness
+    // fits the voice's range whatever the microphone's gain.
+    double peakDecayDbPerS = 2.0;
     // Until louder sound is heard, the peak is taken as a voice at this level (dBFS): a click
     // in the first silence is not mistaken for the whole range of the voice.
     double initialPeakDb = -30.0;
     double openAboveFloorDb = 12.0; // quieter than floor + this: closed
     double minimumRangeDb = 18.0; // openness 1 is at least this far above the opening level
+    // (openness is the amplitude between the opening level's and the peak's)
     double absoluteGateDb = -60.0; // quieter than this (dBFS) is silence, whatever the floor
     double closedBelow = 0.12; // smoothed openness under this: the `m` shape
     double largeFrom = 0.5; // openness from which the large shape of a colour is chosen
-    // Brightness (the sound's mean frequency) against its running average over voiced hops:
+    // Brightness (the sound's mean frequency) against its running (geometric) average over the
+    // hops loud and dark enough to be vowels (raw openness from vowelFrom, brightness under
+    // vowelBrightnessBelowHz: hiss and fricatives left out):
     // under darkBelow times the average rounds the lips (u, o), over brightAbove spreads them (i).
     double darkBelow = 0.85;
     double brightAbove = 1.2;
     double brightnessAverageS = 3.0;
+    double vowelFrom = 0.3;
+    double vowelBrightnessBelowHz = 2500;
     // A new shape must win this many hops in a row (no flicker between two shapes).
     int holdHops = 2;
 };

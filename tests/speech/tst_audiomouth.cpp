@@ -166,7 +166,7 @@ void TestAudioMouth::colourPicksRoundedOrSpreadLips()
         appendNoise(samples, 0.3, 0.002, 10 + k);
         appendTone(samples, 0.4, 250, 0.25);
         appendNoise(samples, 0.3, 0.002, 20 + k);
-        appendTone(samples, 0.4, 2500, 0.25);
+        appendTone(samples, 0.4, 2000, 0.25);
     }
     const QVector<AudioMouthFrame> frames = audioMouthTrack(Audio {samples, kRate});
     auto rounded = [](const AudioMouthFrame &f) { return f.shape == MouthShape::U || f.shape == MouthShape::O; };
@@ -299,8 +299,8 @@ void TestAudioMouth::realSpeech()
         shapes.insert(f.shape);
     QVERIFY2(shapes.size() >= 4, "speech uses several shapes");
 
-    // Openness follows the speech envelope: RMS in 20 ms windows, in dB above the clip's
-    // quietest window, smoothed over 60 ms — computed here independently of the analyser.
+    // Openness follows the speech envelope: RMS in 20 ms windows smoothed over 60 ms, computed
+    // here independently of the analyser.
     const QVector<float> &s = loaded.audio.samples;
     const int window = kRate / 50;
     QVector<double> envelope;
@@ -308,15 +308,14 @@ void TestAudioMouth::realSpeech()
         double sum = 0;
         for (int i = 0; i < window; ++i)
             sum += double(s[at + i]) * s[at + i];
-        envelope.append(10 * std::log10(sum / window + 1e-10));
+        envelope.append(std::sqrt(sum / window));
     }
-    const double quietest = *std::min_element(envelope.cbegin(), envelope.cend());
     QVector<double> smooth(envelope.size());
     for (qsizetype i = 0; i < envelope.size(); ++i) {
         double sum = 0;
         int n = 0;
         for (qsizetype j = std::max<qsizetype>(0, i - 1); j <= std::min(envelope.size() - 1, i + 1); ++j, ++n)
-            sum += envelope[j] - quietest;
+            sum += envelope[j];
         smooth[i] = sum / n;
     }
     QVector<double> openness;
