@@ -21,12 +21,9 @@ enum class Colour { Dark, Mid, Bright };
 MouthShape shapeFor(Colour colour, bool large)
 {
     switch (colour) {
-    case Colour::Dark:
-        return large ? MouthShape::O : MouthShape::U;
-    case Colour::Mid:
-        return large ? MouthShape::A : MouthShape::E;
-    case Colour::Bright:
-        return large ? MouthShape::E : MouthShape::I;
+    case Colour::Dark: return large ? MouthShape::O : MouthShape::U;
+    case Colour::Mid: return large ? MouthShape::A : MouthShape::E;
+    case Colour::Bright: return large ? MouthShape::E : MouthShape::I;
     }
     return MouthShape::M;
 }
@@ -155,8 +152,8 @@ AudioMouthFrame AudioMouth::analyse(double sumSquares, double sumDiffSquares, in
         if (m_averageBrightness <= 0)
             m_averageBrightness = f.brightnessHz;
         else
-            m_averageBrightness
-                = std::exp(std::log(m_averageBrightness) + (logB - std::log(m_averageBrightness)) * alpha(step, o.brightnessAverageS));
+            m_averageBrightness = std::exp(std::log(m_averageBrightness)
+                + (logB - std::log(m_averageBrightness)) * alpha(step, o.brightnessAverageS));
     }
 
     MouthShape wanted = MouthShape::M;

@@ -62,12 +62,12 @@ struct AudioMouthFrame
 
 // The microphone drives the mouth: sound in, one of the nine mouth shapes and a weight out.
 //
-// Each hop's loudness (RMS, dBFS, after a high-pass that removes rumble) is placed between an adaptive noise floor (the quietest
-// recent level) and a decaying peak: that gives the mouth's openness, smoothed with an attack and a release. The colour of
-// the sound picks the lips: its mean frequency (from the ratio of the first difference's energy
-// to the signal's, i.e. the RMS frequency of its spectrum) against its own running average
-// tells dark (rounded: u, o), mid (e, a) and bright (spread: i, e) sounds; openness picks the
-// small or the large shape of each. Quiet is `m`, the lips shut.
+// Each hop's loudness (RMS, dBFS, after a high-pass that removes rumble) is placed between an adaptive noise floor (the
+// quietest recent level) and a decaying peak: that gives the mouth's openness, smoothed with an attack and a release.
+// The colour of the sound picks the lips: its mean frequency (from the ratio of the first difference's energy to the
+// signal's, i.e. the RMS frequency of its spectrum) against its own running average tells dark (rounded: u, o), mid (e,
+// a) and bright (spread: i, e) sounds; openness picks the small or the large shape of each. Quiet is `m`, the lips
+// shut.
 //
 // Works live, chunk by chunk of any size (push()), and on a whole recording (audioMouthTrack()).
 // Not thread-safe: one feeder.

@@ -152,7 +152,8 @@ void TestAudioMouth::toneBurstOpensThenShuts()
     QCOMPARE(fraction(frames, 1.5, 1.9, isOpen), 0.0);
     // The level and the floor are what was played.
     const AudioMouthFrame &loud = frames[45];
-    QVERIFY2(std::abs(loud.levelDb - 20 * std::log10(0.3 / std::sqrt(2.0))) < 1.0, qPrintable(QString::number(loud.levelDb)));
+    QVERIFY2(std::abs(loud.levelDb - 20 * std::log10(0.3 / std::sqrt(2.0))) < 1.0,
+        qPrintable(QString::number(loud.levelDb)));
     QVERIFY(loud.floorDb < -45);
     // The brightness of a pure tone is its frequency.
     QVERIFY2(std::abs(loud.brightnessHz - 220) < 15, qPrintable(QString::number(loud.brightnessHz)));
@@ -285,7 +286,8 @@ void TestAudioMouth::realSpeech()
             }
         }
         qInfo("pause %.2f-%.2f: %.0f %% of hops open, mean openness %.2f", from, to, 100 * open, sum / n);
-        QVERIFY2(open >= 0 && open <= 1.0 / 3, qPrintable(QStringLiteral("open in the pause %1-%2: %3").arg(from).arg(to).arg(open)));
+        QVERIFY2(open >= 0 && open <= 1.0 / 3,
+            qPrintable(QStringLiteral("open in the pause %1-%2: %3").arg(from).arg(to).arg(open)));
         QVERIFY(sum / n < 0.15);
         if (from < 0.1)
             speechFrom = to;

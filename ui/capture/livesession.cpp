@@ -7,6 +7,9 @@
 
 #include <QMetaObject>
 
+#include <chrono>
+#include <future>
+
 #include <algorithm>
 #include <cmath>
 
@@ -88,7 +91,8 @@ void LiveSession::start(std::unique_ptr<FrameSource> source, Audio clipAudio, bo
     }
     m_source = std::move(source);
     m_running = true;
-    m_worker = std::thread([this, s = m_source.get()] { run(s); });
+    ++m_generation;
+    m_worker = std::thread([this, s = m_source.get(), generation = m_generation] { run(s, generation); });
 }
 
 void LiveSession::stop()
@@ -148,7 +152,7 @@ void LiveSession::feedSound(const float *samples, qsizetype count)
         return;
     m_recordedRate = m_mouth->sampleRate();
     if (m_clipAudio.isEmpty())
-        m_recordedSound.append(samples, count);
+        m_recordedSound.append(QVector<float>(samples, samples + count));
     m_recordedMouth += hops;
 }
 
@@ -188,9 +192,9 @@ LiveTake LiveSession::stopRecording()
             // The clip's own sound over the take.
             const qsizetype from = std::clamp<qsizetype>(
                 qsizetype(std::lround(start * m_clipAudio.sampleRate)), 0, m_clipAudio.samples.size());
-            const qsizetype to = std::clamp<qsizetype>(
-                qsizetype(std::lround((start + take.duration) * m_clipAudio.sampleRate)), from,
-                m_clipAudio.samples.size());
+            const qsizetype to
+                = std::clamp<qsizetype>(qsizetype(std::lround((start + take.duration) * m_clipAudio.sampleRate)), from,
+                    m_clipAudio.samples.size());
             take.audio = Audio {m_clipAudio.samples.mid(from, to - from), m_clipAudio.sampleRate};
         }
         m_recordStart.reset();
@@ -217,10 +221,17 @@ void LiveSession::post(std::function<void()> call)
     QMetaObject::invokeMethod(this, std::move(call), Qt::QueuedConnection);
 }
 
-void LiveSession::run(FrameSource *source)
+void LiveSession::run(FrameSource *source, quint64 generation)
 {
     auto *camera = dynamic_cast<CameraFrameSource *>(source);
     double lastRestTry = -1e9;
+    struct RestPose
+    {
+        std::unique_ptr<Tracker> tracker; // null when no face was found
+        QString error;
+        bool asked = false;
+    };
+    std::future<RestPose> restJob;
     while (std::optional<VideoFrame> frame = source->next()) {
         // A camera's frame may have waited for the worker: its arrival is when it was pushed.
         const double arrival = camera ? now() - (camera->now() - camera->lastArrival()) : now();
@@ -235,8 +246,8 @@ void LiveSession::run(FrameSource *source)
             std::lock_guard lock(m_lock);
             if (!m_clipAudio.isEmpty()) {
                 const qsizetype upTo = std::min<qsizetype>(m_clipAudio.samples.size(),
-                    qsizetype(std::lround((frame->time + 1.0 / std::max(1.0, source->frameRate()))
-                        * m_clipAudio.sampleRate)));
+                    qsizetype(std::lround(
+                        (frame->time + 1.0 / std::max(1.0, source->frameRate())) * m_clipAudio.sampleRate)));
                 if (upTo > m_clipFed) {
                     sound = m_clipAudio.samples.constData() + m_clipFed;
                     soundCount = upTo - m_clipFed;
@@ -250,21 +261,32 @@ void LiveSession::run(FrameSource *source)
         if (soundCount > 0)
             feedSound(sound, soundCount);
 
-        const double t = now();
-        if (m_restRequested || (!m_tracker->hasNeutral() && t - lastRestTry > kRestPoseRetryS)) {
-            const bool asked = m_restRequested.exchange(false);
-            lastRestTry = t;
-            QString error;
-            Tracker tracker(m_tracker->options());
-            if (tracker.setNeutral(frame->image, &error)) {
-                *m_tracker = std::move(tracker);
+        // The rest pose is detected beside the frames (a detection costs many frames), which
+        // go on showing meanwhile; the tracker is swapped in when it is ready.
+        if (restJob.valid() && restJob.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+            RestPose rest = restJob.get();
+            if (rest.tracker) {
+                m_tracker = std::move(rest.tracker);
                 m_hasRestPose = true;
                 post([this, method = m_tracker->methodName()] {
                     Q_EMIT status(tr("Rest pose set (tracking by %1)").arg(method));
                 });
-            } else if (asked || !m_tracker->hasNeutral()) {
-                post([this, error] { Q_EMIT status(tr("No face for the rest pose: %1").arg(error)); });
+            } else if (rest.asked || !m_tracker->hasNeutral()) {
+                post([this, error = rest.error] { Q_EMIT status(tr("No face for the rest pose: %1").arg(error)); });
             }
+        }
+        const double t = now();
+        if (!restJob.valid() && (m_restRequested || (!m_tracker->hasNeutral() && t - lastRestTry > kRestPoseRetryS))) {
+            lastRestTry = t;
+            restJob = std::async(std::launch::async,
+                [options = m_tracker->options(), image = frame->image, asked = m_restRequested.exchange(false)] {
+                    RestPose rest;
+                    rest.asked = asked;
+                    auto tracker = std::make_unique<Tracker>(options);
+                    if (tracker->setNeutral(image, &rest.error))
+                        rest.tracker = std::move(tracker);
+                    return rest;
+                });
         }
 
         LiveFrame out;
@@ -303,7 +325,9 @@ void LiveSession::run(FrameSource *source)
         publish(std::move(out));
     }
     const QString error = source->error();
-    post([this, error] {
+    post([this, error, generation] {
+        if (generation != m_generation)
+            return; // a source started since
         m_running = false;
         Q_EMIT finished(error);
     });

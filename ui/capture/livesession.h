@@ -16,6 +16,7 @@
 #include <QVector>
 
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -123,7 +124,7 @@ Q_SIGNALS:
 private:
     struct Scene;
     void rebuildScene();
-    void run(FrameSource *source);
+    void run(FrameSource *source, quint64 generation);
     void feedSound(const float *samples, qsizetype count);
     void publish(LiveFrame frame);
     void deliver();
@@ -134,6 +135,7 @@ private:
     std::unique_ptr<FrameSource> m_source;
     std::thread m_worker;
     std::atomic_bool m_running {false};
+    quint64 m_generation = 0; // GUI thread: which start() a worker's finished() belongs to
 
     mutable std::mutex m_lock; // everything below shared with the worker
     std::shared_ptr<const Scene> m_scene;

@@ -134,7 +134,8 @@ void PreviewRenderer::rebuildScene()
         Q_EMIT sceneChanged();
 }
 
-QImage PreviewRenderer::renderPose(const SvgFace &face, const QRectF &frame, QSize size, const Pose &pose, QByteArray *svg)
+QImage PreviewRenderer::renderPose(
+    const SvgFace &face, const QRectF &frame, QSize size, const Pose &pose, QByteArray *svg)
 {
     const QByteArray drawn = face.svg(pose);
     QImage image(size, QImage::Format_ARGB32_Premultiplied);

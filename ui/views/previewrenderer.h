@@ -92,7 +92,8 @@ public:
 
     // Draws `pose` of `face` showing `frame` (photo pixels) fitted (aspect kept) on white in an
     // image of `size`; *svg receives the SVG drawn when not null. Runs on any thread.
-    static QImage renderPose(const SvgFace &face, const QRectF &frame, QSize size, const Pose &pose, QByteArray *svg = nullptr);
+    static QImage renderPose(
+        const SvgFace &face, const QRectF &frame, QSize size, const Pose &pose, QByteArray *svg = nullptr);
 
     // Draws one picture from a scene; runs on any thread.
     static Frame render(const std::shared_ptr<const SvgFace> &face,
