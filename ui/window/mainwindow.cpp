@@ -8,8 +8,8 @@
 #include "views/photoview.h"
 #include "views/pointhandle.h"
 #include "views/previewview.h"
-#include "views/stepimagedialog.h"
 #include "window/detectionsteps.h"
+#include "window/detectionstepsui.h"
 #include "window/detectiontask.h"
 #include "window/settings.h"
 #include "window/studio.h"
@@ -49,7 +49,6 @@ namespace toonface {
 namespace {
 
 constexpr int kStatusTimeoutMs = 6000;
-constexpr int kOpacitySteps = 100; // the opacity slider's range, 0..kOpacitySteps
 
 QString photoFilter()
 {
@@ -116,6 +115,7 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
 
     m_photoView = new PhotoView(m_document);
     m_photoView->setObjectName(QStringLiteral("photoView"));
+    m_stepsUi = new DetectionStepsUi(m_steps, m_photoView, this);
     m_studio = new Studio(m_document, this);
     m_previewView = new PreviewView(m_document, m_studio->playhead());
     m_previewView->setObjectName(QStringLiteral("previewView"));
@@ -162,7 +162,7 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
     connect(m_detection, &DetectionTask::pointsReady, this, &MainWindow::onPointsReady);
     connect(m_detection, &DetectionTask::finished, this, &MainWindow::onDetectionFinished);
     connect(m_detection, &DetectionTask::cancelled, this, &MainWindow::onDetectionCancelled);
-    connect(m_steps, &DetectionSteps::changed, this, &MainWindow::onDetectionStepsChanged);
+    connect(m_steps, &DetectionSteps::changed, this, &MainWindow::updateDetectionStepsEnabled);
 
     if (m_options.preloadLandmarkModel) {
         // The model and the face detector made ready in the background (at once, when the
@@ -187,7 +187,7 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
     }
 
     onDocumentChanged(Change::Photo | Change::Face | Change::Style | Change::FileState);
-    onDetectionStepsChanged();
+    updateDetectionStepsEnabled();
 }
 
 MainWindow::~MainWindow() = default;
@@ -327,13 +327,7 @@ void MainWindow::createMenus()
     view->addSeparator();
     view->addAction(m_showIdsAction);
     view->addSeparator();
-    // Tool tips on, so that the disabled steps entry can say why it is disabled.
-    view->setToolTipsVisible(true);
-    m_stepsMenu = view->addMenu(tr("Detection &Steps"));
-    m_stepsMenu->setObjectName(QStringLiteral("menuDetectionSteps"));
-    m_stepsMenu->setToolTipsVisible(true);
-    m_stepsGroup = new QActionGroup(this);
-    m_stepsGroup->setExclusive(true);
+    m_stepsUi->install(view);
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(m_aboutAction);
@@ -368,35 +362,6 @@ void MainWindow::createToolBar()
     bar->addSeparator();
     bar->addAction(m_fitAction);
     bar->addAction(m_zoomFaceAction);
-
-    // Below the views, beside the photo it acts on, where the main toolbar's width does not
-    // push it out of sight.
-    m_stepsToolBar = new QToolBar(tr("Detection Steps"), this);
-    addToolBar(Qt::BottomToolBarArea, m_stepsToolBar);
-    m_stepsToolBar->setObjectName(QStringLiteral("detectionStepsToolBar"));
-    auto *stepLabel = new QLabel(tr("Step:") + QLatin1Char(' '));
-    m_stepsToolBar->addWidget(stepLabel);
-    m_stepsCombo = new QComboBox;
-    m_stepsCombo->setObjectName(QStringLiteral("detectionStepCombo"));
-    m_stepsCombo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-    stepLabel->setBuddy(m_stepsCombo);
-    connect(m_stepsCombo, &QComboBox::activated, this,
-        [this](int index) { setOverlayStep(m_stepsCombo->itemData(index).toString()); });
-    m_stepsToolBar->addWidget(m_stepsCombo);
-    m_stepsToolBar->addWidget(new QLabel(QLatin1Char(' ') + tr("Opacity:") + QLatin1Char(' ')));
-    m_opacitySlider = new QSlider(Qt::Horizontal);
-    m_opacitySlider->setObjectName(QStringLiteral("overlayOpacitySlider"));
-    m_opacitySlider->setRange(0, kOpacitySteps);
-    m_opacitySlider->setPageStep(kOpacitySteps / 10);
-    m_opacitySlider->setFixedWidth(110);
-    m_opacitySlider->setToolTip(tr("How strongly the detection step covers the photo"));
-    m_opacitySlider->setValue(qRound(Settings().overlayOpacity() * kOpacitySteps));
-    m_photoView->setOverlayOpacity(double(m_opacitySlider->value()) / kOpacitySteps);
-    connect(m_opacitySlider, &QSlider::valueChanged, this, [this](int value) {
-        m_photoView->setOverlayOpacity(double(value) / kOpacitySteps);
-        Settings().setOverlayOpacity(double(value) / kOpacitySteps);
-    });
-    m_stepsToolBar->addWidget(m_opacitySlider);
 }
 
 void MainWindow::createStatusBar()
@@ -793,7 +758,7 @@ void MainWindow::onDocumentChanged(ChangeFlags what)
 {
     if (what & Change::Photo) {
         // The steps belong to the photo they came from.
-        m_chosenStep.clear();
+        m_stepsUi->forgetChoice();
         m_steps->clear();
     }
     if (what & Change::Style)
@@ -843,132 +808,25 @@ DetectionMethod MainWindow::detectionMethod() const
 
 void MainWindow::showDetectionStep(const QString &name)
 {
-    if (!name.isEmpty() && DetectionSteps::isCloseUp(name) && !m_steps->image(name).isNull())
-        openCloseUp(name);
-    else
-        setOverlayStep(name);
+    m_stepsUi->show(name);
 }
 
-void MainWindow::onDetectionStepsChanged()
+QString MainWindow::overlayStep() const
 {
-    const QStringList names = m_steps->names();
-    if (m_steps->isEmpty()) {
-        for (const QPointer<StepImageDialog> &dialog : std::as_const(m_closeUps)) {
-            if (dialog)
-                dialog->close();
-        }
-        m_closeUps.clear();
-    }
-
-    const QList<QAction *> old = m_stepsGroup->actions();
-    for (QAction *action : old)
-        m_stepsGroup->removeAction(action);
-    m_stepsMenu->clear(); // deletes the actions it owns
-
-    const QSignalBlocker blocker(m_stepsCombo);
-    m_stepsCombo->clear();
-
-    QAction *none = m_stepsMenu->addAction(tr("&None"));
-    none->setObjectName(QStringLiteral("actionStepNone"));
-    none->setCheckable(true);
-    none->setData(QString());
-    m_stepsGroup->addAction(none);
-    m_stepsCombo->addItem(tr("None"), QString());
-    connect(none, &QAction::triggered, this, [this] { setOverlayStep({}); });
-
-    bool firstOverlay = true;
-    for (const QString &name : names) {
-        if (DetectionSteps::isCloseUp(name))
-            continue;
-        if (std::exchange(firstOverlay, false))
-            m_stepsMenu->addSeparator();
-        const QString text = DetectionSteps::displayName(name);
-        QAction *action = m_stepsMenu->addAction(text);
-        action->setObjectName(QStringLiteral("actionStep-") + name);
-        action->setCheckable(true);
-        action->setData(name);
-        action->setToolTip(tr("Draw “%1” over the photo (%2.png with --debug-dir)").arg(text, name));
-        m_stepsGroup->addAction(action);
-        connect(action, &QAction::triggered, this, [this, name] { setOverlayStep(name); });
-        m_stepsCombo->addItem(text, name);
-        m_stepsCombo->setItemData(m_stepsCombo->count() - 1, name, Qt::ToolTipRole);
-    }
-    bool firstCloseUp = true;
-    for (const QString &name : names) {
-        if (!DetectionSteps::isCloseUp(name))
-            continue;
-        if (std::exchange(firstCloseUp, false))
-            m_stepsMenu->addSeparator();
-        const QString text = DetectionSteps::displayName(name);
-        QAction *action = m_stepsMenu->addAction(tr("%1…").arg(text));
-        action->setObjectName(QStringLiteral("actionStep-") + name);
-        action->setData(name);
-        action->setToolTip(tr("Show “%1” in a window of its own (%2.png with --debug-dir)").arg(text, name));
-        connect(action, &QAction::triggered, this, [this, name] { openCloseUp(name); });
-    }
-
-    // A re-detection of the same photo brings the same steps: keep showing the chosen one.
-    showChosenStep();
-    updateDetectionStepsEnabled();
-}
-
-void MainWindow::setOverlayStep(const QString &name)
-{
-    m_chosenStep = DetectionSteps::isCloseUp(name) || m_steps->image(name).isNull() ? QString() : name;
-    showChosenStep();
-}
-
-void MainWindow::showChosenStep()
-{
-    const QImage image = m_chosenStep.isEmpty() ? QImage() : m_steps->image(m_chosenStep);
-    m_overlayStep = image.isNull() ? QString() : m_chosenStep;
-    m_photoView->setOverlay(image);
-
-    const QList<QAction *> actions = m_stepsGroup->actions();
-    for (QAction *action : actions) {
-        if (action->data().toString() == m_overlayStep)
-            action->setChecked(true);
-    }
-    const QSignalBlocker blocker(m_stepsCombo);
-    m_stepsCombo->setCurrentIndex(std::max(0, m_stepsCombo->findData(m_overlayStep)));
-    m_opacitySlider->setEnabled(!m_overlayStep.isEmpty());
-}
-
-void MainWindow::openCloseUp(const QString &name)
-{
-    const QImage image = m_steps->image(name);
-    if (image.isNull())
-        return;
-    QPointer<StepImageDialog> &dialog = m_closeUps[name];
-    if (!dialog) {
-        dialog = new StepImageDialog(image, DetectionSteps::displayName(name), this);
-        dialog->setObjectName(QStringLiteral("closeUp-") + name);
-        dialog->setAttribute(Qt::WA_DeleteOnClose);
-    }
-    dialog->show();
-    dialog->raise();
-    dialog->activateWindow();
+    return m_stepsUi->overlayStep();
 }
 
 void MainWindow::updateDetectionStepsEnabled()
 {
-    const bool available = !m_steps->isEmpty();
     QString why;
-    if (available)
-        why = tr("Show an intermediate image of the face detection over the photo");
-    else if (m_job == Job::Detecting)
+    if (m_job == Job::Detecting)
         why = tr("The detection's steps appear when it ends");
     else if (m_document->photo().isNull())
         why = tr("Open a photo: its face detection's steps can be shown here");
     else
         why = tr("No detection steps for this photo: they are not saved in projects. Use Edit ▸ Re-detect Points "
                  "to see them");
-    QAction *menuAction = m_stepsMenu->menuAction();
-    menuAction->setEnabled(available);
-    menuAction->setToolTip(why);
-    menuAction->setStatusTip(why);
-    m_stepsCombo->setEnabled(available);
-    m_stepsCombo->setToolTip(why);
+    m_stepsUi->updateEnabled(why);
 }
 
 void MainWindow::onStyleActivated(int index)

@@ -10,6 +10,8 @@
 #include "export/animationexport.h"
 #include "playback/playbackcontroller.h"
 #include "playback/playhead.h"
+#include "timeline/timelineedits.h"
+#include "timeline/timelineview.h"
 #include "timeline/timelinewidget.h"
 #include "views/previewview.h"
 
@@ -26,6 +28,9 @@
 namespace toonface {
 
 namespace {
+
+constexpr double kEmotionFromPlayhead = 2.0; // seconds Add Emotion offers from the playhead
+constexpr double kShortestEmotion = 0.5; // less than this before the end: the whole animation
 
 QIcon themed(const char *name, const char *fallback)
 {
@@ -67,6 +72,7 @@ void Studio::install(PreviewView *preview, QAction *beforeMenu)
     m_addBlinks = new QAction(QIcon(QStringLiteral(":/toonface/icons/timeline-blinks.svg")), tr("Add &Blinks…"), this);
     connect(m_addBlinks, &QAction::triggered, this, [this] { BlinksDialog::run(m_window, m_document); });
     m_addEmotion = new QAction(QIcon(QStringLiteral(":/toonface/icons/emotion-smile.svg")), tr("Add &Emotion…"), this);
+    m_addEmotion->setObjectName(QStringLiteral("actionAddEmotion"));
     connect(m_addEmotion, &QAction::triggered, this, &Studio::addEmotion);
     m_mouthShapes = new QAction(tr("&Mouth Shapes…"), this);
     m_mouthShapes->setStatusTip(tr("Edit this character's nine mouth shapes"));
@@ -138,7 +144,18 @@ void Studio::exportAnimation()
 
 void Studio::addEmotion()
 {
-    EmotionDialog::run(m_window, m_document);
+    // Over the timeline's selected range; else two seconds from the playhead; else (at the
+    // end, or an empty animation) the whole of it.
+    const TimelineView *view = m_timelineDock->timeline()->view();
+    const std::optional<Span> selected = selectionRange(m_document->animation(), view->selection());
+    const double duration = m_document->timeline().duration();
+    const double at = m_playhead->time();
+    if (selected && selected->end > selected->start)
+        EmotionDialog::run(m_window, m_document, selected->start, selected->end);
+    else if (at + kShortestEmotion <= duration)
+        EmotionDialog::run(m_window, m_document, at, std::min(at + kEmotionFromPlayhead, duration));
+    else
+        EmotionDialog::run(m_window, m_document);
 }
 
 void Studio::updateEnabled()
