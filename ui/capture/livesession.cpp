@@ -339,6 +339,7 @@ void LiveSession::publish(LiveFrame frame)
     ++m_figures.delivered;
     ++m_figures.rendered;
     m_figures.readyMs.append((frame.ready - frame.arrival) * 1000.0);
+    m_figures.newestIndex = frame.index;
     if (m_latest)
         ++m_figures.replaced;
     m_latest = std::move(frame);

@@ -49,6 +49,7 @@ struct LiveFigures
     int shown = 0; // pictures the GUI took
     int replaced = 0; // drawn pictures replaced by a newer one before the GUI took them
     int lost = 0; // frames with no face
+    int newestIndex = -1; // the source's index of the newest picture drawn
     QVector<double> readyMs; // per drawn picture: from the frame's arrival to the picture drawn
     QVector<double> shownMs; // per shown picture: from the frame's arrival to the GUI taking it
 };
