@@ -105,7 +105,6 @@ QJsonObject runLive(std::unique_ptr<FrameSource> source, int sourceDropped(const
     out[QStringLiteral("shownPerDelivered")] = f.delivered > 0 ? double(f.shown) / f.delivered : 0.0;
     out[QStringLiteral("facesLost")] = f.lost;
     out[QStringLiteral("restPose")] = session.hasRestPose();
-    // Skip the frames before the rest pose was found (nothing tracked yet) from the latency.
     out[QStringLiteral("readyMsMedian")] = percentile(f.readyMs, 0.5);
     out[QStringLiteral("readyMsP95")] = percentile(f.readyMs, 0.95);
     out[QStringLiteral("shownMsMedian")] = percentile(f.shownMs, 0.5);

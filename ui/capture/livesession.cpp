@@ -232,6 +232,18 @@ void LiveSession::run(FrameSource *source, quint64 generation)
         bool asked = false;
     };
     std::future<RestPose> restJob;
+    auto takeRestPose = [&] {
+        RestPose rest = restJob.get();
+        if (rest.tracker) {
+            m_tracker = std::move(rest.tracker);
+            m_hasRestPose = true;
+            post([this, method = m_tracker->methodName()] {
+                Q_EMIT status(tr("Rest pose set (tracking by %1)").arg(method));
+            });
+        } else if (rest.asked || !m_tracker->hasNeutral()) {
+            post([this, error = rest.error] { Q_EMIT status(tr("No face for the rest pose: %1").arg(error)); });
+        }
+    };
     while (std::optional<VideoFrame> frame = source->next()) {
         // A camera's frame may have waited for the worker: its arrival is when it was pushed.
         const double arrival = camera ? now() - (camera->now() - camera->lastArrival()) : now();
@@ -263,18 +275,8 @@ void LiveSession::run(FrameSource *source, quint64 generation)
 
         // The rest pose is detected beside the frames (a detection costs many frames), which
         // go on showing meanwhile; the tracker is swapped in when it is ready.
-        if (restJob.valid() && restJob.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
-            RestPose rest = restJob.get();
-            if (rest.tracker) {
-                m_tracker = std::move(rest.tracker);
-                m_hasRestPose = true;
-                post([this, method = m_tracker->methodName()] {
-                    Q_EMIT status(tr("Rest pose set (tracking by %1)").arg(method));
-                });
-            } else if (rest.asked || !m_tracker->hasNeutral()) {
-                post([this, error = rest.error] { Q_EMIT status(tr("No face for the rest pose: %1").arg(error)); });
-            }
-        }
+        if (restJob.valid() && restJob.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
+            takeRestPose();
         const double t = now();
         if (!restJob.valid() && (m_restRequested || (!m_tracker->hasNeutral() && t - lastRestTry > kRestPoseRetryS))) {
             lastRestTry = t;
@@ -324,6 +326,9 @@ void LiveSession::run(FrameSource *source, quint64 generation)
         }
         publish(std::move(out));
     }
+    // A detection still running when the source ended is waited for, and said.
+    if (restJob.valid())
+        takeRestPose();
     const QString error = source->error();
     post([this, error, generation] {
         if (generation != m_generation)
