@@ -412,14 +412,44 @@ QString latin1(const char *s)
     return QString::fromLatin1(s);
 }
 
+// Elements that would run code or show other documents where the exported animation is
+// opened (a browser): a layer's drawing never needs them.
+bool isActiveElement(QStringView name)
+{
+    return name == QLatin1StringView("script") || name == QLatin1StringView("foreignObject")
+        || name == QLatin1StringView("iframe") || name == QLatin1StringView("handler");
+}
+
+// Copies the reader's start element without what could run code: event handler attributes
+// (onload, onclick, ...) and links to javascript: or data: documents.
+void writeInertStart(const QXmlStreamReader &reader, QXmlStreamWriter &writer)
+{
+    const QXmlStreamNamespaceDeclarations declarations = reader.namespaceDeclarations();
+    writer.writeStartElement(reader.namespaceUri().toString(), reader.name().toString());
+    for (const QXmlStreamNamespaceDeclaration &d : declarations)
+        writer.writeNamespace(d.namespaceUri().toString(), d.prefix().toString());
+    const QXmlStreamAttributes attributes = reader.attributes();
+    for (const QXmlStreamAttribute &a : attributes) {
+        if (a.name().startsWith(QLatin1StringView("on"), Qt::CaseInsensitive))
+            continue;
+        const QString value = a.value().trimmed().toString().toLower().remove(QLatin1Char(' '));
+        if (a.name() == QLatin1StringView("href")
+            && (value.startsWith(QLatin1StringView("javascript:")) || value.startsWith(QLatin1StringView("data:text"))
+                || value.startsWith(QLatin1StringView("data:application"))))
+            continue;
+        writer.writeAttribute(a);
+    }
+}
+
 // Reads an SVG document and returns the children of its root element as a fragment in the
-// SVG namespace, for embedding in <g id="layer-N">.
+// SVG namespace, for embedding in <g id="layer-N">, inert: no scripts, no event handlers.
 bool layerFragment(const QByteArray &content, QByteArray *fragment, QString *error)
 {
     QXmlStreamReader reader(content);
     QByteArray out;
     QXmlStreamWriter writer(&out);
     int depth = 0;
+    int skipFrom = 0; // the depth of the active element being left out, or 0
     bool sawRoot = false;
     while (!reader.atEnd()) {
         const auto token = reader.readNext();
@@ -439,13 +469,21 @@ bool layerFragment(const QByteArray &content, QByteArray *fragment, QString *err
                 continue;
             }
             ++depth;
-            writer.writeCurrentToken(reader);
+            if (skipFrom == 0 && isActiveElement(reader.name()))
+                skipFrom = depth; // a script or foreign content: left out with everything inside
+            if (skipFrom != 0)
+                continue;
+            writeInertStart(reader, writer);
         } else if (token == QXmlStreamReader::EndElement) {
             if (depth == 0)
                 continue; // the root's end
+            const bool skipped = skipFrom != 0;
+            if (skipFrom == depth)
+                skipFrom = 0;
             --depth;
-            writer.writeCurrentToken(reader);
-        } else if (sawRoot && depth > 0
+            if (!skipped)
+                writer.writeCurrentToken(reader);
+        } else if (sawRoot && depth > 0 && skipFrom == 0
             && (token == QXmlStreamReader::Characters || token == QXmlStreamReader::EntityReference)) {
             writer.writeCurrentToken(reader);
         }

@@ -1072,6 +1072,40 @@ private Q_SLOTS:
         QVERIFY(colourDistance(image.pixelColor(150, 490), QColor(0xff, 0xcc, 0x00)) <= 2);
     }
 
+    // A layer file is drawing only: scripts, event handlers, javascript: links and foreign
+    // content are left out, and its text stays text, so the exported animation opened in a
+    // browser runs nothing of it.
+    void layersAreInert()
+    {
+        SvgFace svgFace(testFace(), preset("normal"));
+        svgFace.addLayer(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" "
+            "onload=\"alert(1)\">"
+            "<script>alert(2)</script>"
+            "<circle id=\"kept\" cx=\"150\" cy=\"490\" r=\"12\" fill=\"#ffcc00\" onclick=\"alert(3)\" "
+            "ONMOUSEOVER=\"alert(4)\"/>"
+            "<a xlink:href=\" JavaScript:alert(5)\"><rect id=\"link\" width=\"5\" height=\"5\"/></a>"
+            "<a href=\"data:text/html,&lt;script&gt;alert(6)&lt;/script&gt;\"><rect width=\"5\" height=\"5\"/></a>"
+            "<foreignObject><div xmlns=\"http://www.w3.org/1999/xhtml\"><iframe src=\"x\"/></div></foreignObject>"
+            "<g><script type=\"text/ecmascript\"><![CDATA[alert(7)]]></script><circle id=\"deep\" r=\"2\"/></g>"
+            "<text id=\"words\">&lt;/script&gt;&lt;script&gt;alert(8)&lt;/script&gt; ]]&gt;</text>"
+            "</svg>");
+        const QByteArray svg = svgFace.svg();
+        const Node root = parsed(svg);
+        QVERIFY(QSvgRenderer(svg).isValid());
+        const Node *layer = findId(root, QStringLiteral("layer-1"));
+        QVERIFY(layer);
+        QVERIFY(findId(*layer, QStringLiteral("kept")));
+        QVERIFY(findId(*layer, QStringLiteral("link"))); // the drawing inside the link stays
+        QVERIFY(findId(*layer, QStringLiteral("deep")));
+        for (const char *active : {"<script", "alert(1)", "alert(2)", "alert(3)", "alert(4)", "alert(5)", "alert(6)",
+                 "alert(7)", "foreignObject", "iframe", "javascript", "JavaScript", "data:text", "onload", "onclick",
+                 "ONMOUSEOVER", "]]>"})
+            QVERIFY2(!svg.contains(active), active);
+        // The text is still there, as text.
+        QVERIFY(svg.contains("&lt;/script&gt;&lt;script&gt;alert(8)&lt;/script&gt; ]]&gt;"));
+    }
+
     void badLayerFiles_data()
     {
         QTest::addColumn<QByteArray>("content");

@@ -2,12 +2,14 @@
 
 #include "appearance/appearancepanel.h"
 #include "document/autosaver.h"
-#include "document/undomacro.h"
+#include "export/cartoonfile.h"
 #include "face/averageface.h"
 #include "render/svgface.h"
 #include "views/photoview.h"
 #include "views/pointhandle.h"
 #include "views/previewview.h"
+#include "views/themedicon.h"
+#include "window/applydetection.h"
 #include "window/detectionsteps.h"
 #include "window/detectionstepsui.h"
 #include "window/detectiontask.h"
@@ -31,7 +33,6 @@
 #include <QMimeData>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QScreen>
 #include <QScrollArea>
 #include <QSlider>
@@ -65,28 +66,6 @@ bool isOpenablePath(const QString &path)
         return true;
     const QByteArray suffix = QFileInfo(path).suffix().toLower().toLatin1();
     return QImageReader::supportedImageFormats().contains(suffix);
-}
-
-// Writes the cartoon to `path` (.svg as is, anything else rasterised at `size`); returns an
-// error message or an empty string. Runs off the GUI thread.
-QString writeCartoon(const QByteArray &svg, QSize size, const QString &path)
-{
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return QCoreApplication::translate("MainWindow", "%1: cannot write: %2").arg(path, file.errorString());
-    if (QFileInfo(path).suffix().compare(QLatin1StringView("svg"), Qt::CaseInsensitive) == 0) {
-        if (file.write(svg) != svg.size())
-            return QCoreApplication::translate("MainWindow", "%1: cannot write: %2").arg(path, file.errorString());
-    } else {
-        const QImage image = rasterizeSvg(svg, size);
-        if (image.isNull())
-            return QCoreApplication::translate("MainWindow", "%1: the cartoon could not be drawn").arg(path);
-        if (!image.save(&file, QFileInfo(path).suffix().toLatin1().constData()))
-            return QCoreApplication::translate("MainWindow", "%1: cannot encode the image").arg(path);
-    }
-    if (!file.commit())
-        return QCoreApplication::translate("MainWindow", "%1: cannot write: %2").arg(path, file.errorString());
-    return {};
 }
 
 } // namespace
@@ -203,14 +182,15 @@ void MainWindow::createActions()
     };
 
     m_openAction = make(QStringLiteral("actionOpen"), tr("&Open Photo or Project…"), QKeySequence::Open);
-    m_openAction->setIcon(QIcon::fromTheme(QStringLiteral("document-open")));
+    m_openAction->setIcon(themedIcon("document-open", "document-open.svg"));
     connect(m_openAction, &QAction::triggered, this, &MainWindow::openDialog);
     m_saveAction = make(QStringLiteral("actionSave"), tr("&Save"), QKeySequence::Save);
-    m_saveAction->setIcon(QIcon::fromTheme(QStringLiteral("document-save")));
+    m_saveAction->setIcon(themedIcon("document-save", "document-save.svg"));
     connect(m_saveAction, &QAction::triggered, this, &MainWindow::save);
     m_saveAsAction = make(QStringLiteral("actionSaveAs"), tr("Save &As…"), QKeySequence::SaveAs);
     connect(m_saveAsAction, &QAction::triggered, this, &MainWindow::saveAs);
     m_exportAction = make(QStringLiteral("actionExport"), tr("&Export Cartoon…"), QKeySequence(Qt::CTRL | Qt::Key_E));
+    m_exportAction->setIcon(themedIcon("image-x-generic", "toonface.svg"));
     connect(m_exportAction, &QAction::triggered, this, &MainWindow::exportCartoon);
     m_quitAction = make(QStringLiteral("actionQuit"), tr("&Quit"), QKeySequence::Quit);
     m_quitAction->setMenuRole(QAction::QuitRole);
@@ -219,14 +199,15 @@ void MainWindow::createActions()
     m_undoAction = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
     m_undoAction->setObjectName(QStringLiteral("actionUndo"));
     m_undoAction->setShortcut(QKeySequence::Undo);
-    m_undoAction->setIcon(QIcon::fromTheme(QStringLiteral("edit-undo")));
+    m_undoAction->setIcon(themedIcon("edit-undo", "edit-undo.svg"));
     m_redoAction = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
     m_redoAction->setObjectName(QStringLiteral("actionRedo"));
     m_redoAction->setShortcut(QKeySequence::Redo);
-    m_redoAction->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo")));
+    m_redoAction->setIcon(themedIcon("edit-redo", "edit-redo.svg"));
     m_redetectAction
         = make(QStringLiteral("actionRedetect"), tr("Re-&detect Points"), QKeySequence(Qt::CTRL | Qt::Key_D));
     m_redetectAction->setToolTip(tr("Detect the face again and replace every point"));
+    m_redetectAction->setIcon(themedIcon("view-refresh", "redetect.svg"));
     connect(m_redetectAction, &QAction::triggered, this, [this] { startDetection(false); });
     m_redetectKeepAction = make(QStringLiteral("actionRedetectKeep"), tr("Re-detect &Keeping My Points"),
         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
@@ -271,10 +252,10 @@ void MainWindow::createActions()
         = make(QStringLiteral("actionActualSize"), tr("&Actual Size"), QKeySequence(Qt::CTRL | Qt::Key_1));
     connect(m_actualSizeAction, &QAction::triggered, m_photoView, &PhotoView::zoomToActualSize);
     m_fitAction = make(QStringLiteral("actionFit"), tr("&Fit to Window"), QKeySequence(Qt::CTRL | Qt::Key_0));
-    m_fitAction->setIcon(QIcon::fromTheme(QStringLiteral("zoom-fit-best")));
+    m_fitAction->setIcon(themedIcon("zoom-fit-best", "zoom-fit.svg"));
     connect(m_fitAction, &QAction::triggered, m_photoView, &PhotoView::fitToWindow);
     m_zoomFaceAction = make(QStringLiteral("actionZoomFace"), tr("Zoom to F&ace"), QKeySequence(Qt::CTRL | Qt::Key_2));
-    m_zoomFaceAction->setIcon(QIcon::fromTheme(QStringLiteral("zoom-in")));
+    m_zoomFaceAction->setIcon(themedIcon("zoom-in", "zoom-face.svg"));
     connect(m_zoomFaceAction, &QAction::triggered, m_photoView, &PhotoView::zoomToFace);
     m_showIdsAction = make(QStringLiteral("actionShowIds"), tr("Show Point &IDs"), QKeySequence(Qt::CTRL | Qt::Key_I));
     m_showIdsAction->setCheckable(true);
@@ -337,7 +318,9 @@ void MainWindow::createToolBar()
 {
     QToolBar *bar = addToolBar(tr("Main"));
     bar->setObjectName(QStringLiteral("mainToolBar"));
-    bar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    // Icons only (each says what it does in its tool tip), so that the studio's transport fits beside
+    // it on a 1280-pixel screen.
+    bar->setToolButtonStyle(Qt::ToolButtonIconOnly);
     bar->addAction(m_openAction);
     bar->addAction(m_saveAction);
     bar->addSeparator();
@@ -528,42 +511,18 @@ void MainWindow::applyDetectedFace(const DetectionResult &result)
 {
     m_photoView->setOtherFaces(result.otherFaces);
     const bool showOtherFaces = !result.otherFaces.isEmpty() && !m_document->hasFace();
-    if (!m_document->hasFace() || m_detectChoosesFace) {
-        // The first face of a photo, or another person in it: the points and the colours
-        // sampled under them, one step.
-        const QString text = m_detectChoosesFace ? tr("Use another face") : tr("Detect face");
-        Style style = m_document->style();
-        style.sampleColours(m_document->photo(), result.face);
-        const UndoMacro step(m_document->undoStack(), text);
-        m_document->replaceFace(result.face, false, text);
-        m_document->changeStyle(style, tr("Sample colours"));
-    } else {
-        m_document->replaceFace(result.face, m_detectKeepsHandPlaced,
-            m_detectKeepsHandPlaced ? tr("Re-detect keeping my points") : tr("Re-detect points"));
-    }
+    const DetectionUse use = !m_document->hasFace() || m_detectChoosesFace ? DetectionUse::NewFace
+        : m_detectKeepsHandPlaced                                          ? DetectionUse::KeepHandPlaced
+                                                                           : DetectionUse::Replace;
+    applyDetection(m_document, result, use, m_detectChoosesFace);
     // A photo of several people, first seen: the whole photo, so that the other faces' boxes
     // can be clicked.
     if (showOtherFaces)
         m_photoView->fitToWindow();
-    const int ms = qRound(result.timingMs.value(QStringLiteral("total")));
-    QString found;
-    if (result.faceCount <= 1)
-        found = tr("Face found by the %1 method in %2 ms.").arg(result.method).arg(ms);
-    else if (m_detectChoosesFace)
-        found = tr("%n faces found: using the one you chose (%1, %2 ms).", nullptr, result.faceCount)
-                    .arg(result.method)
-                    .arg(ms);
-    else
-        found = tr("%n faces found: using the largest, most central one (%1, %2 ms). Click another face's box "
-                   "to switch.",
-            nullptr, result.faceCount)
-                    .arg(result.method)
-                    .arg(ms);
-    // Auto fell back to the thesis' pipeline: say why. That, and the choice of faces, stay up
-    // until the next message.
-    if (!result.note.isEmpty())
-        found += QLatin1Char(' ') + tr("The landmark method could not serve: %1").arg(result.note);
-    statusBar()->showMessage(found, result.note.isEmpty() && result.faceCount <= 1 ? kStatusTimeoutMs : 0);
+    // Auto's fallback to the thesis' pipeline, and the choice of faces, stay up until the next
+    // message.
+    statusBar()->showMessage(detectionSummary(result, m_detectChoosesFace),
+        result.note.isEmpty() && result.faceCount <= 1 ? kStatusTimeoutMs : 0);
     Q_EMIT pointsPlaced();
 }
 
@@ -722,7 +681,11 @@ void MainWindow::exportTo(const QString &path)
             QMessageBox::warning(this, tr("Cannot Export"), error);
         Q_EMIT exported(path, error);
     });
-    watcher->setFuture(QtConcurrent::run([svg, size, path] { return writeCartoon(svg, size, path); }));
+    watcher->setFuture(QtConcurrent::run([svg, size, path] {
+        QString error;
+        writeCartoonFile(svg, size, path, &error);
+        return error;
+    }));
 }
 
 bool MainWindow::maybeSave()

@@ -16,6 +16,7 @@
 #include "timeline/timelineview.h"
 #include "timeline/timelinewidget.h"
 #include "views/previewview.h"
+#include "views/themedicon.h"
 
 #include <QAction>
 #include <QDir>
@@ -33,11 +34,6 @@ namespace {
 
 constexpr double kEmotionFromPlayhead = 2.0; // seconds Add Emotion offers from the playhead
 constexpr double kShortestEmotion = 0.5; // less than this before the end: the whole animation
-
-QIcon themed(const char *name, const char *fallback)
-{
-    return QIcon::fromTheme(QString::fromLatin1(name), QIcon(QString::fromLatin1(fallback)));
-}
 
 } // namespace
 
@@ -62,12 +58,11 @@ void Studio::install(PreviewView *preview, QAction *beforeMenu)
     m_timelineDock->widget()->setMinimumHeight(160);
     m_window->addDockWidget(Qt::BottomDockWidgetArea, m_timelineDock);
 
-    m_lipSync = new QAction(
-        themed("audio-x-generic", ":/toonface/icons/emotion-neutral.svg"), tr("&Lip Sync from Recording…"), this);
+    m_lipSync = new QAction(themedIcon("audio-x-generic", "lip-sync.svg"), tr("&Lip Sync from Recording…"), this);
     m_lipSync->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
     m_lipSync->setStatusTip(tr("Time the mouth to a speech recording and its script"));
     connect(m_lipSync, &QAction::triggered, this, [this] { LipSyncDialog::run(m_window, m_document); });
-    m_sayText = new QAction(themed("media-record", ":/toonface/icons/play.svg"), tr("&Say Text…"), this);
+    m_sayText = new QAction(themedIcon("insert-text", "say-text.svg"), tr("&Say Text…"), this);
     m_sayText->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
     m_sayText->setStatusTip(tr("Speak a text with the built-in voice and lip-sync the face to it"));
     connect(m_sayText, &QAction::triggered, this, [this] { SayTextDialog::run(m_window, m_document); });
@@ -80,7 +75,7 @@ void Studio::install(PreviewView *preview, QAction *beforeMenu)
     m_mouthShapes->setStatusTip(tr("Edit this character's nine mouth shapes"));
     connect(m_mouthShapes, &QAction::triggered, this, [this] { MouthShapesDialog::run(m_window, m_document); });
     m_exportAnimation
-        = new QAction(themed("document-export", ":/toonface/icons/toonface.svg"), tr("Export &Animation…"), this);
+        = new QAction(themedIcon("document-export", "document-export.svg"), tr("Export &Animation…"), this);
     m_exportAnimation->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
     m_exportAnimation->setStatusTip(tr("Export the animation as SVG, HTML, MP4, GIF or PNG frames"));
     connect(m_exportAnimation, &QAction::triggered, this, &Studio::exportAnimation);
