@@ -169,11 +169,10 @@ void Studio::updateEnabled()
 
 void Studio::installCapture()
 {
-    m_captureCamera
-        = new QAction(themed("camera-photo", ":/toonface/icons/toonface.svg"), tr("Capture from &Camera…"), this);
+    m_captureCamera = new QAction(themedIcon("camera-photo", "camera.svg"), tr("Capture from &Camera…"), this);
     m_captureCamera->setStatusTip(tr("Take the neutral photo with a camera"));
     connect(m_captureCamera, &QAction::triggered, this, &Studio::captureFromCamera);
-    m_liveMode = new QAction(themed("camera-web", ":/toonface/icons/play.svg"), tr("&Live Mode…"), this);
+    m_liveMode = new QAction(themedIcon("camera-web", "live-mode.svg"), tr("&Live Mode…"), this);
     m_liveMode->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
     m_liveMode->setStatusTip(tr("Puppeteer the cartoon live from a camera or a video, and record the performance"));
     connect(m_liveMode, &QAction::triggered, this, &Studio::showLiveMode);
