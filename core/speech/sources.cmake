@@ -15,4 +15,5 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/syllableshapes.h speech/syllableshapes.cpp
   speech/syllableduration.h speech/syllableduration.cpp
   speech/pinyinindex.h speech/pinyinindex.cpp
-  speech/waveformpeaks.h speech/waveformpeaks.cpp)
+  speech/waveformpeaks.h speech/waveformpeaks.cpp
+  speech/audiomouth.h speech/audiomouth.cpp)

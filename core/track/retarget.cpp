@@ -112,3 +112,68 @@ void addTrackToTimeline(
 }
 
 } // namespace toonface
+
+namespace toonface {
+
+namespace {
+
+// `kept` (the keys outside [from, to]) and `added`, in time order.
+template<typename Key>
+QVector<Key> spliced(const QVector<Key> &before, const QVector<Key> &added, double from, double to)
+{
+    constexpr double eps = 1e-9;
+    QVector<Key> out;
+    for (const Key &k : before) {
+        if (k.time < from - eps || k.time > to + eps)
+            out.append(k);
+    }
+    out += added;
+    std::stable_sort(out.begin(), out.end(), [](const Key &a, const Key &b) { return a.time < b.time; });
+    return out;
+}
+
+} // namespace
+
+void addTakeToTimeline(const QVector<TrackedFrame> &frames, double fps, double duration,
+    const QVector<MouthKey> &soundMouth, Timeline *timeline, double at)
+{
+    const double end = at + std::max(0.0, duration);
+    Timeline take;
+    RetargetOptions options;
+    options.mouthKeysFromShapes = false;
+    addTrackToTimeline(frames, fps, &take, options, at);
+
+    QVector<PoseKey> pose = take.poseKeys();
+    if (!soundMouth.isEmpty()) {
+        for (PoseKey &k : pose) {
+            for (const char *id : kMouthControlIds)
+                k.offsetsEs0.remove(QString::fromLatin1(id));
+        }
+    }
+    timeline->setPoseKeys(spliced(timeline->poseKeys(), pose, at, end));
+    timeline->setGazeKeys(spliced(timeline->gazeKeys(), take.gazeKeys(), at, end));
+    timeline->setHeadKeys(spliced(timeline->headKeys(), take.headKeys(), at, end));
+
+    QVector<BlinkEvent> blinks;
+    for (const BlinkEvent &b : timeline->blinks()) {
+        if (b.time + b.duration < at || b.time > end)
+            blinks.append(b);
+    }
+    blinks += take.blinks();
+    std::stable_sort(
+        blinks.begin(), blinks.end(), [](const BlinkEvent &a, const BlinkEvent &b) { return a.time < b.time; });
+    timeline->setBlinks(blinks);
+
+    QVector<MouthKey> mouth;
+    for (MouthKey k : soundMouth) {
+        k.time += at;
+        mouth.append(k);
+    }
+    const bool keyBefore = std::any_of(timeline->mouthKeys().cbegin(), timeline->mouthKeys().cend(),
+        [at](const MouthKey &k) { return k.time < at - 1e-9; });
+    if (keyBefore && (mouth.isEmpty() || mouth.first().time > at + 1e-9))
+        mouth.prepend({at, MouthShape::M, 1.0, 0.0});
+    timeline->setMouthKeys(spliced(timeline->mouthKeys(), mouth, at, end));
+}
+
+} // namespace toonface

@@ -37,3 +37,17 @@ void addTrackToTimeline(const QVector<TrackedFrame> &frames, double fps, Timelin
     const RetargetOptions &options = {}, double offset = 0.0);
 
 } // namespace toonface
+
+namespace toonface {
+
+// Puts a recorded live take onto `timeline` at `at` seconds, in place of what its span
+// [at, at + duration] held: the tracked frames (times from the take's start) keyed as
+// addTrackToTimeline() keys them (pose, gaze, head, blinks). With `soundMouth` (mouth keys
+// timed from the take's start, e.g. audioMouthKeys()) the mouth follows those keys and the pose
+// keys leave the mouth controls out; without, the tracked mouth is in the pose keys. Keys and
+// blinks outside the span are kept; mouth keys inside it are replaced, and a shut key starts
+// the span when a key before it would otherwise sound on into it.
+void addTakeToTimeline(const QVector<TrackedFrame> &frames, double fps, double duration,
+    const QVector<MouthKey> &soundMouth, Timeline *timeline, double at);
+
+} // namespace toonface

@@ -7,6 +7,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   track/tracker.h track/tracker.cpp
   track/trackvideo.h track/trackvideo.cpp
   track/retarget.h track/retarget.cpp
+  track/livepose.h track/livepose.cpp
   track/trackaccuracy.h track/trackaccuracy.cpp)
 # The landmark fit runs every frame: optimised in Debug builds too (as detect/).
 set_source_files_properties(track/landmarkmethod.cpp track/facemeasure.cpp PROPERTIES COMPILE_OPTIONS "-O2")

@@ -4,6 +4,7 @@
 #include "dialogs/jobstatus.h"
 #include "dialogs/languagebox.h"
 #include "dialogs/secondsbox.h"
+#include "document/companionfile.h"
 #include "document/document.h"
 
 #include <QDir>
@@ -22,16 +23,6 @@
 
 namespace toonface {
 
-namespace {
-
-bool writableFolder(const QString &folder)
-{
-    const QFileInfo info(folder);
-    return !folder.isEmpty() && info.isDir() && info.isWritable();
-}
-
-} // namespace
-
 bool SayTextDialog::run(QWidget *parent, Document *document)
 {
     SayTextDialog dialog(document, parent);
@@ -40,28 +31,8 @@ bool SayTextDialog::run(QWidget *parent, Document *document)
 
 QString SayTextDialog::defaultSoundPath(const Document &document)
 {
-    QString folder;
-    QString base;
-    if (!document.filePath().isEmpty()) {
-        const QFileInfo project(document.filePath());
-        folder = project.absolutePath();
-        base = project.completeBaseName();
-    } else if (!document.project().photoPath.isEmpty()) {
-        const QFileInfo photo(document.project().photoPath);
-        folder = photo.absolutePath();
-        base = photo.completeBaseName();
-    }
-    if (!writableFolder(folder))
-        folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-    if (!writableFolder(folder))
-        folder = QDir::homePath();
-    if (base.isEmpty())
-        base = QStringLiteral("toonface");
-    const QDir dir(folder);
-    QString path = dir.absoluteFilePath(base + QStringLiteral("-speech.wav"));
-    for (int n = 2; QFileInfo::exists(path); ++n)
-        path = dir.absoluteFilePath(QStringLiteral("%1-speech-%2.wav").arg(base).arg(n));
-    return path;
+    return companionFile(document, QStringLiteral("speech"), QStringLiteral("wav"),
+        QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
 }
 
 SayTextDialog::SayTextDialog(Document *document, QWidget *parent)

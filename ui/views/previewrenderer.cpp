@@ -134,6 +134,28 @@ void PreviewRenderer::rebuildScene()
         Q_EMIT sceneChanged();
 }
 
+QImage PreviewRenderer::renderPose(
+    const SvgFace &face, const QRectF &frame, QSize size, const Pose &pose, QByteArray *svg)
+{
+    const QByteArray drawn = face.svg(pose);
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::white);
+    QSvgRenderer renderer(drawn);
+    if (renderer.isValid() && !frame.isEmpty()) {
+        QSizeF fitted = frame.size();
+        fitted.scale(QSizeF(size), Qt::KeepAspectRatio);
+        QRectF target(QPointF(), fitted);
+        target.moveCenter(QRectF(QPointF(), QSizeF(size)).center());
+        QPainter painter(&image);
+        painter.setRenderHints(QPainter::Antialiasing | QPainter::SmoothPixmapTransform);
+        renderer.setViewBox(frame);
+        renderer.render(&painter, target);
+    }
+    if (svg)
+        *svg = drawn;
+    return image;
+}
+
 PreviewRenderer::Frame PreviewRenderer::render(const std::shared_ptr<const SvgFace> &face,
     const std::shared_ptr<const TimelineEvaluator> &evaluator, const QRectF &frame, QSize size, double time,
     quint64 scene, int extraCostMs)
@@ -145,20 +167,7 @@ PreviewRenderer::Frame PreviewRenderer::render(const std::shared_ptr<const SvgFa
         return out;
     if (evaluator)
         out.pose = evaluator->evaluate(time);
-    out.svg = face->svg(out.pose);
-    out.image = QImage(size, QImage::Format_ARGB32_Premultiplied);
-    out.image.fill(Qt::white);
-    QSvgRenderer renderer(out.svg);
-    if (renderer.isValid() && !frame.isEmpty()) {
-        QSizeF fitted = frame.size();
-        fitted.scale(QSizeF(size), Qt::KeepAspectRatio);
-        QRectF target(QPointF(), fitted);
-        target.moveCenter(QRectF(QPointF(), QSizeF(size)).center());
-        QPainter painter(&out.image);
-        painter.setRenderHints(QPainter::Antialiasing | QPainter::SmoothPixmapTransform);
-        renderer.setViewBox(frame);
-        renderer.render(&painter, target);
-    }
+    out.image = renderPose(*face, frame, size, out.pose, &out.svg);
     if (extraCostMs > 0)
         QThread::msleep(ulong(extraCostMs));
     return out;

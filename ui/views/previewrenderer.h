@@ -90,6 +90,11 @@ public:
     // (for tests and benchmarks of the dropping path).
     void setExtraRenderCost(int ms) { m_extraCostMs = ms; }
 
+    // Draws `pose` of `face` showing `frame` (photo pixels) fitted (aspect kept) on white in an
+    // image of `size`; *svg receives the SVG drawn when not null. Runs on any thread.
+    static QImage renderPose(
+        const SvgFace &face, const QRectF &frame, QSize size, const Pose &pose, QByteArray *svg = nullptr);
+
     // Draws one picture from a scene; runs on any thread.
     static Frame render(const std::shared_ptr<const SvgFace> &face,
         const std::shared_ptr<const TimelineEvaluator> &evaluator, const QRectF &frame, QSize size, double time,

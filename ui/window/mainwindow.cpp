@@ -124,6 +124,8 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
         file->insertAction(m_exportAction, m_studio->exportAnimationAction());
     connect(m_studio, &Studio::message, this,
         [this](const QString &text) { statusBar()->showMessage(text, kStatusTimeoutMs); });
+    // A camera snapshot becomes the photo, as if opened.
+    connect(m_studio, &Studio::photoCaptured, this, &MainWindow::openFile);
     restoreSettings();
 
     connect(m_document, &Document::changed, this, &MainWindow::onDocumentChanged);

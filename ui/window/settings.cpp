@@ -21,6 +21,7 @@ const QString autosaveInterval = QStringLiteral("autosave/intervalSeconds");
 const QString showPointIds = QStringLiteral("view/showPointIds");
 const QString detectionMethod = QStringLiteral("detection/method");
 const QString overlayOpacity = QStringLiteral("view/overlayOpacity");
+const QString cameraDescription = QStringLiteral("capture/camera");
 } // namespace key
 
 constexpr int kDefaultAutosaveInterval = 60;
@@ -143,6 +144,16 @@ double Settings::overlayOpacity() const
 void Settings::setOverlayOpacity(double opacity)
 {
     m_settings.setValue(key::overlayOpacity, std::clamp(opacity, 0.0, 1.0));
+}
+
+QString Settings::cameraDescription() const
+{
+    return m_settings.value(key::cameraDescription).toString();
+}
+
+void Settings::setCameraDescription(const QString &description)
+{
+    m_settings.setValue(key::cameraDescription, description);
 }
 
 } // namespace toonface

@@ -50,6 +50,11 @@ public:
     double overlayOpacity() const;
     void setOverlayOpacity(double opacity);
 
+    // The camera last used, by its description (Qt 6.4's device ids are not stable); empty: the
+    // system's default camera.
+    QString cameraDescription() const;
+    void setCameraDescription(const QString &description);
+
     void sync() { m_settings.sync(); }
 
 private:

@@ -1,6 +1,8 @@
 #include "window/studio.h"
 
+#include "capture/capturedialog.h"
 #include "capture/importvideodialog.h"
+#include "capture/livewindow.h"
 #include "capture/videoview.h"
 #include "dialogs/blinksdialog.h"
 #include "dialogs/emotiondialog.h"
@@ -103,6 +105,7 @@ void Studio::install(PreviewView *preview, QAction *beforeMenu)
     edit->addActions({timeline.snap, timeline.zoomIn, timeline.zoomOut, timeline.zoomToFit});
     m_animationMenu->addSeparator();
     m_animationMenu->addAction(m_exportAnimation);
+    installCapture();
 
     m_playbackMenu = new QMenu(tr("&Playback"), m_window);
     m_playbackMenu->addActions(m_playback->actions());
@@ -214,5 +217,51 @@ void Studio::updateEnabled()
             a->setEnabled(face);
     }
 }
+
+// --- Camera capture and live mode (issue 11) ---
+
+void Studio::installCapture()
+{
+    m_captureCamera = new QAction(themedIcon("camera-photo", "camera.svg"), tr("Capture from &Camera…"), this);
+    m_captureCamera->setStatusTip(tr("Take the neutral photo with a camera"));
+    connect(m_captureCamera, &QAction::triggered, this, &Studio::captureFromCamera);
+    m_liveMode = new QAction(themedIcon("camera-web", "live-mode.svg"), tr("&Live Mode…"), this);
+    m_liveMode->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
+    m_liveMode->setStatusTip(tr("Puppeteer the cartoon live from a camera or a video, and record the performance"));
+    connect(m_liveMode, &QAction::triggered, this, &Studio::showLiveMode);
+
+    // After Open in the File menu (the main window's first menu).
+    if (QMenu *file = m_window->menuBar()->actions().constFirst()->menu()) {
+        const QList<QAction *> items = file->actions();
+        file->insertAction(items.value(1), m_captureCamera);
+    }
+    m_animationMenu->insertAction(m_mouthShapes, m_liveMode);
+    m_animationMenu->insertSeparator(m_mouthShapes);
+}
+
+void Studio::captureFromCamera()
+{
+    m_playback->pause();
+    CaptureDialog dialog(m_document, m_window);
+    connect(&dialog, &CaptureDialog::photoTaken, this, [this](const QString &path) {
+        Q_EMIT message(tr("Camera photo saved as %1").arg(QDir::toNativeSeparators(path)));
+        Q_EMIT photoCaptured(path);
+    });
+    dialog.exec();
+}
+
+void Studio::showLiveMode()
+{
+    m_playback->pause();
+    if (!m_liveWindow) {
+        m_liveWindow = new LiveWindow(m_document, m_playhead, m_window);
+        connect(m_liveWindow, &LiveWindow::message, this, &Studio::message);
+    }
+    m_liveWindow->show();
+    m_liveWindow->raise();
+    m_liveWindow->activateWindow();
+}
+
+// --- end of camera capture and live mode ---
 
 } // namespace toonface

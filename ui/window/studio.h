@@ -10,6 +10,7 @@ class QToolBar;
 namespace toonface {
 
 class Document;
+class LiveWindow;
 class Playhead;
 class PlaybackController;
 class PreviewView;
@@ -47,15 +48,30 @@ public:
     // The file an export is offered under: beside the project (or the photo), named after it.
     QString defaultExportPath(const QString &suffix) const;
 
+    // --- Camera capture and live mode (issue 11) ---
+    // File ▸ Capture from Camera… and Animation ▸ Live Mode…, added to those menus by install().
+    QAction *captureCameraAction() const { return m_captureCamera; }
+    QAction *liveModeAction() const { return m_liveMode; }
+    // The live mode window once opened (it is kept, hidden, when closed); null before.
+    LiveWindow *liveWindow() const { return m_liveWindow; }
+    // --- end of camera capture and live mode ---
+
 Q_SIGNALS:
     // Something for the status bar.
     void message(const QString &text);
+    // A camera snapshot was saved as `path`: the editor opens it as the new photo (the main
+    // window connects this to its openFile()).
+    void photoCaptured(const QString &path);
 
 private:
     void exportAnimation();
     void addEmotion();
     void updateEnabled();
     void installVideo();
+    // Camera capture and live mode.
+    void installCapture();
+    void captureFromCamera();
+    void showLiveMode();
 
     Document *m_document;
     QMainWindow *m_window;
@@ -74,6 +90,10 @@ private:
     // Import Video.
     QAction *m_importVideo = nullptr;
     VideoDock *m_videoDock = nullptr;
+    // Camera capture and live mode.
+    QAction *m_captureCamera = nullptr;
+    QAction *m_liveMode = nullptr;
+    LiveWindow *m_liveWindow = nullptr;
 };
 
 } // namespace toonface

@@ -1,0 +1,302 @@
+#include "capture/framepane.h"
+#include "capture/livesession.h"
+#include "capture/livewindow.h"
+#include "document/document.h"
+#include "face/fapu.h"
+#include "face/pointtable.h"
+#include "media/mediareader.h"
+#include "playback/playhead.h"
+#include "track/videofilesource.h"
+#include "uifixture.h"
+
+#include <QFileInfo>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace toonface;
+
+namespace {
+
+const QString kClip = QStringLiteral(TOONFACE_SHARED_DATA "/video/bbaf2n.mpg");
+
+std::unique_ptr<VideoFileSource> pacedClip(QString *error)
+{
+    auto source = std::make_unique<VideoFileSource>();
+    VideoFileSource::Options options;
+    options.paced = true;
+    if (!source->open(kClip, options, error))
+        return nullptr;
+    return source;
+}
+
+Audio clipSound()
+{
+    QString error;
+    std::optional<QVector<float>> samples = readAudio(kClip, kSpeechSampleRate, &error);
+    return samples ? Audio {*samples, kSpeechSampleRate} : Audio {};
+}
+
+double correlation(const QVector<double> &a, const QVector<double> &b)
+{
+    const qsizetype n = std::min(a.size(), b.size());
+    double ma = 0, mb = 0;
+    for (qsizetype i = 0; i < n; ++i) {
+        ma += a[i];
+        mb += b[i];
+    }
+    ma /= double(n);
+    mb /= double(n);
+    double sab = 0, saa = 0, sbb = 0;
+    for (qsizetype i = 0; i < n; ++i) {
+        sab += (a[i] - ma) * (b[i] - mb);
+        saa += (a[i] - ma) * (a[i] - ma);
+        sbb += (b[i] - mb) * (b[i] - mb);
+    }
+    return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : 0.0;
+}
+
+// The gap the pose opens between the lips (8.2 below 8.9), pixels.
+double poseMouthGap(const Pose &pose)
+{
+    return pose.offset[pt::idx("8.2")].y() - pose.offset[pt::idx("8.9")].y();
+}
+
+} // namespace
+
+class TestLiveMode : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase();
+    void clipDrivesTheCartoon();
+    void latestPictureWinsWhenTheGuiStalls();
+    void soundDrivesTheMouth();
+    void recordPutsTheTakeOnTheTimelineAsOneStep();
+    void restPoseAndNoFaceAreSaid();
+};
+
+void TestLiveMode::initTestCase()
+{
+    fixture::isolateSettings();
+    if (!QFileInfo::exists(kClip))
+        QSKIP("the GRID clips of shared/data/video are absent");
+}
+
+void TestLiveMode::clipDrivesTheCartoon()
+{
+    Document document;
+    fixture::fill(document);
+    LiveSession session(&document);
+    session.setImageSize(QSize(320, 320));
+    QString error;
+    std::unique_ptr<VideoFileSource> source = pacedClip(&error);
+    QVERIFY2(source, qPrintable(error));
+    const int frames = source->frameCount();
+    QSignalSpy finished(&session, &LiveSession::finished);
+    QVector<double> tracked, shown;
+    QSet<int> indices;
+    connect(&session, &LiveSession::frameReady, this, [&] {
+        const LiveFrame &f = session.current();
+        QCOMPARE(f.cartoon.size(), QSize(320, 320));
+        QVERIFY(!f.source.isNull());
+        QVERIFY(!indices.contains(f.index)); // each picture once, in order
+        indices.insert(f.index);
+        if (f.hasTrack && !f.tracked.lost) {
+            tracked.append(f.tracked.motion.mouthOpenEs0);
+            shown.append(poseMouthGap(f.pose));
+        }
+    });
+    session.start(std::move(source));
+    QVERIFY(session.isRunning());
+    QVERIFY(finished.wait(20000));
+    QVERIFY(!session.isRunning());
+    QVERIFY2(finished.first().at(0).toString().isEmpty(), qPrintable(finished.first().at(0).toString()));
+    QVERIFY(session.hasRestPose());
+
+    const LiveFigures f = session.figures();
+    qInfo("%d frames in the clip, %d delivered, %d drawn, %d shown, %d replaced, %d lost", frames, f.delivered,
+        f.rendered, f.shown, f.replaced, f.lost);
+    // A paced source drops only the frames it was late for (few, unless the machine is loaded).
+    QVERIFY(f.delivered > frames / 4);
+    QCOMPARE(f.rendered, f.delivered);
+    // Every picture drawn was shown or replaced by a newer one: none waits in a queue.
+    QCOMPARE(f.shown + f.replaced, f.rendered);
+    QCOMPARE(f.readyMs.size(), f.rendered);
+    QCOMPARE(f.shownMs.size(), f.shown);
+    QVERIFY(tracked.size() >= 10);
+    // The cartoon's lips part as the speaker's do.
+    const auto [low, high] = std::minmax_element(shown.cbegin(), shown.cend());
+    const double es0 = document.face().fapu().es0;
+    QVERIFY2(*high - *low > 0.05 * es0, qPrintable(QStringLiteral("%1 px").arg(*high - *low)));
+    const double r = correlation(tracked, shown);
+    qInfo("tracked mouth opening vs the cartoon's: r = %.3f over %lld frames", r, qlonglong(tracked.size()));
+    QVERIFY(r > 0.9);
+}
+
+void TestLiveMode::latestPictureWinsWhenTheGuiStalls()
+{
+    Document document;
+    fixture::fill(document);
+    LiveSession session(&document);
+    session.setImageSize(QSize(160, 160));
+    QString error;
+    std::unique_ptr<VideoFileSource> source = pacedClip(&error);
+    QVERIFY2(source, qPrintable(error));
+    QSignalSpy ready(&session, &LiveSession::frameReady);
+    session.start(std::move(source));
+    QVERIFY(ready.wait(10000));
+    // The GUI thread stalls for 600 ms: the worker goes on drawing.
+    const int before = session.figures().rendered;
+    QThread::msleep(600);
+    session.stop(); // no more pictures: what waits for the GUI is what the stall left
+    const LiveFigures stalled = session.figures();
+    QVERIFY(stalled.rendered >= before + 5);
+    // One event-loop turn then shows the newest picture once; the others were replaced.
+    QCoreApplication::processEvents();
+    const LiveFigures after = session.figures();
+    QCOMPARE(after.shown, stalled.shown + 1);
+    QCOMPARE(after.replaced, stalled.replaced);
+    QVERIFY(stalled.replaced >= stalled.rendered - before - 1);
+    QCOMPARE(after.shown + after.replaced, after.rendered);
+    QCOMPARE(session.current().index, after.newestIndex); // the newest picture, not the oldest waiting
+    QCoreApplication::processEvents();
+    QCOMPARE(session.figures().shown, after.shown); // nothing else was queued
+    QVERIFY(!session.isRunning());
+}
+
+void TestLiveMode::soundDrivesTheMouth()
+{
+    Document document;
+    fixture::fill(document);
+    LiveSession session(&document);
+    session.setImageSize(QSize(160, 160));
+    session.setMouthMode(LiveMouth::Microphone);
+    const Audio sound = clipSound();
+    if (sound.isEmpty())
+        QSKIP("the clip's sound cannot be read");
+    QString error;
+    std::unique_ptr<VideoFileSource> source = pacedClip(&error);
+    QVERIFY2(source, qPrintable(error));
+    QSignalSpy finished(&session, &LiveSession::finished);
+    int open = 0, shut = 0, total = 0;
+    connect(&session, &LiveSession::frameReady, this, [&] {
+        const LiveFrame &f = session.current();
+        ++total;
+        QVERIFY(f.soundDrivesMouth);
+        // The mouth holds the sound's shape at its weight, as a mouth key would.
+        const std::array<QPointF, 4> d = document.mouthShapes().displacements(f.sound.shape, document.face());
+        QCOMPARE(f.pose.offset[pt::idx("8.2")], d[1] * f.sound.weight);
+        if (f.sound.shape == MouthShape::M)
+            ++shut;
+        else
+            ++open;
+    });
+    session.start(std::move(source), sound);
+    QVERIFY(finished.wait(20000));
+    qInfo("sound-driven mouth: %d open, %d shut of %d frames", open, shut, total);
+    QVERIFY(open > total / 4); // GRID speakers talk for most of the clip
+    QVERIFY(shut > 0); // the clip starts and ends in silence
+}
+
+void TestLiveMode::recordPutsTheTakeOnTheTimelineAsOneStep()
+{
+    QTemporaryDir dir;
+    Document document;
+    fixture::fill(document, dir.filePath(QStringLiteral("portrait.png")));
+    Playhead playhead;
+    playhead.setTime(1.0);
+    LiveWindow window(&document, &playhead);
+    window.setLooping(false);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.startClip(kClip));
+    QTRY_VERIFY_WITH_TIMEOUT(window.session()->hasRestPose() && window.session()->current().hasTrack, 10000);
+    QVERIFY(!window.cartoonPane()->image().isNull());
+    QVERIFY(!window.sourcePane()->box().isEmpty());
+    // The clip again from its start (the rest pose kept), so that the take fits in it.
+    QVERIFY(window.startClip(kClip));
+    QVERIFY(window.session()->hasRestPose());
+    const Animation before = document.animation();
+    const int steps = document.undoStack()->count();
+
+    QTest::mouseClick(window.recordButton(), Qt::LeftButton);
+    QVERIFY(window.session()->isRecording());
+    QTest::qWait(1200);
+    QTest::mouseClick(window.recordButton(), Qt::LeftButton);
+    QVERIFY(!window.session()->isRecording());
+    QCOMPARE(document.undoStack()->count(), steps + 1);
+    QVERIFY2(window.statusText().startsWith(QStringLiteral("Recorded")), qPrintable(window.statusText()));
+
+    const Timeline &t = document.timeline();
+    QVERIFY(t.poseKeys().size() >= 8);
+    QVERIFY(t.headKeys().size() == t.poseKeys().size());
+    QVERIFY(t.gazeKeys().size() == t.poseKeys().size());
+    QCOMPARE(t.poseKeys().first().time, 1.0);
+    QVERIFY(t.poseKeys().last().time > 1.8 && t.poseKeys().last().time < 2.6);
+    QVERIFY(t.poseKeys().first().offsetsEs0.contains(QStringLiteral("8.2"))); // the camera drove the mouth
+    // The clip's sound over the take, beside the project's photo, starting at the playhead.
+    QVERIFY(t.audio());
+    QCOMPARE(t.audio()->offset, 1.0);
+    QVERIFY(t.audio()->path.startsWith(QFileInfo(dir.path()).absoluteFilePath()));
+    QVERIFY(QFileInfo::exists(t.audio()->path));
+    QVERIFY(std::abs(t.audio()->duration - (t.poseKeys().last().time - 1.0)) < 0.2);
+
+    document.undoStack()->undo();
+    QCOMPARE(document.animation(), before);
+    document.undoStack()->redo();
+    QVERIFY(document.timeline().poseKeys().size() >= 8);
+    window.close();
+}
+
+void TestLiveMode::restPoseAndNoFaceAreSaid()
+{
+    Document document;
+    fixture::fill(document);
+    LiveSession session(&document);
+    QSignalSpy status(&session, &LiveSession::status);
+    QString error;
+    std::unique_ptr<VideoFileSource> source = pacedClip(&error);
+    QVERIFY2(source, qPrintable(error));
+    session.start(std::move(source));
+    QTRY_VERIFY_WITH_TIMEOUT(session.hasRestPose(), 10000);
+    QTRY_VERIFY(!status.isEmpty());
+    QVERIFY(status.last().at(0).toString().startsWith(QStringLiteral("Rest pose set")));
+    session.stop();
+
+    // A blank "camera": no face for the rest pose, said; the cartoon still shows (at rest).
+    status.clear();
+    struct Blank : FrameSource
+    {
+        int n = 0;
+        std::optional<VideoFrame> next() override
+        {
+            if (n >= 10)
+                return std::nullopt;
+            QThread::msleep(20);
+            QImage image(QSize(320, 240), QImage::Format_RGB32);
+            image.fill(Qt::gray);
+            return VideoFrame {image, n * 0.04, n++};
+        }
+        double frameRate() const override { return 25; }
+        QSize frameSize() const override { return {320, 240}; }
+    };
+    QSignalSpy finished(&session, &LiveSession::finished);
+    session.start(std::make_unique<Blank>());
+    QVERIFY(finished.wait(10000));
+    QVERIFY(!session.hasRestPose());
+    QVERIFY(!status.isEmpty());
+    QVERIFY2(status.first().at(0).toString().startsWith(QStringLiteral("No face for the rest pose")),
+        qPrintable(status.first().at(0).toString()));
+    QVERIFY(!session.current().hasTrack);
+    QVERIFY(!session.current().cartoon.isNull());
+    QCOMPARE(session.current().pose, Pose {});
+}
+
+QTEST_MAIN(TestLiveMode)
+#include "tst_livemode.moc"

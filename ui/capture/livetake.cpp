@@ -1,0 +1,56 @@
+#include "capture/livetake.h"
+
+#include "document/document.h"
+#include "speech/audiomouth.h"
+#include "track/retarget.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+
+namespace toonface {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("LiveTake", text);
+}
+
+} // namespace
+
+bool commitTake(Document *document, const LiveTake &take, double at, const QString &audioPath, QString *message)
+{
+    QString unused;
+    QString &out = message ? *message : unused;
+    if (take.frames.isEmpty()) {
+        out = tr("Nothing was recorded: no frame with a face was tracked.");
+        return false;
+    }
+    const bool soundMouth = take.mouthMode == LiveMouth::Microphone && !take.mouth.isEmpty();
+    Animation after = document->animation();
+    addTakeToTimeline(take.frames, take.fps, take.duration,
+        soundMouth ? audioMouthKeys(take.mouth) : QVector<MouthKey> {}, &after.timeline, at);
+
+    const bool sound = !take.audio.isEmpty() && !audioPath.isEmpty();
+    if (sound) {
+        QString error;
+        if (!QDir().mkpath(QFileInfo(audioPath).absolutePath()) || !writeAudio(audioPath, take.audio, &error)) {
+            out = error.isEmpty() ? tr("%1: cannot create its folder").arg(audioPath) : error;
+            return false;
+        }
+        after.timeline.setAudio(AudioClip {QFileInfo(audioPath).absoluteFilePath(), at, take.audio.duration()});
+    }
+    document->changeAnimation(after, tr("Record Live Take"));
+    const QString length = QString::number(take.duration, 'f', 1);
+    if (sound)
+        out = tr("Recorded %1 s (%2 frames) with its sound, saved as %3")
+                  .arg(length)
+                  .arg(take.frames.size())
+                  .arg(QDir::toNativeSeparators(audioPath));
+    else
+        out = tr("Recorded %1 s (%2 frames): motion only, no sound").arg(length).arg(take.frames.size());
+    return true;
+}
+
+} // namespace toonface

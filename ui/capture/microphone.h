@@ -1,0 +1,53 @@
+#pragma once
+
+#include <QAudioFormat>
+#include <QObject>
+#include <QString>
+#include <QVector>
+
+class QAudioSource;
+class QIODevice;
+class QMediaDevices;
+
+namespace toonface {
+
+// The default microphone through QAudioSource, delivering mono float samples. No microphone
+// (QMediaDevices::audioInputs() empty, as on a machine without sound input) is a clear message,
+// never an exception or a silent failure; a microphone that stops (unplugged, an error) says
+// so in failed().
+//
+// GUI thread: samples() is emitted there.
+class Microphone : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit Microphone(QObject *parent = nullptr);
+    ~Microphone() override;
+
+    static bool isPresent();
+    static QString noMicrophoneMessage();
+
+    // Starts the default input: mono at 16 kHz when it can, else its preferred format
+    // (converted to mono float). False with *error when there is none or it cannot start.
+    bool start(QString *error);
+    void stop();
+    bool isActive() const { return m_source != nullptr; }
+    int sampleRate() const { return m_format.sampleRate(); }
+
+    // Interleaved samples of `format` -> mono floats in [-1, 1] (channels averaged).
+    static QVector<float> toMono(const QByteArray &data, const QAudioFormat &format);
+
+Q_SIGNALS:
+    void samples(const QVector<float> &mono, int sampleRate);
+    void failed(const QString &message);
+
+private:
+    void read();
+
+    QAudioSource *m_source = nullptr;
+    QIODevice *m_device = nullptr;
+    QAudioFormat m_format;
+};
+
+} // namespace toonface

@@ -1,0 +1,15 @@
+#pragma once
+
+#include <QString>
+
+namespace toonface {
+
+class Document;
+
+// A new file to keep beside the document: in the project's folder (else the photo's, else the
+// user's `fallback` folder, else home), named "<project or photo name>-<tag>.<extension>", or
+// "...-<tag>-2.<extension>" and so on when that exists. Used for the files a project refers to
+// (spoken sound, recorded takes, camera snapshots).
+QString companionFile(const Document &document, const QString &tag, const QString &extension, const QString &fallback);
+
+} // namespace toonface
