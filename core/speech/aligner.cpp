@@ -4,6 +4,7 @@
 #include "speech/features.h"
 #include "speech/onsetsignals.h"
 #include "speech/pinyin.h"
+#include "speech/referencefeatures.h"
 #include "speech/syllableduration.h"
 
 #include <algorithm>
@@ -17,7 +18,6 @@ namespace toonface {
 namespace {
 
 constexpr int kDefaultRate = 175;
-constexpr double kReferencePad = 0.3; // seconds of silence added before and after the reference
 
 AlignResult failure(AlignStatus status, const QString &why)
 {
@@ -205,36 +205,17 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
 
 namespace {
 
-// The aligner proper, on the recording's features `a`.
+// The aligner proper, on the recording's features `a` and the padded reference's `b`.
 AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const TtsResult &reference,
-    const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+    const SpeechFeatures &b, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
     const int n = int(script.syllables.size());
     if (!reference.ok() || reference.units.size() != n)
         return failure(AlignStatus::BadInput, QStringLiteral("no reference rendering of the script"));
-    if (progress)
-        progress(0.3, QStringLiteral("features"));
-    // The reference gets silence either side (faint noise, as a room has), so that silence
-    // before and after the speech in the recording has something to match.
-    Audio ref16 = resampled(reference.audio, kSpeechSampleRate);
-    {
-        const qsizetype pad = qsizetype(kReferencePad * kSpeechSampleRate);
-        // One allocation: fresh pages are costly, and ten minutes of speech are 40 MB.
-        QVector<float> padded;
-        padded.reserve(ref16.samples.size() + 2 * pad);
-        padded.resize(pad, 0.0f);
-        padded.append(ref16.samples);
-        padded.resize(padded.size() + pad, 0.0f);
-        quint32 state = 12345;
-        for (float &s : padded) {
-            state = state * 1664525u + 1013904223u;
-            s += 1e-4f * (float(state >> 8) / float(1u << 24) - 0.5f);
-        }
-        ref16.samples = std::move(padded);
-    }
-    const SpeechFeatures b = computeSpeechFeatures(ref16, cancel);
     if (isCancelled(cancel))
         return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
+    if (progress)
+        progress(0.3, QStringLiteral("features"));
 
     // ln(power) spans at least ~12 dB between pauses and speech in any recording with speech.
     const double speech = a.speechDuration();
@@ -518,7 +499,9 @@ AlignResult alignToReference(const Audio &audio, const Script &script, const Tts
     SpeechFeatures a;
     if (std::optional<AlignResult> stopped = recordingFeatures(audio, script, cancel, &a))
         return *stopped;
-    return alignFeatures(a, script, reference, progress, cancel);
+    if (!reference.ok() || reference.units.size() != script.syllables.size())
+        return failure(AlignStatus::BadInput, QStringLiteral("no reference rendering of the script"));
+    return alignFeatures(a, script, reference, referenceFeatures(reference.audio, cancel), progress, cancel);
 }
 
 AlignResult alignScript(const Audio &audio, const Script &script, const AlignOptions &options,
@@ -527,17 +510,30 @@ AlignResult alignScript(const Audio &audio, const Script &script, const AlignOpt
     SpeechFeatures a;
     if (std::optional<AlignResult> stopped = recordingFeatures(audio, script, cancel, &a))
         return *stopped;
+    return alignScript(a, script, options, progress, cancel);
+}
+
+AlignResult alignScript(const SpeechFeatures &a, const Script &script, const AlignOptions &options,
+    const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+{
+    if (script.syllables.isEmpty())
+        return failure(AlignStatus::BadInput, QStringLiteral("the script is empty"));
     TtsOptions tts = options.reference;
     const bool matchRate = tts.rate <= 0;
     if (matchRate)
         tts.rate = kDefaultRate;
     if (matchRate) {
         // Speak the reference at the speaker's pace: less warping, fewer mistakes. The pace
-        // at the default rate is measured on (at most) the first 120 syllables.
+        // at the default rate is measured on (at most) the first 120 syllables; when they are
+        // the whole script, that rendering may serve as the reference itself.
         Script probe = script;
         if (probe.syllables.size() > 120)
             probe.syllables.resize(120);
-        const TtsResult sample = synthesize(probe, tts, {}, cancel);
+        const bool whole = probe.syllables.size() == script.syllables.size();
+        SpeechFeatures probeFeatures;
+        const TtsResult sample = whole ? renderReference(probe, tts, &probeFeatures, cancel)
+                                       : synthesize(
+                                           probe, tts, [](const float *, qsizetype) {}, {}, cancel);
         if (isCancelled(cancel))
             return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
         if (!sample.ok())
@@ -549,20 +545,21 @@ AlignResult alignScript(const Audio &audio, const Script &script, const AlignOpt
         const double ratio = a.speechDuration() / std::max(spoken, 0.01);
         if (ratio > 0.3 && ratio < 6 && std::abs(std::log(ratio)) > std::log(1.15))
             tts.rate = std::clamp(int(std::lround(kDefaultRate / ratio)), 80, 450);
-        else if (probe.syllables.size() == script.syllables.size()) {
+        else if (whole) {
             if (progress)
                 progress(0.1, QStringLiteral("reference"));
-            return alignFeatures(a, script, sample, progress, cancel);
+            return alignFeatures(a, script, sample, probeFeatures, progress, cancel);
         }
     }
-    const TtsResult reference = synthesize(script, tts, {}, cancel);
+    SpeechFeatures b;
+    const TtsResult reference = renderReference(script, tts, &b, cancel);
     if (isCancelled(cancel))
         return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
     if (!reference.ok())
         return failure(AlignStatus::BadInput, reference.error);
     if (progress)
         progress(0.1, QStringLiteral("reference"));
-    return alignFeatures(a, script, reference, progress, cancel);
+    return alignFeatures(a, script, reference, b, progress, cancel);
 }
 
 } // namespace toonface

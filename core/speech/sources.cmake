@@ -9,6 +9,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/features.h speech/features.cpp
   speech/dtw.h speech/dtw.cpp
   speech/onsetsignals.h speech/onsetsignals.cpp
+  speech/referencefeatures.h speech/referencefeatures.cpp
   speech/aligner.h speech/aligner.cpp
   speech/englishshapes.h speech/englishshapes.cpp
   speech/lipsync.h speech/lipsync.cpp
