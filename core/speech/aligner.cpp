@@ -243,17 +243,26 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     // loudness. Steady noise (hum, a fan, a noisy line) can keep a pause's whole-band energy
     // near that of speech; counted as speech, the noise before the first word draws the first
     // syllables into it and squeezes them.
-    const OnsetSignals sig(a);
-    const OnsetSignals refSig(b);
+    // (The signals are built again after the warp rather than held through it: on a long
+    // recording they weigh as much as the warp.)
     std::vector<float> quietA = a.silence, quietB = b.silence;
-    for (int t = 0; t < a.frames; ++t)
-        if (sig.isPause(t))
-            quietA[size_t(t)] = 1.0f;
-    for (int t = 0; t < b.frames; ++t)
-        if (refSig.isPause(t))
-            quietB[size_t(t)] = 1.0f;
+    double refSpeech = 0;
+    {
+        const OnsetSignals refSig(b);
+        for (int t = 0; t < b.frames; ++t)
+            if (refSig.isPause(t))
+                quietB[size_t(t)] = 1.0f;
+        refSpeech = b.frames - refSig.pauseFrames(0, b.frames);
+    }
+    {
+        const OnsetSignals pauses(a);
+        for (int t = 0; t < a.frames; ++t)
+            if (pauses.isPause(t))
+                quietA[size_t(t)] = 1.0f;
+    }
     const auto path = dtwPath(
         {a.vectors.data(), quietA.data(), a.frames}, {b.vectors.data(), quietB.data(), b.frames}, opt, cancel);
+    const OnsetSignals sig(a);
     if (isCancelled(cancel))
         return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
     if (path.empty())
@@ -291,7 +300,6 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     std::vector<OnsetKind> kinds(static_cast<size_t>(n));
     // The speaker's pace against the reference's, pauses excluded.
     const double targetSpeech = a.frames - sig.pauseFrames(0, a.frames);
-    const double refSpeech = b.frames - refSig.pauseFrames(0, b.frames);
     const double pace = targetSpeech / std::max(refSpeech, 1.0);
     for (int k = 0; k < n; ++k) {
         const TtsUnit &u = reference.units[k];
