@@ -109,11 +109,16 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
     std::vector<double> logLength(512);
     for (size_t len = 1; len < logLength.size(); ++len)
         logLength[len] = std::log(double(len));
-    // A syllable over [from, to): its nucleus and its length (pauses excluded).
-    auto span = [&](int k, int from, int to) {
+    // A syllable over [from, to): its nucleus and its length (pauses excluded) score `base`,
+    // from which `penalty` (never negative) is taken. base alone bounds the span's score from
+    // above: the search skips the penalty where that bound cannot win.
+    auto base = [&](int k, int from, int to) {
         const double len = std::max(1.0, (to - from) - sig.pauseFrames(from, to));
         const double r
             = (len < double(logLength.size()) ? logLength[size_t(len)] : std::log(len)) - logExpected[size_t(k)];
+        return kNucleus * sig.maxNucleus(from, to) - kDuration * r * r;
+    };
+    auto penalty = [&](int from, int to) {
         // Two loud peaks inside with a valley of 3 ln units (13 dB) between them: a syllable
         // boundary missed.
         const double inside = std::clamp((sig.innerValley(from, to) - 1.0) / 2.0, 0.0, 1.0);
@@ -128,7 +133,7 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
             const bool resumes = sig.maxNucleus(resume, to) >= 0.3 || sig.maxLoud(resume, to) >= 0.5;
             pauseInside = std::max(double(noNucleusBeforePause[size_t(from)]), resumes ? 1.0 : 0.0);
         }
-        return kNucleus * sig.maxNucleus(from, to) - kDuration * r * r - kValley * (inside + pauseInside);
+        return kValley * (inside + pauseInside);
     };
     constexpr double kNone = -1e18;
     std::vector<std::vector<double>> score(static_cast<size_t>(n));
@@ -158,7 +163,10 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
                 const double prev = score[size_t(k) - 1][size_t(p - lo[size_t(k) - 1])];
                 if (prev <= kNone / 2)
                     continue;
-                const double v = prev + span(k - 1, p, b);
+                const double b0 = base(k - 1, p, b);
+                if (prev + b0 <= best)
+                    continue;
+                const double v = prev + (b0 - penalty(p, b));
                 if (v > best) {
                     best = v;
                     arg = p;
@@ -180,7 +188,8 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
         // The last syllable's minimum too, unless the speech ends too soon for any (then the
         // longest last syllable wins by its duration cost).
         const double speech = (speechEnd - b) - sig.pauseFrames(b, speechEnd);
-        const double v = s0 + span(n - 1, b, std::max(speechEnd, b + 1))
+        const int end = std::max(speechEnd, b + 1);
+        const double v = s0 + (base(n - 1, b, end) - penalty(b, end))
             - (speech < minFrames[size_t(n) - 1] ? 1e6 * (minFrames[size_t(n) - 1] - speech) : 0.0);
         if (v > best) {
             best = v;
