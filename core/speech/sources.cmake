@@ -6,6 +6,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/zhuyin.h speech/zhuyin.cpp
   speech/script.h speech/script.cpp
   speech/tts.h speech/tts.cpp
+  speech/ttsvoicefile.h speech/ttsvoicefile.cpp
   speech/features.h speech/features.cpp
   speech/dtw.h speech/dtw.cpp
   speech/onsetsignals.h speech/onsetsignals.cpp

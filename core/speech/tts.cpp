@@ -1,10 +1,17 @@
 #include "speech/tts.h"
 
 #include "speech/pinyin.h"
+#include "speech/ttsvoicefile.h"
 
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QHash>
 #include <QMutex>
 #include <QMutexLocker>
+#include <QRandomGenerator>
 
+#include <espeak-ng/espeak_ng.h>
 #include <espeak-ng/speak_lib.h>
 
 #include <cstring>
@@ -92,6 +99,51 @@ int startEspeak()
     return sampleRate;
 }
 
+// A directory for the voice files of this process, removed at exit. espeak-ng lowercases the
+// path of a voice file it is given and reads at most 59 characters of it: the path must be
+// short and lowercase.
+struct VoiceDir
+{
+    QString path;
+    VoiceDir()
+    {
+        for (const QString &base : {QDir::tempPath(), QStringLiteral("/tmp")}) {
+            const QString candidate = base
+                + QStringLiteral("/tfv-%1-%2")
+                      .arg(QCoreApplication::applicationPid())
+                      .arg(QRandomGenerator::global()->generate(), 8, 16, QLatin1Char('0'));
+            if (candidate == candidate.toLower() && candidate.size() < 48 && QDir().mkpath(candidate)) {
+                path = candidate;
+                return;
+            }
+        }
+    }
+    ~VoiceDir()
+    {
+        if (!path.isEmpty())
+            QDir(path).removeRecursively();
+    }
+};
+
+// Selects `voice` without its pitch flutter (see steadyVoiceFile), or as espeak-ng names it
+// when no file for it can be made. Called with espeakMutex() held.
+bool selectVoice(const QString &voice)
+{
+    static const VoiceDir dir;
+    static QHash<QString, QString> files;
+    auto found = files.constFind(voice);
+    if (found == files.constEnd()) {
+        const char *data = nullptr;
+        espeak_Info(&data);
+        const QString path
+            = !dir.path.isEmpty() && data ? steadyVoiceFile(voice, QFile::decodeName(data), dir.path) : QString();
+        found = files.insert(voice, path);
+    }
+    if (!found->isEmpty() && espeak_ng_SetVoiceByFile(QFile::encodeName(*found).constData()) == ENS_OK)
+        return true;
+    return espeak_SetVoiceByName(voice.toUtf8().constData()) == EE_OK;
+}
+
 bool isPause(const QString &phoneme)
 {
     return phoneme.startsWith(QLatin1Char('_'));
@@ -150,15 +202,13 @@ TtsResult synthesize(const Script &script, const TtsOptions &options, const Audi
         return result;
     }
     QMutexLocker lock(&espeakMutex());
-    // Note: espeak-ng carries state from one synthesis to the next (its pitch flutter), so the
-    // same request gives slightly different audio depending on what was spoken before.
     const int sampleRate = startEspeak();
     if (sampleRate <= 0) {
         result.error = ttsUnavailable();
         return result;
     }
     const QString voice = ttsVoice(options, script.language);
-    if (espeak_SetVoiceByName(voice.toUtf8().constData()) != EE_OK) {
+    if (!selectVoice(voice)) {
         result.error = QStringLiteral("espeak-ng has no voice '%1'").arg(voice);
         return result;
     }
