@@ -1,5 +1,7 @@
 #include "dialogs/saytextdialog.h"
 
+#include "dialogs/dictionarywarmup.h"
+
 #include "dialogs/animationedits.h"
 #include "dialogs/jobstatus.h"
 #include "dialogs/languagebox.h"
@@ -72,6 +74,7 @@ SayTextDialog::SayTextDialog(Document *document, QWidget *parent)
     , m_pitch(new QSpinBox(this))
     , m_offset(new SecondsBox(this))
     , m_soundPath(new QLineEdit(this))
+    , m_dictionary(new DictionaryWarmUp(this))
     , m_soundNote(new QLabel(this))
 {
     setWindowTitle(tr("Say Text"));
@@ -131,6 +134,7 @@ SayTextDialog::SayTextDialog(Document *document, QWidget *parent)
     setBody(intro, form, {m_text, m_language, m_rate, m_pitch, m_offset, m_soundPath, choose});
 
     connect(m_text, &QPlainTextEdit::textChanged, this, &SayTextDialog::updateButtons);
+    connect(m_dictionary, &DictionaryWarmUp::loaded, this, &SayTextDialog::updateButtons);
     connect(m_soundPath, &QLineEdit::textChanged, this, &SayTextDialog::updateButtons);
     connect(choose, &QPushButton::clicked, this, &SayTextDialog::chooseSoundPath);
 
@@ -154,7 +158,9 @@ void SayTextDialog::chooseSoundPath()
 
 bool SayTextDialog::canStart() const
 {
-    return !m_text->toPlainText().trimmed().isEmpty() && !m_soundPath->text().trimmed().isEmpty();
+    // Parsing the text waits for the character dictionary: not before it has loaded.
+    return m_dictionary->ready() && !m_text->toPlainText().trimmed().isEmpty()
+        && !m_soundPath->text().trimmed().isEmpty();
 }
 
 std::optional<SpeechTask::Job> SayTextDialog::prepare()
