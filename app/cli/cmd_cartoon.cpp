@@ -1,5 +1,6 @@
 #include "cli/command.h"
 #include "cli/faceinput.h"
+#include "export/cartoonfile.h"
 #include "face/emotion.h"
 #include "face/pose.h"
 #include "render/svgface.h"
@@ -90,9 +91,8 @@ int runCartoon(const Command &self, const QStringList &args)
         return fail(ExitFailed, error);
     if (parser.isSet(png)) {
         const QSize target = face.frame().size().scaled(pngSize, pngSize, Qt::KeepAspectRatio).toSize();
-        const QImage image = rasterizeSvg(svg, target);
-        if (image.isNull() || !image.save(parser.value(png), "PNG"))
-            return fail(ExitFailed, QStringLiteral("cannot write %1").arg(parser.value(png)));
+        if (!writeCartoonFile(svg, target, parser.value(png), &error, "png"))
+            return fail(ExitFailed, error);
     }
     return ExitOk;
 }

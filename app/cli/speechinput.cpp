@@ -43,14 +43,15 @@ int buildSpeechTrack(const SpeechRequest &request, SpeechTrack *out)
         out->script = request.sayText;
     } else {
         progress(QStringLiteral("aligning %1 with %2").arg(request.audioPath, request.scriptPath));
-        const LipsyncOutcome outcome = lipsyncFiles(request.audioPath, request.scriptPath, *language);
+        // Read once: the script may come through a pipe (--script <(echo ...)).
+        const ScriptParse script = readScriptFile(request.scriptPath, *language, &out->script);
+        if (!script.ok())
+            return fail(ExitBadInput, script.error);
+        const LipsyncOutcome outcome = lipsyncRecording(request.audioPath, script.script, request.scriptPath);
         if (!outcome.ok())
             return fail(outcome.status == LipsyncStatus::CannotAlign ? ExitCannotAlign : ExitBadInput, outcome.error);
         result = outcome.result;
         out->audioPath = QFileInfo(request.audioPath).absoluteFilePath();
-        QFile scriptFile(request.scriptPath);
-        if (scriptFile.open(QIODevice::ReadOnly))
-            out->script = QString::fromUtf8(scriptFile.readAll());
     }
     out->cues = result.mouthCues;
     out->syllables = result.syllables;

@@ -1,5 +1,6 @@
 list(APPEND TOONFACE_CORE_SOURCES
   export/animationexport.h export/animationexport.cpp
+  export/cartoonfile.h export/cartoonfile.cpp
   export/framerenderer.h export/framerenderer.cpp
   export/videoencoder.h export/videoencoder.cpp
   export/videosink.h export/muxedsink.cpp export/mp4sink.cpp export/gifsink.cpp export/pngsink.cpp

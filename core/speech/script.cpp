@@ -262,7 +262,7 @@ ScriptParse parseScript(const QString &text, Language language)
     return result;
 }
 
-ScriptParse readScriptFile(const QString &path, Language language)
+ScriptParse readScriptFile(const QString &path, Language language, QString *textRead)
 {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {
@@ -279,6 +279,8 @@ ScriptParse readScriptFile(const QString &path, Language language)
     }
     if (text.startsWith(QChar(0xFEFF)))
         text[0] = QLatin1Char(' ');
+    if (textRead)
+        *textRead = text.trimmed();
     ScriptParse r = parseScript(text, language);
     if (!r.ok())
         r.error = path + QStringLiteral(": ") + r.error;

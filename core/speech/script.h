@@ -58,7 +58,8 @@ struct ScriptParse
 // error then names the first one ("line 2, column 5: 'ⓧ' is not ...").
 ScriptParse parseScript(const QString &text, Language language = Language::Auto);
 
-// The same, on a UTF-8 file; errors name the file.
-ScriptParse readScriptFile(const QString &path, Language language = Language::Auto);
+// The same, on a UTF-8 file; errors name the file. `textRead` gets the file's text (the file is
+// read once: it may be a pipe).
+ScriptParse readScriptFile(const QString &path, Language language = Language::Auto, QString *textRead = nullptr);
 
 } // namespace toonface

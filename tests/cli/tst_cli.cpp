@@ -21,6 +21,8 @@
 #include <memory>
 #include <vector>
 
+#include <sys/stat.h>
+
 using namespace toonface;
 
 namespace {
@@ -504,6 +506,35 @@ private Q_SLOTS:
             QStringLiteral("--script"), script, QStringLiteral("-o"), path(QStringLiteral("x.svg"))});
         QCOMPARE(r.code, 3);
         QVERIFY(r.err.contains("nope.wav"));
+    }
+
+    // A script given through a pipe (`--script <(echo ...)`) is read once: aligned, and kept
+    // whole in the saved project.
+    void animateScriptFromAPipe()
+    {
+        Project project;
+        project.face = averageFace(QRectF(60, 80, 200, 240), QSize(320, 400));
+        const QString projectPath = path(QStringLiteral("piped.toonface"));
+        QString error;
+        QVERIFY(saveProject(project, projectPath, &error));
+        const QString wav = path(QStringLiteral("piped.wav"));
+        QCOMPARE(cli({QStringLiteral("say"), QStringLiteral("ni3 hao3 shi4 jie4"), QStringLiteral("-o"), wav}).code, 0);
+        const QString fifo = path(QStringLiteral("script.fifo"));
+        QCOMPARE(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+        QProcess writer; // the shell's side of the pipe
+        writer.start(QStringLiteral("/bin/sh"),
+            {QStringLiteral("-c"), QStringLiteral("printf '%s\\n' 'ni3 hao3 shi4 jie4' > \"$0\""), fifo});
+        QVERIFY(writer.waitForStarted());
+        const QString saved = path(QStringLiteral("piped-out.toonface"));
+        const Run r
+            = cli({QStringLiteral("animate"), projectPath, QStringLiteral("--audio"), wav, QStringLiteral("--script"),
+                fifo, QStringLiteral("--project"), saved, QStringLiteral("-o"), path(QStringLiteral("piped.svg"))});
+        QVERIFY(writer.waitForFinished(10000));
+        QCOMPARE(r.code, 0);
+        const auto reloaded = loadProject(saved, &error);
+        QVERIFY2(reloaded, qPrintable(error));
+        QCOMPARE(reloaded->script, QStringLiteral("ni3 hao3 shi4 jie4"));
+        QCOMPARE(reloaded->syllables.size(), 4);
     }
 
     // The landmark model's cache: written by the first detecting run, used by the next ones,

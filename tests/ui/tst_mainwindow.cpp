@@ -32,8 +32,10 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QToolBar>
 #include <QUndoStack>
 #include <QUrl>
+#include <QWidgetAction>
 #include <QXmlStreamReader>
 
 using namespace toonface;
@@ -232,6 +234,26 @@ private Q_SLOTS:
         QCOMPARE(actions.first()->text(), QStringLiteral("portrait.toonface"));
         actions.first()->trigger();
         QTRY_COMPARE(m_window->document()->filePath(), m_projectPath);
+    }
+
+    // Every tool bar button has an icon (the theme's, else the project's own): no text-only
+    // buttons, whatever the desktop's icon theme.
+    void toolBarButtonsHaveIcons()
+    {
+        makeWindow();
+        const QList<QToolBar *> bars = m_window->findChildren<QToolBar *>();
+        int buttons = 0;
+        for (QToolBar *bar : bars) {
+            const QList<QAction *> actions = bar->actions();
+            for (QAction *a : actions) {
+                if (a->isSeparator() || qobject_cast<QWidgetAction *>(a))
+                    continue;
+                ++buttons;
+                QVERIFY2(!a->icon().isNull(), qPrintable(a->text()));
+                QVERIFY2(!a->icon().pixmap(16, 16).isNull(), qPrintable(a->text()));
+            }
+        }
+        QVERIFY(buttons >= 15);
     }
 
     // The animation studio is wired in: its menus, the timeline dock, the transport, and the

@@ -432,18 +432,31 @@ private Q_SLOTS:
         double worst = 0;
         QElapsedTimer clock;
         clock.start();
+        std::optional<double> last;
+        int steps = 0;
+        double lockIn = 0;
         while (clock.elapsed() < 1500) {
             QTest::qWait(20);
-            if (const std::optional<double> p = track->position()) {
+            // Sound systems tell the position in steps: compare where a new step is told.
+            const std::optional<double> p = track->position();
+            if (p && p != last) {
                 flowed = true;
-                worst = std::max(worst, std::abs(m_playhead->time() - (0.5 + *p)));
+                last = p;
+                // The first step tells how late the sound started (the output's latency): the
+                // picture locks on to it there; from then on it must follow.
+                const double error = std::abs(m_playhead->time() - (0.5 + *p));
+                if (steps++ == 0)
+                    lockIn = error;
+                else
+                    worst = std::max(worst, error);
             }
         }
         m_controller->pause();
         if (!flowed)
             QSKIP("QMediaPlayer cannot play sound on this machine (no output device and no null sink)");
-        qInfo("picture - sound at most %.1f ms, %d re-syncs, largest slewed error %.1f ms", worst * 1000,
-            m_controller->audioResyncs(), m_controller->maxAudioError() * 1000);
+        qInfo("sound started %.1f ms late; then picture - sound at most %.1f ms over %d position steps, %d re-syncs, "
+              "largest slewed error %.1f ms",
+            lockIn * 1000, worst * 1000, steps, m_controller->audioResyncs(), m_controller->maxAudioError() * 1000);
         QVERIFY(!track->isPlaying());
         // Within a frame of the sound, plus the frame the playhead shows and one timer tick.
         QVERIFY2(worst < 2.0 / 25 + 0.02, qPrintable(QString::number(worst)));

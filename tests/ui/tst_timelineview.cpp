@@ -245,6 +245,31 @@ private Q_SLOTS:
             found = found || (c.emotion == Emotion::Sad && near(c.start, 0.2) && near(c.end, 1.1));
         QVERIFY(found);
         undoAllAndCompare();
+
+        // Dropped inside a selected phrase it fills the phrase; inside one short shape it does
+        // not shrink to the shape: it starts where it was dropped.
+        const auto dropAt = [this](QPoint p, Emotion e) {
+            std::unique_ptr<QMimeData> data(emotionMimeData(e));
+            QDragEnterEvent enter(p, Qt::CopyAction, data.get(), Qt::LeftButton, Qt::NoModifier);
+            QApplication::sendEvent(viewport(), &enter);
+            QDropEvent drop(QPointF(p), Qt::CopyAction, data.get(), Qt::LeftButton, Qt::NoModifier);
+            QApplication::sendEvent(viewport(), &drop);
+            return m_doc->timeline().emotionClips().value(m_view->selection().indices(ItemKind::Emotion).value(0));
+        };
+        m_view->setSelection({{ItemKind::Syllable, 0}, {ItemKind::Syllable, 1}, {ItemKind::Syllable, 2}});
+        EmotionClip filled = dropAt(at(0.7, RowKind::Emotion), Emotion::Surprise);
+        QVERIFY(filled.emotion == Emotion::Surprise && near(filled.start, 0.2) && near(filled.end, 1.1));
+        const int shortKey = fixture::mouthKeyAt(m_before, 0.5);
+        const QVector<MouthCue> cues = m_doc->timeline().mouthCues();
+        QVERIFY(cues.size() > 2);
+        m_view->setSelection({{ItemKind::Mouth, shortKey}});
+        const std::optional<Span> one = selectionRange(m_doc->animation(), m_view->selection());
+        QVERIFY(one && one->end - one->start < 0.5);
+        const double inside = (one->start + one->end) / 2;
+        EmotionClip placed = dropAt(at(inside, RowKind::Emotion), Emotion::Angry);
+        QCOMPARE(placed.emotion, Emotion::Angry);
+        QVERIFY2(near(placed.end - placed.start, 2.0), qPrintable(QString::number(placed.end - placed.start)));
+        undoAllAndCompare();
     }
 
     void rubberBandSelectAndDelete()
@@ -270,6 +295,11 @@ private Q_SLOTS:
         QCOMPARE(m_view->selection(), Selection({{ItemKind::Blink, 0}, {ItemKind::Blink, 1}}));
         QTest::mouseClick(viewport(), Qt::LeftButton, Qt::ControlModifier, centre({ItemKind::Blink, 0}));
         QCOMPARE(m_view->selection(), Selection({{ItemKind::Blink, 1}}));
+        // Shift+click extends from the last clicked item of the row, as in a list: a phrase.
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, centre({ItemKind::Syllable, 0}));
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::ShiftModifier, centre({ItemKind::Syllable, 2}));
+        QCOMPARE(m_view->selection().indices(ItemKind::Syllable), QVector<int>({0, 1, 2}));
+        QCOMPARE(m_view->selection().size(), 3);
         QCOMPARE(m_doc->undoStack()->count(), 0); // selecting is no edit
     }
 

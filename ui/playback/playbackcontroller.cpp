@@ -294,6 +294,7 @@ void PlaybackController::startSound(double time)
         m_track->play(inFile);
         m_sound = Sound::Playing;
         m_soundFlowed = false;
+        m_lastAudioPosition.reset();
     } else {
         m_sound = Sound::Done;
     }
@@ -333,13 +334,23 @@ void PlaybackController::tick()
     const qint64 wall = now();
     bool jumped = false;
     if (m_sound == Sound::Playing) {
-        if (const std::optional<double> position = m_track->position()) {
+        // Sound systems tell the position in steps (PulseAudio: every 128-256 ms, later when
+        // busy): a position is news only when it changed, and the clock runs on between steps
+        // instead of waiting at a stale one.
+        const std::optional<double> position = m_track->position();
+        if (position && position != m_lastAudioPosition) {
+            // The first position tells how late the sound started: the clock locks on to it, but
+            // the picture waits for the sound rather than stepping back.
+            const bool lockIn = !m_soundFlowed;
             m_soundFlowed = true;
+            m_lastAudioPosition = position;
             jumped = m_clock.syncToAudio(m_document->timeline().audio()->offset + *position, wall);
             if (jumped)
                 ++m_resyncs;
             else
                 m_maxAudioError = std::max(m_maxAudioError, std::abs(m_clock.lastError()));
+            if (lockIn)
+                jumped = false;
         }
     }
     double time = m_clock.time(wall);

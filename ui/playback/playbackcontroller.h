@@ -128,6 +128,7 @@ private:
     int m_frame = 0; // the frame the playhead shows
     Sound m_sound = Sound::Off;
     bool m_soundFlowed = false; // the track has told a position since it was started
+    std::optional<double> m_lastAudioPosition; // the track's position as last told, since it was started
     std::optional<AudioClip> m_clip; // the clip as last seen, to notice edits of it
     QString m_soundPath; // the file m_track has open
     bool m_soundOpen = false;

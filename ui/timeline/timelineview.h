@@ -137,6 +137,8 @@ private:
     Playhead *m_playhead;
     TimelineLayout m_layout;
     Selection m_selection;
+    // The item a Shift+click extends the selection from: the last one clicked without Shift.
+    std::optional<ItemRef> m_anchor;
     std::optional<RowKind> m_focusRow;
     QVector<Span> m_mouthSpans;
     MouthIcons m_icons;

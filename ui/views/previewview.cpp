@@ -158,8 +158,14 @@ void PreviewView::paintCard(QPainter &painter, const QRect &area) const
     const PreviewRenderer::Frame &frame = m_renderer->current();
     if (!m_renderer->hasScene() || target.isEmpty() || frame.image.isNull()) {
         painter.setPen(palette().color(QPalette::PlaceholderText));
-        painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap,
-            m_document->photo().isNull() ? tr("Open a photo to draw its cartoon.") : tr("No face points yet."));
+        QString text;
+        if (m_document->photo().isNull())
+            text = tr("Open a photo to draw its cartoon.");
+        else if (!m_document->hasFace())
+            text = tr("No face points yet.");
+        else
+            text = tr("Drawing the cartoon…"); // its first picture is on the way
+        painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, text);
         return;
     }
     painter.fillRect(target.translated(2, 3), QColor(0, 0, 0, 40));

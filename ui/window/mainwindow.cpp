@@ -2,14 +2,16 @@
 
 #include "appearance/appearancepanel.h"
 #include "document/autosaver.h"
-#include "document/undomacro.h"
+#include "export/cartoonfile.h"
 #include "face/averageface.h"
 #include "render/svgface.h"
 #include "views/photoview.h"
 #include "views/pointhandle.h"
 #include "views/previewview.h"
-#include "views/stepimagedialog.h"
+#include "views/themedicon.h"
+#include "window/applydetection.h"
 #include "window/detectionsteps.h"
+#include "window/detectionstepsui.h"
 #include "window/detectiontask.h"
 #include "window/settings.h"
 #include "window/studio.h"
@@ -31,7 +33,6 @@
 #include <QMimeData>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QScreen>
 #include <QScrollArea>
 #include <QSlider>
@@ -49,7 +50,6 @@ namespace toonface {
 namespace {
 
 constexpr int kStatusTimeoutMs = 6000;
-constexpr int kOpacitySteps = 100; // the opacity slider's range, 0..kOpacitySteps
 
 QString photoFilter()
 {
@@ -66,28 +66,6 @@ bool isOpenablePath(const QString &path)
         return true;
     const QByteArray suffix = QFileInfo(path).suffix().toLower().toLatin1();
     return QImageReader::supportedImageFormats().contains(suffix);
-}
-
-// Writes the cartoon to `path` (.svg as is, anything else rasterised at `size`); returns an
-// error message or an empty string. Runs off the GUI thread.
-QString writeCartoon(const QByteArray &svg, QSize size, const QString &path)
-{
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return QCoreApplication::translate("MainWindow", "%1: cannot write: %2").arg(path, file.errorString());
-    if (QFileInfo(path).suffix().compare(QLatin1StringView("svg"), Qt::CaseInsensitive) == 0) {
-        if (file.write(svg) != svg.size())
-            return QCoreApplication::translate("MainWindow", "%1: cannot write: %2").arg(path, file.errorString());
-    } else {
-        const QImage image = rasterizeSvg(svg, size);
-        if (image.isNull())
-            return QCoreApplication::translate("MainWindow", "%1: the cartoon could not be drawn").arg(path);
-        if (!image.save(&file, QFileInfo(path).suffix().toLatin1().constData()))
-            return QCoreApplication::translate("MainWindow", "%1: cannot encode the image").arg(path);
-    }
-    if (!file.commit())
-        return QCoreApplication::translate("MainWindow", "%1: cannot write: %2").arg(path, file.errorString());
-    return {};
 }
 
 } // namespace
@@ -116,6 +94,7 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
 
     m_photoView = new PhotoView(m_document);
     m_photoView->setObjectName(QStringLiteral("photoView"));
+    m_stepsUi = new DetectionStepsUi(m_steps, m_photoView, this);
     m_studio = new Studio(m_document, this);
     m_previewView = new PreviewView(m_document, m_studio->playhead());
     m_previewView->setObjectName(QStringLiteral("previewView"));
@@ -162,7 +141,7 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
     connect(m_detection, &DetectionTask::pointsReady, this, &MainWindow::onPointsReady);
     connect(m_detection, &DetectionTask::finished, this, &MainWindow::onDetectionFinished);
     connect(m_detection, &DetectionTask::cancelled, this, &MainWindow::onDetectionCancelled);
-    connect(m_steps, &DetectionSteps::changed, this, &MainWindow::onDetectionStepsChanged);
+    connect(m_steps, &DetectionSteps::changed, this, &MainWindow::updateDetectionStepsEnabled);
 
     if (m_options.preloadLandmarkModel) {
         // The model and the face detector made ready in the background (at once, when the
@@ -187,7 +166,7 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
     }
 
     onDocumentChanged(Change::Photo | Change::Face | Change::Style | Change::FileState);
-    onDetectionStepsChanged();
+    updateDetectionStepsEnabled();
 }
 
 MainWindow::~MainWindow() = default;
@@ -203,14 +182,15 @@ void MainWindow::createActions()
     };
 
     m_openAction = make(QStringLiteral("actionOpen"), tr("&Open Photo or Project…"), QKeySequence::Open);
-    m_openAction->setIcon(QIcon::fromTheme(QStringLiteral("document-open")));
+    m_openAction->setIcon(themedIcon("document-open", "document-open.svg"));
     connect(m_openAction, &QAction::triggered, this, &MainWindow::openDialog);
     m_saveAction = make(QStringLiteral("actionSave"), tr("&Save"), QKeySequence::Save);
-    m_saveAction->setIcon(QIcon::fromTheme(QStringLiteral("document-save")));
+    m_saveAction->setIcon(themedIcon("document-save", "document-save.svg"));
     connect(m_saveAction, &QAction::triggered, this, &MainWindow::save);
     m_saveAsAction = make(QStringLiteral("actionSaveAs"), tr("Save &As…"), QKeySequence::SaveAs);
     connect(m_saveAsAction, &QAction::triggered, this, &MainWindow::saveAs);
     m_exportAction = make(QStringLiteral("actionExport"), tr("&Export Cartoon…"), QKeySequence(Qt::CTRL | Qt::Key_E));
+    m_exportAction->setIcon(themedIcon("image-x-generic", "toonface.svg"));
     connect(m_exportAction, &QAction::triggered, this, &MainWindow::exportCartoon);
     m_quitAction = make(QStringLiteral("actionQuit"), tr("&Quit"), QKeySequence::Quit);
     m_quitAction->setMenuRole(QAction::QuitRole);
@@ -219,14 +199,15 @@ void MainWindow::createActions()
     m_undoAction = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
     m_undoAction->setObjectName(QStringLiteral("actionUndo"));
     m_undoAction->setShortcut(QKeySequence::Undo);
-    m_undoAction->setIcon(QIcon::fromTheme(QStringLiteral("edit-undo")));
+    m_undoAction->setIcon(themedIcon("edit-undo", "edit-undo.svg"));
     m_redoAction = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
     m_redoAction->setObjectName(QStringLiteral("actionRedo"));
     m_redoAction->setShortcut(QKeySequence::Redo);
-    m_redoAction->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo")));
+    m_redoAction->setIcon(themedIcon("edit-redo", "edit-redo.svg"));
     m_redetectAction
         = make(QStringLiteral("actionRedetect"), tr("Re-&detect Points"), QKeySequence(Qt::CTRL | Qt::Key_D));
     m_redetectAction->setToolTip(tr("Detect the face again and replace every point"));
+    m_redetectAction->setIcon(themedIcon("view-refresh", "redetect.svg"));
     connect(m_redetectAction, &QAction::triggered, this, [this] { startDetection(false); });
     m_redetectKeepAction = make(QStringLiteral("actionRedetectKeep"), tr("Re-detect &Keeping My Points"),
         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
@@ -271,10 +252,10 @@ void MainWindow::createActions()
         = make(QStringLiteral("actionActualSize"), tr("&Actual Size"), QKeySequence(Qt::CTRL | Qt::Key_1));
     connect(m_actualSizeAction, &QAction::triggered, m_photoView, &PhotoView::zoomToActualSize);
     m_fitAction = make(QStringLiteral("actionFit"), tr("&Fit to Window"), QKeySequence(Qt::CTRL | Qt::Key_0));
-    m_fitAction->setIcon(QIcon::fromTheme(QStringLiteral("zoom-fit-best")));
+    m_fitAction->setIcon(themedIcon("zoom-fit-best", "zoom-fit.svg"));
     connect(m_fitAction, &QAction::triggered, m_photoView, &PhotoView::fitToWindow);
     m_zoomFaceAction = make(QStringLiteral("actionZoomFace"), tr("Zoom to F&ace"), QKeySequence(Qt::CTRL | Qt::Key_2));
-    m_zoomFaceAction->setIcon(QIcon::fromTheme(QStringLiteral("zoom-in")));
+    m_zoomFaceAction->setIcon(themedIcon("zoom-in", "zoom-face.svg"));
     connect(m_zoomFaceAction, &QAction::triggered, m_photoView, &PhotoView::zoomToFace);
     m_showIdsAction = make(QStringLiteral("actionShowIds"), tr("Show Point &IDs"), QKeySequence(Qt::CTRL | Qt::Key_I));
     m_showIdsAction->setCheckable(true);
@@ -327,13 +308,7 @@ void MainWindow::createMenus()
     view->addSeparator();
     view->addAction(m_showIdsAction);
     view->addSeparator();
-    // Tool tips on, so that the disabled steps entry can say why it is disabled.
-    view->setToolTipsVisible(true);
-    m_stepsMenu = view->addMenu(tr("Detection &Steps"));
-    m_stepsMenu->setObjectName(QStringLiteral("menuDetectionSteps"));
-    m_stepsMenu->setToolTipsVisible(true);
-    m_stepsGroup = new QActionGroup(this);
-    m_stepsGroup->setExclusive(true);
+    m_stepsUi->install(view);
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(m_aboutAction);
@@ -343,7 +318,9 @@ void MainWindow::createToolBar()
 {
     QToolBar *bar = addToolBar(tr("Main"));
     bar->setObjectName(QStringLiteral("mainToolBar"));
-    bar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    // Icons only (each says what it does in its tool tip), so that the studio's transport fits beside
+    // it on a 1280-pixel screen.
+    bar->setToolButtonStyle(Qt::ToolButtonIconOnly);
     bar->addAction(m_openAction);
     bar->addAction(m_saveAction);
     bar->addSeparator();
@@ -368,35 +345,6 @@ void MainWindow::createToolBar()
     bar->addSeparator();
     bar->addAction(m_fitAction);
     bar->addAction(m_zoomFaceAction);
-
-    // Below the views, beside the photo it acts on, where the main toolbar's width does not
-    // push it out of sight.
-    m_stepsToolBar = new QToolBar(tr("Detection Steps"), this);
-    addToolBar(Qt::BottomToolBarArea, m_stepsToolBar);
-    m_stepsToolBar->setObjectName(QStringLiteral("detectionStepsToolBar"));
-    auto *stepLabel = new QLabel(tr("Step:") + QLatin1Char(' '));
-    m_stepsToolBar->addWidget(stepLabel);
-    m_stepsCombo = new QComboBox;
-    m_stepsCombo->setObjectName(QStringLiteral("detectionStepCombo"));
-    m_stepsCombo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-    stepLabel->setBuddy(m_stepsCombo);
-    connect(m_stepsCombo, &QComboBox::activated, this,
-        [this](int index) { setOverlayStep(m_stepsCombo->itemData(index).toString()); });
-    m_stepsToolBar->addWidget(m_stepsCombo);
-    m_stepsToolBar->addWidget(new QLabel(QLatin1Char(' ') + tr("Opacity:") + QLatin1Char(' ')));
-    m_opacitySlider = new QSlider(Qt::Horizontal);
-    m_opacitySlider->setObjectName(QStringLiteral("overlayOpacitySlider"));
-    m_opacitySlider->setRange(0, kOpacitySteps);
-    m_opacitySlider->setPageStep(kOpacitySteps / 10);
-    m_opacitySlider->setFixedWidth(110);
-    m_opacitySlider->setToolTip(tr("How strongly the detection step covers the photo"));
-    m_opacitySlider->setValue(qRound(Settings().overlayOpacity() * kOpacitySteps));
-    m_photoView->setOverlayOpacity(double(m_opacitySlider->value()) / kOpacitySteps);
-    connect(m_opacitySlider, &QSlider::valueChanged, this, [this](int value) {
-        m_photoView->setOverlayOpacity(double(value) / kOpacitySteps);
-        Settings().setOverlayOpacity(double(value) / kOpacitySteps);
-    });
-    m_stepsToolBar->addWidget(m_opacitySlider);
 }
 
 void MainWindow::createStatusBar()
@@ -563,42 +511,18 @@ void MainWindow::applyDetectedFace(const DetectionResult &result)
 {
     m_photoView->setOtherFaces(result.otherFaces);
     const bool showOtherFaces = !result.otherFaces.isEmpty() && !m_document->hasFace();
-    if (!m_document->hasFace() || m_detectChoosesFace) {
-        // The first face of a photo, or another person in it: the points and the colours
-        // sampled under them, one step.
-        const QString text = m_detectChoosesFace ? tr("Use another face") : tr("Detect face");
-        Style style = m_document->style();
-        style.sampleColours(m_document->photo(), result.face);
-        const UndoMacro step(m_document->undoStack(), text);
-        m_document->replaceFace(result.face, false, text);
-        m_document->changeStyle(style, tr("Sample colours"));
-    } else {
-        m_document->replaceFace(result.face, m_detectKeepsHandPlaced,
-            m_detectKeepsHandPlaced ? tr("Re-detect keeping my points") : tr("Re-detect points"));
-    }
+    const DetectionUse use = !m_document->hasFace() || m_detectChoosesFace ? DetectionUse::NewFace
+        : m_detectKeepsHandPlaced                                          ? DetectionUse::KeepHandPlaced
+                                                                           : DetectionUse::Replace;
+    applyDetection(m_document, result, use, m_detectChoosesFace);
     // A photo of several people, first seen: the whole photo, so that the other faces' boxes
     // can be clicked.
     if (showOtherFaces)
         m_photoView->fitToWindow();
-    const int ms = qRound(result.timingMs.value(QStringLiteral("total")));
-    QString found;
-    if (result.faceCount <= 1)
-        found = tr("Face found by the %1 method in %2 ms.").arg(result.method).arg(ms);
-    else if (m_detectChoosesFace)
-        found = tr("%n faces found: using the one you chose (%1, %2 ms).", nullptr, result.faceCount)
-                    .arg(result.method)
-                    .arg(ms);
-    else
-        found = tr("%n faces found: using the largest, most central one (%1, %2 ms). Click another face's box "
-                   "to switch.",
-            nullptr, result.faceCount)
-                    .arg(result.method)
-                    .arg(ms);
-    // Auto fell back to the thesis' pipeline: say why. That, and the choice of faces, stay up
-    // until the next message.
-    if (!result.note.isEmpty())
-        found += QLatin1Char(' ') + tr("The landmark method could not serve: %1").arg(result.note);
-    statusBar()->showMessage(found, result.note.isEmpty() && result.faceCount <= 1 ? kStatusTimeoutMs : 0);
+    // Auto's fallback to the thesis' pipeline, and the choice of faces, stay up until the next
+    // message.
+    statusBar()->showMessage(detectionSummary(result, m_detectChoosesFace),
+        result.note.isEmpty() && result.faceCount <= 1 ? kStatusTimeoutMs : 0);
     Q_EMIT pointsPlaced();
 }
 
@@ -757,7 +681,11 @@ void MainWindow::exportTo(const QString &path)
             QMessageBox::warning(this, tr("Cannot Export"), error);
         Q_EMIT exported(path, error);
     });
-    watcher->setFuture(QtConcurrent::run([svg, size, path] { return writeCartoon(svg, size, path); }));
+    watcher->setFuture(QtConcurrent::run([svg, size, path] {
+        QString error;
+        writeCartoonFile(svg, size, path, &error);
+        return error;
+    }));
 }
 
 bool MainWindow::maybeSave()
@@ -793,7 +721,7 @@ void MainWindow::onDocumentChanged(ChangeFlags what)
 {
     if (what & Change::Photo) {
         // The steps belong to the photo they came from.
-        m_chosenStep.clear();
+        m_stepsUi->forgetChoice();
         m_steps->clear();
     }
     if (what & Change::Style)
@@ -843,132 +771,25 @@ DetectionMethod MainWindow::detectionMethod() const
 
 void MainWindow::showDetectionStep(const QString &name)
 {
-    if (!name.isEmpty() && DetectionSteps::isCloseUp(name) && !m_steps->image(name).isNull())
-        openCloseUp(name);
-    else
-        setOverlayStep(name);
+    m_stepsUi->show(name);
 }
 
-void MainWindow::onDetectionStepsChanged()
+QString MainWindow::overlayStep() const
 {
-    const QStringList names = m_steps->names();
-    if (m_steps->isEmpty()) {
-        for (const QPointer<StepImageDialog> &dialog : std::as_const(m_closeUps)) {
-            if (dialog)
-                dialog->close();
-        }
-        m_closeUps.clear();
-    }
-
-    const QList<QAction *> old = m_stepsGroup->actions();
-    for (QAction *action : old)
-        m_stepsGroup->removeAction(action);
-    m_stepsMenu->clear(); // deletes the actions it owns
-
-    const QSignalBlocker blocker(m_stepsCombo);
-    m_stepsCombo->clear();
-
-    QAction *none = m_stepsMenu->addAction(tr("&None"));
-    none->setObjectName(QStringLiteral("actionStepNone"));
-    none->setCheckable(true);
-    none->setData(QString());
-    m_stepsGroup->addAction(none);
-    m_stepsCombo->addItem(tr("None"), QString());
-    connect(none, &QAction::triggered, this, [this] { setOverlayStep({}); });
-
-    bool firstOverlay = true;
-    for (const QString &name : names) {
-        if (DetectionSteps::isCloseUp(name))
-            continue;
-        if (std::exchange(firstOverlay, false))
-            m_stepsMenu->addSeparator();
-        const QString text = DetectionSteps::displayName(name);
-        QAction *action = m_stepsMenu->addAction(text);
-        action->setObjectName(QStringLiteral("actionStep-") + name);
-        action->setCheckable(true);
-        action->setData(name);
-        action->setToolTip(tr("Draw “%1” over the photo (%2.png with --debug-dir)").arg(text, name));
-        m_stepsGroup->addAction(action);
-        connect(action, &QAction::triggered, this, [this, name] { setOverlayStep(name); });
-        m_stepsCombo->addItem(text, name);
-        m_stepsCombo->setItemData(m_stepsCombo->count() - 1, name, Qt::ToolTipRole);
-    }
-    bool firstCloseUp = true;
-    for (const QString &name : names) {
-        if (!DetectionSteps::isCloseUp(name))
-            continue;
-        if (std::exchange(firstCloseUp, false))
-            m_stepsMenu->addSeparator();
-        const QString text = DetectionSteps::displayName(name);
-        QAction *action = m_stepsMenu->addAction(tr("%1…").arg(text));
-        action->setObjectName(QStringLiteral("actionStep-") + name);
-        action->setData(name);
-        action->setToolTip(tr("Show “%1” in a window of its own (%2.png with --debug-dir)").arg(text, name));
-        connect(action, &QAction::triggered, this, [this, name] { openCloseUp(name); });
-    }
-
-    // A re-detection of the same photo brings the same steps: keep showing the chosen one.
-    showChosenStep();
-    updateDetectionStepsEnabled();
-}
-
-void MainWindow::setOverlayStep(const QString &name)
-{
-    m_chosenStep = DetectionSteps::isCloseUp(name) || m_steps->image(name).isNull() ? QString() : name;
-    showChosenStep();
-}
-
-void MainWindow::showChosenStep()
-{
-    const QImage image = m_chosenStep.isEmpty() ? QImage() : m_steps->image(m_chosenStep);
-    m_overlayStep = image.isNull() ? QString() : m_chosenStep;
-    m_photoView->setOverlay(image);
-
-    const QList<QAction *> actions = m_stepsGroup->actions();
-    for (QAction *action : actions) {
-        if (action->data().toString() == m_overlayStep)
-            action->setChecked(true);
-    }
-    const QSignalBlocker blocker(m_stepsCombo);
-    m_stepsCombo->setCurrentIndex(std::max(0, m_stepsCombo->findData(m_overlayStep)));
-    m_opacitySlider->setEnabled(!m_overlayStep.isEmpty());
-}
-
-void MainWindow::openCloseUp(const QString &name)
-{
-    const QImage image = m_steps->image(name);
-    if (image.isNull())
-        return;
-    QPointer<StepImageDialog> &dialog = m_closeUps[name];
-    if (!dialog) {
-        dialog = new StepImageDialog(image, DetectionSteps::displayName(name), this);
-        dialog->setObjectName(QStringLiteral("closeUp-") + name);
-        dialog->setAttribute(Qt::WA_DeleteOnClose);
-    }
-    dialog->show();
-    dialog->raise();
-    dialog->activateWindow();
+    return m_stepsUi->overlayStep();
 }
 
 void MainWindow::updateDetectionStepsEnabled()
 {
-    const bool available = !m_steps->isEmpty();
     QString why;
-    if (available)
-        why = tr("Show an intermediate image of the face detection over the photo");
-    else if (m_job == Job::Detecting)
+    if (m_job == Job::Detecting)
         why = tr("The detection's steps appear when it ends");
     else if (m_document->photo().isNull())
         why = tr("Open a photo: its face detection's steps can be shown here");
     else
         why = tr("No detection steps for this photo: they are not saved in projects. Use Edit ▸ Re-detect Points "
                  "to see them");
-    QAction *menuAction = m_stepsMenu->menuAction();
-    menuAction->setEnabled(available);
-    menuAction->setToolTip(why);
-    menuAction->setStatusTip(why);
-    m_stepsCombo->setEnabled(available);
-    m_stepsCombo->setToolTip(why);
+    m_stepsUi->updateEnabled(why);
 }
 
 void MainWindow::onStyleActivated(int index)

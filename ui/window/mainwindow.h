@@ -5,9 +5,6 @@
 #include "document/document.h"
 #include "document/loadedfile.h"
 
-#include <QHash>
-#include <QPointer>
-
 #include <QFutureWatcher>
 #include <QMainWindow>
 
@@ -19,7 +16,6 @@ class QComboBox;
 class QLabel;
 class QMenu;
 class QProgressBar;
-class QSlider;
 class QSplitter;
 class QToolBar;
 class QToolButton;
@@ -27,10 +23,10 @@ class QToolButton;
 namespace toonface {
 
 class DetectionSteps;
+class DetectionStepsUi;
 class DetectionTask;
 class PhotoView;
 class PreviewView;
-class StepImageDialog;
 class Studio;
 
 // The editor window: the photo with its points beside the live cartoon, the menus, and the
@@ -69,7 +65,7 @@ public:
     // window of its own for a close-up. An empty or unknown name shows the photo alone.
     void showDetectionStep(const QString &name);
     // The step drawn over the photo now; empty when none.
-    QString overlayStep() const { return m_overlayStep; }
+    QString overlayStep() const;
 
     // After show(): offers to restore a leftover recovery file; when none is restored, opens
     // `path` (a photo or a project) if it is not empty.
@@ -132,10 +128,6 @@ private:
     void cancelJob();
     void setBusy(Job job, const QString &text);
 
-    void onDetectionStepsChanged();
-    void setOverlayStep(const QString &name); // the user's choice
-    void showChosenStep();
-    void openCloseUp(const QString &name);
     void updateDetectionStepsEnabled();
 
     void onStyleActivated(int index);
@@ -153,11 +145,7 @@ private:
     Studio *m_studio;
     QSplitter *m_splitter;
     DetectionSteps *m_steps;
-    QString m_overlayStep; // the step drawn over the photo now
-    // The step the user chose: kept through re-detection of the same photo, and shown again
-    // when the new run has it; forgotten with the photo.
-    QString m_chosenStep;
-    QHash<QString, QPointer<StepImageDialog>> m_closeUps;
+    DetectionStepsUi *m_stepsUi = nullptr;
 
     QFutureWatcher<LoadedFile> *m_loadWatcher = nullptr;
     std::optional<RecoveryFile> m_recovering; // the leftover being restored, if any
@@ -185,11 +173,6 @@ private:
     QComboBox *m_styleCombo = nullptr;
     QMenu *m_methodMenu = nullptr;
     QActionGroup *m_methodGroup = nullptr;
-    QMenu *m_stepsMenu = nullptr;
-    QActionGroup *m_stepsGroup = nullptr;
-    QToolBar *m_stepsToolBar = nullptr;
-    QComboBox *m_stepsCombo = nullptr;
-    QSlider *m_opacitySlider = nullptr;
 
     QLabel *m_busyLabel = nullptr;
     QProgressBar *m_busyBar = nullptr;

@@ -10,8 +10,11 @@
 #include "export/animationexport.h"
 #include "playback/playbackcontroller.h"
 #include "playback/playhead.h"
+#include "timeline/timelineedits.h"
+#include "timeline/timelineview.h"
 #include "timeline/timelinewidget.h"
 #include "views/previewview.h"
+#include "views/themedicon.h"
 
 #include <QAction>
 #include <QDir>
@@ -27,10 +30,8 @@ namespace toonface {
 
 namespace {
 
-QIcon themed(const char *name, const char *fallback)
-{
-    return QIcon::fromTheme(QString::fromLatin1(name), QIcon(QString::fromLatin1(fallback)));
-}
+constexpr double kEmotionFromPlayhead = 2.0; // seconds Add Emotion offers from the playhead
+constexpr double kShortestEmotion = 0.5; // less than this before the end: the whole animation
 
 } // namespace
 
@@ -55,24 +56,24 @@ void Studio::install(PreviewView *preview, QAction *beforeMenu)
     m_timelineDock->widget()->setMinimumHeight(160);
     m_window->addDockWidget(Qt::BottomDockWidgetArea, m_timelineDock);
 
-    m_lipSync = new QAction(
-        themed("audio-x-generic", ":/toonface/icons/emotion-neutral.svg"), tr("&Lip Sync from Recording…"), this);
+    m_lipSync = new QAction(themedIcon("audio-x-generic", "lip-sync.svg"), tr("&Lip Sync from Recording…"), this);
     m_lipSync->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
     m_lipSync->setStatusTip(tr("Time the mouth to a speech recording and its script"));
     connect(m_lipSync, &QAction::triggered, this, [this] { LipSyncDialog::run(m_window, m_document); });
-    m_sayText = new QAction(themed("media-record", ":/toonface/icons/play.svg"), tr("&Say Text…"), this);
+    m_sayText = new QAction(themedIcon("insert-text", "say-text.svg"), tr("&Say Text…"), this);
     m_sayText->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
     m_sayText->setStatusTip(tr("Speak a text with the built-in voice and lip-sync the face to it"));
     connect(m_sayText, &QAction::triggered, this, [this] { SayTextDialog::run(m_window, m_document); });
     m_addBlinks = new QAction(QIcon(QStringLiteral(":/toonface/icons/timeline-blinks.svg")), tr("Add &Blinks…"), this);
     connect(m_addBlinks, &QAction::triggered, this, [this] { BlinksDialog::run(m_window, m_document); });
     m_addEmotion = new QAction(QIcon(QStringLiteral(":/toonface/icons/emotion-smile.svg")), tr("Add &Emotion…"), this);
+    m_addEmotion->setObjectName(QStringLiteral("actionAddEmotion"));
     connect(m_addEmotion, &QAction::triggered, this, &Studio::addEmotion);
     m_mouthShapes = new QAction(tr("&Mouth Shapes…"), this);
     m_mouthShapes->setStatusTip(tr("Edit this character's nine mouth shapes"));
     connect(m_mouthShapes, &QAction::triggered, this, [this] { MouthShapesDialog::run(m_window, m_document); });
     m_exportAnimation
-        = new QAction(themed("document-export", ":/toonface/icons/toonface.svg"), tr("Export &Animation…"), this);
+        = new QAction(themedIcon("document-export", "document-export.svg"), tr("Export &Animation…"), this);
     m_exportAnimation->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
     m_exportAnimation->setStatusTip(tr("Export the animation as SVG, HTML, MP4, GIF or PNG frames"));
     connect(m_exportAnimation, &QAction::triggered, this, &Studio::exportAnimation);
@@ -138,7 +139,18 @@ void Studio::exportAnimation()
 
 void Studio::addEmotion()
 {
-    EmotionDialog::run(m_window, m_document);
+    // Over the timeline's selected range; else two seconds from the playhead; else (at the
+    // end, or an empty animation) the whole of it.
+    const TimelineView *view = m_timelineDock->timeline()->view();
+    const std::optional<Span> selected = selectionRange(m_document->animation(), view->selection());
+    const double duration = m_document->timeline().duration();
+    const double at = m_playhead->time();
+    if (selected && selected->end > selected->start)
+        EmotionDialog::run(m_window, m_document, selected->start, selected->end);
+    else if (at + kShortestEmotion <= duration)
+        EmotionDialog::run(m_window, m_document, at, std::min(at + kEmotionFromPlayhead, duration));
+    else
+        EmotionDialog::run(m_window, m_document);
 }
 
 void Studio::updateEnabled()

@@ -31,6 +31,8 @@ public:
     PlaybackController *playback() const { return m_playback; }
     TimelineDock *timelineDock() const { return m_timelineDock; }
     QAction *exportAnimationAction() const { return m_exportAnimation; }
+    QAction *lipSyncAction() const { return m_lipSync; }
+    QAction *sayTextAction() const { return m_sayText; }
     QMenu *animationMenu() const { return m_animationMenu; }
     QMenu *playbackMenu() const { return m_playbackMenu; }
 
