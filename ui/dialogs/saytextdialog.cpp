@@ -158,9 +158,8 @@ void SayTextDialog::chooseSoundPath()
 
 bool SayTextDialog::canStart() const
 {
-    // Parsing the text waits for the character dictionary: not before it has loaded.
-    return m_dictionary->ready() && !m_text->toPlainText().trimmed().isEmpty()
-        && !m_soundPath->text().trimmed().isEmpty();
+    // (The character dictionary started loading in the background when the dialog opened.)
+    return !m_text->toPlainText().trimmed().isEmpty() && !m_soundPath->text().trimmed().isEmpty();
 }
 
 std::optional<SpeechTask::Job> SayTextDialog::prepare()
