@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 
 using namespace toonface::cli;
 
@@ -97,7 +98,12 @@ int main(int argc, char *argv[])
     // Rendering text and SVG needs a GUI application, but never a display.
     if (!qEnvironmentVariableIsSet("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
-    QGuiApplication app(argc, argv);
+    const Command *wanted = findCommand(args.value(0));
+    std::unique_ptr<QCoreApplication> app;
+    if (wanted && wanted->coreOnly)
+        app = std::make_unique<QCoreApplication>(argc, argv);
+    else
+        app = std::make_unique<QGuiApplication>(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("toonface-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(TOONFACE_VERSION));
 

@@ -9,19 +9,25 @@
 #include "speech/tts.h"
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
 #include <QFont>
 #include <QImage>
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <QPainter>
 #include <QPainterPath>
 #include <QRandomGenerator>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 
+#include <fcntl.h>
 #include <stdlib.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <time.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -566,3 +572,151 @@ QJsonObject alignSpeed()
 } // namespace
 
 TOONFACE_BENCHMARK("speech.alignSpeed", alignSpeed);
+
+namespace {
+
+// One run of a child process, measured alone (wait4): wall and CPU time, peak memory.
+struct ChildRun
+{
+    double wallMs = 0, cpuMs = 0, peakMb = 0;
+    bool ok = false;
+};
+
+ChildRun runMeasured(const QString &program, const QStringList &args)
+{
+    std::vector<QByteArray> bytes {QFile::encodeName(program)};
+    for (const QString &a : args)
+        bytes.push_back(a.toLocal8Bit());
+    std::vector<char *> argv;
+    for (QByteArray &b : bytes)
+        argv.push_back(b.data());
+    argv.push_back(nullptr);
+    ChildRun r;
+    QElapsedTimer t;
+    t.start();
+    const pid_t pid = fork();
+    if (pid == 0) {
+        const int devnull = open("/dev/null", O_WRONLY);
+        dup2(devnull, 2);
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    int status = 0;
+    rusage usage {};
+    if (pid < 0 || wait4(pid, &status, 0, &usage) != pid)
+        return r;
+    r.wallMs = double(t.nsecsElapsed()) / 1e6;
+    r.cpuMs = (usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) * 1e3
+        + (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e3;
+    r.peakMb = double(usage.ru_maxrss) / 1024.0;
+    r.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    return r;
+}
+
+// `toonface-cli lipsync` end to end on long real recordings: the shared recordings of one
+// sentence each (two AISHELL-1 sentences, the P2FA test and SSB00050015) joined, round after
+// round, to about a minute and to ten minutes, with their scripts joined alike. The reference
+// onsets of the P2FA words and the SSB characters, moved by each file's place, score the
+// alignment of the long recording. Built here, never committed.
+QJsonObject lipsyncLongReal()
+{
+    QJsonObject out;
+    const QString dir = bench::sharedDataDir();
+    if (dir.isEmpty()) {
+        out.insert(QStringLiteral("skipped"), QStringLiteral("no shared data"));
+        return out;
+    }
+    const QStringList names = {QStringLiteral("BAC009S0002W0122.wav"), QStringLiteral("BAC009S0002W0123.wav"),
+        QStringLiteral("p2fa_test1.wav"), QStringLiteral("SSB00050015_16k.wav")};
+    const QVector<RealFile> files = realFiles(dir);
+    QVector<float> round;
+    QString roundScript;
+    std::vector<double> roundTruth; // per syllable of the round: seconds, or NaN
+    for (const QString &name : names) {
+        const auto file = std::find_if(files.begin(), files.end(), [&](const RealFile &f) { return f.name == name; });
+        const AudioResult a = loadAudio(dir + QStringLiteral("/speech/") + name);
+        if (file == files.end() || !a.ok()) {
+            out.insert(QStringLiteral("skipped"), QStringLiteral("%1 missing").arg(name));
+            return out;
+        }
+        const double offset = double(round.size()) / kSpeechSampleRate;
+        const int syllables = int(parseScript(file->script).script.syllables.size());
+        for (int k = 0; k < syllables; ++k)
+            roundTruth.push_back(size_t(k) < file->truth.size() ? file->truth[size_t(k)] + offset : std::nan(""));
+        roundScript += file->script + QLatin1Char(' ');
+        round += a.audio.samples;
+    }
+    QTemporaryDir tmp;
+    QJsonObject runs;
+    for (const int rounds : {3, 30}) {
+        Audio audio;
+        QString script;
+        std::vector<double> truth;
+        for (int r = 0; r < rounds; ++r) {
+            const double offset = audio.duration();
+            audio.samples += round;
+            script += roundScript;
+            for (const double t : roundTruth)
+                truth.push_back(t + offset);
+        }
+        const QString wav = tmp.filePath(QStringLiteral("long%1.wav").arg(rounds));
+        const QString txt = tmp.filePath(QStringLiteral("long%1.txt").arg(rounds));
+        const QString json = tmp.filePath(QStringLiteral("long%1.json").arg(rounds));
+        QFile f(txt);
+        QString error;
+        if (!writeAudio(wav, audio, &error) || !f.open(QIODevice::WriteOnly)) {
+            out.insert(QStringLiteral("error"), error);
+            return out;
+        }
+        f.write(script.toUtf8());
+        f.close();
+        const QStringList args = {QStringLiteral("lipsync"), QStringLiteral("--audio"), wav, QStringLiteral("--script"),
+            txt, QStringLiteral("-o"), json};
+        std::vector<ChildRun> measured;
+        for (int k = 0; k < (rounds > 10 ? 2 : 3); ++k)
+            measured.push_back(runMeasured(QStringLiteral(TOONFACE_CLI_PATH), args));
+        std::sort(
+            measured.begin(), measured.end(), [](const ChildRun &a, const ChildRun &b) { return a.cpuMs < b.cpuMs; });
+        const ChildRun &m = measured[measured.size() / 2];
+        QJsonObject o;
+        o.insert(QStringLiteral("audioSeconds"), std::round(audio.duration() * 10) / 10);
+        o.insert(QStringLiteral("wallMs"), std::round(m.wallMs));
+        o.insert(QStringLiteral("cpuMs"), std::round(m.cpuMs));
+        o.insert(QStringLiteral("timesRealTimeWall"), std::round(audio.duration() * 1000.0 / m.wallMs));
+        o.insert(QStringLiteral("timesRealTimeCpu"), std::round(audio.duration() * 1000.0 / m.cpuMs));
+        o.insert(QStringLiteral("peakMemoryMb"), std::round(m.peakMb));
+        o.insert(QStringLiteral("ok"), m.ok);
+        // The alignment of the long recording against the files' reference onsets.
+        QFile result(json);
+        if (m.ok && result.open(QIODevice::ReadOnly)) {
+            const QJsonArray syllables
+                = QJsonDocument::fromJson(result.readAll())[QStringLiteral("syllables")].toArray();
+            Errors e;
+            double shortest = 1e9;
+            for (int k = 0; k < syllables.size() && size_t(k) < truth.size(); ++k) {
+                const QJsonObject s = syllables[k].toObject();
+                const double start = s[QStringLiteral("start")].toDouble();
+                shortest = std::min(shortest, (s[QStringLiteral("end")].toDouble() - start) * 1000.0);
+                if (!std::isnan(truth[size_t(k)]))
+                    e.add(start, truth[size_t(k)]);
+            }
+            QJsonObject accuracy = e.json();
+            accuracy.insert(QStringLiteral("shortestSyllableMs"), std::round(shortest));
+            o.insert(QStringLiteral("onsetErrors"), accuracy);
+        }
+        runs.insert(QStringLiteral("%1s").arg(int(std::lround(audio.duration()))), o);
+    }
+    out.insert(QStringLiteral("runs"), runs);
+    out.insert(QStringLiteral("what"),
+        QStringLiteral("toonface-cli lipsync on real recordings joined to ~1 and ~10 min (median by CPU time of "
+                       "3 / 2 runs; wall, CPU and peak RSS of that run); onset errors against the P2FA word and "
+                       "SSB character references"));
+    double load[3] = {0, 0, 0};
+    if (getloadavg(load, 3) > 0)
+        out.insert(QStringLiteral("loadAverage1min"), std::round(load[0] * 100) / 100);
+    return out;
+}
+
+} // namespace
+
+TOONFACE_BENCHMARK("speech.lipsyncLongReal", lipsyncLongReal);

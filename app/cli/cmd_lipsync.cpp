@@ -51,7 +51,8 @@ int runLipsync(const Command &self, const QStringList &args)
 
 const CommandRegistrar registrar({QStringLiteral("lipsync"),
     QStringLiteral("Time a recording's syllables against its script and give the mouth shapes (toonface.lipsync/1)."),
-    QStringLiteral("lipsync --audio AUDIO --script SCRIPT [--lang cmn|en] [-o OUT.json|OUT.tsv]"), runLipsync});
+    QStringLiteral("lipsync --audio AUDIO --script SCRIPT [--lang cmn|en] [-o OUT.json|OUT.tsv]"), runLipsync, false,
+    true});
 
 } // namespace
 

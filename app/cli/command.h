@@ -30,6 +30,9 @@ struct Command
     // The command may detect a face in a photo: detection's one-time work starts in the
     // background at launch (warmUpDetection()), beside the application's own start-up.
     bool detects = false;
+    // The command never renders (text, SVG, images): it runs without a GUI application, whose
+    // start-up (the platform plugin, the font database) would cost more than its work.
+    bool coreOnly = false;
 };
 
 std::vector<Command> &commands();

@@ -4,6 +4,7 @@
 #include "speech/features.h"
 #include "speech/onsetsignals.h"
 #include "speech/pinyin.h"
+#include "speech/referencefeatures.h"
 #include "speech/syllableduration.h"
 
 #include <algorithm>
@@ -17,7 +18,6 @@ namespace toonface {
 namespace {
 
 constexpr int kDefaultRate = 175;
-constexpr double kReferencePad = 0.3; // seconds of silence added before and after the reference
 
 AlignResult failure(AlignStatus status, const QString &why)
 {
@@ -109,11 +109,16 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
     std::vector<double> logLength(512);
     for (size_t len = 1; len < logLength.size(); ++len)
         logLength[len] = std::log(double(len));
-    // A syllable over [from, to): its nucleus and its length (pauses excluded).
-    auto span = [&](int k, int from, int to) {
+    // A syllable over [from, to): its nucleus and its length (pauses excluded) score `base`,
+    // from which `penalty` (never negative) is taken. base alone bounds the span's score from
+    // above: the search skips the penalty where that bound cannot win.
+    auto base = [&](int k, int from, int to) {
         const double len = std::max(1.0, (to - from) - sig.pauseFrames(from, to));
         const double r
             = (len < double(logLength.size()) ? logLength[size_t(len)] : std::log(len)) - logExpected[size_t(k)];
+        return kNucleus * sig.maxNucleus(from, to) - kDuration * r * r;
+    };
+    auto penalty = [&](int from, int to) {
         // Two loud peaks inside with a valley of 3 ln units (13 dB) between them: a syllable
         // boundary missed.
         const double inside = std::clamp((sig.innerValley(from, to) - 1.0) / 2.0, 0.0, 1.0);
@@ -128,7 +133,7 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
             const bool resumes = sig.maxNucleus(resume, to) >= 0.3 || sig.maxLoud(resume, to) >= 0.5;
             pauseInside = std::max(double(noNucleusBeforePause[size_t(from)]), resumes ? 1.0 : 0.0);
         }
-        return kNucleus * sig.maxNucleus(from, to) - kDuration * r * r - kValley * (inside + pauseInside);
+        return kValley * (inside + pauseInside);
     };
     constexpr double kNone = -1e18;
     std::vector<std::vector<double>> score(static_cast<size_t>(n));
@@ -158,7 +163,10 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
                 const double prev = score[size_t(k) - 1][size_t(p - lo[size_t(k) - 1])];
                 if (prev <= kNone / 2)
                     continue;
-                const double v = prev + span(k - 1, p, b);
+                const double b0 = base(k - 1, p, b);
+                if (prev + b0 <= best)
+                    continue;
+                const double v = prev + (b0 - penalty(p, b));
                 if (v > best) {
                     best = v;
                     arg = p;
@@ -180,7 +188,8 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
         // The last syllable's minimum too, unless the speech ends too soon for any (then the
         // longest last syllable wins by its duration cost).
         const double speech = (speechEnd - b) - sig.pauseFrames(b, speechEnd);
-        const double v = s0 + span(n - 1, b, std::max(speechEnd, b + 1))
+        const int end = std::max(speechEnd, b + 1);
+        const double v = s0 + (base(n - 1, b, end) - penalty(b, end))
             - (speech < minFrames[size_t(n) - 1] ? 1e6 * (minFrames[size_t(n) - 1] - speech) : 0.0);
         if (v > best) {
             best = v;
@@ -205,36 +214,17 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
 
 namespace {
 
-// The aligner proper, on the recording's features `a`.
+// The aligner proper, on the recording's features `a` and the padded reference's `b`.
 AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const TtsResult &reference,
-    const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+    const SpeechFeatures &b, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
     const int n = int(script.syllables.size());
     if (!reference.ok() || reference.units.size() != n)
         return failure(AlignStatus::BadInput, QStringLiteral("no reference rendering of the script"));
-    if (progress)
-        progress(0.3, QStringLiteral("features"));
-    // The reference gets silence either side (faint noise, as a room has), so that silence
-    // before and after the speech in the recording has something to match.
-    Audio ref16 = resampled(reference.audio, kSpeechSampleRate);
-    {
-        const qsizetype pad = qsizetype(kReferencePad * kSpeechSampleRate);
-        // One allocation: fresh pages are costly, and ten minutes of speech are 40 MB.
-        QVector<float> padded;
-        padded.reserve(ref16.samples.size() + 2 * pad);
-        padded.resize(pad, 0.0f);
-        padded.append(ref16.samples);
-        padded.resize(padded.size() + pad, 0.0f);
-        quint32 state = 12345;
-        for (float &s : padded) {
-            state = state * 1664525u + 1013904223u;
-            s += 1e-4f * (float(state >> 8) / float(1u << 24) - 0.5f);
-        }
-        ref16.samples = std::move(padded);
-    }
-    const SpeechFeatures b = computeSpeechFeatures(ref16, cancel);
     if (isCancelled(cancel))
         return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
+    if (progress)
+        progress(0.3, QStringLiteral("features"));
 
     // ln(power) spans at least ~12 dB between pauses and speech in any recording with speech.
     const double speech = a.speechDuration();
@@ -262,17 +252,26 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     // loudness. Steady noise (hum, a fan, a noisy line) can keep a pause's whole-band energy
     // near that of speech; counted as speech, the noise before the first word draws the first
     // syllables into it and squeezes them.
-    const OnsetSignals sig(a);
-    const OnsetSignals refSig(b);
+    // (The signals are built again after the warp rather than held through it: on a long
+    // recording they weigh as much as the warp.)
     std::vector<float> quietA = a.silence, quietB = b.silence;
-    for (int t = 0; t < a.frames; ++t)
-        if (sig.isPause(t))
-            quietA[size_t(t)] = 1.0f;
-    for (int t = 0; t < b.frames; ++t)
-        if (refSig.isPause(t))
-            quietB[size_t(t)] = 1.0f;
+    double refSpeech = 0;
+    {
+        const OnsetSignals refSig(b);
+        for (int t = 0; t < b.frames; ++t)
+            if (refSig.isPause(t))
+                quietB[size_t(t)] = 1.0f;
+        refSpeech = b.frames - refSig.pauseFrames(0, b.frames);
+    }
+    {
+        const OnsetSignals pauses(a);
+        for (int t = 0; t < a.frames; ++t)
+            if (pauses.isPause(t))
+                quietA[size_t(t)] = 1.0f;
+    }
     const auto path = dtwPath(
         {a.vectors.data(), quietA.data(), a.frames}, {b.vectors.data(), quietB.data(), b.frames}, opt, cancel);
+    const OnsetSignals sig(a);
     if (isCancelled(cancel))
         return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
     if (path.empty())
@@ -310,7 +309,6 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     std::vector<OnsetKind> kinds(static_cast<size_t>(n));
     // The speaker's pace against the reference's, pauses excluded.
     const double targetSpeech = a.frames - sig.pauseFrames(0, a.frames);
-    const double refSpeech = b.frames - refSig.pauseFrames(0, b.frames);
     const double pace = targetSpeech / std::max(refSpeech, 1.0);
     for (int k = 0; k < n; ++k) {
         const TtsUnit &u = reference.units[k];
@@ -518,7 +516,9 @@ AlignResult alignToReference(const Audio &audio, const Script &script, const Tts
     SpeechFeatures a;
     if (std::optional<AlignResult> stopped = recordingFeatures(audio, script, cancel, &a))
         return *stopped;
-    return alignFeatures(a, script, reference, progress, cancel);
+    if (!reference.ok() || reference.units.size() != script.syllables.size())
+        return failure(AlignStatus::BadInput, QStringLiteral("no reference rendering of the script"));
+    return alignFeatures(a, script, reference, referenceFeatures(reference.audio, cancel), progress, cancel);
 }
 
 AlignResult alignScript(const Audio &audio, const Script &script, const AlignOptions &options,
@@ -527,17 +527,30 @@ AlignResult alignScript(const Audio &audio, const Script &script, const AlignOpt
     SpeechFeatures a;
     if (std::optional<AlignResult> stopped = recordingFeatures(audio, script, cancel, &a))
         return *stopped;
+    return alignScript(a, script, options, progress, cancel);
+}
+
+AlignResult alignScript(const SpeechFeatures &a, const Script &script, const AlignOptions &options,
+    const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+{
+    if (script.syllables.isEmpty())
+        return failure(AlignStatus::BadInput, QStringLiteral("the script is empty"));
     TtsOptions tts = options.reference;
     const bool matchRate = tts.rate <= 0;
     if (matchRate)
         tts.rate = kDefaultRate;
     if (matchRate) {
         // Speak the reference at the speaker's pace: less warping, fewer mistakes. The pace
-        // at the default rate is measured on (at most) the first 120 syllables.
+        // at the default rate is measured on (at most) the first 120 syllables; when they are
+        // the whole script, that rendering may serve as the reference itself.
         Script probe = script;
         if (probe.syllables.size() > 120)
             probe.syllables.resize(120);
-        const TtsResult sample = synthesize(probe, tts, {}, cancel);
+        const bool whole = probe.syllables.size() == script.syllables.size();
+        SpeechFeatures probeFeatures;
+        const TtsResult sample = whole ? renderReference(probe, tts, &probeFeatures, cancel)
+                                       : synthesize(
+                                           probe, tts, [](const float *, qsizetype) {}, {}, cancel);
         if (isCancelled(cancel))
             return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
         if (!sample.ok())
@@ -549,20 +562,21 @@ AlignResult alignScript(const Audio &audio, const Script &script, const AlignOpt
         const double ratio = a.speechDuration() / std::max(spoken, 0.01);
         if (ratio > 0.3 && ratio < 6 && std::abs(std::log(ratio)) > std::log(1.15))
             tts.rate = std::clamp(int(std::lround(kDefaultRate / ratio)), 80, 450);
-        else if (probe.syllables.size() == script.syllables.size()) {
+        else if (whole) {
             if (progress)
                 progress(0.1, QStringLiteral("reference"));
-            return alignFeatures(a, script, sample, progress, cancel);
+            return alignFeatures(a, script, sample, probeFeatures, progress, cancel);
         }
     }
-    const TtsResult reference = synthesize(script, tts, {}, cancel);
+    SpeechFeatures b;
+    const TtsResult reference = renderReference(script, tts, &b, cancel);
     if (isCancelled(cancel))
         return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
     if (!reference.ok())
         return failure(AlignStatus::BadInput, reference.error);
     if (progress)
         progress(0.1, QStringLiteral("reference"));
-    return alignFeatures(a, script, reference, progress, cancel);
+    return alignFeatures(a, script, reference, b, progress, cancel);
 }
 
 } // namespace toonface

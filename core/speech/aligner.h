@@ -1,6 +1,7 @@
 #pragma once
 
 #include "speech/audio.h"
+#include "speech/features.h"
 #include "speech/progress.h"
 #include "speech/script.h"
 #include "speech/tts.h"
@@ -48,6 +49,11 @@ struct AlignResult
 // Fails with CannotAlign when the audio holds no speech, or far too little speech for the
 // script (or far too much). Thread-safe (the espeak-ng rendering is serialised).
 AlignResult alignScript(const Audio &audio, const Script &script, const AlignOptions &options = {},
+    const SpeechProgressFn &progress = {}, const std::atomic_bool *cancel = nullptr);
+
+// The same on a recording given by its features (computeSpeechFeatures, or a
+// SpeechFeatureStream fed while decoding): its audio need not be held.
+AlignResult alignScript(const SpeechFeatures &recording, const Script &script, const AlignOptions &options = {},
     const SpeechProgressFn &progress = {}, const std::atomic_bool *cancel = nullptr);
 
 // The same against a given reference rendering of the script (`reference.units` one per

@@ -73,6 +73,13 @@ void convertInto(SwrContext *swr, const uint8_t **in, int inCount, int outRate, 
     out.resize(at + std::max(got, 0));
 }
 
+void appendSamples(QVector<float> &to, const float *samples, qsizetype count)
+{
+    const qsizetype at = to.size();
+    to.resize(at + count);
+    std::copy(samples, samples + count, to.data() + at);
+}
+
 SwrPtr monoFloatResampler(AVChannelLayout *inLayout, AVSampleFormat inFormat, int inRate, int outRate)
 {
     SwrContext *swr = nullptr;
@@ -97,7 +104,8 @@ SwrPtr monoFloatResampler(AVChannelLayout *inLayout, AVSampleFormat inFormat, in
 
 } // namespace
 
-AudioResult loadAudio(const QString &path, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+AudioResult streamAudio(
+    const QString &path, const AudioSink &sink, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
     AudioResult r;
     auto fail = [&](AudioStatus status, const QString &what) {
@@ -145,7 +153,17 @@ AudioResult loadAudio(const QString &path, const SpeechProgressFn &progress, con
     std::unique_ptr<AVPacket, PacketDeleter> packet(av_packet_alloc());
     std::unique_ptr<AVFrame, FrameDeleter> frame(av_frame_alloc());
     const int64_t fileSize = fmt->pb ? avio_size(fmt->pb) : -1;
-    QVector<float> &out = r.audio.samples;
+    // Each conversion lands here and goes on to the sink at once.
+    QVector<float> out;
+    float peak = 0;
+    auto hand = [&] {
+        for (float s : out)
+            peak = std::max(peak, std::abs(s));
+        r.sampleCount += out.size();
+        if (!out.isEmpty() && sink)
+            sink(out.constData(), out.size());
+        out.resize(0);
+    };
     int badPackets = 0;
     int64_t decodedFrames = 0;
     double lastReport = -1;
@@ -153,8 +171,10 @@ AudioResult loadAudio(const QString &path, const SpeechProgressFn &progress, con
     auto drain = [&]() -> bool {
         while (avcodec_receive_frame(dec.get(), frame.get()) >= 0) {
             if (!swr || frame->sample_rate != swrRate || frame->format != swrFormat) {
-                if (swr)
+                if (swr) {
                     convertInto(swr.get(), nullptr, 0, kSpeechSampleRate, swrRate, out);
+                    hand();
+                }
                 AVChannelLayout layout;
                 if (frame->ch_layout.nb_channels > 0 && frame->ch_layout.order != AV_CHANNEL_ORDER_UNSPEC)
                     av_channel_layout_copy(&layout, &frame->ch_layout);
@@ -169,6 +189,7 @@ AudioResult loadAudio(const QString &path, const SpeechProgressFn &progress, con
             }
             convertInto(swr.get(), const_cast<const uint8_t **>(frame->extended_data), frame->nb_samples,
                 kSpeechSampleRate, swrRate, out);
+            hand();
             r.sourceDuration += double(frame->nb_samples) / std::max(frame->sample_rate, 1);
             ++decodedFrames;
             av_frame_unref(frame.get());
@@ -196,19 +217,18 @@ AudioResult loadAudio(const QString &path, const SpeechProgressFn &progress, con
     }
     avcodec_send_packet(dec.get(), nullptr);
     drain();
-    if (swr)
+    if (swr) {
         convertInto(swr.get(), nullptr, 0, kSpeechSampleRate, swrRate, out);
+        hand();
+    }
 
-    if (out.isEmpty()) {
+    if (r.sampleCount == 0) {
         if (badPackets > 0 || decodedFrames == 0)
             return fail(decodedFrames == 0 && badPackets == 0 ? AudioStatus::Empty : AudioStatus::Unreadable,
                 badPackets > 0 ? QStringLiteral("its sound track cannot be decoded (corrupt data)")
                                : QStringLiteral("it holds no sound"));
         return fail(AudioStatus::Empty, QStringLiteral("it holds no sound"));
     }
-    float peak = 0;
-    for (float s : out)
-        peak = std::max(peak, std::abs(s));
     if (peak < 1e-3f)
         return fail(AudioStatus::Silent,
             QStringLiteral("it is silent (peak %1 dBFS)").arg(peak > 0 ? 20 * std::log10(peak) : -999.0, 0, 'f', 0));
@@ -219,25 +239,84 @@ AudioResult loadAudio(const QString &path, const SpeechProgressFn &progress, con
     return r;
 }
 
+AudioResult loadAudio(const QString &path, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+{
+    QVector<float> samples;
+    AudioResult r = streamAudio(
+        path, [&](const float *s, qsizetype n) { appendSamples(samples, s, n); }, progress, cancel);
+    if (r.ok())
+        r.audio.samples = std::move(samples);
+    return r;
+}
+
+struct AudioResampler::Impl
+{
+    int inRate, outRate;
+    AudioSink sink;
+    SwrPtr swr;
+    QVector<float> out;
+};
+
+AudioResampler::AudioResampler(int inRate, int outRate, AudioSink sink)
+    : m_impl(new Impl {inRate, outRate, std::move(sink), nullptr, {}})
+{
+    if (inRate != outRate && inRate > 0 && outRate > 0) {
+        AVChannelLayout mono = AV_CHANNEL_LAYOUT_MONO;
+        m_impl->swr = monoFloatResampler(&mono, AV_SAMPLE_FMT_FLT, inRate, outRate);
+    }
+}
+
+AudioResampler::~AudioResampler() = default;
+
+bool AudioResampler::ok() const
+{
+    return m_impl->inRate > 0 && m_impl->outRate > 0 && (m_impl->inRate == m_impl->outRate || m_impl->swr);
+}
+
+void AudioResampler::push(const float *samples, qsizetype count)
+{
+    Impl &d = *m_impl;
+    if (count <= 0 || !ok())
+        return;
+    if (!d.swr) {
+        d.sink(samples, count);
+        return;
+    }
+    // In chunks: swr_convert sizes (and zeroes) its buffers by the input it is handed.
+    constexpr qsizetype kChunk = 1 << 15;
+    for (qsizetype at = 0; at < count; at += kChunk) {
+        const uint8_t *in = reinterpret_cast<const uint8_t *>(samples + at);
+        convertInto(d.swr.get(), &in, int(std::min(kChunk, count - at)), d.outRate, d.inRate, d.out);
+        if (!d.out.isEmpty())
+            d.sink(d.out.constData(), d.out.size());
+        d.out.resize(0);
+    }
+}
+
+void AudioResampler::finish()
+{
+    Impl &d = *m_impl;
+    if (!d.swr)
+        return;
+    convertInto(d.swr.get(), nullptr, 0, d.outRate, d.inRate, d.out);
+    if (!d.out.isEmpty())
+        d.sink(d.out.constData(), d.out.size());
+    d.out.resize(0);
+}
+
 Audio resampled(const Audio &audio, int rate)
 {
     if (audio.sampleRate == rate || audio.isEmpty())
         return Audio {audio.samples, rate};
-    AVChannelLayout mono = AV_CHANNEL_LAYOUT_MONO;
-    SwrPtr swr = monoFloatResampler(&mono, AV_SAMPLE_FMT_FLT, audio.sampleRate, rate);
     Audio out;
     out.sampleRate = rate;
-    if (!swr)
-        return out;
     out.samples.reserve(qsizetype(double(audio.samples.size()) * rate / audio.sampleRate) + 64);
-    // In chunks: swr_convert sizes (and zeroes) its buffers by the input it is handed.
-    constexpr qsizetype kChunk = 1 << 15;
-    for (qsizetype at = 0; at < audio.samples.size(); at += kChunk) {
-        const uint8_t *in = reinterpret_cast<const uint8_t *>(audio.samples.constData() + at);
-        convertInto(
-            swr.get(), &in, int(std::min(kChunk, audio.samples.size() - at)), rate, audio.sampleRate, out.samples);
-    }
-    convertInto(swr.get(), nullptr, 0, rate, audio.sampleRate, out.samples);
+    AudioResampler resampler(
+        audio.sampleRate, rate, [&](const float *s, qsizetype n) { appendSamples(out.samples, s, n); });
+    if (!resampler.ok())
+        return out;
+    resampler.push(audio.samples.constData(), audio.samples.size());
+    resampler.finish();
     return out;
 }
 

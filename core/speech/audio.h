@@ -5,6 +5,9 @@
 #include <QString>
 #include <QVector>
 
+#include <functional>
+#include <memory>
+
 namespace toonface {
 
 // Every sound Toonface analyses is mono float at this rate.
@@ -28,6 +31,7 @@ struct AudioResult
     QString error; // names the file and the problem when status != Ok
     Audio audio; // at kSpeechSampleRate, mono
     double sourceDuration = 0; // seconds, as decoded
+    qint64 sampleCount = 0; // samples at kSpeechSampleRate decoded (kept in `audio` or handed to a sink)
     bool ok() const { return status == AudioStatus::Ok; }
 };
 
@@ -38,8 +42,36 @@ struct AudioResult
 AudioResult loadAudio(
     const QString &path, const SpeechProgressFn &progress = {}, const std::atomic_bool *cancel = nullptr);
 
+// Receives mono float samples a block at a time.
+using AudioSink = std::function<void(const float *samples, qsizetype count)>;
+
+// Decodes like loadAudio, but hands the samples to `sink` as they come instead of keeping
+// them (a long recording need never be held whole): the result's `audio` stays empty and
+// `sampleCount` counts them. The same errors as loadAudio.
+AudioResult streamAudio(const QString &path, const AudioSink &sink, const SpeechProgressFn &progress = {},
+    const std::atomic_bool *cancel = nullptr);
+
 // Resamples `audio` to `rate` (FFmpeg's resampler). Returns `audio` unchanged at that rate.
 Audio resampled(const Audio &audio, int rate);
+
+// Resamples mono float samples pushed a block at a time (FFmpeg's resampler), handing the
+// result to a sink as it comes; passes them through when the rates are equal.
+class AudioResampler
+{
+public:
+    AudioResampler(int inRate, int outRate, AudioSink sink);
+    ~AudioResampler();
+    AudioResampler(const AudioResampler &) = delete;
+    AudioResampler &operator=(const AudioResampler &) = delete;
+
+    bool ok() const; // false when FFmpeg cannot convert between the rates
+    void push(const float *samples, qsizetype count);
+    void finish(); // flushes what the resampler still holds
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
 
 // Writes `audio` to `path`, the format chosen by the suffix: .wav (16-bit PCM), .flac, .mp3,
 // .ogg (Vorbis), .opus, .m4a/.aac (AAC). The file is written at the audio's own rate, or at the

@@ -59,20 +59,21 @@ Path corridorDtw(const Level &a, const Level &b, const std::vector<int> &lo, con
     std::vector<size_t> offset(size_t(n) + 1, 0);
     for (int i = 0; i < n; ++i)
         offset[size_t(i) + 1] = offset[size_t(i)] + size_t(hi[size_t(i)] - lo[size_t(i)] + 1);
-    std::vector<float> cost(offset.back(), std::numeric_limits<float>::infinity());
+    // Only the steps are kept for the whole corridor; the costs of two rows at a time.
     std::vector<uint8_t> step(offset.back(), 0);
+    const float inf = std::numeric_limits<float>::infinity();
+    std::vector<float> prev, cur;
     const float norm = 1.0f / std::sqrt(float(o.dim));
-    auto at = [&](int i, int j) -> float {
-        if (i < 0 || j < lo[size_t(i)] || j > hi[size_t(i)])
-            return std::numeric_limits<float>::infinity();
-        return cost[offset[size_t(i)] + size_t(j - lo[size_t(i)])];
-    };
     for (int i = 0; i < n; ++i) {
         if ((i & 255) == 0 && isCancelled(cancel))
             return {};
+        const int rowLo = lo[size_t(i)], rowHi = hi[size_t(i)];
+        const int prevLo = i > 0 ? lo[size_t(i) - 1] : 0, prevHi = i > 0 ? hi[size_t(i) - 1] : -1;
+        auto above = [&](int j) { return j < prevLo || j > prevHi ? inf : prev[size_t(j - prevLo)]; };
+        cur.assign(size_t(rowHi - rowLo + 1), inf);
         const float *va = a.vectors.data() + size_t(i) * size_t(dim);
         const float sa = a.silence[size_t(i)];
-        for (int j = lo[size_t(i)]; j <= hi[size_t(i)]; ++j) {
+        for (int j = rowLo; j <= rowHi; ++j) {
             const float *vb = b.vectors.data() + size_t(j) * size_t(dim);
             float acc = 0;
             for (int d = 0; d < dim; ++d) {
@@ -92,10 +93,9 @@ Path corridorDtw(const Level &a, const Level &b, const std::vector<int> &lo, con
                 best = dist;
                 s = 3;
             } else {
-                const float diag = at(i - 1, j - 1) + 2 * dist;
-                const float up = at(i - 1, j) + holdB;
-                const float left = j > lo[size_t(i)] ? cost[offset[size_t(i)] + size_t(j - 1 - lo[size_t(i)])] + holdA
-                                                     : std::numeric_limits<float>::infinity();
+                const float diag = above(j - 1) + 2 * dist;
+                const float up = above(j) + holdB;
+                const float left = j > rowLo ? cur[size_t(j - 1 - rowLo)] + holdA : inf;
                 best = diag;
                 s = 0;
                 if (up < best) {
@@ -107,14 +107,14 @@ Path corridorDtw(const Level &a, const Level &b, const std::vector<int> &lo, con
                     s = 2;
                 }
             }
-            const size_t k = offset[size_t(i)] + size_t(j - lo[size_t(i)]);
-            cost[k] = best;
-            step[k] = s;
+            cur[size_t(j - rowLo)] = best;
+            step[offset[size_t(i)] + size_t(j - rowLo)] = s;
         }
+        std::swap(prev, cur);
     }
     Path path;
     int i = n - 1, j = b.frames - 1;
-    if (!std::isfinite(at(i, j)))
+    if (j < lo[size_t(i)] || j > hi[size_t(i)] || !std::isfinite(prev[size_t(j - lo[size_t(i)])]))
         return {};
     while (true) {
         path.emplace_back(i, j);

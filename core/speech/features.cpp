@@ -80,19 +80,31 @@ double SpeechFeatures::speechDuration() const
     return n * kHop;
 }
 
-SpeechFeatures computeSpeechFeatures(const Audio &audio, const std::atomic_bool *cancel)
-{
-    static const MelBank melBank;
-    static const std::array<float, kWindow> hamming = [] {
-        std::array<float, kWindow> w;
-        for (int i = 0; i < kWindow; ++i)
-            w[size_t(i)] = float(0.54 - 0.46 * std::cos(2 * M_PI * i / (kWindow - 1)));
-        return w;
-    }();
+namespace {
 
-    // The Hamming window's normalised autocorrelation, per lag.
-    static const std::array<float, kWindow> windowAutocorr = [] {
-        std::array<float, kWindow> r;
+const MelBank &melBank()
+{
+    static const MelBank bank;
+    return bank;
+}
+
+const std::array<float, kWindow> &hammingWindow()
+{
+    static const std::array<float, kWindow> w = [] {
+        std::array<float, kWindow> h;
+        for (int i = 0; i < kWindow; ++i)
+            h[size_t(i)] = float(0.54 - 0.46 * std::cos(2 * M_PI * i / (kWindow - 1)));
+        return h;
+    }();
+    return w;
+}
+
+// The Hamming window's normalised autocorrelation, per lag.
+const std::array<float, kWindow> &windowAutocorrelation()
+{
+    static const std::array<float, kWindow> r = [] {
+        const auto &hamming = hammingWindow();
+        std::array<float, kWindow> a;
         double r0 = 0;
         for (int i = 0; i < kWindow; ++i)
             r0 += double(hamming[size_t(i)]) * hamming[size_t(i)];
@@ -100,107 +112,151 @@ SpeechFeatures computeSpeechFeatures(const Audio &audio, const std::atomic_bool 
             double acc = 0;
             for (int i = 0; i + lag < kWindow; ++i)
                 acc += double(hamming[size_t(i)]) * hamming[size_t(i + lag)];
-            r[size_t(lag)] = float(std::max(acc / r0, 1e-3));
+            a[size_t(lag)] = float(std::max(acc / r0, 1e-3));
         }
-        return r;
+        return a;
     }();
+    return r;
+}
 
-    SpeechFeatures f;
-    const qsizetype n = audio.samples.size();
-    f.frames = n >= kWindow ? int((n - kWindow) / kHopSamples) + 1 : 0;
-    if (f.frames == 0)
-        return f;
-    const int frames = f.frames;
-    std::vector<float> cep(size_t(frames) * SpeechFeatures::kCepstra);
-    f.logEnergy.resize(size_t(frames));
-    std::vector<float> band(static_cast<size_t>(frames));
-    f.voicing.resize(size_t(frames));
+constexpr int kBlock = 256; // frames per pass through the DFT
 
+} // namespace
+
+SpeechFeatureStream::SpeechFeatureStream(const std::atomic_bool *cancel)
+    : m_cancel(cancel)
+{ }
+
+void SpeechFeatureStream::push(const float *samples, qsizetype count)
+{
+    if (count <= 0 || isCancelled(m_cancel))
+        return;
+    m_samples += count;
+    m_pending.insert(m_pending.end(), samples, samples + count);
+    constexpr size_t kNeed = size_t(kBlock - 1) * kHopSamples + kWindow;
+    size_t used = 0;
+    while (m_pending.size() - used >= kNeed && !isCancelled(m_cancel)) {
+        frameBlock(m_pending.data() + used, kBlock);
+        used += size_t(kBlock) * kHopSamples;
+    }
+    m_pending.erase(m_pending.begin(), m_pending.begin() + qsizetype(used));
+}
+
+void SpeechFeatureStream::frameBlock(const float *samples, int count)
+{
+    const MelBank &bank = melBank();
+    const auto &hamming = hammingWindow();
+    const auto &windowAutocorr = windowAutocorrelation();
     const int bandLo = 300 * kFft / kSpeechSampleRate, bandHi = 3000 * kFft / kSpeechSampleRate;
     const int highLo = 3500 * kFft / kSpeechSampleRate, lowHi = 400 * kFft / kSpeechSampleRate;
-    std::vector<float> hf(static_cast<size_t>(frames)), lf(static_cast<size_t>(frames));
     const int lagLo = kSpeechSampleRate / 400, lagHi = kSpeechSampleRate / 70;
     std::array<float, kBins> power;
     std::array<float, kMelBands> logMel;
     // Frames go through OpenCV's real DFT a block at a time (rows), forward for the spectrum
     // and inverse of the power spectrum for the autocorrelation. Both are in OpenCV's packed
     // real layout: Re0, Re1, Im1, ..., Re(N/2-1), Im(N/2-1), Re(N/2).
-    constexpr int kBlock = 256;
     // Each row's samples fill its first kWindow columns; the zero padding after them stays.
     cv::Mat windows(kBlock, kFft, CV_32F, cv::Scalar(0)), spectra, powers(kBlock, kFft, CV_32F), autocorr;
-    for (int first = 0; first < frames; first += kBlock) {
-        if (isCancelled(cancel))
-            return {};
-        const int count = std::min(kBlock, frames - first);
-        for (int r = 0; r < count; ++r) {
-            const float *s = audio.samples.constData() + qsizetype(first + r) * kHopSamples;
-            float mean = 0;
-            for (int i = 0; i < kWindow; ++i)
-                mean += s[i];
-            mean /= kWindow;
-            float *row = windows.ptr<float>(r);
-            for (int i = 0; i < kWindow; ++i)
-                row[i] = (s[i] - mean) * hamming[size_t(i)];
-        }
-        cv::dft(windows, spectra, cv::DFT_ROWS, count);
-        for (int r = 0; r < count; ++r) {
-            const int t = first + r;
-            const float *z = spectra.ptr<float>(r);
-            power[0] = z[0] * z[0];
-            for (int k = 1; k < kBins - 1; ++k)
-                power[size_t(k)] = z[2 * k - 1] * z[2 * k - 1] + z[2 * k] * z[2 * k];
-            power[kBins - 1] = z[kFft - 1] * z[kFft - 1];
-            double total = 0, mid = 0, high = 0, low = 0;
-            for (int k = 0; k < kBins; ++k) {
-                total += power[size_t(k)];
-                if (k >= bandLo && k <= bandHi)
-                    mid += power[size_t(k)];
-                if (k >= highLo)
-                    high += power[size_t(k)];
-                if (k <= lowHi)
-                    low += power[size_t(k)];
-            }
-            f.logEnergy[size_t(t)] = float(std::log(total + 1e-9));
-            band[size_t(t)] = float(std::log(mid + 1e-9));
-            hf[size_t(t)] = float(std::log(high + 1e-9) - std::log(total + 1e-9));
-            lf[size_t(t)] = float(std::log(low + 1e-9) - std::log(total + 1e-9));
-            for (int b = 0; b < kMelBands; ++b) {
-                const auto &bd = melBank.bands[size_t(b)];
-                double e = 0;
-                for (int k = bd.from; k <= bd.to && k < kBins; ++k)
-                    e += bd.weights[size_t(k - bd.from)] * power[size_t(k)];
-                logMel[size_t(b)] = float(std::log(e + 1e-8));
-            }
-            for (int c = 0; c < SpeechFeatures::kCepstra; ++c) {
-                float acc = 0;
-                for (int b = 0; b < kMelBands; ++b)
-                    acc += melBank.dct[size_t(c)][size_t(b)] * logMel[size_t(b)];
-                cep[size_t(t) * SpeechFeatures::kCepstra + size_t(c)] = acc;
-            }
-            float *p = powers.ptr<float>(r);
-            p[0] = power[0];
-            for (int k = 1; k < kBins - 1; ++k) {
-                p[2 * k - 1] = power[size_t(k)];
-                p[2 * k] = 0;
-            }
-            p[kFft - 1] = power[kBins - 1];
-        }
-        cv::dft(powers, autocorr, cv::DFT_ROWS | cv::DFT_INVERSE | cv::DFT_REAL_OUTPUT, count);
-        for (int r = 0; r < count; ++r) {
-            const float *ac = autocorr.ptr<float>(r);
-            const float r0 = ac[0];
-            float best = 0;
-            if (r0 > 0) {
-                for (int lag = lagLo; lag <= lagHi; ++lag) {
-                    // Divided by the window's own autocorrelation at this lag (Boersma 1993):
-                    // the Hamming taper alone lowers a 70 Hz voice's peak to a seventh.
-                    const float v = ac[lag] / r0 / windowAutocorr[size_t(lag)];
-                    best = std::max(best, v);
-                }
-            }
-            f.voicing[size_t(first + r)] = std::clamp(best, 0.0f, 1.0f);
-        }
+    for (int r = 0; r < count; ++r) {
+        const float *s = samples + size_t(r) * kHopSamples;
+        float mean = 0;
+        for (int i = 0; i < kWindow; ++i)
+            mean += s[i];
+        mean /= kWindow;
+        float *row = windows.ptr<float>(r);
+        for (int i = 0; i < kWindow; ++i)
+            row[i] = (s[i] - mean) * hamming[size_t(i)];
     }
+    cv::dft(windows, spectra, cv::DFT_ROWS, count);
+    for (int r = 0; r < count; ++r) {
+        const float *z = spectra.ptr<float>(r);
+        power[0] = z[0] * z[0];
+        for (int k = 1; k < kBins - 1; ++k)
+            power[size_t(k)] = z[2 * k - 1] * z[2 * k - 1] + z[2 * k] * z[2 * k];
+        power[kBins - 1] = z[kFft - 1] * z[kFft - 1];
+        double total = 0, mid = 0, high = 0, low = 0;
+        for (int k = 0; k < kBins; ++k) {
+            total += power[size_t(k)];
+            if (k >= bandLo && k <= bandHi)
+                mid += power[size_t(k)];
+            if (k >= highLo)
+                high += power[size_t(k)];
+            if (k <= lowHi)
+                low += power[size_t(k)];
+        }
+        m_logEnergy.push_back(float(std::log(total + 1e-9)));
+        m_band.push_back(float(std::log(mid + 1e-9)));
+        m_hf.push_back(float(std::log(high + 1e-9) - std::log(total + 1e-9)));
+        m_lf.push_back(float(std::log(low + 1e-9) - std::log(total + 1e-9)));
+        for (int b = 0; b < kMelBands; ++b) {
+            const auto &bd = bank.bands[size_t(b)];
+            double e = 0;
+            for (int k = bd.from; k <= bd.to && k < kBins; ++k)
+                e += bd.weights[size_t(k - bd.from)] * power[size_t(k)];
+            logMel[size_t(b)] = float(std::log(e + 1e-8));
+        }
+        for (int c = 0; c < SpeechFeatures::kCepstra; ++c) {
+            float acc = 0;
+            for (int b = 0; b < kMelBands; ++b)
+                acc += bank.dct[size_t(c)][size_t(b)] * logMel[size_t(b)];
+            m_cep.push_back(acc);
+        }
+        float *p = powers.ptr<float>(r);
+        p[0] = power[0];
+        for (int k = 1; k < kBins - 1; ++k) {
+            p[2 * k - 1] = power[size_t(k)];
+            p[2 * k] = 0;
+        }
+        p[kFft - 1] = power[kBins - 1];
+    }
+    cv::dft(powers, autocorr, cv::DFT_ROWS | cv::DFT_INVERSE | cv::DFT_REAL_OUTPUT, count);
+    for (int r = 0; r < count; ++r) {
+        const float *ac = autocorr.ptr<float>(r);
+        const float r0 = ac[0];
+        float best = 0;
+        if (r0 > 0) {
+            for (int lag = lagLo; lag <= lagHi; ++lag) {
+                // Divided by the window's own autocorrelation at this lag (Boersma 1993):
+                // the Hamming taper alone lowers a 70 Hz voice's peak to a seventh.
+                const float v = ac[lag] / r0 / windowAutocorr[size_t(lag)];
+                best = std::max(best, v);
+            }
+        }
+        m_voicing.push_back(std::clamp(best, 0.0f, 1.0f));
+    }
+}
+
+SpeechFeatures computeSpeechFeatures(const Audio &audio, const std::atomic_bool *cancel)
+{
+    SpeechFeatureStream stream(cancel);
+    // In pieces, so that the stream never holds a copy of the whole recording.
+    constexpr qsizetype kPiece = 1 << 16;
+    for (qsizetype at = 0; at < audio.samples.size(); at += kPiece)
+        stream.push(audio.samples.constData() + at, std::min(kPiece, audio.samples.size() - at));
+    return stream.finish();
+}
+
+SpeechFeatures SpeechFeatureStream::finish()
+{
+    // The last windows, fewer than a block.
+    while (m_pending.size() >= size_t(kWindow) && !isCancelled(m_cancel)) {
+        const int count = std::min(kBlock, int((m_pending.size() - kWindow) / kHopSamples) + 1);
+        frameBlock(m_pending.data(), count);
+        m_pending.erase(m_pending.begin(), m_pending.begin() + qsizetype(size_t(count) * kHopSamples));
+    }
+    m_pending = {};
+    if (isCancelled(m_cancel))
+        return {};
+    SpeechFeatures f;
+    f.frames = int(m_logEnergy.size());
+    if (f.frames == 0)
+        return f;
+    const int frames = f.frames;
+    const std::vector<float> cep = std::move(m_cep);
+    const std::vector<float> band = std::move(m_band);
+    std::vector<float> hf = std::move(m_hf), lf = std::move(m_lf);
+    f.logEnergy = std::move(m_logEnergy);
+    f.voicing = std::move(m_voicing);
 
     // Loudness: the mid band smoothed over ±2 frames.
     f.loudness.resize(size_t(frames));

@@ -52,4 +52,24 @@ const FeatureWeights &featureWeights();
 // requires: audio at kSpeechSampleRate (use resampled() first).
 SpeechFeatures computeSpeechFeatures(const Audio &audio, const std::atomic_bool *cancel = nullptr);
 
+// The same features computed as the samples come (at kSpeechSampleRate), a block of frames at
+// a time: only the frames' raw measures are kept, never the audio. push() as often as
+// needed, then finish() once; the result equals computeSpeechFeatures of all the samples.
+class SpeechFeatureStream
+{
+public:
+    explicit SpeechFeatureStream(const std::atomic_bool *cancel = nullptr);
+    void push(const float *samples, qsizetype count);
+    SpeechFeatures finish(); // empty when cancelled
+    qint64 samples() const { return m_samples; } // pushed so far
+
+private:
+    void frameBlock(const float *samples, int count); // frames `count` windows from `samples` on
+    const std::atomic_bool *m_cancel;
+    qint64 m_samples = 0;
+    std::vector<float> m_pending; // samples from the next frame's start on
+    // Per frame: c1..c12, log energy, mid band, high and low shares, voicing.
+    std::vector<float> m_cep, m_logEnergy, m_band, m_hf, m_lf, m_voicing;
+};
+
 } // namespace toonface

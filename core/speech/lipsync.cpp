@@ -104,8 +104,10 @@ LipsyncOutcome lipsyncRecording(const QString &audioPath, const Script &script, 
     const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
     LipsyncOutcome out;
-    const AudioResult audio = loadAudio(
-        audioPath,
+    // The recording's features are computed while it is decoded: its samples are never held.
+    SpeechFeatureStream features(cancel);
+    const AudioResult audio = streamAudio(
+        audioPath, [&](const float *s, qsizetype n) { features.push(s, n); },
         [&](double f, const QString &stage) {
             if (progress)
                 progress(0.2 * f, stage);
@@ -121,7 +123,7 @@ LipsyncOutcome lipsyncRecording(const QString &audioPath, const Script &script, 
         return out;
     }
     const AlignResult aligned = alignScript(
-        audio.audio, script, {},
+        features.finish(), script, {},
         [&](double f, const QString &stage) {
             if (progress)
                 progress(0.2 + 0.8 * f, stage);
@@ -140,7 +142,7 @@ LipsyncOutcome lipsyncRecording(const QString &audioPath, const Script &script, 
     case AlignStatus::BadInput: out.error = QStringLiteral("%1: %2").arg(audioPath, aligned.error); return out;
     }
     out.status = LipsyncStatus::Ok;
-    out.result = lipsyncResult(script, aligned, audio.audio.duration());
+    out.result = lipsyncResult(script, aligned, double(audio.sampleCount) / kSpeechSampleRate);
     return out;
 }
 

@@ -11,6 +11,7 @@
 
 #include <bzlib.h>
 
+#include <atomic>
 #include <limits>
 #include <string_view>
 #include <vector>
@@ -386,6 +387,15 @@ QByteArray buildBlock(const QString &root, QString *error)
 
 } // namespace
 
+namespace {
+std::atomic_bool g_sharedLoaded {false};
+}
+
+bool PinyinDictionary::isLoaded()
+{
+    return g_sharedLoaded.load(std::memory_order_acquire);
+}
+
 std::shared_ptr<const PinyinDictionary> PinyinDictionary::shared(QString *error)
 {
     static QMutex mutex;
@@ -397,6 +407,7 @@ std::shared_ptr<const PinyinDictionary> PinyinDictionary::shared(QString *error)
         if (root.isEmpty())
             root = QStringLiteral("/usr/share");
         dict = loadCached(root, cacheDirectory(), &loadError);
+        g_sharedLoaded.store(true, std::memory_order_release);
     }
     if (!dict && error)
         *error = loadError;

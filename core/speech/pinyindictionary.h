@@ -34,6 +34,9 @@ public:
     // Null, with `error` set to what is missing and which package ships it, when it cannot be
     // loaded.
     static std::shared_ptr<const PinyinDictionary> shared(QString *error = nullptr);
+    // Whether shared() has finished loading (or failing): a call now would not wait. Never
+    // blocks.
+    static bool isLoaded();
 
     // Loads from `root` (a folder laid out like /usr/share), parsing the sources.
     static std::shared_ptr<const PinyinDictionary> load(const QString &root, QString *error);

@@ -6,9 +6,11 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/zhuyin.h speech/zhuyin.cpp
   speech/script.h speech/script.cpp
   speech/tts.h speech/tts.cpp
+  speech/ttsvoicefile.h speech/ttsvoicefile.cpp
   speech/features.h speech/features.cpp
   speech/dtw.h speech/dtw.cpp
   speech/onsetsignals.h speech/onsetsignals.cpp
+  speech/referencefeatures.h speech/referencefeatures.cpp
   speech/aligner.h speech/aligner.cpp
   speech/englishshapes.h speech/englishshapes.cpp
   speech/lipsync.h speech/lipsync.cpp

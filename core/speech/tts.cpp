@@ -1,10 +1,17 @@
 #include "speech/tts.h"
 
 #include "speech/pinyin.h"
+#include "speech/ttsvoicefile.h"
 
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QHash>
 #include <QMutex>
 #include <QMutexLocker>
+#include <QRandomGenerator>
 
+#include <espeak-ng/espeak_ng.h>
 #include <espeak-ng/speak_lib.h>
 
 #include <cstring>
@@ -22,7 +29,10 @@ QMutex &espeakMutex()
 // What the synthesis callback fills; only touched under espeakMutex().
 struct Collector
 {
-    std::vector<short> samples;
+    std::vector<short> samples; // when there is no sink
+    const AudioSink *sink = nullptr;
+    std::vector<float> converted; // the sink's block
+    qint64 count = 0; // samples made
     struct Word
     {
         int textPosition; // 1-based character position in the input
@@ -49,8 +59,17 @@ int synthCallback(short *wav, int count, espeak_EVENT *events)
     Collector *c = g_collector;
     if (!c)
         return 1;
-    if (wav && count > 0)
-        c->samples.insert(c->samples.end(), wav, wav + count);
+    if (wav && count > 0) {
+        c->count += count;
+        if (c->sink) {
+            c->converted.resize(size_t(count));
+            for (int i = 0; i < count; ++i)
+                c->converted[size_t(i)] = wav[i] / 32768.0f;
+            (*c->sink)(c->converted.data(), count);
+        } else {
+            c->samples.insert(c->samples.end(), wav, wav + count);
+        }
+    }
     for (espeak_EVENT *e = events; e && e->type != espeakEVENT_LIST_TERMINATED; ++e) {
         if (e->type == espeakEVENT_WORD) {
             c->words.push_back({e->text_position, e->audio_position / 1000.0});
@@ -62,9 +81,67 @@ int synthCallback(short *wav, int count, espeak_EVENT *events)
         }
     }
     if (c->progress && *c->progress)
-        (*c->progress)(
-            std::min(0.99, double(c->samples.size()) / c->rate / c->expectedSeconds), QStringLiteral("speaking"));
+        (*c->progress)(std::min(0.99, double(c->count) / c->rate / c->expectedSeconds), QStringLiteral("speaking"));
     return isCancelled(c->cancel) ? 1 : 0;
+}
+
+// Starts espeak-ng once; its sample rate, or 0. Called with espeakMutex() held.
+int startEspeak()
+{
+    static int sampleRate = 0;
+    if (sampleRate <= 0) {
+        sampleRate = espeak_Initialize(
+            AUDIO_OUTPUT_SYNCHRONOUS, 0, nullptr, espeakINITIALIZE_PHONEME_EVENTS | espeakINITIALIZE_DONT_EXIT);
+        if (sampleRate <= 0)
+            return sampleRate = 0;
+        espeak_SetSynthCallback(synthCallback);
+    }
+    return sampleRate;
+}
+
+// A directory for the voice files of this process, removed at exit. espeak-ng lowercases the
+// path of a voice file it is given and reads at most 59 characters of it: the path must be
+// short and lowercase.
+struct VoiceDir
+{
+    QString path;
+    VoiceDir()
+    {
+        for (const QString &base : {QDir::tempPath(), QStringLiteral("/tmp")}) {
+            const QString candidate = base
+                + QStringLiteral("/tfv-%1-%2")
+                      .arg(QCoreApplication::applicationPid())
+                      .arg(QRandomGenerator::global()->generate(), 8, 16, QLatin1Char('0'));
+            if (candidate == candidate.toLower() && candidate.size() < 48 && QDir().mkpath(candidate)) {
+                path = candidate;
+                return;
+            }
+        }
+    }
+    ~VoiceDir()
+    {
+        if (!path.isEmpty())
+            QDir(path).removeRecursively();
+    }
+};
+
+// Selects `voice` without its pitch flutter (see steadyVoiceFile), or as espeak-ng names it
+// when no file for it can be made. Called with espeakMutex() held.
+bool selectVoice(const QString &voice)
+{
+    static const VoiceDir dir;
+    static QHash<QString, QString> files;
+    auto found = files.constFind(voice);
+    if (found == files.constEnd()) {
+        const char *data = nullptr;
+        espeak_Info(&data);
+        const QString path
+            = !dir.path.isEmpty() && data ? steadyVoiceFile(voice, QFile::decodeName(data), dir.path) : QString();
+        found = files.insert(voice, path);
+    }
+    if (!found->isEmpty() && espeak_ng_SetVoiceByFile(QFile::encodeName(*found).constData()) == ENS_OK)
+        return true;
+    return espeak_SetVoiceByName(voice.toUtf8().constData()) == EE_OK;
 }
 
 bool isPause(const QString &phoneme)
@@ -73,6 +150,17 @@ bool isPause(const QString &phoneme)
 }
 
 } // namespace
+
+int ttsSampleRate()
+{
+    QMutexLocker lock(&espeakMutex());
+    return startEspeak();
+}
+
+QString ttsUnavailable()
+{
+    return QStringLiteral("espeak-ng cannot start: its data is missing (install espeak-ng-data)");
+}
 
 QString ttsVoice(const TtsOptions &options, Language language)
 {
@@ -102,27 +190,25 @@ QString ttsInputText(const Script &script, QVector<int> *offsets)
 TtsResult synthesize(
     const Script &script, const TtsOptions &options, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
+    return synthesize(script, options, AudioSink {}, progress, cancel);
+}
+
+TtsResult synthesize(const Script &script, const TtsOptions &options, const AudioSink &sink,
+    const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+{
     TtsResult result;
     if (script.syllables.isEmpty()) {
         result.error = QStringLiteral("nothing to speak");
         return result;
     }
     QMutexLocker lock(&espeakMutex());
-    // Note: espeak-ng carries state from one synthesis to the next (its pitch flutter), so the
-    // same request gives slightly different audio depending on what was spoken before.
-    static int sampleRate = 0;
+    const int sampleRate = startEspeak();
     if (sampleRate <= 0) {
-        sampleRate = espeak_Initialize(
-            AUDIO_OUTPUT_SYNCHRONOUS, 0, nullptr, espeakINITIALIZE_PHONEME_EVENTS | espeakINITIALIZE_DONT_EXIT);
-        if (sampleRate <= 0) {
-            result.error = QStringLiteral("espeak-ng cannot start: its data is missing (install espeak-ng-data)");
-            sampleRate = 0;
-            return result;
-        }
-        espeak_SetSynthCallback(synthCallback);
+        result.error = ttsUnavailable();
+        return result;
     }
     const QString voice = ttsVoice(options, script.language);
-    if (espeak_SetVoiceByName(voice.toUtf8().constData()) != EE_OK) {
+    if (!selectVoice(voice)) {
         result.error = QStringLiteral("espeak-ng has no voice '%1'").arg(voice);
         return result;
     }
@@ -136,6 +222,8 @@ TtsResult synthesize(
     const QByteArray utf8 = text.toUtf8();
     Collector collector;
     collector.cancel = cancel;
+    if (sink)
+        collector.sink = &sink;
     collector.progress = &progress;
     collector.rate = sampleRate;
     collector.expectedSeconds = std::max(0.5, script.syllables.size() * 60.0 / std::max(options.rate, 80) * 1.3);
@@ -148,7 +236,7 @@ TtsResult synthesize(
         result.error = QStringLiteral("cancelled");
         return result;
     }
-    if (rc != EE_OK || collector.samples.empty()) {
+    if (rc != EE_OK || collector.count == 0) {
         result.error = QStringLiteral("espeak-ng could not speak the script");
         return result;
     }
@@ -157,7 +245,9 @@ TtsResult synthesize(
     result.audio.samples.resize(qsizetype(collector.samples.size()));
     for (size_t i = 0; i < collector.samples.size(); ++i)
         result.audio.samples[qsizetype(i)] = collector.samples[i] / 32768.0f;
-    const double total = result.audio.duration();
+    collector.samples = {};
+    const double total = double(collector.count) / sampleRate;
+    result.duration = total;
 
     // Word events → syllables by their position in the input (character positions count
     // code points from 1; the input is ASCII but for English words with accents, so map

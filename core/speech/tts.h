@@ -38,7 +38,8 @@ struct TtsUnit
 struct TtsResult
 {
     QString error; // empty on success
-    Audio audio; // mono, at espeak-ng's own rate (22050 Hz)
+    Audio audio; // mono, at espeak-ng's own rate (22050 Hz); empty when the samples went to a sink
+    double duration = 0; // seconds spoken
     QVector<TtsUnit> units; // one per script syllable, in order
     bool ok() const { return error.isEmpty(); }
 };
@@ -48,6 +49,17 @@ struct TtsResult
 // Thread-safe: calls are serialised (espeak-ng keeps global state). Cancel is polled per chunk.
 TtsResult synthesize(const Script &script, const TtsOptions &options = {}, const SpeechProgressFn &progress = {},
     const std::atomic_bool *cancel = nullptr);
+
+// The same, handing the samples to `sink` as they are made (at result.audio.sampleRate)
+// instead of keeping them: result.audio.samples stays empty. A long script's rendering need
+// never be held whole.
+TtsResult synthesize(const Script &script, const TtsOptions &options, const AudioSink &sink,
+    const SpeechProgressFn &progress = {}, const std::atomic_bool *cancel = nullptr);
+
+// espeak-ng's sample rate (starting the library if needed); 0 when it cannot start.
+int ttsSampleRate();
+// Why espeak-ng cannot start.
+QString ttsUnavailable();
 
 // The text handed to espeak-ng for `script` (pinyin with tone numbers, or English words, with
 // commas at phrase breaks); `offsets`, when given, receives each syllable's offset in it.

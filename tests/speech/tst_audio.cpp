@@ -251,6 +251,61 @@ private Q_SLOTS:
         QVERIFY(std::abs(frequency(b) - 500) < 5);
     }
 
+    // streamAudio hands over exactly what loadAudio keeps, in pieces; the same errors.
+    void streamingMatchesLoading()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("tone.wav"));
+        QVERIFY(writeFile(path, wavBytes(44100, 2, 440, 0.5, 2.0)));
+        const AudioResult loaded = loadAudio(path);
+        QVERIFY(loaded.ok());
+        QVector<float> streamed;
+        int pieces = 0;
+        const AudioResult r = streamAudio(path, [&](const float *s, qsizetype n) {
+            streamed.append(QVector<float>(s, s + n));
+            ++pieces;
+        });
+        QVERIFY(r.ok());
+        QVERIFY(r.audio.samples.isEmpty());
+        QVERIFY(pieces > 1);
+        QCOMPARE(r.sampleCount, qint64(loaded.audio.samples.size()));
+        QCOMPARE(loaded.sampleCount, r.sampleCount);
+        QVERIFY(streamed == loaded.audio.samples);
+        const QString silent = dir.filePath(QStringLiteral("silent.wav"));
+        QVERIFY(writeFile(silent, wavBytes(16000, 1, 440, 0.0, 1.0)));
+        const AudioResult s = streamAudio(silent, [](const float *, qsizetype) {});
+        QCOMPARE(s.status, AudioStatus::Silent);
+        QVERIFY(s.error.contains(silent));
+    }
+
+    // The streaming resampler gives what resampled() gives, whatever the pieces.
+    void resamplerInPieces()
+    {
+        Audio a;
+        a.sampleRate = 22050;
+        for (int i = 0; i < 50000; ++i)
+            a.samples.append(float(0.5 * std::sin(2 * M_PI * 300.0 * i / 22050)));
+        const Audio whole = resampled(a, 16000);
+        for (const qsizetype piece : {qsizetype(1000), qsizetype(70000)}) {
+            QVector<float> out;
+            AudioResampler r(22050, 16000, [&](const float *s, qsizetype n) { out.append(QVector<float>(s, s + n)); });
+            QVERIFY(r.ok());
+            for (qsizetype at = 0; at < a.samples.size(); at += piece)
+                r.push(a.samples.constData() + at, std::min(piece, a.samples.size() - at));
+            r.finish();
+            QCOMPARE(out.size(), whole.samples.size());
+            double worst = 0;
+            for (qsizetype i = 0; i < out.size(); ++i)
+                worst = std::max(worst, double(std::abs(out[i] - whole.samples[i])));
+            QVERIFY2(worst < 1e-4, qPrintable(QString::number(worst)));
+        }
+        QVector<float> same;
+        AudioResampler pass(16000, 16000, [&](const float *s, qsizetype n) { same.append(QVector<float>(s, s + n)); });
+        pass.push(a.samples.constData(), 100);
+        pass.finish();
+        QCOMPARE(same, a.samples.mid(0, 100));
+    }
+
     void unknownOutputFormat()
     {
         QString error;

@@ -38,6 +38,37 @@ class TestFeatures : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    // Fed in pieces of any size, the stream computes exactly what the whole recording gives.
+    void streamEqualsWhole()
+    {
+        Audio a;
+        QRandomGenerator rng(11);
+        for (int i = 0; i < 3 * kSpeechSampleRate + 123; ++i) {
+            const double t = double(i) / kSpeechSampleRate;
+            const double env = std::fmod(t, 0.4) < 0.25 ? 1.0 : 0.02; // syllables and gaps
+            a.samples.append(float(env * (0.3 * std::sin(2 * M_PI * 140 * t) + 0.05 * (rng.generateDouble() - 0.5))));
+        }
+        const SpeechFeatures whole = computeSpeechFeatures(a);
+        for (const qsizetype piece : {qsizetype(1), qsizetype(159), qsizetype(4096), qsizetype(100000)}) {
+            SpeechFeatureStream stream;
+            for (qsizetype at = 0; at < a.samples.size(); at += piece)
+                stream.push(a.samples.constData() + at, std::min(piece, a.samples.size() - at));
+            QCOMPARE(stream.samples(), qint64(a.samples.size()));
+            const SpeechFeatures f = stream.finish();
+            QCOMPARE(f.frames, whole.frames);
+            QVERIFY(f.vectors == whole.vectors);
+            QVERIFY(f.voicing == whole.voicing);
+            QVERIFY(f.silence == whole.silence);
+            QVERIFY(f.loudness == whole.loudness);
+            QCOMPARE(f.noiseFloor, whole.noiseFloor);
+        }
+        QVERIFY(whole.frames > 290);
+        // Fewer samples than one window: no frames, as for the whole.
+        SpeechFeatureStream tiny;
+        tiny.push(a.samples.constData(), 399);
+        QCOMPARE(tiny.finish().frames, 0);
+    }
+
     void voicingOfAPeriodicSound_data()
     {
         QTest::addColumn<double>("f0");

@@ -1,5 +1,7 @@
 #include "dialogs/lipsyncdialog.h"
 
+#include "dialogs/dictionarywarmup.h"
+
 #include "dialogs/animationedits.h"
 #include "dialogs/jobstatus.h"
 #include "dialogs/languagebox.h"
@@ -42,6 +44,7 @@ LipSyncDialog::LipSyncDialog(Document *document, QWidget *parent)
     , m_script(new QPlainTextEdit(this))
     , m_scriptState(new QLabel(this))
     , m_scriptCheck(new QTimer(this))
+    , m_dictionary(new DictionaryWarmUp(this))
 {
     setWindowTitle(tr("Lip Sync from Recording"));
     const QString intro = tr("Aligns a recording with the script it speaks, syllable by syllable. The mouth keys "
@@ -91,6 +94,7 @@ LipSyncDialog::LipSyncDialog(Document *document, QWidget *parent)
     connect(m_scriptCheck, &QTimer::timeout, this, &LipSyncDialog::checkScript);
     connect(m_script, &QPlainTextEdit::textChanged, m_scriptCheck, qOverload<>(&QTimer::start));
     connect(m_language, &QComboBox::currentIndexChanged, this, &LipSyncDialog::checkScript);
+    connect(m_dictionary, &DictionaryWarmUp::loaded, this, &LipSyncDialog::checkScript);
     connect(m_recording, &QLineEdit::textChanged, this, &LipSyncDialog::updateButtons);
     connect(browse, &QPushButton::clicked, this, &LipSyncDialog::browseRecording);
     connect(openScriptButton, &QPushButton::clicked, this, &LipSyncDialog::browseScript);
@@ -152,6 +156,10 @@ void LipSyncDialog::checkScript()
     m_scriptOk = false;
     if (text.trimmed().isEmpty()) {
         m_scriptState->setText(tr("Type or open the script the recording speaks."));
+        m_scriptState->setStyleSheet(QString());
+    } else if (!m_dictionary->ready()) {
+        // Checked again when the dictionary has loaded.
+        m_scriptState->setText(tr("Loading the character dictionary…"));
         m_scriptState->setStyleSheet(QString());
     } else {
         const ScriptParse parse = parseScript(text, m_language->language());

@@ -9,6 +9,7 @@ class QTimer;
 
 namespace toonface {
 
+class DictionaryWarmUp;
 class LanguageBox;
 class SecondsBox;
 
@@ -49,6 +50,7 @@ private:
     QPlainTextEdit *m_script;
     QLabel *m_scriptState;
     QTimer *m_scriptCheck;
+    DictionaryWarmUp *m_dictionary;
     bool m_scriptOk = false;
     // What the running job was started with.
     QString m_runAudio;

@@ -1,5 +1,7 @@
 #include "dialogs/saytextdialog.h"
 
+#include "dialogs/dictionarywarmup.h"
+
 #include "dialogs/animationedits.h"
 #include "dialogs/jobstatus.h"
 #include "dialogs/languagebox.h"
@@ -43,6 +45,7 @@ SayTextDialog::SayTextDialog(Document *document, QWidget *parent)
     , m_pitch(new QSpinBox(this))
     , m_offset(new SecondsBox(this))
     , m_soundPath(new QLineEdit(this))
+    , m_dictionary(new DictionaryWarmUp(this))
     , m_soundNote(new QLabel(this))
 {
     setWindowTitle(tr("Say Text"));
@@ -102,6 +105,7 @@ SayTextDialog::SayTextDialog(Document *document, QWidget *parent)
     setBody(intro, form, {m_text, m_language, m_rate, m_pitch, m_offset, m_soundPath, choose});
 
     connect(m_text, &QPlainTextEdit::textChanged, this, &SayTextDialog::updateButtons);
+    connect(m_dictionary, &DictionaryWarmUp::loaded, this, &SayTextDialog::updateButtons);
     connect(m_soundPath, &QLineEdit::textChanged, this, &SayTextDialog::updateButtons);
     connect(choose, &QPushButton::clicked, this, &SayTextDialog::chooseSoundPath);
 
@@ -125,6 +129,7 @@ void SayTextDialog::chooseSoundPath()
 
 bool SayTextDialog::canStart() const
 {
+    // (The character dictionary started loading in the background when the dialog opened.)
     return !m_text->toPlainText().trimmed().isEmpty() && !m_soundPath->text().trimmed().isEmpty();
 }
 

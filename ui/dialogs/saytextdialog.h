@@ -9,6 +9,7 @@ class QSpinBox;
 
 namespace toonface {
 
+class DictionaryWarmUp;
 class LanguageBox;
 class SecondsBox;
 
@@ -50,6 +51,7 @@ private:
     QSpinBox *m_pitch;
     SecondsBox *m_offset;
     QLineEdit *m_soundPath;
+    DictionaryWarmUp *m_dictionary;
     QLabel *m_soundNote;
     // What the running job was started with.
     QString m_runPath;
