@@ -1,5 +1,7 @@
 #pragma once
 
+#include "window/backgroundjob.h"
+
 #include "track/trackvideo.h"
 
 #include <QFutureWatcher>
@@ -24,7 +26,7 @@ public:
     void start(const QString &path, const TrackVideoOptions &options);
     // Asks the running job to stop; finished() follows with TrackStatus::Cancelled.
     void cancel();
-    bool isRunning() const { return m_watcher != nullptr; }
+    bool isRunning() const { return m_job.isRunning(); }
 
 Q_SIGNALS:
     // `total` is -1 when the file does not say how many frames it has.
@@ -32,12 +34,7 @@ Q_SIGNALS:
     void finished(const toonface::TrackResult &result);
 
 private:
-    void onFinished(QFutureWatcher<TrackResult> *watcher);
-    void drop();
-
-    QFutureWatcher<TrackResult> *m_watcher = nullptr;
-    std::shared_ptr<std::atomic_bool> m_cancel;
-    std::shared_ptr<std::atomic_int> m_total;
+    BackgroundJob<TrackResult> m_job {this};
 };
 
 } // namespace toonface

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "window/backgroundjob.h"
+
 #include "speech/lipsync.h"
 
 #include <QFutureWatcher>
@@ -31,18 +33,14 @@ public:
     // Asks the running job to stop; finished() follows with LipsyncStatus::Cancelled (or with
     // the job's outcome when it had already ended).
     void cancel();
-    bool isRunning() const { return m_watcher != nullptr; }
+    bool isRunning() const { return m_job.isRunning(); }
 
 Q_SIGNALS:
     void progress(double fraction, const QString &stage);
     void finished(const toonface::LipsyncOutcome &outcome);
 
 private:
-    void onFinished(QFutureWatcher<LipsyncOutcome> *watcher);
-    void drop();
-
-    QFutureWatcher<LipsyncOutcome> *m_watcher = nullptr;
-    std::shared_ptr<std::atomic_bool> m_cancel;
+    BackgroundJob<LipsyncOutcome> m_job {this};
 };
 
 } // namespace toonface

@@ -35,16 +35,11 @@ DetectionTask::DetectionTask(QObject *parent)
     : QObject(parent)
 { }
 
-DetectionTask::~DetectionTask()
-{
-    drop();
-}
+DetectionTask::~DetectionTask() = default;
 
 void DetectionTask::start(const QImage &image, const DetectOptions &options)
 {
-    drop();
-    auto cancelFlag = std::make_shared<std::atomic_bool>(false);
-    m_cancel = cancelFlag;
+    auto cancelFlag = m_job.newCancelFlag();
     QFuture<DetectionResult> future
         = QtConcurrent::run([image, options, cancelFlag](QPromise<DetectionResult> &promise) {
               promise.setProgressRange(0, kProgressSteps);
@@ -72,32 +67,40 @@ void DetectionTask::start(const QImage &image, const DetectOptions &options)
               promise.addResult(std::move(steps));
           });
 
-    auto *watcher = new QFutureWatcher<DetectionResult>(this);
-    m_watcher = watcher;
-    connect(watcher, &QFutureWatcherBase::progressValueChanged, this, [this, watcher](int value) {
-        if (watcher == m_watcher)
-            Q_EMIT progress(double(value) / kProgressSteps, watcher->progressText());
-    });
+    QFutureWatcher<DetectionResult> *watcher = m_job.watch(
+        future,
+        [this](const QFutureWatcher<DetectionResult> &w) {
+            Q_EMIT progress(double(w.progressValue()) / kProgressSteps, w.progressText());
+        },
+        [this](const QFuture<DetectionResult> &done, bool wasCancelled) {
+            if (wasCancelled || done.resultCount() < 2) {
+                Q_EMIT cancelled();
+                return;
+            }
+            const DetectionResult result = done.resultAt(1);
+            if (result.status == DetectStatus::Cancelled)
+                Q_EMIT cancelled();
+            else
+                Q_EMIT finished(result);
+        });
+    // The points as soon as they are there (result 0).
     connect(watcher, &QFutureWatcherBase::resultReadyAt, this, [this, watcher](int index) {
-        if (watcher != m_watcher || index != 0 || (m_cancel && m_cancel->load()))
+        if (!m_job.isCurrent(watcher) || index != 0 || m_job.isCancelled())
             return;
         const DetectionResult points = watcher->resultAt(0);
         if (points.status != DetectStatus::Cancelled)
             Q_EMIT pointsReady(points);
     });
-    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] { onFinished(watcher); });
-    watcher->setFuture(future);
 }
 
 void DetectionTask::cancel()
 {
-    if (m_cancel)
-        m_cancel->store(true);
+    m_job.cancel();
 }
 
 void DetectionTask::abandon()
 {
-    drop();
+    m_job.drop();
 }
 
 void DetectionTask::preload()
@@ -118,39 +121,7 @@ void DetectionTask::preload()
 
 bool DetectionTask::isRunning() const
 {
-    return m_watcher != nullptr;
-}
-
-void DetectionTask::onFinished(QFutureWatcher<DetectionResult> *watcher)
-{
-    watcher->deleteLater();
-    if (watcher != m_watcher)
-        return;
-    m_watcher = nullptr;
-    const bool wasCancelled = m_cancel && m_cancel->load();
-    m_cancel.reset();
-    const QFuture<DetectionResult> future = watcher->future();
-    if (wasCancelled || future.resultCount() < 2) {
-        Q_EMIT cancelled();
-        return;
-    }
-    const DetectionResult result = future.resultAt(1);
-    if (result.status == DetectStatus::Cancelled)
-        Q_EMIT cancelled();
-    else
-        Q_EMIT finished(result);
-}
-
-void DetectionTask::drop()
-{
-    if (m_cancel)
-        m_cancel->store(true);
-    m_cancel.reset();
-    if (m_watcher) {
-        m_watcher->disconnect(this);
-        m_watcher->deleteLater();
-        m_watcher = nullptr;
-    }
+    return m_job.isRunning();
 }
 
 } // namespace toonface

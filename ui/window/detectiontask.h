@@ -1,6 +1,7 @@
 #pragma once
 
 #include "detect/detector.h"
+#include "window/backgroundjob.h"
 
 #include <QFutureWatcher>
 #include <QImage>
@@ -60,11 +61,7 @@ Q_SIGNALS:
     void cancelled();
 
 private:
-    void onFinished(QFutureWatcher<DetectionResult> *watcher);
-    void drop();
-
-    QFutureWatcher<DetectionResult> *m_watcher = nullptr;
-    std::shared_ptr<std::atomic_bool> m_cancel;
+    BackgroundJob<DetectionResult> m_job {this};
 };
 
 } // namespace toonface
