@@ -1,4 +1,5 @@
 #include "speech/audiomouth.h"
+#include "track/trackaccuracy.h"
 
 #include <QFileInfo>
 #include <QRandomGenerator>
@@ -48,25 +49,6 @@ double fraction(const QVector<AudioMouthFrame> &frames, double from, double to, 
         yes += test(f) ? 1 : 0;
     }
     return n > 0 ? double(yes) / n : -1.0;
-}
-
-double correlation(const QVector<double> &a, const QVector<double> &b)
-{
-    const qsizetype n = std::min(a.size(), b.size());
-    double ma = 0, mb = 0;
-    for (qsizetype i = 0; i < n; ++i) {
-        ma += a[i];
-        mb += b[i];
-    }
-    ma /= double(n);
-    mb /= double(n);
-    double sab = 0, saa = 0, sbb = 0;
-    for (qsizetype i = 0; i < n; ++i) {
-        sab += (a[i] - ma) * (b[i] - mb);
-        saa += (a[i] - ma) * (a[i] - ma);
-        sbb += (b[i] - mb) * (b[i] - mb);
-    }
-    return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : 0.0;
 }
 
 bool isOpen(const AudioMouthFrame &f)
@@ -323,7 +305,7 @@ void TestAudioMouth::realSpeech()
     QVector<double> openness;
     for (const AudioMouthFrame &f : frames)
         openness.append(f.openness);
-    const double r = correlation(openness, smooth);
+    const double r = pearson(openness, smooth);
     qInfo("%s: open %.2f of speech, %lld shapes, openness/envelope correlation %.3f", qPrintable(name), open,
         qlonglong(shapes.size()), r);
     QVERIFY2(r > 0.7, qPrintable(QString::number(r)));

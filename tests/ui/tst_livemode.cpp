@@ -6,6 +6,7 @@
 #include "face/pointtable.h"
 #include "media/mediareader.h"
 #include "playback/playhead.h"
+#include "track/trackaccuracy.h"
 #include "track/videofilesource.h"
 #include "uifixture.h"
 
@@ -39,25 +40,6 @@ Audio clipSound()
     QString error;
     std::optional<QVector<float>> samples = readAudio(kClip, kSpeechSampleRate, &error);
     return samples ? Audio {*samples, kSpeechSampleRate} : Audio {};
-}
-
-double correlation(const QVector<double> &a, const QVector<double> &b)
-{
-    const qsizetype n = std::min(a.size(), b.size());
-    double ma = 0, mb = 0;
-    for (qsizetype i = 0; i < n; ++i) {
-        ma += a[i];
-        mb += b[i];
-    }
-    ma /= double(n);
-    mb /= double(n);
-    double sab = 0, saa = 0, sbb = 0;
-    for (qsizetype i = 0; i < n; ++i) {
-        sab += (a[i] - ma) * (b[i] - mb);
-        saa += (a[i] - ma) * (a[i] - ma);
-        sbb += (b[i] - mb) * (b[i] - mb);
-    }
-    return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : 0.0;
 }
 
 // The gap the pose opens between the lips (8.2 below 8.9), pixels.
@@ -134,7 +116,7 @@ void TestLiveMode::clipDrivesTheCartoon()
     const auto [low, high] = std::minmax_element(shown.cbegin(), shown.cend());
     const double es0 = document.face().fapu().es0;
     QVERIFY2(*high - *low > 0.05 * es0, qPrintable(QStringLiteral("%1 px").arg(*high - *low)));
-    const double r = correlation(tracked, shown);
+    const double r = pearson(tracked, shown);
     qInfo("tracked mouth opening vs the cartoon's: r = %.3f over %lld frames", r, qlonglong(tracked.size()));
     QVERIFY(r > 0.9);
 }
