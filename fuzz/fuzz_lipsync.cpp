@@ -13,8 +13,8 @@ using namespace toonface;
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     const fuzz::Split in = fuzz::split(data, size);
-    static constexpr LipSyncFormat kFormats[] = {
-        LipSyncFormat::RhubarbTsv, LipSyncFormat::RhubarbJson, LipSyncFormat::Papagayo, LipSyncFormat::MohoSwitch};
+    static constexpr LipSyncFormat kFormats[]
+        = {LipSyncFormat::RhubarbTsv, LipSyncFormat::RhubarbJson, LipSyncFormat::Papagayo, LipSyncFormat::MohoSwitch};
     const LipSyncFormat format = kFormats[in.selector % 4];
     QString error;
     const auto track = parseLipSync(fuzz::bytes(in.data, in.size), format, QStringLiteral("input"), {}, &error);
