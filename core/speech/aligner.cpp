@@ -11,6 +11,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 
 namespace toonface {
@@ -456,6 +457,10 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         AlignedSyllable &s = r.syllables[k];
         s.start = candidates[size_t(k)][size_t(chosen[size_t(k)])].start;
     }
+    if (qEnvironmentVariableIsSet("TFDEBUG"))
+        for (int k = 0; k < n; ++k)
+            fprintf(stderr, "DBG %d %.3f %.3f %.3f %.3f\n", k, a.time(prior[size_t(k)]), a.time(onsets[size_t(k)]),
+                r.syllables[k].start, expectedFrames[size_t(k)] * 0.01);
     for (int k = 0; k < n; ++k) {
         AlignedSyllable &s = r.syllables[k];
         // A syllable ends where the next begins, or where a pause after it begins (never
