@@ -11,7 +11,6 @@
 #include <array>
 #include <bit>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 
 namespace toonface {
@@ -249,6 +248,10 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
 
     DtwOptions opt;
     opt.dim = SpeechFeatures::kDim;
+    // Pauses the script does not mark and changes of pace move a moment of the recording
+    // from its share of the speech by seconds, not by minutes.
+    opt.band = 3000; // frames: ±30 s
+    opt.maxFullCells = 6000000;
     // Silence for the warp: quiet by the whole band's energy, or a pause by the mid band's
     // loudness. Steady noise (hum, a fan, a noisy line) can keep a pause's whole-band energy
     // near that of speech; counted as speech, the noise before the first word draws the first
@@ -457,10 +460,6 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         AlignedSyllable &s = r.syllables[k];
         s.start = candidates[size_t(k)][size_t(chosen[size_t(k)])].start;
     }
-    if (qEnvironmentVariableIsSet("TFDEBUG"))
-        for (int k = 0; k < n; ++k)
-            fprintf(stderr, "DBG %d %.3f %.3f %.3f %.3f\n", k, a.time(prior[size_t(k)]), a.time(onsets[size_t(k)]),
-                r.syllables[k].start, expectedFrames[size_t(k)] * 0.01);
     for (int k = 0; k < n; ++k) {
         AlignedSyllable &s = r.syllables[k];
         // A syllable ends where the next begins, or where a pause after it begins (never

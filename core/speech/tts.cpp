@@ -1,5 +1,4 @@
 #include "speech/tts.h"
-#include <cstdio>
 
 #include "speech/pinyin.h"
 #include "speech/ttsvoicefile.h"
@@ -188,11 +187,11 @@ QString ttsInputText(const Script &script, QVector<int> *offsets)
         if (offsets)
             offsets->append(int(text.size()));
         text += script.language == Language::English ? s.text : toneNumberSpelling({s.pinyin, s.tone});
-        const bool wordEnds = k + 1 < script.syllables.size()
-            && script.syllables[k + 1].position > s.position + s.length;
+        const bool wordEnds
+            = k + 1 < script.syllables.size() && script.syllables[k + 1].position > s.position + s.length;
         const int clause = int(text.size()) - clauseStart;
-        if (s.phraseBreakAfter || (k + 1 < script.syllables.size()
-                && (clause >= kClauseHard || (clause >= kClauseSoft && wordEnds)))) {
+        if (s.phraseBreakAfter
+            || (k + 1 < script.syllables.size() && (clause >= kClauseHard || (clause >= kClauseSoft && wordEnds)))) {
             text += QLatin1Char(',');
             clauseStart = int(text.size());
         }
@@ -295,8 +294,6 @@ TtsResult synthesize(const Script &script, const TtsOptions &options, const Audi
     }
     // A syllable espeak-ng gave no event of its own (rare) starts where its neighbours allow.
     for (int k = 0; k < n; ++k) {
-        if (!seen[k] && qEnvironmentVariableIsSet("TFDEBUG"))
-            fprintf(stderr, "UNSEEN %d\n", k);
         if (seen[k])
             continue;
         int next = k + 1;
