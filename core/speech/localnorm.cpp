@@ -9,7 +9,11 @@ namespace toonface {
 namespace {
 
 constexpr int kBlock = 25; // frames (0.25 s)
-constexpr int kReach = 10; // blocks either side: a window of ±2.5 s
+// Blocks either side: levels over ±1.5 s (about a phrase: a window across the boundary of a
+// quiet and a loud stretch measures the quiet one's end against the loud one), the spectral
+// moments, which need more frames to settle, over ±2.5 s.
+constexpr int kReach = 6;
+constexpr int kMomentReach = 10;
 
 // A frame's value between those of the centres of the two nearest blocks, linearly.
 struct BlockBlend
@@ -27,15 +31,16 @@ BlockBlend blockBlend(int t, int blocks)
 } // namespace
 
 // Per frame, how far (ln units) the level of the speech around it lies under the recording's
-// loud frames: the 95th percentile of the log energy within ±2.5 s against that of the whole
-// recording. A recording joined from several sources, or a speaker who moves off the
-// microphone, holds speech at levels 20 dB apart; measured against the whole recording, the
+// loud frames: the 95th percentile of the log energy within ±1.5 s against that of the whole
+// recording, less the 5 dB by which a speaker's level wanders anyway. A recording joined from several sources, or a
+// speaker who moves off the microphone, holds speech at levels 20 dB apart; measured against the whole recording, the
 // quiet part's vowels look like consonants and its consonants like pauses. Windows without
 // speech (less than 12 dB between their quiet and loud frames, or loud frames more than 30 dB
 // under the recording's) take the level of the nearest window with speech.
 std::vector<float> levelOffsets(const std::vector<float> &logEnergy)
 {
     constexpr float kContrast = 2.8f, kQuietest = 6.9f; // ln units: 12 dB, 30 dB
+    constexpr float kNatural = 1.15f; // ln units: 5 dB
     const int frames = int(logEnergy.size());
     const int blocks = (frames + kBlock - 1) / kBlock;
     if (blocks == 0)
@@ -78,7 +83,10 @@ std::vector<float> levelOffsets(const std::vector<float> &logEnergy)
     std::vector<float> offsets(static_cast<size_t>(frames));
     for (int t = 0; t < frames; ++t) {
         const BlockBlend m = blockBlend(t, blocks);
-        offsets[size_t(t)] = overall - ((1 - m.f) * filled[size_t(m.b0)] + m.f * filled[size_t(m.b1)]);
+        const float offset = overall - ((1 - m.f) * filled[size_t(m.b0)] + m.f * filled[size_t(m.b1)]);
+        // A speaker's level wanders by a few dB from phrase to phrase, which the recording's
+        // normalisation handles: only what lies beyond that is made up.
+        offsets[size_t(t)] = offset > 0 ? std::max(offset - kNatural, 0.0f) : std::min(offset + kNatural, 0.0f);
     }
     return offsets;
 }
@@ -123,7 +131,7 @@ LocalMoments::LocalMoments(
         double s0 = 0;
         std::fill(s1.begin(), s1.end(), 0.0);
         std::fill(s2.begin(), s2.end(), 0.0);
-        for (int u = std::max(0, b - kReach); u <= std::min(m_blocks - 1, b + kReach); ++u) {
+        for (int u = std::max(0, b - kMomentReach); u <= std::min(m_blocks - 1, b + kMomentReach); ++u) {
             s0 += w0[size_t(u)];
             for (size_t c = 0; c < C; ++c) {
                 s1[c] += w1[size_t(u) * C + c];

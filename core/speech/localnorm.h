@@ -4,8 +4,8 @@
 
 namespace toonface {
 
-// Normalisation of a recording's frame measures against the speech around each frame (±2.5 s)
-// rather than the whole recording: recordings joined from several sources, or a speaker who
+// Normalisation of a recording's frame measures against the speech around each frame (a few
+// seconds) rather than the whole recording: recordings joined from several sources, or a speaker who
 // moves off the microphone or changes the room, hold speech whose level and spectrum differ
 // from one stretch to the next.
 
