@@ -254,7 +254,7 @@ SpeechFeatures SpeechFeatureStream::finish()
     if (f.frames == 0)
         return f;
     const int frames = f.frames;
-    const std::vector<float> cep = std::move(m_cep);
+    std::vector<float> cep = std::move(m_cep);
     std::vector<float> band = std::move(m_band);
     std::vector<float> hf = std::move(m_hf), lf = std::move(m_lf);
     f.logEnergy = std::move(m_logEnergy);
@@ -303,7 +303,12 @@ SpeechFeatures SpeechFeatureStream::finish()
         std::fill(speechWeight.begin(), speechWeight.end(), 1.0f);
     // A window is drawn toward the whole recording's moments as if it held a second of them.
     constexpr double kPriorFrames = 100;
-    const LocalMoments cepMoments(cep.data(), frames, C, speechWeight, kPriorFrames);
+    {
+        const LocalMoments cepMoments(cep.data(), frames, C, speechWeight, kPriorFrames);
+        for (int t = 0; t < frames; ++t)
+            for (int c = 0; c < C; ++c)
+                cep[size_t(t) * C + size_t(c)] = cepMoments.normalised(t, c, cep[size_t(t) * C + size_t(c)]);
+    }
 
     // Broad, speaker-robust channels: loudness between its floor and level, the share of
     // high (> 3.5 kHz: frication) and low (< 400 Hz: voice bar, nasals) energy, z-scored.
@@ -321,7 +326,7 @@ SpeechFeatures SpeechFeatureStream::finish()
     f.vectors.assign(size_t(frames) * SpeechFeatures::kDim, 0.0f);
     auto norm = [&](int t, int c) {
         const int u = std::clamp(t, 0, frames - 1);
-        return cepMoments.normalised(u, c, cep[size_t(u) * C + size_t(c)]);
+        return cep[size_t(u) * C + size_t(c)];
     };
     f.loudnessNorm.resize(size_t(frames));
     for (int t = 0; t < frames; ++t)
