@@ -248,6 +248,10 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
 
     DtwOptions opt;
     opt.dim = SpeechFeatures::kDim;
+    // Pauses the script does not mark and changes of pace move a moment of the recording
+    // from its share of the speech by seconds, not by minutes.
+    opt.band = 3000; // frames: ±30 s
+    opt.maxFullCells = 6000000;
     // Silence for the warp: quiet by the whole band's energy, or a pause by the mid band's
     // loudness. Steady noise (hum, a fan, a noisy line) can keep a pause's whole-band energy
     // near that of speech; counted as speech, the noise before the first word draws the first

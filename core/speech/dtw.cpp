@@ -50,6 +50,22 @@ Level halve(const Level &l, int dim)
 
 using Path = std::vector<std::pair<int, int>>;
 
+// Makes the corridor [lo[r], hi[r]] monotone, starting at column 0 and ending at the last.
+void monotoneCorridor(std::vector<int> &lo, std::vector<int> &hi, int columns)
+{
+    const int rows = int(lo.size());
+    lo[0] = 0;
+    hi[size_t(rows) - 1] = columns - 1;
+    for (int r = 1; r < rows; ++r) {
+        lo[size_t(r)] = std::max(lo[size_t(r)], lo[size_t(r) - 1]);
+        hi[size_t(r)] = std::max(hi[size_t(r)], hi[size_t(r) - 1]);
+    }
+    for (int r = rows - 2; r >= 0; --r)
+        lo[size_t(r)] = std::min(lo[size_t(r)], lo[size_t(r) + 1]);
+    for (int r = 0; r < rows; ++r)
+        lo[size_t(r)] = std::min(lo[size_t(r)], hi[size_t(r)]);
+}
+
 // DTW inside a corridor: row i of `a` may meet columns [lo[i], hi[i]] of `b`.
 // `dim` is the channels per frame of the levels; distances are normalised by o.dim.
 Path corridorDtw(const Level &a, const Level &b, const std::vector<int> &lo, const std::vector<int> &hi,
@@ -157,15 +173,39 @@ std::vector<std::pair<int, int>> dtwPath(
     if (channels.empty())
         channels.push_back(0);
     std::vector<Level> as {fromSequence(a, options.dim, channels)}, bs {fromSequence(b, options.dim, channels)};
-    while (long(as.back().frames) * long(bs.back().frames) > options.maxFullCells && as.back().frames > 8
-        && bs.back().frames > 8) {
+    // Columns a row of the coarsest level may meet: all, or the band's.
+    auto width = [&] {
+        const long band = 2L * (long(options.band) >> (as.size() - 1)) + 1;
+        return options.band > 0 ? std::min(long(bs.back().frames), band) : long(bs.back().frames);
+    };
+    while (long(as.back().frames) * width() > options.maxFullCells && as.back().frames > 8 && bs.back().frames > 8) {
         as.push_back(halve(as.back(), dim));
         bs.push_back(halve(bs.back(), dim));
     }
     int level = int(as.size()) - 1;
-    std::vector<int> lo(size_t(as[size_t(level)].frames), 0),
-        hi(size_t(as[size_t(level)].frames), bs[size_t(level)].frames - 1);
-    Path path = corridorDtw(as[size_t(level)], bs[size_t(level)], lo, hi, options, dim, cancel);
+    const Level &ca = as[size_t(level)], &cb = bs[size_t(level)];
+    std::vector<int> lo(size_t(ca.frames), 0), hi(size_t(ca.frames), cb.frames - 1);
+    if (width() < cb.frames) {
+        // The band around the line of equal shares of speech.
+        std::vector<double> speechB(size_t(cb.frames) + 1, 0.0);
+        for (int j = 0; j < cb.frames; ++j)
+            speechB[size_t(j) + 1] = speechB[size_t(j)] + (cb.silence[size_t(j)] < 0.5f ? 1.0 : 0.0);
+        double totalA = 0;
+        for (int i = 0; i < ca.frames; ++i)
+            totalA += ca.silence[size_t(i)] < 0.5f ? 1.0 : 0.0;
+        const int half = int(width() / 2);
+        double spokenA = 0;
+        for (int i = 0; i < ca.frames; ++i) {
+            spokenA += ca.silence[size_t(i)] < 0.5f ? 1.0 : 0.0;
+            const double share = totalA > 0 ? spokenA / totalA : double(i + 1) / ca.frames;
+            const int centre = int(
+                std::lower_bound(speechB.begin(), speechB.end(), share * speechB.back() - 1e-9) - speechB.begin());
+            lo[size_t(i)] = std::clamp(centre - half, 0, cb.frames - 1);
+            hi[size_t(i)] = std::clamp(centre + half, 0, cb.frames - 1);
+        }
+        monotoneCorridor(lo, hi, cb.frames);
+    }
+    Path path = corridorDtw(ca, cb, lo, hi, options, dim, cancel);
     while (level > 0 && !path.empty()) {
         --level;
         const Level &fa = as[size_t(level)];
@@ -191,17 +231,7 @@ std::vector<std::pair<int, int>> dtwPath(
             wlo[size_t(r)] = flo[size_t(r0)];
             whi[size_t(r)] = fhi[size_t(r1)];
         }
-        // Monotone corridor that starts at column 0 and ends at the last column.
-        wlo[0] = 0;
-        whi[size_t(fa.frames) - 1] = fb.frames - 1;
-        for (int r = 1; r < fa.frames; ++r) {
-            wlo[size_t(r)] = std::max(wlo[size_t(r)], wlo[size_t(r) - 1]);
-            whi[size_t(r)] = std::max(whi[size_t(r)], whi[size_t(r) - 1]);
-        }
-        for (int r = fa.frames - 2; r >= 0; --r)
-            wlo[size_t(r)] = std::min(wlo[size_t(r)], wlo[size_t(r) + 1]);
-        for (int r = 0; r < fa.frames; ++r)
-            wlo[size_t(r)] = std::min(wlo[size_t(r)], whi[size_t(r)]);
+        monotoneCorridor(wlo, whi, fb.frames);
         path = corridorDtw(fa, fb, wlo, whi, options, dim, cancel);
     }
     return path;

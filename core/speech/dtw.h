@@ -28,6 +28,11 @@ struct DtwOptions
     float silenceCost = 1.0f;
     long maxFullCells = 4'000'000; // the coarsest level is a full DTW of at most this many cells
     int radius = 6; // corridor half-width, in frames of the finer level
+    // When > 0: the path keeps within `band` frames (of the full resolution) of the line on
+    // which both sequences have spoken the same share of their speech (frames with silence
+    // < 0.5). A full DTW at the coarsest level a long recording allows averages a third of a
+    // second into a frame and loses its way; within the band the coarsest level stays fine.
+    int band = 0;
 };
 
 // The warping path from (0, 0) to (a.frames-1, b.frames-1), as (i in a, j in b) pairs;

@@ -1,5 +1,7 @@
 #include "speech/features.h"
 
+#include "speech/localnorm.h"
+
 #include <opencv2/core.hpp>
 
 #include <algorithm>
@@ -252,11 +254,17 @@ SpeechFeatures SpeechFeatureStream::finish()
     if (f.frames == 0)
         return f;
     const int frames = f.frames;
-    const std::vector<float> cep = std::move(m_cep);
-    const std::vector<float> band = std::move(m_band);
+    std::vector<float> cep = std::move(m_cep);
+    std::vector<float> band = std::move(m_band);
     std::vector<float> hf = std::move(m_hf), lf = std::move(m_lf);
     f.logEnergy = std::move(m_logEnergy);
     f.voicing = std::move(m_voicing);
+    // Every level measured against the speech around it (see levelOffsets).
+    const std::vector<float> offsets = levelOffsets(f.logEnergy);
+    for (int t = 0; t < frames; ++t) {
+        f.logEnergy[size_t(t)] += offsets[size_t(t)];
+        band[size_t(t)] += offsets[size_t(t)];
+    }
 
     // Loudness: the mid band smoothed over ±2 frames.
     f.loudness.resize(size_t(frames));
@@ -284,58 +292,32 @@ SpeechFeatures SpeechFeatureStream::finish()
     for (int t = 0; t < frames; ++t)
         f.silence[size_t(t)] = 1.0f / (1.0f + std::exp((f.logEnergy[size_t(t)] - threshold) / width));
 
-    // Cepstral mean and variance normalisation over the speech frames.
+    // Cepstral mean and variance normalisation over the speech frames around each frame
+    // (all frames when there is next to no speech).
     const int C = SpeechFeatures::kCepstra;
-    std::array<double, SpeechFeatures::kCepstra> mean {}, var {};
+    std::vector<float> speechWeight(static_cast<size_t>(frames));
     double weight = 0;
-    for (int t = 0; t < frames; ++t) {
-        const double w = 1.0 - f.silence[size_t(t)];
-        weight += w;
-        for (int c = 0; c < C; ++c)
-            mean[size_t(c)] += w * cep[size_t(t) * C + size_t(c)];
+    for (int t = 0; t < frames; ++t)
+        weight += speechWeight[size_t(t)] = 1.0f - f.silence[size_t(t)];
+    if (weight < 5)
+        std::fill(speechWeight.begin(), speechWeight.end(), 1.0f);
+    // A window is drawn toward the whole recording's moments as if it held a second of them.
+    constexpr double kPriorFrames = 100;
+    {
+        const LocalMoments cepMoments(cep.data(), frames, C, speechWeight, kPriorFrames);
+        for (int t = 0; t < frames; ++t)
+            for (int c = 0; c < C; ++c)
+                cep[size_t(t) * C + size_t(c)] = cepMoments.normalised(t, c, cep[size_t(t) * C + size_t(c)]);
     }
-    const bool useAll = weight < 5;
-    if (useAll)
-        weight = frames;
-    for (int c = 0; c < C; ++c) {
-        if (useAll) {
-            mean[size_t(c)] = 0;
-            for (int t = 0; t < frames; ++t)
-                mean[size_t(c)] += cep[size_t(t) * C + size_t(c)];
-        }
-        mean[size_t(c)] /= weight;
-    }
-    for (int t = 0; t < frames; ++t) {
-        const double w = useAll ? 1.0 : 1.0 - f.silence[size_t(t)];
-        for (int c = 0; c < C; ++c) {
-            const double d = cep[size_t(t) * C + size_t(c)] - mean[size_t(c)];
-            var[size_t(c)] += w * d * d;
-        }
-    }
-    std::array<float, SpeechFeatures::kCepstra> inv;
-    for (int c = 0; c < C; ++c)
-        inv[size_t(c)] = float(1.0 / std::sqrt(var[size_t(c)] / weight + 1e-6));
 
     // Broad, speaker-robust channels: loudness between its floor and level, the share of
     // high (> 3.5 kHz: frication) and low (< 400 Hz: voice bar, nasals) energy, z-scored.
     const float loudFloor = percentile(f.loudness, 0.05), loudLevel = percentile(f.loudness, 0.95);
     const float loudRange = std::max(loudLevel - loudFloor, 1e-3f);
     auto zscore = [&](std::vector<float> &v) {
-        double m = 0, w = 0;
-        for (int t = 0; t < frames; ++t) {
-            const double k = 1.0 - f.silence[size_t(t)];
-            m += k * v[size_t(t)];
-            w += k;
-        }
-        m /= std::max(w, 1e-6);
-        double var = 0;
-        for (int t = 0; t < frames; ++t) {
-            const double k = 1.0 - f.silence[size_t(t)];
-            var += k * (v[size_t(t)] - m) * (v[size_t(t)] - m);
-        }
-        const double sd = std::sqrt(var / std::max(w, 1e-6)) + 1e-3;
-        for (float &x : v)
-            x = float(std::clamp((x - m) / sd, -4.0, 4.0));
+        const LocalMoments moments(v.data(), frames, 1, speechWeight, kPriorFrames);
+        for (int t = 0; t < frames; ++t)
+            v[size_t(t)] = std::clamp(moments.normalised(t, 0, v[size_t(t)]), -4.0f, 4.0f);
     };
     zscore(hf);
     zscore(lf);
@@ -344,7 +326,7 @@ SpeechFeatures SpeechFeatureStream::finish()
     f.vectors.assign(size_t(frames) * SpeechFeatures::kDim, 0.0f);
     auto norm = [&](int t, int c) {
         const int u = std::clamp(t, 0, frames - 1);
-        return (cep[size_t(u) * C + size_t(c)] - float(mean[size_t(c)])) * inv[size_t(c)];
+        return cep[size_t(u) * C + size_t(c)];
     };
     f.loudnessNorm.resize(size_t(frames));
     for (int t = 0; t < frames; ++t)

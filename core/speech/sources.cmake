@@ -8,6 +8,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/tts.h speech/tts.cpp
   speech/ttsvoicefile.h speech/ttsvoicefile.cpp
   speech/features.h speech/features.cpp
+  speech/localnorm.h speech/localnorm.cpp
   speech/dtw.h speech/dtw.cpp
   speech/onsetsignals.h speech/onsetsignals.cpp
   speech/referencefeatures.h speech/referencefeatures.cpp

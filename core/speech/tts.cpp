@@ -174,14 +174,27 @@ QString ttsInputText(const Script &script, QVector<int> *offsets)
     QString text;
     if (offsets)
         offsets->clear();
-    for (const ScriptSyllable &s : script.syllables) {
+    // espeak-ng cuts a clause longer than its buffer (800 bytes) at a word of its choice and
+    // then reports no word events for a dozen words after the cut: their syllables would
+    // get no times. A long run without punctuation is broken into clauses well under that,
+    // where the script leaves a space between words if it can.
+    constexpr int kClauseSoft = 300, kClauseHard = 500; // bytes (the text is ASCII but for English accents)
+    int clauseStart = 0;
+    for (qsizetype k = 0; k < script.syllables.size(); ++k) {
+        const ScriptSyllable &s = script.syllables[k];
         if (!text.isEmpty())
             text += QLatin1Char(' ');
         if (offsets)
             offsets->append(int(text.size()));
         text += script.language == Language::English ? s.text : toneNumberSpelling({s.pinyin, s.tone});
-        if (s.phraseBreakAfter)
+        const bool wordEnds
+            = k + 1 < script.syllables.size() && script.syllables[k + 1].position > s.position + s.length;
+        const int clause = int(text.size()) - clauseStart;
+        if (s.phraseBreakAfter
+            || (k + 1 < script.syllables.size() && (clause >= kClauseHard || (clause >= kClauseSoft && wordEnds)))) {
             text += QLatin1Char(',');
+            clauseStart = int(text.size());
+        }
     }
     text += QLatin1Char('.');
     return text;

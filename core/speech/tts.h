@@ -62,7 +62,9 @@ int ttsSampleRate();
 QString ttsUnavailable();
 
 // The text handed to espeak-ng for `script` (pinyin with tone numbers, or English words, with
-// commas at phrase breaks); `offsets`, when given, receives each syllable's offset in it.
+// commas at phrase breaks, and after every ~300-500 bytes without one: espeak-ng loses the
+// word events after a clause it has to cut); `offsets`, when given, receives each
+// syllable's offset in it.
 QString ttsInputText(const Script &script, QVector<int> *offsets = nullptr);
 
 // The voice `options` name for `language`.

@@ -1,4 +1,6 @@
 #include "speech/features.h"
+#include "speech/script.h"
+#include "speech/tts.h"
 
 #include <QRandomGenerator>
 #include <QTest>
@@ -38,6 +40,49 @@ class TestFeatures : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    void quietStretchIsMeasuredAgainstItsOwnLevel()
+    {
+        // The same sentences twice, the second time 20 dB quieter (a recording joined from
+        // two sources, or a speaker turning away): the second's speech must be speech and
+        // its pauses pauses, as in the first.
+        const TtsResult spoken = synthesize(parseScript(
+            QStringLiteral("今天天气很好，我们去公园散步吧。银行的工作人员说，明天下午三点以后可以来取钱。"))
+                                                .script);
+        QVERIFY2(spoken.ok(), qPrintable(spoken.error));
+        const Audio once = resampled(spoken.audio, kSpeechSampleRate);
+        Audio both;
+        both.samples.fill(0.0f, kSpeechSampleRate / 2);
+        both.samples += once.samples;
+        both.samples += QVector<float>(kSpeechSampleRate, 0.0f);
+        const qsizetype second = both.samples.size();
+        for (const float x : once.samples)
+            both.samples.append(0.1f * x);
+        both.samples += QVector<float>(kSpeechSampleRate / 2, 0.0f);
+        QRandomGenerator rng(3);
+        for (float &x : both.samples)
+            x += float(1e-4 * (2 * rng.generateDouble() - 1));
+        const SpeechFeatures f = computeSpeechFeatures(both);
+        const int first = f.frameAt(0.5), offset = f.frameAt(double(second) / kSpeechSampleRate) - first;
+        const int frames = f.frameAt(once.duration()) - 2;
+        int agree = 0, speechLoud = 0, speechQuiet = 0;
+        double loudDiff = 0;
+        for (int t = first; t < first + frames; ++t) {
+            const bool a = f.silence[size_t(t)] < 0.5f, b = f.silence[size_t(t + offset)] < 0.5f;
+            agree += a == b;
+            speechLoud += a;
+            speechQuiet += b;
+            loudDiff += std::abs(f.loudnessNorm[size_t(t)] - f.loudnessNorm[size_t(t + offset)]);
+        }
+        QVERIFY2(agree >= 0.95 * frames,
+            qPrintable(QStringLiteral("%1 of %2 frames agree; speech %3 loud, %4 quiet")
+                           .arg(agree)
+                           .arg(frames)
+                           .arg(speechLoud)
+                           .arg(speechQuiet)));
+        QVERIFY2(
+            loudDiff / frames < 0.1, qPrintable(QStringLiteral("mean loudness difference %1").arg(loudDiff / frames)));
+    }
+
     // Fed in pieces of any size, the stream computes exactly what the whole recording gives.
     void streamEqualsWhole()
     {

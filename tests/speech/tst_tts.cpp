@@ -62,6 +62,31 @@ private Q_SLOTS:
         QCOMPARE(ttsInputText(script(QStringLiteral("Hello there, world"))), QStringLiteral("Hello there, world."));
     }
 
+    void longRunsWithoutPunctuationAreCutIntoClauses()
+    {
+        // 160 syllables without a mark: espeak-ng would cut the clause itself at 800 bytes and
+        // then report no word events for a dozen syllables, which got next to no time.
+        QString text;
+        for (int k = 0; k < 10; ++k)
+            text += QStringLiteral("银行的工作人员说明天下午三点");
+        const Script s = script(text);
+        QCOMPARE(s.syllables.size(), 140);
+        const QString input = ttsInputText(s);
+        int longest = 0, run = 0;
+        for (const QChar c : input) {
+            run = c == QLatin1Char(',') ? 0 : run + 1;
+            longest = std::max(longest, run);
+        }
+        QVERIFY2(longest <= 520, qPrintable(input));
+        QVERIFY(input.count(QLatin1Char(',')) >= 1);
+        const TtsResult r = synthesize(s);
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        QCOMPARE(r.units.size(), s.syllables.size());
+        for (int k = 0; k < r.units.size(); ++k)
+            QVERIFY2(r.units[k].end - r.units[k].start > 0.06,
+                qPrintable(QStringLiteral("syllable %1: %2 s").arg(k).arg(r.units[k].end - r.units[k].start)));
+    }
+
     void mandarinSyllableTimes()
     {
         const TtsResult r = synthesize(script(QStringLiteral("你好，世界")));
