@@ -233,7 +233,7 @@ Style Style::preset(const QString &name, bool *ok)
     return s;
 }
 
-void Style::sampleColours(const QImage &original, const FaceModel &face)
+void Style::sampleColours(const QImage &original, const FaceModel &face, AppearanceFindings *findings)
 {
     if (original.isNull())
         return;
@@ -337,6 +337,8 @@ void Style::sampleColours(const QImage &original, const FaceModel &face)
 
     // What the person wears or grows, found on the balanced photo against its own skin.
     const AppearanceFindings found = findAppearance(photo, face, skin);
+    if (findings)
+        *findings = found;
     appearance = found.appearance;
     if (found.glassesFrame.isValid()) {
         const QColor frame = monochrome
