@@ -115,6 +115,9 @@ QJsonObject sheet()
         o.insert(QStringLiteral("skin"), style.components.value(QStringLiteral("face")).fill.name());
         QJsonObject scores;
         scores.insert(QStringLiteral("glasses"), f.glassesScore);
+        scores.insert(QStringLiteral("mTex"), f.moustacheTexture);
+        scores.insert(QStringLiteral("bTex"), f.beardTexture);
+        scores.insert(QStringLiteral("skinReach"), f.skinReach);
         scores.insert(QStringLiteral("moustache"), f.moustacheScore);
         scores.insert(QStringLiteral("beard"), f.beardScore);
         scores.insert(QStringLiteral("bald"), f.baldScore);

@@ -22,6 +22,8 @@ constexpr double kDarkest = 0.2;
 constexpr double kGreyest = 0.2;
 constexpr int kColourless = 4; // a skin whose channels differ by less has no colour (a greyscale photo)
 constexpr double kEdgeFloor = 2.0; // luma units: the texture floor of perfectly smooth skin
+// Skin reaching farther above the head's outline than this share means the outline is not the head's.
+constexpr double kMaxSkinReach = 1.3;
 
 double lumaOf(QRgb p)
 {
@@ -79,6 +81,21 @@ public:
                 rows.push_back(sum / n);
         }
         return rows;
+    }
+
+    // The mean luma gradient's size (|d/dx| + |d/dy|) over the box: how textured it is.
+    double texture(QRectF r) const
+    {
+        r = r.normalized();
+        const int x0 = std::max(1, int(std::floor(r.left()))), x1 = std::min(m_image.width() - 2, int(r.right()));
+        const int y0 = std::max(1, int(std::floor(r.top()))), y1 = std::min(m_image.height() - 2, int(r.bottom()));
+        double sum = 0;
+        int n = 0;
+        for (int y = y0; y <= y1; ++y) {
+            for (int x = x0; x <= x1; ++x, ++n)
+                sum += (std::abs(luma(x + 1, y) - luma(x - 1, y)) + std::abs(luma(x, y + 1) - luma(x, y - 1))) / 2.0;
+        }
+        return n > 0 ? sum / n : 0.0;
     }
 
     bool covers(QRectF r) const { return QRectF(m_image.rect()).contains(r.normalized()); }
@@ -210,15 +227,15 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
     const double lipTop = std::min({p("8.9").y(), p("8.1").y(), p("8.10").y()});
     const double gap = lipTop - noseBottom;
     std::vector<QRgb> lipHair, chinHair;
-    if (gap > 2) {
-        const double xl = p("8.4").x() + 0.2 * f.mw0, xr = p("8.3").x() - 0.2 * f.mw0;
-        lipHair = px.box(QRectF(QPointF(xl, noseBottom + 0.35 * gap), QPointF(xr, lipTop - 0.1 * gap)));
-    }
+    const double xl = p("8.4").x() + 0.2 * f.mw0, xr = p("8.3").x() - 0.2 * f.mw0;
+    const QRectF lipBox(QPointF(xl, noseBottom + 0.35 * gap), QPointF(xr, lipTop - 0.1 * gap));
+    if (gap > 2)
+        lipHair = px.box(lipBox);
     // Beard: the chin below the lip's shadow, and both jaw sides inside the contour.
     const double jawH = p("2.1").y() - p("8.2").y();
+    const QRectF chinBox = around(QPointF(p("2.1").x(), p("8.2").y() + 0.6 * jawH), 0.2 * f.mw0, 0.2 * jawH);
     if (jawH > 2) {
-        const QPointF chin(p("2.1").x(), p("8.2").y() + 0.6 * jawH);
-        const auto c = px.box(around(chin, 0.2 * f.mw0, 0.2 * jawH));
+        const auto c = px.box(chinBox);
         chinHair.insert(chinHair.end(), c.begin(), c.end());
         const QPointF mid = (p("5.2") + p("5.1")) / 2.0;
         for (const char *side : {"2.12", "2.11"}) {
@@ -227,10 +244,33 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
             chinHair.insert(chinHair.end(), j.begin(), j.end());
         }
     }
+    // Texture, against the cheeks' under the eyes.
+    {
+        double cheeks = 0;
+        for (bool left : {true, false}) {
+            const QPointF outer = p(left ? "3.12" : "3.7"), inner = p(left ? "3.8" : "3.11");
+            const QPointF ball = p(left ? "3.6" : "3.5");
+            cheeks += px.texture(QRectF(QPointF(std::min(outer.x(), inner.x()), ball.y() + 0.5 * es0),
+                          QPointF(std::max(outer.x(), inner.x()), ball.y() + 0.62 * es0)))
+                / 2.0;
+        }
+        cheeks += kEdgeFloor;
+        if (gap > 2)
+            out->moustacheTexture = px.texture(lipBox) / cheeks;
+        if (jawH > 2)
+            out->beardTexture = px.texture(chinBox) / cheeks;
+    }
     out->moustacheScore = darkShare(lipHair, skinLuma);
     out->beardScore = darkShare(chinHair, skinLuma);
-    out->appearance.moustache = out->moustacheScore >= AppearanceFindings::kMoustacheThreshold;
-    out->appearance.beard = out->beardScore >= AppearanceFindings::kBeardThreshold;
+    // Hair, dark or not, is textured where skin is smooth: stubble and a sparse or grey beard are
+    // a part darker than the skin with much more texture than the cheeks.
+    auto stubble = [](double dark, double texture) {
+        return dark >= AppearanceFindings::kStubbleDarkShare && texture >= AppearanceFindings::kStubbleTexture;
+    };
+    out->appearance.moustache = out->moustacheScore >= AppearanceFindings::kMoustacheThreshold
+        || stubble(out->moustacheScore, out->moustacheTexture);
+    out->appearance.beard
+        = out->beardScore >= AppearanceFindings::kBeardThreshold || stubble(out->beardScore, out->beardTexture);
     std::vector<QRgb> hair;
     if (out->appearance.moustache)
         hair.insert(hair.end(), lipHair.begin(), lipHair.end());
@@ -268,11 +308,19 @@ void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor 
         return;
     const auto scalp = std::count_if(crown.begin(), crown.end(), [&](QRgb c) { return skinLike(c, skin); });
     out->baldScore = double(scalp) / double(crown.size());
+    // How far up toward the head's top the forehead's skin reaches (11.1, where the skin up the
+    // midline ends, over the hair outline's top h.10, from the brows): on a bald or shaved head
+    // all the way, whatever the outline strayed into above it.
+    const double browY = (face.point("4.2").y() + face.point("4.1").y()) / 2.0;
+    const double headTop = browY - face.point("h.10").y();
+    out->skinReach = headTop > 0.5 * es0 ? (browY - face.point("11.1").y()) / headTop : 0.0;
+    const bool skinToTheTop
+        = out->skinReach >= AppearanceFindings::kSkinReachThreshold && out->skinReach <= kMaxSkinReach;
     // Without colour, a scalp and grey or white hair look alike: a greyscale photo is never bald.
     const bool colourless
         = std::max({skin.red(), skin.green(), skin.blue()}) - std::min({skin.red(), skin.green(), skin.blue()})
         < kColourless;
-    out->appearance.bald = !colourless && out->baldScore >= AppearanceFindings::kBaldThreshold;
+    out->appearance.bald = !colourless && (out->baldScore >= AppearanceFindings::kBaldThreshold || skinToTheTop);
     if (out->appearance.bald)
         return;
     // A hat: the crown's colour is none that hair grows in (black, browns, blondes, reds, greys and

@@ -23,6 +23,7 @@ struct DrawnFaceOptions
     bool roundGlasses = false;
     bool moustache = false;
     bool beard = false;
+    bool stubble = false; // the moustache and beard are short stubble: dark speckles on the skin
     bool hat = false;
     bool bald = false;
     double browWidth = 0.07; // in ES0
@@ -88,15 +89,27 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
     p.setBrush(QColor(190, 90, 90));
     p.drawPolygon(QPolygonF {P("8.4"), P("8.9"), P("8.1"), P("8.10"), P("8.3"), P("8.2")});
     const QColor beardColour = o.hair.darker(110);
+    // Stubble: the facial hair's shapes filled with a speckle of dark dots (a third of the skin
+    // covered) instead of a solid colour.
+    QImage speckle(img.size(), QImage::Format_ARGB32_Premultiplied);
+    speckle.fill(Qt::transparent);
+    {
+        QRandomGenerator dots(11);
+        for (int y = 0; y < speckle.height(); ++y)
+            for (int x = 0; x < speckle.width(); ++x)
+                if (dots.bounded(100) < 36)
+                    speckle.setPixel(x, y, beardColour.rgb());
+    }
+    const QBrush hairBrush = o.stubble ? QBrush(speckle) : QBrush(beardColour);
     if (o.moustache) {
-        p.setBrush(beardColour);
+        p.setBrush(hairBrush);
         const double top = std::max(P("9.4").y(), P("9.15").y()) + 0.03 * es0;
         p.drawPolygon(QPolygonF {P("8.4") + QPointF(-0.03 * es0, 0), QPointF(P("9.2").x(), top),
             QPointF(P("9.1").x(), top), P("8.3") + QPointF(0.03 * es0, 0), P("8.10") - QPointF(0, 0.01 * es0),
             P("8.9") - QPointF(0, 0.01 * es0)});
     }
     if (o.beard) {
-        p.setBrush(beardColour);
+        p.setBrush(hairBrush);
         p.drawPolygon(QPolygonF {QLineF(P("5.2"), P("2.14")).pointAt(0.4), P("2.14"), P("2.12"), P("2.1"), P("2.11"),
             P("2.13"), QLineF(P("5.1"), P("2.13")).pointAt(0.4), P("8.3") + QPointF(0.04 * es0, 0.06 * es0),
             P("8.2") + QPointF(0, 0.06 * es0), P("8.4") + QPointF(-0.04 * es0, 0.06 * es0)});

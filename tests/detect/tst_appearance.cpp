@@ -81,6 +81,8 @@ private Q_SLOTS:
             row("beard", o);
             o.moustache = true;
             row("full beard", o);
+            o.stubble = true;
+            row("stubble", o);
             o = base;
             o.hat = true;
             row("hat", o);
@@ -110,6 +112,42 @@ private Q_SLOTS:
             QVERIFY(f.facialHair.isValid() && f.facialHair.value() < options.skin.value());
         if (options.hat) // the hat's colour, not the hair's
             QVERIFY2(std::abs(f.hat.blue() - options.hatColour.blue()) < 30, qPrintable(f.hat.name()));
+    }
+
+    // Stubble is not dark enough over enough of the chin and lip to pass for a beard by darkness
+    // alone: its texture, far rougher than the cheeks', makes it facial hair.
+    void stubble()
+    {
+        DrawnFaceOptions o;
+        o.beard = o.moustache = o.stubble = true;
+        const AppearanceFindings f = find(o);
+        const QByteArray what = describe(f).toUtf8();
+        QVERIFY2(f.beardScore < AppearanceFindings::kBeardThreshold, what.constData());
+        QVERIFY2(f.moustacheScore < AppearanceFindings::kMoustacheThreshold, what.constData());
+        QVERIFY2(f.beardTexture >= AppearanceFindings::kStubbleTexture, what.constData());
+        QVERIFY2(f.appearance.beard && f.appearance.moustache, what.constData());
+        // Smooth skin with the same noise is no stubble.
+        const AppearanceFindings plain = find({});
+        QVERIFY2(plain.beardTexture < AppearanceFindings::kStubbleTexture, qPrintable(describe(plain)));
+    }
+
+    // A bald head whose hair outline, searched on the photo, took in the wall around it: the band
+    // under the outline is no scalp, but the forehead's skin reaches the head's top. With hair,
+    // the skin stops at the hairline.
+    void baldHeadUnderAStrayOutline()
+    {
+        for (const bool bald : {true, false}) {
+            DrawnFaceOptions o;
+            o.bald = bald;
+            const QImage photo = testing::drawnFace(o);
+            FaceModel face = testing::drawnFaceModel();
+            refineFromPhoto(&face, photo);
+            const AppearanceFindings f = findAppearance(photo, face, o.skin);
+            const QByteArray what = (describe(f) + QStringLiteral(", reach %1").arg(f.skinReach)).toUtf8();
+            QVERIFY2(f.baldScore < AppearanceFindings::kBaldThreshold, what.constData());
+            QVERIFY2(f.appearance.bald == bald, what.constData());
+            qInfo("%s: skin reaches %.2f of the way up", bald ? "bald" : "hair", f.skinReach);
+        }
     }
 
     // The whole sampling sets the appearance and the layers' colours.
@@ -211,7 +249,9 @@ private Q_SLOTS:
         QVERIFY(style.appearance.glasses == GlassesShape::None);
     }
 
-    // The shared collage of bald and shaved heads: most are found bald, none gets a hat. The
+    // The shared collage of bald and shaved heads: most are found bald (6 of 8: the Rock's big
+    // portrait has a highlight and a yellow wall over his scalp, and his smaller one an outline
+    // spiking into the background), none gets a hat. The
     // faces are picked by a point inside each (the collage's layout, in its pixels).
     void baldHeads()
     {
@@ -238,9 +278,6 @@ private Q_SLOTS:
         qInfo("bald_guys: %d faces, %d bald, %d hats", tried, bald, hats);
         QCOMPARE(tried, 8);
         QCOMPARE(hats, 0);
-        QVERIFY2(bald >= 2, qPrintable(QStringLiteral("%1 of %2 bald").arg(bald).arg(tried)));
-        QEXPECT_FAIL(
-            "", "a shaved head with stubble or a hair outline drawn into the background reads as hair", Continue);
         QVERIFY2(bald >= 6, qPrintable(QStringLiteral("%1 of %2 bald").arg(bald).arg(tried)));
     }
 
