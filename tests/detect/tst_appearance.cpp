@@ -7,6 +7,7 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include <QPainter>
 #include <QTest>
 
 using namespace toonface;
@@ -166,6 +167,33 @@ private Q_SLOTS:
         QCOMPARE(style.appearance, Appearance());
     }
 
+    // Big light hair whose outer part is wisps over a dark room: its colour is the hair's own, read
+    // inside it, not the wisps' mix with the room.
+    void bigHairKeepsItsColour()
+    {
+        FaceModel face = testing::drawnFaceModel();
+        const QPointF centre = (face.point("11.1") + face.point("2.1")) / 2.0;
+        for (int i = 0; i < 19; ++i)
+            face.setPoint(pt::idx("h.1") + i, centre + (face.point(pt::idx("h.1") + i) - centre) * 1.4);
+        DrawnFaceOptions o;
+        o.hair = QColor(215, 212, 208);
+        QImage photo = testing::drawnFace(o, face);
+        {
+            QPainter p(&photo);
+            p.setRenderHint(QPainter::Antialiasing);
+            QPolygonF outline;
+            for (int i = 0; i < 19; ++i)
+                outline << face.point(pt::idx("h.1") + i);
+            const double es0 = QLineF(face.point("3.6"), face.point("3.5")).length();
+            p.setPen(QPen(QColor(110, 108, 105), 0.7 * es0)); // half hair, half a dark room
+            p.drawPolyline(outline);
+        }
+        Style style = Style::preset(QStringLiteral("normal"));
+        style.sampleColours(photo, face);
+        const QColor hair = style.components.value(QStringLiteral("hair")).fill;
+        QVERIFY2(std::abs(qGray(hair.rgb()) - qGray(o.hair.rgb())) < 25, qPrintable(hair.name()));
+    }
+
     // Brows are drawn as thick as they are: a heavy brow heavier than a fine one.
     void browThickness()
     {
@@ -246,6 +274,9 @@ private Q_SLOTS:
         QVERIFY(style.appearance.moustache);
         QVERIFY(!style.appearance.hat);
         QVERIFY(!style.appearance.bald); // white hair in a greyscale photo is not a scalp
+        // ...and is drawn grey, read inside his hair rather than at its wisps over the dark hall.
+        const QColor hair = style.components.value(QStringLiteral("hair")).fill;
+        QVERIFY2(qGray(hair.rgb()) > 140 && hair.hsvSaturationF() < 0.15, qPrintable(hair.name()));
         QVERIFY(style.appearance.glasses == GlassesShape::None);
     }
 
