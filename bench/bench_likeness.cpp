@@ -118,6 +118,7 @@ QJsonObject sheet()
         scores.insert(QStringLiteral("mTex"), f.moustacheTexture);
         scores.insert(QStringLiteral("bTex"), f.beardTexture);
         scores.insert(QStringLiteral("skinReach"), f.skinReach);
+        scores.insert(QStringLiteral("bridged"), f.bridgedDark);
         scores.insert(QStringLiteral("moustache"), f.moustacheScore);
         scores.insert(QStringLiteral("beard"), f.beardScore);
         scores.insert(QStringLiteral("bald"), f.baldScore);

@@ -22,6 +22,8 @@ constexpr double kDarkest = 0.2;
 constexpr double kGreyest = 0.2;
 constexpr int kColourless = 4; // a skin whose channels differ by less has no colour (a greyscale photo)
 constexpr double kEdgeFloor = 2.0; // luma units: the texture floor of perfectly smooth skin
+constexpr double kBarDark = 0.8; // a frame's bar is darker than this share of the skin's luma
+constexpr double kBarAbove = 0.3; // ES0: how far above the eyes' centres a frame's bar is looked for
 // Skin reaching farther above the head's outline than this share means the outline is not the head's.
 constexpr double kMaxSkinReach = 1.3;
 
@@ -149,8 +151,76 @@ double percentile(std::vector<double> v, double q)
     return *it;
 }
 
-void findGlasses(const Pixels &px, const FaceModel &face, double es0, AppearanceFindings *out)
+// A dark frame's bridge joins the lenses: the pixels clearly darker than the skin connected to
+// the bridge (over the nose, between the eyes' inner corners, at eye level) reach over both
+// eyes. Brows stop short of each other, and the nose's shadow runs down, not across. Returns the
+// share of the way from one eye's centre to the other's that the widest such component spans,
+// and that component's pixels.
+struct DarkBridge
 {
+    double span = 0;
+    std::vector<QRgb> pixels;
+};
+
+DarkBridge bridgedDark(const Pixels &px, const FaceModel &face, double es0, double skinLuma)
+{
+    const QPointF a = face.point("3.6"), b = face.point("3.5");
+    const QPointF in1 = face.point("3.8"), in2 = face.point("3.11");
+    const double eyeY = (a.y() + b.y()) / 2.0;
+    const QRect box = QRectF(QPointF(std::min(a.x(), b.x()) - 0.1 * es0, eyeY - kBarAbove * es0),
+        QPointF(std::max(a.x(), b.x()) + 0.1 * es0, eyeY + 0.1 * es0))
+                          .toAlignedRect();
+    DarkBridge out;
+    if (box.width() < 4 || box.height() < 2)
+        return out;
+    std::vector<std::uint8_t> dark(size_t(box.width() * box.height()), 0), seen(dark.size(), 0);
+    for (int y = 0; y < box.height(); ++y)
+        for (int x = 0; x < box.width(); ++x) {
+            const int X = box.left() + x, Y = box.top() + y;
+            dark[size_t(y * box.width() + x)] = px.inside(X, Y) && px.luma(X, Y) < kBarDark * skinLuma;
+        }
+    const int mx = int(std::lround((in1.x() + in2.x()) / 2.0)) - box.left();
+    for (int y0 = 0; y0 < box.height(); ++y0) {
+        const size_t start = size_t(y0 * box.width() + mx);
+        if (mx < 0 || mx >= box.width() || !dark[start] || seen[start])
+            continue;
+        int minX = mx, maxX = mx;
+        std::vector<QRgb> pixels;
+        std::vector<size_t> stack {start};
+        seen[start] = 1;
+        while (!stack.empty()) {
+            const size_t i = stack.back();
+            stack.pop_back();
+            const int x = int(i % size_t(box.width())), y = int(i / size_t(box.width()));
+            minX = std::min(minX, x);
+            maxX = std::max(maxX, x);
+            pixels.push_back(px.at(box.left() + x, box.top() + y));
+            for (const auto &[dx, dy] : {std::pair {1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+                const int nx = x + dx, ny = y + dy;
+                if (nx < 0 || ny < 0 || nx >= box.width() || ny >= box.height())
+                    continue;
+                const size_t j = size_t(ny * box.width() + nx);
+                if (dark[j] && !seen[j]) {
+                    seen[j] = 1;
+                    stack.push_back(j);
+                }
+            }
+        }
+        const double span = (std::min(double(maxX + box.left()), std::max(a.x(), b.x()))
+                                - std::max(double(minX + box.left()), std::min(a.x(), b.x())))
+            / std::max(1.0, std::abs(b.x() - a.x()));
+        if (span > out.span) {
+            out.span = span;
+            out.pixels = std::move(pixels);
+        }
+    }
+    return out;
+}
+
+void findGlasses(const Pixels &px, const FaceModel &face, double es0, double skinLuma, AppearanceFindings *out)
+{
+    const DarkBridge bar = bridgedDark(px, face, es0, skinLuma);
+    out->bridgedDark = bar.span;
     auto p = [&](const char *id) { return face.point(id); };
     // Skin texture: horizontal edges on the cheeks well below any rim.
     std::vector<double> reference;
@@ -212,10 +282,14 @@ void findGlasses(const Pixels &px, const FaceModel &face, double es0, Appearance
     const double texture = percentile(reference, 0.9) + kEdgeFloor;
     // Both must show: a rim alone may be a lid's crease or a bag, a bridge alone a brow or a fold.
     out->glassesScore = std::sqrt(std::max(0.0, rimScore) * std::max(0.0, bridgeEdge)) / texture;
-    if (out->glassesScore < AppearanceFindings::kGlassesThreshold)
+    // Either frames all round (rims under the eyes and a bridge), or a dark bar from one eye to
+    // the other over the nose (top rims and bridge; the lower rims may be clear or absent).
+    const bool rims = out->glassesScore >= AppearanceFindings::kGlassesThreshold;
+    const bool bridged = out->bridgedDark >= AppearanceFindings::kBridgedThreshold;
+    if (!rims && !bridged)
         return;
     out->appearance.glasses = rimCurve > 0.035 ? GlassesShape::Round : GlassesShape::Rectangular;
-    out->glassesFrame = darkest(rimPixels, 0.3);
+    out->glassesFrame = bridged ? median(bar.pixels) : darkest(rimPixels, 0.3);
 }
 
 void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double skinLuma, AppearanceFindings *out)
@@ -346,7 +420,7 @@ AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, co
         return out;
     const Pixels px(photo);
     const double es0 = face.fapu().es0;
-    findGlasses(px, face, es0, &out);
+    findGlasses(px, face, es0, std::max(1.0, lumaOf(skin.rgb())), &out);
     findFacialHair(px, face, es0, std::max(1.0, lumaOf(skin.rgb())), &out);
     findHead(px, face, es0, skin, &out);
     return out;

@@ -20,6 +20,9 @@ struct AppearanceFindings
 
     // Measures, each compared with its threshold below.
     double glassesScore = 0; // rim and bridge edge strength over the skin's texture
+    // Share of the way from one eye's centre to the other's that a part clearly darker than the
+    // skin, through the bridge over the nose at eye level, spans (a frame's top rims and bridge).
+    double bridgedDark = 0;
     // The texture (luma gradient) between nose and lip, and on the chin, over the cheeks'.
     double moustacheTexture = 0, beardTexture = 0;
     // How far up from the brows toward the hair outline's top the forehead's skin reaches (0..1).
@@ -30,6 +33,7 @@ struct AppearanceFindings
     double hatScore = 0; // the crown's hue outside hair's hues, in degrees, times its saturation
 
     static constexpr double kGlassesThreshold = 2.5;
+    static constexpr double kBridgedThreshold = 0.9;
     static constexpr double kMoustacheThreshold = 0.5;
     static constexpr double kBeardThreshold = 0.5;
     static constexpr double kBaldThreshold = 0.6;
@@ -41,13 +45,12 @@ struct AppearanceFindings
 };
 
 // Looks for glasses (rims under the eyes and a bridge over the nose: horizontal edges where skin
-// is smooth), a moustache and a beard (pixels clearly darker than the cheeks' skin between the
-// nose and the upper lip, and on the chin and jaw; or, for stubble, fewer of them in a part far
-// more textured than the cheeks), a bald head (the crown inside the hair outline coloured like
-// the skin, as lit, or the forehead's skin reaching up to the head's top) and a hat (the crown
-// in a colour no hair has).
-// `photo` should be white-balanced (ColourBalance); `skin` is the skin colour sampled from it.
-// Never invents what it does not see: anything outside the photo counts as absent.
+// is smooth; or a dark bar joining the eyes over the nose), a moustache and a beard (pixels clearly darker than the
+// cheeks' skin between the nose and the upper lip, and on the chin and jaw; or, for stubble, fewer of them in a part
+// far more textured than the cheeks), a bald head (the crown inside the hair outline coloured like the skin, as lit, or
+// the forehead's skin reaching up to the head's top) and a hat (the crown in a colour no hair has). `photo` should be
+// white-balanced (ColourBalance); `skin` is the skin colour sampled from it. Never invents what it does not see:
+// anything outside the photo counts as absent.
 AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, const QColor &skin);
 
 } // namespace toonface

@@ -21,6 +21,7 @@ struct DrawnFaceOptions
     QColor hatColour = QColor(40, 60, 140);
     bool glasses = false;
     bool roundGlasses = false;
+    bool upperRimsOnly = false; // browline frames: top rims and bridge, the lenses' lower half bare
     bool moustache = false;
     bool beard = false;
     bool stubble = false; // the moustache and beard are short stubble: dark speckles on the skin
@@ -121,10 +122,16 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
         for (bool left : {true, false}) {
             const QPointF c = (P(left ? "3.12" : "3.11") + P(left ? "3.8" : "3.7")) / 2.0 + QPointF(0, 0.03 * es0);
             const QRectF r(c.x() - 0.36 * es0, c.y() - 0.25 * es0, 0.72 * es0, (o.roundGlasses ? 0.6 : 0.5) * es0);
+            p.save();
+            if (o.upperRimsOnly) {
+                p.setClipRect(r.adjusted(-0.05 * es0, -0.05 * es0, 0.05 * es0, -0.6 * r.height()));
+                p.setPen(QPen(QColor(25, 25, 30), std::max(3.0, 0.06 * es0)));
+            }
             if (o.roundGlasses)
                 p.drawEllipse(r);
             else
                 p.drawRoundedRect(r, 0.08 * es0, 0.08 * es0);
+            p.restore();
             inner[left ? 0 : 1] = QPointF(left ? r.right() : r.left(), r.top() + 0.3 * r.height());
         }
         p.drawLine(inner[0], inner[1]);
