@@ -118,6 +118,10 @@ QJsonObject sheet()
         scores.insert(QStringLiteral("mTex"), f.moustacheTexture);
         scores.insert(QStringLiteral("bTex"), f.beardTexture);
         scores.insert(QStringLiteral("skinReach"), f.skinReach);
+        scores.insert(QStringLiteral("temples"), f.templeHair.isValid() ? f.templeHair.name() : QString());
+        scores.insert(QStringLiteral("c2h"), f.crownToHair);
+        scores.insert(QStringLiteral("c2s"), f.crownToSkin);
+        scores.insert(QStringLiteral("spread"), f.brimSpread);
         scores.insert(QStringLiteral("bridged"), f.bridgedDark);
         scores.insert(QStringLiteral("moustache"), f.moustacheScore);
         scores.insert(QStringLiteral("beard"), f.beardScore);

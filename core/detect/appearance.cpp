@@ -5,7 +5,10 @@
 #include <QLineF>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <iterator>
+#include <optional>
 #include <vector>
 
 namespace toonface {
@@ -22,6 +25,7 @@ constexpr double kDarkest = 0.2;
 constexpr double kGreyest = 0.2;
 constexpr int kColourless = 4; // a skin whose channels differ by less has no colour (a greyscale photo)
 constexpr double kEdgeFloor = 2.0; // luma units: the texture floor of perfectly smooth skin
+constexpr double kTempleHairShare = 0.2; // share of the temples' samples that must be other than skin
 constexpr double kBarDark = 0.8; // a frame's bar is darker than this share of the skin's luma
 constexpr double kBarAbove = 0.3; // ES0: how far above the eyes' centres a frame's bar is looked for
 // Skin reaching farther above the head's outline than this share means the outline is not the head's.
@@ -354,6 +358,101 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
         out->facialHair = darkest(hair, 0.5);
 }
 
+// CIE Lab (D65) of an sRGB colour, L* in 0..100.
+std::array<double, 3> labOf(const QColor &c)
+{
+    auto linear = [](double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); };
+    const double r = linear(c.redF()), g = linear(c.greenF()), b = linear(c.blueF());
+    const double x = (0.412453 * r + 0.357580 * g + 0.180423 * b) / 0.950456;
+    const double y = 0.212671 * r + 0.715160 * g + 0.072169 * b;
+    const double z = (0.019334 * r + 0.119193 * g + 0.950227 * b) / 1.088754;
+    auto f = [](double t) { return t > 0.008856 ? std::cbrt(t) : 7.787 * t + 16.0 / 116.0; };
+    return {116.0 * f(y) - 16.0, 500.0 * (f(x) - f(y)), 200.0 * (f(y) - f(z))};
+}
+
+double labDistance(const QColor &a, const QColor &b)
+{
+    const auto p = labOf(a), q = labOf(b);
+    return std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+}
+
+// The hair that shows beside the temples, under a hat as without one: between the face's contour
+// (from the temple 11.2 / 11.3 down to the cheek 5.2 / 5.1) and the hair outline at the same
+// heights, what is not skin; its lighter half's median (a dark hat's side may share the place
+// with the hair below it). Invalid when too little shows (a bald head, ears).
+QColor templeHair(const Pixels &px, const FaceModel &face, double es0, const QColor &skin)
+{
+    std::vector<QRgb> hair;
+    int all = 0;
+    for (bool left : {true, false}) {
+        const QPointF temple = face.point(left ? "11.2" : "11.3"), cheek = face.point(left ? "5.2" : "5.1");
+        for (double t : {0.2, 0.4, 0.6, 0.8}) {
+            const QPointF q = temple + (cheek - temple) * t;
+            // The outline's side (h.1..h.9 image-left, h.19..h.11 right) at q's height.
+            std::optional<double> outlineX;
+            for (int k = 0; k + 1 < 9 && !outlineX; ++k) {
+                const QPointF a = face.point(pt::idx(left ? "h.1" : "h.19") + (left ? k : -k));
+                const QPointF b = face.point(pt::idx(left ? "h.1" : "h.19") + (left ? k + 1 : -k - 1));
+                if ((a.y() - q.y()) * (b.y() - q.y()) <= 0 && std::abs(a.y() - b.y()) > 1e-9)
+                    outlineX = a.x() + (b.x() - a.x()) * (q.y() - a.y()) / (b.y() - a.y());
+            }
+            if (!outlineX || (left ? q.x() - *outlineX : *outlineX - q.x()) < 0.06 * es0)
+                continue;
+            for (double across : {0.3, 0.5, 0.7}) {
+                const auto b
+                    = px.box(around(QPointF(q.x() + (*outlineX - q.x()) * across, q.y()), 0.03 * es0, 0.03 * es0));
+                all += int(b.size());
+                std::copy_if(b.begin(), b.end(), std::back_inserter(hair), [&](QRgb c) { return !skinLike(c, skin); });
+            }
+        }
+    }
+    if (all == 0 || double(hair.size()) < kTempleHairShare * all)
+        return {};
+    std::sort(hair.begin(), hair.end(), [](QRgb a, QRgb b) { return lumaOf(a) < lumaOf(b); });
+    return median(std::vector<QRgb>(hair.begin() + qsizetype(hair.size() / 2), hair.end()));
+}
+
+// The forehead's top edge: up each column between the temples from the brows, the first row
+// that is not skin (for a run). A hat's brim leaves a straight edge across the forehead; a
+// hairline curves (higher in the middle or at the temples) and strands break it. The edge's
+// spread about its best straight line (80th percentile of the distances), in ES0; negative when
+// the edge is not found across most of the forehead.
+double foreheadEdgeSpread(const Pixels &px, const FaceModel &face, double es0, const QColor &skin)
+{
+    const QPointF l = face.point("11.2"), r = face.point("11.3");
+    const double browY = std::min(face.point("4.2").y(), face.point("4.1").y());
+    const int need = std::max(2, int(0.03 * es0));
+    std::vector<QPointF> ends;
+    int columns = 0;
+    for (double x = l.x() + 0.1 * (r.x() - l.x()); x <= r.x() - 0.1 * (r.x() - l.x()); x += std::max(1.0, 0.02 * es0)) {
+        ++columns;
+        int run = 0;
+        for (double y = browY - 0.1 * es0; y > browY - 2.0 * es0 && px.inside(int(x), int(y)); y -= 1.0) {
+            if (skinLike(px.at(int(x), int(y)), skin)) {
+                run = 0;
+            } else if (++run >= need) {
+                ends.emplace_back(x, y + need - 1);
+                break;
+            }
+        }
+    }
+    if (columns == 0 || double(ends.size()) < 0.8 * columns)
+        return -1;
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const QPointF &e : ends) {
+        sx += e.x();
+        sy += e.y();
+        sxx += e.x() * e.x();
+        sxy += e.x() * e.y();
+    }
+    const double n = double(ends.size());
+    const double b = (n * sxy - sx * sy) / std::max(1e-9, n * sxx - sx * sx), a = (sy - b * sx) / n;
+    std::vector<double> off;
+    for (const QPointF &e : ends)
+        off.push_back(std::abs(e.y() - (a + b * e.x())));
+    return percentile(off, 0.8) / es0;
+}
+
 void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor &skin, AppearanceFindings *out)
 {
     // Between the face's top contour and the hair outline over the crown (h.8..h.12 above the
@@ -397,10 +496,23 @@ void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor 
     out->appearance.bald = !colourless && (out->baldScore >= AppearanceFindings::kBaldThreshold || skinToTheTop);
     if (out->appearance.bald)
         return;
-    // A hat: the crown's colour is none that hair grows in (black, browns, blondes, reds, greys and
-    // white); its score is how far its hue lies outside that range, weighted by its saturation.
-    // A black, brown or white hat passes for hair.
+    // A hat by its colour: none that hair grows in (black, browns, blondes, reds, greys and white);
+    // its score is how far its hue lies outside that range, weighted by its saturation.
+    // A hat of any colour: the crown unlike both the skin and the hair that shows beside the
+    // temples, over a straight edge across the forehead (a brim; a hairline curves or breaks).
     const QColor top = median(crown);
+    const QColor temples = templeHair(px, face, es0, skin);
+    out->templeHair = temples;
+    out->crownToHair = temples.isValid() ? labDistance(top, temples) : 0.0;
+    out->crownToSkin = labDistance(top, skin);
+    out->brimSpread = foreheadEdgeSpread(px, face, es0, skin);
+    if (std::min(out->crownToHair, out->crownToSkin) >= AppearanceFindings::kHatContrast && out->brimSpread >= 0
+        && out->brimSpread <= AppearanceFindings::kBrimSpread) {
+        out->appearance.hat = true;
+        out->hat = top;
+        return;
+    }
+    // By its colour alone: none that hair grows in.
     const double hue = top.hsvHueF() * 360.0, sat = top.hsvSaturationF();
     const bool hairHue = hue < 0 || hue <= kHairHues[1] || hue >= kHairHues[0];
     const double outside = hairHue ? 0.0 : std::min(hue - kHairHues[1], kHairHues[0] - hue);

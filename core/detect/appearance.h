@@ -27,6 +27,10 @@ struct AppearanceFindings
     double moustacheTexture = 0, beardTexture = 0;
     // How far up from the brows toward the hair outline's top the forehead's skin reaches (0..1).
     double skinReach = 0;
+    QColor templeHair; // the hair seen beside the temples (the lighter half; invalid when none)
+    // The crown's CIE Lab distances from that hair and from the skin, and the spread of the
+    // forehead's top edge about a straight line, in ES0 (negative when not found across it).
+    double crownToHair = 0, crownToSkin = 0, brimSpread = 0;
     double moustacheScore = 0; // share of dark, hair-like pixels between the nose and the upper lip
     double beardScore = 0; // the same on the chin and along the jaw
     double baldScore = 0; // share of skin-coloured pixels in the hair's band over the crown
@@ -42,6 +46,8 @@ struct AppearanceFindings
     static constexpr double kStubbleDarkShare = 0.25;
     static constexpr double kStubbleTexture = 1.25;
     static constexpr double kHatThreshold = 10.0;
+    static constexpr double kHatContrast = 35.0; // Lab units, from the temples' hair and the skin
+    static constexpr double kBrimSpread = 0.1;
 };
 
 // Looks for glasses (rims under the eyes and a bridge over the nose: horizontal edges where skin

@@ -52,16 +52,6 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
     hairShape << P("2.13") << P("2.14");
     p.setBrush(o.bald ? o.skin : o.hair);
     p.drawPolygon(hairShape);
-    if (o.hat) {
-        // The crown above the hairline is the hat; the hair shows at the sides below it.
-        QPainterPath clip;
-        clip.addRect(QRectF(0, 0, img.width(), P("11.1").y()));
-        p.save();
-        p.setClipPath(clip);
-        p.setBrush(o.hatColour);
-        p.drawPolygon(hairShape);
-        p.restore();
-    }
     QPolygonF faceShape;
     for (const char *id : {"11.2", "11.1", "11.3", "5.1", "2.13", "2.11", "2.1", "2.12", "2.14", "5.2"})
         faceShape << P(id);
@@ -69,6 +59,19 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
     facePath.addPolygon(faceShape);
     p.setBrush(o.skin);
     p.drawPath(facePath);
+    if (o.hat) {
+        // The hat covers the head down to a straight brim across the forehead at the temples'
+        // height; the hair shows at the sides below it.
+        QPainterPath clip;
+        clip.addRect(QRectF(0, 0, img.width(), std::max(P("11.2").y(), P("11.3").y())));
+        QPainterPath head;
+        head.addPolygon(hairShape);
+        p.save();
+        p.setClipPath(clip);
+        p.setBrush(o.hatColour);
+        p.drawPath(head.united(facePath));
+        p.restore();
+    }
     const double es0 = QLineF(P("3.6"), P("3.5")).length();
     // Brows, eyes, nose shadow, lips.
     p.setBrush(Qt::NoBrush);
