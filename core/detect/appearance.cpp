@@ -1,5 +1,6 @@
 #include "detect/appearance.h"
 
+#include "detect/labcolour.h"
 #include "face/fapu.h"
 
 #include <QLineF>
@@ -358,16 +359,14 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
         out->facialHair = darkest(hair, 0.5);
 }
 
-// CIE Lab (D65) of an sRGB colour, L* in 0..100.
+// CIE Lab (D65) of an sRGB colour, L* in 0..100 (through labcolour.h's 8-bit tables).
 std::array<double, 3> labOf(const QColor &c)
 {
-    auto linear = [](double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); };
-    const double r = linear(c.redF()), g = linear(c.greenF()), b = linear(c.blueF());
-    const double x = (0.412453 * r + 0.357580 * g + 0.180423 * b) / 0.950456;
-    const double y = 0.212671 * r + 0.715160 * g + 0.072169 * b;
-    const double z = (0.019334 * r + 0.119193 * g + 0.950227 * b) / 1.088754;
-    auto f = [](double t) { return t > 0.008856 ? std::cbrt(t) : 7.787 * t + 16.0 / 116.0; };
-    return {116.0 * f(y) - 16.0, 500.0 * (f(x) - f(y)), 200.0 * (f(y) - f(z))};
+    const cv::Mat rgb(1, 1, CV_8UC3, cv::Scalar(c.red(), c.green(), c.blue()));
+    cv::Mat lab;
+    rgbToLab8(rgb, lab);
+    const cv::Vec3b v = lab.at<cv::Vec3b>(0, 0);
+    return {v[0] * 100.0 / 255.0, v[1] - 128.0, v[2] - 128.0};
 }
 
 double labDistance(const QColor &a, const QColor &b)
