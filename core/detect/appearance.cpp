@@ -1,11 +1,15 @@
 #include "detect/appearance.h"
 
+#include "detect/labcolour.h"
 #include "face/fapu.h"
 
 #include <QLineF>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <iterator>
+#include <optional>
 #include <vector>
 
 namespace toonface {
@@ -22,6 +26,11 @@ constexpr double kDarkest = 0.2;
 constexpr double kGreyest = 0.2;
 constexpr int kColourless = 4; // a skin whose channels differ by less has no colour (a greyscale photo)
 constexpr double kEdgeFloor = 2.0; // luma units: the texture floor of perfectly smooth skin
+constexpr double kTempleHairShare = 0.2; // share of the temples' samples that must be other than skin
+constexpr double kBarDark = 0.8; // a frame's bar is darker than this share of the skin's luma
+constexpr double kBarAbove = 0.3; // ES0: how far above the eyes' centres a frame's bar is looked for
+// Skin reaching farther above the head's outline than this share means the outline is not the head's.
+constexpr double kMaxSkinReach = 1.3;
 
 double lumaOf(QRgb p)
 {
@@ -81,6 +90,21 @@ public:
         return rows;
     }
 
+    // The mean luma gradient's size (|d/dx| + |d/dy|) over the box: how textured it is.
+    double texture(QRectF r) const
+    {
+        r = r.normalized();
+        const int x0 = std::max(1, int(std::floor(r.left()))), x1 = std::min(m_image.width() - 2, int(r.right()));
+        const int y0 = std::max(1, int(std::floor(r.top()))), y1 = std::min(m_image.height() - 2, int(r.bottom()));
+        double sum = 0;
+        int n = 0;
+        for (int y = y0; y <= y1; ++y) {
+            for (int x = x0; x <= x1; ++x, ++n)
+                sum += (std::abs(luma(x + 1, y) - luma(x - 1, y)) + std::abs(luma(x, y + 1) - luma(x, y - 1))) / 2.0;
+        }
+        return n > 0 ? sum / n : 0.0;
+    }
+
     bool covers(QRectF r) const { return QRectF(m_image.rect()).contains(r.normalized()); }
 
 private:
@@ -132,8 +156,76 @@ double percentile(std::vector<double> v, double q)
     return *it;
 }
 
-void findGlasses(const Pixels &px, const FaceModel &face, double es0, AppearanceFindings *out)
+// A dark frame's bridge joins the lenses: the pixels clearly darker than the skin connected to
+// the bridge (over the nose, between the eyes' inner corners, at eye level) reach over both
+// eyes. Brows stop short of each other, and the nose's shadow runs down, not across. Returns the
+// share of the way from one eye's centre to the other's that the widest such component spans,
+// and that component's pixels.
+struct DarkBridge
 {
+    double span = 0;
+    std::vector<QRgb> pixels;
+};
+
+DarkBridge bridgedDark(const Pixels &px, const FaceModel &face, double es0, double skinLuma)
+{
+    const QPointF a = face.point("3.6"), b = face.point("3.5");
+    const QPointF in1 = face.point("3.8"), in2 = face.point("3.11");
+    const double eyeY = (a.y() + b.y()) / 2.0;
+    const QRect box = QRectF(QPointF(std::min(a.x(), b.x()) - 0.1 * es0, eyeY - kBarAbove * es0),
+        QPointF(std::max(a.x(), b.x()) + 0.1 * es0, eyeY + 0.1 * es0))
+                          .toAlignedRect();
+    DarkBridge out;
+    if (box.width() < 4 || box.height() < 2)
+        return out;
+    std::vector<std::uint8_t> dark(size_t(box.width() * box.height()), 0), seen(dark.size(), 0);
+    for (int y = 0; y < box.height(); ++y)
+        for (int x = 0; x < box.width(); ++x) {
+            const int X = box.left() + x, Y = box.top() + y;
+            dark[size_t(y * box.width() + x)] = px.inside(X, Y) && px.luma(X, Y) < kBarDark * skinLuma;
+        }
+    const int mx = int(std::lround((in1.x() + in2.x()) / 2.0)) - box.left();
+    for (int y0 = 0; y0 < box.height(); ++y0) {
+        const size_t start = size_t(y0 * box.width() + mx);
+        if (mx < 0 || mx >= box.width() || !dark[start] || seen[start])
+            continue;
+        int minX = mx, maxX = mx;
+        std::vector<QRgb> pixels;
+        std::vector<size_t> stack {start};
+        seen[start] = 1;
+        while (!stack.empty()) {
+            const size_t i = stack.back();
+            stack.pop_back();
+            const int x = int(i % size_t(box.width())), y = int(i / size_t(box.width()));
+            minX = std::min(minX, x);
+            maxX = std::max(maxX, x);
+            pixels.push_back(px.at(box.left() + x, box.top() + y));
+            for (const auto &[dx, dy] : {std::pair {1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+                const int nx = x + dx, ny = y + dy;
+                if (nx < 0 || ny < 0 || nx >= box.width() || ny >= box.height())
+                    continue;
+                const size_t j = size_t(ny * box.width() + nx);
+                if (dark[j] && !seen[j]) {
+                    seen[j] = 1;
+                    stack.push_back(j);
+                }
+            }
+        }
+        const double span = (std::min(double(maxX + box.left()), std::max(a.x(), b.x()))
+                                - std::max(double(minX + box.left()), std::min(a.x(), b.x())))
+            / std::max(1.0, std::abs(b.x() - a.x()));
+        if (span > out.span) {
+            out.span = span;
+            out.pixels = std::move(pixels);
+        }
+    }
+    return out;
+}
+
+void findGlasses(const Pixels &px, const FaceModel &face, double es0, double skinLuma, AppearanceFindings *out)
+{
+    const DarkBridge bar = bridgedDark(px, face, es0, skinLuma);
+    out->bridgedDark = bar.span;
     auto p = [&](const char *id) { return face.point(id); };
     // Skin texture: horizontal edges on the cheeks well below any rim.
     std::vector<double> reference;
@@ -195,10 +287,14 @@ void findGlasses(const Pixels &px, const FaceModel &face, double es0, Appearance
     const double texture = percentile(reference, 0.9) + kEdgeFloor;
     // Both must show: a rim alone may be a lid's crease or a bag, a bridge alone a brow or a fold.
     out->glassesScore = std::sqrt(std::max(0.0, rimScore) * std::max(0.0, bridgeEdge)) / texture;
-    if (out->glassesScore < AppearanceFindings::kGlassesThreshold)
+    // Either frames all round (rims under the eyes and a bridge), or a dark bar from one eye to
+    // the other over the nose (top rims and bridge; the lower rims may be clear or absent).
+    const bool rims = out->glassesScore >= AppearanceFindings::kGlassesThreshold;
+    const bool bridged = out->bridgedDark >= AppearanceFindings::kBridgedThreshold;
+    if (!rims && !bridged)
         return;
     out->appearance.glasses = rimCurve > 0.035 ? GlassesShape::Round : GlassesShape::Rectangular;
-    out->glassesFrame = darkest(rimPixels, 0.3);
+    out->glassesFrame = bridged ? median(bar.pixels) : darkest(rimPixels, 0.3);
 }
 
 void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double skinLuma, AppearanceFindings *out)
@@ -210,15 +306,15 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
     const double lipTop = std::min({p("8.9").y(), p("8.1").y(), p("8.10").y()});
     const double gap = lipTop - noseBottom;
     std::vector<QRgb> lipHair, chinHair;
-    if (gap > 2) {
-        const double xl = p("8.4").x() + 0.2 * f.mw0, xr = p("8.3").x() - 0.2 * f.mw0;
-        lipHair = px.box(QRectF(QPointF(xl, noseBottom + 0.35 * gap), QPointF(xr, lipTop - 0.1 * gap)));
-    }
+    const double xl = p("8.4").x() + 0.2 * f.mw0, xr = p("8.3").x() - 0.2 * f.mw0;
+    const QRectF lipBox(QPointF(xl, noseBottom + 0.35 * gap), QPointF(xr, lipTop - 0.1 * gap));
+    if (gap > 2)
+        lipHair = px.box(lipBox);
     // Beard: the chin below the lip's shadow, and both jaw sides inside the contour.
     const double jawH = p("2.1").y() - p("8.2").y();
+    const QRectF chinBox = around(QPointF(p("2.1").x(), p("8.2").y() + 0.6 * jawH), 0.2 * f.mw0, 0.2 * jawH);
     if (jawH > 2) {
-        const QPointF chin(p("2.1").x(), p("8.2").y() + 0.6 * jawH);
-        const auto c = px.box(around(chin, 0.2 * f.mw0, 0.2 * jawH));
+        const auto c = px.box(chinBox);
         chinHair.insert(chinHair.end(), c.begin(), c.end());
         const QPointF mid = (p("5.2") + p("5.1")) / 2.0;
         for (const char *side : {"2.12", "2.11"}) {
@@ -227,10 +323,33 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
             chinHair.insert(chinHair.end(), j.begin(), j.end());
         }
     }
+    // Texture, against the cheeks' under the eyes.
+    {
+        double cheeks = 0;
+        for (bool left : {true, false}) {
+            const QPointF outer = p(left ? "3.12" : "3.7"), inner = p(left ? "3.8" : "3.11");
+            const QPointF ball = p(left ? "3.6" : "3.5");
+            cheeks += px.texture(QRectF(QPointF(std::min(outer.x(), inner.x()), ball.y() + 0.5 * es0),
+                          QPointF(std::max(outer.x(), inner.x()), ball.y() + 0.62 * es0)))
+                / 2.0;
+        }
+        cheeks += kEdgeFloor;
+        if (gap > 2)
+            out->moustacheTexture = px.texture(lipBox) / cheeks;
+        if (jawH > 2)
+            out->beardTexture = px.texture(chinBox) / cheeks;
+    }
     out->moustacheScore = darkShare(lipHair, skinLuma);
     out->beardScore = darkShare(chinHair, skinLuma);
-    out->appearance.moustache = out->moustacheScore >= AppearanceFindings::kMoustacheThreshold;
-    out->appearance.beard = out->beardScore >= AppearanceFindings::kBeardThreshold;
+    // Hair, dark or not, is textured where skin is smooth: stubble and a sparse or grey beard are
+    // a part darker than the skin with much more texture than the cheeks.
+    auto stubble = [](double dark, double texture) {
+        return dark >= AppearanceFindings::kStubbleDarkShare && texture >= AppearanceFindings::kStubbleTexture;
+    };
+    out->appearance.moustache = out->moustacheScore >= AppearanceFindings::kMoustacheThreshold
+        || stubble(out->moustacheScore, out->moustacheTexture);
+    out->appearance.beard
+        = out->beardScore >= AppearanceFindings::kBeardThreshold || stubble(out->beardScore, out->beardTexture);
     std::vector<QRgb> hair;
     if (out->appearance.moustache)
         hair.insert(hair.end(), lipHair.begin(), lipHair.end());
@@ -238,6 +357,99 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
         hair.insert(hair.end(), chinHair.begin(), chinHair.end());
     if (!hair.empty())
         out->facialHair = darkest(hair, 0.5);
+}
+
+// CIE Lab (D65) of an sRGB colour, L* in 0..100 (through labcolour.h's 8-bit tables).
+std::array<double, 3> labOf(const QColor &c)
+{
+    const cv::Mat rgb(1, 1, CV_8UC3, cv::Scalar(c.red(), c.green(), c.blue()));
+    cv::Mat lab;
+    rgbToLab8(rgb, lab);
+    const cv::Vec3b v = lab.at<cv::Vec3b>(0, 0);
+    return {v[0] * 100.0 / 255.0, v[1] - 128.0, v[2] - 128.0};
+}
+
+double labDistance(const QColor &a, const QColor &b)
+{
+    const auto p = labOf(a), q = labOf(b);
+    return std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+}
+
+// The hair that shows beside the temples, under a hat as without one: between the face's contour
+// (from the temple 11.2 / 11.3 down to the cheek 5.2 / 5.1) and the hair outline at the same
+// heights, what is not skin; its lighter half's median (a dark hat's side may share the place
+// with the hair below it). Invalid when too little shows (a bald head, ears).
+QColor templeHair(const Pixels &px, const FaceModel &face, double es0, const QColor &skin)
+{
+    std::vector<QRgb> hair;
+    int all = 0;
+    for (bool left : {true, false}) {
+        const QPointF temple = face.point(left ? "11.2" : "11.3"), cheek = face.point(left ? "5.2" : "5.1");
+        for (double t : {0.2, 0.4, 0.6, 0.8}) {
+            const QPointF q = temple + (cheek - temple) * t;
+            // The outline's side (h.1..h.9 image-left, h.19..h.11 right) at q's height.
+            std::optional<double> outlineX;
+            for (int k = 0; k + 1 < 9 && !outlineX; ++k) {
+                const QPointF a = face.point(pt::idx(left ? "h.1" : "h.19") + (left ? k : -k));
+                const QPointF b = face.point(pt::idx(left ? "h.1" : "h.19") + (left ? k + 1 : -k - 1));
+                if ((a.y() - q.y()) * (b.y() - q.y()) <= 0 && std::abs(a.y() - b.y()) > 1e-9)
+                    outlineX = a.x() + (b.x() - a.x()) * (q.y() - a.y()) / (b.y() - a.y());
+            }
+            if (!outlineX || (left ? q.x() - *outlineX : *outlineX - q.x()) < 0.06 * es0)
+                continue;
+            for (double across : {0.3, 0.5, 0.7}) {
+                const auto b
+                    = px.box(around(QPointF(q.x() + (*outlineX - q.x()) * across, q.y()), 0.03 * es0, 0.03 * es0));
+                all += int(b.size());
+                std::copy_if(b.begin(), b.end(), std::back_inserter(hair), [&](QRgb c) { return !skinLike(c, skin); });
+            }
+        }
+    }
+    if (all == 0 || double(hair.size()) < kTempleHairShare * all)
+        return {};
+    std::sort(hair.begin(), hair.end(), [](QRgb a, QRgb b) { return lumaOf(a) < lumaOf(b); });
+    return median(std::vector<QRgb>(hair.begin() + qsizetype(hair.size() / 2), hair.end()));
+}
+
+// The forehead's top edge: up each column between the temples from the brows, the first row
+// that is not skin (for a run). A hat's brim leaves a straight edge across the forehead; a
+// hairline curves (higher in the middle or at the temples) and strands break it. The edge's
+// spread about its best straight line (80th percentile of the distances), in ES0; negative when
+// the edge is not found across most of the forehead.
+double foreheadEdgeSpread(const Pixels &px, const FaceModel &face, double es0, const QColor &skin)
+{
+    const QPointF l = face.point("11.2"), r = face.point("11.3");
+    const double browY = std::min(face.point("4.2").y(), face.point("4.1").y());
+    const int need = std::max(2, int(0.03 * es0));
+    std::vector<QPointF> ends;
+    int columns = 0;
+    for (double x = l.x() + 0.1 * (r.x() - l.x()); x <= r.x() - 0.1 * (r.x() - l.x()); x += std::max(1.0, 0.02 * es0)) {
+        ++columns;
+        int run = 0;
+        for (double y = browY - 0.1 * es0; y > browY - 2.0 * es0 && px.inside(int(x), int(y)); y -= 1.0) {
+            if (skinLike(px.at(int(x), int(y)), skin)) {
+                run = 0;
+            } else if (++run >= need) {
+                ends.emplace_back(x, y + need - 1);
+                break;
+            }
+        }
+    }
+    if (columns == 0 || double(ends.size()) < 0.8 * columns)
+        return -1;
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const QPointF &e : ends) {
+        sx += e.x();
+        sy += e.y();
+        sxx += e.x() * e.x();
+        sxy += e.x() * e.y();
+    }
+    const double n = double(ends.size());
+    const double b = (n * sxy - sx * sy) / std::max(1e-9, n * sxx - sx * sx), a = (sy - b * sx) / n;
+    std::vector<double> off;
+    for (const QPointF &e : ends)
+        off.push_back(std::abs(e.y() - (a + b * e.x())));
+    return percentile(off, 0.8) / es0;
 }
 
 void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor &skin, AppearanceFindings *out)
@@ -268,17 +480,38 @@ void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor 
         return;
     const auto scalp = std::count_if(crown.begin(), crown.end(), [&](QRgb c) { return skinLike(c, skin); });
     out->baldScore = double(scalp) / double(crown.size());
+    // How far up toward the head's top the forehead's skin reaches (11.1, where the skin up the
+    // midline ends, over the hair outline's top h.10, from the brows): on a bald or shaved head
+    // all the way, whatever the outline strayed into above it.
+    const double browY = (face.point("4.2").y() + face.point("4.1").y()) / 2.0;
+    const double headTop = browY - face.point("h.10").y();
+    out->skinReach = headTop > 0.5 * es0 ? (browY - face.point("11.1").y()) / headTop : 0.0;
+    const bool skinToTheTop
+        = out->skinReach >= AppearanceFindings::kSkinReachThreshold && out->skinReach <= kMaxSkinReach;
     // Without colour, a scalp and grey or white hair look alike: a greyscale photo is never bald.
     const bool colourless
         = std::max({skin.red(), skin.green(), skin.blue()}) - std::min({skin.red(), skin.green(), skin.blue()})
         < kColourless;
-    out->appearance.bald = !colourless && out->baldScore >= AppearanceFindings::kBaldThreshold;
+    out->appearance.bald = !colourless && (out->baldScore >= AppearanceFindings::kBaldThreshold || skinToTheTop);
     if (out->appearance.bald)
         return;
-    // A hat: the crown's colour is none that hair grows in (black, browns, blondes, reds, greys and
-    // white); its score is how far its hue lies outside that range, weighted by its saturation.
-    // A black, brown or white hat passes for hair.
+    // A hat by its colour: none that hair grows in (black, browns, blondes, reds, greys and white);
+    // its score is how far its hue lies outside that range, weighted by its saturation.
+    // A hat of any colour: the crown unlike both the skin and the hair that shows beside the
+    // temples, over a straight edge across the forehead (a brim; a hairline curves or breaks).
     const QColor top = median(crown);
+    const QColor temples = templeHair(px, face, es0, skin);
+    out->templeHair = temples;
+    out->crownToHair = temples.isValid() ? labDistance(top, temples) : 0.0;
+    out->crownToSkin = labDistance(top, skin);
+    out->brimSpread = foreheadEdgeSpread(px, face, es0, skin);
+    if (std::min(out->crownToHair, out->crownToSkin) >= AppearanceFindings::kHatContrast && out->brimSpread >= 0
+        && out->brimSpread <= AppearanceFindings::kBrimSpread) {
+        out->appearance.hat = true;
+        out->hat = top;
+        return;
+    }
+    // By its colour alone: none that hair grows in.
     const double hue = top.hsvHueF() * 360.0, sat = top.hsvSaturationF();
     const bool hairHue = hue < 0 || hue <= kHairHues[1] || hue >= kHairHues[0];
     const double outside = hairHue ? 0.0 : std::min(hue - kHairHues[1], kHairHues[0] - hue);
@@ -298,7 +531,7 @@ AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, co
         return out;
     const Pixels px(photo);
     const double es0 = face.fapu().es0;
-    findGlasses(px, face, es0, &out);
+    findGlasses(px, face, es0, std::max(1.0, lumaOf(skin.rgb())), &out);
     findFacialHair(px, face, es0, std::max(1.0, lumaOf(skin.rgb())), &out);
     findHead(px, face, es0, skin, &out);
     return out;

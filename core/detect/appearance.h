@@ -20,24 +20,43 @@ struct AppearanceFindings
 
     // Measures, each compared with its threshold below.
     double glassesScore = 0; // rim and bridge edge strength over the skin's texture
+    // Share of the way from one eye's centre to the other's that a part clearly darker than the
+    // skin, through the bridge over the nose at eye level, spans (a frame's top rims and bridge).
+    double bridgedDark = 0;
+    // The texture (luma gradient) between nose and lip, and on the chin, over the cheeks'.
+    double moustacheTexture = 0, beardTexture = 0;
+    // How far up from the brows toward the hair outline's top the forehead's skin reaches (0..1).
+    double skinReach = 0;
+    QColor templeHair; // the hair seen beside the temples (the lighter half; invalid when none)
+    // The crown's CIE Lab distances from that hair and from the skin, and the spread of the
+    // forehead's top edge about a straight line, in ES0 (negative when not found across it).
+    double crownToHair = 0, crownToSkin = 0, brimSpread = 0;
     double moustacheScore = 0; // share of dark, hair-like pixels between the nose and the upper lip
     double beardScore = 0; // the same on the chin and along the jaw
     double baldScore = 0; // share of skin-coloured pixels in the hair's band over the crown
     double hatScore = 0; // the crown's hue outside hair's hues, in degrees, times its saturation
 
     static constexpr double kGlassesThreshold = 2.5;
+    static constexpr double kBridgedThreshold = 0.9;
     static constexpr double kMoustacheThreshold = 0.5;
     static constexpr double kBeardThreshold = 0.5;
     static constexpr double kBaldThreshold = 0.6;
+    static constexpr double kSkinReachThreshold = 0.7;
+    // Stubble: at least this share dark and this much more textured than the cheeks.
+    static constexpr double kStubbleDarkShare = 0.25;
+    static constexpr double kStubbleTexture = 1.25;
     static constexpr double kHatThreshold = 10.0;
+    static constexpr double kHatContrast = 35.0; // Lab units, from the temples' hair and the skin
+    static constexpr double kBrimSpread = 0.1;
 };
 
 // Looks for glasses (rims under the eyes and a bridge over the nose: horizontal edges where skin
-// is smooth), a moustache and a beard (pixels clearly darker than the cheeks' skin between the
-// nose and the upper lip, and on the chin and jaw), a bald head (the crown inside the hair
-// outline coloured like the skin, as lit) and a hat (the crown in a colour no hair has).
-// `photo` should be white-balanced (ColourBalance); `skin` is the skin colour sampled from it.
-// Never invents what it does not see: anything outside the photo counts as absent.
+// is smooth; or a dark bar joining the eyes over the nose), a moustache and a beard (pixels clearly darker than the
+// cheeks' skin between the nose and the upper lip, and on the chin and jaw; or, for stubble, fewer of them in a part
+// far more textured than the cheeks), a bald head (the crown inside the hair outline coloured like the skin, as lit, or
+// the forehead's skin reaching up to the head's top) and a hat (the crown in a colour no hair has). `photo` should be
+// white-balanced (ColourBalance); `skin` is the skin colour sampled from it. Never invents what it does not see:
+// anything outside the photo counts as absent.
 AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, const QColor &skin);
 
 } // namespace toonface

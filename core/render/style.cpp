@@ -66,6 +66,7 @@ QMap<QString, ComponentStyle> baseComponents()
 // seen (too light or under a fringe), thicker is hair or a shadow.
 constexpr double kMinBrowWidth = 2.5;
 constexpr double kMaxBrowWidth = 8.0;
+constexpr double kHairDepthReach = 1.2; // ES0: how deep into the hair its colour is sampled, at most
 
 double hueDistance(double a, double b)
 {
@@ -233,7 +234,7 @@ Style Style::preset(const QString &name, bool *ok)
     return s;
 }
 
-void Style::sampleColours(const QImage &original, const FaceModel &face)
+void Style::sampleColours(const QImage &original, const FaceModel &face, AppearanceFindings *findings)
 {
     if (original.isNull())
         return;
@@ -287,7 +288,10 @@ void Style::sampleColours(const QImage &original, const FaceModel &face)
         if (thickness < 3.0)
             continue;
         const double radius = std::max(1.0, 0.12 * thickness);
-        for (double depth : {0.25 * thickness, 0.5 * thickness}) {
+        // A quarter and half way into the hair, however thick: the edge of big hair is wisps over
+        // the background, darker than the hair (or lighter than dark hair on a light wall).
+        const double depthOf = std::min(gap, kHairDepthReach * es0);
+        for (double depth : {0.25 * depthOf, 0.5 * depthOf}) {
             const auto a = sampler.disc(h + in * depth, radius);
             inside.insert(inside.end(), a.begin(), a.end());
         }
@@ -337,6 +341,8 @@ void Style::sampleColours(const QImage &original, const FaceModel &face)
 
     // What the person wears or grows, found on the balanced photo against its own skin.
     const AppearanceFindings found = findAppearance(photo, face, skin);
+    if (findings)
+        *findings = found;
     appearance = found.appearance;
     if (found.glassesFrame.isValid()) {
         const QColor frame = monochrome

@@ -10,6 +10,7 @@ class QImage;
 namespace toonface {
 
 class FaceModel;
+struct AppearanceFindings;
 
 // How one drawn component looks. Component names are the style keys of SvgFace's parts:
 // "hair", "ears", "face", "jaw", "cheeks", "nose", "eyebrows", "eyes", "eyeballs", "pupils",
@@ -69,8 +70,9 @@ struct Style
 
     // Sets skin, hair, lip and iris colours from the photo under the face's points, corrected
     // for the photo's white balance (a greyscale photo gets natural colours from its tones), and
-    // the appearance (glasses, facial hair, hat, bald head) with the colours of what it finds.
-    void sampleColours(const QImage &photo, const FaceModel &face);
+    // the appearance (glasses, facial hair, hat, bald head) with the colours of what it finds;
+    // `findings`, when given, receives the appearance detection's measures.
+    void sampleColours(const QImage &photo, const FaceModel &face, AppearanceFindings *findings = nullptr);
 
     bool operator==(const Style &) const = default;
 };

@@ -21,8 +21,10 @@ struct DrawnFaceOptions
     QColor hatColour = QColor(40, 60, 140);
     bool glasses = false;
     bool roundGlasses = false;
+    bool upperRimsOnly = false; // browline frames: top rims and bridge, the lenses' lower half bare
     bool moustache = false;
     bool beard = false;
+    bool stubble = false; // the moustache and beard are short stubble: dark speckles on the skin
     bool hat = false;
     bool bald = false;
     double browWidth = 0.07; // in ES0
@@ -50,16 +52,6 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
     hairShape << P("2.13") << P("2.14");
     p.setBrush(o.bald ? o.skin : o.hair);
     p.drawPolygon(hairShape);
-    if (o.hat) {
-        // The crown above the hairline is the hat; the hair shows at the sides below it.
-        QPainterPath clip;
-        clip.addRect(QRectF(0, 0, img.width(), P("11.1").y()));
-        p.save();
-        p.setClipPath(clip);
-        p.setBrush(o.hatColour);
-        p.drawPolygon(hairShape);
-        p.restore();
-    }
     QPolygonF faceShape;
     for (const char *id : {"11.2", "11.1", "11.3", "5.1", "2.13", "2.11", "2.1", "2.12", "2.14", "5.2"})
         faceShape << P(id);
@@ -67,6 +59,19 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
     facePath.addPolygon(faceShape);
     p.setBrush(o.skin);
     p.drawPath(facePath);
+    if (o.hat) {
+        // The hat covers the head down to a straight brim across the forehead at the temples'
+        // height; the hair shows at the sides below it.
+        QPainterPath clip;
+        clip.addRect(QRectF(0, 0, img.width(), std::max(P("11.2").y(), P("11.3").y())));
+        QPainterPath head;
+        head.addPolygon(hairShape);
+        p.save();
+        p.setClipPath(clip);
+        p.setBrush(o.hatColour);
+        p.drawPath(head.united(facePath));
+        p.restore();
+    }
     const double es0 = QLineF(P("3.6"), P("3.5")).length();
     // Brows, eyes, nose shadow, lips.
     p.setBrush(Qt::NoBrush);
@@ -88,15 +93,27 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
     p.setBrush(QColor(190, 90, 90));
     p.drawPolygon(QPolygonF {P("8.4"), P("8.9"), P("8.1"), P("8.10"), P("8.3"), P("8.2")});
     const QColor beardColour = o.hair.darker(110);
+    // Stubble: the facial hair's shapes filled with a speckle of dark dots (a third of the skin
+    // covered) instead of a solid colour.
+    QImage speckle(img.size(), QImage::Format_ARGB32_Premultiplied);
+    speckle.fill(Qt::transparent);
+    {
+        QRandomGenerator dots(11);
+        for (int y = 0; y < speckle.height(); ++y)
+            for (int x = 0; x < speckle.width(); ++x)
+                if (dots.bounded(100) < 36)
+                    speckle.setPixel(x, y, beardColour.rgb());
+    }
+    const QBrush hairBrush = o.stubble ? QBrush(speckle) : QBrush(beardColour);
     if (o.moustache) {
-        p.setBrush(beardColour);
+        p.setBrush(hairBrush);
         const double top = std::max(P("9.4").y(), P("9.15").y()) + 0.03 * es0;
         p.drawPolygon(QPolygonF {P("8.4") + QPointF(-0.03 * es0, 0), QPointF(P("9.2").x(), top),
             QPointF(P("9.1").x(), top), P("8.3") + QPointF(0.03 * es0, 0), P("8.10") - QPointF(0, 0.01 * es0),
             P("8.9") - QPointF(0, 0.01 * es0)});
     }
     if (o.beard) {
-        p.setBrush(beardColour);
+        p.setBrush(hairBrush);
         p.drawPolygon(QPolygonF {QLineF(P("5.2"), P("2.14")).pointAt(0.4), P("2.14"), P("2.12"), P("2.1"), P("2.11"),
             P("2.13"), QLineF(P("5.1"), P("2.13")).pointAt(0.4), P("8.3") + QPointF(0.04 * es0, 0.06 * es0),
             P("8.2") + QPointF(0, 0.06 * es0), P("8.4") + QPointF(-0.04 * es0, 0.06 * es0)});
@@ -108,10 +125,16 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
         for (bool left : {true, false}) {
             const QPointF c = (P(left ? "3.12" : "3.11") + P(left ? "3.8" : "3.7")) / 2.0 + QPointF(0, 0.03 * es0);
             const QRectF r(c.x() - 0.36 * es0, c.y() - 0.25 * es0, 0.72 * es0, (o.roundGlasses ? 0.6 : 0.5) * es0);
+            p.save();
+            if (o.upperRimsOnly) {
+                p.setClipRect(r.adjusted(-0.05 * es0, -0.05 * es0, 0.05 * es0, -0.6 * r.height()));
+                p.setPen(QPen(QColor(25, 25, 30), std::max(3.0, 0.06 * es0)));
+            }
             if (o.roundGlasses)
                 p.drawEllipse(r);
             else
                 p.drawRoundedRect(r, 0.08 * es0, 0.08 * es0);
+            p.restore();
             inner[left ? 0 : 1] = QPointF(left ? r.right() : r.left(), r.top() + 0.3 * r.height());
         }
         p.drawLine(inner[0], inner[1]);

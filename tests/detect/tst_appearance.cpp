@@ -7,6 +7,8 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include <QPainter>
+#include <QRandomGenerator>
 #include <QTest>
 
 using namespace toonface;
@@ -73,6 +75,9 @@ private Q_SLOTS:
             row("glasses", o);
             o.roundGlasses = true;
             row("round glasses", o);
+            o.roundGlasses = false;
+            o.upperRimsOnly = true;
+            row("browline glasses", o);
             o = base;
             o.moustache = true;
             row("moustache", o);
@@ -81,6 +86,8 @@ private Q_SLOTS:
             row("beard", o);
             o.moustache = true;
             row("full beard", o);
+            o.stubble = true;
+            row("stubble", o);
             o = base;
             o.hat = true;
             row("hat", o);
@@ -103,13 +110,50 @@ private Q_SLOTS:
         QVERIFY2(f.appearance.hat == options.hat, what.constData());
         QVERIFY2(f.appearance.bald == options.bald, what.constData());
         if (options.glasses) {
-            QCOMPARE(f.appearance.glasses, options.roundGlasses ? GlassesShape::Round : GlassesShape::Rectangular);
+            if (!options.upperRimsOnly) // a shape of which only the top shows is not told
+                QCOMPARE(f.appearance.glasses, options.roundGlasses ? GlassesShape::Round : GlassesShape::Rectangular);
             QVERIFY(f.glassesFrame.isValid() && f.glassesFrame.value() < 80);
         }
         if (options.moustache || options.beard)
             QVERIFY(f.facialHair.isValid() && f.facialHair.value() < options.skin.value());
         if (options.hat) // the hat's colour, not the hair's
             QVERIFY2(std::abs(f.hat.blue() - options.hatColour.blue()) < 30, qPrintable(f.hat.name()));
+    }
+
+    // Stubble is not dark enough over enough of the chin and lip to pass for a beard by darkness
+    // alone: its texture, far rougher than the cheeks', makes it facial hair.
+    void stubble()
+    {
+        DrawnFaceOptions o;
+        o.beard = o.moustache = o.stubble = true;
+        const AppearanceFindings f = find(o);
+        const QByteArray what = describe(f).toUtf8();
+        QVERIFY2(f.beardScore < AppearanceFindings::kBeardThreshold, what.constData());
+        QVERIFY2(f.moustacheScore < AppearanceFindings::kMoustacheThreshold, what.constData());
+        QVERIFY2(f.beardTexture >= AppearanceFindings::kStubbleTexture, what.constData());
+        QVERIFY2(f.appearance.beard && f.appearance.moustache, what.constData());
+        // Smooth skin with the same noise is no stubble.
+        const AppearanceFindings plain = find({});
+        QVERIFY2(plain.beardTexture < AppearanceFindings::kStubbleTexture, qPrintable(describe(plain)));
+    }
+
+    // A bald head whose hair outline, searched on the photo, took in the wall around it: the band
+    // under the outline is no scalp, but the forehead's skin reaches the head's top. With hair,
+    // the skin stops at the hairline.
+    void baldHeadUnderAStrayOutline()
+    {
+        for (const bool bald : {true, false}) {
+            DrawnFaceOptions o;
+            o.bald = bald;
+            const QImage photo = testing::drawnFace(o);
+            FaceModel face = testing::drawnFaceModel();
+            refineFromPhoto(&face, photo);
+            const AppearanceFindings f = findAppearance(photo, face, o.skin);
+            const QByteArray what = (describe(f) + QStringLiteral(", reach %1").arg(f.skinReach)).toUtf8();
+            QVERIFY2(f.baldScore < AppearanceFindings::kBaldThreshold, what.constData());
+            QVERIFY2(f.appearance.bald == bald, what.constData());
+            qInfo("%s: skin reaches %.2f of the way up", bald ? "bald" : "hair", f.skinReach);
+        }
     }
 
     // The whole sampling sets the appearance and the layers' colours.
@@ -126,6 +170,93 @@ private Q_SLOTS:
         // Sampling again without them clears them.
         style.sampleColours(testing::drawnFace({}), testing::drawnFaceModel());
         QCOMPARE(style.appearance, Appearance());
+    }
+
+    // Big light hair whose outer part is wisps over a dark room: its colour is the hair's own, read
+    // inside it, not the wisps' mix with the room.
+    void bigHairKeepsItsColour()
+    {
+        FaceModel face = testing::drawnFaceModel();
+        const QPointF centre = (face.point("11.1") + face.point("2.1")) / 2.0;
+        for (int i = 0; i < 19; ++i)
+            face.setPoint(pt::idx("h.1") + i, centre + (face.point(pt::idx("h.1") + i) - centre) * 1.4);
+        DrawnFaceOptions o;
+        o.hair = QColor(215, 212, 208);
+        QImage photo = testing::drawnFace(o, face);
+        {
+            QPainter p(&photo);
+            p.setRenderHint(QPainter::Antialiasing);
+            QPolygonF outline;
+            for (int i = 0; i < 19; ++i)
+                outline << face.point(pt::idx("h.1") + i);
+            const double es0 = QLineF(face.point("3.6"), face.point("3.5")).length();
+            p.setPen(QPen(QColor(110, 108, 105), 0.7 * es0)); // half hair, half a dark room
+            p.drawPolyline(outline);
+        }
+        Style style = Style::preset(QStringLiteral("normal"));
+        style.sampleColours(photo, face);
+        const QColor hair = style.components.value(QStringLiteral("hair")).fill;
+        QVERIFY2(std::abs(qGray(hair.rgb()) - qGray(o.hair.rgb())) < 25, qPrintable(hair.name()));
+    }
+
+    // A dark navy cap over grey hair: no colour says "hat" (navy this dark passes for black hair),
+    // but the crown is unlike the grey hair beside the temples, above a straight brim.
+    void darkCapOverGreyHair()
+    {
+        DrawnFaceOptions o;
+        o.hat = true;
+        o.hatColour = QColor(22, 26, 48);
+        o.hair = QColor(175, 172, 168);
+        const AppearanceFindings f = find(o);
+        const QByteArray what = (describe(f)
+            + QStringLiteral(", to hair %1, to skin %2, brim %3")
+                  .arg(f.crownToHair)
+                  .arg(f.crownToSkin)
+                  .arg(f.brimSpread))
+                                    .toUtf8();
+        QVERIFY2(f.hatScore < AppearanceFindings::kHatThreshold, what.constData());
+        QVERIFY2(f.appearance.hat, what.constData());
+        QVERIFY2(f.hat.value() < 70, qPrintable(f.hat.name()));
+        // Hair of the cap's colour is hair: the crown is like the hair at the temples.
+        DrawnFaceOptions dark;
+        dark.hair = o.hatColour;
+        const AppearanceFindings g = find(dark);
+        QVERIFY2(!g.appearance.hat, qPrintable(describe(g)));
+    }
+
+    // Browline frames (dark top rims and bridge, nothing under the eyes) on grainy, wrinkled skin:
+    // the rim-and-bridge edges are lost in the skin's own texture, but the dark bar joining the
+    // eyes over the nose is not.
+    void browlineGlassesOnGrainySkin()
+    {
+        // Fine lines across every fifth row (a little darker, as wrinkles are) and grain.
+        auto grainy = [](QImage img) {
+            QRandomGenerator rng(3);
+            for (int y = 0; y < img.height(); ++y) {
+                auto *line = reinterpret_cast<QRgb *>(img.scanLine(y));
+                for (int x = 0; x < img.width(); ++x) {
+                    const int n = int(rng.bounded(21)) - 10 - (y % 5 == 0 ? 25 : 0);
+                    const QRgb c = line[x];
+                    line[x] = qRgb(std::clamp(qRed(c) + n, 0, 255), std::clamp(qGreen(c) + n, 0, 255),
+                        std::clamp(qBlue(c) + n, 0, 255));
+                }
+            }
+            return img;
+        };
+        DrawnFaceOptions o;
+        o.glasses = o.upperRimsOnly = true;
+        const AppearanceFindings f = findAppearance(grainy(testing::drawnFace(o)), testing::drawnFaceModel(), o.skin);
+        const QByteArray what = (describe(f) + QStringLiteral(", bar %1").arg(f.bridgedDark)).toUtf8();
+        QVERIFY2(f.glassesScore < AppearanceFindings::kGlassesThreshold, what.constData());
+        QVERIFY2(f.appearance.glasses != GlassesShape::None, what.constData());
+        QVERIFY2(f.glassesFrame.value() < 90, qPrintable(f.glassesFrame.name()));
+        // Heavy brows over the eyes, on the same skin, do not join over the nose.
+        DrawnFaceOptions heavy;
+        heavy.browWidth = 0.12;
+        const AppearanceFindings g
+            = findAppearance(grainy(testing::drawnFace(heavy)), testing::drawnFaceModel(), heavy.skin);
+        QVERIFY2(g.bridgedDark < AppearanceFindings::kBridgedThreshold, qPrintable(describe(g)));
+        QCOMPARE(g.appearance.glasses, GlassesShape::None);
     }
 
     // Brows are drawn as thick as they are: a heavy brow heavier than a fine one.
@@ -181,9 +312,7 @@ private Q_SLOTS:
             qPrintable(glassesShapeName(style.appearance.glasses)), style.appearance.hat, style.appearance.bald,
             style.appearance.moustache, style.appearance.beard);
         // Known misses, kept visible: they pass the day the detector learns them.
-        QEXPECT_FAIL("", "her lower rims are clear plastic: glasses need rims below the eyes and a bridge", Continue);
         QVERIFY(style.appearance.glasses != GlassesShape::None);
-        QEXPECT_FAIL("", "her cap is navy, nearly black: a dark hat passes for dark hair", Continue);
         QVERIFY(style.appearance.hat);
         QVERIFY(!style.appearance.bald);
         QVERIFY(!style.appearance.moustache && !style.appearance.beard);
@@ -203,15 +332,23 @@ private Q_SLOTS:
         style.sampleColours(photo, face);
         qInfo("einstein: moustache %d, beard %d, glasses %s, hat %d", style.appearance.moustache,
             style.appearance.beard, qPrintable(glassesShapeName(style.appearance.glasses)), style.appearance.hat);
-        QEXPECT_FAIL(
-            "", "his moustache is grey, hardly darker than his skin: facial hair is found by darkness", Continue);
+        QEXPECT_FAIL("",
+            "his face is small (33 px between the eyes) and tilted: the landmarks put his upper lip at the "
+            "moustache's lower edge, and the 6 px left between nose and lip are neither darker than his skin "
+            "(0.90 of its luma, the lip included) nor rougher than his cheeks (0.89 of their texture)",
+            Continue);
         QVERIFY(style.appearance.moustache);
         QVERIFY(!style.appearance.hat);
         QVERIFY(!style.appearance.bald); // white hair in a greyscale photo is not a scalp
+        // ...and is drawn grey, read inside his hair rather than at its wisps over the dark hall.
+        const QColor hair = style.components.value(QStringLiteral("hair")).fill;
+        QVERIFY2(qGray(hair.rgb()) > 140 && hair.hsvSaturationF() < 0.15, qPrintable(hair.name()));
         QVERIFY(style.appearance.glasses == GlassesShape::None);
     }
 
-    // The shared collage of bald and shaved heads: most are found bald, none gets a hat. The
+    // The shared collage of bald and shaved heads: most are found bald (6 of 8: the Rock's big
+    // portrait has a highlight and a yellow wall over his scalp, and his smaller one an outline
+    // spiking into the background), none gets a hat. The
     // faces are picked by a point inside each (the collage's layout, in its pixels).
     void baldHeads()
     {
@@ -238,9 +375,6 @@ private Q_SLOTS:
         qInfo("bald_guys: %d faces, %d bald, %d hats", tried, bald, hats);
         QCOMPARE(tried, 8);
         QCOMPARE(hats, 0);
-        QVERIFY2(bald >= 2, qPrintable(QStringLiteral("%1 of %2 bald").arg(bald).arg(tried)));
-        QEXPECT_FAIL(
-            "", "a shaved head with stubble or a hair outline drawn into the background reads as hair", Continue);
         QVERIFY2(bald >= 6, qPrintable(QStringLiteral("%1 of %2 bald").arg(bald).arg(tried)));
     }
 
