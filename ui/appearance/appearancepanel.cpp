@@ -170,8 +170,8 @@ QWidget *AppearancePanel::buildComponents()
         grid->addWidget(row.fill, r, 1);
         grid->addWidget(row.stroke, r, 2);
         grid->addWidget(row.width, r, 3);
-        connect(row.visible, &QCheckBox::clicked, this, [this, key = key](bool on) {
-            change(tr("Show %1").arg(key), [&](Style &s) {
+        connect(row.visible, &QCheckBox::clicked, this, [this, key = key, label = label](bool on) {
+            change(tr("Show %1").arg(label), [&](Style &s) {
                 for (const QString &k : keysOf(key)) {
                     ComponentStyle c = componentOf(s, k);
                     c.visible = on;
