@@ -521,7 +521,7 @@
     <message numerus="yes">
         <source>The %n blink(s) there now are replaced.</source>
         <translation>
-            <numerusform>替换当前在此范围的 %n 次眨眼。</numerusform>
+            <numerusform>此范围原有的 %n 次眨眼将被替换。</numerusform>
         </translation>
     </message>
 </context>
@@ -1859,6 +1859,66 @@ The points are unchanged.</source>
         <comment>drawing style</comment>
         <translation>可爱</translation>
     </message>
+    <message>
+        <source>Angular</source>
+        <comment>eyebrow variant</comment>
+        <translation>棱角</translation>
+    </message>
+    <message>
+        <source>Curved</source>
+        <comment>eyebrow variant</comment>
+        <translation>弧形</translation>
+    </message>
+    <message>
+        <source>Thick</source>
+        <comment>eyebrow variant</comment>
+        <translation>粗眉</translation>
+    </message>
+    <message>
+        <source>Full</source>
+        <comment>nose variant</comment>
+        <translation>完整</translation>
+    </message>
+    <message>
+        <source>Simple</source>
+        <comment>nose variant</comment>
+        <translation>简约</translation>
+    </message>
+    <message>
+        <source>Tip only</source>
+        <comment>nose variant</comment>
+        <translation>只画鼻头</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <comment>glasses</comment>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Round</source>
+        <comment>glasses</comment>
+        <translation>圆框</translation>
+    </message>
+    <message>
+        <source>Rectangular</source>
+        <comment>glasses</comment>
+        <translation>方框</translation>
+    </message>
+    <message>
+        <source>Rimless</source>
+        <comment>glasses</comment>
+        <translation>无框</translation>
+    </message>
+    <message>
+        <source>landmark</source>
+        <comment>detection method</comment>
+        <translation>关键点</translation>
+    </message>
+    <message>
+        <source>classic</source>
+        <comment>detection method</comment>
+        <translation>经典</translation>
+    </message>
 </context>
 <context>
     <name>toonface::PhotoView</name>
@@ -2023,7 +2083,7 @@ The points are unchanged.</source>
     <name>toonface::SayTextDialog</name>
     <message>
         <source>Say</source>
-        <translation>说</translation>
+        <translation>朗读</translation>
     </message>
     <message>
         <source>Say Text</source>

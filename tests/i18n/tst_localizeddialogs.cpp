@@ -13,6 +13,7 @@
 #include "dialogs/saytextdialog.h"
 #include "document/document.h"
 #include "i18n/translations.h"
+#include "io/project.h"
 #include "playback/playhead.h"
 #include "window/mainwindow.h"
 #include "window/studio.h"
@@ -23,6 +24,7 @@
 #include <QDir>
 #include <QLabel>
 #include <QMenuBar>
+#include <QPushButton>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTranslator>
@@ -107,6 +109,21 @@ private Q_SLOTS:
     void initTestCase() { fixture::isolateSettings(); }
     void cleanup() { removeTranslators(); }
 
+    // The check itself sees a label or a button squeezed below its text's width.
+    void clippingIsSeen()
+    {
+        QWidget box;
+        auto *label = new QLabel(QStringLiteral("一段相當長的中文說明文字，不會自動換行"), &box);
+        auto *button = new QPushButton(QStringLiteral("在資料夾中顯示"), &box);
+        label->setGeometry(0, 0, 60, 20);
+        button->setGeometry(0, 30, 40, 20);
+        box.show();
+        QCOMPARE(clipped(&box).size(), 2);
+        label->setGeometry(0, 0, label->sizeHint().width(), 20);
+        button->setGeometry(0, 30, button->sizeHint().width(), 20);
+        QCOMPARE(clipped(&box).size(), 0);
+    }
+
     void dialogsShowTheirText_data()
     {
         QTest::addColumn<QString>("translation");
@@ -165,12 +182,20 @@ private Q_SLOTS:
         QFETCH(QString, translation);
         QVERIFY(installTranslations(QCoreApplication::instance(), translation));
         QTemporaryDir dir;
-        const QString photo = dir.filePath(QStringLiteral("face.png"));
-        QVERIFY(fixture::photo().save(photo));
+        // A project: its face is given, so no detection (nor its questions) runs.
+        Project project;
+        project.photoPath = dir.filePath(QStringLiteral("face.png"));
+        project.face = fixture::face();
+        project.style = Style::preset(QStringLiteral("normal"));
+        project.timeline = test::animationTimeline();
+        QVERIFY(fixture::photo().save(project.photoPath));
+        const QString path = dir.filePath(QStringLiteral("face.toonface"));
+        QString error;
+        QVERIFY2(saveProject(project, path, &error), qPrintable(error));
         MainWindow window;
         window.resize(1280, 800);
         window.show();
-        window.startup(photo);
+        window.startup(path);
         QTRY_VERIFY_WITH_TIMEOUT(!window.isBusy(), 30000);
         QApplication::processEvents();
         const QStringList problems = lookAt(&window, QStringLiteral("mainwindow"));

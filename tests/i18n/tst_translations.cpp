@@ -4,8 +4,11 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QFileInfo>
+#include <QProcess>
 #include <QRegularExpression>
 #include <QSet>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTranslator>
 
@@ -101,6 +104,42 @@ private Q_SLOTS:
             }
         }
         QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+    }
+
+    // The committed catalogues hold exactly the messages of today's sources (lupdate run into a
+    // scratch file): a new tr() string without its translation fails here, not in front of a user.
+    void cataloguesAreCurrent()
+    {
+        const QString lupdate = QStringLiteral(TOONFACE_LUPDATE);
+        if (!QFileInfo::exists(lupdate))
+            QSKIP("lupdate (qt6-l10n-tools) is not installed");
+        QTemporaryDir dir;
+        const QString scratch = dir.filePath(QStringLiteral("toonface_zh_TW.ts"));
+        const QDir source(QStringLiteral(TOONFACE_SOURCE_DIR));
+        QProcess run;
+        run.setWorkingDirectory(source.path());
+        run.start(lupdate,
+            {QStringLiteral("-silent"), QStringLiteral("-no-obsolete"), QStringLiteral("-locations"),
+                QStringLiteral("none"), QStringLiteral("-I"), QStringLiteral("ui"), QStringLiteral("-I"),
+                QStringLiteral("app"), QStringLiteral("-I"), QStringLiteral("core"), QStringLiteral("ui"),
+                QStringLiteral("app"), QStringLiteral("-ts"), scratch});
+        QVERIFY(run.waitForFinished(120000));
+        QCOMPARE(run.exitCode(), 0);
+        const auto keys = [](const fixture::TsFile &ts) {
+            QSet<QString> set;
+            for (const fixture::TsMessage &m : ts.messages)
+                set << m.context + QStringLiteral(" / ") + m.source + QStringLiteral(" / ") + m.comment;
+            return set;
+        };
+        const QSet<QString> current = keys(fixture::readTsFile(scratch));
+        const QSet<QString> committed
+            = keys(fixture::readTsFile(QDir(kDir).filePath(QStringLiteral("toonface_zh_TW.ts"))));
+        QVERIFY(!current.isEmpty());
+        QStringList news = (current - committed).values();
+        QStringList gone = (committed - current).values();
+        QVERIFY2(news.isEmpty() && gone.isEmpty(),
+            qPrintable(QStringLiteral("run the update_translations target and translate: new %1\ngone %2")
+                           .arg(news.join(QLatin1Char('\n')), gone.join(QLatin1Char('\n')))));
     }
 
     // Both Chinese catalogues translate the same messages, into Chinese.

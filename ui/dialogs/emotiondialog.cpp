@@ -5,7 +5,7 @@
 #include "dialogs/secondsbox.h"
 #include "document/document.h"
 #include "face/emotion.h"
-#include "timeline/timelineicons.h"
+#include "views/displaynames.h"
 
 #include <QCheckBox>
 #include <QComboBox>

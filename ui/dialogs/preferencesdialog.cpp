@@ -36,6 +36,8 @@ PreferencesDialog::PreferencesDialog(const QString &running, QWidget *parent)
     m_note = new QLabel(tr("The new language shows when Toonface is started again."));
     m_note->setObjectName(QStringLiteral("restartNote"));
     m_note->setWordWrap(true);
+    // Room for the note on two lines at most, in any language.
+    setMinimumWidth(fontMetrics().averageCharWidth() * 48);
 
     auto *form = new QFormLayout;
     form->addRow(tr("&Language:"), m_language);

@@ -1,6 +1,7 @@
 #include "timeline/emotionpalette.h"
 
 #include "timeline/timelineicons.h"
+#include "views/displaynames.h"
 
 #include <QApplication>
 #include <QDrag>

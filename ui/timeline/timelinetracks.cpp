@@ -5,7 +5,7 @@
 #include "timeline/mouthicons.h"
 #include "timeline/posetrack.h"
 #include "timeline/timelinegeometry.h"
-#include "timeline/timelineicons.h"
+#include "views/displaynames.h"
 
 #include <QPainter>
 #include <QPainterPath>

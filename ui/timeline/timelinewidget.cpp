@@ -5,6 +5,7 @@
 #include "timeline/shapepalette.h"
 #include "timeline/timelineicons.h"
 #include "timeline/timelineview.h"
+#include "views/displaynames.h"
 
 #include <QAction>
 #include <QLabel>

@@ -2,6 +2,7 @@
 
 #include "document/document.h"
 #include "document/undomacro.h"
+#include "views/displaynames.h"
 
 #include <QCoreApplication>
 
@@ -38,17 +39,17 @@ QString detectionSummary(const DetectionResult &result, bool choseFace)
     const int ms = qRound(result.timingMs.value(QStringLiteral("total")));
     QString found;
     if (result.faceCount <= 1)
-        found = ApplyDetection::tr("Face found by the %1 method in %2 ms.").arg(result.method).arg(ms);
+        found = ApplyDetection::tr("Face found by the %1 method in %2 ms.").arg(variantTitle(result.method)).arg(ms);
     else if (choseFace)
         found = ApplyDetection::tr("%n faces found: using the one you chose (%1, %2 ms).", nullptr, result.faceCount)
-                    .arg(result.method)
+                    .arg(variantTitle(result.method))
                     .arg(ms);
     else
         found = ApplyDetection::tr(
             "%n faces found: using the largest, most central one (%1, %2 ms). Click another face's box "
             "to switch.",
             nullptr, result.faceCount)
-                    .arg(result.method)
+                    .arg(variantTitle(result.method))
                     .arg(ms);
     if (!result.note.isEmpty())
         found += QLatin1Char(' ') + ApplyDetection::tr("The landmark method could not serve: %1").arg(result.note);

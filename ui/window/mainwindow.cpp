@@ -4,7 +4,7 @@
 #include "document/autosaver.h"
 #include "export/cartoonfile.h"
 #include "render/svgface.h"
-#include "timeline/timelineicons.h"
+#include "views/displaynames.h"
 #include "views/photoview.h"
 #include "views/pointhandle.h"
 #include "views/previewview.h"
