@@ -82,6 +82,9 @@ bool installTranslations(QCoreApplication *app, const QString &translation)
     }
     QCoreApplication::installTranslator(own);
     installed() = translation;
+    // Dates and numbers as the language writes them (a Preferences choice may differ from the
+    // system's locale).
+    QLocale::setDefault(QLocale(translation));
     return true;
 }
 

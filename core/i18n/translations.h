@@ -26,8 +26,9 @@ QString translationForSetting(const QString &setting, const QLocale &system = sy
 
 // Installs Toonface's and Qt's translators for `translation` ("zh_TW", "zh_CN"; "" English:
 // only the plural forms of Toonface's "%n" messages) on the application, which owns them.
-// Returns false when Toonface's catalogue is missing (Qt's is optional: the dialogs' buttons
-// stay English without it). Call it once.
+// A Chinese translation also becomes the default QLocale (dates, numbers). Returns false when
+// Toonface's catalogue is missing (Qt's is optional: the dialogs' buttons stay English without
+// it). Call it once.
 bool installTranslations(QCoreApplication *app, const QString &translation);
 // The translation installTranslations() installed last ("" before, or for English).
 QString installedTranslation();

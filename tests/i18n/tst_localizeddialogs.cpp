@@ -11,22 +11,29 @@
 #include "dialogs/mouthshapesdialog.h"
 #include "dialogs/preferencesdialog.h"
 #include "dialogs/saytextdialog.h"
+#include "document/autosaver.h"
 #include "document/document.h"
 #include "i18n/translations.h"
 #include "io/project.h"
 #include "playback/playhead.h"
 #include "window/mainwindow.h"
+#include "window/questions.h"
 #include "window/studio.h"
 
 #include <QAbstractButton>
 #include <QApplication>
 #include <QComboBox>
+#include <QDateTime>
+#include <QDialog>
 #include <QDir>
+#include <QFileDialog>
 #include <QLabel>
+#include <QMenu>
 #include <QMenuBar>
 #include <QPushButton>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QTranslator>
 
 #include <functional>
@@ -73,13 +80,14 @@ QStringList clipped(QWidget *root)
     return problems;
 }
 
-// Lays the widget out at its own size, as it opens, and looks for clipped text; saves it as
-// <language>-<name>.png in TOONFACE_GRAB_DIR when that is set.
-QStringList lookAt(QWidget *widget, const QString &name)
+// Lays the widget out (at its own size, as it opens, unless `keepSize`) and looks for clipped
+// text; saves it as <language>-<name>.png in TOONFACE_GRAB_DIR when that is set.
+QStringList lookAt(QWidget *widget, const QString &name, bool keepSize = false)
 {
     widget->show();
     QApplication::processEvents();
-    widget->adjustSize();
+    if (!keepSize)
+        widget->adjustSize();
     QApplication::processEvents();
     const QString dir = qEnvironmentVariable("TOONFACE_GRAB_DIR");
     if (!dir.isEmpty())
@@ -97,6 +105,7 @@ void removeTranslators()
         QCoreApplication::removeTranslator(t);
         delete t;
     }
+    QLocale::setDefault(QLocale::system());
 }
 
 } // namespace
@@ -198,7 +207,44 @@ private Q_SLOTS:
         window.startup(path);
         QTRY_VERIFY_WITH_TIMEOUT(!window.isBusy(), 30000);
         QApplication::processEvents();
-        const QStringList problems = lookAt(&window, QStringLiteral("mainwindow"));
+        QStringList problems = lookAt(&window, QStringLiteral("mainwindow"), true);
+        // Each menu as it drops down (menus size themselves to their items: only looked at).
+        int index = 0;
+        for (QAction *a : window.menuBar()->actions()) {
+            if (QMenu *menu = a->menu()) {
+                menu->popup(window.mapToGlobal(QPoint(10 * index, 30)));
+                QApplication::processEvents();
+                lookAt(menu, QStringLiteral("menu%1").arg(++index), true);
+                menu->hide();
+            }
+        }
+        // The questions the editor asks, and Qt's own file dialog.
+        const auto answered = [&](const QString &name) {
+            QTimer::singleShot(200, [&problems, name] {
+                if (QWidget *box = QApplication::activeModalWidget()) {
+                    problems << lookAt(box, name, true);
+                    // A message box without an Escape button ignores close(): answer it.
+                    if (auto *dialog = qobject_cast<QDialog *>(box))
+                        dialog->done(QDialog::Rejected);
+                    else
+                        box->close();
+                } else {
+                    problems << name + QStringLiteral(": did not open");
+                }
+            });
+        };
+        answered(QStringLiteral("about"));
+        window.findChild<QAction *>(QStringLiteral("actionAbout"))->trigger();
+        answered(QStringLiteral("restore"));
+        askToRestore(
+            &window, RecoveryFile {dir.filePath(QStringLiteral("r.toonface")), path, QDateTime::currentDateTime()});
+        Document document;
+        answered(QStringLiteral("averageface"));
+        offerAverageFace(&window, &document, QStringLiteral("face.png"));
+        QFileDialog files(&window, QStringLiteral("Open"), dir.path());
+        files.setOption(QFileDialog::DontUseNativeDialog);
+        files.resize(800, 500);
+        lookAt(&files, QStringLiteral("filedialog"), true);
         QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
     }
 };

@@ -31,6 +31,7 @@ void removeTranslators()
         QCoreApplication::removeTranslator(t);
         delete t;
     }
+    QLocale::setDefault(QLocale::system());
 }
 
 QStringList menuTitles(const QMainWindow &window)

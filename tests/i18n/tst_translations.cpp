@@ -43,6 +43,7 @@ void removeTranslators()
         QCoreApplication::removeTranslator(t);
         delete t;
     }
+    QLocale::setDefault(QLocale::system());
 }
 
 bool hasChinese(const QString &text)
@@ -248,6 +249,7 @@ private Q_SLOTS:
             = fixture::readTsFile(QDir(kDir).filePath(QStringLiteral("toonface_%1.ts").arg(translation)));
         QVERIFY(installTranslations(QCoreApplication::instance(), translation));
         QCOMPARE(installedTranslation(), translation);
+        QCOMPARE(QLocale().name(), translation); // dates and numbers follow the language
         int checked = 0;
         for (const fixture::TsMessage &m : ts.messages) {
             const QByteArray context = m.context.toUtf8();
