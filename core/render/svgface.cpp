@@ -420,8 +420,31 @@ bool isActiveElement(QStringView name)
         || name == QLatin1StringView("iframe") || name == QLatin1StringView("handler");
 }
 
+// An attribute value as a browser reads a URL's scheme: lower case, with the white space and
+// control characters it skips inside "java\tscript:" left out.
+QString schemeView(QStringView value)
+{
+    QString out;
+    out.reserve(value.size());
+    for (const QChar c : value) {
+        if (c.unicode() > 0x20)
+            out.append(c.toLower());
+    }
+    return out;
+}
+
+// Whether an attribute value could run code or open another document: a javascript: or
+// vbscript: URL anywhere in it (an <animate> or <set> can put one into a link through its
+// values, to or from), or a link to a data: document that is not an image.
+bool isActiveValue(QStringView value)
+{
+    const QString v = schemeView(value);
+    return v.contains(QLatin1StringView("javascript:")) || v.contains(QLatin1StringView("vbscript:"))
+        || v.contains(QLatin1StringView("data:text")) || v.contains(QLatin1StringView("data:application"));
+}
+
 // Copies the reader's start element without what could run code: event handler attributes
-// (onload, onclick, ...) and links to javascript: or data: documents.
+// (onload, onclick, ...) and values holding script or document links (isActiveValue).
 void writeInertStart(const QXmlStreamReader &reader, QXmlStreamWriter &writer)
 {
     const QXmlStreamNamespaceDeclarations declarations = reader.namespaceDeclarations();
@@ -430,12 +453,7 @@ void writeInertStart(const QXmlStreamReader &reader, QXmlStreamWriter &writer)
         writer.writeNamespace(d.namespaceUri().toString(), d.prefix().toString());
     const QXmlStreamAttributes attributes = reader.attributes();
     for (const QXmlStreamAttribute &a : attributes) {
-        if (a.name().startsWith(QLatin1StringView("on"), Qt::CaseInsensitive))
-            continue;
-        const QString value = a.value().trimmed().toString().toLower().remove(QLatin1Char(' '));
-        if (a.name() == QLatin1StringView("href")
-            && (value.startsWith(QLatin1StringView("javascript:")) || value.startsWith(QLatin1StringView("data:text"))
-                || value.startsWith(QLatin1StringView("data:application"))))
+        if (a.name().startsWith(QLatin1StringView("on"), Qt::CaseInsensitive) || isActiveValue(a.value()))
             continue;
         writer.writeAttribute(a);
     }
