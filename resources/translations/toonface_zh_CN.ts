@@ -1497,7 +1497,7 @@ Face lost in %5 frames%6</source>
     </message>
     <message>
         <source>Main</source>
-        <translation>主要</translation>
+        <translation>主工具栏</translation>
     </message>
     <message>
         <source>Style:</source>

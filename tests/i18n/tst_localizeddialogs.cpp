@@ -30,7 +30,9 @@
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -223,6 +225,11 @@ private Q_SLOTS:
             QTimer::singleShot(200, [&problems, name] {
                 if (QWidget *box = QApplication::activeModalWidget()) {
                     problems << lookAt(box, name, true);
+                    // Dates as the language writes them, with nothing Qt cannot print.
+                    static const QRegularExpression unprinted(QStringLiteral("(?<![A-Za-z])B\\d"));
+                    if (auto *message = qobject_cast<QMessageBox *>(box);
+                        message && message->text().contains(unprinted))
+                        problems << name + QStringLiteral(": ") + message->text();
                     // A message box without an Escape button ignores close(): answer it.
                     if (auto *dialog = qobject_cast<QDialog *>(box))
                         dialog->done(QDialog::Rejected);

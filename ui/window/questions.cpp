@@ -30,7 +30,11 @@ bool askToRestore(QWidget *parent, const RecoveryFile &kept)
         = kept.originalPath.isEmpty() ? Questions::tr("an untitled project") : QFileInfo(kept.originalPath).fileName();
     QMessageBox box(QMessageBox::Question, Questions::tr("Restore Unsaved Work"),
         Questions::tr("Toonface did not close properly. Unsaved work on %1 from %2 was kept.")
-            .arg(name, QLocale().toString(kept.written, QLocale::ShortFormat)),
+            .arg(name,
+                // The time in 24 hours: Qt 6.4 prints the Taiwanese short format's day period
+                // ("Bh:mm") as a letter B.
+                QLocale().toString(kept.written.date(), QLocale::ShortFormat) + QLatin1Char(' ')
+                    + kept.written.time().toString(QStringLiteral("HH:mm"))),
         QMessageBox::NoButton, parent);
     box.setInformativeText(Questions::tr("Restore it? Discarding deletes the kept copy."));
     QPushButton *restore = box.addButton(Questions::tr("&Restore"), QMessageBox::AcceptRole);
