@@ -588,6 +588,25 @@
     </message>
 </context>
 <context>
+    <name>toonface::CartoonFile</name>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1：无法写入：%2</translation>
+    </message>
+    <message>
+        <source>%1: no image format: give the file a suffix (.svg, .png)</source>
+        <translation>%1：没有图像格式：请为文件加上扩展名（.svg、.png）</translation>
+    </message>
+    <message>
+        <source>%1: the cartoon could not be drawn</source>
+        <translation>%1：无法绘制卡通</translation>
+    </message>
+    <message>
+        <source>%1: cannot encode the image as %2</source>
+        <translation>%1：无法将图像编码为 %2</translation>
+    </message>
+</context>
+<context>
     <name>toonface::DetectionStepsUi</name>
     <message>
         <source>Detection &amp;Steps</source>
@@ -632,6 +651,17 @@
     <message>
         <source>Show an intermediate image of the face detection over the photo</source>
         <translation>在照片上显示人脸检测的中间图像</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::Detector</name>
+    <message>
+        <source>No face was found in the image (%1 x %2 pixels). A frontal, upright face at least %3 pixels wide is needed.</source>
+        <translation>在图像（%1 x %2 像素）中找不到人脸。需要一张正面、端正且至少 %3 像素宽的人脸。</translation>
+    </message>
+    <message>
+        <source>The image (%1 x %2 pixels) is too small to hold a face.</source>
+        <translation>图像（%1 x %2 像素）太小，容纳不下一张人脸。</translation>
     </message>
 </context>
 <context>

@@ -588,6 +588,25 @@
     </message>
 </context>
 <context>
+    <name>toonface::CartoonFile</name>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1：無法寫入：%2</translation>
+    </message>
+    <message>
+        <source>%1: no image format: give the file a suffix (.svg, .png)</source>
+        <translation>%1：沒有影像格式：請為檔案加上副檔名（.svg、.png）</translation>
+    </message>
+    <message>
+        <source>%1: the cartoon could not be drawn</source>
+        <translation>%1：無法繪製卡通</translation>
+    </message>
+    <message>
+        <source>%1: cannot encode the image as %2</source>
+        <translation>%1：無法將影像編碼為 %2</translation>
+    </message>
+</context>
+<context>
     <name>toonface::DetectionStepsUi</name>
     <message>
         <source>Detection &amp;Steps</source>
@@ -632,6 +651,17 @@
     <message>
         <source>Show an intermediate image of the face detection over the photo</source>
         <translation>在照片上顯示臉部偵測的中間影像</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::Detector</name>
+    <message>
+        <source>No face was found in the image (%1 x %2 pixels). A frontal, upright face at least %3 pixels wide is needed.</source>
+        <translation>在影像（%1 x %2 像素）中找不到臉。需要一張正面、端正且至少 %3 像素寬的臉。</translation>
+    </message>
+    <message>
+        <source>The image (%1 x %2 pixels) is too small to hold a face.</source>
+        <translation>影像（%1 x %2 像素）太小，容不下一張臉。</translation>
     </message>
 </context>
 <context>

@@ -123,7 +123,7 @@ private Q_SLOTS:
             {QStringLiteral("-silent"), QStringLiteral("-no-obsolete"), QStringLiteral("-locations"),
                 QStringLiteral("none"), QStringLiteral("-I"), QStringLiteral("ui"), QStringLiteral("-I"),
                 QStringLiteral("app"), QStringLiteral("-I"), QStringLiteral("core"), QStringLiteral("ui"),
-                QStringLiteral("app"), QStringLiteral("-ts"), scratch});
+                QStringLiteral("app"), QStringLiteral("core"), QStringLiteral("-ts"), scratch});
         QVERIFY(run.waitForFinished(120000));
         QCOMPARE(run.exitCode(), 0);
         const auto keys = [](const fixture::TsFile &ts) {
