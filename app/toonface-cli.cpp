@@ -1,5 +1,6 @@
 #include "cli/command.h"
 #include "detect/detector.h"
+#include "i18n/translations.h"
 
 #include <QGuiApplication>
 #include <QTextStream>
@@ -25,17 +26,20 @@ void qtMessages(QtMsgType type, const QMessageLogContext &, const QString &messa
 void printHelp()
 {
     QTextStream out(stdout);
-    out << "Usage: toonface-cli COMMAND [OPTIONS]\n\n"
-           "Toonface turns a photo into a personal cartoon face drawn in SVG and makes it talk.\n"
-           "Every job of the editor, with no display.\n\nCommands:\n";
+    out << Cli::tr("Usage: %1").arg(QStringLiteral("toonface-cli COMMAND [OPTIONS]")) << "\n\n"
+        << Cli::tr("Toonface turns a photo into a personal cartoon face drawn in SVG and makes it talk.\n"
+                   "Every job of the editor, with no display.")
+        << "\n\n"
+        << Cli::tr("Commands:") << "\n";
     auto list = commands();
     std::sort(list.begin(), list.end(), [](const Command &a, const Command &b) { return a.name < b.name; });
     for (const Command &c : list)
-        out << "  " << c.usage << "\n      " << c.summary << "\n";
-    out << "\n  toonface-cli COMMAND --help   options of one command\n"
-           "  toonface-cli --version        the version\n\n"
-           "Exit codes: 0 success, 2 usage, 3 unreadable or invalid input, 4 no face found,\n"
-           "5 the audio and the script could not be aligned, 1 other failures.\n";
+        out << "  " << c.usage << "\n      " << c.translatedSummary() << "\n";
+    out << "\n  toonface-cli COMMAND --help   " << Cli::tr("options of one command") << "\n"
+        << "  toonface-cli --version        " << Cli::tr("the version") << "\n\n"
+        << Cli::tr("Exit codes: 0 success, 2 usage, 3 unreadable or invalid input, 4 no face found,\n"
+                   "5 the audio and the script could not be aligned, 1 other failures.")
+        << "\n";
 }
 
 const Command *findCommand(const QString &name)
@@ -106,9 +110,11 @@ int main(int argc, char *argv[])
         app = std::make_unique<QGuiApplication>(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("toonface-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(TOONFACE_VERSION));
+    // Messages and help in the system's language (LANGUAGE, LC_ALL, LC_MESSAGES, LANG).
+    toonface::installTranslations(app.get(), toonface::translationForLocale(toonface::systemUiLocale()));
 
     if (args.isEmpty())
-        return fail(ExitUsage, QStringLiteral("no command given; try 'toonface-cli --help'"));
+        return fail(ExitUsage, Cli::tr("no command given; try 'toonface-cli --help'"));
     const QString first = args.takeFirst();
     if (first == QLatin1StringView("--help") || first == QLatin1StringView("-h")
         || first == QLatin1StringView("help")) {
@@ -124,5 +130,5 @@ int main(int argc, char *argv[])
         toonface::waitForDetectionWarmUp();
         endNow(code);
     }
-    return fail(ExitUsage, QStringLiteral("unknown command '%1'; try 'toonface-cli --help'").arg(first));
+    return fail(ExitUsage, Cli::tr("unknown command '%1'; try 'toonface-cli --help'").arg(first));
 }

@@ -1,32 +1,19 @@
+#include "i18n/translations.h"
 #include "launchtimings.h"
 #include "window/mainwindow.h"
+#include "window/settings.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
 #include <QElapsedTimer>
-#include <QLibraryInfo>
-#include <QLocale>
 #include <QThread>
 #include <QTimer>
-#include <QTranslator>
 
 #include <cstdio>
 #include <memory>
 
 namespace {
-
-// Qt's own strings (dialog buttons) and Toonface's, in the user's language when available.
-void installTranslations(QApplication &app)
-{
-    auto *qt = new QTranslator(&app);
-    if (qt->load(QLocale(), QStringLiteral("qtbase"), QStringLiteral("_"),
-            QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        QApplication::installTranslator(qt);
-    auto *own = new QTranslator(&app);
-    if (own->load(QLocale(), QStringLiteral("toonface"), QStringLiteral("_"), QStringLiteral(":/i18n")))
-        QApplication::installTranslator(own);
-}
 
 // For looking at the window in headless runs: TOONFACE_SCREENSHOT=out.png saves the window
 // once it has been idle (nothing opening or detecting) for a moment, then quits;
@@ -71,7 +58,8 @@ int main(int argc, char *argv[])
     QApplication::setApplicationDisplayName(QStringLiteral("Toonface"));
     QApplication::setApplicationVersion(QStringLiteral(TOONFACE_VERSION));
     QApplication::setDesktopFileName(QStringLiteral("toonface"));
-    installTranslations(app);
+    // The interface's language: Preferences' choice, else the system's.
+    toonface::installTranslations(&app, toonface::translationForSetting(toonface::Settings().language()));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QApplication::translate("main", "Toonface: personal cartoon faces from photos."));
@@ -86,8 +74,9 @@ int main(int argc, char *argv[])
     parser.process(app);
     toonface::DetectionMethod method = toonface::DetectionMethod::Auto;
     if (parser.isSet(methodOption) && !toonface::detectionMethodFromName(parser.value(methodOption), &method)) {
-        std::fprintf(stderr, "toonface: error: unknown detection method \"%s\" (auto, classic or landmarks)\n",
-            qPrintable(parser.value(methodOption)));
+        std::fprintf(stderr, "toonface: error: %s\n",
+            qPrintable(QApplication::translate("main", "unknown detection method \"%1\" (auto, classic or landmarks)")
+                           .arg(parser.value(methodOption))));
         return 2;
     }
 

@@ -28,49 +28,46 @@ namespace {
 int runAnimate(const Command &self, const QStringList &args)
 {
     QCommandLineParser parser;
-    const QCommandLineOption audio(
-        QStringLiteral("audio"), QStringLiteral("The speech recording."), QStringLiteral("A"));
+    const QCommandLineOption audio(QStringLiteral("audio"), Cli::tr("The speech recording."), QStringLiteral("A"));
     const QCommandLineOption script(
-        QStringLiteral("script"), QStringLiteral("The recording's script (a UTF-8 text file)."), QStringLiteral("S"));
+        QStringLiteral("script"), Cli::tr("The recording's script (a UTF-8 text file)."), QStringLiteral("S"));
     const QCommandLineOption say(
-        QStringLiteral("say"), QStringLiteral("Speak this text with the built-in voice."), QStringLiteral("TEXT"));
+        QStringLiteral("say"), Cli::tr("Speak this text with the built-in voice."), QStringLiteral("TEXT"));
     const QCommandLineOption video(
-        QStringLiteral("video"), QStringLiteral("Drive the face by a video of the person."), QStringLiteral("CLIP"));
+        QStringLiteral("video"), Cli::tr("Drive the face by a video of the person."), QStringLiteral("CLIP"));
     const QCommandLineOption lang(QStringLiteral("lang"),
-        QStringLiteral("Language of the script: cmn or en (default: detected)."), QStringLiteral("cmn|en"));
+        Cli::tr("Language of the script: cmn or en (default: detected)."), QStringLiteral("cmn|en"));
     const QCommandLineOption emotion(QStringLiteral("emotion"),
-        QStringLiteral("Expression while speaking: neutral, smile, sad, angry or surprise."), QStringLiteral("NAME"),
+        Cli::tr("Expression while speaking: neutral, smile, sad, angry or surprise."), QStringLiteral("NAME"),
         QStringLiteral("neutral"));
-    const QCommandLineOption noBlink(QStringLiteral("no-blink"), QStringLiteral("Do not blink."));
-    const QCommandLineOption fps(QStringLiteral("fps"), QStringLiteral("Frames per second (default 25)."),
-        QStringLiteral("N"), QStringLiteral("25"));
+    const QCommandLineOption noBlink(QStringLiteral("no-blink"), Cli::tr("Do not blink."));
+    const QCommandLineOption fps(
+        QStringLiteral("fps"), Cli::tr("Frames per second (default 25)."), QStringLiteral("N"), QStringLiteral("25"));
     const QCommandLineOption style(QStringLiteral("style"),
-        QStringLiteral("Drawing style: %1.").arg(Style::presetNames().join(QStringLiteral(", "))),
-        QStringLiteral("NAME"));
-    const QCommandLineOption projectOut(QStringLiteral("project"), QStringLiteral("Also save the result as a project."),
-        QStringLiteral("OUT.toonface"));
+        Cli::tr("Drawing style: %1.").arg(Style::presetNames().join(QStringLiteral(", "))), QStringLiteral("NAME"));
+    const QCommandLineOption projectOut(
+        QStringLiteral("project"), Cli::tr("Also save the result as a project."), QStringLiteral("OUT.toonface"));
     const QCommandLineOption output(QStringList {QStringLiteral("o"), QStringLiteral("output")},
-        QStringLiteral("OUT.svg, OUT.html, OUT.mp4, OUT.gif, or DIR/ for PNG frames."), QStringLiteral("OUT"));
+        Cli::tr("OUT.svg, OUT.html, OUT.mp4, OUT.gif, or DIR/ for PNG frames."), QStringLiteral("OUT"));
     const QCommandLineOption frame = frameOption();
     parser.addOptions({audio, script, say, video, lang, emotion, noBlink, fps, style, frame, projectOut, output});
     const VideoTrackOptions trackOptions;
     trackOptions.addTo(parser);
     parser.addPositionalArgument(QStringLiteral("INPUT"),
-        QStringLiteral("A photo or a project; or a video clip, whose neutral frame's face it animates."));
+        Cli::tr("A photo or a project; or a video clip, whose neutral frame's face it animates."));
     bool helped = false;
     if (!parseArguments(parser, self, args, &helped))
         return ExitUsage;
     if (helped)
         return ExitOk;
     if (parser.positionalArguments().size() != 1)
-        return fail(
-            ExitUsage, QStringLiteral("animate takes one photo or project (usage: toonface-cli %1)").arg(self.usage));
+        return fail(ExitUsage, Cli::tr("animate takes one photo or project (usage: toonface-cli %1)").arg(self.usage));
     if (!parser.isSet(output))
-        return fail(ExitUsage, QStringLiteral("animate needs -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"));
+        return fail(ExitUsage, Cli::tr("animate needs -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"));
     const std::optional<AnimationFormat> format = animationFormatForPath(parser.value(output));
     if (!format)
         return fail(ExitUsage,
-            QStringLiteral("cannot tell the output type of '%1': use .svg, .html, .mp4, .gif or a folder ending in /")
+            Cli::tr("cannot tell the output type of '%1': use .svg, .html, .mp4, .gif or a folder ending in /")
                 .arg(parser.value(output)));
     const QString inputPath = parser.positionalArguments().constFirst();
     const bool clipInput = looksLikeVideo(inputPath);
@@ -81,10 +78,10 @@ int runAnimate(const Command &self, const QStringList &args)
         = QFileInfo(parser.positionalArguments().value(0)).suffix().toLower() == QLatin1StringView("toonface");
     if (sources > 1 || (sources == 0 && !projectInput && !clipInput))
         return fail(ExitUsage,
-            QStringLiteral("animate needs exactly one of --audio with --script, --say TEXT or --video CLIP (a project "
-                           "without them plays its own timeline)"));
+            Cli::tr("animate needs exactly one of --audio with --script, --say TEXT or --video CLIP (a project "
+                    "without them plays its own timeline)"));
     if (parser.isSet(audio) != parser.isSet(script))
-        return fail(ExitUsage, QStringLiteral("--audio and --script go together"));
+        return fail(ExitUsage, Cli::tr("--audio and --script go together"));
     const QString clipPath = parser.isSet(video) ? parser.value(video) : clipInput ? inputPath : QString();
     TrackVideoOptions trackVideoOptions;
     if (const int code = trackOptions.read(parser, &trackVideoOptions); code != ExitOk)
@@ -92,13 +89,13 @@ int runAnimate(const Command &self, const QStringList &args)
     bool fpsOk = false;
     const double frameRate = parser.value(fps).toDouble(&fpsOk);
     if (!fpsOk || !(frameRate >= 1 && frameRate <= 120))
-        return fail(ExitUsage, QStringLiteral("--fps takes a number from 1 to 120, not '%1'").arg(parser.value(fps)));
+        return fail(ExitUsage, Cli::tr("--fps takes a number from 1 to 120, not '%1'").arg(parser.value(fps)));
     Emotion expression = Emotion::Neutral;
     if (const int code = parseEmotionOption(parser, emotion, &expression); code != ExitOk)
         return code;
     QString language = parser.value(lang);
     if (!language.isEmpty() && language != QLatin1StringView("cmn") && language != QLatin1StringView("en"))
-        return fail(ExitUsage, QStringLiteral("unknown --lang '%1' (cmn or en)").arg(language));
+        return fail(ExitUsage, Cli::tr("unknown --lang '%1' (cmn or en)").arg(language));
     std::optional<Style> chosenStyle;
     bool wholePhoto = false;
     if (const int code = parseFrameOption(parser, frame, &wholePhoto); code != ExitOk)
@@ -107,8 +104,7 @@ int runAnimate(const Command &self, const QStringList &args)
         return code;
 
     if (QFileInfo(inputPath).suffix().toLower() == QLatin1StringView("json"))
-        return fail(
-            ExitUsage, QStringLiteral("animate takes a photo or a project, not a face JSON (%1)").arg(inputPath));
+        return fail(ExitUsage, Cli::tr("animate takes a photo or a project, not a face JSON (%1)").arg(inputPath));
     const QFileInfo outInfo(parser.value(output));
     const QString workDir
         = *format == AnimationFormat::PngSequence ? QDir(parser.value(output)).absolutePath() : outInfo.absolutePath();
@@ -130,7 +126,7 @@ int runAnimate(const Command &self, const QStringList &args)
             input.photoPath = QFileInfo(parser.value(projectOut)).absolutePath() + QLatin1Char('/')
                 + QFileInfo(parser.value(projectOut)).completeBaseName() + QStringLiteral("-neutral.png");
             if (!track.neutralImage.save(input.photoPath))
-                return fail(ExitFailed, QStringLiteral("%1: cannot write the neutral frame").arg(input.photoPath));
+                return fail(ExitFailed, Cli::tr("%1: cannot write the neutral frame").arg(input.photoPath));
         }
     } else if (const int code = loadFaceInput(inputPath, DetectOptions {}, &input); code != ExitOk) {
         return code;
@@ -155,8 +151,8 @@ int runAnimate(const Command &self, const QStringList &args)
             speech.duration = std::max(speech.duration, sound.audio.duration());
             timeline.setAudio(AudioClip {speech.audioPath, 0.0, sound.audio.duration()});
         } else {
-            warn(track.hasAudio ? sound.error + QStringLiteral(": the animation is silent")
-                                : QStringLiteral("%1: the clip has no sound; the animation is silent").arg(clipPath));
+            warn(track.hasAudio ? Cli::tr("%1: the animation is silent").arg(sound.error)
+                                : Cli::tr("%1: the clip has no sound; the animation is silent").arg(clipPath));
         }
         if (expression != Emotion::Neutral)
             timeline.addEmotionClip(EmotionClip {0.0, speech.duration, expression, 1.0, 0.4, 0.4});
@@ -165,13 +161,13 @@ int runAnimate(const Command &self, const QStringList &args)
     } else if (sources == 0) {
         if (!input.project)
             return fail(ExitUsage,
-                QStringLiteral("animate needs one of --audio with --script, --say TEXT or --video CLIP (only a project "
-                               "plays its own timeline)"));
+                Cli::tr("animate needs one of --audio with --script, --say TEXT or --video CLIP (only a project "
+                        "plays its own timeline)"));
         // The project's own animation, as the editor made it: the same frames as its preview.
         timeline = input.project->timeline;
         if (timeline.duration() <= 0)
             return fail(ExitBadInput,
-                QStringLiteral("%1: the project has no animation to play (its timeline is empty)").arg(inputPath));
+                Cli::tr("%1: the project has no animation to play (its timeline is empty)").arg(inputPath));
         if (parser.isSet(fps))
             timeline.setFrameRate(frameRate);
         if (expression != Emotion::Neutral)
@@ -221,7 +217,7 @@ int runAnimate(const Command &self, const QStringList &args)
     }
 
     const QString out = parser.value(output);
-    progress(QStringLiteral("exporting %1 s of animation to %2").arg(speech.duration, 0, 'f', 1).arg(out));
+    progress(Cli::tr("exporting %1 s of animation to %2").arg(speech.duration, 0, 'f', 1).arg(out));
     ExportRequest exportRequest;
     exportRequest.format = *format;
     exportRequest.outputPath = out;
@@ -236,7 +232,7 @@ int runAnimate(const Command &self, const QStringList &args)
     const ExportResult result = exportAnimation(exportRequest, [&lastTenth](double fraction) {
         const int tenth = int(fraction * 10);
         if (tenth > lastTenth)
-            progress(QStringLiteral("exporting: %1 %").arg(tenth * 10));
+            progress(Cli::tr("exporting: %1 %").arg(tenth * 10));
         lastTenth = std::max(lastTenth, tenth);
     });
     if (!result.ok())
@@ -245,8 +241,8 @@ int runAnimate(const Command &self, const QStringList &args)
 }
 
 const CommandRegistrar registrar({QStringLiteral("animate"),
-    QStringLiteral(
-        "Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF or PNG frames)."),
+    QString::fromUtf8(QT_TRANSLATE_NOOP("toonface::cli::Cli",
+        "Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF or PNG frames).")),
     QStringLiteral(
         "animate IMAGE|PROJECT|CLIP [--audio A --script S | --say TEXT | --video CLIP] [--method "
         "auto|classic|landmarks] [--neutral-frame N] [--snap-mouth] [--emotion NAME] [--no-blink] [--fps N] "

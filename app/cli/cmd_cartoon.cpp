@@ -15,47 +15,46 @@ int runCartoon(const Command &self, const QStringList &args)
 {
     QCommandLineParser parser;
     const QCommandLineOption output(QStringList {QStringLiteral("o"), QStringLiteral("output")},
-        QStringLiteral("The cartoon SVG to write."), QStringLiteral("OUT.svg"));
+        Cli::tr("The cartoon SVG to write."), QStringLiteral("OUT.svg"));
     const QCommandLineOption png(
-        QStringLiteral("png"), QStringLiteral("Also rasterize to this PNG."), QStringLiteral("OUT.png"));
-    const QCommandLineOption size(QStringLiteral("size"),
-        QStringLiteral("The PNG's longer side in pixels (default 512)."), QStringLiteral("N"), QStringLiteral("512"));
+        QStringLiteral("png"), Cli::tr("Also rasterize to this PNG."), QStringLiteral("OUT.png"));
+    const QCommandLineOption size(QStringLiteral("size"), Cli::tr("The PNG's longer side in pixels (default 512)."),
+        QStringLiteral("N"), QStringLiteral("512"));
     const QCommandLineOption style(QStringLiteral("style"),
-        QStringLiteral("Drawing style: %1.").arg(Style::presetNames().join(QStringLiteral(", "))),
-        QStringLiteral("NAME"));
+        Cli::tr("Drawing style: %1.").arg(Style::presetNames().join(QStringLiteral(", "))), QStringLiteral("NAME"));
     const QCommandLineOption emotion(QStringLiteral("emotion"),
-        QStringLiteral("Expression: neutral, smile, sad, angry or surprise."), QStringLiteral("NAME"),
+        Cli::tr("Expression: neutral, smile, sad, angry or surprise."), QStringLiteral("NAME"),
         QStringLiteral("neutral"));
     const QCommandLineOption method(QStringLiteral("method"),
-        QStringLiteral("Detection method for a photo: auto, classic or landmarks."),
-        QStringLiteral("auto|classic|landmarks"), QStringLiteral("auto"));
+        Cli::tr("Detection method for a photo: auto, classic or landmarks."), QStringLiteral("auto|classic|landmarks"),
+        QStringLiteral("auto"));
     const QCommandLineOption caricature(QStringLiteral("caricature"),
-        QStringLiteral("How much to exaggerate what makes the face its own: 0 (exact) to 1 (default: the style's)."),
+        Cli::tr("How much to exaggerate what makes the face its own: 0 (exact) to 1 (default: the style's)."),
         QStringLiteral("F"));
     const QCommandLineOption frame = frameOption();
     parser.addOptions({output, png, size, style, emotion, method, frame, caricature});
-    parser.addPositionalArgument(QStringLiteral("INPUT"), QStringLiteral("A photo, a face JSON or a project."));
+    parser.addPositionalArgument(QStringLiteral("INPUT"), Cli::tr("A photo, a face JSON or a project."));
     bool helped = false;
     if (!parseArguments(parser, self, args, &helped))
         return ExitUsage;
     if (helped)
         return ExitOk;
     if (parser.positionalArguments().size() != 1)
-        return fail(ExitUsage, QStringLiteral("cartoon takes one input (usage: toonface-cli %1)").arg(self.usage));
+        return fail(ExitUsage, Cli::tr("cartoon takes one input (usage: toonface-cli %1)").arg(self.usage));
     if (!parser.isSet(output))
-        return fail(ExitUsage, QStringLiteral("cartoon needs -o OUT.svg"));
+        return fail(ExitUsage, Cli::tr("cartoon needs -o OUT.svg"));
     bool sizeOk = false;
     const int pngSize = parser.value(size).toInt(&sizeOk);
     if (!sizeOk || pngSize < 16 || pngSize > 8192)
         return fail(
-            ExitUsage, QStringLiteral("--size takes a whole number from 16 to 8192, not '%1'").arg(parser.value(size)));
+            ExitUsage, Cli::tr("--size takes a whole number from 16 to 8192, not '%1'").arg(parser.value(size)));
     double caricatureFactor = -1;
     if (parser.isSet(caricature)) {
         bool ok = false;
         caricatureFactor = parser.value(caricature).toDouble(&ok);
         if (!ok || caricatureFactor < 0 || caricatureFactor > kMaxCaricature)
-            return fail(ExitUsage,
-                QStringLiteral("--caricature takes a number from 0 to 1, not '%1'").arg(parser.value(caricature)));
+            return fail(
+                ExitUsage, Cli::tr("--caricature takes a number from 0 to 1, not '%1'").arg(parser.value(caricature)));
     }
     Emotion expression = Emotion::Neutral;
     std::optional<Style> chosenStyle;
@@ -98,7 +97,8 @@ int runCartoon(const Command &self, const QStringList &args)
 }
 
 const CommandRegistrar registrar({QStringLiteral("cartoon"),
-    QStringLiteral("Draw the cartoon face of a photo, a face JSON or a project as SVG (and PNG)."),
+    QString::fromUtf8(QT_TRANSLATE_NOOP(
+        "toonface::cli::Cli", "Draw the cartoon face of a photo, a face JSON or a project as SVG (and PNG).")),
     QStringLiteral(
         "cartoon IMAGE|FACE.json|PROJECT.toonface -o OUT.svg [--png OUT.png [--size N]] [--frame head|photo] "
         "[--style NAME] [--emotion NAME] [--caricature F]"),

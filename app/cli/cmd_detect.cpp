@@ -15,26 +15,25 @@ namespace {
 int runDetect(const Command &self, const QStringList &args)
 {
     QCommandLineParser parser;
-    const QCommandLineOption method(QStringLiteral("method"),
-        QStringLiteral("Detection method: auto, classic or landmarks."), QStringLiteral("auto|classic|landmarks"),
-        QStringLiteral("auto"));
+    const QCommandLineOption method(QStringLiteral("method"), Cli::tr("Detection method: auto, classic or landmarks."),
+        QStringLiteral("auto|classic|landmarks"), QStringLiteral("auto"));
     const QCommandLineOption output(QStringList {QStringLiteral("o"), QStringLiteral("output")},
-        QStringLiteral("Write the face JSON here (default: stdout)."), QStringLiteral("FACE.json"));
+        Cli::tr("Write the face JSON here (default: stdout)."), QStringLiteral("FACE.json"));
     const QCommandLineOption debugDir(QStringLiteral("debug-dir"),
-        QStringLiteral("Write intermediate images of the detection here."), QStringLiteral("DIR"));
+        Cli::tr("Write intermediate images of the detection here."), QStringLiteral("DIR"));
     const QCommandLineOption faceAt(QStringLiteral("face"),
-        QStringLiteral("With several faces, use the one at this point of the photo (pixels) instead of the largest, "
-                       "most central one."),
+        Cli::tr("With several faces, use the one at this point of the photo (pixels) instead of the largest, "
+                "most central one."),
         QStringLiteral("X,Y"));
     parser.addOptions({method, output, debugDir, faceAt});
-    parser.addPositionalArgument(QStringLiteral("IMAGE"), QStringLiteral("The photo."));
+    parser.addPositionalArgument(QStringLiteral("IMAGE"), Cli::tr("The photo."));
     bool helped = false;
     if (!parseArguments(parser, self, args, &helped))
         return ExitUsage;
     if (helped)
         return ExitOk;
     if (parser.positionalArguments().size() != 1)
-        return fail(ExitUsage, QStringLiteral("detect takes one IMAGE (usage: toonface-cli %1)").arg(self.usage));
+        return fail(ExitUsage, Cli::tr("detect takes one IMAGE (usage: toonface-cli %1)").arg(self.usage));
 
     DetectOptions options;
     if (const int code = parseMethodOption(parser, method, &options); code != ExitOk)
@@ -45,14 +44,14 @@ int runDetect(const Command &self, const QStringList &args)
         const double x = xy.size() == 2 ? xy[0].trimmed().toDouble(&okX) : 0;
         const double y = xy.size() == 2 ? xy[1].trimmed().toDouble(&okY) : 0;
         if (!okX || !okY || !std::isfinite(x) || !std::isfinite(y))
-            return fail(ExitUsage,
-                QStringLiteral("--face wants a point X,Y in photo pixels, not '%1'").arg(parser.value(faceAt)));
+            return fail(
+                ExitUsage, Cli::tr("--face wants a point X,Y in photo pixels, not '%1'").arg(parser.value(faceAt)));
         options.faceAt = QPointF(x, y);
     }
     if (parser.isSet(debugDir)) {
         options.debugDir = parser.value(debugDir);
         if (!QDir().mkpath(options.debugDir))
-            return fail(ExitFailed, QStringLiteral("cannot create the debug folder %1").arg(options.debugDir));
+            return fail(ExitFailed, Cli::tr("cannot create the debug folder %1").arg(options.debugDir));
     }
     const QString image = parser.positionalArguments().constFirst();
     FaceInput input;
@@ -64,7 +63,8 @@ int runDetect(const Command &self, const QStringList &args)
 }
 
 const CommandRegistrar registrar({QStringLiteral("detect"),
-    QStringLiteral("Find the face in a photo and write its 72 points as JSON (toonface.face/1)."),
+    QString::fromUtf8(QT_TRANSLATE_NOOP(
+        "toonface::cli::Cli", "Find the face in a photo and write its 72 points as JSON (toonface.face/1).")),
     QStringLiteral("detect IMAGE [--method auto|classic|landmarks] [-o FACE.json] [--debug-dir DIR] [--face X,Y]"),
     runDetect, true});
 

@@ -13,15 +13,15 @@ int runLipsync(const Command &self, const QStringList &args)
 {
     QCommandLineParser parser;
     const QCommandLineOption audio(QStringLiteral("audio"),
-        QStringLiteral("The speech recording (WAV, FLAC, MP3, OGG, M4A or a video's sound)."), QStringLiteral("AUDIO"));
+        Cli::tr("The speech recording (WAV, FLAC, MP3, OGG, M4A or a video's sound)."), QStringLiteral("AUDIO"));
     const QCommandLineOption script(QStringLiteral("script"),
-        QStringLiteral("What is said, as UTF-8 text: Chinese characters, pinyin, zhuyin, or English."),
+        Cli::tr("What is said, as UTF-8 text: Chinese characters, pinyin, zhuyin, or English."),
         QStringLiteral("SCRIPT"));
     const QCommandLineOption lang(QStringLiteral("lang"),
-        QStringLiteral("Language of the script: cmn, en, or auto (from the script)."), QStringLiteral("cmn|en|auto"),
+        Cli::tr("Language of the script: cmn, en, or auto (from the script)."), QStringLiteral("cmn|en|auto"),
         QStringLiteral("auto"));
     const QCommandLineOption output(QStringList {QStringLiteral("o"), QStringLiteral("output")},
-        QStringLiteral("Write the result here: .tsv for Rhubarb-style cues, JSON otherwise (default: JSON on stdout)."),
+        Cli::tr("Write the result here: .tsv for Rhubarb-style cues, JSON otherwise (default: JSON on stdout)."),
         QStringLiteral("OUT.json|OUT.tsv"));
     parser.addOptions({audio, script, lang, output});
     bool helped = false;
@@ -30,13 +30,12 @@ int runLipsync(const Command &self, const QStringList &args)
     if (helped)
         return ExitOk;
     if (!parser.isSet(audio) || !parser.isSet(script) || !parser.positionalArguments().isEmpty())
-        return fail(
-            ExitUsage, QStringLiteral("lipsync needs --audio and --script (usage: toonface-cli %1)").arg(self.usage));
+        return fail(ExitUsage, Cli::tr("lipsync needs --audio and --script (usage: toonface-cli %1)").arg(self.usage));
     const auto language = languageFromCode(parser.value(lang));
     if (!language)
-        return fail(ExitUsage, QStringLiteral("unknown --lang '%1' (cmn, en or auto)").arg(parser.value(lang)));
+        return fail(ExitUsage, Cli::tr("unknown --lang '%1' (cmn, en or auto)").arg(parser.value(lang)));
 
-    progress(QStringLiteral("aligning %1 with %2").arg(parser.value(audio), parser.value(script)));
+    progress(Cli::tr("aligning %1 with %2").arg(parser.value(audio), parser.value(script)));
     const LipsyncOutcome out = lipsyncFiles(parser.value(audio), parser.value(script), *language);
     if (out.status == LipsyncStatus::CannotAlign)
         return fail(ExitCannotAlign, out.error);
@@ -50,7 +49,8 @@ int runLipsync(const Command &self, const QStringList &args)
 }
 
 const CommandRegistrar registrar({QStringLiteral("lipsync"),
-    QStringLiteral("Time a recording's syllables against its script and give the mouth shapes (toonface.lipsync/1)."),
+    QString::fromUtf8(QT_TRANSLATE_NOOP("toonface::cli::Cli",
+        "Time a recording's syllables against its script and give the mouth shapes (toonface.lipsync/1).")),
     QStringLiteral("lipsync --audio AUDIO --script SCRIPT [--lang cmn|en] [-o OUT.json|OUT.tsv]"), runLipsync, false,
     true});
 

@@ -11,39 +11,38 @@ int runSay(const Command &self, const QStringList &args)
 {
     QCommandLineParser parser;
     const QCommandLineOption lang(QStringLiteral("lang"),
-        QStringLiteral("Language of the text: cmn, en, or auto (from the text)."), QStringLiteral("cmn|en|auto"),
+        Cli::tr("Language of the text: cmn, en, or auto (from the text)."), QStringLiteral("cmn|en|auto"),
         QStringLiteral("auto"));
     const QCommandLineOption output(QStringList {QStringLiteral("o"), QStringLiteral("output")},
-        QStringLiteral("The speech: .wav, .flac, .mp3, .ogg, .opus or .m4a."), QStringLiteral("OUT.wav"));
+        Cli::tr("The speech: .wav, .flac, .mp3, .ogg, .opus or .m4a."), QStringLiteral("OUT.wav"));
     const QCommandLineOption timings(QStringLiteral("timings"),
-        QStringLiteral("Also write the exact syllable timings and mouth shapes (toonface.lipsync/1)."),
+        Cli::tr("Also write the exact syllable timings and mouth shapes (toonface.lipsync/1)."),
         QStringLiteral("OUT.json"));
     const QCommandLineOption voice(QStringLiteral("voice"),
-        QStringLiteral("An espeak-ng voice, optionally with a variant (cmn-latn-pinyin+f2)."), QStringLiteral("VOICE"));
-    const QCommandLineOption rate(QStringLiteral("rate"), QStringLiteral("Words per minute (80-450)."),
-        QStringLiteral("N"), QStringLiteral("175"));
+        Cli::tr("An espeak-ng voice, optionally with a variant (cmn-latn-pinyin+f2)."), QStringLiteral("VOICE"));
+    const QCommandLineOption rate(
+        QStringLiteral("rate"), Cli::tr("Words per minute (80-450)."), QStringLiteral("N"), QStringLiteral("175"));
     const QCommandLineOption pitch(
-        QStringLiteral("pitch"), QStringLiteral("Pitch, 0-100."), QStringLiteral("N"), QStringLiteral("50"));
+        QStringLiteral("pitch"), Cli::tr("Pitch, 0-100."), QStringLiteral("N"), QStringLiteral("50"));
     parser.addOptions({lang, output, timings, voice, rate, pitch});
-    parser.addPositionalArgument(QStringLiteral("TEXT"), QStringLiteral("What to say."));
+    parser.addPositionalArgument(QStringLiteral("TEXT"), Cli::tr("What to say."));
     bool helped = false;
     if (!parseArguments(parser, self, args, &helped))
         return ExitUsage;
     if (helped)
         return ExitOk;
     if (parser.positionalArguments().size() != 1 || !parser.isSet(output))
-        return fail(
-            ExitUsage, QStringLiteral("say takes one TEXT and -o OUT.wav (usage: toonface-cli %1)").arg(self.usage));
+        return fail(ExitUsage, Cli::tr("say takes one TEXT and -o OUT.wav (usage: toonface-cli %1)").arg(self.usage));
     const auto language = languageFromCode(parser.value(lang));
     if (!language)
-        return fail(ExitUsage, QStringLiteral("unknown --lang '%1' (cmn, en or auto)").arg(parser.value(lang)));
+        return fail(ExitUsage, Cli::tr("unknown --lang '%1' (cmn, en or auto)").arg(parser.value(lang)));
     bool rateOk = false, pitchOk = false;
     TtsOptions options;
     options.rate = parser.value(rate).toInt(&rateOk);
     options.pitch = parser.value(pitch).toInt(&pitchOk);
     options.voice = parser.value(voice);
     if (!rateOk || !pitchOk)
-        return fail(ExitUsage, QStringLiteral("--rate and --pitch take whole numbers"));
+        return fail(ExitUsage, Cli::tr("--rate and --pitch take whole numbers"));
 
     const ScriptParse script = parseScript(parser.positionalArguments().constFirst(), *language);
     if (!script.ok())
@@ -64,8 +63,8 @@ int runSay(const Command &self, const QStringList &args)
 }
 
 const CommandRegistrar registrar({QStringLiteral("say"),
-    QStringLiteral(
-        "Speak a text with espeak-ng and write the exact syllable timings, so a face can talk without a recording."),
+    QString::fromUtf8(QT_TRANSLATE_NOOP("toonface::cli::Cli",
+        "Speak a text with espeak-ng and write the exact syllable timings, so a face can talk without a recording.")),
     QStringLiteral("say TEXT [--lang cmn|en] -o OUT.wav [--timings OUT.json] [--voice V] [--rate N] [--pitch N]"),
     runSay});
 

@@ -14,16 +14,16 @@ int runTrack(const Command &self, const QStringList &args)
     const VideoTrackOptions trackOptions;
     trackOptions.addTo(parser);
     const QCommandLineOption output(QStringList {QStringLiteral("o"), QStringLiteral("output")},
-        QStringLiteral("Write the track JSON here (default: stdout)."), QStringLiteral("TRACK.json"));
+        Cli::tr("Write the track JSON here (default: stdout)."), QStringLiteral("TRACK.json"));
     parser.addOption(output);
-    parser.addPositionalArgument(QStringLiteral("VIDEO"), QStringLiteral("The video of a speaking face."));
+    parser.addPositionalArgument(QStringLiteral("VIDEO"), Cli::tr("The video of a speaking face."));
     bool helped = false;
     if (!parseArguments(parser, self, args, &helped))
         return ExitUsage;
     if (helped)
         return ExitOk;
     if (parser.positionalArguments().size() != 1)
-        return fail(ExitUsage, QStringLiteral("track takes one VIDEO (usage: toonface-cli %1)").arg(self.usage));
+        return fail(ExitUsage, Cli::tr("track takes one VIDEO (usage: toonface-cli %1)").arg(self.usage));
     TrackVideoOptions options;
     if (const int code = trackOptions.read(parser, &options); code != ExitOk)
         return code;
@@ -36,7 +36,8 @@ int runTrack(const Command &self, const QStringList &args)
 }
 
 const CommandRegistrar registrar({QStringLiteral("track"),
-    QStringLiteral("Track the face of a video frame by frame and write its motion as JSON (toonface.track/1)."),
+    QString::fromUtf8(QT_TRANSLATE_NOOP("toonface::cli::Cli",
+        "Track the face of a video frame by frame and write its motion as JSON (toonface.track/1).")),
     QStringLiteral("track VIDEO [--method auto|classic|landmarks] [--neutral-frame N] [--snap-mouth] [-o TRACK.json]"),
     runTrack});
 

@@ -35,19 +35,20 @@ bool parseArguments(QCommandLineParser &parser, const Command &command, const QS
 {
     *helped = false;
     const QCommandLineOption help(
-        QStringList {QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Show this help."));
+        QStringList {QStringLiteral("h"), QStringLiteral("help")}, Cli::tr("Show this help."));
     parser.addOption(help);
     parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     QStringList full = args;
     full.prepend(QStringLiteral("toonface-cli ") + command.name);
     if (!parser.parse(full)) {
         fail(ExitUsage,
-            parser.errorText() + QStringLiteral(" (usage: toonface-cli ") + command.usage + QLatin1Char(')'));
+            Cli::tr("%1 (usage: %2)").arg(parser.errorText(), QStringLiteral("toonface-cli ") + command.usage));
         return false;
     }
     if (parser.isSet(help)) {
         QTextStream out(stdout);
-        out << "Usage: toonface-cli " << command.usage << "\n\n" << command.summary << "\n\n";
+        out << Cli::tr("Usage: %1").arg(QStringLiteral("toonface-cli ") + command.usage) << "\n\n"
+            << command.translatedSummary() << "\n\n";
         out << parser.helpText().section(QLatin1Char('\n'), 2);
         *helped = true;
     }
@@ -70,7 +71,7 @@ bool writeFileAtomically(const QString &path, const QByteArray &data, QString *e
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly) || file.write(data) != data.size() || !file.commit()) {
-        *error = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+        *error = Cli::tr("cannot write %1: %2").arg(path, file.errorString());
         return false;
     }
     return true;

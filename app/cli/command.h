@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QCommandLineParser>
+#include <QCoreApplication>
 #include <QString>
 #include <QStringList>
 
@@ -19,11 +20,20 @@ enum ExitCode {
     ExitFailed = 1, // anything else (e.g. an output that cannot be written)
 };
 
+// The CLI's messages and help, translated (context "toonface::cli::Cli" of the .ts files). Its
+// machine-readable output (JSON, TSV), option names and value names stay as they are.
+struct Cli
+{
+    Q_DECLARE_TR_FUNCTIONS(toonface::cli::Cli)
+};
+
 // One subcommand: its name, a one-line summary, its usage, and the function that runs it
 // with the arguments after the subcommand's name.
 struct Command
 {
     QString name;
+    // Marked with QT_TRANSLATE_NOOP("toonface::cli::Cli", ...): the registrars run before the
+    // translators are installed; translatedSummary() looks it up when it is printed.
     QString summary;
     QString usage;
     std::function<int(const Command &self, const QStringList &args)> run;
@@ -33,6 +43,8 @@ struct Command
     // The command never renders (text, SVG, images): it runs without a GUI application, whose
     // start-up (the platform plugin, the font database) would cost more than its work.
     bool coreOnly = false;
+
+    QString translatedSummary() const { return Cli::tr(summary.toUtf8().constData()); }
 };
 
 std::vector<Command> &commands();

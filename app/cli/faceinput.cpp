@@ -62,12 +62,12 @@ int loadFaceInput(const QString &path, const DetectOptions &options, FaceInput *
     case InputKind::FaceJson: {
         QFile file(path);
         if (!file.open(QIODevice::ReadOnly))
-            return fail(ExitBadInput, QStringLiteral("cannot read %1: %2").arg(path, file.errorString()));
+            return fail(ExitBadInput, Cli::tr("cannot read %1: %2").arg(path, file.errorString()));
         QJsonParseError parseError;
         const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
         if (!doc.isObject())
             return fail(ExitBadInput,
-                QStringLiteral("%1: not a face JSON: %2 at offset %3")
+                Cli::tr("%1: not a face JSON: %2 at offset %3")
                     .arg(path, parseError.errorString())
                     .arg(parseError.offset));
         QString imagePath;
@@ -95,10 +95,10 @@ int loadFaceInput(const QString &path, const DetectOptions &options, FaceInput *
             return fail(
                 detectionExitCode(out->detection.status), QStringLiteral("%1: %2").arg(path, out->detection.error));
         if (!out->detection.note.isEmpty())
-            warn(QStringLiteral("%1: the landmark method could not serve (%2); the points come from the classic method")
+            warn(Cli::tr("%1: the landmark method could not serve (%2); the points come from the classic method")
                      .arg(path, out->detection.note));
         if (out->detection.faceCount > 1)
-            warn(QStringLiteral("%1: %2 faces found; the largest, most central one is used")
+            warn(Cli::tr("%1: %2 faces found; the largest, most central one is used")
                      .arg(path)
                      .arg(out->detection.faceCount));
         out->face = out->detection.face;
@@ -111,8 +111,7 @@ int loadFaceInput(const QString &path, const DetectOptions &options, FaceInput *
 int parseMethodOption(const QCommandLineParser &parser, const QCommandLineOption &method, DetectOptions *out)
 {
     if (!detectionMethodFromName(parser.value(method), &out->method))
-        return fail(
-            ExitUsage, QStringLiteral("unknown --method '%1' (auto, classic or landmarks)").arg(parser.value(method)));
+        return fail(ExitUsage, Cli::tr("unknown --method '%1' (auto, classic or landmarks)").arg(parser.value(method)));
     return ExitOk;
 }
 
@@ -121,8 +120,7 @@ int parseEmotionOption(const QCommandLineParser &parser, const QCommandLineOptio
     const auto expression = emotionFromName(parser.value(emotion));
     if (!expression)
         return fail(ExitUsage,
-            QStringLiteral("unknown --emotion '%1' (neutral, smile, sad, angry or surprise)")
-                .arg(parser.value(emotion)));
+            Cli::tr("unknown --emotion '%1' (neutral, smile, sad, angry or surprise)").arg(parser.value(emotion)));
     *out = *expression;
     return ExitOk;
 }
@@ -135,7 +133,7 @@ int parseStyleOption(const QCommandLineParser &parser, const QCommandLineOption 
     *out = Style::preset(parser.value(style), &ok);
     if (!ok)
         return fail(ExitUsage,
-            QStringLiteral("unknown --style '%1' (%2)")
+            Cli::tr("unknown --style '%1' (%2)")
                 .arg(parser.value(style), Style::presetNames().join(QStringLiteral(", "))));
     return ExitOk;
 }
@@ -143,8 +141,8 @@ int parseStyleOption(const QCommandLineParser &parser, const QCommandLineOption 
 QCommandLineOption frameOption()
 {
     return QCommandLineOption(QStringLiteral("frame"),
-        QStringLiteral("What the drawing shows: head (framed square around the head, the default) or photo (the "
-                       "photo's whole frame, to lay over the photo)."),
+        Cli::tr("What the drawing shows: head (framed square around the head, the default) or photo (the "
+                "photo's whole frame, to lay over the photo)."),
         QStringLiteral("head|photo"), QStringLiteral("head"));
 }
 
@@ -152,7 +150,7 @@ int parseFrameOption(const QCommandLineParser &parser, const QCommandLineOption 
 {
     const QString value = parser.value(frame);
     if (value != QLatin1StringView("head") && value != QLatin1StringView("photo"))
-        return fail(ExitUsage, QStringLiteral("unknown --frame '%1' (head, photo)").arg(value));
+        return fail(ExitUsage, Cli::tr("unknown --frame '%1' (head, photo)").arg(value));
     *wholePhoto = value == QLatin1StringView("photo");
     return ExitOk;
 }

@@ -22,7 +22,7 @@ int buildSpeechTrack(const SpeechRequest &request, SpeechTrack *out)
 {
     const auto language = requestedLanguage(request.language);
     if (!language)
-        return fail(ExitUsage, QStringLiteral("unknown --lang '%1' (cmn or en)").arg(request.language));
+        return fail(ExitUsage, Cli::tr("unknown --lang '%1' (cmn or en)").arg(request.language));
 
     LipsyncResult result;
     if (!request.sayText.isEmpty()) {
@@ -34,7 +34,7 @@ int buildSpeechTrack(const SpeechRequest &request, SpeechTrack *out)
             return fail(ExitBadInput, spoken.error);
         // The recording is kept beside the output: the animation and the project refer to it.
         if (!QDir().mkpath(request.workDir))
-            return fail(ExitFailed, QStringLiteral("cannot create the folder %1").arg(request.workDir));
+            return fail(ExitFailed, Cli::tr("cannot create the folder %1").arg(request.workDir));
         out->audioPath = QDir(request.workDir).filePath(request.outputBase + QStringLiteral(".wav"));
         QString error;
         if (!writeAudio(out->audioPath, spoken.audio, &error))
@@ -42,7 +42,7 @@ int buildSpeechTrack(const SpeechRequest &request, SpeechTrack *out)
         result = lipsyncResult(script.script, spoken);
         out->script = request.sayText;
     } else {
-        progress(QStringLiteral("aligning %1 with %2").arg(request.audioPath, request.scriptPath));
+        progress(Cli::tr("aligning %1 with %2").arg(request.audioPath, request.scriptPath));
         // Read once: the script may come through a pipe (--script <(echo ...)).
         const ScriptParse script = readScriptFile(request.scriptPath, *language, &out->script);
         if (!script.ok())

@@ -9,13 +9,12 @@ namespace toonface::cli {
 int VideoTrackOptions::read(const QCommandLineParser &parser, TrackVideoOptions *out) const
 {
     if (!detectionMethodFromName(parser.value(method), &out->tracker.method))
-        return fail(
-            ExitUsage, QStringLiteral("unknown --method '%1' (auto, classic or landmarks)").arg(parser.value(method)));
+        return fail(ExitUsage, Cli::tr("unknown --method '%1' (auto, classic or landmarks)").arg(parser.value(method)));
     bool ok = false;
     out->neutralFrame = parser.value(neutralFrame).toInt(&ok);
     if (!ok || out->neutralFrame < 0)
         return fail(ExitUsage,
-            QStringLiteral("--neutral-frame takes a frame number from 0, not '%1'").arg(parser.value(neutralFrame)));
+            Cli::tr("--neutral-frame takes a frame number from 0, not '%1'").arg(parser.value(neutralFrame)));
     out->tracker.snapMouth = parser.isSet(snapMouth);
     return ExitOk;
 }
@@ -26,7 +25,7 @@ int trackClip(const QString &path, const TrackVideoOptions &options, TrackResult
     *out = trackVideo(path, options, [&](int done, int total) {
         const int percent = total > 0 ? std::min(100, done * 100 / total) : -1;
         if (percent >= 0 && percent / 10 != lastPercent / 10)
-            progress(QStringLiteral("tracking %1: %2 %").arg(QFileInfo(path).fileName()).arg(percent));
+            progress(Cli::tr("tracking %1: %2 %").arg(QFileInfo(path).fileName()).arg(percent));
         lastPercent = percent;
     });
     switch (out->status) {

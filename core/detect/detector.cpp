@@ -11,6 +11,7 @@
 #include "detect/landmarkpredictor.h"
 #include "face/averageface.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFileInfo>
@@ -566,15 +567,16 @@ DetectionResult runDetection(
     result.faceCount = int(faces.size());
     if (faces.empty()) {
         result.status = DetectStatus::NoFace;
-        result.error = lastScale > 0
-            ? QStringLiteral("No face was found in the image (%1 x %2 pixels). A frontal, upright "
-                             "face at least %3 pixels wide is needed.")
-                  .arg(image.width())
-                  .arg(image.height())
-                  .arg(std::ceil(kDetectorWindow / lastScale))
-            : QStringLiteral("The image (%1 x %2 pixels) is too small to hold a face.")
-                  .arg(image.width())
-                  .arg(image.height());
+        result.error = lastScale > 0 ? QCoreApplication::translate("toonface::Detector",
+                           "No face was found in the image (%1 x %2 pixels). A frontal, upright "
+                           "face at least %3 pixels wide is needed.")
+                                           .arg(image.width())
+                                           .arg(image.height())
+                                           .arg(std::ceil(kDetectorWindow / lastScale))
+                                     : QCoreApplication::translate("toonface::Detector",
+                                         "The image (%1 x %2 pixels) is too small to hold a face.")
+                                           .arg(image.width())
+                                           .arg(image.height());
         return result;
     }
     const int chosen = chooseFace(faces, image.size(), options.faceAt);

@@ -3,6 +3,7 @@
 #include "dialogs/lipsyncdialog.h"
 #include "dialogs/saytextdialog.h"
 #include "document/document.h"
+#include "i18n/translations.h"
 #include "speech/pinyindictionary.h"
 
 #include <QDialogButtonBox>
@@ -27,6 +28,8 @@ private Q_SLOTS:
     void initTestCase()
     {
         QVERIFY(m_cache.isValid());
+        // As the editor starts: English with its plural forms ("15 syllables").
+        QVERIFY(installTranslations(QCoreApplication::instance(), QString()));
         qputenv("TOONFACE_CACHE_DIR", m_cache.path().toLocal8Bit());
         QVERIFY(!PinyinDictionary::isLoaded());
     }

@@ -1,6 +1,7 @@
 #include "animationfixture.h"
 
 #include "dialogs/exportanimationdialog.h"
+#include "i18n/translations.h"
 #include "media/mediareader.h"
 #include "render/style.h"
 
@@ -69,6 +70,8 @@ private:
 private Q_SLOTS:
     void initTestCase()
     {
+        // As the editor starts: English with its plural forms ("24 frames").
+        QVERIFY(installTranslations(QCoreApplication::instance(), QString()));
         QVERIFY(m_dir.isValid());
         m_tone = m_dir.filePath(QStringLiteral("tone.wav"));
         QVERIFY(test::writeToneWav(m_tone, 2.0));

@@ -3,6 +3,7 @@
 
 #include "dialogs/lipsyncdialog.h"
 #include "document/document.h"
+#include "i18n/translations.h"
 #include "speech/tts.h"
 
 #include <QDoubleSpinBox>
@@ -84,7 +85,12 @@ class TestLipSyncDialog : public QObject
     }
 
 private Q_SLOTS:
-    void initTestCase() { QVERIFY(m_dir.isValid()); }
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        // As the editor starts: English with its plural forms ("4 syllables").
+        QVERIFY(installTranslations(QCoreApplication::instance(), QString()));
+    }
 
     void realRecordingEndsWithKeysAndSyllablesAsOneStep()
     {

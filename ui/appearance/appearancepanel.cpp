@@ -1,5 +1,7 @@
 #include "appearance/appearancepanel.h"
 
+#include "views/displaynames.h"
+
 #include <QCheckBox>
 #include <QColorDialog>
 #include <QComboBox>
@@ -68,11 +70,11 @@ AppearancePanel::AppearancePanel(Document *document, QWidget *parent)
     m_eyebrows = new QComboBox;
     m_eyebrows->setObjectName(QStringLiteral("eyebrowVariant"));
     for (EyebrowVariant v : {EyebrowVariant::Polyline, EyebrowVariant::Bezier, EyebrowVariant::Thick})
-        m_eyebrows->addItem(eyebrowVariantName(v), int(v));
+        m_eyebrows->addItem(variantTitle(eyebrowVariantName(v)), int(v));
     m_nose = new QComboBox;
     m_nose->setObjectName(QStringLiteral("noseVariant"));
     for (NoseVariant v : {NoseVariant::Full, NoseVariant::Simple, NoseVariant::Tip})
-        m_nose->addItem(noseVariantName(v), int(v));
+        m_nose->addItem(variantTitle(noseVariantName(v)), int(v));
     m_cute = new QCheckBox(tr("Cute proportions"));
     m_cute->setObjectName(QStringLiteral("cute"));
     m_caricature = new QSlider(Qt::Horizontal);
@@ -94,7 +96,7 @@ AppearancePanel::AppearancePanel(Document *document, QWidget *parent)
     m_glasses = new QComboBox;
     m_glasses->setObjectName(QStringLiteral("glasses"));
     for (GlassesShape g : {GlassesShape::None, GlassesShape::Round, GlassesShape::Rectangular, GlassesShape::Rimless})
-        m_glasses->addItem(glassesShapeName(g), int(g));
+        m_glasses->addItem(variantTitle(glassesShapeName(g)), int(g));
     m_moustache = new QCheckBox(tr("Moustache"));
     m_moustache->setObjectName(QStringLiteral("moustache"));
     m_beard = new QCheckBox(tr("Beard"));
@@ -170,8 +172,8 @@ QWidget *AppearancePanel::buildComponents()
         grid->addWidget(row.fill, r, 1);
         grid->addWidget(row.stroke, r, 2);
         grid->addWidget(row.width, r, 3);
-        connect(row.visible, &QCheckBox::clicked, this, [this, key = key](bool on) {
-            change(tr("Show %1").arg(key), [&](Style &s) {
+        connect(row.visible, &QCheckBox::clicked, this, [this, key = key, label = label](bool on) {
+            change(tr("Show %1").arg(label), [&](Style &s) {
                 for (const QString &k : keysOf(key)) {
                     ComponentStyle c = componentOf(s, k);
                     c.visible = on;

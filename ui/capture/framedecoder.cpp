@@ -2,6 +2,7 @@
 
 #include "track/videofilesource.h"
 
+#include <QCoreApplication>
 #include <QFutureWatcher>
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -67,8 +68,12 @@ struct FrameDecoder::Reader
                 break;
         }
         const QString problem = source->error();
-        *error = !problem.isEmpty() ? problem
-                                    : QStringLiteral("%1: has no frame %2 (it has %3)").arg(path).arg(index).arg(next);
+        *error = !problem.isEmpty()
+            ? problem
+            : QCoreApplication::translate("toonface::FrameDecoder", "%1: has no frame %2 (it has %3)")
+                  .arg(path)
+                  .arg(index)
+                  .arg(next);
         source.reset(); // at its end or broken: the next request starts over
         return {};
     }

@@ -228,8 +228,8 @@ bool ImportVideoDialog::openClip(const QString &path)
             m_slider->setRange(0, last);
             m_spin->setRange(0, last);
             const QSize size = m_decoder->frameSize();
-            const QString frames
-                = m_decoder->frameCount() > 0 ? tr("%1 frames").arg(m_decoder->frameCount()) : tr("frames not counted");
+            const QString frames = m_decoder->frameCount() > 0 ? tr("%n frame(s)", nullptr, m_decoder->frameCount())
+                                                               : tr("frames not counted");
             m_clipInfo->setText(tr("%1 × %2, %3 at %4 fps, %5, %6")
                                     .arg(size.width())
                                     .arg(size.height())

@@ -12,10 +12,11 @@ namespace toonface {
 
 namespace {
 
-QString tr(const char *text)
+// The context of this file's strings in the translations.
+struct LiveTakeText
 {
-    return QCoreApplication::translate("LiveTake", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(toonface::LiveTakeText)
+};
 
 } // namespace
 
@@ -24,7 +25,7 @@ bool commitTake(Document *document, const LiveTake &take, double at, const QStri
     QString unused;
     QString &out = message ? *message : unused;
     if (take.frames.isEmpty()) {
-        out = tr("Nothing was recorded: no frame with a face was tracked.");
+        out = LiveTakeText::tr("Nothing was recorded: no frame with a face was tracked.");
         return false;
     }
     // The microphone's mouth throughout, or (Both) where the camera lost the face.
@@ -38,20 +39,20 @@ bool commitTake(Document *document, const LiveTake &take, double at, const QStri
     if (sound) {
         QString error;
         if (!QDir().mkpath(QFileInfo(audioPath).absolutePath()) || !writeAudio(audioPath, take.audio, &error)) {
-            out = error.isEmpty() ? tr("%1: cannot create its folder").arg(audioPath) : error;
+            out = error.isEmpty() ? LiveTakeText::tr("%1: cannot create its folder").arg(audioPath) : error;
             return false;
         }
         after.timeline.setAudio(AudioClip {QFileInfo(audioPath).absoluteFilePath(), at, take.audio.duration()});
     }
-    document->changeAnimation(after, tr("Record Live Take"));
+    document->changeAnimation(after, LiveTakeText::tr("Record Live Take"));
     const QString length = QString::number(take.duration, 'f', 1);
     if (sound)
-        out = tr("Recorded %1 s (%2 frames) with its sound, saved as %3")
+        out = LiveTakeText::tr("Recorded %1 s (%2 frames) with its sound, saved as %3")
                   .arg(length)
                   .arg(take.frames.size())
                   .arg(QDir::toNativeSeparators(audioPath));
     else
-        out = tr("Recorded %1 s (%2 frames): motion only, no sound").arg(length).arg(take.frames.size());
+        out = LiveTakeText::tr("Recorded %1 s (%2 frames): motion only, no sound").arg(length).arg(take.frames.size());
     return true;
 }
 

@@ -168,12 +168,9 @@ void BlinksDialog::updateSummary()
         made += b.time >= rangeStart() && b.time < rangeEnd();
     const QString from = QString::number(rangeStart(), 'f', 2);
     const QString to = QString::number(rangeEnd(), 'f', 2);
-    QString text = made == 1 ? tr("1 blink from %1 s to %2 s.").arg(from, to)
-                             : tr("%1 blinks from %2 s to %3 s.").arg(made).arg(from, to);
+    QString text = tr("%n blink(s) from %1 s to %2 s.", nullptr, made).arg(from, to);
     if (replaced > 0)
-        text += QLatin1Char(' ')
-            + (replaced == 1 ? tr("The blink there now is replaced.")
-                             : tr("The %1 blinks there now are replaced.").arg(replaced));
+        text += QLatin1Char(' ') + tr("The %n blink(s) there now are replaced.", nullptr, replaced);
     m_summary->setText(text);
 }
 

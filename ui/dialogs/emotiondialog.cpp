@@ -5,6 +5,7 @@
 #include "dialogs/secondsbox.h"
 #include "document/document.h"
 #include "face/emotion.h"
+#include "views/displaynames.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -27,18 +28,6 @@ constexpr int kThumbnailSize = 40;
 constexpr double kFrameMargin = 0.06; // of the face's size
 // A clip for an animation with nothing on it yet.
 constexpr double kEmptyAnimationRange = 2.0;
-
-QString emotionTitle(Emotion emotion)
-{
-    switch (emotion) {
-    case Emotion::Neutral: return EmotionDialog::tr("Neutral");
-    case Emotion::Smile: return EmotionDialog::tr("Smile");
-    case Emotion::Sad: return EmotionDialog::tr("Sad");
-    case Emotion::Angry: return EmotionDialog::tr("Angry");
-    case Emotion::Surprise: return EmotionDialog::tr("Surprise");
-    }
-    return QString();
-}
 
 QRectF faceFrame(const FaceModel &face)
 {

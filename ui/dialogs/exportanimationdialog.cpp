@@ -315,8 +315,7 @@ void ExportAnimationDialog::updateSummary()
     const ExportRequest r = request();
     const int frames = exportFrameCount(r);
     QStringList parts;
-    parts << (frames == 1 ? tr("1 frame") : tr("%1 frames").arg(frames))
-          << tr("%1 s").arg(frames / double(r.fps), 0, 'f', 1);
+    parts << tr("%n frame(s)", nullptr, frames) << tr("%1 s").arg(frames / double(r.fps), 0, 'f', 1);
     if (isRasterFormat(r.format)) {
         const QSize size = exportFrameSize(r);
         parts << tr("%1 × %2 px").arg(size.width()).arg(size.height());

@@ -167,9 +167,9 @@ void LipSyncDialog::checkScript()
         if (parse.ok()) {
             const int n = int(parse.script.syllables.size());
             if (parse.script.language == Language::English)
-                m_scriptState->setText(n == 1 ? tr("1 word in English") : tr("%1 words in English").arg(n));
+                m_scriptState->setText(tr("%n word(s) in English", nullptr, n));
             else
-                m_scriptState->setText(n == 1 ? tr("1 syllable in Mandarin") : tr("%1 syllables in Mandarin").arg(n));
+                m_scriptState->setText(tr("%n syllable(s) in Mandarin", nullptr, n));
             m_scriptState->setStyleSheet(QString());
         } else {
             m_scriptState->setText(parse.error);

@@ -9,6 +9,7 @@
 #include "document/companionfile.h"
 #include "document/document.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QFileDialog>
@@ -161,7 +162,8 @@ std::optional<SpeechTask::Job> SayTextDialog::prepare()
             return out;
         }
         if (!QDir().mkpath(QFileInfo(path).absolutePath())) {
-            out.error = QStringLiteral("%1: cannot create its folder").arg(path);
+            out.error
+                = QCoreApplication::translate("toonface::SayTextDialog", "%1: cannot create its folder").arg(path);
             return out;
         }
         if (!writeAudio(path, spoken.audio, &out.error))

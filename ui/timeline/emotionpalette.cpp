@@ -1,6 +1,7 @@
 #include "timeline/emotionpalette.h"
 
 #include "timeline/timelineicons.h"
+#include "views/displaynames.h"
 
 #include <QApplication>
 #include <QDrag>
@@ -38,7 +39,7 @@ EmotionPalette::EmotionPalette(QWidget *parent)
         button->setAutoRaise(true);
         button->setToolTip(tr("%1: click to apply to the selection (or 2 s from the playhead), or drag onto the "
                               "emotion track")
-                               .arg(emotionName(emotion)));
+                               .arg(emotionTitle(emotion)));
         button->setProperty("emotion", int(emotion));
         button->installEventFilter(this);
         connect(button, &QToolButton::clicked, this, [this, emotion]() { Q_EMIT applied(emotion); });

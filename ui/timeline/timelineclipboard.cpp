@@ -2,6 +2,8 @@
 // Timeline of their own, shifted to start at 0, written by Timeline::toJson.
 #include "timeline/timelineedits.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 #include <cmath>
 
@@ -95,11 +97,13 @@ std::optional<Animation> pasteItems(
         return std::nullopt;
     };
     if (items.value(QStringLiteral("format")).toString() != kFormat)
-        return fail(QStringLiteral("the clipboard holds no timeline items"));
+        return fail(QCoreApplication::translate("toonface::TimelineEdits", "the clipboard holds no timeline items"));
     QString why;
     const std::optional<Timeline> copy = Timeline::fromJson(items.value(QStringLiteral("timeline")).toObject(), &why);
     if (!copy)
-        return fail(QStringLiteral("the clipboard's timeline items are damaged: %1").arg(why));
+        return fail(
+            QCoreApplication::translate("toonface::TimelineEdits", "the clipboard's timeline items are damaged: %1")
+                .arg(why));
     time = std::max(0.0, time);
 
     Animation out = animation;

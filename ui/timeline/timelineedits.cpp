@@ -4,6 +4,7 @@
 #include "speech/syllableshapes.h"
 #include "timeline/posetrack.h"
 
+#include <QCoreApplication>
 #include <QJsonArray>
 
 #include <algorithm>
@@ -636,14 +637,16 @@ std::optional<Animation> setSyllablePinyin(
         return std::nullopt;
     };
     if (syllable < 0 || syllable >= animation.syllables.size())
-        return fail(QStringLiteral("no syllable %1").arg(syllable));
+        return fail(QCoreApplication::translate("toonface::TimelineEdits", "no syllable %1").arg(syllable));
     const LipsyncSyllable &old = animation.syllables[syllable];
     if (old.pinyin.isEmpty())
-        return fail(QStringLiteral("'%1' is an English word: it has no pinyin").arg(old.text));
+        return fail(QCoreApplication::translate("toonface::TimelineEdits", "'%1' is an English word: it has no pinyin")
+                        .arg(old.text));
     const std::optional<PinyinSyllable> parsed = parsePinyinSyllable(text.trimmed());
     const QVector<MouthShape> shapes = parsed ? syllableShapes(parsed->pinyin) : QVector<MouthShape>();
     if (shapes.isEmpty())
-        return fail(QStringLiteral("'%1' is not a Mandarin syllable").arg(text.trimmed()));
+        return fail(QCoreApplication::translate("toonface::TimelineEdits", "'%1' is not a Mandarin syllable")
+                        .arg(text.trimmed()));
 
     Animation out = animation;
     LipsyncSyllable &syl = out.syllables[syllable];

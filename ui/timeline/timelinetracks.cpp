@@ -5,6 +5,7 @@
 #include "timeline/mouthicons.h"
 #include "timeline/posetrack.h"
 #include "timeline/timelinegeometry.h"
+#include "views/displaynames.h"
 
 #include <QPainter>
 #include <QPainterPath>
@@ -258,7 +259,7 @@ void paintEmotionRow(QPainter &p, const TimelineScene &s, double t0, double t1)
         if (r.width() > 40) {
             p.setPen(kText);
             p.drawText(r.adjusted(5, 0, -4, 0), Qt::AlignTop | Qt::AlignLeft,
-                QStringLiteral("%1  %2%").arg(emotionName(c.emotion)).arg(qRound(c.intensity * 100)));
+                QStringLiteral("%1  %2%").arg(emotionTitle(c.emotion)).arg(qRound(c.intensity * 100)));
         }
         if (wide) {
             p.setPen(QPen(color.darker(200), 1));

@@ -5,6 +5,7 @@
 #include "timeline/shapepalette.h"
 #include "timeline/timelineicons.h"
 #include "timeline/timelineview.h"
+#include "views/displaynames.h"
 
 #include <QAction>
 #include <QLabel>
@@ -131,7 +132,7 @@ void TimelineWidget::createActions()
     m_actions.addShake = make(tr("Add Head Shake"), QStringLiteral("timeline-shake"));
     m_actions.addNod = make(tr("Add Head Nod"), QStringLiteral("timeline-nod"));
     for (Emotion e : kAllEmotions) {
-        auto *a = new QAction(emotionIcon(e), tr("Apply %1").arg(emotionName(e)), this);
+        auto *a = new QAction(emotionIcon(e), tr("Apply %1").arg(emotionTitle(e)), this);
         a->setObjectName(QStringLiteral("timeline-emotion-%1").arg(emotionName(e)));
         connect(a, &QAction::triggered, m_view, [this, e]() { m_view->applyEmotion(e); });
         m_actions.applyEmotion[int(e)] = a;

@@ -4,6 +4,7 @@
 #include "document/autosaver.h"
 #include "export/cartoonfile.h"
 #include "render/svgface.h"
+#include "views/displaynames.h"
 #include "views/photoview.h"
 #include "views/pointhandle.h"
 #include "views/previewview.h"
@@ -322,10 +323,7 @@ void MainWindow::createToolBar()
     m_styleCombo->setToolTip(tr("Drawing style of the cartoon"));
     const QStringList presets = Style::presetNames();
     for (const QString &name : presets) {
-        QString label = name;
-        if (!label.isEmpty())
-            label[0] = label[0].toUpper();
-        m_styleCombo->addItem(label, name);
+        m_styleCombo->addItem(styleTitle(name), name);
     }
     connect(m_styleCombo, &QComboBox::activated, this, &MainWindow::onStyleActivated);
     bar->addWidget(m_styleCombo);

@@ -16,24 +16,29 @@ namespace toonface {
 
 namespace {
 
-QString tr(const char *text)
+// The context of this file's strings in the translations.
+struct Questions
 {
-    return QCoreApplication::translate("MainWindow", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(toonface::Questions)
+};
 
 } // namespace
 
 bool askToRestore(QWidget *parent, const RecoveryFile &kept)
 {
     const QString name
-        = kept.originalPath.isEmpty() ? tr("an untitled project") : QFileInfo(kept.originalPath).fileName();
-    QMessageBox box(QMessageBox::Question, tr("Restore Unsaved Work"),
-        tr("Toonface did not close properly. Unsaved work on %1 from %2 was kept.")
-            .arg(name, QLocale().toString(kept.written, QLocale::ShortFormat)),
+        = kept.originalPath.isEmpty() ? Questions::tr("an untitled project") : QFileInfo(kept.originalPath).fileName();
+    QMessageBox box(QMessageBox::Question, Questions::tr("Restore Unsaved Work"),
+        Questions::tr("Toonface did not close properly. Unsaved work on %1 from %2 was kept.")
+            .arg(name,
+                // The time in 24 hours: Qt 6.4 prints the Taiwanese short format's day period
+                // ("Bh:mm") as a letter B.
+                QLocale().toString(kept.written.date(), QLocale::ShortFormat) + QLatin1Char(' ')
+                    + kept.written.time().toString(QStringLiteral("HH:mm"))),
         QMessageBox::NoButton, parent);
-    box.setInformativeText(tr("Restore it? Discarding deletes the kept copy."));
-    QPushButton *restore = box.addButton(tr("&Restore"), QMessageBox::AcceptRole);
-    box.addButton(tr("&Discard"), QMessageBox::DestructiveRole);
+    box.setInformativeText(Questions::tr("Restore it? Discarding deletes the kept copy."));
+    QPushButton *restore = box.addButton(Questions::tr("&Restore"), QMessageBox::AcceptRole);
+    box.addButton(Questions::tr("&Discard"), QMessageBox::DestructiveRole);
     box.setDefaultButton(restore);
     box.exec();
     return box.clickedButton() == restore;
@@ -42,11 +47,12 @@ bool askToRestore(QWidget *parent, const RecoveryFile &kept)
 void offerAverageFace(QWidget *parent, Document *document, const QString &reason)
 {
     // The detector's reason already says what was missing: say it once, naming the file.
-    const QString text = reason.isEmpty() ? tr("No face was found in %1.").arg(document->displayName())
-                                          : tr("%1: %2").arg(document->displayName(), reason);
-    QMessageBox box(QMessageBox::Information, tr("No Face Found"), text, QMessageBox::NoButton, parent);
-    box.setInformativeText(tr("You can place an average face on the photo and drag its points into place by hand."));
-    QPushButton *place = box.addButton(tr("&Place Average Face"), QMessageBox::AcceptRole);
+    const QString text = reason.isEmpty() ? Questions::tr("No face was found in %1.").arg(document->displayName())
+                                          : Questions::tr("%1: %2").arg(document->displayName(), reason);
+    QMessageBox box(QMessageBox::Information, Questions::tr("No Face Found"), text, QMessageBox::NoButton, parent);
+    box.setInformativeText(
+        Questions::tr("You can place an average face on the photo and drag its points into place by hand."));
+    QPushButton *place = box.addButton(Questions::tr("&Place Average Face"), QMessageBox::AcceptRole);
     box.addButton(QMessageBox::Cancel);
     box.setDefaultButton(place);
     box.exec();
@@ -56,7 +62,7 @@ void offerAverageFace(QWidget *parent, Document *document, const QString &reason
     const double width = 0.4 * std::min(size.width(), size.height());
     QRectF faceBox(0, 0, width, 1.2 * width);
     faceBox.moveCenter(QPointF(size.width() / 2, size.height() / 2));
-    document->replaceFace(averageFace(faceBox, document->canvasSize()), false, tr("Place average face"));
+    document->replaceFace(averageFace(faceBox, document->canvasSize()), false, Questions::tr("Place average face"));
 }
 
 } // namespace toonface

@@ -1,6 +1,7 @@
 #include "window/settings.h"
 
 #include "detect/detector.h"
+#include "i18n/translations.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -22,6 +23,7 @@ const QString showPointIds = QStringLiteral("view/showPointIds");
 const QString detectionMethod = QStringLiteral("detection/method");
 const QString overlayOpacity = QStringLiteral("view/overlayOpacity");
 const QString cameraDescription = QStringLiteral("capture/camera");
+const QString language = QStringLiteral("interface/language");
 } // namespace key
 
 constexpr int kDefaultAutosaveInterval = 60;
@@ -154,6 +156,20 @@ QString Settings::cameraDescription() const
 void Settings::setCameraDescription(const QString &description)
 {
     m_settings.setValue(key::cameraDescription, description);
+}
+
+QString Settings::language() const
+{
+    const QString name = m_settings.value(key::language).toString();
+    return languageSettingNames().contains(name) ? name : QString();
+}
+
+void Settings::setLanguage(const QString &language)
+{
+    if (languageSettingNames().contains(language))
+        m_settings.setValue(key::language, language);
+    else
+        m_settings.remove(key::language);
 }
 
 } // namespace toonface

@@ -55,6 +55,11 @@ public:
     QString cameraDescription() const;
     void setCameraDescription(const QString &description);
 
+    // The interface's language (languageSettingNames() of i18n/translations.h): "" follows the
+    // system, "en", "zh_TW" or "zh_CN"; an unknown stored name reads as "". Read at start-up.
+    QString language() const;
+    void setLanguage(const QString &language);
+
     void sync() { m_settings.sync(); }
 
 private:

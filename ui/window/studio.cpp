@@ -9,6 +9,7 @@
 #include "dialogs/exportanimationdialog.h"
 #include "dialogs/lipsyncdialog.h"
 #include "dialogs/mouthshapesdialog.h"
+#include "dialogs/preferencesdialog.h"
 #include "dialogs/saytextdialog.h"
 #include "document/document.h"
 #include "export/animationexport.h"
@@ -21,6 +22,7 @@
 #include "views/themedicon.h"
 
 #include <QAction>
+#include <QCoreApplication>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileInfo>
@@ -122,6 +124,7 @@ void Studio::install(PreviewView *preview, QAction *beforeMenu)
     // The transport's shortcuts (Space, arrows, Home, End) work anywhere in the window.
     m_window->addActions(m_playback->actions());
     installVideo();
+    installPreferences();
     updateEnabled();
 }
 
@@ -163,15 +166,39 @@ void Studio::installVideo()
     QAction *toggle = m_videoDock->toggleViewAction();
     toggle->setObjectName(QStringLiteral("showVideo"));
     toggle->setStatusTip(tr("Show the imported clip beside the cartoon"));
-    QMenu *view = nullptr;
-    for (QAction *a : m_window->menuBar()->actions()) {
-        if (a->menu() && a->text().remove(QLatin1Char('&')) == tr("View"))
-            view = a->menu();
-    }
+    QMenu *view = windowMenu("&View");
     (view ? view : m_animationMenu)->addAction(toggle);
     m_transport->insertAction(m_exportAnimation, m_importVideo);
 }
 // --- end of Import Video ---------------------------------------------------------------------
+
+QMenu *Studio::windowMenu(const char *title) const
+{
+    // The main window's titles, translated in its context as it shows them.
+    const QString text = QCoreApplication::translate("toonface::MainWindow", title);
+    for (QAction *a : m_window->menuBar()->actions()) {
+        if (a->menu() && a->text() == text)
+            return a->menu();
+    }
+    return nullptr;
+}
+
+// Edit ▸ Preferences…: the interface's language.
+void Studio::installPreferences()
+{
+    m_preferences = new QAction(tr("Pre&ferences…"), this);
+    m_preferences->setObjectName(QStringLiteral("preferences"));
+    m_preferences->setShortcut(QKeySequence::Preferences);
+    m_preferences->setMenuRole(QAction::PreferencesRole);
+    m_preferences->setStatusTip(tr("Choose the language of the interface"));
+    connect(m_preferences, &QAction::triggered, this, [this] { PreferencesDialog::run(m_window); });
+    if (QMenu *edit = windowMenu("&Edit")) {
+        edit->addSeparator();
+        edit->addAction(m_preferences);
+    } else {
+        m_window->addAction(m_preferences);
+    }
+}
 
 QString Studio::defaultExportPath(const QString &suffix) const
 {

@@ -52,6 +52,8 @@ public:
     // File ▸ Capture from Camera… and Animation ▸ Live Mode…, added to those menus by install().
     QAction *captureCameraAction() const { return m_captureCamera; }
     QAction *liveModeAction() const { return m_liveMode; }
+    // Edit ▸ Preferences… (the interface's language), added to the Edit menu by install().
+    QAction *preferencesAction() const { return m_preferences; }
     // The live mode window once opened (it is kept, hidden, when closed); null before.
     LiveWindow *liveWindow() const { return m_liveWindow; }
     // --- end of camera capture and live mode ---
@@ -72,6 +74,9 @@ private:
     void installCapture();
     void captureFromCamera();
     void showLiveMode();
+    void installPreferences();
+    // The main window's menu titled `title` (its source text, e.g. "&View"), or null.
+    QMenu *windowMenu(const char *title) const;
 
     Document *m_document;
     QMainWindow *m_window;
@@ -94,6 +99,7 @@ private:
     QAction *m_captureCamera = nullptr;
     QAction *m_liveMode = nullptr;
     LiveWindow *m_liveWindow = nullptr;
+    QAction *m_preferences = nullptr;
 };
 
 } // namespace toonface

@@ -1,0 +1,2935 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN">
+<context>
+    <name>DetectionSteps</name>
+    <message>
+        <source>B1 – dark regions (1st level, intensity)</source>
+        <translation>B1 – 暗部区域（第一层，亮度）</translation>
+    </message>
+    <message>
+        <source>B2 – face regions (2nd level, hue)</source>
+        <translation>B2 – 脸部区域（第二层，色相）</translation>
+    </message>
+    <message>
+        <source>B3 – B1 and B2 (for the hair region)</source>
+        <translation>B3 – B1 与 B2（用于头发区域）</translation>
+    </message>
+    <message>
+        <source>Face and hair regions</source>
+        <translation>脸部与头发区域</translation>
+    </message>
+    <message>
+        <source>Eye-pair candidates and the chosen pair</source>
+        <translation>双眼候选与选定的一对</translation>
+    </message>
+    <message>
+        <source>Eyeballs and the 2d square</source>
+        <translation>眼球与 2d 正方形</translation>
+    </message>
+    <message>
+        <source>Edges and division lines</source>
+        <translation>边缘与分割线</translation>
+    </message>
+    <message>
+        <source>Feature regions</source>
+        <translation>五官区域</translation>
+    </message>
+    <message>
+        <source>Feature points (thesis pipeline)</source>
+        <translation>特征点（论文流程）</translation>
+    </message>
+    <message>
+        <source>Landmarks</source>
+        <translation>关键点</translation>
+    </message>
+    <message>
+        <source>Hair region</source>
+        <translation>头发区域</translation>
+    </message>
+    <message>
+        <source>Points, close-up</source>
+        <translation>特征点特写</translation>
+    </message>
+    <message>
+        <source>thesis pipeline</source>
+        <translation>论文流程</translation>
+    </message>
+    <message>
+        <source>%1, close-up</source>
+        <translation>%1，特写</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>MovePointCommand</name>
+    <message>
+        <source>Move point %1</source>
+        <translation>移动特征点 %1</translation>
+    </message>
+</context>
+<context>
+    <name>PointHandle</name>
+    <message>
+        <source>hair</source>
+        <translation>头发</translation>
+    </message>
+    <message>
+        <source>face contour</source>
+        <translation>脸部轮廓</translation>
+    </message>
+    <message>
+        <source>ears</source>
+        <translation>耳朵</translation>
+    </message>
+    <message>
+        <source>eyebrows</source>
+        <translation>眉毛</translation>
+    </message>
+    <message>
+        <source>eyes</source>
+        <translation>眼睛</translation>
+    </message>
+    <message>
+        <source>nose</source>
+        <translation>鼻子</translation>
+    </message>
+    <message>
+        <source>mouth</source>
+        <translation>嘴巴</translation>
+    </message>
+    <message>
+        <source>Point %1 (%2)</source>
+        <translation>特征点 %1（%2）</translation>
+    </message>
+    <message>
+        <source>Control point: animation moves it</source>
+        <translation>控制点：动画会移动它</translation>
+    </message>
+    <message>
+        <source>Placed by hand: re-detection keeps it</source>
+        <translation>手动放置：重新检测时保留</translation>
+    </message>
+</context>
+<context>
+    <name>PoseKeyDrag</name>
+    <message>
+        <source>Left brow, outer</source>
+        <translation>左眉，外侧</translation>
+    </message>
+    <message>
+        <source>Left brow, outer middle</source>
+        <translation>左眉，外侧中段</translation>
+    </message>
+    <message>
+        <source>Left brow, inner middle</source>
+        <translation>左眉，内侧中段</translation>
+    </message>
+    <message>
+        <source>Left brow, inner</source>
+        <translation>左眉，内侧</translation>
+    </message>
+    <message>
+        <source>Right brow, inner</source>
+        <translation>右眉，内侧</translation>
+    </message>
+    <message>
+        <source>Right brow, inner middle</source>
+        <translation>右眉，内侧中段</translation>
+    </message>
+    <message>
+        <source>Right brow, outer middle</source>
+        <translation>右眉，外侧中段</translation>
+    </message>
+    <message>
+        <source>Right brow, outer</source>
+        <translation>右眉，外侧</translation>
+    </message>
+    <message>
+        <source>Left upper lid</source>
+        <translation>左上眼睑</translation>
+    </message>
+    <message>
+        <source>Left lower lid</source>
+        <translation>左下眼睑</translation>
+    </message>
+    <message>
+        <source>Right upper lid</source>
+        <translation>右上眼睑</translation>
+    </message>
+    <message>
+        <source>Right lower lid</source>
+        <translation>右下眼睑</translation>
+    </message>
+    <message>
+        <source>Left mouth corner</source>
+        <translation>左嘴角</translation>
+    </message>
+    <message>
+        <source>Right mouth corner</source>
+        <translation>右嘴角</translation>
+    </message>
+    <message>
+        <source>Upper lip</source>
+        <translation>上唇</translation>
+    </message>
+    <message>
+        <source>Lower lip</source>
+        <translation>下唇</translation>
+    </message>
+    <message>
+        <source>Jaw (moves the lower lip and the chin)</source>
+        <translation>下颌（带动下唇与下巴）</translation>
+    </message>
+    <message>
+        <source>Set Pose Key</source>
+        <translation>设置姿势关键帧</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>No sound</source>
+        <translation>无声音</translation>
+    </message>
+</context>
+<context>
+    <name>TimelineLayout</name>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>Audio</source>
+        <translation>音频</translation>
+    </message>
+    <message>
+        <source>Script</source>
+        <translation>文稿</translation>
+    </message>
+    <message>
+        <source>Mouth</source>
+        <translation>口型</translation>
+    </message>
+    <message>
+        <source>Emotion</source>
+        <translation>表情</translation>
+    </message>
+    <message>
+        <source>Blinks</source>
+        <translation>眨眼</translation>
+    </message>
+    <message>
+        <source>Head</source>
+        <translation>头部</translation>
+    </message>
+    <message>
+        <source>Gaze</source>
+        <translation>视线</translation>
+    </message>
+    <message>
+        <source>Pose</source>
+        <translation>姿势</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Toonface: personal cartoon faces from photos.</source>
+        <translation>Toonface：用照片制作个人卡通脸。</translation>
+    </message>
+    <message>
+        <source>A photo or a .toonface project to open.</source>
+        <translation>要打开的照片或 .toonface 项目。</translation>
+    </message>
+    <message>
+        <source>Detect faces with METHOD in this session: auto, classic or landmarks.</source>
+        <translation>本次会话使用 METHOD 检测人脸：auto、classic 或 landmarks。</translation>
+    </message>
+    <message>
+        <source>unknown detection method &quot;%1&quot; (auto, classic or landmarks)</source>
+        <translation>未知的检测方法“%1”（auto、classic 或 landmarks）</translation>
+    </message>
+</context>
+<context>
+    <name>toonface</name>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 秒</translation>
+    </message>
+    <message>
+        <source>%1: not a readable image</source>
+        <translation>%1：不是可读取的图像</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::AppearancePanel</name>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Skin</source>
+        <translation>皮肤</translation>
+    </message>
+    <message>
+        <source>Hair</source>
+        <translation>头发</translation>
+    </message>
+    <message>
+        <source>Brows</source>
+        <translation>眉毛</translation>
+    </message>
+    <message>
+        <source>Eyes</source>
+        <translation>眼睛</translation>
+    </message>
+    <message>
+        <source>Irises</source>
+        <translation>虹膜</translation>
+    </message>
+    <message>
+        <source>Lips</source>
+        <translation>嘴唇</translation>
+    </message>
+    <message>
+        <source>Nose</source>
+        <translation>鼻子</translation>
+    </message>
+    <message>
+        <source>Cheeks</source>
+        <translation>脸颊</translation>
+    </message>
+    <message>
+        <source>Glasses</source>
+        <translation>眼镜</translation>
+    </message>
+    <message>
+        <source>Moustache</source>
+        <translation>小胡子</translation>
+    </message>
+    <message>
+        <source>Beard</source>
+        <translation>胡须</translation>
+    </message>
+    <message>
+        <source>Hat</source>
+        <translation>帽子</translation>
+    </message>
+    <message>
+        <source>Drawing</source>
+        <translation>绘制</translation>
+    </message>
+    <message>
+        <source>Cute proportions</source>
+        <translation>可爱比例</translation>
+    </message>
+    <message>
+        <source>How much the drawing exaggerates what makes this face its own (0 = exact)</source>
+        <translation>绘图夸张这张脸独有特征的程度（0 = 写实）</translation>
+    </message>
+    <message>
+        <source>Eyebrows:</source>
+        <translation>眉毛：</translation>
+    </message>
+    <message>
+        <source>Nose:</source>
+        <translation>鼻子：</translation>
+    </message>
+    <message>
+        <source>Caricature:</source>
+        <translation>夸张程度：</translation>
+    </message>
+    <message>
+        <source>Worn and grown</source>
+        <translation>佩戴与毛发</translation>
+    </message>
+    <message>
+        <source>Bald head</source>
+        <translation>光头</translation>
+    </message>
+    <message>
+        <source>Glasses:</source>
+        <translation>眼镜：</translation>
+    </message>
+    <message>
+        <source>Resample colours from the photo</source>
+        <translation>从照片重新取色</translation>
+    </message>
+    <message>
+        <source>Skin, hair, eyes and lips from the photo (its colour cast taken out), and what the person wears</source>
+        <translation>从照片获取皮肤、头发、眼睛和嘴唇的颜色（去除色偏），以及人物的穿戴</translation>
+    </message>
+    <message>
+        <source>Eyebrows</source>
+        <translation>眉毛</translation>
+    </message>
+    <message>
+        <source>Cute</source>
+        <translation>可爱</translation>
+    </message>
+    <message>
+        <source>Caricature</source>
+        <translation>夸张程度</translation>
+    </message>
+    <message>
+        <source>Resample colours</source>
+        <translation>重新取色</translation>
+    </message>
+    <message>
+        <source>Colours and lines</source>
+        <translation>颜色与线条</translation>
+    </message>
+    <message>
+        <source>Shown</source>
+        <translation>显示</translation>
+    </message>
+    <message>
+        <source>Fill</source>
+        <translation>填充</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>线条</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>粗细</translation>
+    </message>
+    <message>
+        <source>Line weight in hundredths of the eye distance</source>
+        <translation>线条粗细，以双眼距离的百分之一为单位</translation>
+    </message>
+    <message>
+        <source>Show %1</source>
+        <translation>显示%1</translation>
+    </message>
+    <message>
+        <source>Line weight</source>
+        <translation>线条粗细</translation>
+    </message>
+    <message>
+        <source>Line colour</source>
+        <translation>线条颜色</translation>
+    </message>
+    <message>
+        <source>Fill colour</source>
+        <translation>填充颜色</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::ApplyDetection</name>
+    <message>
+        <source>Use another face</source>
+        <translation>使用另一张脸</translation>
+    </message>
+    <message>
+        <source>Detect face</source>
+        <translation>检测人脸</translation>
+    </message>
+    <message>
+        <source>Sample colours</source>
+        <translation>采样颜色</translation>
+    </message>
+    <message>
+        <source>Re-detect keeping my points</source>
+        <translation>重新检测并保留我的特征点</translation>
+    </message>
+    <message>
+        <source>Re-detect points</source>
+        <translation>重新检测特征点</translation>
+    </message>
+    <message>
+        <source>Face found by the %1 method in %2 ms.</source>
+        <translation>用 %1 方法找到人脸，耗时 %2 毫秒。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n faces found: using the one you chose (%1, %2 ms).</source>
+        <translation>
+            <numerusform>找到 %n 张脸：使用您选择的那张（%1，%2 毫秒）。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n faces found: using the largest, most central one (%1, %2 ms). Click another face&apos;s box to switch.</source>
+        <translation>
+            <numerusform>找到 %n 张脸：使用最大、最居中的那张（%1，%2 毫秒）。单击其他脸的方框即可切换。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The landmark method could not serve: %1</source>
+        <translation>关键点方法无法使用：%1</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::Autosaver</name>
+    <message>
+        <source>%1: cannot write the recovery file: %2</source>
+        <translation>%1：无法写入恢复文件：%2</translation>
+    </message>
+    <message>
+        <source>%1: cannot write the recovery file</source>
+        <translation>%1：无法写入恢复文件</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::BlinksDialog</name>
+    <message>
+        <source>&amp;From</source>
+        <translation>从(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Add Blinks</source>
+        <translation>添加眨眼</translation>
+    </message>
+    <message>
+        <source>Blinks at a person&apos;s pace: about one every three and a half seconds, now and then two in a row. The same seed always gives the same blinks.</source>
+        <translation>按真人的节奏眨眼：大约每三秒半一次，偶尔连眨两下。相同的种子总是生成相同的眨眼。</translation>
+    </message>
+    <message>
+        <source>&amp;New Seed</source>
+        <translation>新种子(&amp;N)</translation>
+    </message>
+    <message>
+        <source>The &amp;whole animation (%1 s)</source>
+        <translation>整段动画（%1 秒）(&amp;W)</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>到</translation>
+    </message>
+    <message>
+        <source>&amp;Seed:</source>
+        <translation>种子(&amp;S)：</translation>
+    </message>
+    <message>
+        <source>Over:</source>
+        <translation>范围：</translation>
+    </message>
+    <message>
+        <source>The range ends before it starts.</source>
+        <translation>范围的结束早于开始。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n blink(s) from %1 s to %2 s.</source>
+        <translation>
+            <numerusform>从 %1 秒到 %2 秒共 %n 次眨眼。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The %n blink(s) there now are replaced.</source>
+        <translation>
+            <numerusform>此范围原有的 %n 次眨眼将被替换。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>toonface::CameraFeed</name>
+    <message>
+        <source>No camera was found on this computer. Connect a camera and try again, or open a photo (File ▸ Open) or a video instead.</source>
+        <translation>这台电脑上找不到摄像头。请连接摄像头后重试，或改为打开照片（文件 ▸ 打开）或视频。</translation>
+    </message>
+    <message>
+        <source>The camera “%1” stopped: %2</source>
+        <translation>摄像头“%1”已停止：%2</translation>
+    </message>
+    <message>
+        <source>The camera “%1” was disconnected.</source>
+        <translation>摄像头“%1”已断开连接。</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::CaptureDialog</name>
+    <message>
+        <source>&amp;Take Photo in 3 s</source>
+        <translation>3 秒后拍照(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Capture from Camera</source>
+        <translation>从摄像头拍摄</translation>
+    </message>
+    <message>
+        <source>Look straight at the camera with a relaxed face, mouth closed: the photo becomes the neutral face</source>
+        <translation>放松面部、闭上嘴巴，直视摄像头：这张照片将成为中性脸</translation>
+    </message>
+    <message>
+        <source>&amp;Camera:</source>
+        <translation>摄像头(&amp;C)：</translation>
+    </message>
+    <message>
+        <source>No camera</source>
+        <translation>没有摄像头</translation>
+    </message>
+    <message>
+        <source>No face in view yet.</source>
+        <translation>画面中还没有人脸。</translation>
+    </message>
+    <message>
+        <source>Face found: keep still and take the photo.</source>
+        <translation>找到人脸：请保持不动并拍照。</translation>
+    </message>
+    <message>
+        <source>Starting the camera…</source>
+        <translation>正在启动摄像头…</translation>
+    </message>
+    <message>
+        <source>Camera “%1”</source>
+        <translation>摄像头“%1”</translation>
+    </message>
+    <message>
+        <source>The camera has not shown a picture yet.</source>
+        <translation>摄像头尚未显示任何画面。</translation>
+    </message>
+    <message>
+        <source>%1: the photo cannot be written</source>
+        <translation>%1：无法写入照片</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::CartoonFile</name>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1：无法写入：%2</translation>
+    </message>
+    <message>
+        <source>%1: no image format: give the file a suffix (.svg, .png)</source>
+        <translation>%1：没有图像格式：请为文件加上扩展名（.svg、.png）</translation>
+    </message>
+    <message>
+        <source>%1: the cartoon could not be drawn</source>
+        <translation>%1：无法绘制卡通</translation>
+    </message>
+    <message>
+        <source>%1: cannot encode the image as %2</source>
+        <translation>%1：无法将图像编码为 %2</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::DetectionStepsUi</name>
+    <message>
+        <source>Detection &amp;Steps</source>
+        <translation>检测步骤(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Detection Steps</source>
+        <translation>检测步骤</translation>
+    </message>
+    <message>
+        <source>Step:</source>
+        <translation>步骤：</translation>
+    </message>
+    <message>
+        <source>Opacity:</source>
+        <translation>不透明度：</translation>
+    </message>
+    <message>
+        <source>How strongly the detection step covers the photo</source>
+        <translation>检测步骤覆盖照片的浓淡程度</translation>
+    </message>
+    <message>
+        <source>&amp;None</source>
+        <translation>无(&amp;N)</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Draw “%1” over the photo (%2.png with --debug-dir)</source>
+        <translation>在照片上绘制“%1”（使用 --debug-dir 时为 %2.png）</translation>
+    </message>
+    <message>
+        <source>%1…</source>
+        <translation>%1…</translation>
+    </message>
+    <message>
+        <source>Show “%1” in a window of its own (%2.png with --debug-dir)</source>
+        <translation>在独立窗口中显示“%1”（使用 --debug-dir 时为 %2.png）</translation>
+    </message>
+    <message>
+        <source>Show an intermediate image of the face detection over the photo</source>
+        <translation>在照片上显示人脸检测的中间图像</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::Detector</name>
+    <message>
+        <source>No face was found in the image (%1 x %2 pixels). A frontal, upright face at least %3 pixels wide is needed.</source>
+        <translation>在图像（%1 x %2 像素）中找不到人脸。需要一张正面、端正且至少 %3 像素宽的人脸。</translation>
+    </message>
+    <message>
+        <source>The image (%1 x %2 pixels) is too small to hold a face.</source>
+        <translation>图像（%1 x %2 像素）太小，容纳不下一张人脸。</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::Document</name>
+    <message>
+        <source>Untitled</source>
+        <translation>未命名</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::EmotionDialog</name>
+    <message>
+        <source>The emotions already there &amp;give way</source>
+        <translation>让已有的表情让位(&amp;G)</translation>
+    </message>
+    <message>
+        <source>Add Emotion</source>
+        <translation>添加表情</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>到</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>in</source>
+        <translation>淡入</translation>
+    </message>
+    <message>
+        <source>out</source>
+        <translation>淡出</translation>
+    </message>
+    <message>
+        <source>Otherwise the new emotion adds to the ones under it</source>
+        <translation>否则新表情会叠加在下方的表情上</translation>
+    </message>
+    <message>
+        <source>&amp;Emotion:</source>
+        <translation>表情(&amp;E)：</translation>
+    </message>
+    <message>
+        <source>&amp;From:</source>
+        <translation>从(&amp;F)：</translation>
+    </message>
+    <message>
+        <source>&amp;Intensity:</source>
+        <translation>强度(&amp;I)：</translation>
+    </message>
+    <message>
+        <source>Fade:</source>
+        <translation>淡入淡出：</translation>
+    </message>
+    <message>
+        <source>Add Emotion (%1)</source>
+        <translation>添加表情（%1）</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::EmotionPalette</name>
+    <message>
+        <source>%1: click to apply to the selection (or 2 s from the playhead), or drag onto the emotion track</source>
+        <translation>%1：单击应用到所选范围（或从播放头起 2 秒），或拖动到表情轨道</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::ExportAnimationDialog</name>
+    <message>
+        <source>SVG animation (SMIL)</source>
+        <translation>SVG 动画（SMIL）</translation>
+    </message>
+    <message>
+        <source>HTML player</source>
+        <translation>HTML 播放器</translation>
+    </message>
+    <message>
+        <source>MP4 video</source>
+        <translation>MP4 视频</translation>
+    </message>
+    <message>
+        <source>Animated GIF</source>
+        <translation>GIF 动画</translation>
+    </message>
+    <message>
+        <source>PNG sequence (a folder of frames)</source>
+        <translation>PNG 序列（一个存放帧的文件夹）</translation>
+    </message>
+    <message>
+        <source>SVG animation (*.svg)</source>
+        <translation>SVG 动画 (*.svg)</translation>
+    </message>
+    <message>
+        <source>HTML page (*.html *.htm)</source>
+        <translation>HTML 网页 (*.html *.htm)</translation>
+    </message>
+    <message>
+        <source>MP4 video (*.mp4)</source>
+        <translation>MP4 视频 (*.mp4)</translation>
+    </message>
+    <message>
+        <source>Animated GIF (*.gif)</source>
+        <translation>GIF 动画 (*.gif)</translation>
+    </message>
+    <message>
+        <source>Folder for the frames (*)</source>
+        <translation>帧文件夹 (*)</translation>
+    </message>
+    <message>
+        <source>Export Animation</source>
+        <translation>导出动画</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <source>Choose where to save the animation</source>
+        <translation>选择动画的保存位置</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>自动</translation>
+    </message>
+    <message>
+        <source>%1 px</source>
+        <translation>%1 像素</translation>
+    </message>
+    <message>
+        <source>The longer side of the video frames; the drawing is vector, so any size is sharp</source>
+        <translation>视频画面的长边；绘图是矢量图，任何尺寸都清晰</translation>
+    </message>
+    <message>
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <source>The head</source>
+        <translation>头部</translation>
+    </message>
+    <message>
+        <source>The whole photo</source>
+        <translation>整张照片</translation>
+    </message>
+    <message>
+        <source>&amp;Format:</source>
+        <translation>格式(&amp;F)：</translation>
+    </message>
+    <message>
+        <source>&amp;Save to:</source>
+        <translation>保存到(&amp;S)：</translation>
+    </message>
+    <message>
+        <source>Frame si&amp;ze:</source>
+        <translation>画面大小(&amp;Z)：</translation>
+    </message>
+    <message>
+        <source>Frame &amp;rate:</source>
+        <translation>帧率(&amp;R)：</translation>
+    </message>
+    <message>
+        <source>Fr&amp;aming:</source>
+        <translation>取景(&amp;A)：</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>导出(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;Show in Folder</source>
+        <translation>在文件夹中显示(&amp;S)</translation>
+    </message>
+    <message>
+        <source>%1 already exists. Replace it?</source>
+        <translation>%1 已存在。要替换吗？</translation>
+    </message>
+    <message>
+        <source>Exporting to %1…</source>
+        <translation>正在导出到 %1…</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>正在取消…</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n frame(s)</source>
+        <translation>
+            <numerusform>%n 帧</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 秒</translation>
+    </message>
+    <message>
+        <source>%1 × %2 px</source>
+        <translation>%1 × %2 像素</translation>
+    </message>
+    <message>
+        <source>vector drawing</source>
+        <translation>矢量图</translation>
+    </message>
+    <message>
+        <source>silent</source>
+        <translation>无声</translation>
+    </message>
+    <message>
+        <source>with sound</source>
+        <translation>有声音</translation>
+    </message>
+    <message>
+        <source>no sound</source>
+        <translation>无声音</translation>
+    </message>
+    <message>
+        <source>%1: the export stopped</source>
+        <translation>%1：导出已停止</translation>
+    </message>
+    <message>
+        <source>Exported to %1.</source>
+        <translation>已导出到 %1。</translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing was written.</source>
+        <translation>已取消：没有写入任何文件。</translation>
+    </message>
+    <message>
+        <source>Not exported: %1</source>
+        <translation>未导出：%1</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::FrameDecoder</name>
+    <message>
+        <source>%1: has no frame %2 (it has %3)</source>
+        <translation>%1：没有第 %2 帧（只有 %3 帧）</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::ImportVideoDialog</name>
+    <message>
+        <source>Snap to the nine mouth &amp;shapes (mouth keys)</source>
+        <translation>对齐九种口型(&amp;S)（口型关键帧）</translation>
+    </message>
+    <message>
+        <source>Keep the &amp;continuous motion (pose keys)</source>
+        <translation>保留连续动作(&amp;C)（姿势关键帧）</translation>
+    </message>
+    <message>
+        <source>Use the clip&apos;s s&amp;ound as the project&apos;s sound</source>
+        <translation>使用片段的声音作为项目的声音(&amp;O)</translation>
+    </message>
+    <message>
+        <source>At the &amp;playhead (%1)</source>
+        <translation>在播放头处（%1）(&amp;P)</translation>
+    </message>
+    <message>
+        <source>At the s&amp;tart (0 s)</source>
+        <translation>从开头（0 秒）(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Use the neutral frame as the p&amp;hoto (a new project with its face)</source>
+        <translation>使用中性帧作为照片(&amp;H)（以其人脸新建项目）</translation>
+    </message>
+    <message>
+        <source>Import Video</source>
+        <translation>导入视频</translation>
+    </message>
+    <message>
+        <source>Tracks a clip of a person speaking: the face of the neutral frame is the rest pose, and the motion of every other frame lands on the timeline as key frames (pose, blinks, gaze, head), editable like any others.</source>
+        <translation>跟踪一段人物说话的片段：中性帧的脸是静止姿势，其他每一帧的动作都会以关键帧（姿势、眨眼、视线、头部）放到时间轴上，可像其他关键帧一样编辑。</translation>
+    </message>
+    <message>
+        <source>A video of a face speaking</source>
+        <translation>一段人脸说话的视频</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <source>Choose a clip</source>
+        <translation>选择片段</translation>
+    </message>
+    <message>
+        <source>The frame whose face is at rest: mouth closed, eyes open, looking ahead</source>
+        <translation>人脸处于静止状态的帧：闭嘴、睁眼、直视前方</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>自动</translation>
+    </message>
+    <message>
+        <source>Landmarks</source>
+        <translation>关键点</translation>
+    </message>
+    <message>
+        <source>Classic (thesis ch. 6)</source>
+        <translation>经典（论文第 6 章）</translation>
+    </message>
+    <message>
+        <source>The project has no face yet: the neutral frame becomes its photo, saved as a PNG beside the clip</source>
+        <translation>项目还没有人脸：中性帧将成为它的照片，以 PNG 保存在片段旁</translation>
+    </message>
+    <message>
+        <source>&amp;Clip:</source>
+        <translation>片段(&amp;C)：</translation>
+    </message>
+    <message>
+        <source>&amp;Neutral frame:</source>
+        <translation>中性帧(&amp;N)：</translation>
+    </message>
+    <message>
+        <source>&amp;Method:</source>
+        <translation>方法(&amp;M)：</translation>
+    </message>
+    <message>
+        <source>Mouth:</source>
+        <translation>口型：</translation>
+    </message>
+    <message>
+        <source>Sound:</source>
+        <translation>声音：</translation>
+    </message>
+    <message>
+        <source>Starts:</source>
+        <translation>开始于：</translation>
+    </message>
+    <message>
+        <source>Photo:</source>
+        <translation>照片：</translation>
+    </message>
+    <message>
+        <source>&amp;Import</source>
+        <translation>导入(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Tracking frame %1 of %2</source>
+        <translation>正在跟踪第 %1 帧，共 %2 帧</translation>
+    </message>
+    <message>
+        <source>Tracking frame %1</source>
+        <translation>正在跟踪第 %1 帧</translation>
+    </message>
+    <message>
+        <source>No picture</source>
+        <translation>没有画面</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n frame(s)</source>
+        <translation>
+            <numerusform>%n 帧</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>frames not counted</source>
+        <translation>未统计帧数</translation>
+    </message>
+    <message>
+        <source>%1 × %2, %3 at %4 fps, %5, %6</source>
+        <translation>%1 × %2，%3，%4 fps，%5，%6</translation>
+    </message>
+    <message>
+        <source>with sound</source>
+        <translation>有声音</translation>
+    </message>
+    <message>
+        <source>no sound</source>
+        <translation>无声音</translation>
+    </message>
+    <message>
+        <source>Decoding…</source>
+        <translation>正在解码…</translation>
+    </message>
+    <message>
+        <source>Video (*.mp4 *.mov *.mkv *.webm *.avi *.mpg *.mpeg *.m4v *.gif);;All files (*)</source>
+        <translation>视频 (*.mp4 *.mov *.mkv *.webm *.avi *.mpg *.mpeg *.m4v *.gif);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>frame %1</source>
+        <translation>第 %1 帧</translation>
+    </message>
+    <message>
+        <source>Finding the face on frame %1</source>
+        <translation>正在第 %1 帧上查找人脸</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>正在取消…</translation>
+    </message>
+    <message>
+        <source>Nothing was changed.</source>
+        <translation>没有任何更改。</translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing was changed.</source>
+        <translation>已取消：没有任何更改。</translation>
+    </message>
+    <message>
+        <source>%1: no frame could be tracked</source>
+        <translation>%1：没有任何帧可以跟踪</translation>
+    </message>
+    <message>
+        <source>%1: cannot write the neutral frame there</source>
+        <translation>%1：无法在该处写入中性帧</translation>
+    </message>
+    <message>
+        <source>Import Video %1</source>
+        <translation>导入视频 %1</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::LanguageBox</name>
+    <message>
+        <source>Detect from the script</source>
+        <translation>根据文稿自动判断</translation>
+    </message>
+    <message>
+        <source>Mandarin (普通话)</source>
+        <translation>普通话</translation>
+    </message>
+    <message>
+        <source>English</source>
+        <translation>英语</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::LipSyncDialog</name>
+    <message>
+        <source>Lip Sync</source>
+        <translation>口型同步</translation>
+    </message>
+    <message>
+        <source>Lip Sync from Recording</source>
+        <translation>根据录音做口型同步</translation>
+    </message>
+    <message>
+        <source>Aligns a recording with the script it speaks, syllable by syllable. The mouth keys and the script&apos;s syllables where the recording plays are replaced; the rest of the timeline is kept.</source>
+        <translation>将录音与其朗读的文稿逐音节对齐。录音播放范围内的口型关键帧和文稿音节会被替换，时间轴的其余部分保持不变。</translation>
+    </message>
+    <message>
+        <source>An audio file, or a video whose sound is used</source>
+        <translation>音频文件，或使用其声音的视频</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <source>Where the recording starts on the timeline</source>
+        <translation>录音在时间轴上的开始位置</translation>
+    </message>
+    <message>
+        <source>Type the words spoken in the recording (Chinese characters, pinyin, Zhuyin or English), or open a text file.</source>
+        <translation>输入录音中说的话（汉字、拼音、注音或英文），或打开文本文件。</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>打开…</translation>
+    </message>
+    <message>
+        <source>&amp;Recording:</source>
+        <translation>录音(&amp;R)：</translation>
+    </message>
+    <message>
+        <source>&amp;Starts at:</source>
+        <translation>开始于(&amp;S)：</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>语言(&amp;L)：</translation>
+    </message>
+    <message>
+        <source>S&amp;cript:</source>
+        <translation>文稿(&amp;C)：</translation>
+    </message>
+    <message>
+        <source>%1: cannot be read (%2)</source>
+        <translation>%1：无法读取（%2）</translation>
+    </message>
+    <message>
+        <source>%1: not a UTF-8 text file</source>
+        <translation>%1：不是 UTF-8 文本文件</translation>
+    </message>
+    <message>
+        <source>Recording</source>
+        <translation>录音</translation>
+    </message>
+    <message>
+        <source>Sound and video (*.wav *.flac *.mp3 *.ogg *.opus *.m4a *.aac *.mp4 *.mov *.mkv *.webm *.avi);;All files (*)</source>
+        <translation>声音和视频 (*.wav *.flac *.mp3 *.ogg *.opus *.m4a *.aac *.mp4 *.mov *.mkv *.webm *.avi);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Script</source>
+        <translation>文稿</translation>
+    </message>
+    <message>
+        <source>Text (*.txt);;All files (*)</source>
+        <translation>文本 (*.txt);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Type or open the script the recording speaks.</source>
+        <translation>输入或打开录音所朗读的文稿。</translation>
+    </message>
+    <message>
+        <source>Loading the character dictionary…</source>
+        <translation>正在加载字典…</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n word(s) in English</source>
+        <translation>
+            <numerusform>%n 个英文单词</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n syllable(s) in Mandarin</source>
+        <translation>
+            <numerusform>%n 个普通话音节</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Reading %1</source>
+        <translation>正在读取 %1</translation>
+    </message>
+    <message>
+        <source>the script</source>
+        <translation>文稿</translation>
+    </message>
+    <message>
+        <source>Lip Sync from %1</source>
+        <translation>根据 %1 做口型同步</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::LiveSession</name>
+    <message>
+        <source>Rest pose set (tracking by %1)</source>
+        <translation>已设置静止姿势（以 %1 跟踪）</translation>
+    </message>
+    <message>
+        <source>No face for the rest pose: %1</source>
+        <translation>没有可作为静止姿势的人脸：%1</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::LiveTakeText</name>
+    <message>
+        <source>Nothing was recorded: no frame with a face was tracked.</source>
+        <translation>没有录到任何内容：没有跟踪到任何有人脸的帧。</translation>
+    </message>
+    <message>
+        <source>%1: cannot create its folder</source>
+        <translation>%1：无法创建其文件夹</translation>
+    </message>
+    <message>
+        <source>Record Live Take</source>
+        <translation>录制实时表演</translation>
+    </message>
+    <message>
+        <source>Recorded %1 s (%2 frames) with its sound, saved as %3</source>
+        <translation>已录制 %1 秒（%2 帧）并含声音，保存为 %3</translation>
+    </message>
+    <message>
+        <source>Recorded %1 s (%2 frames): motion only, no sound</source>
+        <translation>已录制 %1 秒（%2 帧）：只有动作，没有声音</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::LiveWindow</name>
+    <message>
+        <source>&amp;Loop clip</source>
+        <translation>循环播放片段(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Set &amp;Rest Pose</source>
+        <translation>设置静止姿势(&amp;R)</translation>
+    </message>
+    <message>
+        <source>● &amp;Record</source>
+        <translation>● 录制(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Live Mode — Toonface</source>
+        <translation>实时模式 — Toonface</translation>
+    </message>
+    <message>
+        <source>Mouth from camera</source>
+        <translation>嘴巴跟随摄像头</translation>
+    </message>
+    <message>
+        <source>Mouth from microphone</source>
+        <translation>嘴巴跟随麦克风</translation>
+    </message>
+    <message>
+        <source>Camera, microphone when lips are lost</source>
+        <translation>摄像头，嘴唇跟丢时用麦克风</translation>
+    </message>
+    <message>
+        <source>What drives the cartoon&apos;s mouth: the lips the camera sees, the loudness and colour of the voice, or both</source>
+        <translation>驱动卡通嘴巴的来源：摄像头看到的嘴唇、声音的大小与音色，或两者并用</translation>
+    </message>
+    <message>
+        <source>Take the current frame as the performer&apos;s neutral face</source>
+        <translation>将当前帧作为表演者的中性脸</translation>
+    </message>
+    <message>
+        <source>Record the performance onto the timeline at the playhead</source>
+        <translation>将表演录制到时间轴的播放头处</translation>
+    </message>
+    <message>
+        <source>Source:</source>
+        <translation>来源：</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Performer&lt;/b&gt;</source>
+        <translation>&lt;b&gt;表演者&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>The next frame becomes the rest pose…</source>
+        <translation>下一帧将成为静止姿势…</translation>
+    </message>
+    <message>
+        <source>Open a photo with a face first: the cartoon of that face follows the performer.</source>
+        <translation>请先打开一张有人脸的照片：那张脸的卡通会跟着表演者动。</translation>
+    </message>
+    <message>
+        <source>No camera</source>
+        <translation>没有摄像头</translation>
+    </message>
+    <message>
+        <source>Choose “Video file…” to perform from a clip.</source>
+        <translation>选择“视频文件…”以从片段表演。</translation>
+    </message>
+    <message>
+        <source>Choose a camera or a video file.</source>
+        <translation>选择摄像头或视频文件。</translation>
+    </message>
+    <message>
+        <source>Camera: %1</source>
+        <translation>摄像头：%1</translation>
+    </message>
+    <message>
+        <source>Video file…</source>
+        <translation>视频文件…</translation>
+    </message>
+    <message>
+        <source>Perform from a Video</source>
+        <translation>从视频表演</translation>
+    </message>
+    <message>
+        <source>Videos (*.mp4 *.mov *.mkv *.avi *.mpg *.mpeg *.webm);;All files (*)</source>
+        <translation>视频 (*.mp4 *.mov *.mkv *.avi *.mpg *.mpeg *.webm);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Camera “%1”: look straight at it with a relaxed face</source>
+        <translation>摄像头“%1”：请放松面部并直视镜头</translation>
+    </message>
+    <message>
+        <source>Video file: %1</source>
+        <translation>视频文件：%1</translation>
+    </message>
+    <message>
+        <source>Playing %1 as the performer</source>
+        <translation>正在播放 %1 作为表演者</translation>
+    </message>
+    <message>
+        <source>The clip has no sound: the mouth follows the camera.</source>
+        <translation>片段没有声音：嘴巴跟随摄像头。</translation>
+    </message>
+    <message>
+        <source>The mouth follows the camera.</source>
+        <translation>嘴巴跟随摄像头。</translation>
+    </message>
+    <message>
+        <source>Start a camera or a clip, with a face open, before recording.</source>
+        <translation>录制前请先启动摄像头或片段，并打开一张人脸。</translation>
+    </message>
+    <message>
+        <source>■ &amp;Stop</source>
+        <translation>■ 停止(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Recording: motion only (no microphone)</source>
+        <translation>录制中：只有动作（没有麦克风）</translation>
+    </message>
+    <message>
+        <source>Recording…</source>
+        <translation>录制中…</translation>
+    </message>
+    <message>
+        <source>No frames yet.</source>
+        <translation>还没有帧。</translation>
+    </message>
+    <message>
+        <source>Frames shown: %1 of %2
+Latency to the picture: %3 ms (95 %: %4 ms)
+Face lost in %5 frames%6</source>
+        <translation>已显示帧：%1 / %2
+到画面的延迟：%3 毫秒（95 %：%4 毫秒）
+跟丢人脸的帧：%5 帧%6</translation>
+    </message>
+    <message>
+        <source>
+● Recording</source>
+        <translation>
+● 录制中</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::MainWindow</name>
+    <message>
+        <source>Appearance</source>
+        <translation>外观</translation>
+    </message>
+    <message>
+        <source>%1%</source>
+        <translation>%1%</translation>
+    </message>
+    <message>
+        <source>Detecting the face: %1</source>
+        <translation>正在检测人脸：%1</translation>
+    </message>
+    <message>
+        <source>Landmark model unavailable (%1): detection may fail, but points can be placed by hand.</source>
+        <translation>关键点模型不可用（%1）：检测可能失败，但仍可手动放置特征点。</translation>
+    </message>
+    <message>
+        <source>&amp;Open Photo or Project…</source>
+        <translation>打开照片或项目(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>保存(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>&amp;Export Cartoon…</source>
+        <translation>导出卡通(&amp;E)…</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>撤销(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>重做(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Re-&amp;detect Points</source>
+        <translation>重新检测特征点(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Detect the face again and replace every point</source>
+        <translation>重新检测人脸并替换所有特征点</translation>
+    </message>
+    <message>
+        <source>Re-detect &amp;Keeping My Points</source>
+        <translation>重新检测并保留我的特征点(&amp;K)</translation>
+    </message>
+    <message>
+        <source>Detect the face again but keep the points placed by hand</source>
+        <translation>重新检测人脸，但保留手动放置的特征点</translation>
+    </message>
+    <message>
+        <source>&amp;Automatic</source>
+        <translation>自动(&amp;A)</translation>
+    </message>
+    <message>
+        <source>The landmark model where it is installed, the thesis pipeline where it is not</source>
+        <translation>已安装关键点模型时使用它，未安装时使用论文流程</translation>
+    </message>
+    <message>
+        <source>&amp;Thesis Pipeline (Classic)</source>
+        <translation>论文流程（经典）(&amp;T)</translation>
+    </message>
+    <message>
+        <source>The thesis&apos; steps only: thresholds, eye pair, edges and feature regions; best on a plain background with frontal light</source>
+        <translation>只用论文的步骤：阈值、双眼配对、边缘与五官区域；最适合纯色背景和正面光线</translation>
+    </message>
+    <message>
+        <source>&amp;Landmarks</source>
+        <translation>关键点(&amp;L)</translation>
+    </message>
+    <message>
+        <source>The landmark model&apos;s 68 points mapped to the face model, hair and ears found around them</source>
+        <translation>关键点模型的 68 个点映射到人脸模型，并在其周围找出头发和耳朵</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;In</source>
+        <translation>放大(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;Out</source>
+        <translation>缩小(&amp;O)</translation>
+    </message>
+    <message>
+        <source>&amp;Actual Size</source>
+        <translation>实际大小(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Fit to Window</source>
+        <translation>适应窗口大小(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Zoom to F&amp;ace</source>
+        <translation>缩放到人脸(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Show Point &amp;IDs</source>
+        <translation>显示特征点编号(&amp;I)</translation>
+    </message>
+    <message>
+        <source>&amp;About Toonface</source>
+        <translation>关于 Toonface(&amp;A)</translation>
+    </message>
+    <message>
+        <source>About Toonface</source>
+        <translation>关于 Toonface</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Toonface %1&lt;/h3&gt;&lt;p&gt;Personal talking cartoon faces from photos, drawn in SVG.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Toonface %1&lt;/h3&gt;&lt;p&gt;用照片制作会说话的个人卡通脸，以 SVG 绘制。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>最近打开的文件(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>编辑(&amp;E)</translation>
+    </message>
+    <message>
+        <source>Detection &amp;Method</source>
+        <translation>检测方法(&amp;M)</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>Main</source>
+        <translation>主工具栏</translation>
+    </message>
+    <message>
+        <source>Style:</source>
+        <translation>风格：</translation>
+    </message>
+    <message>
+        <source>Drawing style of the cartoon</source>
+        <translation>卡通的绘制风格</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Photos and projects (*.toonface %1);;Toonface projects (*.toonface);;Photos (%1);;All files (*)</source>
+        <translation>照片和项目 (*.toonface %1);;Toonface 项目 (*.toonface);;照片 (%1);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Open Photo or Project</source>
+        <translation>打开照片或项目</translation>
+    </message>
+    <message>
+        <source>Opening %1…</source>
+        <translation>正在打开 %1…</translation>
+    </message>
+    <message>
+        <source>Cannot Open</source>
+        <translation>无法打开</translation>
+    </message>
+    <message>
+        <source>Restored unsaved work on %1.</source>
+        <translation>已恢复 %1 未保存的工作。</translation>
+    </message>
+    <message>
+        <source>Photo Missing</source>
+        <translation>照片丢失</translation>
+    </message>
+    <message>
+        <source>The project opened, but its photo could not be read:
+%1</source>
+        <translation>项目已打开，但无法读取它的照片：
+%1</translation>
+    </message>
+    <message>
+        <source>Detecting the face…</source>
+        <translation>正在检测人脸…</translation>
+    </message>
+    <message>
+        <source>Detection Failed</source>
+        <translation>检测失败</translation>
+    </message>
+    <message>
+        <source>%1
+The points are unchanged.</source>
+        <translation>%1
+特征点保持不变。</translation>
+    </message>
+    <message>
+        <source>Detection cancelled.</source>
+        <translation>已取消检测。</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>正在取消…</translation>
+    </message>
+    <message>
+        <source>Stop detecting the face</source>
+        <translation>停止检测人脸</translation>
+    </message>
+    <message>
+        <source>Stop opening the file</source>
+        <translation>停止打开文件</translation>
+    </message>
+    <message>
+        <source>Save Project</source>
+        <translation>保存项目</translation>
+    </message>
+    <message>
+        <source>Toonface projects (*.toonface)</source>
+        <translation>Toonface 项目 (*.toonface)</translation>
+    </message>
+    <message>
+        <source>Cannot Save</source>
+        <translation>无法保存</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>已保存 %1。</translation>
+    </message>
+    <message>
+        <source>Export Cartoon</source>
+        <translation>导出卡通</translation>
+    </message>
+    <message>
+        <source>SVG image (*.svg);;PNG image (*.png)</source>
+        <translation>SVG 图像 (*.svg);;PNG 图像 (*.png)</translation>
+    </message>
+    <message>
+        <source>Exported %1.</source>
+        <translation>已导出 %1。</translation>
+    </message>
+    <message>
+        <source>Cannot Export</source>
+        <translation>无法导出</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>未保存的更改</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 有未保存的更改。要保存吗？</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Menu</source>
+        <translation>清除菜单(&amp;C)</translation>
+    </message>
+    <message>
+        <source>%1[*] — Toonface</source>
+        <translation>%1[*] — Toonface</translation>
+    </message>
+    <message>
+        <source>The detection&apos;s steps appear when it ends</source>
+        <translation>检测结束后会显示其步骤</translation>
+    </message>
+    <message>
+        <source>Open a photo: its face detection&apos;s steps can be shown here</source>
+        <translation>打开照片：这里可以显示其人脸检测的步骤</translation>
+    </message>
+    <message>
+        <source>No detection steps for this photo: they are not saved in projects. Use Edit ▸ Re-detect Points to see them</source>
+        <translation>这张照片没有检测步骤：项目不会保存它们。请使用“编辑 ▸ 重新检测特征点”来查看</translation>
+    </message>
+    <message>
+        <source>Style “%1”</source>
+        <translation>风格“%1”</translation>
+    </message>
+    <message>
+        <source>Point %1 (%2) at %3, %4</source>
+        <translation>特征点 %1（%2）位于 %3, %4</translation>
+    </message>
+    <message>
+        <source> · control point</source>
+        <translation> · 控制点</translation>
+    </message>
+    <message>
+        <source> · placed by hand</source>
+        <translation> · 手动放置</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::MediaAudioTrack</name>
+    <message>
+        <source>Cannot play the audio file %1: %2</source>
+        <translation>无法播放音频文件 %1：%2</translation>
+    </message>
+    <message>
+        <source>The audio file %1 %2.</source>
+        <translation>音频文件 %1 %2。</translation>
+    </message>
+    <message>
+        <source>cannot be read</source>
+        <translation>无法读取</translation>
+    </message>
+    <message>
+        <source>is missing</source>
+        <translation>丢失</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::Microphone</name>
+    <message>
+        <source>No microphone was found: the sound cannot drive the mouth, and recordings keep the motion only.</source>
+        <translation>找不到麦克风：声音无法驱动嘴巴，录制时只保留动作。</translation>
+    </message>
+    <message>
+        <source>The microphone “%1” cannot be opened.</source>
+        <translation>无法打开麦克风“%1”。</translation>
+    </message>
+    <message>
+        <source>The microphone “%1” stopped.</source>
+        <translation>麦克风“%1”已停止。</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::MouthShapesDialog</name>
+    <message>
+        <source>lips shut (b p m, rest)</source>
+        <translation>双唇闭合（b p m、静止）</translation>
+    </message>
+    <message>
+        <source>lower lip under the upper (f)</source>
+        <translation>下唇在上齿下（f）</translation>
+    </message>
+    <message>
+        <source>open (most initials, ng, er)</source>
+        <translation>张开（多数声母、ng、er）</translation>
+    </message>
+    <message>
+        <source>wide open (a)</source>
+        <translation>大张（a）</translation>
+    </message>
+    <message>
+        <source>spread (i, y)</source>
+        <translation>展唇（i、y）</translation>
+    </message>
+    <message>
+        <source>rounded (u, w)</source>
+        <translation>圆唇（u、w）</translation>
+    </message>
+    <message>
+        <source>half open, spread (e)</source>
+        <translation>半开展唇（e）</translation>
+    </message>
+    <message>
+        <source>round open (o)</source>
+        <translation>圆唇张开（o）</translation>
+    </message>
+    <message>
+        <source>tongue up (n)</source>
+        <translation>舌尖上抬（n）</translation>
+    </message>
+    <message>
+        <source>Upper lip 8.9</source>
+        <translation>上唇 8.9</translation>
+    </message>
+    <message>
+        <source>Lower lip 8.2</source>
+        <translation>下唇 8.2</translation>
+    </message>
+    <message>
+        <source>Left corner 8.4</source>
+        <translation>左嘴角 8.4</translation>
+    </message>
+    <message>
+        <source>Right corner 8.3</source>
+        <translation>右嘴角 8.3</translation>
+    </message>
+    <message>
+        <source>Corners at the height &amp;midway between the lips (as o)</source>
+        <translation>嘴角位于双唇中间的高度(&amp;M)（如 o）</translation>
+    </message>
+    <message>
+        <source>Corners stay where the shape &amp;before put them (as n)</source>
+        <translation>嘴角停在前一个口型的位置(&amp;B)（如 n）</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Shape</source>
+        <translation>重置口型(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Mouth Shapes</source>
+        <translation>口型</translation>
+    </message>
+    <message>
+        <source>Drag a point to move it</source>
+        <translation>拖动特征点来移动它</translation>
+    </message>
+    <message>
+        <source>How the four mouth control points move</source>
+        <translation>四个嘴部控制点如何移动</translation>
+    </message>
+    <message>
+        <source>On this face MNS0 (nose to mouth) = %1 px, MW0 (mouth width) = %2 px, LowerLipH = %3 px, ES0/100 = %4 px. y grows downwards.</source>
+        <translation>在这张脸上 MNS0（鼻到嘴）= %1 像素，MW0（嘴宽）= %2 像素，LowerLipH = %3 像素，ES0/100 = %4 像素。y 向下增大。</translation>
+    </message>
+    <message>
+        <source>Reset &amp;All</source>
+        <translation>全部重置(&amp;A)</translation>
+    </message>
+    <message>
+        <source>× MNS0</source>
+        <translation>× MNS0</translation>
+    </message>
+    <message>
+        <source>× MW0</source>
+        <translation>× MW0</translation>
+    </message>
+    <message>
+        <source>× LowerLipH</source>
+        <translation>× LowerLipH</translation>
+    </message>
+    <message>
+        <source>× ES0/100</source>
+        <translation>× ES0/100</translation>
+    </message>
+    <message>
+        <source>= pixels here</source>
+        <translation>= 此处的像素</translation>
+    </message>
+    <message>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <source>%1 px</source>
+        <translation>%1 像素</translation>
+    </message>
+    <message>
+        <source>%1 — %2%3</source>
+        <translation>%1 — %2%3</translation>
+    </message>
+    <message>
+        <source> (edited)</source>
+        <translation> （已编辑）</translation>
+    </message>
+    <message>
+        <source> •</source>
+        <translation> •</translation>
+    </message>
+    <message>
+        <source>Edit Mouth Shapes</source>
+        <translation>编辑口型</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::Names</name>
+    <message>
+        <source>Neutral</source>
+        <translation>中性</translation>
+    </message>
+    <message>
+        <source>Smile</source>
+        <translation>微笑</translation>
+    </message>
+    <message>
+        <source>Sad</source>
+        <translation>悲伤</translation>
+    </message>
+    <message>
+        <source>Angry</source>
+        <translation>生气</translation>
+    </message>
+    <message>
+        <source>Surprise</source>
+        <translation>惊讶</translation>
+    </message>
+    <message>
+        <source>Normal</source>
+        <comment>drawing style</comment>
+        <translation>普通</translation>
+    </message>
+    <message>
+        <source>Soft</source>
+        <comment>drawing style</comment>
+        <translation>柔和</translation>
+    </message>
+    <message>
+        <source>Bold</source>
+        <comment>drawing style</comment>
+        <translation>粗犷</translation>
+    </message>
+    <message>
+        <source>Cute</source>
+        <comment>drawing style</comment>
+        <translation>可爱</translation>
+    </message>
+    <message>
+        <source>Angular</source>
+        <comment>eyebrow variant</comment>
+        <translation>棱角</translation>
+    </message>
+    <message>
+        <source>Curved</source>
+        <comment>eyebrow variant</comment>
+        <translation>弧形</translation>
+    </message>
+    <message>
+        <source>Thick</source>
+        <comment>eyebrow variant</comment>
+        <translation>粗眉</translation>
+    </message>
+    <message>
+        <source>Full</source>
+        <comment>nose variant</comment>
+        <translation>完整</translation>
+    </message>
+    <message>
+        <source>Simple</source>
+        <comment>nose variant</comment>
+        <translation>简约</translation>
+    </message>
+    <message>
+        <source>Tip only</source>
+        <comment>nose variant</comment>
+        <translation>只画鼻头</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <comment>glasses</comment>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Round</source>
+        <comment>glasses</comment>
+        <translation>圆框</translation>
+    </message>
+    <message>
+        <source>Rectangular</source>
+        <comment>glasses</comment>
+        <translation>方框</translation>
+    </message>
+    <message>
+        <source>Rimless</source>
+        <comment>glasses</comment>
+        <translation>无框</translation>
+    </message>
+    <message>
+        <source>landmark</source>
+        <comment>detection method</comment>
+        <translation>关键点</translation>
+    </message>
+    <message>
+        <source>classic</source>
+        <comment>detection method</comment>
+        <translation>经典</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::PhotoView</name>
+    <message>
+        <source>Another face in the photo: click to use it instead</source>
+        <translation>照片中的另一张脸：单击改用它</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::PlaybackController</name>
+    <message>
+        <source>&amp;Play</source>
+        <translation>播放(&amp;P)</translation>
+    </message>
+    <message>
+        <source>&amp;Stop</source>
+        <translation>停止(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Stop and return to the first frame</source>
+        <translation>停止并回到第一帧</translation>
+    </message>
+    <message>
+        <source>&amp;Loop</source>
+        <translation>循环(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Loop: play from the start again at the end</source>
+        <translation>循环：播放到结尾后从头再播</translation>
+    </message>
+    <message>
+        <source>&amp;First Frame</source>
+        <translation>第一帧(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Pre&amp;vious Frame</source>
+        <translation>上一帧(&amp;V)</translation>
+    </message>
+    <message>
+        <source>&amp;Next Frame</source>
+        <translation>下一帧(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Last Frame</source>
+        <translation>最后一帧(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>暂停(&amp;P)</translation>
+    </message>
+    <message>
+        <source>%1 Playing without sound.</source>
+        <translation>%1 无声播放。</translation>
+    </message>
+    <message>
+        <source>The audio file %1 is missing: playing without sound.</source>
+        <translation>找不到音频文件 %1：无声播放。</translation>
+    </message>
+    <message>
+        <source>No audio output device: playing without sound.</source>
+        <translation>没有音频输出设备：无声播放。</translation>
+    </message>
+    <message>
+        <source>Nothing to play: the timeline is empty.</source>
+        <translation>没有可播放的内容：时间轴是空的。</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>首选项</translation>
+    </message>
+    <message>
+        <source>System (%1)</source>
+        <translation>系统（%1）</translation>
+    </message>
+    <message>
+        <source>The new language shows when Toonface is started again.</source>
+        <translation>新的语言将在下次启动 Toonface 时生效。</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>语言(&amp;L)：</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::PreviewView</name>
+    <message>
+        <source>Edit &amp;Pose</source>
+        <translation>编辑姿势(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Show the control points on the preview: drag one to set a pose key frame at the playhead</source>
+        <translation>在预览上显示控制点：拖动其中一点即可在播放头处设置姿势关键帧</translation>
+    </message>
+    <message>
+        <source>Open a photo to draw its cartoon.</source>
+        <translation>打开照片以绘制它的卡通。</translation>
+    </message>
+    <message>
+        <source>No face points yet.</source>
+        <translation>还没有人脸特征点。</translation>
+    </message>
+    <message>
+        <source>Drawing the cartoon…</source>
+        <translation>正在绘制卡通…</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::Questions</name>
+    <message>
+        <source>an untitled project</source>
+        <translation>一个未命名的项目</translation>
+    </message>
+    <message>
+        <source>Restore Unsaved Work</source>
+        <translation>恢复未保存的工作</translation>
+    </message>
+    <message>
+        <source>Toonface did not close properly. Unsaved work on %1 from %2 was kept.</source>
+        <translation>Toonface 上次没有正常关闭。已保留 %2 时 %1 未保存的工作。</translation>
+    </message>
+    <message>
+        <source>Restore it? Discarding deletes the kept copy.</source>
+        <translation>要恢复吗？丢弃会删除保留的副本。</translation>
+    </message>
+    <message>
+        <source>&amp;Restore</source>
+        <translation>恢复(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Discard</source>
+        <translation>丢弃(&amp;D)</translation>
+    </message>
+    <message>
+        <source>No face was found in %1.</source>
+        <translation>在 %1 中找不到人脸。</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>No Face Found</source>
+        <translation>找不到人脸</translation>
+    </message>
+    <message>
+        <source>You can place an average face on the photo and drag its points into place by hand.</source>
+        <translation>您可以在照片上放一张平均脸，再手动把特征点拖动到正确位置。</translation>
+    </message>
+    <message>
+        <source>&amp;Place Average Face</source>
+        <translation>放置平均脸(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Place average face</source>
+        <translation>放置平均脸</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::SayTextDialog</name>
+    <message>
+        <source>Say</source>
+        <translation>朗读</translation>
+    </message>
+    <message>
+        <source>Say Text</source>
+        <translation>说出文字</translation>
+    </message>
+    <message>
+        <source>The built-in voice speaks the text and the face says it with the voice&apos;s exact timings. The mouth keys and syllables where the speech plays are replaced.</source>
+        <translation>内置语音朗读文字，人脸按语音的精确时间说出来。语音播放范围内的口型关键帧和音节会被替换。</translation>
+    </message>
+    <message>
+        <source>Chinese characters, pinyin, Zhuyin or English, e.g. 您好，我是葛麗絲。</source>
+        <translation>汉字、拼音、注音或英文，例如：您好，我是葛丽丝。</translation>
+    </message>
+    <message>
+        <source> words/min</source>
+        <translation> 字/分钟</translation>
+    </message>
+    <message>
+        <source>Where the speech starts on the timeline</source>
+        <translation>语音在时间轴上的开始位置</translation>
+    </message>
+    <message>
+        <source>Pitch:</source>
+        <translation>音高：</translation>
+    </message>
+    <message>
+        <source>Choose…</source>
+        <translation>选择…</translation>
+    </message>
+    <message>
+        <source>The sound is saved beside the project.</source>
+        <translation>声音会保存在项目旁边。</translation>
+    </message>
+    <message>
+        <source>The project is not saved yet: the sound is saved in your documents folder.</source>
+        <translation>项目尚未保存：声音会保存在您的文档文件夹中。</translation>
+    </message>
+    <message>
+        <source>The project is not saved yet: the sound is saved beside the photo. Save the project in the same folder to keep them together.</source>
+        <translation>项目尚未保存：声音会保存在照片旁边。请将项目保存在同一个文件夹中，让它们放在一起。</translation>
+    </message>
+    <message>
+        <source>&amp;Text:</source>
+        <translation>文字(&amp;T)：</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>语言(&amp;L)：</translation>
+    </message>
+    <message>
+        <source>&amp;Speed:</source>
+        <translation>速度(&amp;S)：</translation>
+    </message>
+    <message>
+        <source>Starts &amp;at:</source>
+        <translation>开始于(&amp;A)：</translation>
+    </message>
+    <message>
+        <source>Save the s&amp;ound as:</source>
+        <translation>声音保存为(&amp;O)：</translation>
+    </message>
+    <message>
+        <source>Save the Sound As</source>
+        <translation>声音另存为</translation>
+    </message>
+    <message>
+        <source>WAV sound (*.wav)</source>
+        <translation>WAV 声音 (*.wav)</translation>
+    </message>
+    <message>
+        <source>The text has nothing to say.</source>
+        <translation>文字中没有可说的内容。</translation>
+    </message>
+    <message>
+        <source>Speaking</source>
+        <translation>正在朗读</translation>
+    </message>
+    <message>
+        <source>%1: cannot create its folder</source>
+        <translation>%1：无法创建其文件夹</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::SecondsBox</name>
+    <message>
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::ShapePalette</name>
+    <message>
+        <source>Mouth shape %1 (key %2): replaces the selected mouth keys, or inserts one at the playhead</source>
+        <translation>口型 %1（按键 %2）：替换所选的口型关键帧，或在播放头处插入一个</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::SpeechDialog</name>
+    <message>
+        <source>Nothing was changed.</source>
+        <translation>没有任何更改。</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>正在取消…</translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing was changed.</source>
+        <translation>已取消：没有任何更改。</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::StepImageDialog</name>
+    <message>
+        <source>No picture.</source>
+        <translation>没有画面。</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::Studio</name>
+    <message>
+        <source>&amp;Lip Sync from Recording…</source>
+        <translation>根据录音做口型同步(&amp;L)…</translation>
+    </message>
+    <message>
+        <source>Time the mouth to a speech recording and its script</source>
+        <translation>让嘴巴配合语音录音及其文稿的时间</translation>
+    </message>
+    <message>
+        <source>&amp;Say Text…</source>
+        <translation>说出文字(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Speak a text with the built-in voice and lip-sync the face to it</source>
+        <translation>用内置语音朗读文字，并让人脸对口型</translation>
+    </message>
+    <message>
+        <source>Add &amp;Blinks…</source>
+        <translation>添加眨眼(&amp;B)…</translation>
+    </message>
+    <message>
+        <source>Add &amp;Emotion…</source>
+        <translation>添加表情(&amp;E)…</translation>
+    </message>
+    <message>
+        <source>&amp;Mouth Shapes…</source>
+        <translation>口型(&amp;M)…</translation>
+    </message>
+    <message>
+        <source>Edit this character&apos;s nine mouth shapes</source>
+        <translation>编辑这个角色的九种口型</translation>
+    </message>
+    <message>
+        <source>Export &amp;Animation…</source>
+        <translation>导出动画(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Export the animation as SVG, HTML, MP4, GIF or PNG frames</source>
+        <translation>将动画导出为 SVG、HTML、MP4、GIF 或 PNG 帧</translation>
+    </message>
+    <message>
+        <source>&amp;Animation</source>
+        <translation>动画(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Timeline</source>
+        <translation>时间轴(&amp;T)</translation>
+    </message>
+    <message>
+        <source>&amp;Playback</source>
+        <translation>播放(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Transport</source>
+        <translation>播放控制</translation>
+    </message>
+    <message>
+        <source>Import &amp;Video…</source>
+        <translation>导入视频(&amp;V)…</translation>
+    </message>
+    <message>
+        <source>Track a clip of a person speaking and put the motion on the timeline</source>
+        <translation>跟踪人物说话的片段，并将动作放到时间轴上</translation>
+    </message>
+    <message>
+        <source>Imported %1</source>
+        <translation>已导入 %1</translation>
+    </message>
+    <message>
+        <source>Show the imported clip beside the cartoon</source>
+        <translation>在卡通旁显示导入的片段</translation>
+    </message>
+    <message>
+        <source>Pre&amp;ferences…</source>
+        <translation>首选项(&amp;F)…</translation>
+    </message>
+    <message>
+        <source>Choose the language of the interface</source>
+        <translation>选择界面的语言</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>已导出 %1</translation>
+    </message>
+    <message>
+        <source>Capture from &amp;Camera…</source>
+        <translation>从摄像头拍摄(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>Take the neutral photo with a camera</source>
+        <translation>用摄像头拍摄中性照片</translation>
+    </message>
+    <message>
+        <source>&amp;Live Mode…</source>
+        <translation>实时模式(&amp;L)…</translation>
+    </message>
+    <message>
+        <source>Puppeteer the cartoon live from a camera or a video, and record the performance</source>
+        <translation>用摄像头或视频实时操控卡通，并录制表演</translation>
+    </message>
+    <message>
+        <source>Camera photo saved as %1</source>
+        <translation>摄像头照片已保存为 %1</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::TimelineDock</name>
+    <message>
+        <source>Timeline</source>
+        <translation>时间轴</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::TimelineEdits</name>
+    <message>
+        <source>the clipboard holds no timeline items</source>
+        <translation>剪贴板中没有时间轴项目</translation>
+    </message>
+    <message>
+        <source>the clipboard&apos;s timeline items are damaged: %1</source>
+        <translation>剪贴板中的时间轴项目已损坏：%1</translation>
+    </message>
+    <message>
+        <source>no syllable %1</source>
+        <translation>没有第 %1 个音节</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is an English word: it has no pinyin</source>
+        <translation>“%1”是英文单词：没有拼音</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a Mandarin syllable</source>
+        <translation>“%1”不是普通话音节</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::TimelineView</name>
+    <message>
+        <source>Reading the sound…</source>
+        <translation>正在读取声音…</translation>
+    </message>
+    <message>
+        <source>Move on Timeline</source>
+        <translation>在时间轴上移动</translation>
+    </message>
+    <message>
+        <source>Retime Syllable</source>
+        <translation>调整音节时间</translation>
+    </message>
+    <message>
+        <source>Resize on Timeline</source>
+        <translation>在时间轴上调整长度</translation>
+    </message>
+    <message>
+        <source>Change Emotion Fade</source>
+        <translation>更改表情淡入淡出</translation>
+    </message>
+    <message>
+        <source>Change Emotion Intensity</source>
+        <translation>更改表情强度</translation>
+    </message>
+    <message>
+        <source>Change Mouth Weight</source>
+        <translation>更改口型权重</translation>
+    </message>
+    <message>
+        <source>Delete from Timeline</source>
+        <translation>从时间轴删除</translation>
+    </message>
+    <message>
+        <source>Paste on Timeline</source>
+        <translation>粘贴到时间轴</translation>
+    </message>
+    <message>
+        <source>Replace Mouth Shape</source>
+        <translation>替换口型</translation>
+    </message>
+    <message>
+        <source>Insert Mouth Shape</source>
+        <translation>插入口型</translation>
+    </message>
+    <message>
+        <source>Add Emotion</source>
+        <translation>添加表情</translation>
+    </message>
+    <message>
+        <source>Regenerate Blinks</source>
+        <translation>重新生成眨眼</translation>
+    </message>
+    <message>
+        <source>Add Head Shake</source>
+        <translation>添加摇头</translation>
+    </message>
+    <message>
+        <source>Add Head Nod</source>
+        <translation>添加点头</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is an English word: only Mandarin syllables have pinyin to edit</source>
+        <translation>“%1”是英文单词：只有普通话音节才有可编辑的拼音</translation>
+    </message>
+    <message>
+        <source>Change Syllable</source>
+        <translation>更改音节</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::TimelineWidget</name>
+    <message>
+        <source>Emotion</source>
+        <translation>表情</translation>
+    </message>
+    <message>
+        <source>Mouth</source>
+        <translation>口型</translation>
+    </message>
+    <message>
+        <source>Zoom In</source>
+        <translation>放大</translation>
+    </message>
+    <message>
+        <source>Zoom Out</source>
+        <translation>缩小</translation>
+    </message>
+    <message>
+        <source>Zoom to Fit</source>
+        <translation>缩放到适合大小</translation>
+    </message>
+    <message>
+        <source>Snap to Frames and Syllables</source>
+        <translation>对齐帧和音节</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <source>Copy Keys</source>
+        <translation>复制关键帧</translation>
+    </message>
+    <message>
+        <source>Paste Keys at Playhead</source>
+        <translation>在播放头处粘贴关键帧</translation>
+    </message>
+    <message>
+        <source>Select All in Row</source>
+        <translation>选择整行</translation>
+    </message>
+    <message>
+        <source>Regenerate Blinks</source>
+        <translation>重新生成眨眼</translation>
+    </message>
+    <message>
+        <source>Add Head Shake</source>
+        <translation>添加摇头</translation>
+    </message>
+    <message>
+        <source>Add Head Nod</source>
+        <translation>添加点头</translation>
+    </message>
+    <message>
+        <source>Apply %1</source>
+        <translation>应用%1</translation>
+    </message>
+    <message>
+        <source>Replace Shape</source>
+        <translation>替换口型</translation>
+    </message>
+    <message>
+        <source>Insert Shape</source>
+        <translation>插入口型</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>粗细</translation>
+    </message>
+    <message>
+        <source>Add Emotion</source>
+        <translation>添加表情</translation>
+    </message>
+    <message>
+        <source>Edit Pinyin…</source>
+        <translation>编辑拼音…</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::VideoDock</name>
+    <message>
+        <source>Video</source>
+        <translation>视频</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::VideoView</name>
+    <message>
+        <source>No video: Animation ▸ Import Video… tracks a clip and shows it here.</source>
+        <translation>没有视频：“动画 ▸ 导入视频…”会跟踪片段并在这里显示。</translation>
+    </message>
+    <message>
+        <source>The clip starts at %1 s</source>
+        <translation>片段从 %1 秒开始</translation>
+    </message>
+    <message>
+        <source>The clip ended at %1 s</source>
+        <translation>片段在 %1 秒结束</translation>
+    </message>
+    <message>
+        <source>frame %1 · %2 s</source>
+        <translation>第 %1 帧 · %2 秒</translation>
+    </message>
+    <message>
+        <source>frame %1</source>
+        <translation>第 %1 帧</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::cli::Cli</name>
+    <message>
+        <source>The speech recording.</source>
+        <translation>语音录音。</translation>
+    </message>
+    <message>
+        <source>The recording&apos;s script (a UTF-8 text file).</source>
+        <translation>录音的文稿（UTF-8 文本文件）。</translation>
+    </message>
+    <message>
+        <source>Speak this text with the built-in voice.</source>
+        <translation>用内置语音说出这段文字。</translation>
+    </message>
+    <message>
+        <source>Drive the face by a video of the person.</source>
+        <translation>用该人物的视频驱动人脸。</translation>
+    </message>
+    <message>
+        <source>Language of the script: cmn or en (default: detected).</source>
+        <translation>文稿的语言：cmn 或 en（默认：自动检测）。</translation>
+    </message>
+    <message>
+        <source>Expression while speaking: neutral, smile, sad, angry or surprise.</source>
+        <translation>说话时的表情：neutral、smile、sad、angry 或 surprise。</translation>
+    </message>
+    <message>
+        <source>Do not blink.</source>
+        <translation>不眨眼。</translation>
+    </message>
+    <message>
+        <source>Frames per second (default 25).</source>
+        <translation>每秒帧数（默认 25）。</translation>
+    </message>
+    <message>
+        <source>Drawing style: %1.</source>
+        <translation>绘制风格：%1。</translation>
+    </message>
+    <message>
+        <source>Also save the result as a project.</source>
+        <translation>同时将结果保存为项目。</translation>
+    </message>
+    <message>
+        <source>OUT.svg, OUT.html, OUT.mp4, OUT.gif, or DIR/ for PNG frames.</source>
+        <translation>OUT.svg、OUT.html、OUT.mp4、OUT.gif，或存放 PNG 帧的 DIR/。</translation>
+    </message>
+    <message>
+        <source>A photo or a project; or a video clip, whose neutral frame&apos;s face it animates.</source>
+        <translation>照片或项目；或视频片段，以其中性帧的人脸制作动画。</translation>
+    </message>
+    <message>
+        <source>animate takes one photo or project (usage: toonface-cli %1)</source>
+        <translation>animate 只接受一张照片或一个项目（用法：toonface-cli %1）</translation>
+    </message>
+    <message>
+        <source>animate needs -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/</source>
+        <translation>animate 需要 -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/</translation>
+    </message>
+    <message>
+        <source>cannot tell the output type of &apos;%1&apos;: use .svg, .html, .mp4, .gif or a folder ending in /</source>
+        <translation>无法判断“%1”的输出类型：请使用 .svg、.html、.mp4、.gif 或以 / 结尾的文件夹</translation>
+    </message>
+    <message>
+        <source>animate needs exactly one of --audio with --script, --say TEXT or --video CLIP (a project without them plays its own timeline)</source>
+        <translation>animate 需要以下其中一项：--audio 配合 --script、--say TEXT 或 --video CLIP（没有这些选项的项目会播放它自己的时间轴）</translation>
+    </message>
+    <message>
+        <source>--audio and --script go together</source>
+        <translation>--audio 和 --script 必须一起使用</translation>
+    </message>
+    <message>
+        <source>--fps takes a number from 1 to 120, not &apos;%1&apos;</source>
+        <translation>--fps 需要 1 到 120 的数字，而不是“%1”</translation>
+    </message>
+    <message>
+        <source>unknown --lang &apos;%1&apos; (cmn or en)</source>
+        <translation>未知的 --lang“%1”（cmn 或 en）</translation>
+    </message>
+    <message>
+        <source>animate takes a photo or a project, not a face JSON (%1)</source>
+        <translation>animate 接受照片或项目，不接受人脸 JSON（%1）</translation>
+    </message>
+    <message>
+        <source>%1: cannot write the neutral frame</source>
+        <translation>%1：无法写入中性帧</translation>
+    </message>
+    <message>
+        <source>%1: the animation is silent</source>
+        <translation>%1：动画没有声音</translation>
+    </message>
+    <message>
+        <source>%1: the clip has no sound; the animation is silent</source>
+        <translation>%1：片段没有声音；动画没有声音</translation>
+    </message>
+    <message>
+        <source>animate needs one of --audio with --script, --say TEXT or --video CLIP (only a project plays its own timeline)</source>
+        <translation>animate 需要以下其中一项：--audio 配合 --script、--say TEXT 或 --video CLIP（只有项目会播放它自己的时间轴）</translation>
+    </message>
+    <message>
+        <source>%1: the project has no animation to play (its timeline is empty)</source>
+        <translation>%1：项目没有可播放的动画（时间轴是空的）</translation>
+    </message>
+    <message>
+        <source>exporting %1 s of animation to %2</source>
+        <translation>正在将 %1 秒的动画导出到 %2</translation>
+    </message>
+    <message>
+        <source>exporting: %1 %</source>
+        <translation>正在导出：%1 %</translation>
+    </message>
+    <message>
+        <source>Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF or PNG frames).</source>
+        <translation>让照片或项目中的人脸说话，并导出动画（SVG、HTML、MP4、GIF 或 PNG 帧）。</translation>
+    </message>
+    <message>
+        <source>The cartoon SVG to write.</source>
+        <translation>要写入的卡通 SVG。</translation>
+    </message>
+    <message>
+        <source>Also rasterize to this PNG.</source>
+        <translation>同时栅格化为此 PNG。</translation>
+    </message>
+    <message>
+        <source>The PNG&apos;s longer side in pixels (default 512).</source>
+        <translation>PNG 的长边像素数（默认 512）。</translation>
+    </message>
+    <message>
+        <source>Expression: neutral, smile, sad, angry or surprise.</source>
+        <translation>表情：neutral、smile、sad、angry 或 surprise。</translation>
+    </message>
+    <message>
+        <source>Detection method for a photo: auto, classic or landmarks.</source>
+        <translation>照片的检测方法：auto、classic 或 landmarks。</translation>
+    </message>
+    <message>
+        <source>How much to exaggerate what makes the face its own: 0 (exact) to 1 (default: the style&apos;s).</source>
+        <translation>夸张这张脸独有特征的程度：0（写实）到 1（默认：按风格）。</translation>
+    </message>
+    <message>
+        <source>A photo, a face JSON or a project.</source>
+        <translation>照片、人脸 JSON 或项目。</translation>
+    </message>
+    <message>
+        <source>cartoon takes one input (usage: toonface-cli %1)</source>
+        <translation>cartoon 只接受一个输入（用法：toonface-cli %1）</translation>
+    </message>
+    <message>
+        <source>cartoon needs -o OUT.svg</source>
+        <translation>cartoon 需要 -o OUT.svg</translation>
+    </message>
+    <message>
+        <source>--size takes a whole number from 16 to 8192, not &apos;%1&apos;</source>
+        <translation>--size 需要 16 到 8192 的整数，而不是“%1”</translation>
+    </message>
+    <message>
+        <source>--caricature takes a number from 0 to 1, not &apos;%1&apos;</source>
+        <translation>--caricature 需要 0 到 1 的数字，而不是“%1”</translation>
+    </message>
+    <message>
+        <source>Draw the cartoon face of a photo, a face JSON or a project as SVG (and PNG).</source>
+        <translation>将照片、人脸 JSON 或项目的卡通脸绘制为 SVG（以及 PNG）。</translation>
+    </message>
+    <message>
+        <source>Detection method: auto, classic or landmarks.</source>
+        <translation>检测方法：auto、classic 或 landmarks。</translation>
+    </message>
+    <message>
+        <source>Write the face JSON here (default: stdout).</source>
+        <translation>将人脸 JSON 写到这里（默认：标准输出）。</translation>
+    </message>
+    <message>
+        <source>Write intermediate images of the detection here.</source>
+        <translation>将检测的中间图像写到这里。</translation>
+    </message>
+    <message>
+        <source>With several faces, use the one at this point of the photo (pixels) instead of the largest, most central one.</source>
+        <translation>有多张脸时，使用照片中这个点（像素）处的脸，而不是最大、最居中的那张。</translation>
+    </message>
+    <message>
+        <source>The photo.</source>
+        <translation>照片。</translation>
+    </message>
+    <message>
+        <source>detect takes one IMAGE (usage: toonface-cli %1)</source>
+        <translation>detect 只接受一个 IMAGE（用法：toonface-cli %1）</translation>
+    </message>
+    <message>
+        <source>--face wants a point X,Y in photo pixels, not &apos;%1&apos;</source>
+        <translation>--face 需要照片像素坐标 X,Y，而不是“%1”</translation>
+    </message>
+    <message>
+        <source>cannot create the debug folder %1</source>
+        <translation>无法创建调试文件夹 %1</translation>
+    </message>
+    <message>
+        <source>Find the face in a photo and write its 72 points as JSON (toonface.face/1).</source>
+        <translation>在照片中找到人脸，并将其 72 个特征点写成 JSON（toonface.face/1）。</translation>
+    </message>
+    <message>
+        <source>The speech recording (WAV, FLAC, MP3, OGG, M4A or a video&apos;s sound).</source>
+        <translation>语音录音（WAV、FLAC、MP3、OGG、M4A 或视频的声音）。</translation>
+    </message>
+    <message>
+        <source>What is said, as UTF-8 text: Chinese characters, pinyin, zhuyin, or English.</source>
+        <translation>说了什么，UTF-8 文本：汉字、拼音、注音或英文。</translation>
+    </message>
+    <message>
+        <source>Language of the script: cmn, en, or auto (from the script).</source>
+        <translation>文稿的语言：cmn、en 或 auto（根据文稿判断）。</translation>
+    </message>
+    <message>
+        <source>Write the result here: .tsv for Rhubarb-style cues, JSON otherwise (default: JSON on stdout).</source>
+        <translation>将结果写到这里：.tsv 为 Rhubarb 格式的提示，其他为 JSON（默认：JSON 输出到标准输出）。</translation>
+    </message>
+    <message>
+        <source>lipsync needs --audio and --script (usage: toonface-cli %1)</source>
+        <translation>lipsync 需要 --audio 和 --script（用法：toonface-cli %1）</translation>
+    </message>
+    <message>
+        <source>unknown --lang &apos;%1&apos; (cmn, en or auto)</source>
+        <translation>未知的 --lang“%1”（cmn、en 或 auto）</translation>
+    </message>
+    <message>
+        <source>aligning %1 with %2</source>
+        <translation>正在对齐 %1 和 %2</translation>
+    </message>
+    <message>
+        <source>Time a recording&apos;s syllables against its script and give the mouth shapes (toonface.lipsync/1).</source>
+        <translation>将录音的音节与文稿对齐时间，并给出口型（toonface.lipsync/1）。</translation>
+    </message>
+    <message>
+        <source>Language of the text: cmn, en, or auto (from the text).</source>
+        <translation>文本的语言：cmn、en 或 auto（根据文本判断）。</translation>
+    </message>
+    <message>
+        <source>The speech: .wav, .flac, .mp3, .ogg, .opus or .m4a.</source>
+        <translation>语音：.wav、.flac、.mp3、.ogg、.opus 或 .m4a。</translation>
+    </message>
+    <message>
+        <source>Also write the exact syllable timings and mouth shapes (toonface.lipsync/1).</source>
+        <translation>同时写出精确的音节时间和口型（toonface.lipsync/1）。</translation>
+    </message>
+    <message>
+        <source>An espeak-ng voice, optionally with a variant (cmn-latn-pinyin+f2).</source>
+        <translation>espeak-ng 语音，可加上变体（cmn-latn-pinyin+f2）。</translation>
+    </message>
+    <message>
+        <source>Words per minute (80-450).</source>
+        <translation>每分钟字数（80-450）。</translation>
+    </message>
+    <message>
+        <source>Pitch, 0-100.</source>
+        <translation>音高，0-100。</translation>
+    </message>
+    <message>
+        <source>What to say.</source>
+        <translation>要说的话。</translation>
+    </message>
+    <message>
+        <source>say takes one TEXT and -o OUT.wav (usage: toonface-cli %1)</source>
+        <translation>say 只接受一段 TEXT 和 -o OUT.wav（用法：toonface-cli %1）</translation>
+    </message>
+    <message>
+        <source>--rate and --pitch take whole numbers</source>
+        <translation>--rate 和 --pitch 需要整数</translation>
+    </message>
+    <message>
+        <source>Speak a text with espeak-ng and write the exact syllable timings, so a face can talk without a recording.</source>
+        <translation>用 espeak-ng 说出文本并写出精确的音节时间，让脸不需要录音也能说话。</translation>
+    </message>
+    <message>
+        <source>Write the track JSON here (default: stdout).</source>
+        <translation>将跟踪 JSON 写到这里（默认：标准输出）。</translation>
+    </message>
+    <message>
+        <source>The video of a speaking face.</source>
+        <translation>人脸说话的视频。</translation>
+    </message>
+    <message>
+        <source>track takes one VIDEO (usage: toonface-cli %1)</source>
+        <translation>track 只接受一个 VIDEO（用法：toonface-cli %1）</translation>
+    </message>
+    <message>
+        <source>Track the face of a video frame by frame and write its motion as JSON (toonface.track/1).</source>
+        <translation>逐帧跟踪视频中的人脸，并将其动作写成 JSON（toonface.track/1）。</translation>
+    </message>
+    <message>
+        <source>Show this help.</source>
+        <translation>显示此帮助。</translation>
+    </message>
+    <message>
+        <source>%1 (usage: %2)</source>
+        <translation>%1（用法：%2）</translation>
+    </message>
+    <message>
+        <source>Usage: %1</source>
+        <translation>用法：%1</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1: not a face JSON: %2 at offset %3</source>
+        <translation>%1：不是人脸 JSON：%2，位于偏移 %3</translation>
+    </message>
+    <message>
+        <source>%1: the landmark method could not serve (%2); the points come from the classic method</source>
+        <translation>%1：关键点方法无法使用（%2）；特征点来自经典方法</translation>
+    </message>
+    <message>
+        <source>%1: %2 faces found; the largest, most central one is used</source>
+        <translation>%1：找到 %2 张脸；使用最大、最居中的那张</translation>
+    </message>
+    <message>
+        <source>unknown --method &apos;%1&apos; (auto, classic or landmarks)</source>
+        <translation>未知的 --method“%1”（auto、classic 或 landmarks）</translation>
+    </message>
+    <message>
+        <source>unknown --emotion &apos;%1&apos; (neutral, smile, sad, angry or surprise)</source>
+        <translation>未知的 --emotion“%1”（neutral、smile、sad、angry 或 surprise）</translation>
+    </message>
+    <message>
+        <source>unknown --style &apos;%1&apos; (%2)</source>
+        <translation>未知的 --style“%1”（%2）</translation>
+    </message>
+    <message>
+        <source>What the drawing shows: head (framed square around the head, the default) or photo (the photo&apos;s whole frame, to lay over the photo).</source>
+        <translation>绘图的内容：head（头部周围的方形取景，默认）或 photo（照片的完整画面，可叠加在照片上）。</translation>
+    </message>
+    <message>
+        <source>unknown --frame &apos;%1&apos; (head, photo)</source>
+        <translation>未知的 --frame“%1”（head、photo）</translation>
+    </message>
+    <message>
+        <source>cannot create the folder %1</source>
+        <translation>无法创建文件夹 %1</translation>
+    </message>
+    <message>
+        <source>--neutral-frame takes a frame number from 0, not &apos;%1&apos;</source>
+        <translation>--neutral-frame 需要从 0 开始的帧编号，而不是“%1”</translation>
+    </message>
+    <message>
+        <source>tracking %1: %2 %</source>
+        <translation>正在跟踪 %1：%2 %</translation>
+    </message>
+    <message>
+        <source>Toonface turns a photo into a personal cartoon face drawn in SVG and makes it talk.
+Every job of the editor, with no display.</source>
+        <translation>Toonface 把照片变成以 SVG 绘制的个人卡通脸，并让它说话。
+编辑器的每项工作，都不需要显示器。</translation>
+    </message>
+    <message>
+        <source>Commands:</source>
+        <translation>命令：</translation>
+    </message>
+    <message>
+        <source>options of one command</source>
+        <translation>单个命令的选项</translation>
+    </message>
+    <message>
+        <source>the version</source>
+        <translation>版本</translation>
+    </message>
+    <message>
+        <source>Exit codes: 0 success, 2 usage, 3 unreadable or invalid input, 4 no face found,
+5 the audio and the script could not be aligned, 1 other failures.</source>
+        <translation>退出代码：0 成功，2 用法错误，3 无法读取或无效的输入，4 找不到人脸，
+5 音频与文稿无法对齐，1 其他失败。</translation>
+    </message>
+    <message>
+        <source>no command given; try &apos;toonface-cli --help&apos;</source>
+        <translation>未指定命令；请尝试“toonface-cli --help”</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos;; try &apos;toonface-cli --help&apos;</source>
+        <translation>未知的命令“%1”；请尝试“toonface-cli --help”</translation>
+    </message>
+</context>
+</TS>
