@@ -52,6 +52,13 @@ QMap<QString, ComponentStyle> baseComponents()
     cheeks.fill.setAlpha(77); // 30 %, in the 8 bits a project file keeps
     cheeks.visible = false;
     c.insert(QStringLiteral("cheeks"), cheeks);
+    // The cues of expressions (render/svgexpression.h): creases and a smile's blush.
+    ComponentStyle creases = paint(outline, nullptr, 0);
+    creases.fill.setAlpha(204); // 80 %
+    c.insert(QStringLiteral("creases"), creases);
+    ComponentStyle blush = paint("#f06a6a", nullptr, 0);
+    blush.fill.setAlpha(115); // 45 %
+    c.insert(QStringLiteral("blush"), blush);
     // Drawn only when the appearance has them; these are the colours until a photo gives its own.
     c.insert(QStringLiteral("glasses"), paint(nullptr, "#2a2a2e", 2.6));
     c.insert(QStringLiteral("moustache"), paint("#3d2b1f", "#22170f", 1.2));

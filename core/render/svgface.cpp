@@ -3,6 +3,7 @@
 #include "face/caricature.h"
 #include "face/fapu.h"
 #include "render/curves.h"
+#include "render/svgexpression.h"
 #include "render/svgfeatures.h"
 #include "render/svgparts.h"
 
@@ -578,6 +579,7 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
     const Appearance &look = style.appearance;
     if (look.beard)
         parts.push_back(makeBeard(P, g.es0));
+    makeExpressionCues(P, Pt {g.neutral}, g.es0, &parts);
     makeMouth(P, &parts);
     if (look.moustache)
         parts.push_back(makeMoustache(P, g.es0));

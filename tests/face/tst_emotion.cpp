@@ -110,7 +110,8 @@ private Q_SLOTS:
             QVERIFY(s.d("8.4").y() > clear && s.d("8.3").y() > clear);
             QVERIFY(s.d("8.2").y() < 0); // the lower lip pushed up under the frown
         }
-        // Angry: inner brow ends down and together (a V), lids narrowed, lips pressed and narrow.
+        // Angry: inner brow ends down and together (a V), outer ends up, lids narrowed, the lips
+        // bared on the teeth with their corners down.
         {
             const Posed s = posed(face, emotionPose(face, Emotion::Angry, intensity));
             for (bool left : {true, false})
@@ -118,9 +119,11 @@ private Q_SLOTS:
             QVERIFY(s.d("4.2").y() > clear && s.d("4.1").y() > clear);
             QVERIFY(s.d("4.2").x() > clear / 3 && s.d("4.1").x() < -clear / 3);
             QVERIFY(s.eyeOpening(true) < s.eyeOpening0(true));
-            QVERIFY(s.mouthWidth() < s.mouthWidth0() - clear * s.es0);
-            QVERIFY(s.d("8.4").y() > 0 && s.d("8.3").y() > 0);
-            QVERIFY(s.opening() <= posed(face, Pose()).opening()); // pressed, not parted
+            QVERIFY(s.d("4.6").y() < 0 && s.d("4.5").y() < 0);
+            QVERIFY(s.mouthWidth() <= s.mouthWidth0() + 1e-9); // bared, not a smile's widening
+            QVERIFY(s.d("8.4").y() > clear / 2 && s.d("8.3").y() > clear / 2);
+            QVERIFY(s.opening() > posed(face, Pose()).opening() + 0.5 * clear * s.es0); // bared teeth
+            QVERIFY(s.d("8.9").y() < 0); // the upper lip raised off them
         }
         // Surprise: brows high, eyes wide, the jaw dropped under rounded lips.
         {
