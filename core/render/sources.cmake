@@ -5,4 +5,6 @@ list(APPEND TOONFACE_CORE_SOURCES
   render/svgface.h render/svgface.cpp
   render/svgparts.h
   render/svgfeatures.h render/svgfeatures.cpp
-  render/svgexpression.h render/svgexpression.cpp)
+  render/svgexpression.h render/svgexpression.cpp
+  render/svgbody.h render/svgbody.cpp
+  render/svglayer.h render/svglayer.cpp)
