@@ -404,10 +404,11 @@ private Q_SLOTS:
         QCOMPARE(root.attribute(QStringLiteral("viewBox")),
             QStringLiteral("%1 %2 %3 %4").arg(frame.x()).arg(frame.y()).arg(frame.width()).arg(frame.height()));
         QCOMPARE(root.attribute(QStringLiteral("width")).toDouble(), frame.width());
-        // Rendered, the face fills the picture: the frame's centre is skin, its corner background.
+        // Rendered, the face fills the picture: the frame's centre is skin, its top corner background
+        // (the shoulders may reach the bottom ones).
         const QImage image = rasterizeSvg(svgFace.svg(), QSize(200, int(200 / aspect)), Qt::white);
         QVERIFY(image.pixelColor(image.width() / 2, image.height() / 2) != QColor(Qt::white));
-        QCOMPARE(image.pixelColor(1, image.height() - 2), QColor(Qt::white));
+        QCOMPARE(image.pixelColor(1, 1), QColor(Qt::white));
     }
 
     void eyeCoversCanBeLeftOut()
