@@ -2,8 +2,10 @@
 
 #include "face/facemodel.h"
 #include "face/fapu.h"
+#include "face/mouthshape.h"
 #include "face/pose.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace toonface {
@@ -85,6 +87,22 @@ Pose emotionPose(const FaceModel &face, Emotion emotion, double intensity)
         // 8.9 and 8.2 lie on or follow the centre line; 8.10 follows 8.9 by rule.
         if (std::strcmp(mirror, move.id) != 0 && std::strcmp(move.id, "8.9") != 0)
             pose.offset[pt::idx(mirror)] += QPointF(-d.x(), d.y());
+    }
+    // A photo taken smiling would smile through every emotion: sad and angry first take the
+    // photo's own smile out (its corners above the line where the lips meet come down to it), and
+    // sad shuts lips photographed apart (a pout, not a grin).
+    if (emotion == Emotion::Sad || emotion == Emotion::Angry) {
+        const QPointF lipLine = (face.point("2.2") + face.point("2.3")) / 2.0;
+        const double cornerY = (face.point("8.4").y() + face.point("8.3").y()) / 2.0;
+        const double ownSmile = std::max(0.0, lipLine.y() - cornerY);
+        for (const char *id : {"8.4", "8.3"})
+            pose.offset[pt::idx(id)] += QPointF(0, ownSmile * intensity);
+    }
+    if (emotion == Emotion::Sad) {
+        const std::array<QPointF, 4> shut = restingMouth(face);
+        const char *ids[] = {"8.9", "8.2", "8.4", "8.3"};
+        for (int k = 0; k < 4; ++k)
+            pose.offset[pt::idx(ids[k])] += shut[k] * intensity;
     }
     const double scale = 1.0 + (preset.eyeOpenScale - 1.0) * intensity;
     pose.leftEyeOpen = scale;

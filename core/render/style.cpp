@@ -429,6 +429,11 @@ void Style::sampleColours(const QImage &original, const FaceModel &face)
         components[QStringLiteral("eyeballs")].fill = iris;
 
     sampleClothes(sampler, face, es0, photo.height(), &components[QStringLiteral("body")]);
+    // Expression lines are a shadow of the skin, so they show on every skin tone.
+    QColor crease = skinUsed.darker(190);
+    crease.setAlpha(
+        components.value(QStringLiteral("creases"), baseComponents().value(QStringLiteral("creases"))).fill.alpha());
+    components[QStringLiteral("creases")].fill = crease;
 }
 
 QString eyebrowVariantName(EyebrowVariant v)

@@ -138,6 +138,34 @@ private Q_SLOTS:
         }
     }
 
+    // A face photographed with a grin (corners above the lips' line, lips apart): sad and angry
+    // take the grin out, sad shuts the lips; smile and surprise keep the photo's mouth as it is.
+    void grinningPhoto()
+    {
+        FaceModel face = testFace();
+        const double es0 = face.fapu().es0;
+        auto move = [&](const char *id, QPointF by) {
+            face.setPoint(pt::idx(id), face.point(id) + by * es0, face.isHandPlaced(pt::idx(id)));
+        };
+        move("8.4", {-0.05, -0.2});
+        move("8.3", {0.05, -0.2});
+        move("8.2", {0, 0.16});
+        move("2.3", {0, 0.16});
+        move("2.1", {0, 0.16});
+        const double lipLine = (face.point("2.2").y() + face.point("2.3").y()) / 2.0;
+        for (Emotion e : {Emotion::Sad, Emotion::Angry}) {
+            const Posed s = posed(face, emotionPose(face, e, 1.0));
+            QVERIFY2(s.at("8.4").y() > lipLine + 0.05 * es0 && s.at("8.3").y() > lipLine + 0.05 * es0,
+                qPrintable(emotionName(e)));
+        }
+        const Posed sad = posed(face, emotionPose(face, Emotion::Sad, 1.0));
+        QVERIFY(sad.opening() < 0.02 * es0);
+        const Posed half = posed(face, emotionPose(face, Emotion::Sad, 0.5));
+        QVERIFY(half.at("8.4").y() > face.point("8.4").y() + 0.1 * es0);
+        const Posed smile = posed(face, emotionPose(face, Emotion::Smile, 1.0));
+        QVERIFY(smile.at("8.4").y() < face.point("8.4").y());
+    }
+
     void halfIsHalfOfFull()
     {
         const FaceModel face = testFace();

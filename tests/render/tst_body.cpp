@@ -148,6 +148,11 @@ private Q_SLOTS:
         const ComponentStyle body = style.components.value(QStringLiteral("body"));
         QVERIFY(body.visible);
         QVERIFY2(colourDistance(body.fill, shirt) < 40, qPrintable(body.fill.name()));
+        // The expression lines are a shade of the sampled skin, half as light or less.
+        const QColor skin = style.components.value(QStringLiteral("face")).fill;
+        const QColor crease = style.components.value(QStringLiteral("creases")).fill;
+        QVERIFY(crease.lightness() < skin.lightness() * 0.6);
+        QVERIFY(std::abs(crease.hslHue() - skin.hslHue()) < 12);
 
         const int cut = int(face.point("2.1").y() + 0.2 * face.fapu().es0);
         Style cropped = Style::preset(QStringLiteral("normal"));

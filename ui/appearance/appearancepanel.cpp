@@ -203,6 +203,7 @@ QWidget *AppearancePanel::buildComponents()
         m_rows.append(row);
         ++r;
     }
+    grid->setRowStretch(r, 1); // the rows stay together at the top of a tall dock
     auto *scroll = new QScrollArea;
     scroll->setWidget(box);
     scroll->setWidgetResizable(true);
