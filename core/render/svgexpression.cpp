@@ -93,12 +93,14 @@ void makeExpressionCues(const Pt &P, const Pt &N, double es0, std::vector<Part> 
         addCrease(out, id("crease-worry-left", "crease-worry-right"), middleBrow + up * 0.1, innerBrow + up * 0.12, up,
             0.025 * es0, w * s.worry);
     }
-    // Surprise: two long lines across the forehead, over the raised brows.
+    // Surprise: two long lines across the forehead, over the raised brows (on a low forehead they
+    // crowd under the hairline).
     const double top = std::min({P("4.4").y(), P("4.3").y(), P("4.2").y(), P("4.1").y()});
     const double left = P("4.4").x(), right = P("4.3").x();
     const char *ids[] = {"crease-forehead-1", "crease-forehead-2"};
     for (int i = 0; i < 2; ++i) {
-        const double y = top - (0.11 + 0.09 * i) * es0;
+        // Never over the hair: at most up to just under the hairline.
+        const double y = std::max(top - (0.11 + 0.09 * i) * es0, P("11.1").y() + (0.1 + 0.06 * (1 - i)) * es0);
         const double inset = (0.05 + 0.08 * i) * (right - left) / 2.0;
         addCrease(
             out, ids[i], QPointF(left + inset, y), QPointF(right - inset, y), up, 0.03 * es0, 0.9 * w * s.forehead);

@@ -153,6 +153,28 @@ private Q_SLOTS:
         }
     }
 
+    // Forehead lines stay under the hairline, even on a low forehead.
+    void foreheadLinesUnderTheHairline()
+    {
+        for (Case c : faces()) {
+            // A low forehead: the hairline brought down to just over the brows.
+            const double es0 = c.face.fapu().es0;
+            const QPointF lowered(c.face.point("11.1").x(), c.face.point("4.4").y() - 0.2 * es0);
+            c.face.setPoint(pt::idx("11.1"), lowered, true);
+            for (const Case &face : {c}) {
+                SvgFace svg(face.face, styleFor(face));
+                const QVector<FacePart> parts = svg.parts(emotionPose(face.face, Emotion::Surprise, 1.0));
+                for (const char *id : {"crease-forehead-1", "crease-forehead-2"}) {
+                    const QVector<double> n
+                        = numbers(partById(parts, QLatin1StringView(id)).geometry.value(QStringLiteral("d")));
+                    QCOMPARE(n.size(), 14);
+                    for (int i = 1; i < n.size(); i += 2)
+                        QVERIFY2(n[i] > lowered.y(), id);
+                }
+            }
+        }
+    }
+
     // A sad face still speaks, and still looks sad while it does: its cue stays, and speech
     // alone draws none.
     void cuesWhileSpeaking()
