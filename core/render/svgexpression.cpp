@@ -88,6 +88,11 @@ void makeExpressionCues(const Pt &P, const Pt &N, double es0, std::vector<Part> 
         addCrease(out, id("crease-frown-left", "crease-frown-right"), frownBottom, frownBottom + up * 0.17, -outward,
             0.015 * es0, w * s.frown);
 
+        // Angry: the nostrils flare, a dark fold outside each nose wing.
+        const QPointF nostril = P(id("9.4", "9.5"));
+        addCrease(out, id("crease-nostril-left", "crease-nostril-right"), wing + outward * 0.02 - up * 0.02,
+            lerp(wing, nostril, 0.7) + outward * 0.02 - up * 0.04, outward, 0.035 * es0, 0.8 * w * s.frown);
+
         // Sad: worry lines over the raised inner brow ends, slanting as the brows do.
         const QPointF middleBrow = P(id("4.4", "4.3"));
         addCrease(out, id("crease-worry-left", "crease-worry-right"), middleBrow + up * 0.1, innerBrow + up * 0.12, up,

@@ -1,8 +1,8 @@
 #pragma once
 
-// The cartoon cues of an expression beyond the points' motion: frown lines between lowered brows,
-// worry lines over raised inner brow ends, forehead lines over raised brows, cheek lines and
-// blush beside a smiling mouth. Internal to core/render (SvgFace draws them).
+// The cartoon cues of an expression beyond the points' motion: frown lines between lowered brows
+// and flared nostrils, worry lines over raised inner brow ends, forehead lines over raised brows,
+// cheek lines and blush beside a smiling mouth. Internal to core/render (SvgFace draws them).
 //
 // Each cue's strength comes from how far the posed points have moved from the neutral ones, so it
 // follows an emotion's intensity (and its fades on the timeline) wherever the pose comes from. A
@@ -25,7 +25,8 @@ struct CueStrengths
 CueStrengths cueStrengths(const Pt &P, const Pt &N, double es0);
 
 // Dynamic parts, drawn over the jaw and under the mouth: "blush-left/right" (style key "blush"),
-// "crease-cheek-left/right", "crease-frown-left/right", "crease-worry-left/right",
+// "crease-cheek-left/right", "crease-frown-left/right", "crease-nostril-left/right" (flared
+// nostrils), "crease-worry-left/right",
 // "crease-forehead-1/2" (style key "creases").
 void makeExpressionCues(const Pt &P, const Pt &N, double es0, std::vector<Part> *out);
 

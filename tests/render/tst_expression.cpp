@@ -98,6 +98,7 @@ QVector<Cue> cues()
         {Emotion::Smile, [](const auto &p) { return creaseArea(p, "crease-cheek-left"); }},
         {Emotion::Sad, [](const auto &p) { return creaseArea(p, "crease-worry-left"); }},
         {Emotion::Angry, [](const auto &p) { return creaseArea(p, "crease-frown-left"); }},
+        {Emotion::Angry, [](const auto &p) { return creaseArea(p, "crease-nostril-right"); }},
         {Emotion::Surprise, [](const auto &p) { return creaseArea(p, "crease-forehead-1"); }}};
 }
 
