@@ -25,11 +25,27 @@ bool isActiveElement(QStringView name)
         || name == QLatin1StringView("object") || name == QLatin1StringView("embed");
 }
 
+// An attribute value as a browser reads a URL's scheme: lower case, with the white space and
+// control characters it skips inside "java\tscript:" left out.
 QString squeezed(QStringView value)
 {
-    QString s = value.toString().toLower();
-    s.remove(QRegularExpression(QStringLiteral("\\s")));
-    return s;
+    QString out;
+    out.reserve(value.size());
+    for (const QChar c : value) {
+        if (c.unicode() > 0x20)
+            out.append(c.toLower());
+    }
+    return out;
+}
+
+// Whether an attribute value could run code or open another document: a javascript: or
+// vbscript: URL anywhere in it (an <animate> or <set> can put one into a link through its
+// values, to or from), or a data: document that is not an image.
+bool isActiveValue(QStringView value)
+{
+    const QString v = squeezed(value);
+    return v.contains(QLatin1StringView("javascript:")) || v.contains(QLatin1StringView("vbscript:"))
+        || v.contains(QLatin1StringView("data:text")) || v.contains(QLatin1StringView("data:application"));
 }
 
 // A link the layer may keep: to an element of its own, or an embedded picture.
@@ -57,6 +73,13 @@ bool refersOutside(QStringView text)
     return false;
 }
 
+// An <animate> or <set> of a link (href) could point it anywhere at play time: a drawing never
+// needs one.
+bool animatesLink(const QXmlStreamAttributes &attributes)
+{
+    return squeezed(attributes.value(QLatin1StringView("attributeName"))).endsWith(QLatin1StringView("href"));
+}
+
 QString withPrefixedUrls(const QString &text, const QString &prefix)
 {
     QString out = text;
@@ -75,7 +98,7 @@ void writeInertStart(const QXmlStreamReader &reader, QXmlStreamWriter &writer, c
     const QXmlStreamAttributes attributes = reader.attributes();
     for (const QXmlStreamAttribute &a : attributes) {
         const QStringView name = a.name();
-        if (name.startsWith(QLatin1StringView("on"), Qt::CaseInsensitive))
+        if (name.startsWith(QLatin1StringView("on"), Qt::CaseInsensitive) || isActiveValue(a.value()))
             continue;
         QString value = a.value().toString();
         if (name == QLatin1StringView("href") || name == QLatin1StringView("src")) {
@@ -147,7 +170,7 @@ bool readLayerSvg(const QByteArray &content, const QString &idPrefix, LayerDrawi
                 continue;
             }
             ++depth;
-            if (skipFrom == 0 && isActiveElement(reader.name()))
+            if (skipFrom == 0 && (isActiveElement(reader.name()) || animatesLink(reader.attributes())))
                 skipFrom = depth; // a script or foreign content: left out with everything inside
             if (skipFrom != 0)
                 continue;

@@ -209,7 +209,10 @@ std::optional<QVector<PinyinSyllable>> splitPinyinWord(const QString &word, QVec
     }
     flush(int(word.size()));
 
-    for (const auto &[offset, piece] : pieces) {
+    for (const auto &entry : pieces) {
+        // Named, not bound: clang before 16 cannot capture structured bindings in a lambda.
+        const int offset = entry.first;
+        const QString &piece = entry.second;
         // Longest valid first syllable whose rest also splits (depth-first).
         std::function<bool(int)> split = [&](int from) {
             if (from == piece.size())

@@ -50,6 +50,45 @@ HeadMotion fitHeadMotion(const std::array<QPointF, kPointCount> &neutral, const 
     return h;
 }
 
+namespace {
+
+// The brows, each from its inner end to its outer end (face-model.md).
+constexpr std::array<std::array<const char *, 4>, 2> kBrows
+    = {{{"4.2", "4.4", "4.4a", "4.6"}, {"4.1", "4.3", "4.3a", "4.5"}}};
+
+} // namespace
+
+void fitBrowMotion(const std::array<QPointF, kPointCount> &neutral, std::array<QPointF, kPointCount> *displacement)
+{
+    for (const auto &brow : kBrows) {
+        const QPointF inner = neutral[pt::idx(brow.front())];
+        const QPointF axis = neutral[pt::idx(brow.back())] - inner;
+        const double length2 = QPointF::dotProduct(axis, axis);
+        if (!(length2 > 0))
+            continue;
+        // Least squares of d = a + b * u, u the position along the brow (0 inner, 1 outer).
+        double su = 0, suu = 0;
+        QPointF sd, sud;
+        std::array<double, 4> u {};
+        for (size_t k = 0; k < brow.size(); ++k) {
+            const int i = pt::idx(brow[k]);
+            u[k] = QPointF::dotProduct(neutral[i] - inner, axis) / length2;
+            su += u[k];
+            suu += u[k] * u[k];
+            sd += (*displacement)[i];
+            sud += u[k] * (*displacement)[i];
+        }
+        const double n = double(brow.size());
+        const double det = n * suu - su * su;
+        if (!(std::abs(det) > 1e-9))
+            continue;
+        const QPointF b = (n * sud - su * sd) / det;
+        const QPointF a = (sd - b * su) / n;
+        for (size_t k = 0; k < brow.size(); ++k)
+            (*displacement)[pt::idx(brow[k])] = a + b * u[k];
+    }
+}
+
 FaceMotion measureMotion(const FaceMeasurement &neutral, const FaceMeasurement &now)
 {
     FaceMotion m;
@@ -64,6 +103,7 @@ FaceMotion measureMotion(const FaceMeasurement &neutral, const FaceMeasurement &
         local[i] = head.unmap(now.points[i]);
         m.displacementEs0[i] = (local[i] - n[i]) / es0;
     }
+    fitBrowMotion(n, &m.displacementEs0);
     m.rotationDeg = head.rotationDeg();
     m.scale = head.scale();
     const QPointF eyeMid = (at(n, "3.6") + at(n, "3.5")) / 2.0;

@@ -49,8 +49,16 @@ struct FaceMotion
     double mouthOpenEs0 = 0; // gap between the inner lips 2.2-2.3
     QPointF gazeEs0; // the eyeballs' mean offset from their eyes' centres, relative to the neutral's
 };
-// requires: neutral.found, its eyeball centres apart.
+// requires: neutral.found, its eyeball centres apart. The brows' displacements are fitted by
+// fitBrowMotion.
 FaceMotion measureMotion(const FaceMeasurement &neutral, const FaceMeasurement &now);
+
+// A brow moves as a whole: it rises or falls, tilts (its inner end against its outer: sad,
+// angry), and is drawn in or out. Replaces each brow's four point displacements by their
+// least-squares straight line along the brow (in the position from its inner end, on the
+// neutral face), which keeps those motions exactly and leaves out the point-to-point wobble of
+// tracked landmarks that would bend the drawn brow into shapes no brow makes.
+void fitBrowMotion(const std::array<QPointF, kPointCount> &neutral, std::array<QPointF, kPointCount> *displacement);
 
 // The pupil in an eye outlined by `outline` (frame pixels) of a grey image: the centroid of its
 // darkest quarter of pixels (iris and pupil), or the outline's centre when the eye is too small

@@ -55,9 +55,55 @@ QVector<BlinkEvent> detectBlinks(
     return blinks;
 }
 
+namespace {
+
+// `before` without its keys in [from, to], plus `added`, in time order.
+template<typename Key>
+QVector<Key> spliced(const QVector<Key> &before, const QVector<Key> &added, double from, double to)
+{
+    constexpr double eps = 1e-9;
+    QVector<Key> out;
+    for (const Key &k : before) {
+        if (k.time < from - eps || k.time > to + eps)
+            out.append(k);
+    }
+    out += added;
+    std::stable_sort(out.begin(), out.end(), [](const Key &a, const Key &b) { return a.time < b.time; });
+    return out;
+}
+
+// The blinks of `before` that do not touch [from, to], plus `added`, in time order.
+QVector<BlinkEvent> splicedBlinks(
+    const QVector<BlinkEvent> &before, const QVector<BlinkEvent> &added, double from, double to)
+{
+    QVector<BlinkEvent> out;
+    for (const BlinkEvent &b : before) {
+        if (b.time + b.duration < from || b.time > to)
+            out.append(b);
+    }
+    out += added;
+    std::stable_sort(out.begin(), out.end(), [](const BlinkEvent &a, const BlinkEvent &b) { return a.time < b.time; });
+    return out;
+}
+
+// Mouth keys `added` in place of those of `timeline` in [from, to]; a shut key starts the span
+// when a key before it would otherwise sound on into it.
+void spliceMouth(Timeline *timeline, QVector<MouthKey> added, double from, double to)
+{
+    const bool keyBefore = std::any_of(timeline->mouthKeys().cbegin(), timeline->mouthKeys().cend(),
+        [from](const MouthKey &k) { return k.time < from - 1e-9; });
+    if (keyBefore && (added.isEmpty() || added.first().time > from + 1e-9))
+        added.prepend({from, MouthShape::M, 1.0, 0.0});
+    timeline->setMouthKeys(spliced(timeline->mouthKeys(), added, from, to));
+}
+
+} // namespace
+
 void addTrackToTimeline(
     const QVector<TrackedFrame> &frames, double fps, Timeline *timeline, const RetargetOptions &options, double offset)
 {
+    if (frames.isEmpty())
+        return;
     QVector<const char *> ids = {"8.9", "8.2", "8.4", "8.3", "4.6", "4.4a", "4.4", "4.2", "4.1", "4.3", "4.3a", "4.5"};
     bool snapped = options.mouthKeysFromShapes;
     for (const TrackedFrame &f : frames)
@@ -65,6 +111,9 @@ void addTrackToTimeline(
     if (snapped)
         ids.remove(0, 4);
 
+    const double period = fps > 0 ? 1.0 / fps : 0.04;
+    const double from = frames.first().time + offset;
+    const double to = frames.last().time + offset + period;
     QVector<PoseKey> pose;
     QVector<GazeKey> gaze;
     QVector<HeadKey> head;
@@ -87,52 +136,31 @@ void addTrackToTimeline(
         open.append((f.motion.leftEyeOpen + f.motion.rightEyeOpen) / 2);
     }
     if (options.pose)
-        timeline->setPoseKeys(pose);
+        timeline->setPoseKeys(spliced(timeline->poseKeys(), pose, from, to));
     if (options.gaze)
-        timeline->setGazeKeys(gaze);
+        timeline->setGazeKeys(spliced(timeline->gazeKeys(), gaze, from, to));
     if (options.head)
-        timeline->setHeadKeys(head);
+        timeline->setHeadKeys(spliced(timeline->headKeys(), head, from, to));
     if (options.blinks)
-        timeline->setBlinks(detectBlinks(times, open, fps));
+        timeline->setBlinks(splicedBlinks(timeline->blinks(), detectBlinks(times, open, fps), from, to));
     // Each shape sounds until the next one (the last until the last frame's end).
     for (qsizetype k = 0; k < mouth.size(); ++k) {
-        const double end = k + 1 < mouth.size() ? mouth[k + 1].time : times.last() + (fps > 0 ? 1.0 / fps : 0.04);
+        const double end = k + 1 < mouth.size() ? mouth[k + 1].time : times.last() + period;
         mouth[k].duration = std::max(0.0, end - mouth[k].time);
     }
     if (snapped && options.pose) {
         // Tracked shapes follow each other at the frame rate: no minimum hold or anticipation
         // beyond a frame, and the mouth shuts only in real pauses.
         MouthSmoothing smoothing = timeline->smoothing();
-        const double period = fps > 0 ? 1.0 / fps : 0.04;
         smoothing.minHold = std::min(smoothing.minHold, period);
         smoothing.coarticulation = std::min(smoothing.coarticulation, period);
         timeline->setSmoothing(smoothing);
-        timeline->setMouthKeys(mouth);
+        spliceMouth(timeline, mouth, from, to);
+    } else if (options.pose) {
+        // The tracked mouth is in the pose keys: mouth keys in the span would add a second mouth.
+        spliceMouth(timeline, {}, from, to);
     }
 }
-
-} // namespace toonface
-
-namespace toonface {
-
-namespace {
-
-// `kept` (the keys outside [from, to]) and `added`, in time order.
-template<typename Key>
-QVector<Key> spliced(const QVector<Key> &before, const QVector<Key> &added, double from, double to)
-{
-    constexpr double eps = 1e-9;
-    QVector<Key> out;
-    for (const Key &k : before) {
-        if (k.time < from - eps || k.time > to + eps)
-            out.append(k);
-    }
-    out += added;
-    std::stable_sort(out.begin(), out.end(), [](const Key &a, const Key &b) { return a.time < b.time; });
-    return out;
-}
-
-} // namespace
 
 void addTakeToTimeline(const QVector<TrackedFrame> &frames, double fps, double duration,
     const QVector<MouthKey> &soundMouth, Timeline *timeline, double at)
@@ -153,27 +181,14 @@ void addTakeToTimeline(const QVector<TrackedFrame> &frames, double fps, double d
     timeline->setPoseKeys(spliced(timeline->poseKeys(), pose, at, end));
     timeline->setGazeKeys(spliced(timeline->gazeKeys(), take.gazeKeys(), at, end));
     timeline->setHeadKeys(spliced(timeline->headKeys(), take.headKeys(), at, end));
-
-    QVector<BlinkEvent> blinks;
-    for (const BlinkEvent &b : timeline->blinks()) {
-        if (b.time + b.duration < at || b.time > end)
-            blinks.append(b);
-    }
-    blinks += take.blinks();
-    std::stable_sort(
-        blinks.begin(), blinks.end(), [](const BlinkEvent &a, const BlinkEvent &b) { return a.time < b.time; });
-    timeline->setBlinks(blinks);
+    timeline->setBlinks(splicedBlinks(timeline->blinks(), take.blinks(), at, end));
 
     QVector<MouthKey> mouth;
     for (MouthKey k : soundMouth) {
         k.time += at;
         mouth.append(k);
     }
-    const bool keyBefore = std::any_of(timeline->mouthKeys().cbegin(), timeline->mouthKeys().cend(),
-        [at](const MouthKey &k) { return k.time < at - 1e-9; });
-    if (keyBefore && (mouth.isEmpty() || mouth.first().time > at + 1e-9))
-        mouth.prepend({at, MouthShape::M, 1.0, 0.0});
-    timeline->setMouthKeys(spliced(timeline->mouthKeys(), mouth, at, end));
+    spliceMouth(timeline, mouth, at, end);
 }
 
 } // namespace toonface

@@ -31,8 +31,11 @@ struct RetargetOptions
 // Puts tracked frames onto `timeline` as ordinary key frames, `offset` seconds added to their
 // times: a pose key per frame (the mouth controls 8.9 8.2 8.4 8.3 and the eight brow points, in
 // ES0 units, so any face can play them), a gaze key and a head key per frame, and the blinks
-// the lids show. Lost frames give no keys (the keys around them ease across). The tracks it
-// fills are replaced.
+// the lids show. Lost frames give no keys (the keys around them ease across). What the
+// filled tracks held in the frames' span (the first frame's time to one period after the
+// last's, `offset` added) is replaced; keys and blinks outside it are kept. Mouth keys in the
+// span give way too (to the snapped shapes, or to the tracked mouth in the pose keys), and a
+// shut key starts the span when a key before it would otherwise sound on into it.
 void addTrackToTimeline(const QVector<TrackedFrame> &frames, double fps, Timeline *timeline,
     const RetargetOptions &options = {}, double offset = 0.0);
 

@@ -135,6 +135,7 @@ private Q_SLOTS:
               "<rect id=\"r\" fill=\"url(#grad)\" style=\"fill:url('https://evil.example/a')\" "
               "width=\"3\" height=\"3\"/>"
               "<use xlink:href=\"#r\" x=\"4\"/>"
+              "<a><set attributeName=\"xlink:href\" to=\"https://evil.example/b\"/></a>"
               "<object data=\"x.html\"/><embed src=\"y.swf\"/>"
               "</svg>";
         LayerDrawing drawing;

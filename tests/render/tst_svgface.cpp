@@ -1108,6 +1108,30 @@ private Q_SLOTS:
         QVERIFY(svg.contains("&lt;/script&gt;&lt;script&gt;alert(8)&lt;/script&gt; ]]&gt;"));
     }
 
+    // Found by fuzz_layer: a javascript: URL with white space inside its scheme (browsers skip
+    // tabs and line breaks there), and one put into a link by an animation's values or to.
+    void layersAreInertAgainstHiddenSchemes()
+    {
+        SvgFace svgFace(testFace(), preset("normal"));
+        svgFace.addLayer("<svg xmlns=\"http://www.w3.org/2000/svg\">"
+                         "<a href=\"java\tscript:alert(1)\"><rect id=\"tab\" width=\"5\" height=\"5\"/></a>"
+                         "<a href=\"java&#x0A;script:alert(2)\"><rect width=\"5\" height=\"5\"/></a>"
+                         "<a><animate id=\"anim\" attributeName=\"href\" values=\"#x;javascript:alert(3)\"/>"
+                         "<set attributeName=\"href\" to=\"vbscript:alert(4)\"/><rect width=\"5\" height=\"5\"/></a>"
+                         "<circle id=\"moving\" r=\"4\"><animate attributeName=\"r\" values=\"4;8;4\" dur=\"1s\"/>"
+                         "</circle></svg>");
+        const QByteArray svg = svgFace.svg();
+        const Node root = parsed(svg);
+        const Node *layer = findId(root, QStringLiteral("layer-1"));
+        QVERIFY(layer);
+        QVERIFY(findId(*layer, QStringLiteral("layer-1-tab")));
+        QVERIFY(!findId(*layer, QStringLiteral("layer-1-anim"))); // an animated link is left out whole
+        for (const char *active : {"alert(1)", "alert(2)", "alert(3)", "alert(4)", "script:"})
+            QVERIFY2(!svg.contains(active), active);
+        // An animation of a drawing keeps its values.
+        QVERIFY(svg.contains("values=\"4;8;4\""));
+    }
+
     void badLayerFiles_data()
     {
         QTest::addColumn<QByteArray>("content");

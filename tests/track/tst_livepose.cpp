@@ -54,6 +54,7 @@ private Q_SLOTS:
     void chooseMouthFollowsTheMode();
     void takeReplacesItsSpanOnly();
     void takeWithSoundMouth();
+    void importedTrackReplacesItsSpanOnly();
 };
 
 void TestLivePose::liveShowsWhatARecordingPlays()
@@ -182,6 +183,55 @@ void TestLivePose::takeWithSoundMouth()
             QVERIFY(!k.offsetsEs0.contains(QString::fromLatin1(id)));
         QVERIFY(k.offsetsEs0.contains(QStringLiteral("4.2")));
     }
+}
+
+// An imported video's track lands on its own span of the timeline: what the animation held
+// before and after it (lip sync, blinks, head keys) stays; inside, the tracked motion replaces
+// it, and the lip-synced mouth there gives way to the tracked one.
+void TestLivePose::importedTrackReplacesItsSpanOnly()
+{
+    Timeline timeline;
+    for (const double t : {0.5, 1.5, 4.0}) {
+        timeline.addPoseKey(PoseKey {t, {{QStringLiteral("4.1"), QPointF(0, 0.1)}}});
+        timeline.addHeadKey({t, 5.0, {}, 1.0});
+        timeline.addGazeKey({t, QPointF(0.1, 0)});
+    }
+    timeline.setMouthKeys(
+        {{0.2, MouthShape::A, 1.0, 0.3}, {1.6, MouthShape::E, 1.0, 0.2}, {4.2, MouthShape::O, 1.0, 0.2}});
+    timeline.setBlinks({{0.8, 0.18}, {1.8, 0.18}, {4.5, 0.18}});
+
+    // Ten frames of a clip placed at 1.2 s: the span is [1.2, 1.6).
+    QVector<TrackedFrame> frames;
+    for (int i = 0; i < 10; ++i)
+        frames.append(movingFrame(i * 0.04, 0.5));
+    RetargetOptions options;
+    options.mouthKeysFromShapes = false;
+    addTrackToTimeline(frames, 25, &timeline, options, 1.2);
+
+    auto times = [](const auto &keys) {
+        QVector<double> out;
+        for (const auto &k : keys)
+            out.append(k.time);
+        return out;
+    };
+    for (const QVector<double> &t :
+        {times(timeline.poseKeys()), times(timeline.headKeys()), times(timeline.gazeKeys())}) {
+        QCOMPARE(t.size(), 2 + 10); // 0.5 and 4.0 kept, 1.5 replaced by the ten frames
+        QCOMPARE(t.first(), 0.5);
+        QCOMPARE(t[1], 1.2);
+        QCOMPARE(t.last(), 4.0);
+        QVERIFY(std::is_sorted(t.cbegin(), t.cend()));
+    }
+    QCOMPARE(timeline.headKeys()[1].rotationDeg, frames[0].motion.rotationDeg);
+    // Blinks outside kept (the clip has none: the eyes stay open).
+    QCOMPARE(times(timeline.blinks()), (QVector<double> {0.8, 1.8, 4.5}));
+    // Mouth: the lip-synced key in the span is gone and a shut key stops the one before it
+    // there; the tracked mouth is in the pose keys.
+    QCOMPARE(timeline.mouthKeys().size(), 3);
+    QCOMPARE(timeline.mouthKeys()[1].time, 1.2);
+    QCOMPARE(timeline.mouthKeys()[1].shape, MouthShape::M);
+    QCOMPARE(timeline.mouthKeys()[2].shape, MouthShape::O);
+    QVERIFY(timeline.poseKeys()[1].offsetsEs0.contains(QStringLiteral("8.2")));
 }
 
 QTEST_GUILESS_MAIN(TestLivePose)

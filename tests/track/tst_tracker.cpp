@@ -1,13 +1,17 @@
+#include "face/averageface.h"
 #include "talkingface.h"
+#include "track/facemeasure.h"
 #include "track/oneeuro.h"
 #include "track/retarget.h"
 #include "track/tracker.h"
 
 #include <QFileInfo>
+#include <QLineF>
 #include <QRandomGenerator>
 #include <QTest>
 
 #include <cmath>
+#include <functional>
 
 using namespace toonface;
 
@@ -277,6 +281,70 @@ private Q_SLOTS:
         QCOMPARE(open.time, 0.5 + 10 / kFps);
         QCOMPARE(open.offsetsEs0.value(QStringLiteral("8.2")), frames[10].motion.displacementEs0[pt::idx("8.2")]);
         QVERIFY(open.offsetsEs0.value(QStringLiteral("8.2")).y() > 0.1); // the lower lip went down
+    }
+
+    // A tracked brow moves as a brow does: its rise, tilt and squeeze come through exactly; the
+    // points' wobble against each other (which would bend the drawn brow) does not.
+    void browsMoveAsAWhole()
+    {
+        FaceMeasurement neutral;
+        neutral.found = true;
+        const FaceModel face = averageFace(QRectF(100, 100, 200, 260), QSize(400, 480));
+        for (int i = 0; i < kPointCount; ++i)
+            neutral.points[i] = face.point(i);
+        for (const char *id : {"3.12", "3.8", "3.11", "3.7", "9.15", "9.4", "9.5"})
+            neutral.stable.append(pt::idx(id));
+        const double es0 = QLineF(neutral.points[pt::idx("3.6")], neutral.points[pt::idx("3.5")]).length();
+        // Each brow from its inner end to its outer end.
+        const std::array<std::array<const char *, 4>, 2> brows {
+            {{"4.2", "4.4", "4.4a", "4.6"}, {"4.1", "4.3", "4.3a", "4.5"}}};
+        using Motion = std::function<QPointF(int brow, int k)>;
+        auto measured = [&](const Motion &by) {
+            FaceMeasurement now = neutral;
+            for (int b = 0; b < 2; ++b) {
+                for (int k = 0; k < 4; ++k)
+                    now.points[pt::idx(brows[b][k])] += by(b, k) * es0;
+            }
+            return measureMotion(neutral, now);
+        };
+
+        // The left brow raised and drawn in at its inner end, the right one tilted like a sad
+        // brow (inner end up): every point as tracked.
+        const Motion expressive = [](int b, int k) {
+            return b == 0 ? QPointF(0.02 * (1 - k / 3.0), -0.12) : QPointF(-0.03, -0.1 * (1 - k / 3.0));
+        };
+        const FaceMotion exact = measured(expressive);
+        for (int b = 0; b < 2; ++b) {
+            for (int k = 0; k < 4; ++k) {
+                const QPointF got = exact.displacementEs0[pt::idx(brows[b][k])];
+                QVERIFY2(QLineF(got, expressive(b, k)).length() < 0.01,
+                    qPrintable(
+                        QStringLiteral("%1: %2, %3").arg(QLatin1StringView(brows[b][k])).arg(got.x()).arg(got.y())));
+            }
+        }
+
+        // Wobble: the middle points up, the ends down (the brow bent, no rise). Each brow stays
+        // straight (its displacements grow evenly along it), its mean stays put, and little of
+        // the bend is left.
+        const FaceMotion wobble = measured([](int, int k) { return QPointF(0, k == 1 || k == 2 ? -0.05 : 0.05); });
+        for (const auto &brow : brows) {
+            std::array<QPointF, 4> d;
+            QPointF mean;
+            for (int k = 0; k < 4; ++k) {
+                d[k] = wobble.displacementEs0[pt::idx(brow[k])];
+                mean += d[k] / 4.0;
+                QVERIFY2(std::abs(d[k].y()) < 0.03, brow[k]);
+            }
+            QVERIFY(std::abs(mean.y()) < 0.01);
+            // On one line: the middle points between the ends in proportion to where they are.
+            const QPointF inner = face.point(pt::idx(brow[0])), outer = face.point(pt::idx(brow[3]));
+            for (int k = 1; k < 3; ++k) {
+                const QPointF p = face.point(pt::idx(brow[k]));
+                const double u
+                    = QPointF::dotProduct(p - inner, outer - inner) / QPointF::dotProduct(outer - inner, outer - inner);
+                QVERIFY(QLineF(d[k], d[0] + (d[3] - d[0]) * u).length() < 1e-9);
+            }
+        }
     }
 };
 

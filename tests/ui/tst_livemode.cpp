@@ -10,7 +10,9 @@
 #include "track/videofilesource.h"
 #include "uifixture.h"
 
+#include <QDir>
 #include <QFileInfo>
+#include <QPainter>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -92,6 +94,18 @@ void TestLiveMode::clipDrivesTheCartoon()
         if (f.hasTrack && !f.tracked.lost) {
             tracked.append(f.tracked.motion.mouthOpenEs0);
             shown.append(poseMouthGap(f.pose));
+        }
+        // With TOONFACE_SCREENSHOTS set, every fifth frame beside its cartoon, to look at.
+        const QString dir = qEnvironmentVariable("TOONFACE_SCREENSHOTS");
+        if (!dir.isEmpty() && f.index % 5 == 0) {
+            QImage pair(f.source.width() + f.cartoon.width(), std::max(f.source.height(), f.cartoon.height()),
+                QImage::Format_RGB32);
+            pair.fill(Qt::white);
+            QPainter painter(&pair);
+            painter.drawImage(0, 0, f.source);
+            painter.drawImage(f.source.width(), 0, f.cartoon);
+            painter.end();
+            pair.save(QDir(dir).filePath(QStringLiteral("live-%1.png").arg(f.index, 3, 10, QLatin1Char('0'))));
         }
     });
     session.start(std::move(source));
