@@ -8,7 +8,7 @@ fi
 export DEBIAN_FRONTEND=noninteractive
 apt-get update -q
 apt-get install -y -q --no-install-recommends \
-  build-essential cmake ninja-build pkg-config git clang-format \
+  build-essential cmake ninja-build pkg-config git clang-format clang libclang-rt-14-dev \
   qt6-base-dev qt6-base-dev-tools qt6-svg-dev qt6-multimedia-dev qt6-tools-dev qt6-tools-dev-tools \
   qt6-l10n-tools qt6-qpa-plugins libqt6svg6 libgl-dev \
   libopencv-dev libdlib-dev libdlib-data libblas-dev liblapack-dev \

@@ -76,6 +76,32 @@ QString describeNonImage(const QByteArray &data)
     return QStringLiteral("not an image (unrecognised data starting with %1)").arg(bytes.join(QLatin1Char(' ')));
 }
 
+// The first PNG chunk (before IEND) whose declared length runs past the end of the file,
+// described, or empty. libpng trusts a chunk's length when it allocates room for it: a file
+// of a few hundred bytes whose text chunk claims 2 GB makes it take that much memory.
+QString pngOverrun(const QByteArray &data)
+{
+    static const QByteArray signature("\x89PNG\r\n\x1a\n", 8);
+    if (!data.startsWith(signature))
+        return {};
+    qint64 at = signature.size();
+    while (at + 8 <= data.size()) {
+        const auto *p = reinterpret_cast<const uchar *>(data.constData() + at);
+        const quint32 length = (quint32(p[0]) << 24) | (quint32(p[1]) << 16) | (quint32(p[2]) << 8) | p[3];
+        const QByteArray type = data.mid(at + 4, 4);
+        const qint64 left = data.size() - (at + 8);
+        if (type == "IEND")
+            return {};
+        if (qint64(length) + 4 > left) // the data and its CRC
+            return QStringLiteral("its %1 chunk claims %2 bytes, but only %3 are left in the file")
+                .arg(QString::fromLatin1(type.toPercentEncoding()))
+                .arg(length)
+                .arg(std::max<qint64>(0, left - 4));
+        at += 12 + qint64(length);
+    }
+    return {};
+}
+
 enum class JpegEnd { Complete, Truncated, Unknown };
 
 // Walks the JPEG's marker segments and entropy-coded scans to its end-of-image marker.
@@ -213,6 +239,10 @@ QImage loadPhoto(const QString &path, QString *error)
         return {};
     }
     const QString format = QString::fromLatin1(reader.format()).toUpper();
+    if (const QString overrun = pngOverrun(data); !overrun.isEmpty()) {
+        *error = withFile(path, QStringLiteral("the PNG image is corrupt or truncated (%1)").arg(overrun));
+        return {};
+    }
     const QSize size = reader.size();
     if (size.isValid()) {
         const qint64 pixels = qint64(size.width()) * size.height();

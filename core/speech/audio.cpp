@@ -157,8 +157,14 @@ AudioResult streamAudio(
     QVector<float> out;
     float peak = 0;
     auto hand = [&] {
-        for (float s : out)
+        // A damaged float file can hold NaN or infinite samples (and the resampler spreads them
+        // to their neighbours): they are heard as nothing, so they become silence instead of
+        // poisoning every feature computed from them.
+        for (float &s : out) {
+            if (!std::isfinite(s))
+                s = 0;
             peak = std::max(peak, std::abs(s));
+        }
         r.sampleCount += out.size();
         if (!out.isEmpty() && sink)
             sink(out.constData(), out.size());

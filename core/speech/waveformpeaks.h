@@ -24,6 +24,7 @@ public:
         int samplesPerBin = 0;
         QVector<float> min;
         QVector<float> max;
+        bool operator==(const Level &) const = default;
     };
 
     WaveformPeaks() = default;

@@ -1,6 +1,7 @@
 #include "track/retarget.h"
 
 #include <algorithm>
+#include <tuple>
 
 namespace toonface {
 
@@ -162,9 +163,65 @@ void addTrackToTimeline(
     }
 }
 
-void addTakeToTimeline(const QVector<TrackedFrame> &frames, double fps, double duration,
-    const QVector<MouthKey> &soundMouth, Timeline *timeline, double at)
+namespace {
+
+// The take as live mode showed it with the sound's mouth while the face was lost: lost frames
+// hold the last tracked pose (the neutral before any) with the mouth controls at rest, and the
+// sound's keys (times from the take's start) cover only those stretches.
+std::pair<QVector<TrackedFrame>, QVector<MouthKey>> soundWhileLostTake(
+    QVector<TrackedFrame> frames, const QVector<MouthKey> &sound, double duration)
 {
+    QVector<MouthKey> mouth;
+    FaceMotion held;
+    double lostFrom = -1;
+    auto endSpan = [&](double to) {
+        if (lostFrom < 0)
+            return;
+        // The shape sounding when the face was lost, from then on, and the sound's keys after.
+        std::optional<MouthKey> sounding;
+        QVector<MouthKey> span;
+        for (const MouthKey &k : sound) {
+            if (k.time <= lostFrom + 1e-9)
+                sounding = k;
+            else if (k.time < to - 1e-9)
+                span.append(k);
+        }
+        if (sounding) {
+            sounding->time = lostFrom;
+            sounding->duration.reset();
+            span.prepend(*sounding);
+        }
+        mouth += span;
+        if (to < duration - 1e-9)
+            mouth.append({to, MouthShape::M, 1.0, 0.0});
+        lostFrom = -1;
+    };
+    for (TrackedFrame &f : frames) {
+        if (!f.lost) {
+            endSpan(f.time);
+            held = f.motion;
+            continue;
+        }
+        if (lostFrom < 0)
+            lostFrom = f.time;
+        f.motion = held;
+        for (const char *id : kMouthControlIds)
+            f.motion.displacementEs0[pt::idx(id)] = QPointF();
+        f.lost = false;
+    }
+    endSpan(duration);
+    return {frames, mouth};
+}
+
+} // namespace
+
+void addTakeToTimeline(const QVector<TrackedFrame> &recorded, double fps, double duration,
+    const QVector<MouthKey> &recordedSound, Timeline *timeline, double at, bool soundWhileLost)
+{
+    QVector<TrackedFrame> frames = recorded;
+    QVector<MouthKey> soundMouth = recordedSound;
+    if (soundWhileLost)
+        std::tie(frames, soundMouth) = soundWhileLostTake(recorded, recordedSound, duration);
     const double end = at + std::max(0.0, duration);
     Timeline take;
     RetargetOptions options;
@@ -172,7 +229,7 @@ void addTakeToTimeline(const QVector<TrackedFrame> &frames, double fps, double d
     addTrackToTimeline(frames, fps, &take, options, at);
 
     QVector<PoseKey> pose = take.poseKeys();
-    if (!soundMouth.isEmpty()) {
+    if (!soundMouth.isEmpty() && !soundWhileLost) {
         for (PoseKey &k : pose) {
             for (const char *id : kMouthControlIds)
                 k.offsetsEs0.remove(QString::fromLatin1(id));

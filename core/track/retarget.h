@@ -50,7 +50,13 @@ namespace toonface {
 // keys leave the mouth controls out; without, the tracked mouth is in the pose keys. Keys and
 // blinks outside the span are kept; mouth keys inside it are replaced, and a shut key starts
 // the span when a key before it would otherwise sound on into it.
+//
+// With `soundWhileLost` (live mode's "camera, microphone when the lips are lost"), the sound's
+// keys drive the mouth only where the camera lost the face, as live mode showed it: there the
+// last tracked pose holds with the mouth controls at rest, the sound's shape sounds from the
+// span's start, and a shut key hands the mouth back to the camera where the face is found
+// again; elsewhere the tracked mouth stays in the pose keys.
 void addTakeToTimeline(const QVector<TrackedFrame> &frames, double fps, double duration,
-    const QVector<MouthKey> &soundMouth, Timeline *timeline, double at);
+    const QVector<MouthKey> &soundMouth, Timeline *timeline, double at, bool soundWhileLost = false);
 
 } // namespace toonface

@@ -17,6 +17,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QUrl>
 
 #include <optional>
 
@@ -378,6 +379,60 @@ private:
         return js + "});</script>";
     }
 
+private Q_SLOTS:
+    // What a user hands the export (a sound file's name, a layer's drawing and text) runs
+    // nothing in a browser: a name made to close the attribute and add an element, a layer with
+    // event handlers, a script and text made to end the player's <script> and CDATA section.
+    // Each payload would mark the document's root with data-pwned; Chromium runs both exports
+    // and the DOM it ends with has no mark, and still has the texts as text.
+    void userTextsExportInert()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString name = QStringLiteral(
+            "voice\"'><img src=x onerror=\"document.documentElement.setAttribute('data-pwned',1)\">]]>&amp;.wav");
+        const QString wav = dir.filePath(name);
+        QVERIFY(test::writeToneWav(wav, 2.0));
+        const QString layer = dir.filePath(QStringLiteral("layer.svg"));
+        {
+            QFile f(layer);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("<svg xmlns=\"http://www.w3.org/2000/svg\" "
+                    "onload=\"document.documentElement.setAttribute('data-pwned',2)\">"
+                    "<script>document.documentElement.setAttribute('data-pwned',3)</script>"
+                    "<text id=\"words\" x=\"10\" y=\"20\">&lt;/script&gt;&lt;script&gt;"
+                    "document.documentElement.setAttribute('data-pwned',4)&lt;/script&gt; ]]&gt; &lt;![CDATA[</text>"
+                    "</svg>");
+        }
+        AnimationExportOptions options;
+        options.audio = ExportAudio::Reference;
+        options.audioPath = wav;
+        options.outputDir = dir.path();
+        options.layerFiles = {layer};
+        QString error;
+        const QByteArray svg = exportSmilSvg(m_face, Style(), m_timeline, m_shapes, options, &error);
+        QVERIFY2(!svg.isEmpty(), qPrintable(error));
+        const QByteArray html = exportHtmlPlayer(m_face, Style(), m_timeline, m_shapes, options, &error);
+        QVERIFY2(!html.isEmpty(), qPrintable(error));
+
+        const QStringList dumpArgs {QStringLiteral("--virtual-time-budget=3000"), QStringLiteral("--dump-dom")};
+        const std::optional<QByteArray> htmlDom
+            = runChromium(html, QStringLiteral("inert"), QStringLiteral(".html"), dumpArgs);
+        if (!htmlDom && !m_startFailure.isEmpty())
+            QSKIP(qPrintable(QStringLiteral("Chromium cannot start: %1").arg(m_startFailure)));
+        QVERIFY(htmlDom && htmlDom->contains("tf-stage"));
+        const std::optional<QByteArray> svgDom
+            = runChromium(svg, QStringLiteral("inert"), QStringLiteral(".svg"), dumpArgs);
+        QVERIFY(svgDom && svgDom->contains("tf-play"));
+        for (const QByteArray *dom : {&*htmlDom, &*svgDom}) {
+            QVERIFY2(!dom->contains("data-pwned=\""), dom->left(400).constData());
+            QVERIFY(dom->contains("id=\"words\"")); // the layer's text, drawn as text
+        }
+        // The sound is still the file of that name.
+        QVERIFY(htmlDom->contains("src=\"" + QUrl::toPercentEncoding(name) + "\""));
+    }
+
+private:
     // The page's DOM after it has run for a while (Chromium's --dump-dom).
     QByteArray dumpDom(const QByteArray &html, const QString &name)
     {

@@ -280,6 +280,14 @@ private Q_SLOTS:
                                                 << QStringList {QStringLiteral("the JPEG image is truncated")};
         QTest::newRow("truncated png") << QStringLiteral("truncated.png") << png.left(png.size() / 2)
                                        << QStringList {QStringLiteral("the PNG image is corrupt or truncated")};
+        // Found by fuzz_image: a text chunk claiming 2 GB in a file of a few hundred bytes made
+        // libpng take that much memory (1.9 GB, 3 s).
+        QByteArray lying = png.left(33); // the signature and the header chunk
+        lying += QByteArray("\x7f\x00\x00\x00tEXtComment\0hello", 21) + png.mid(33);
+        QTest::newRow("png chunk claiming 2 GB")
+            << QStringLiteral("lying.png") << lying
+            << QStringList {QStringLiteral("the PNG image is corrupt or truncated"),
+                   QStringLiteral("its tEXt chunk claims 2130706432 bytes")};
         QTest::newRow("text named .jpg") << QStringLiteral("notes.jpg")
                                          << QByteArray("Dear diary,\nthis is not a photo.\n")
                                          << QStringList {QStringLiteral("text, not an image"),

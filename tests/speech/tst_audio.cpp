@@ -8,6 +8,7 @@
 #include <QTest>
 
 #include <cmath>
+#include <limits>
 
 using namespace toonface;
 
@@ -210,6 +211,47 @@ private Q_SLOTS:
         QCOMPARE(int(r.status), status);
         QVERIFY2(r.error.contains(path), qPrintable(r.error));
         QVERIFY(r.audio.isEmpty());
+    }
+
+    // Found by fuzz_audio: a float WAV holding NaN and infinite samples. They are heard as
+    // nothing: every sample read is finite, the sound around them is kept.
+    void nonFiniteSamplesBecomeSilence()
+    {
+        const int rate = kSpeechSampleRate;
+        QByteArray data;
+        for (int i = 0; i < rate / 2; ++i) {
+            float v = float(0.5 * std::sin(2 * M_PI * 440.0 * i / rate));
+            if (i == rate / 4)
+                v = std::numeric_limits<float>::quiet_NaN();
+            if (i == rate / 4 + 100)
+                v = std::numeric_limits<float>::infinity();
+            data.append(reinterpret_cast<const char *>(&v), sizeof v);
+        }
+        // A WAVE_FORMAT_IEEE_FLOAT header, written by hand.
+        QByteArray h;
+        auto u32 = [&](quint32 x) { h.append(reinterpret_cast<const char *>(&x), 4); };
+        auto u16 = [&](quint16 x) { h.append(reinterpret_cast<const char *>(&x), 2); };
+        h.append("RIFF");
+        u32(quint32(36 + data.size()));
+        h.append("WAVEfmt ");
+        u32(16);
+        u16(3);
+        u16(1);
+        u32(quint32(rate));
+        u32(quint32(rate * 4));
+        u16(4);
+        u16(32);
+        h.append("data");
+        u32(quint32(data.size()));
+        const QString path = m_dir.filePath(QStringLiteral("nan.wav"));
+        QVERIFY(writeFile(path, h + data));
+        const AudioResult r = loadAudio(path);
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        QCOMPARE(r.audio.samples.size(), qsizetype(rate / 2));
+        for (const float v : r.audio.samples)
+            QVERIFY(std::isfinite(v));
+        QVERIFY(rms(r.audio.samples, 0, rate / 5) > 0.3); // the tone before them is intact
+        QVERIFY(rms(r.audio.samples, rate / 3, rate / 2) > 0.3); // and after
     }
 
     void missingFile()

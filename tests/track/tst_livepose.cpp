@@ -55,6 +55,7 @@ private Q_SLOTS:
     void takeReplacesItsSpanOnly();
     void takeWithSoundMouth();
     void importedTrackReplacesItsSpanOnly();
+    void takeWithSoundWhileLost();
 };
 
 void TestLivePose::liveShowsWhatARecordingPlays()
@@ -232,6 +233,44 @@ void TestLivePose::importedTrackReplacesItsSpanOnly()
     QCOMPARE(timeline.mouthKeys()[1].shape, MouthShape::M);
     QCOMPARE(timeline.mouthKeys()[2].shape, MouthShape::O);
     QVERIFY(timeline.poseKeys()[1].offsetsEs0.contains(QStringLiteral("8.2")));
+}
+
+// Live mode's "camera, microphone when the lips are lost", recorded: the camera's mouth where
+// it saw the face, the sound's where it lost it, as live mode showed them.
+void TestLivePose::takeWithSoundWhileLost()
+{
+    // One second at 25 fps; the face lost from 0.4 s to 0.6 s.
+    QVector<TrackedFrame> take;
+    for (int i = 0; i < 25; ++i) {
+        TrackedFrame f = movingFrame(i * 0.04, 0.5);
+        f.lost = i >= 10 && i < 15;
+        take.append(f);
+    }
+    // The sound says a (from 0.3 s), o (0.5 s), e (0.8 s).
+    const QVector<MouthKey> sound = {{0.3, MouthShape::A, 0.8, std::nullopt}, {0.5, MouthShape::O, 0.9, std::nullopt},
+        {0.8, MouthShape::E, 0.7, std::nullopt}};
+    Timeline timeline;
+    addTakeToTimeline(take, 25, 1.0, sound, &timeline, 2.0, true);
+
+    // A pose key per frame, lost ones included: they hold the last pose, mouth at rest.
+    QCOMPARE(timeline.poseKeys().size(), 25);
+    const PoseKey &seen = timeline.poseKeys()[9];
+    const PoseKey &lost = timeline.poseKeys()[12];
+    QVERIFY(seen.offsetsEs0.value(QStringLiteral("8.2")).y() > 0.05); // the camera's mouth
+    QCOMPARE(lost.offsetsEs0.value(QStringLiteral("8.2")), QPointF());
+    QCOMPARE(lost.offsetsEs0.value(QStringLiteral("4.1")), seen.offsetsEs0.value(QStringLiteral("4.1")));
+    QCOMPARE(timeline.headKeys()[12].rotationDeg, timeline.headKeys()[9].rotationDeg);
+    // The sound's mouth only while lost: a (sounding since 0.3 s) from 0.4 s, o at 0.5 s, shut
+    // at 0.6 s where the camera has the face again; e (0.8 s) is the camera's time.
+    const QVector<MouthKey> &mouth = timeline.mouthKeys();
+    QCOMPARE(mouth.size(), 3);
+    QVERIFY(std::abs(mouth[0].time - 2.4) < 1e-9);
+    QCOMPARE(mouth[0].shape, MouthShape::A);
+    QCOMPARE(mouth[0].weight, 0.8);
+    QVERIFY(std::abs(mouth[1].time - 2.5) < 1e-9);
+    QCOMPARE(mouth[1].shape, MouthShape::O);
+    QVERIFY(std::abs(mouth[2].time - 2.6) < 1e-9);
+    QCOMPARE(mouth[2].shape, MouthShape::M);
 }
 
 QTEST_GUILESS_MAIN(TestLivePose)

@@ -9,6 +9,11 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include <csignal>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
 using namespace toonface;
 
 class TestAutosave : public QObject
@@ -84,6 +89,72 @@ private Q_SLOTS:
         QVERIFY(QDir(dir.path())
                     .entryList({QStringLiteral("*.toonface"), QStringLiteral("*.json")}, QDir::Files)
                     .isEmpty());
+    }
+
+    // The editor killed (SIGKILL: nothing of it runs) after an autosave: its unsaved timeline
+    // comes back whole from the recovery file it left, whose lock died with it.
+    void unsavedTimelineSurvivesAKill()
+    {
+        QTemporaryDir dir;
+        const QString photoPath = m_photoDir.filePath(QStringLiteral("k.png"));
+        QVERIFY(fixture::photo().save(photoPath));
+        const QString original = m_photoDir.filePath(QStringLiteral("killed.toonface"));
+        Animation edited;
+        {
+            Document doc;
+            fixture::fill(doc, photoPath);
+            QString error;
+            QVERIFY2(doc.save(original, &error), qPrintable(error));
+            edited = doc.animation();
+        }
+        // What the user did since the save: a lip-synced phrase, a smile, blinks.
+        edited.script = QStringLiteral("ni3 hao3");
+        for (int i = 0; i < 400; ++i)
+            edited.timeline.addMouthKey({0.1 * i, MouthShape(i % kMouthShapeCount), 1.0, 0.08});
+        edited.timeline.setEmotionClips({EmotionClip {1.0, 3.0, Emotion::Smile, 0.8, 0.3, 0.3}});
+        edited.timeline.setBlinks({{0.5, 0.18}, {2.5, 0.2}});
+
+        int ready[2];
+        QCOMPARE(pipe(ready), 0);
+        const pid_t child = fork();
+        QVERIFY(child >= 0);
+        if (child == 0) {
+            // The editor: opens the project, edits, autosaves, and works on until it is killed.
+            close(ready[0]);
+            Document doc;
+            QString error;
+            if (!doc.load(original, &error))
+                _exit(2);
+            doc.changeAnimation(edited, QStringLiteral("edit"));
+            Autosaver saver(&doc, dir.path());
+            if (!saver.autosave(&error))
+                _exit(3);
+            if (write(ready[1], "x", 1) != 1)
+                _exit(4);
+            for (;;)
+                pause();
+        }
+        close(ready[1]);
+        char byte = 0;
+        const ssize_t got = read(ready[0], &byte, 1);
+        close(ready[0]);
+        QCOMPARE(kill(child, SIGKILL), 0);
+        int status = 0;
+        QCOMPARE(waitpid(child, &status, 0), child);
+        QCOMPARE(got, ssize_t(1));
+        QVERIFY(WIFSIGNALED(status));
+
+        const QList<RecoveryFile> leftovers = Autosaver::leftovers(dir.path());
+        QCOMPARE(leftovers.size(), 1);
+        QCOMPARE(leftovers.first().originalPath, original);
+        const LoadedFile loaded = Autosaver::load(leftovers.first());
+        QVERIFY2(loaded.ok(), qPrintable(loaded.error));
+        Document restored;
+        Autosaver::restoreInto(&restored, loaded);
+        QCOMPARE(restored.animation().timeline, edited.timeline);
+        QCOMPARE(restored.animation().script, edited.script);
+        QCOMPARE(restored.filePath(), original);
+        QVERIFY(restored.isModified());
     }
 
     void savingRemovesTheRecoveryFile()

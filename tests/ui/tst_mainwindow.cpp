@@ -38,6 +38,11 @@
 #include <QWidgetAction>
 #include <QXmlStreamReader>
 
+#include <csignal>
+
+#include <sys/resource.h>
+#include <unistd.h>
+
 using namespace toonface;
 
 namespace {
@@ -350,6 +355,71 @@ private Q_SLOTS:
         QString error;
         QVERIFY2(onDisk.load(m_projectPath, &error), qPrintable(error));
         QCOMPARE(onDisk.face(), fixture::face());
+    }
+
+    // A save that cannot be written (the disk full, a folder that cannot be written to) says
+    // which file and why, keeps the document modified, and leaves the old file as it was.
+    void failedSaveSaysSoAndKeepsTheWork_data()
+    {
+        QTest::addColumn<bool>("diskFull");
+        QTest::newRow("disk full") << true;
+        QTest::newRow("read-only folder") << false;
+    }
+
+    void failedSaveSaysSoAndKeepsTheWork()
+    {
+        QFETCH(bool, diskFull);
+        if (!diskFull && geteuid() == 0)
+            QSKIP("running as root: a folder's permissions do not stop root from writing");
+        makeWindow();
+        openProject();
+        Document *doc = m_window->document();
+        const FaceModel before = doc->face();
+        doc->movePoint(pt::idx("2.1"), QPointF(200, 410), true);
+        QVERIFY(m_window->isWindowModified());
+
+        auto text = std::make_shared<QString>();
+        QTimer watcher;
+        watcher.setInterval(20);
+        connect(&watcher, &QTimer::timeout, this, [text] {
+            if (auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget())) {
+                *text = box->windowTitle() + QLatin1Char('\n') + box->text();
+                box->accept();
+            }
+        });
+        watcher.start();
+        bool saved = true;
+        const QString folder = QFileInfo(m_projectPath).absolutePath();
+        if (diskFull) {
+            // Writing past a file size limit fails with EFBIG, as a full disk fails with ENOSPC.
+            struct rlimit old;
+            QCOMPARE(getrlimit(RLIMIT_FSIZE, &old), 0);
+            const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);
+            struct rlimit small = old;
+            small.rlim_cur = 2048;
+            QCOMPARE(setrlimit(RLIMIT_FSIZE, &small), 0);
+            saved = m_window->saveTo(m_projectPath);
+            setrlimit(RLIMIT_FSIZE, &old);
+            std::signal(SIGXFSZ, oldHandler);
+        } else {
+            QFile::setPermissions(folder, QFileDevice::ReadOwner | QFileDevice::ExeOwner);
+            saved = m_window->saveTo(m_projectPath);
+            QFile::setPermissions(folder, QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+        }
+        QVERIFY(!saved);
+        QTRY_VERIFY(!text->isEmpty());
+        qInfo("the editor said: %s", qPrintable(*text));
+        QVERIFY2(text->contains(QStringLiteral("portrait.toonface")), qPrintable(*text));
+        QVERIFY(m_window->isWindowModified());
+        QVERIFY(doc->isModified());
+        QVERIFY(doc->face() != before); // the work is still there
+        Document onDisk;
+        QString error;
+        QVERIFY2(onDisk.load(m_projectPath, &error), qPrintable(error));
+        QCOMPARE(onDisk.face(), before);
+        // Nothing half-written is left beside it.
+        QCOMPARE(QDir(folder).entryList({QStringLiteral("*.toonface*")}, QDir::Files | QDir::Hidden),
+            QStringList {QStringLiteral("portrait.toonface")});
     }
 
     void saveWritesTheProject()

@@ -27,10 +27,12 @@ bool commitTake(Document *document, const LiveTake &take, double at, const QStri
         out = tr("Nothing was recorded: no frame with a face was tracked.");
         return false;
     }
-    const bool soundMouth = take.mouthMode == LiveMouth::Microphone && !take.mouth.isEmpty();
+    // The microphone's mouth throughout, or (Both) where the camera lost the face.
+    const bool soundMouth = take.mouthMode != LiveMouth::Camera && !take.mouth.isEmpty();
     Animation after = document->animation();
     addTakeToTimeline(take.frames, take.fps, take.duration,
-        soundMouth ? audioMouthKeys(take.mouth) : QVector<MouthKey> {}, &after.timeline, at);
+        soundMouth ? audioMouthKeys(take.mouth) : QVector<MouthKey> {}, &after.timeline, at,
+        take.mouthMode == LiveMouth::Both);
 
     const bool sound = !take.audio.isEmpty() && !audioPath.isEmpty();
     if (sound) {
