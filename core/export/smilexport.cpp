@@ -296,6 +296,13 @@ bool framesDocument(const Drawing &d, const TimelineEvaluator &evaluator, const 
     appendStartTag(*out, d.document, false);
     *out += metadata(audio, evaluator.duration(), fps);
     *out += "<defs>" + defs + "</defs>\n";
+    // What lies under the head (neck and shoulders, the user's layers behind the face), as it was.
+    for (const XmlNode &c : d.document.children) {
+        if (&c == head)
+            break;
+        if (!c.name.isEmpty() && c.name != "defs")
+            writeXml(*out, c, {});
+    }
     XmlNode outer = *head;
     outer.children.clear();
     std::erase_if(

@@ -2,8 +2,10 @@
 
 #include "face/facemodel.h"
 #include "face/fapu.h"
+#include "face/mouthshape.h"
 #include "face/pose.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace toonface {
@@ -45,28 +47,30 @@ const EmotionPreset &emotionPreset(Emotion emotion)
     // 8.4 left mouth corner, 8.9 upper lip, 8.2 lower lip (and with it the jaw).
     //
     // Drawn as a cartoonist draws them, past the small MPEG-4 ranges of a real face, so that
-    // each reads at a glance and still reads at half intensity (the moves are linear):
+    // each reads at a glance and still reads at half intensity (the moves are linear); SvgFace
+    // adds the drawn cues that follow these moves (creases, blush: render/svgexpression.h):
     // - smile: corners well up and back, the mouth open on the teeth, lower lids up (the cheeks
-    //   push them), brows lifted a little;
+    //   push them: the eyes smile), brows lifted a little;
     // - sad: inner brow ends high and outer ends low (the brows slant down outward), heavy
-    //   upper lids, corners well down under a lower lip pushed up (a frown's arch);
-    // - angry: inner brow ends down and together (a V), upper lids lowered onto a glare, lower
-    //   lids tensed, lips pressed thin and narrow, corners down;
-    // - surprise: brows high and arched, eyes wide, the jaw dropped under rounded lips.
+    //   upper lids, corners well down under a lower lip pushed up (a pout's arch);
+    // - angry: inner brow ends down and together and outer ends up (a V), upper lids lowered
+    //   onto a glare, lower lids tensed, the lips bared on the teeth with their corners down;
+    // - surprise: brows high and arched, eyes wide open round the whole iris, the jaw dropped
+    //   under rounded lips (an O).
     static const std::array<EmotionPreset, 5> presets = {{
         {{}, 1.0},
         {{{"4.6", {0, -0.03}}, {"4.4a", {0, -0.05}}, {"4.4", {0, -0.05}}, {"4.2", {0, -0.03}}, {"3.2", {0, 0.02}},
-             {"3.4", {0, -0.06}}, {"8.4", {-0.10, -0.17}}, {"8.9", {0, -0.03}}, {"8.2", {0, 0.17}}},
+             {"3.4", {0, -0.07}}, {"8.4", {-0.11, -0.18}}, {"8.9", {0, -0.03}}, {"8.2", {0, 0.17}}},
             0.85},
-        {{{"4.6", {0, 0.08}}, {"4.4a", {0, -0.02}}, {"4.4", {0.015, -0.11}}, {"4.2", {0.03, -0.2}}, {"3.2", {0, 0.03}},
-             {"8.4", {0.04, 0.2}}, {"8.9", {0, 0.02}}, {"8.2", {0, -0.06}}},
+        {{{"4.6", {0, 0.1}}, {"4.4a", {0, -0.02}}, {"4.4", {0.015, -0.13}}, {"4.2", {0.03, -0.24}}, {"3.2", {0, 0.04}},
+             {"8.4", {0.05, 0.24}}, {"8.9", {0, 0.02}}, {"8.2", {0, -0.07}}},
             0.75},
-        {{{"4.6", {0, -0.04}}, {"4.4a", {0.01, 0.03}}, {"4.4", {0.03, 0.09}}, {"4.2", {0.06, 0.15}}, {"3.2", {0, 0.06}},
-             {"3.4", {0, -0.04}}, {"8.4", {0.07, 0.06}}, {"8.9", {0, 0.03}}, {"8.2", {0, -0.05}}},
-            0.85},
-        {{{"4.6", {0, -0.17}}, {"4.4a", {0, -0.23}}, {"4.4", {0, -0.23}}, {"4.2", {0, -0.18}}, {"3.2", {0, -0.05}},
-             {"3.4", {0, 0.03}}, {"8.4", {0.10, 0.04}}, {"8.9", {0, -0.04}}, {"8.2", {0, 0.40}}},
-            1.3},
+        {{{"4.6", {0, -0.08}}, {"4.4a", {0.01, 0.02}}, {"4.4", {0.03, 0.1}}, {"4.2", {0.07, 0.19}}, {"3.2", {0, 0.07}},
+             {"3.4", {0, -0.05}}, {"8.4", {0.06, 0.17}}, {"8.9", {0, -0.04}}, {"8.2", {0, 0.05}}},
+            0.8},
+        {{{"4.6", {0, -0.19}}, {"4.4a", {0, -0.26}}, {"4.4", {0, -0.26}}, {"4.2", {0, -0.2}}, {"3.2", {0, -0.08}},
+             {"3.4", {0, 0.04}}, {"8.4", {0.11, 0.04}}, {"8.9", {0, -0.05}}, {"8.2", {0, 0.42}}},
+            1.6},
     }};
     return presets[int(emotion)];
 }
@@ -83,6 +87,22 @@ Pose emotionPose(const FaceModel &face, Emotion emotion, double intensity)
         // 8.9 and 8.2 lie on or follow the centre line; 8.10 follows 8.9 by rule.
         if (std::strcmp(mirror, move.id) != 0 && std::strcmp(move.id, "8.9") != 0)
             pose.offset[pt::idx(mirror)] += QPointF(-d.x(), d.y());
+    }
+    // A photo taken smiling would smile through every emotion: sad and angry first take the
+    // photo's own smile out (its corners above the line where the lips meet come down to it), and
+    // sad shuts lips photographed apart (a pout, not a grin).
+    if (emotion == Emotion::Sad || emotion == Emotion::Angry) {
+        const QPointF lipLine = (face.point("2.2") + face.point("2.3")) / 2.0;
+        const double cornerY = (face.point("8.4").y() + face.point("8.3").y()) / 2.0;
+        const double ownSmile = std::max(0.0, lipLine.y() - cornerY);
+        for (const char *id : {"8.4", "8.3"})
+            pose.offset[pt::idx(id)] += QPointF(0, ownSmile * intensity);
+    }
+    if (emotion == Emotion::Sad) {
+        const std::array<QPointF, 4> shut = restingMouth(face);
+        const char *ids[] = {"8.9", "8.2", "8.4", "8.3"};
+        for (int k = 0; k < 4; ++k)
+            pose.offset[pt::idx(ids[k])] += shut[k] * intensity;
     }
     const double scale = 1.0 + (preset.eyeOpenScale - 1.0) * intensity;
     pose.leftEyeOpen = scale;

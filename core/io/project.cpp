@@ -1,6 +1,7 @@
 #include "io/project.h"
 
 #include "io/jsonfield.h"
+#include "io/layersjson.h"
 #include "io/pointsjson.h"
 #include "io/syllablesjson.h"
 
@@ -151,6 +152,8 @@ QJsonObject styleToJson(const Style &style)
         components.insert(it.key(), c);
     }
     s.insert(QStringLiteral("components"), components);
+    if (!style.layers.isEmpty())
+        s.insert(QStringLiteral("layers"), styleLayersToJson(style.layers));
     return s;
 }
 
@@ -202,7 +205,7 @@ bool styleFromJson(const JsonField &field, Style *style, QString *error)
             return false;
         style->components.insert(it.key(), cs);
     }
-    return true;
+    return styleLayersFromJson(field.member("layers"), &style->layers, error);
 }
 
 QJsonObject mouthShapesToJson(const MouthShapeSet &shapes)

@@ -21,7 +21,8 @@ namespace toonface {
 //
 // Version 1 holds: photo, imageSize {width, height} (absent when unknown), points
 // [{id, x, y, handPlaced}] in face-model.md order, style {name, cornerCutDepth, cute, eyebrows,
-// nose, components {name: {fill, stroke, strokeWidth, visible}}}, mouthShapes {m, f, h, a, i, u,
+// nose, components {name: {fill, stroke, strokeWidth, visible}}, layers [{name, svg, x, y, width,
+// front, visible}] (io/layersjson.h: the user's SVG layers held inline)}, mouthShapes {m, f, h, a, i, u,
 // e, o, n: {up, dn, lf, rt: {dx, dy: {mns, mw, lowerLip, px}}, cornersAtLipMiddle,
 // cornersFromPrevious}}, layers [path], timeline {...} (Timeline::toJson), audio {path, offset},
 // script {text, language, syllables [...] (syllablesToJson)}. The timeline's audio clip is the

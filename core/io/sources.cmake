@@ -3,6 +3,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   io/pointsjson.h io/pointsjson.cpp
   io/facejson.h io/facejson.cpp
   io/project.h io/project.cpp
+  io/layersjson.h io/layersjson.cpp
   io/syllablesjson.h io/syllablesjson.cpp
   io/imageio.h io/imageio.cpp
   io/lipsyncformats.h io/lipsyncformats.cpp

@@ -4,4 +4,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   render/colourbalance.h render/colourbalance.cpp
   render/svgface.h render/svgface.cpp
   render/svgparts.h
-  render/svgfeatures.h render/svgfeatures.cpp)
+  render/svgfeatures.h render/svgfeatures.cpp
+  render/svgexpression.h render/svgexpression.cpp
+  render/svgbody.h render/svgbody.cpp
+  render/svglayer.h render/svglayer.cpp)

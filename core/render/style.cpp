@@ -4,6 +4,7 @@
 #include "face/facemodel.h"
 #include "face/fapu.h"
 #include "render/colourbalance.h"
+#include "render/svgbody.h"
 
 #include <QImage>
 #include <QLineF>
@@ -52,6 +53,15 @@ QMap<QString, ComponentStyle> baseComponents()
     cheeks.fill.setAlpha(77); // 30 %, in the 8 bits a project file keeps
     cheeks.visible = false;
     c.insert(QStringLiteral("cheeks"), cheeks);
+    // The cues of expressions (render/svgexpression.h): creases and a smile's blush.
+    ComponentStyle creases = paint(outline, nullptr, 0);
+    creases.fill.setAlpha(204); // 80 %
+    c.insert(QStringLiteral("creases"), creases);
+    ComponentStyle blush = paint("#f06a6a", nullptr, 0);
+    blush.fill.setAlpha(115); // 45 %
+    c.insert(QStringLiteral("blush"), blush);
+    // The clothes on the shoulders (the neck takes the face's colours); a photo gives their colour.
+    c.insert(QStringLiteral("body"), paint("#4f6d8f", "#2e3f52", 2.2));
     // Drawn only when the appearance has them; these are the colours until a photo gives its own.
     c.insert(QStringLiteral("glasses"), paint(nullptr, "#2a2a2e", 2.6));
     c.insert(QStringLiteral("moustache"), paint("#3d2b1f", "#22170f", 1.2));
@@ -191,6 +201,35 @@ QPointF unitVector(QPointF v)
 {
     const double l = std::hypot(v.x(), v.y());
     return l > 1e-9 ? v / l : QPointF();
+}
+
+// The clothes: left and right of the neck, a little under the neckline, where shirts and jackets
+// are. A photo with no room under the chin for the neck shows no body; one whose sample falls
+// outside the photo keeps the default colour.
+void sampleClothes(
+    const PixelSampler &sampler, const FaceModel &face, double es0, int photoHeight, ComponentStyle *body)
+{
+    const QPointF chin = face.point("2.1");
+    const double width = face.point("2.13").x() - face.point("2.14").x();
+    if (photoHeight - chin.y() < svgparts::kBodyRoomBelowChin * es0) {
+        body->visible = false;
+        return;
+    }
+    const double y = chin.y() + 1.1 * es0;
+    const double r = 0.22 * es0;
+    std::vector<QRgb> px;
+    for (double side : {-1.0, 1.0}) {
+        const QPointF c(chin.x() + side * 0.75 * width, y);
+        if (c.y() + r < photoHeight) {
+            const auto disc = sampler.disc(c, r);
+            px.insert(px.end(), disc.begin(), disc.end());
+        }
+    }
+    if (px.size() < 8)
+        return;
+    const QColor clothes = medianColour(px);
+    body->fill = clothes;
+    body->stroke = clothes.lightnessF() < 0.25 ? clothes.lighter(160) : clothes.darker(170);
 }
 
 } // namespace
@@ -394,6 +433,13 @@ void Style::sampleColours(const QImage &original, const FaceModel &face, Appeara
     const QColor iris = medianColour(irisPx);
     if (plausibleIris(iris))
         components[QStringLiteral("eyeballs")].fill = iris;
+
+    sampleClothes(sampler, face, es0, photo.height(), &components[QStringLiteral("body")]);
+    // Expression lines are a shadow of the skin, so they show on every skin tone.
+    QColor crease = skinUsed.darker(190);
+    crease.setAlpha(
+        components.value(QStringLiteral("creases"), baseComponents().value(QStringLiteral("creases"))).fill.alpha());
+    components[QStringLiteral("creases")].fill = crease;
 }
 
 QString eyebrowVariantName(EyebrowVariant v)

@@ -1,9 +1,12 @@
 #pragma once
 
+#include <QByteArray>
 #include <QColor>
 #include <QMap>
+#include <QPointF>
 #include <QString>
 #include <QStringList>
+#include <QVector>
 
 class QImage;
 
@@ -15,7 +18,8 @@ struct AppearanceFindings;
 // How one drawn component looks. Component names are the style keys of SvgFace's parts:
 // "hair", "ears", "face", "jaw", "cheeks", "nose", "eyebrows", "eyes", "eyeballs", "pupils",
 // "highlights", "lips", "mouth-inner", "teeth", "tongue", "glasses", "moustache", "beard",
-// "hat". A key missing from a Style's map
+// "hat", "creases" and "blush" (the cues of expressions) and "body" (the clothes on the
+// shoulders; when hidden, neither neck nor shoulders are drawn). A key missing from a Style's map
 // is drawn as in the "normal" preset.
 struct ComponentStyle
 {
@@ -51,6 +55,22 @@ inline constexpr double kDefaultCaricature = 0.35;
 inline constexpr double kMaxCaricature = 1.0;
 enum class NoseVariant { Full, Simple, Tip };
 
+// A drawing of the user's own from an SVG file (clothing, an accessory: thesis Fig. 7.9), placed on
+// the face: its centre `offset` from the face's centre and `width` wide, both in ES0. It stays
+// where the neutral face is (as clothes do) when the head moves. Drawn behind the head (over the
+// neck and shoulders) or in front of it, in order, the same in the editor and in every export.
+struct StyleLayer
+{
+    QString name; // shown in the editor: the file's name
+    QByteArray svg; // the file's content, copied (a project holds it): made inert when drawn
+    QPointF offset; // ES0
+    double width = 2.0; // ES0
+    bool front = true;
+    bool visible = true;
+
+    bool operator==(const StyleLayer &) const = default;
+};
+
 // A drawing style: a named preset ("normal", "cute", ...) plus the user's overrides.
 // A plain value type.
 struct Style
@@ -63,6 +83,7 @@ struct Style
     double caricature = kDefaultCaricature;
     Appearance appearance;
     QMap<QString, ComponentStyle> components;
+    QVector<StyleLayer> layers; // the user's, in drawing order
 
     // The built-in presets; unknown names give an empty optional-like result via ok=false.
     static QStringList presetNames();

@@ -3,7 +3,10 @@
 #include "face/caricature.h"
 #include "face/fapu.h"
 #include "render/curves.h"
+#include "render/svgbody.h"
+#include "render/svgexpression.h"
 #include "render/svgfeatures.h"
+#include "render/svglayer.h"
 #include "render/svgparts.h"
 
 #include <QFile>
@@ -56,6 +59,8 @@ struct SvgFaceGeometry
     QPointF jawEndTangent;
     double eyeballRadius = 10;
     std::vector<Part> staticParts; // everything of the static layer but the eyebrows
+    std::vector<Part> bodyParts; // neck and shoulders, or none
+    QByteArray behind, front; // the style's visible layers, placed
     QMap<QString, ComponentStyle> components;
 };
 
@@ -412,126 +417,29 @@ QString latin1(const char *s)
     return QString::fromLatin1(s);
 }
 
-// Elements that would run code or show other documents where the exported animation is
-// opened (a browser): a layer's drawing never needs them.
-bool isActiveElement(QStringView name)
-{
-    return name == QLatin1StringView("script") || name == QLatin1StringView("foreignObject")
-        || name == QLatin1StringView("iframe") || name == QLatin1StringView("handler");
-}
-
-// An attribute value as a browser reads a URL's scheme: lower case, with the white space and
-// control characters it skips inside "java\tscript:" left out.
-QString schemeView(QStringView value)
-{
-    QString out;
-    out.reserve(value.size());
-    for (const QChar c : value) {
-        if (c.unicode() > 0x20)
-            out.append(c.toLower());
-    }
-    return out;
-}
-
-// Whether an attribute value could run code or open another document: a javascript: or
-// vbscript: URL anywhere in it (an <animate> or <set> can put one into a link through its
-// values, to or from), or a link to a data: document that is not an image.
-bool isActiveValue(QStringView value)
-{
-    const QString v = schemeView(value);
-    return v.contains(QLatin1StringView("javascript:")) || v.contains(QLatin1StringView("vbscript:"))
-        || v.contains(QLatin1StringView("data:text")) || v.contains(QLatin1StringView("data:application"));
-}
-
-// Copies the reader's start element without what could run code: event handler attributes
-// (onload, onclick, ...) and values holding script or document links (isActiveValue).
-void writeInertStart(const QXmlStreamReader &reader, QXmlStreamWriter &writer)
-{
-    const QXmlStreamNamespaceDeclarations declarations = reader.namespaceDeclarations();
-    writer.writeStartElement(reader.namespaceUri().toString(), reader.name().toString());
-    for (const QXmlStreamNamespaceDeclaration &d : declarations)
-        writer.writeNamespace(d.namespaceUri().toString(), d.prefix().toString());
-    const QXmlStreamAttributes attributes = reader.attributes();
-    for (const QXmlStreamAttribute &a : attributes) {
-        if (a.name().startsWith(QLatin1StringView("on"), Qt::CaseInsensitive) || isActiveValue(a.value()))
-            continue;
-        writer.writeAttribute(a);
-    }
-}
-
-// Reads an SVG document and returns the children of its root element as a fragment in the
-// SVG namespace, for embedding in <g id="layer-N">, inert: no scripts, no event handlers.
-bool layerFragment(const QByteArray &content, QByteArray *fragment, QString *error)
-{
-    QXmlStreamReader reader(content);
-    QByteArray out;
-    QXmlStreamWriter writer(&out);
-    int depth = 0;
-    int skipFrom = 0; // the depth of the active element being left out, or 0
-    bool sawRoot = false;
-    while (!reader.atEnd()) {
-        const auto token = reader.readNext();
-        if (reader.hasError())
-            break;
-        if (token == QXmlStreamReader::StartElement) {
-            if (!sawRoot) {
-                sawRoot = true;
-                if (reader.name() != QLatin1StringView("svg")) {
-                    *error = QStringLiteral("the root element is <%1>, not <svg>").arg(reader.name());
-                    return false;
-                }
-                // Declared once on a wrapper so the copied elements need no prefixes.
-                writer.writeNamespace(QStringLiteral("http://www.w3.org/1999/xlink"), QStringLiteral("xlink"));
-                writer.writeDefaultNamespace(QStringLiteral("http://www.w3.org/2000/svg"));
-                writer.writeStartElement(QStringLiteral("http://www.w3.org/2000/svg"), QStringLiteral("g"));
-                continue;
-            }
-            ++depth;
-            if (skipFrom == 0 && isActiveElement(reader.name()))
-                skipFrom = depth; // a script or foreign content: left out with everything inside
-            if (skipFrom != 0)
-                continue;
-            writeInertStart(reader, writer);
-        } else if (token == QXmlStreamReader::EndElement) {
-            if (depth == 0)
-                continue; // the root's end
-            const bool skipped = skipFrom != 0;
-            if (skipFrom == depth)
-                skipFrom = 0;
-            --depth;
-            if (!skipped)
-                writer.writeCurrentToken(reader);
-        } else if (sawRoot && depth > 0 && skipFrom == 0
-            && (token == QXmlStreamReader::Characters || token == QXmlStreamReader::EntityReference)) {
-            writer.writeCurrentToken(reader);
-        }
-    }
-    if (reader.hasError()) {
-        *error = QStringLiteral("line %1, column %2: %3")
-                     .arg(reader.lineNumber())
-                     .arg(reader.columnNumber())
-                     .arg(reader.errorString());
-        return false;
-    }
-    if (!sawRoot) {
-        *error = QStringLiteral("no root element");
-        return false;
-    }
-    writer.writeEndElement();
-    // Keep only the children: drop the wrapper's start and end tags.
-    const qsizetype open = out.indexOf('>');
-    const qsizetype close = out.lastIndexOf("</");
-    if (open < 0 || close < open) {
-        fragment->clear(); // an empty root: <g .../> with no children
-        return true;
-    }
-    *fragment = out.mid(open + 1, close - open - 1);
-    return true;
-}
-
 } // namespace
 
 namespace {
+
+// <g id="style-layer-N" transform=...> holding a style layer made inert, its viewBox's centre at
+// the face's centre moved by the layer's offset and its width scaled to the layer's.
+QByteArray placedLayer(const StyleLayer &layer, int number, const SvgFaceGeometry &g)
+{
+    const QByteArray id = "style-layer-" + QByteArray::number(number);
+    LayerDrawing drawing;
+    QString error;
+    if (!readLayerSvg(layer.svg, QString::fromLatin1(id + '-'), &drawing, &error))
+        return {}; // not drawn: the editor and the project reader refuse such layers by name
+    const double scale = std::clamp(layer.width, 0.01, 100.0) * g.es0 / drawing.viewBox.width();
+    QByteArray t = "translate(";
+    appendPoint(t, g.centre + layer.offset * g.es0);
+    t += ") scale(";
+    t += QByteArray::number(scale, 'g', 6);
+    t += ") translate(";
+    appendPoint(t, -drawing.viewBox.center());
+    t += ')';
+    return "<g id=\"" + id + "\" transform=\"" + t + "\">" + drawing.fragment + "</g>\n";
+}
 
 SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
 {
@@ -575,6 +483,15 @@ SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
         makeNose(P, style.nose, g.es0, &g.staticParts);
     if (look.hat && visible("hat"))
         g.staticParts.push_back(makeHat(P, g.es0, style.cornerCutDepth));
+    if (visible("body")) {
+        g.bodyParts = makeBody(P, g.es0);
+        std::erase_if(g.bodyParts, [&](const Part &p) { return !visible(p.styleKey); });
+    }
+    for (qsizetype i = 0; i < style.layers.size(); ++i) {
+        const StyleLayer &layer = style.layers[i];
+        if (layer.visible)
+            (layer.front ? g.front : g.behind) += placedLayer(layer, int(i + 1), g);
+    }
     return g;
 }
 
@@ -596,6 +513,7 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
     const Appearance &look = style.appearance;
     if (look.beard)
         parts.push_back(makeBeard(P, g.es0));
+    makeExpressionCues(P, Pt {g.neutral}, g.es0, &parts);
     makeMouth(P, &parts);
     if (look.moustache)
         parts.push_back(makeMoustache(P, g.es0));
@@ -638,6 +556,30 @@ QByteArray headTransformText(const SvgFaceGeometry &g, const HeadPose &head)
     return t;
 }
 
+// Writes one part as <element id=... geometry... clip-path=... paint.../>.
+void writePart(QByteArray &out, const Part &p, const SvgFaceGeometry &g)
+{
+    out += '<';
+    out += p.element;
+    out += " id=\"";
+    out += p.id;
+    out += '"';
+    auto attribute = [&out](const char *name, const QByteArray &value) {
+        out += ' ';
+        out += name;
+        out += "=\"";
+        out += value;
+        out += '"';
+    };
+    for (const auto &[name, value] : p.geometry)
+        attribute(name, value);
+    if (p.clipPath)
+        attribute("clip-path", QByteArray("url(#") + p.clipPath + ')');
+    for (const auto &[name, value] : paintAttributes(componentStyle(g.components, p.styleKey), p.paint, g.unit))
+        attribute(name, value);
+    out += "/>\n";
+}
+
 } // namespace
 
 struct SvgFace::Geometry
@@ -667,24 +609,24 @@ bool SvgFace::addLayerFile(const QString &svgPath, QString *error)
             *error = QStringLiteral("cannot read layer file %1: %2").arg(svgPath, file.errorString());
         return false;
     }
-    QByteArray fragment;
+    LayerDrawing drawing;
     QString why;
-    if (!layerFragment(file.readAll(), &fragment, &why)) {
+    if (!readLayerSvg(file.readAll(), QStringLiteral("layer-%1-").arg(m_layers.size() + 1), &drawing, &why)) {
         if (error)
             *error = QStringLiteral("layer file %1 is not a valid SVG file: %2").arg(svgPath, why);
         return false;
     }
-    m_layers.append(fragment);
+    m_layers.append(drawing.fragment);
     return true;
 }
 
 void SvgFace::addLayer(const QByteArray &svgContent)
 {
-    QByteArray fragment;
+    LayerDrawing drawing;
     QString why;
-    if (!layerFragment(svgContent, &fragment, &why))
-        fragment.clear(); // still numbered, so later layers keep their ids
-    m_layers.append(fragment);
+    if (!readLayerSvg(svgContent, QStringLiteral("layer-%1-").arg(m_layers.size() + 1), &drawing, &why))
+        drawing.fragment.clear(); // still numbered, so later layers keep their ids
+    m_layers.append(drawing.fragment);
 }
 
 QVector<FacePart> SvgFace::parts(const Pose &pose) const
@@ -776,43 +718,25 @@ QByteArray SvgFace::svg(const Pose &pose) const
     }
     out += "</defs>\n";
 
+    if (!g.bodyParts.empty()) {
+        out += "<g id=\"body\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+        for (const Part &p : g.bodyParts)
+            writePart(out, p, g);
+        out += "</g>\n";
+    }
+    out += g.behind;
     out += "<g id=\"head\" transform=\"" + headTransformText(g, pose.head)
         + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
     for (bool dynamic : {false, true}) {
         out += dynamic ? "<g id=\"dynamic-layer\">\n" : "<g id=\"static-layer\">\n";
         for (const Part &p : parts) {
-            if (p.dynamic != dynamic)
-                continue;
-            out += '<';
-            out += p.element;
-            out += " id=\"";
-            out += p.id;
-            out += '"';
-            for (const auto &[name, value] : p.geometry) {
-                out += ' ';
-                out += name;
-                out += "=\"";
-                out += value;
-                out += '"';
-            }
-            if (p.clipPath) {
-                out += " clip-path=\"url(#";
-                out += p.clipPath;
-                out += ")\"";
-            }
-            for (const auto &[name, value] :
-                paintAttributes(componentStyle(g.components, p.styleKey), p.paint, g.unit)) {
-                out += ' ';
-                out += name;
-                out += "=\"";
-                out += value;
-                out += '"';
-            }
-            out += "/>\n";
+            if (p.dynamic == dynamic)
+                writePart(out, p, g);
         }
         out += "</g>\n";
     }
     out += "</g>\n";
+    out += g.front;
     for (qsizetype i = 0; i < m_layers.size(); ++i) {
         out += "<g id=\"layer-" + QByteArray::number(i + 1) + "\">";
         out += m_layers[i];
@@ -842,6 +766,9 @@ QImage rasterizeSvg(const QByteArray &svg, QSize size, QColor background)
     QPainter painter(&image);
     painter.setRenderHint(QPainter::Antialiasing);
     painter.fillRect(target, background);
+    // As a browser does: nothing outside the viewBox (the shoulders and the user's layers may
+    // reach beyond it), which QSvgRenderer would draw.
+    painter.setClipRect(target);
     renderer.render(&painter, target);
     painter.end();
     return image;

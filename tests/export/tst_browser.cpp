@@ -426,7 +426,7 @@ private Q_SLOTS:
         QVERIFY(svgDom && svgDom->contains("tf-play"));
         for (const QByteArray *dom : {&*htmlDom, &*svgDom}) {
             QVERIFY2(!dom->contains("data-pwned=\""), dom->left(400).constData());
-            QVERIFY(dom->contains("id=\"words\"")); // the layer's text, drawn as text
+            QVERIFY(dom->contains("id=\"layer-1-words\"")); // the layer's text (its ids prefixed), drawn as text
         }
         // The sound is still the file of that name.
         QVERIFY(htmlDom->contains("src=\"" + QUrl::toPercentEncoding(name) + "\""));

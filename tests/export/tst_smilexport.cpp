@@ -859,7 +859,7 @@ private Q_SLOTS:
         for (auto mode : {AnimationExportOptions::Mode::Smil, AnimationExportOptions::Mode::Frames}) {
             o.mode = mode;
             const Node doc = document(exported(o));
-            QVERIFY(findId(doc, QStringLiteral("shirt")));
+            QVERIFY(findId(doc, QStringLiteral("layer-1-shirt"))); // its ids prefixed with the layer's
             QCOMPARE(doc.children.last().attribute(QStringLiteral("id")), QStringLiteral("layer-1"));
         }
     }
@@ -946,7 +946,9 @@ private Q_SLOTS:
         }
     }
 
-    // The SMIL form is compact: a few kilobytes a second of talking, far less than frames.
+    // The SMIL form is compact: a few kilobytes a second of talking, far less than frames. (The
+    // expression cues, thirteen parts that follow the emotions, took it from under 8 to about
+    // 10.7 kB a second on this timeline.)
     void sizesAreReasonable()
     {
         const QByteArray smil = exported();
@@ -957,7 +959,7 @@ private Q_SLOTS:
         const double still = SvgFace(m_face, Style::preset(QStringLiteral("normal"))).svg().size();
         qInfo("SMIL %lld bytes, frames %lld bytes, one drawing %.0f bytes, %.0f s", qlonglong(smil.size()),
             qlonglong(frames.size()), still, duration);
-        QVERIFY(smil.size() < still + 8000 * duration);
+        QVERIFY(smil.size() < still + 12000 * duration);
         QVERIFY(frames.size() > 3 * smil.size());
     }
 

@@ -110,7 +110,8 @@ private Q_SLOTS:
             QVERIFY(s.d("8.4").y() > clear && s.d("8.3").y() > clear);
             QVERIFY(s.d("8.2").y() < 0); // the lower lip pushed up under the frown
         }
-        // Angry: inner brow ends down and together (a V), lids narrowed, lips pressed and narrow.
+        // Angry: inner brow ends down and together (a V), outer ends up, lids narrowed, the lips
+        // bared on the teeth with their corners down.
         {
             const Posed s = posed(face, emotionPose(face, Emotion::Angry, intensity));
             for (bool left : {true, false})
@@ -118,9 +119,11 @@ private Q_SLOTS:
             QVERIFY(s.d("4.2").y() > clear && s.d("4.1").y() > clear);
             QVERIFY(s.d("4.2").x() > clear / 3 && s.d("4.1").x() < -clear / 3);
             QVERIFY(s.eyeOpening(true) < s.eyeOpening0(true));
-            QVERIFY(s.mouthWidth() < s.mouthWidth0() - clear * s.es0);
-            QVERIFY(s.d("8.4").y() > 0 && s.d("8.3").y() > 0);
-            QVERIFY(s.opening() <= posed(face, Pose()).opening()); // pressed, not parted
+            QVERIFY(s.d("4.6").y() < 0 && s.d("4.5").y() < 0);
+            QVERIFY(s.mouthWidth() <= s.mouthWidth0() + 1e-9); // bared, not a smile's widening
+            QVERIFY(s.d("8.4").y() > clear / 2 && s.d("8.3").y() > clear / 2);
+            QVERIFY(s.opening() > posed(face, Pose()).opening() + 0.5 * clear * s.es0); // bared teeth
+            QVERIFY(s.d("8.9").y() < 0); // the upper lip raised off them
         }
         // Surprise: brows high, eyes wide, the jaw dropped under rounded lips.
         {
@@ -133,6 +136,34 @@ private Q_SLOTS:
             QVERIFY(s.d("2.1").y() > 3 * clear); // the chin drops with the lower lip
             QVERIFY(s.mouthWidth() < s.mouthWidth0());
         }
+    }
+
+    // A face photographed with a grin (corners above the lips' line, lips apart): sad and angry
+    // take the grin out, sad shuts the lips; smile and surprise keep the photo's mouth as it is.
+    void grinningPhoto()
+    {
+        FaceModel face = testFace();
+        const double es0 = face.fapu().es0;
+        auto move = [&](const char *id, QPointF by) {
+            face.setPoint(pt::idx(id), face.point(id) + by * es0, face.isHandPlaced(pt::idx(id)));
+        };
+        move("8.4", {-0.05, -0.2});
+        move("8.3", {0.05, -0.2});
+        move("8.2", {0, 0.16});
+        move("2.3", {0, 0.16});
+        move("2.1", {0, 0.16});
+        const double lipLine = (face.point("2.2").y() + face.point("2.3").y()) / 2.0;
+        for (Emotion e : {Emotion::Sad, Emotion::Angry}) {
+            const Posed s = posed(face, emotionPose(face, e, 1.0));
+            QVERIFY2(s.at("8.4").y() > lipLine + 0.05 * es0 && s.at("8.3").y() > lipLine + 0.05 * es0,
+                qPrintable(emotionName(e)));
+        }
+        const Posed sad = posed(face, emotionPose(face, Emotion::Sad, 1.0));
+        QVERIFY(sad.opening() < 0.02 * es0);
+        const Posed half = posed(face, emotionPose(face, Emotion::Sad, 0.5));
+        QVERIFY(half.at("8.4").y() > face.point("8.4").y() + 0.1 * es0);
+        const Posed smile = posed(face, emotionPose(face, Emotion::Smile, 1.0));
+        QVERIFY(smile.at("8.4").y() < face.point("8.4").y());
     }
 
     void halfIsHalfOfFull()

@@ -1,5 +1,6 @@
 #include "appearance/appearancepanel.h"
 
+#include "appearance/layerseditor.h"
 #include "views/displaynames.h"
 
 #include <QCheckBox>
@@ -56,7 +57,9 @@ QList<std::pair<QString, QString>> AppearancePanel::componentKeys()
         {QStringLiteral("eyeballs"), tr("Irises")}, {QStringLiteral("lips"), tr("Lips")},
         {QStringLiteral("nose"), tr("Nose")}, {QStringLiteral("cheeks"), tr("Cheeks")},
         {QStringLiteral("glasses"), tr("Glasses")}, {QStringLiteral("moustache"), tr("Moustache")},
-        {QStringLiteral("beard"), tr("Beard")}, {QStringLiteral("hat"), tr("Hat")}};
+        {QStringLiteral("beard"), tr("Beard")}, {QStringLiteral("hat"), tr("Hat")},
+        {QStringLiteral("body"), tr("Neck and shoulders")}, {QStringLiteral("creases"), tr("Expression lines")},
+        {QStringLiteral("blush"), tr("Smile blush")}};
 }
 
 AppearancePanel::AppearancePanel(Document *document, QWidget *parent)
@@ -115,6 +118,9 @@ AppearancePanel::AppearancePanel(Document *document, QWidget *parent)
     m_resample->setToolTip(tr("Skin, hair, eyes and lips from the photo (its colour cast taken out), and what "
                               "the person wears"));
     layout->addWidget(m_resample);
+    auto *layers = new QGroupBox(tr("Your layers"));
+    (new QVBoxLayout(layers))->addWidget(new LayersEditor(document));
+    layout->addWidget(layers);
     layout->addWidget(buildComponents(), 1);
 
     connect(m_eyebrows, &QComboBox::activated, this, [this](int i) {
@@ -198,6 +204,7 @@ QWidget *AppearancePanel::buildComponents()
         m_rows.append(row);
         ++r;
     }
+    grid->setRowStretch(r, 1); // the rows stay together at the top of a tall dock
     auto *scroll = new QScrollArea;
     scroll->setWidget(box);
     scroll->setWidgetResizable(true);

@@ -148,6 +148,7 @@ QImage PreviewRenderer::renderPose(
         target.moveCenter(QRectF(QPointF(), QSizeF(size)).center());
         QPainter painter(&image);
         painter.setRenderHints(QPainter::Antialiasing | QPainter::SmoothPixmapTransform);
+        painter.setClipRect(target); // nothing beyond the frame (the shoulders reach below it)
         renderer.setViewBox(frame);
         renderer.render(&painter, target);
     }

@@ -1,0 +1,64 @@
+#include "io/layersjson.h"
+
+#include "render/svglayer.h"
+
+namespace toonface {
+
+namespace {
+
+constexpr double kMaxOffset = 100; // ES0: far off the face, but finite
+constexpr double kMaxWidth = 100;
+
+} // namespace
+
+QJsonArray styleLayersToJson(const QVector<StyleLayer> &layers)
+{
+    QJsonArray out;
+    for (const StyleLayer &layer : layers) {
+        QJsonObject o;
+        o.insert(QStringLiteral("name"), layer.name);
+        o.insert(QStringLiteral("svg"), QString::fromUtf8(layer.svg));
+        o.insert(QStringLiteral("x"), layer.offset.x());
+        o.insert(QStringLiteral("y"), layer.offset.y());
+        o.insert(QStringLiteral("width"), layer.width);
+        o.insert(QStringLiteral("front"), layer.front);
+        o.insert(QStringLiteral("visible"), layer.visible);
+        out.append(o);
+    }
+    return out;
+}
+
+bool styleLayersFromJson(const JsonField &field, QVector<StyleLayer> *layers, QString *error)
+{
+    layers->clear();
+    if (field.isMissing())
+        return true;
+    QJsonArray array;
+    if (!field.toArray(&array, error))
+        return false;
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const JsonField f = field.at(i);
+        QJsonObject unused;
+        StyleLayer layer;
+        QString svg;
+        double x = 0, y = 0;
+        if (!f.toObject(&unused, error) || !f.member("name").toString(&layer.name, error)
+            || !f.member("svg").toString(&svg, error) || !f.member("x").toBoundedNumber(kMaxOffset, &x, error)
+            || !f.member("y").toBoundedNumber(kMaxOffset, &y, error)
+            || !f.member("width").toBoundedNumber(kMaxWidth, &layer.width, error)
+            || !f.member("front").toBool(&layer.front, error) || !f.member("visible").toBool(&layer.visible, error))
+            return false;
+        if (!(layer.width > 0))
+            return f.member("width").expected(QStringLiteral("a width more than 0"), error);
+        layer.offset = QPointF(x, y);
+        layer.svg = svg.toUtf8();
+        LayerDrawing drawing;
+        QString why;
+        if (!readLayerSvg(layer.svg, QString(), &drawing, &why))
+            return f.member("svg").fail(QStringLiteral("not an SVG drawing: ") + why, error);
+        layers->append(layer);
+    }
+    return true;
+}
+
+} // namespace toonface
