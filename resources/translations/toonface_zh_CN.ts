@@ -419,6 +419,22 @@
         <source>Fill colour</source>
         <translation>填充颜色</translation>
     </message>
+    <message>
+        <source>Neck and shoulders</source>
+        <translation>脖子和肩膀</translation>
+    </message>
+    <message>
+        <source>Expression lines</source>
+        <translation>表情纹</translation>
+    </message>
+    <message>
+        <source>Smile blush</source>
+        <translation>微笑腮红</translation>
+    </message>
+    <message>
+        <source>Your layers</source>
+        <translation>你的图层</translation>
+    </message>
 </context>
 <context>
     <name>toonface::ApplyDetection</name>
@@ -1095,6 +1111,125 @@
     <message>
         <source>English</source>
         <translation>英语</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::LayersEditor</name>
+    <message>
+        <source>Your own SVG drawings over or under the face, in drawing order; untick to hide</source>
+        <translation>你自己的 SVG 图画，画在脸的前面或后面，按绘制顺序排列；取消勾选即隐藏</translation>
+    </message>
+    <message>
+        <source>Add…</source>
+        <translation>添加…</translation>
+    </message>
+    <message>
+        <source>Add a drawing from an SVG file (clothing, an accessory); the project keeps a copy</source>
+        <translation>从 SVG 文件添加图画（衣服、配饰）；项目会保存一份副本</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>移除</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>上移</translation>
+    </message>
+    <message>
+        <source>Draw earlier (further back)</source>
+        <translation>较早绘制（更靠后）</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>下移</translation>
+    </message>
+    <message>
+        <source>Draw later (further forward)</source>
+        <translation>较晚绘制（更靠前）</translation>
+    </message>
+    <message>
+        <source>Across from the face&apos;s centre, in eye distances (right is positive)</source>
+        <translation>从脸部中心水平偏移，以双眼距离为单位（向右为正）</translation>
+    </message>
+    <message>
+        <source>Down from the face&apos;s centre, in eye distances</source>
+        <translation>从脸部中心向下偏移，以双眼距离为单位</translation>
+    </message>
+    <message>
+        <source>The drawing&apos;s width, in eye distances</source>
+        <translation>图画的宽度，以双眼距离为单位</translation>
+    </message>
+    <message>
+        <source>In front of the face</source>
+        <translation>在脸的前面</translation>
+    </message>
+    <message>
+        <source>Unticked, the drawing lies behind the head, over the neck and shoulders</source>
+        <translation>取消勾选时，图画位于头部后面、脖子和肩膀之上</translation>
+    </message>
+    <message>
+        <source>Position:</source>
+        <translation>位置：</translation>
+    </message>
+    <message>
+        <source>Width:</source>
+        <translation>宽度：</translation>
+    </message>
+    <message>
+        <source>Remove layer</source>
+        <translation>移除图层</translation>
+    </message>
+    <message>
+        <source>Show layer</source>
+        <translation>显示图层</translation>
+    </message>
+    <message>
+        <source>Hide layer</source>
+        <translation>隐藏图层</translation>
+    </message>
+    <message>
+        <source>Move layer</source>
+        <translation>移动图层</translation>
+    </message>
+    <message>
+        <source>Resize layer</source>
+        <translation>调整图层大小</translation>
+    </message>
+    <message>
+        <source>Layer in front</source>
+        <translation>图层移到前面</translation>
+    </message>
+    <message>
+        <source>Layer behind</source>
+        <translation>图层移到后面</translation>
+    </message>
+    <message>
+        <source>There is no face to place %1 on.</source>
+        <translation>没有可以放置 %1 的脸。</translation>
+    </message>
+    <message>
+        <source>Add layer %1</source>
+        <translation>添加图层 %1</translation>
+    </message>
+    <message>
+        <source>Add layers</source>
+        <translation>添加图层</translation>
+    </message>
+    <message>
+        <source>SVG drawings (*.svg);;All files (*)</source>
+        <translation>SVG 图画 (*.svg);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Add layer</source>
+        <translation>添加图层</translation>
+    </message>
+    <message>
+        <source>Reorder layers</source>
+        <translation>重新排列图层</translation>
+    </message>
+    <message>
+        <source>%1 (behind)</source>
+        <translation>%1（后面）</translation>
     </message>
 </context>
 <context>

@@ -419,6 +419,22 @@
         <source>Fill colour</source>
         <translation>填色顏色</translation>
     </message>
+    <message>
+        <source>Neck and shoulders</source>
+        <translation>脖子與肩膀</translation>
+    </message>
+    <message>
+        <source>Expression lines</source>
+        <translation>表情紋</translation>
+    </message>
+    <message>
+        <source>Smile blush</source>
+        <translation>微笑腮紅</translation>
+    </message>
+    <message>
+        <source>Your layers</source>
+        <translation>你的圖層</translation>
+    </message>
 </context>
 <context>
     <name>toonface::ApplyDetection</name>
@@ -1095,6 +1111,125 @@
     <message>
         <source>English</source>
         <translation>英語</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::LayersEditor</name>
+    <message>
+        <source>Your own SVG drawings over or under the face, in drawing order; untick to hide</source>
+        <translation>你自己的 SVG 圖畫，畫在臉的前面或後面，依繪製順序排列；取消勾選即隱藏</translation>
+    </message>
+    <message>
+        <source>Add…</source>
+        <translation>加入…</translation>
+    </message>
+    <message>
+        <source>Add a drawing from an SVG file (clothing, an accessory); the project keeps a copy</source>
+        <translation>從 SVG 檔案加入圖畫（衣服、配件）；專案會保存一份副本</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>移除</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>上移</translation>
+    </message>
+    <message>
+        <source>Draw earlier (further back)</source>
+        <translation>較早繪製（更靠後）</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>下移</translation>
+    </message>
+    <message>
+        <source>Draw later (further forward)</source>
+        <translation>較晚繪製（更靠前）</translation>
+    </message>
+    <message>
+        <source>Across from the face&apos;s centre, in eye distances (right is positive)</source>
+        <translation>從臉部中心水平偏移，以雙眼距離為單位（向右為正）</translation>
+    </message>
+    <message>
+        <source>Down from the face&apos;s centre, in eye distances</source>
+        <translation>從臉部中心向下偏移，以雙眼距離為單位</translation>
+    </message>
+    <message>
+        <source>The drawing&apos;s width, in eye distances</source>
+        <translation>圖畫的寬度，以雙眼距離為單位</translation>
+    </message>
+    <message>
+        <source>In front of the face</source>
+        <translation>在臉的前面</translation>
+    </message>
+    <message>
+        <source>Unticked, the drawing lies behind the head, over the neck and shoulders</source>
+        <translation>取消勾選時，圖畫位於頭部後面、脖子與肩膀之上</translation>
+    </message>
+    <message>
+        <source>Position:</source>
+        <translation>位置：</translation>
+    </message>
+    <message>
+        <source>Width:</source>
+        <translation>寬度：</translation>
+    </message>
+    <message>
+        <source>Remove layer</source>
+        <translation>移除圖層</translation>
+    </message>
+    <message>
+        <source>Show layer</source>
+        <translation>顯示圖層</translation>
+    </message>
+    <message>
+        <source>Hide layer</source>
+        <translation>隱藏圖層</translation>
+    </message>
+    <message>
+        <source>Move layer</source>
+        <translation>移動圖層</translation>
+    </message>
+    <message>
+        <source>Resize layer</source>
+        <translation>調整圖層大小</translation>
+    </message>
+    <message>
+        <source>Layer in front</source>
+        <translation>圖層移到前面</translation>
+    </message>
+    <message>
+        <source>Layer behind</source>
+        <translation>圖層移到後面</translation>
+    </message>
+    <message>
+        <source>There is no face to place %1 on.</source>
+        <translation>沒有可以放置 %1 的臉。</translation>
+    </message>
+    <message>
+        <source>Add layer %1</source>
+        <translation>加入圖層 %1</translation>
+    </message>
+    <message>
+        <source>Add layers</source>
+        <translation>加入圖層</translation>
+    </message>
+    <message>
+        <source>SVG drawings (*.svg);;All files (*)</source>
+        <translation>SVG 圖畫 (*.svg);;所有檔案 (*)</translation>
+    </message>
+    <message>
+        <source>Add layer</source>
+        <translation>加入圖層</translation>
+    </message>
+    <message>
+        <source>Reorder layers</source>
+        <translation>重新排列圖層</translation>
+    </message>
+    <message>
+        <source>%1 (behind)</source>
+        <translation>%1（後面）</translation>
     </message>
 </context>
 <context>
