@@ -280,6 +280,7 @@ SpeechFeatures SpeechFeatureStream::finish()
         }
         f.loudness[size_t(t)] = float(acc / cnt);
     }
+    f.band = std::move(band);
 
     // Silence: below a threshold between the noise floor and the speech level, softly.
     f.noiseFloor = percentile(f.logEnergy, 0.05);
