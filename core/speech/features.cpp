@@ -177,7 +177,12 @@ void SpeechFeatureStream::frameBlock(const float *samples, int count)
 {
     const MelBank &bank = melBank();
     const auto &hamming = hammingWindow();
-    const auto &windowAutocorr = windowAutocorrelation();
+    static const std::array<float, kWindow> inverseWindowAutocorr = [] {
+        std::array<float, kWindow> inv;
+        for (int lag = 0; lag < kWindow; ++lag)
+            inv[size_t(lag)] = 1.0f / windowAutocorrelation()[size_t(lag)];
+        return inv;
+    }();
     const int bandLo = 300 * kFft / kSpeechSampleRate, bandHi = 3000 * kFft / kSpeechSampleRate;
     const int highLo = 3500 * kFft / kSpeechSampleRate, lowHi = 400 * kFft / kSpeechSampleRate;
     const int lagLo = kSpeechSampleRate / 400, lagHi = kSpeechSampleRate / 70;
@@ -240,12 +245,11 @@ void SpeechFeatureStream::frameBlock(const float *samples, int count)
         const float r0 = ac[0];
         float best = 0;
         if (r0 > 0) {
-            for (int lag = lagLo; lag <= lagHi; ++lag) {
-                // Divided by the window's own autocorrelation at this lag (Boersma 1993):
-                // the Hamming taper alone lowers a 70 Hz voice's peak to a seventh.
-                const float v = ac[lag] / r0 / windowAutocorr[size_t(lag)];
-                best = std::max(best, v);
-            }
+            // Divided by the window's own autocorrelation at this lag (Boersma 1993): the
+            // Hamming taper alone lowers a 70 Hz voice's peak to a seventh.
+            for (int lag = lagLo; lag <= lagHi; ++lag)
+                best = std::max(best, ac[lag] * inverseWindowAutocorr[size_t(lag)]);
+            best /= r0;
         }
         m_voicing.push_back(std::clamp(best, 0.0f, 1.0f));
     }
