@@ -19,7 +19,6 @@ namespace toonface {
 namespace {
 
 constexpr int kDefaultRate = 175;
-constexpr int kProbeSyllables = 60;
 
 AlignResult failure(AlignStatus status, const QString &why)
 {
@@ -565,13 +564,11 @@ AlignResult alignScript(const SpeechFeatures &a, const Script &script, const Ali
         tts.rate = kDefaultRate;
     if (matchRate) {
         // Speak the reference at the speaker's pace: less warping, fewer mistakes. The pace
-        // at the default rate is measured on (at most) the first kProbeSyllables syllables
-        // (espeak-ng's syllables at one rate vary little in length: more only costs time, the
-        // probe is a sixth of a minute's work); when they are
+        // at the default rate is measured on (at most) the first 120 syllables; when they are
         // the whole script, that rendering may serve as the reference itself.
         Script probe = script;
-        if (probe.syllables.size() > kProbeSyllables)
-            probe.syllables.resize(kProbeSyllables);
+        if (probe.syllables.size() > 120)
+            probe.syllables.resize(120);
         const bool whole = probe.syllables.size() == script.syllables.size();
         SpeechFeatures probeFeatures;
         const TtsResult sample = whole ? renderReference(probe, tts, &probeFeatures, cancel)
