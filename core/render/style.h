@@ -38,6 +38,18 @@ enum class GlassesShape { None, Round, Rectangular, Rimless };
 // drawing adds as layers of their own (SVG ids "glasses", "moustache", "beard", "hat"), each only
 // when found. Their colours are the components "glasses" (stroke: frame; fill: lens tint, usually
 // transparent), "moustache", "beard" and "hat"; a component's `visible` switches its layer off.
+// The lenses as measured on the photo, in ES0 about each eye's middle (between its corners):
+// half width and half height, and how far the lens's centre lies outward (toward the temple) and
+// down from there. Zero half sizes: not measured, drawn in the shape's usual proportions.
+struct GlassesFit
+{
+    double halfWidth = 0, halfHeight = 0;
+    double outward = 0, down = 0;
+
+    bool isSet() const { return halfWidth > 0 && halfHeight > 0; }
+    bool operator==(const GlassesFit &) const = default;
+};
+
 struct Appearance
 {
     GlassesShape glasses = GlassesShape::None;
@@ -45,6 +57,7 @@ struct Appearance
     bool beard = false; // on the chin and along the jaw; it opens with the jaw
     bool hat = false; // the top of the head is a hat, not hair
     bool bald = false; // the head shows the skull: the hair outline is drawn as skin
+    GlassesFit lens; // the lenses' size and place, when measured
 
     bool operator==(const Appearance &) const = default;
 };

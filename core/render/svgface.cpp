@@ -520,7 +520,7 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
     makeEye(P, g, true, eyeCovers, &parts);
     makeEye(P, g, false, eyeCovers, &parts);
     if (look.glasses != GlassesShape::None)
-        parts.push_back(makeGlasses(P, look.glasses, g.es0));
+        parts.push_back(makeGlasses(P, look.glasses, look.lens, g.es0));
     std::erase_if(parts, [&](const Part &p) { return !componentStyle(style.components, p.styleKey).visible; });
     return parts;
 }

@@ -44,18 +44,24 @@ void roundedRect(PathData &d, QPointF c, double a, double b, double r)
 
 } // namespace
 
-Part makeGlasses(const Pt &P, GlassesShape shape, double es0)
+Part makeGlasses(const Pt &P, GlassesShape shape, const GlassesFit &fit, double es0)
 {
-    // Each lens about its eye, a little wider on the outer side; the bridge over the nose between
-    // the lenses' inner edges, the arms from their outer edges to the face's sides.
+    // Each lens about its eye (as measured on the photo, else a little wider on the outer side);
+    // the bridge over the nose between the lenses' inner edges, the arms from their outer edges
+    // to the face's sides.
     const QPointF leftMid = (P("3.12") + P("3.8")) / 2.0;
     const QPointF rightMid = (P("3.11") + P("3.7")) / 2.0;
     const QPointF across = unit(rightMid - leftMid);
     const QPointF down = QPointF(-across.y(), across.x());
-    const double a = kLensHalfWidth * es0;
-    const double b = (shape == GlassesShape::Round ? kRoundLensHalfHeight : kRectLensHalfHeight) * es0;
-    const QPointF leftLens = leftMid - across * (0.02 * es0) + down * (kLensDrop * es0);
-    const QPointF rightLens = rightMid + across * (0.02 * es0) + down * (kLensDrop * es0);
+    const bool fitted = fit.isSet();
+    const double a = (fitted ? fit.halfWidth : kLensHalfWidth) * es0;
+    const double b = (fitted                                ? fit.halfHeight
+                             : shape == GlassesShape::Round ? kRoundLensHalfHeight
+                                                            : kRectLensHalfHeight)
+        * es0;
+    const double out = (fitted ? fit.outward : 0.02) * es0, drop = (fitted ? fit.down : kLensDrop) * es0;
+    const QPointF leftLens = leftMid - across * out + down * drop;
+    const QPointF rightLens = rightMid + across * out + down * drop;
     PathData d;
     for (const QPointF &c : {leftLens, rightLens}) {
         if (shape == GlassesShape::Round)

@@ -22,6 +22,9 @@ struct DrawnFaceOptions
     bool glasses = false;
     bool roundGlasses = false;
     bool upperRimsOnly = false; // browline frames: top rims and bridge, the lenses' lower half bare
+    // The lenses' half width and half height (0: 0.25, round 0.3) and their centres' drop below the
+    // eyes' middles, in ES0.
+    double lensHalfWidth = 0.36, lensHalfHeight = 0, lensDrop = 0.03;
     bool moustache = false;
     bool beard = false;
     bool stubble = false; // the moustache and beard are short stubble: dark speckles on the skin
@@ -123,8 +126,11 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
         p.setPen(QPen(QColor(25, 25, 30), std::max(2.0, 0.03 * es0)));
         QPointF inner[2];
         for (bool left : {true, false}) {
-            const QPointF c = (P(left ? "3.12" : "3.11") + P(left ? "3.8" : "3.7")) / 2.0 + QPointF(0, 0.03 * es0);
-            const QRectF r(c.x() - 0.36 * es0, c.y() - 0.25 * es0, 0.72 * es0, (o.roundGlasses ? 0.6 : 0.5) * es0);
+            const QPointF c
+                = (P(left ? "3.12" : "3.11") + P(left ? "3.8" : "3.7")) / 2.0 + QPointF(0, o.lensDrop * es0);
+            const double hh = o.lensHalfHeight > 0 ? o.lensHalfHeight : o.roundGlasses ? 0.3 : 0.25;
+            const double above = o.lensHalfHeight > 0 ? hh : 0.25;
+            const QRectF r(c.x() - o.lensHalfWidth * es0, c.y() - above * es0, 2 * o.lensHalfWidth * es0, 2 * hh * es0);
             p.save();
             if (o.upperRimsOnly) {
                 p.setClipRect(r.adjusted(-0.05 * es0, -0.05 * es0, 0.05 * es0, -0.6 * r.height()));

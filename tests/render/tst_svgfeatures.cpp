@@ -109,7 +109,7 @@ private Q_SLOTS:
     {
         const FaceModel face = testFace();
         Style style = Style::preset(QStringLiteral("normal"));
-        style.appearance = {GlassesShape::Rectangular, true, true, true, false};
+        style.appearance = {GlassesShape::Rectangular, true, true, true, false, {}};
         const SvgFace svg(face, style);
         const QVector<FacePart> still = svg.parts();
         const Pose open = mouthPose(face, MouthShapeSet(), MouthShape::A);
