@@ -190,7 +190,7 @@ void makeEar(const Pt &P, const SvgFaceGeometry &g, bool left, std::vector<Part>
 Part makeFace(const Pt &P, const SvgFaceGeometry &g, bool bald)
 {
     if (bald) // the skull is the face's: no hair, no hairline
-        return {"face", false, "path", {{"d", baldFaceOutline(P, g.jawStartTangent, g.jawEndTangent)}}, "face"};
+        return {"face", false, "path", {{"d", baldFaceOutline(P, g.es0, g.jawStartTangent, g.jawEndTangent)}}, "face"};
     // Open path: the fill closes it with the straight line 2.13 -> 2.14 (where the jaw takes
     // over), the stroke does not.
     const QVector<CubicBezier> chain = fitBezierChain({P("2.14"), P("11.2"), P("11.3"), P("2.13")},

@@ -17,6 +17,10 @@ constexpr double kBeardBelowLip = 0.10;
 constexpr double kMoustacheGap = 0.12; // share of nose-to-lip left bare under the nose
 constexpr double kMoustacheOverLip = 0.025;
 constexpr double kHatBrimReach = 0.06;
+// A skull's top above the eyes' level, in ES0 (eye distances): adult heads measure about 1.5
+// (9-10 cm over a 6.3 cm eye distance); the drawing keeps within these.
+constexpr double kSkullHeight[2] = {1.2, 1.9};
+constexpr double kSkullShoulder = 0.78; // a skull is rounder-shouldered than an ellipse (0.71)
 
 // An ellipse (closed, four cubics) about c with half axes a, b.
 void ellipse(PathData &d, QPointF c, double a, double b)
@@ -157,11 +161,20 @@ Part makeHat(const Pt &P, double es0, int depth)
     return {"hat", false, "polygon", {{"points", pointList(shape)}}, "hat"};
 }
 
-QByteArray baldFaceOutline(const Pt &P, QPointF startTangent, QPointF endTangent)
+QByteArray baldFaceOutline(const Pt &P, double es0, QPointF startTangent, QPointF endTangent)
 {
-    const QVector<CubicBezier> chain = fitBezierChain({P("2.14"), P("5.2"), P("h.10"), P("5.1"), P("2.13")},
-        {lerp(P("2.14"), P("5.2"), 0.5), P("h.6"), P("h.14"), lerp(P("5.1"), P("2.13"), 0.5)},
-        {-startTangent, -endTangent});
+    // The skull over the cheeks at eye level (5.2, 5.1): its top where the outline's crown h.10
+    // is, within what skulls are (an outline that strayed into the room above or beside a shaved
+    // head no longer draws a tall, boxy skull), and its shoulders on a rounded arch between.
+    const QPointF l = P("5.2"), r = P("5.1");
+    const QPointF c = (l + r) / 2.0;
+    const double a = std::abs(r.x() - l.x()) / 2.0;
+    const double b = std::clamp(c.y() - P("h.10").y(), kSkullHeight[0] * es0, kSkullHeight[1] * es0);
+    const QPointF top(P("h.10").x(), c.y() - b);
+    const QPointF shoulderL = c + QPointF(-kSkullShoulder * a, -kSkullShoulder * b);
+    const QPointF shoulderR = c + QPointF(kSkullShoulder * a, -kSkullShoulder * b);
+    const QVector<CubicBezier> chain = fitBezierChain({P("2.14"), l, top, r, P("2.13")},
+        {lerp(P("2.14"), l, 0.5), shoulderL, shoulderR, lerp(r, P("2.13"), 0.5)}, {-startTangent, -endTangent});
     PathData d;
     d.moveTo(P("2.14")).cubics(chain);
     return d.data();
