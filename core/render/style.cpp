@@ -77,6 +77,7 @@ QMap<QString, ComponentStyle> baseComponents()
 constexpr double kMinBrowWidth = 2.5;
 constexpr double kMaxBrowWidth = 8.0;
 constexpr double kHairDepthReach = 1.2; // ES0: how deep into the hair its colour is sampled, at most
+constexpr double kSameHair = 80.0; // RGB distance within which facial hair is of a kind with the head's
 constexpr double kNotHat = 60.0; // RGB distance from a hat's colour beyond which a pixel is not the hat
 constexpr double kHairUnderHat = 0.15; // share of the hair band that must be neither hat, room nor skin
 
@@ -423,7 +424,10 @@ void Style::sampleColours(const QImage &original, const FaceModel &face, Appeara
         // In the person's hair colour where the hair was seen; stubble (not much darker than the
         // skin) is drawn see-through.
         const QColor seen = monochrome ? hairFromGrey(qGray(found.facialHair.rgb())) : found.facialHair;
-        QColor fill = hairOk ? mix(seen, hair, 0.5) : seen;
+        // Evened out with the head's hair when it is of a kind with it; a hair colour far from
+        // it is another person's hair (a grey beard under dark hair) or the room the hair
+        // outline strayed into around a shaved head, and is left out.
+        QColor fill = hairOk && rgbDistance(seen, hair) < kSameHair ? mix(seen, hair, 0.5) : seen;
         const bool stubble = qGray(found.facialHair.rgb()) > 0.55 * qGray(skin.rgb());
         const QColor stroke = fill.darker(140);
         if (stubble)

@@ -19,6 +19,7 @@ struct DrawnFaceOptions
     QColor skin = QColor(226, 184, 156);
     QColor hair = QColor(70, 48, 34);
     QColor hatColour = QColor(40, 60, 140);
+    QColor beardColour; // invalid: the hair's, a little darker
     bool glasses = false;
     bool roundGlasses = false;
     bool upperRimsOnly = false; // browline frames: top rims and bridge, the lenses' lower half bare
@@ -95,7 +96,7 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
     p.drawEllipse(P("9.5"), 0.04 * es0, 0.025 * es0);
     p.setBrush(QColor(190, 90, 90));
     p.drawPolygon(QPolygonF {P("8.4"), P("8.9"), P("8.1"), P("8.10"), P("8.3"), P("8.2")});
-    const QColor beardColour = o.hair.darker(110);
+    const QColor beardColour = o.beardColour.isValid() ? o.beardColour : o.hair.darker(110);
     // Stubble: the facial hair's shapes filled with a speckle of dark dots (a third of the skin
     // covered) instead of a solid colour.
     QImage speckle(img.size(), QImage::Format_ARGB32_Premultiplied);

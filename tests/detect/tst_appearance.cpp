@@ -277,6 +277,27 @@ private Q_SLOTS:
         QVERIFY2(distance(drawn, hat) > 80.0, what.constData());
     }
 
+    // A dark beard under a hair colour far from it (what the hair band reads where the outline
+    // strayed into a yellow wall around a shaved head, or grey hair over a dark beard) is drawn in
+    // the beard's own colour, not a mix of the two (bald_guys #4's beard was drawn olive).
+    void beardKeepsItsColourUnderOtherHair()
+    {
+        DrawnFaceOptions o;
+        o.hair = QColor(190, 183, 156);
+        o.beardColour = QColor(55, 42, 34);
+        o.beard = o.moustache = true;
+        Style style;
+        AppearanceFindings f;
+        style.sampleColours(testing::drawnFace(o), testing::drawnFaceModel(), &f);
+        QVERIFY2(style.appearance.beard, qPrintable(describe(f)));
+        const QColor beard = style.components.value(QStringLiteral("beard")).fill;
+        const double off = std::hypot(beard.red() - o.beardColour.red(), beard.green() - o.beardColour.green(),
+            beard.blue() - o.beardColour.blue());
+        QVERIFY2(off <= 40.0,
+            qPrintable(QStringLiteral("beard drawn %1, hair %2")
+                           .arg(beard.name(), style.components.value(QStringLiteral("hair")).fill.name())));
+    }
+
     // Browline frames (dark top rims and bridge, nothing under the eyes) on grainy, wrinkled skin:
     // the rim-and-bridge edges are lost in the skin's own texture, but the dark bar joining the
     // eyes over the nose is not.
