@@ -69,9 +69,11 @@ inline constexpr double kMaxCaricature = 1.0;
 enum class NoseVariant { Full, Simple, Tip };
 
 // A drawing of the user's own from an SVG file (clothing, an accessory: thesis Fig. 7.9), placed on
-// the face: its centre `offset` from the face's centre and `width` wide, both in ES0. It stays
-// where the neutral face is (as clothes do) when the head moves. Drawn behind the head (over the
-// neck and shoulders) or in front of it, in order, the same in the editor and in every export.
+// the face: its centre `offset` from the face's centre and `width` wide, both in ES0. Either it
+// follows the head (a hat, earrings, a mask: drawn in the head's group, it moves, turns and nods
+// with it) or it stays where the neutral face is (as clothes and the room do). Drawn behind the
+// head (over the neck and shoulders) or in front of it, in order, the same in the editor and in
+// every export.
 struct StyleLayer
 {
     QString name; // shown in the editor: the file's name
@@ -80,6 +82,7 @@ struct StyleLayer
     double width = 2.0; // ES0
     bool front = true;
     bool visible = true;
+    bool followsHead = false; // projects from before keep their layers still
 
     bool operator==(const StyleLayer &) const = default;
 };

@@ -60,7 +60,8 @@ struct SvgFaceGeometry
     double eyeballRadius = 10;
     std::vector<Part> staticParts; // everything of the static layer but the eyebrows
     std::vector<Part> bodyParts; // neck and shoulders, or none
-    QByteArray behind, front; // the style's visible layers, placed
+    QByteArray behind, front; // the style's visible layers, placed, that stay still
+    QByteArray headBehind, headFront; // ... and those that follow the head (in its group)
     QMap<QString, ComponentStyle> components;
 };
 
@@ -490,7 +491,8 @@ SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
     for (qsizetype i = 0; i < style.layers.size(); ++i) {
         const StyleLayer &layer = style.layers[i];
         if (layer.visible)
-            (layer.front ? g.front : g.behind) += placedLayer(layer, int(i + 1), g);
+            (layer.followsHead ? (layer.front ? g.headFront : g.headBehind) : (layer.front ? g.front : g.behind))
+                += placedLayer(layer, int(i + 1), g);
     }
     return g;
 }
@@ -727,6 +729,7 @@ QByteArray SvgFace::svg(const Pose &pose) const
     out += g.behind;
     out += "<g id=\"head\" transform=\"" + headTransformText(g, pose.head)
         + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+    out += g.headBehind;
     for (bool dynamic : {false, true}) {
         out += dynamic ? "<g id=\"dynamic-layer\">\n" : "<g id=\"static-layer\">\n";
         for (const Part &p : parts) {
@@ -735,6 +738,7 @@ QByteArray SvgFace::svg(const Pose &pose) const
         }
         out += "</g>\n";
     }
+    out += g.headFront;
     out += "</g>\n";
     out += g.front;
     for (qsizetype i = 0; i < m_layers.size(); ++i) {

@@ -50,6 +50,13 @@ private Q_SLOTS:
         style.appearance = {GlassesShape(glasses), flags, flags, flags, flags, {}};
         if (flags)
             style.appearance.lens = {0.46, 0.31, 0.04, 0.12};
+        // A layer that follows the head (or not) keeps doing so.
+        StyleLayer layer;
+        layer.name = QStringLiteral("hat.svg");
+        layer.svg
+            = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 10 10\"><rect width=\"10\" height=\"4\"/></svg>";
+        layer.followsHead = flags;
+        style.layers = {layer};
         style.components[QStringLiteral("glasses")].stroke = QColor(0x80, 0x20, 0x20);
         style.components[QStringLiteral("hat")].visible = false;
         QTemporaryDir tmp;
