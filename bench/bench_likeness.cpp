@@ -123,6 +123,9 @@ QJsonObject sheet()
         scores.insert(QStringLiteral("c2s"), f.crownToSkin);
         scores.insert(QStringLiteral("spread"), f.brimSpread);
         scores.insert(QStringLiteral("bridged"), f.bridgedDark);
+        if (a.lens.isSet())
+            scores.insert(
+                QStringLiteral("lens"), QJsonArray {a.lens.halfWidth, a.lens.halfHeight, a.lens.outward, a.lens.down});
         scores.insert(QStringLiteral("moustache"), f.moustacheScore);
         scores.insert(QStringLiteral("beard"), f.beardScore);
         scores.insert(QStringLiteral("bald"), f.baldScore);

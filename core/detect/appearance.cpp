@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <iterator>
+#include <numeric>
 #include <optional>
 #include <vector>
 
@@ -31,6 +32,11 @@ constexpr double kBarDark = 0.8; // a frame's bar is darker than this share of t
 constexpr double kBarAbove = 0.3; // ES0: how far above the eyes' centres a frame's bar is looked for
 // Skin reaching farther above the head's outline than this share means the outline is not the head's.
 constexpr double kMaxSkinReach = 1.3;
+// A rim's edge stands this many times above the profile's median, and the one nearest the eye
+// is taken among those at least this share of the strongest.
+constexpr double kRimContrast = 2.0;
+constexpr double kRimEdgeShare = 0.6;
+constexpr double kLensReach = 0.85; // ES0 past the eyes' centres where a frame's outer edge may be
 
 double lumaOf(QRgb p)
 {
@@ -54,6 +60,7 @@ public:
     explicit Pixels(const QImage &photo)
         : m_image(photo.convertToFormat(QImage::Format_RGB32))
     { }
+    int height() const { return m_image.height(); }
     bool inside(int x, int y) const { return x >= 0 && y >= 0 && x < m_image.width() && y < m_image.height(); }
     QRgb at(int x, int y) const { return reinterpret_cast<const QRgb *>(m_image.constScanLine(y))[x]; }
     double luma(int x, int y) const { return lumaOf(at(x, y)); }
@@ -88,6 +95,24 @@ public:
                 rows.push_back(sum / n);
         }
         return rows;
+    }
+
+    // The mean of |d luma / dx| down each column of the box (vertical edges), left to right.
+    std::vector<double> columnEdges(QRectF r) const
+    {
+        std::vector<double> columns;
+        r = r.normalized();
+        const int x0 = std::max(1, int(std::floor(r.left()))), x1 = std::min(m_image.width() - 2, int(r.right()));
+        const int y0 = std::max(0, int(std::floor(r.top()))), y1 = std::min(m_image.height() - 1, int(r.bottom()));
+        for (int x = x0; x <= x1; ++x) {
+            double sum = 0;
+            int n = 0;
+            for (int y = y0; y <= y1; ++y, ++n)
+                sum += std::abs(luma(x + 1, y) - luma(x - 1, y)) / 2.0;
+            if (n > 0)
+                columns.push_back(sum / n);
+        }
+        return columns;
     }
 
     // The mean luma gradient's size (|d/dx| + |d/dy|) over the box: how textured it is.
@@ -158,23 +183,20 @@ double percentile(std::vector<double> v, double q)
 
 // A dark frame's bridge joins the lenses: the pixels clearly darker than the skin connected to
 // the bridge (over the nose, between the eyes' inner corners, at eye level) reach over both
-// eyes. Brows stop short of each other, and the nose's shadow runs down, not across. Returns the
-// share of the way from one eye's centre to the other's that the widest such component spans,
-// and that component's pixels.
+// eyes. Brows stop short of each other, and the nose's shadow runs down, not across.
 struct DarkBridge
 {
-    double span = 0;
+    double span = 0; // share of the way from one eye's centre to the other's that it spans
     std::vector<QRgb> pixels;
+    QRect bounds; // in the photo
 };
 
-DarkBridge bridgedDark(const Pixels &px, const FaceModel &face, double es0, double skinLuma)
+// The widest part of `box` darker than kBarDark of the skin's luma that is connected to the
+// nose's middle column (between the eyes' inner corners).
+DarkBridge bridgedDark(const Pixels &px, const FaceModel &face, const QRect &box, double skinLuma)
 {
     const QPointF a = face.point("3.6"), b = face.point("3.5");
     const QPointF in1 = face.point("3.8"), in2 = face.point("3.11");
-    const double eyeY = (a.y() + b.y()) / 2.0;
-    const QRect box = QRectF(QPointF(std::min(a.x(), b.x()) - 0.1 * es0, eyeY - kBarAbove * es0),
-        QPointF(std::max(a.x(), b.x()) + 0.1 * es0, eyeY + 0.1 * es0))
-                          .toAlignedRect();
     DarkBridge out;
     if (box.width() < 4 || box.height() < 2)
         return out;
@@ -189,7 +211,7 @@ DarkBridge bridgedDark(const Pixels &px, const FaceModel &face, double es0, doub
         const size_t start = size_t(y0 * box.width() + mx);
         if (mx < 0 || mx >= box.width() || !dark[start] || seen[start])
             continue;
-        int minX = mx, maxX = mx;
+        int minX = mx, maxX = mx, minY = y0, maxY = y0;
         std::vector<QRgb> pixels;
         std::vector<size_t> stack {start};
         seen[start] = 1;
@@ -199,6 +221,8 @@ DarkBridge bridgedDark(const Pixels &px, const FaceModel &face, double es0, doub
             const int x = int(i % size_t(box.width())), y = int(i / size_t(box.width()));
             minX = std::min(minX, x);
             maxX = std::max(maxX, x);
+            minY = std::min(minY, y);
+            maxY = std::max(maxY, y);
             pixels.push_back(px.at(box.left() + x, box.top() + y));
             for (const auto &[dx, dy] : {std::pair {1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
                 const int nx = x + dx, ny = y + dy;
@@ -214,17 +238,128 @@ DarkBridge bridgedDark(const Pixels &px, const FaceModel &face, double es0, doub
         const double span = (std::min(double(maxX + box.left()), std::max(a.x(), b.x()))
                                 - std::max(double(minX + box.left()), std::min(a.x(), b.x())))
             / std::max(1.0, std::abs(b.x() - a.x()));
-        if (span > out.span) {
+        if (span > out.span || (span == out.span && maxX - minX + 1 > out.bounds.width())) {
             out.span = span;
             out.pixels = std::move(pixels);
+            out.bounds = QRect(QPoint(minX, minY) + box.topLeft(), QPoint(maxX, maxY) + box.topLeft());
         }
     }
     return out;
 }
 
+// Where a frame's bar is looked for: at eye level and a little above, from one eye's centre to
+// the other's (and `reach` ES0 beyond them), `below` ES0 down from the eyes' centres.
+QRect barBox(const FaceModel &face, double es0, double reach, double below)
+{
+    const QPointF a = face.point("3.6"), b = face.point("3.5");
+    const double eyeY = (a.y() + b.y()) / 2.0;
+    return QRectF(QPointF(std::min(a.x(), b.x()) - reach * es0, eyeY - kBarAbove * es0),
+        QPointF(std::max(a.x(), b.x()) + reach * es0, eyeY + below * es0))
+        .toAlignedRect();
+}
+
+// Where in `edges` (a profile along x or y, its first entry at `from`, one entry a pixel) the
+// frame's rim is: the first strong edge (at least kRimEdgeShare of the strongest) met when the
+// profile is read forward (`step` +1) or from its end (-1). Empty when the profile is flat
+// (nothing stands out of it: no rim there to measure).
+std::optional<double> rimAt(const std::vector<double> &edges, double from, int step)
+{
+    if (edges.size() < 3)
+        return std::nullopt;
+    const double best = *std::max_element(edges.begin(), edges.end());
+    if (best < kRimContrast * percentile(edges, 0.5) || best < kEdgeFloor)
+        return std::nullopt;
+    for (size_t i = 0; i < edges.size(); ++i) {
+        const size_t k = step > 0 ? i : edges.size() - 1 - i;
+        if (edges[k] >= kRimEdgeShare * best)
+            return from + double(k);
+    }
+    return std::nullopt;
+}
+
+// The lenses' size and place (GlassesFit), from the rims about each eye: the outer rim, the
+// first strong vertical edge out from the eye's outer corner (or the end of a dark frame's top
+// rims, followed from the bridge within the face's sides); the inner rim, between the inner
+// corner and the nose's middle; the top rim, the first strong horizontal edge up from the eye
+// (a brow lies above it; or the dark frame's top); the bottom rim, the lowest strong one below
+// the eye (a lid's crease or a bag lies above it). Averaged over both eyes; a side found on
+// neither keeps the usual proportion. Clamped to what glasses are.
+GlassesFit measureLenses(const Pixels &px, const FaceModel &face, double es0, double skinLuma)
+{
+    auto p = [&](const char *id) { return face.point(id); };
+    const double midX = (p("3.8").x() + p("3.11").x()) / 2.0;
+    std::vector<double> outer, inner, top, bottom;
+    // A dark frame's top rims and bridge, followed out past the eyes: their ends are the lenses'
+    // outer edges, their top the lenses' top (unless it runs into the brows, to the box's top).
+    // Within the face's sides at the temples and cheeks: beyond them are hair and the room.
+    const QRect wide
+        = barBox(face, es0, kLensReach, 0.1)
+              .intersected(QRectF(QPointF(p("10.10").x(), 0), QPointF(p("10.9").x(), px.height())).toAlignedRect());
+    const DarkBridge bar = bridgedDark(px, face, wide, skinLuma);
+    const bool barred = bar.span >= AppearanceFindings::kBridgedThreshold;
+    std::array<bool, 2> outerFromBar {false, false};
+    bool topFromBar = false;
+    for (bool left : {true, false}) {
+        const QPointF o = p(left ? "3.12" : "3.7"), i = p(left ? "3.8" : "3.11");
+        const QPointF mid = (o + i) / 2.0;
+        const double end = o.x() < i.x() ? double(bar.bounds.left()) : double(bar.bounds.right()) + 1;
+        if (barred) {
+            outer.push_back(std::abs(end - mid.x()) / es0);
+            outerFromBar[left ? 0 : 1] = true;
+        }
+        if (barred && bar.bounds.top() > wide.top()) {
+            top.push_back((mid.y() - bar.bounds.top()) / es0);
+            topFromBar = true;
+        }
+    }
+    for (bool left : {true, false}) {
+        const QPointF o = p(left ? "3.12" : "3.7"), i = p(left ? "3.8" : "3.11"), ball = p(left ? "3.6" : "3.5");
+        const QPointF mid = (o + i) / 2.0;
+        const double out = o.x() < i.x() ? -1.0 : 1.0; // toward the temple
+        const double x0 = std::min(o.x(), i.x()), x1 = std::max(o.x(), i.x());
+        const double rows[2] = {ball.y() - 0.15 * es0, ball.y() + 0.2 * es0};
+        // Outer rim: from just past the corner outward.
+        if (!outerFromBar[left ? 0 : 1]) {
+            const double a = o.x() + out * 0.04 * es0, b = o.x() + out * 0.35 * es0;
+            const QRectF r(QPointF(std::min(a, b), rows[0]), QPointF(std::max(a, b), rows[1]));
+            if (px.covers(r))
+                if (const auto at = rimAt(px.columnEdges(r), std::max(1.0, std::floor(r.left())), out > 0 ? 1 : -1))
+                    outer.push_back(out * (*at - mid.x()) / es0);
+        }
+        // Inner rim: from just inside the inner corner toward the nose's middle.
+        {
+            const double a = i.x() - out * 0.03 * es0, b = midX + out * 0.02 * es0;
+            const QRectF r(QPointF(std::min(a, b), rows[0]), QPointF(std::max(a, b), rows[1]));
+            if (px.covers(r) && r.width() >= 3)
+                if (const auto at = rimAt(px.columnEdges(r), std::max(1.0, std::floor(r.left())), out > 0 ? -1 : 1))
+                    inner.push_back(out * (mid.x() - *at) / es0);
+        }
+        // Bottom rim below the lower lid; top rim above the upper lid.
+        const QRectF below(QPointF(x0, ball.y() + 0.16 * es0), QPointF(x1, ball.y() + 0.55 * es0));
+        if (px.covers(below))
+            if (const auto at = rimAt(px.rowEdges(below), std::max(1.0, std::floor(below.top())), -1))
+                bottom.push_back((*at - mid.y()) / es0);
+        const QRectF above(QPointF(x0, ball.y() - 0.4 * es0), QPointF(x1, ball.y() - 0.12 * es0));
+        if (!topFromBar && px.covers(above))
+            if (const auto at = rimAt(px.rowEdges(above), std::max(1.0, std::floor(above.top())), -1))
+                top.push_back((mid.y() - *at) / es0);
+    }
+    auto mean = [](const std::vector<double> &v, double otherwise) {
+        return v.empty() ? otherwise : std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
+    };
+    const double o = std::clamp(mean(outer, 0.39), 0.3, 0.75), i = std::clamp(mean(inner, 0.35), 0.25, 0.48);
+    const double t = std::clamp(mean(top, 0.21), 0.1, 0.4), b = std::clamp(mean(bottom, 0.27), 0.18, 0.6);
+    GlassesFit fit;
+    fit.halfWidth = (o + i) / 2.0;
+    fit.outward = (o - i) / 2.0;
+    fit.halfHeight = (t + b) / 2.0;
+    fit.down = (b - t) / 2.0;
+    return fit;
+}
+
 void findGlasses(const Pixels &px, const FaceModel &face, double es0, double skinLuma, AppearanceFindings *out)
 {
-    const DarkBridge bar = bridgedDark(px, face, es0, skinLuma);
+    const DarkBridge bar = bridgedDark(px, face, barBox(face, es0, 0.1, 0.1), skinLuma);
     out->bridgedDark = bar.span;
     auto p = [&](const char *id) { return face.point(id); };
     // Skin texture: horizontal edges on the cheeks well below any rim.
@@ -294,6 +429,7 @@ void findGlasses(const Pixels &px, const FaceModel &face, double es0, double ski
     if (!rims && !bridged)
         return;
     out->appearance.glasses = rimCurve > 0.035 ? GlassesShape::Round : GlassesShape::Rectangular;
+    out->appearance.lens = measureLenses(px, face, es0, skinLuma);
     out->glassesFrame = bridged ? median(bar.pixels) : darkest(rimPixels, 0.3);
 }
 

@@ -23,6 +23,7 @@ QJsonArray styleLayersToJson(const QVector<StyleLayer> &layers)
         o.insert(QStringLiteral("width"), layer.width);
         o.insert(QStringLiteral("front"), layer.front);
         o.insert(QStringLiteral("visible"), layer.visible);
+        o.insert(QStringLiteral("followsHead"), layer.followsHead);
         out.append(o);
     }
     return out;
@@ -47,6 +48,10 @@ bool styleLayersFromJson(const JsonField &field, QVector<StyleLayer> *layers, QS
             || !f.member("y").toBoundedNumber(kMaxOffset, &y, error)
             || !f.member("width").toBoundedNumber(kMaxWidth, &layer.width, error)
             || !f.member("front").toBool(&layer.front, error) || !f.member("visible").toBool(&layer.visible, error))
+            return false;
+        // Added later: layers of files from before stay still as the head moves.
+        if (const JsonField follows = f.member("followsHead");
+            !follows.isMissing() && !follows.toBool(&layer.followsHead, error))
             return false;
         if (!(layer.width > 0))
             return f.member("width").expected(QStringLiteral("a width more than 0"), error);

@@ -141,6 +141,10 @@ QJsonObject styleToJson(const Style &style)
     look.insert(QStringLiteral("beard"), style.appearance.beard);
     look.insert(QStringLiteral("hat"), style.appearance.hat);
     look.insert(QStringLiteral("bald"), style.appearance.bald);
+    if (const GlassesFit &lens = style.appearance.lens; lens.isSet())
+        look.insert(QStringLiteral("lens"),
+            QJsonObject {{QStringLiteral("halfWidth"), lens.halfWidth}, {QStringLiteral("halfHeight"), lens.halfHeight},
+                {QStringLiteral("outward"), lens.outward}, {QStringLiteral("down"), lens.down}});
     s.insert(QStringLiteral("appearance"), look);
     QJsonObject components;
     for (auto it = style.components.cbegin(); it != style.components.cend(); ++it) {
@@ -182,6 +186,19 @@ bool styleFromJson(const JsonField &field, Style *style, QString *error)
             || !look.member("moustache").toBool(&a.moustache, error) || !look.member("beard").toBool(&a.beard, error)
             || !look.member("hat").toBool(&a.hat, error) || !look.member("bald").toBool(&a.bald, error))
             return false;
+        // Added later: without it the lenses keep the shape's usual proportions.
+        if (const JsonField lens = look.member("lens"); !lens.isMissing()) {
+            GlassesFit &fit = a.lens;
+            if (!lens.toObject(&unused, error) || !lens.member("halfWidth").toNumber(&fit.halfWidth, error)
+                || !lens.member("halfHeight").toNumber(&fit.halfHeight, error)
+                || !lens.member("outward").toNumber(&fit.outward, error)
+                || !lens.member("down").toNumber(&fit.down, error))
+                return false;
+            if (fit.halfWidth <= 0 || fit.halfWidth > 2 || fit.halfHeight <= 0 || fit.halfHeight > 2)
+                return lens.expected(QStringLiteral("lens half sizes above 0 and at most 2 (ES0)"), error);
+            if (std::abs(fit.outward) > 2 || std::abs(fit.down) > 2)
+                return lens.expected(QStringLiteral("a lens offset of at most 2 (ES0) each way"), error);
+        }
     }
     const JsonField components = field.member("components");
     QJsonObject all;

@@ -77,6 +77,9 @@ QMap<QString, ComponentStyle> baseComponents()
 constexpr double kMinBrowWidth = 2.5;
 constexpr double kMaxBrowWidth = 8.0;
 constexpr double kHairDepthReach = 1.2; // ES0: how deep into the hair its colour is sampled, at most
+constexpr double kSameHair = 80.0; // RGB distance within which facial hair is of a kind with the head's
+constexpr double kNotHat = 60.0; // RGB distance from a hat's colour beyond which a pixel is not the hat
+constexpr double kHairUnderHat = 0.15; // share of the hair band that must be neither hat, room nor skin
 
 double hueDistance(double a, double b)
 {
@@ -347,14 +350,16 @@ void Style::sampleColours(const QImage &original, const FaceModel &face, Appeara
     }
     if (hairOk && rgbDistance(hairSeen, skin) < 30.0)
         hairOk = false; // bald or the band fell on the forehead
-    const QColor hair = hairOk && monochrome ? hairFromGrey(qGray(hairSeen.rgb())) : hairSeen;
-    if (hairOk) {
-        components[QStringLiteral("hair")].fill = hair;
-        components[QStringLiteral("hair")].stroke = hair.darker(170);
-        const QColor brow = hair.valueF() > 0.45 ? hair.darker(150) : hair.darker(120);
+    QColor hair = hairOk && monochrome ? hairFromGrey(qGray(hairSeen.rgb())) : hairSeen;
+    auto setHair = [&](const QColor &c) {
+        components[QStringLiteral("hair")].fill = c;
+        components[QStringLiteral("hair")].stroke = c.darker(170);
+        const QColor brow = c.valueF() > 0.45 ? c.darker(150) : c.darker(120);
         components[QStringLiteral("eyebrows")].fill = brow;
         components[QStringLiteral("eyebrows")].stroke = brow;
-    }
+    };
+    if (hairOk)
+        setHair(hair);
 
     // Brow thickness: the unbroken run of pixels clearly darker than the skin through each brow's
     // middle, up and down from it (a shadow or a lid apart from the brow does not count).
@@ -383,6 +388,32 @@ void Style::sampleColours(const QImage &original, const FaceModel &face, Appeara
     if (findings)
         *findings = found;
     appearance = found.appearance;
+    if (found.hat.isValid()) {
+        const QColor hat = monochrome ? hairFromGrey(qGray(found.hat.rgb())) : found.hat;
+        components[QStringLiteral("hat")].fill = hat;
+        components[QStringLiteral("hat")].stroke = hat.darker(160);
+        // The hair band, when it saw no room, fell mostly on the hat: the hair is what of it is
+        // neither the hat's colour nor the room's nor skin, else the hair seen beside the
+        // temples, else the preset's.
+        if (hairOk) {
+            std::vector<QRgb> rest;
+            std::copy_if(inside.begin(), inside.end(), std::back_inserter(rest), [&](QRgb c) {
+                return rgbDistance(QColor(c), found.hat) >= kNotHat
+                    && (!background.isValid() || rgbDistance(QColor(c), background) >= 40.0)
+                    && rgbDistance(QColor(c), skin) >= 30.0;
+            });
+            QColor under;
+            if (double(rest.size()) >= kHairUnderHat * double(inside.size()))
+                under = litMedianColour(rest);
+            else if (found.templeHair.isValid())
+                under = found.templeHair;
+            if (under.isValid() && monochrome)
+                under = hairFromGrey(qGray(under.rgb()));
+            hairOk = under.isValid();
+            hair = hairOk ? under : baseComponents().value(QStringLiteral("hair")).fill;
+            setHair(hair);
+        }
+    }
     if (found.glassesFrame.isValid()) {
         const QColor frame = monochrome
             ? QColor(qGray(found.glassesFrame.rgb()), qGray(found.glassesFrame.rgb()), qGray(found.glassesFrame.rgb()))
@@ -393,7 +424,10 @@ void Style::sampleColours(const QImage &original, const FaceModel &face, Appeara
         // In the person's hair colour where the hair was seen; stubble (not much darker than the
         // skin) is drawn see-through.
         const QColor seen = monochrome ? hairFromGrey(qGray(found.facialHair.rgb())) : found.facialHair;
-        QColor fill = hairOk ? mix(seen, hair, 0.5) : seen;
+        // Evened out with the head's hair when it is of a kind with it; a hair colour far from
+        // it is another person's hair (a grey beard under dark hair) or the room the hair
+        // outline strayed into around a shaved head, and is left out.
+        QColor fill = hairOk && rgbDistance(seen, hair) < kSameHair ? mix(seen, hair, 0.5) : seen;
         const bool stubble = qGray(found.facialHair.rgb()) > 0.55 * qGray(skin.rgb());
         const QColor stroke = fill.darker(140);
         if (stubble)
@@ -402,11 +436,6 @@ void Style::sampleColours(const QImage &original, const FaceModel &face, Appeara
             components[QLatin1StringView(key)].fill = fill;
             components[QLatin1StringView(key)].stroke = stroke;
         }
-    }
-    if (found.hat.isValid()) {
-        const QColor hat = monochrome ? hairFromGrey(qGray(found.hat.rgb())) : found.hat;
-        components[QStringLiteral("hat")].fill = hat;
-        components[QStringLiteral("hat")].stroke = hat.darker(160);
     }
 
     if (monochrome) {

@@ -38,6 +38,18 @@ enum class GlassesShape { None, Round, Rectangular, Rimless };
 // drawing adds as layers of their own (SVG ids "glasses", "moustache", "beard", "hat"), each only
 // when found. Their colours are the components "glasses" (stroke: frame; fill: lens tint, usually
 // transparent), "moustache", "beard" and "hat"; a component's `visible` switches its layer off.
+// The lenses as measured on the photo, in ES0 about each eye's middle (between its corners):
+// half width and half height, and how far the lens's centre lies outward (toward the temple) and
+// down from there. Zero half sizes: not measured, drawn in the shape's usual proportions.
+struct GlassesFit
+{
+    double halfWidth = 0, halfHeight = 0;
+    double outward = 0, down = 0;
+
+    bool isSet() const { return halfWidth > 0 && halfHeight > 0; }
+    bool operator==(const GlassesFit &) const = default;
+};
+
 struct Appearance
 {
     GlassesShape glasses = GlassesShape::None;
@@ -45,6 +57,7 @@ struct Appearance
     bool beard = false; // on the chin and along the jaw; it opens with the jaw
     bool hat = false; // the top of the head is a hat, not hair
     bool bald = false; // the head shows the skull: the hair outline is drawn as skin
+    GlassesFit lens; // the lenses' size and place, when measured
 
     bool operator==(const Appearance &) const = default;
 };
@@ -56,9 +69,11 @@ inline constexpr double kMaxCaricature = 1.0;
 enum class NoseVariant { Full, Simple, Tip };
 
 // A drawing of the user's own from an SVG file (clothing, an accessory: thesis Fig. 7.9), placed on
-// the face: its centre `offset` from the face's centre and `width` wide, both in ES0. It stays
-// where the neutral face is (as clothes do) when the head moves. Drawn behind the head (over the
-// neck and shoulders) or in front of it, in order, the same in the editor and in every export.
+// the face: its centre `offset` from the face's centre and `width` wide, both in ES0. Either it
+// follows the head (a hat, earrings, a mask: drawn in the head's group, it moves, turns and nods
+// with it) or it stays where the neutral face is (as clothes and the room do). Drawn behind the
+// head (over the neck and shoulders) or in front of it, in order, the same in the editor and in
+// every export.
 struct StyleLayer
 {
     QString name; // shown in the editor: the file's name
@@ -67,6 +82,7 @@ struct StyleLayer
     double width = 2.0; // ES0
     bool front = true;
     bool visible = true;
+    bool followsHead = false; // projects from before keep their layers still
 
     bool operator==(const StyleLayer &) const = default;
 };

@@ -60,7 +60,8 @@ struct SvgFaceGeometry
     double eyeballRadius = 10;
     std::vector<Part> staticParts; // everything of the static layer but the eyebrows
     std::vector<Part> bodyParts; // neck and shoulders, or none
-    QByteArray behind, front; // the style's visible layers, placed
+    QByteArray behind, front; // the style's visible layers, placed, that stay still
+    QByteArray headBehind, headFront; // ... and those that follow the head (in its group)
     QMap<QString, ComponentStyle> components;
 };
 
@@ -190,7 +191,7 @@ void makeEar(const Pt &P, const SvgFaceGeometry &g, bool left, std::vector<Part>
 Part makeFace(const Pt &P, const SvgFaceGeometry &g, bool bald)
 {
     if (bald) // the skull is the face's: no hair, no hairline
-        return {"face", false, "path", {{"d", baldFaceOutline(P, g.jawStartTangent, g.jawEndTangent)}}, "face"};
+        return {"face", false, "path", {{"d", baldFaceOutline(P, g.es0, g.jawStartTangent, g.jawEndTangent)}}, "face"};
     // Open path: the fill closes it with the straight line 2.13 -> 2.14 (where the jaw takes
     // over), the stroke does not.
     const QVector<CubicBezier> chain = fitBezierChain({P("2.14"), P("11.2"), P("11.3"), P("2.13")},
@@ -490,7 +491,8 @@ SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
     for (qsizetype i = 0; i < style.layers.size(); ++i) {
         const StyleLayer &layer = style.layers[i];
         if (layer.visible)
-            (layer.front ? g.front : g.behind) += placedLayer(layer, int(i + 1), g);
+            (layer.followsHead ? (layer.front ? g.headFront : g.headBehind) : (layer.front ? g.front : g.behind))
+                += placedLayer(layer, int(i + 1), g);
     }
     return g;
 }
@@ -520,7 +522,7 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
     makeEye(P, g, true, eyeCovers, &parts);
     makeEye(P, g, false, eyeCovers, &parts);
     if (look.glasses != GlassesShape::None)
-        parts.push_back(makeGlasses(P, look.glasses, g.es0));
+        parts.push_back(makeGlasses(P, look.glasses, look.lens, g.es0));
     std::erase_if(parts, [&](const Part &p) { return !componentStyle(style.components, p.styleKey).visible; });
     return parts;
 }
@@ -727,6 +729,7 @@ QByteArray SvgFace::svg(const Pose &pose) const
     out += g.behind;
     out += "<g id=\"head\" transform=\"" + headTransformText(g, pose.head)
         + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+    out += g.headBehind;
     for (bool dynamic : {false, true}) {
         out += dynamic ? "<g id=\"dynamic-layer\">\n" : "<g id=\"static-layer\">\n";
         for (const Part &p : parts) {
@@ -735,6 +738,7 @@ QByteArray SvgFace::svg(const Pose &pose) const
         }
         out += "</g>\n";
     }
+    out += g.headFront;
     out += "</g>\n";
     out += g.front;
     for (qsizetype i = 0; i < m_layers.size(); ++i) {

@@ -31,11 +31,13 @@ struct FacePart
 // Writes a face in a pose as SVG 1.1. Thread-safe for concurrent const use.
 //
 // Layout: <svg viewBox="0 0 W H"> (W x H = the photo's size) holding
-//   <defs> clip paths (eyes), then <g id="head" transform=head motion> with
+//   <defs> clip paths (eyes), the body, the style's still layers behind the head
+//   (<g id="style-layer-N">), then <g id="head" transform=head motion> with the style's layers
+//   behind that follow the head,
 //   <g id="static-layer"> hair, ears, face, nose, hat, eyebrows and
 //   <g id="dynamic-layer"> jaw, beard, mouth, moustache, eyes (eyeballs clipped by the eye
-//   outline), glasses,
-// and then the user's extra layers (<g id="layer-N">) in order. Because QSvgRenderer before
+//   outline), glasses, and the style's layers in front that follow the head;
+// then the style's still layers in front, and the extra layers (<g id="layer-N">) in order. Because QSvgRenderer before
 // Qt 6.7 ignores clip-path, each eye also has a skin-coloured cover ("eye-left-cover") around
 // its opening, so the eyeballs stay hidden outside the lids in every renderer.
 //

@@ -17,6 +17,10 @@ constexpr double kBeardBelowLip = 0.10;
 constexpr double kMoustacheGap = 0.12; // share of nose-to-lip left bare under the nose
 constexpr double kMoustacheOverLip = 0.025;
 constexpr double kHatBrimReach = 0.06;
+// A skull's top above the eyes' level, in ES0 (eye distances): adult heads measure about 1.5
+// (9-10 cm over a 6.3 cm eye distance); the drawing keeps within these.
+constexpr double kSkullHeight[2] = {1.2, 1.9};
+constexpr double kSkullShoulder = 0.78; // a skull is rounder-shouldered than an ellipse (0.71)
 
 // An ellipse (closed, four cubics) about c with half axes a, b.
 void ellipse(PathData &d, QPointF c, double a, double b)
@@ -44,18 +48,24 @@ void roundedRect(PathData &d, QPointF c, double a, double b, double r)
 
 } // namespace
 
-Part makeGlasses(const Pt &P, GlassesShape shape, double es0)
+Part makeGlasses(const Pt &P, GlassesShape shape, const GlassesFit &fit, double es0)
 {
-    // Each lens about its eye, a little wider on the outer side; the bridge over the nose between
-    // the lenses' inner edges, the arms from their outer edges to the face's sides.
+    // Each lens about its eye (as measured on the photo, else a little wider on the outer side);
+    // the bridge over the nose between the lenses' inner edges, the arms from their outer edges
+    // to the face's sides.
     const QPointF leftMid = (P("3.12") + P("3.8")) / 2.0;
     const QPointF rightMid = (P("3.11") + P("3.7")) / 2.0;
     const QPointF across = unit(rightMid - leftMid);
     const QPointF down = QPointF(-across.y(), across.x());
-    const double a = kLensHalfWidth * es0;
-    const double b = (shape == GlassesShape::Round ? kRoundLensHalfHeight : kRectLensHalfHeight) * es0;
-    const QPointF leftLens = leftMid - across * (0.02 * es0) + down * (kLensDrop * es0);
-    const QPointF rightLens = rightMid + across * (0.02 * es0) + down * (kLensDrop * es0);
+    const bool fitted = fit.isSet();
+    const double a = (fitted ? fit.halfWidth : kLensHalfWidth) * es0;
+    const double b = (fitted                                ? fit.halfHeight
+                             : shape == GlassesShape::Round ? kRoundLensHalfHeight
+                                                            : kRectLensHalfHeight)
+        * es0;
+    const double out = (fitted ? fit.outward : 0.02) * es0, drop = (fitted ? fit.down : kLensDrop) * es0;
+    const QPointF leftLens = leftMid - across * out + down * drop;
+    const QPointF rightLens = rightMid + across * out + down * drop;
     PathData d;
     for (const QPointF &c : {leftLens, rightLens}) {
         if (shape == GlassesShape::Round)
@@ -151,11 +161,20 @@ Part makeHat(const Pt &P, double es0, int depth)
     return {"hat", false, "polygon", {{"points", pointList(shape)}}, "hat"};
 }
 
-QByteArray baldFaceOutline(const Pt &P, QPointF startTangent, QPointF endTangent)
+QByteArray baldFaceOutline(const Pt &P, double es0, QPointF startTangent, QPointF endTangent)
 {
-    const QVector<CubicBezier> chain = fitBezierChain({P("2.14"), P("5.2"), P("h.10"), P("5.1"), P("2.13")},
-        {lerp(P("2.14"), P("5.2"), 0.5), P("h.6"), P("h.14"), lerp(P("5.1"), P("2.13"), 0.5)},
-        {-startTangent, -endTangent});
+    // The skull over the cheeks at eye level (5.2, 5.1): its top where the outline's crown h.10
+    // is, within what skulls are (an outline that strayed into the room above or beside a shaved
+    // head no longer draws a tall, boxy skull), and its shoulders on a rounded arch between.
+    const QPointF l = P("5.2"), r = P("5.1");
+    const QPointF c = (l + r) / 2.0;
+    const double a = std::abs(r.x() - l.x()) / 2.0;
+    const double b = std::clamp(c.y() - P("h.10").y(), kSkullHeight[0] * es0, kSkullHeight[1] * es0);
+    const QPointF top(P("h.10").x(), c.y() - b);
+    const QPointF shoulderL = c + QPointF(-kSkullShoulder * a, -kSkullShoulder * b);
+    const QPointF shoulderR = c + QPointF(kSkullShoulder * a, -kSkullShoulder * b);
+    const QVector<CubicBezier> chain = fitBezierChain({P("2.14"), l, top, r, P("2.13")},
+        {lerp(P("2.14"), l, 0.5), shoulderL, shoulderR, lerp(r, P("2.13"), 0.5)}, {-startTangent, -endTangent});
     PathData d;
     d.moveTo(P("2.14")).cubics(chain);
     return d.data();

@@ -14,11 +14,13 @@ Part makeHat(const Pt &P, double es0, int depth);
 Part makeBeard(const Pt &P, double es0);
 // Dynamic: the moustache follows the upper lip and its corners; drawn after the mouth.
 Part makeMoustache(const Pt &P, double es0);
-// Dynamic layer (above the eyes), but fixed to the eye corners: rims, bridge and arms.
-Part makeGlasses(const Pt &P, GlassesShape shape, double es0);
+// Dynamic layer (above the eyes), but fixed to the eye corners: rims, bridge and arms; the lenses
+// of the measured size and place when `fit` is set.
+Part makeGlasses(const Pt &P, GlassesShape shape, const GlassesFit &fit, double es0);
 
 // The face outline over the skull of a bald head: the jaw sides, the cheeks and the hair
-// outline's crown, with the jaw's tangents at both ends (so the jaw joins it smoothly).
-QByteArray baldFaceOutline(const Pt &P, QPointF startTangent, QPointF endTangent);
+// outline's crown (within a skull's height; the sides a rounded arch, whatever the outline did
+// there), with the jaw's tangents at both ends (so the jaw joins it smoothly).
+QByteArray baldFaceOutline(const Pt &P, double es0, QPointF startTangent, QPointF endTangent);
 
 } // namespace toonface::svgparts

@@ -1231,6 +1231,22 @@
         <source>%1 (behind)</source>
         <translation>%1（后面）</translation>
     </message>
+    <message>
+        <source>Moves with the head</source>
+        <translation>随头部移动</translation>
+    </message>
+    <message>
+        <source>Ticked, the drawing moves, turns and nods with the head (a hat, glasses, earrings); unticked, it stays still as the head moves (clothes)</source>
+        <translation>勾选时，图画随头部移动、转动和点头（帽子、眼镜、耳环）；不勾选时，头部移动时它保持不动（衣服）</translation>
+    </message>
+    <message>
+        <source>Layer follows the head</source>
+        <translation>图层随头部移动</translation>
+    </message>
+    <message>
+        <source>Layer stays still</source>
+        <translation>图层保持不动</translation>
+    </message>
 </context>
 <context>
     <name>toonface::LipSyncDialog</name>

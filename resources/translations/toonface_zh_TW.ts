@@ -1231,6 +1231,22 @@
         <source>%1 (behind)</source>
         <translation>%1（後面）</translation>
     </message>
+    <message>
+        <source>Moves with the head</source>
+        <translation>隨頭部移動</translation>
+    </message>
+    <message>
+        <source>Ticked, the drawing moves, turns and nods with the head (a hat, glasses, earrings); unticked, it stays still as the head moves (clothes)</source>
+        <translation>勾選時，圖畫隨頭部移動、轉動和點頭（帽子、眼鏡、耳環）；不勾選時，頭部移動時它保持不動（衣服）</translation>
+    </message>
+    <message>
+        <source>Layer follows the head</source>
+        <translation>圖層隨頭部移動</translation>
+    </message>
+    <message>
+        <source>Layer stays still</source>
+        <translation>圖層保持不動</translation>
+    </message>
 </context>
 <context>
     <name>toonface::LipSyncDialog</name>

@@ -19,9 +19,13 @@ struct DrawnFaceOptions
     QColor skin = QColor(226, 184, 156);
     QColor hair = QColor(70, 48, 34);
     QColor hatColour = QColor(40, 60, 140);
+    QColor beardColour; // invalid: the hair's, a little darker
     bool glasses = false;
     bool roundGlasses = false;
     bool upperRimsOnly = false; // browline frames: top rims and bridge, the lenses' lower half bare
+    // The lenses' half width and half height (0: 0.25, round 0.3) and their centres' drop below the
+    // eyes' middles, in ES0.
+    double lensHalfWidth = 0.36, lensHalfHeight = 0, lensDrop = 0.03;
     bool moustache = false;
     bool beard = false;
     bool stubble = false; // the moustache and beard are short stubble: dark speckles on the skin
@@ -92,7 +96,7 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
     p.drawEllipse(P("9.5"), 0.04 * es0, 0.025 * es0);
     p.setBrush(QColor(190, 90, 90));
     p.drawPolygon(QPolygonF {P("8.4"), P("8.9"), P("8.1"), P("8.10"), P("8.3"), P("8.2")});
-    const QColor beardColour = o.hair.darker(110);
+    const QColor beardColour = o.beardColour.isValid() ? o.beardColour : o.hair.darker(110);
     // Stubble: the facial hair's shapes filled with a speckle of dark dots (a third of the skin
     // covered) instead of a solid colour.
     QImage speckle(img.size(), QImage::Format_ARGB32_Premultiplied);
@@ -123,8 +127,11 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
         p.setPen(QPen(QColor(25, 25, 30), std::max(2.0, 0.03 * es0)));
         QPointF inner[2];
         for (bool left : {true, false}) {
-            const QPointF c = (P(left ? "3.12" : "3.11") + P(left ? "3.8" : "3.7")) / 2.0 + QPointF(0, 0.03 * es0);
-            const QRectF r(c.x() - 0.36 * es0, c.y() - 0.25 * es0, 0.72 * es0, (o.roundGlasses ? 0.6 : 0.5) * es0);
+            const QPointF c
+                = (P(left ? "3.12" : "3.11") + P(left ? "3.8" : "3.7")) / 2.0 + QPointF(0, o.lensDrop * es0);
+            const double hh = o.lensHalfHeight > 0 ? o.lensHalfHeight : o.roundGlasses ? 0.3 : 0.25;
+            const double above = o.lensHalfHeight > 0 ? hh : 0.25;
+            const QRectF r(c.x() - o.lensHalfWidth * es0, c.y() - above * es0, 2 * o.lensHalfWidth * es0, 2 * hh * es0);
             p.save();
             if (o.upperRimsOnly) {
                 p.setClipRect(r.adjusted(-0.05 * es0, -0.05 * es0, 0.05 * es0, -0.6 * r.height()));

@@ -3,12 +3,15 @@
 #include "detect/hairsearch.h"
 #include "detect/landmarkmap.h"
 #include "drawnface.h"
+#include "face/fapu.h"
 #include "render/style.h"
+#include "render/svgface.h"
 
 #include <QDir>
 #include <QFileInfo>
 #include <QPainter>
 #include <QRandomGenerator>
+#include <QRegularExpression>
 #include <QTest>
 
 using namespace toonface;
@@ -44,6 +47,23 @@ QString describe(const AppearanceFindings &f)
         .arg(f.baldScore, 0, 'f', 2)
         .arg(f.appearance.hat)
         .arg(f.hatScore, 0, 'f', 1);
+}
+
+// The box of the first two subpaths of a path's data (the lenses of the glasses' layer; the
+// bridge and arms follow), from their points (an ellipse's handles lie within its box).
+QRectF lensBounds(const QString &d)
+{
+    QRectF box;
+    const QStringList subpaths = d.split(QLatin1Char('M'), Qt::SkipEmptyParts);
+    for (qsizetype i = 0; i < std::min<qsizetype>(2, subpaths.size()); ++i) {
+        static const QRegularExpression number(QStringLiteral("-?[0-9]+(?:\\.[0-9]+)?(?:e-?[0-9]+)?"));
+        QVector<double> v;
+        for (auto it = number.globalMatch(subpaths[i]); it.hasNext();)
+            v.push_back(it.next().captured().toDouble());
+        for (qsizetype k = 0; k + 1 < v.size(); k += 2)
+            box = box.united(QRectF(v[k], v[k + 1], 1e-6, 1e-6));
+    }
+    return box;
 }
 
 } // namespace
@@ -224,6 +244,60 @@ private Q_SLOTS:
         QVERIFY2(!g.appearance.hat, qPrintable(describe(g)));
     }
 
+    // Under a cap the hair's colour is the hair's, not the cap's: a dark navy cap over grey hair,
+    // and a red one over dark brown hair, each drawn in the hair's colour (within 40 RGB levels),
+    // far from the cap's.
+    void hairColourUnderACap_data()
+    {
+        QTest::addColumn<QColor>("hat");
+        QTest::addColumn<QColor>("hair");
+        QTest::newRow("navy cap, grey hair") << QColor(22, 26, 48) << QColor(175, 172, 168);
+        QTest::newRow("red cap, brown hair") << QColor(170, 30, 40) << QColor(70, 48, 34);
+    }
+    void hairColourUnderACap()
+    {
+        QFETCH(QColor, hat);
+        QFETCH(QColor, hair);
+        DrawnFaceOptions o;
+        o.hat = true;
+        o.hatColour = hat;
+        o.hair = hair;
+        Style style;
+        AppearanceFindings f;
+        style.sampleColours(testing::drawnFace(o), testing::drawnFaceModel(), &f);
+        QVERIFY2(style.appearance.hat, qPrintable(describe(f)));
+        const QColor drawn = style.components.value(QStringLiteral("hair")).fill;
+        auto distance = [](const QColor &a, const QColor &b) {
+            return std::hypot(a.red() - b.red(), a.green() - b.green(), a.blue() - b.blue());
+        };
+        const QByteArray what = QStringLiteral("hair drawn %1, hat drawn %2")
+                                    .arg(drawn.name(), style.components.value(QStringLiteral("hat")).fill.name())
+                                    .toUtf8();
+        QVERIFY2(distance(drawn, hair) <= 40.0, what.constData());
+        QVERIFY2(distance(drawn, hat) > 80.0, what.constData());
+    }
+
+    // A dark beard under a hair colour far from it (what the hair band reads where the outline
+    // strayed into a yellow wall around a shaved head, or grey hair over a dark beard) is drawn in
+    // the beard's own colour, not a mix of the two (bald_guys #4's beard was drawn olive).
+    void beardKeepsItsColourUnderOtherHair()
+    {
+        DrawnFaceOptions o;
+        o.hair = QColor(190, 183, 156);
+        o.beardColour = QColor(55, 42, 34);
+        o.beard = o.moustache = true;
+        Style style;
+        AppearanceFindings f;
+        style.sampleColours(testing::drawnFace(o), testing::drawnFaceModel(), &f);
+        QVERIFY2(style.appearance.beard, qPrintable(describe(f)));
+        const QColor beard = style.components.value(QStringLiteral("beard")).fill;
+        const double off = std::hypot(beard.red() - o.beardColour.red(), beard.green() - o.beardColour.green(),
+            beard.blue() - o.beardColour.blue());
+        QVERIFY2(off <= 40.0,
+            qPrintable(QStringLiteral("beard drawn %1, hair %2")
+                           .arg(beard.name(), style.components.value(QStringLiteral("hair")).fill.name())));
+    }
+
     // Browline frames (dark top rims and bridge, nothing under the eyes) on grainy, wrinkled skin:
     // the rim-and-bridge edges are lost in the skin's own texture, but the dark bar joining the
     // eyes over the nose is not.
@@ -257,6 +331,62 @@ private Q_SLOTS:
             = findAppearance(grainy(testing::drawnFace(heavy)), testing::drawnFaceModel(), heavy.skin);
         QVERIFY2(g.bridgedDark < AppearanceFindings::kBridgedThreshold, qPrintable(describe(g)));
         QCOMPARE(g.appearance.glasses, GlassesShape::None);
+    }
+
+    // The lenses are measured, not assumed: small, usual and big frames (wide, tall and low on the
+    // face, as reading glasses and cat-eye frames are), round and rectangular, are each found at
+    // their own size and place (within 0.04 ES0), and the drawing's glasses are that size.
+    void glassesFittedToTheRims_data()
+    {
+        QTest::addColumn<double>("halfWidth");
+        QTest::addColumn<double>("halfHeight");
+        QTest::addColumn<double>("drop");
+        QTest::addColumn<bool>("round");
+        QTest::newRow("small rectangular") << 0.3 << 0.19 << 0.0 << false;
+        QTest::newRow("usual rectangular") << 0.36 << 0.25 << 0.03 << false;
+        QTest::newRow("big low rectangular") << 0.46 << 0.3 << 0.12 << false;
+        QTest::newRow("big round") << 0.44 << 0.34 << 0.06 << true;
+    }
+    void glassesFittedToTheRims()
+    {
+        QFETCH(double, halfWidth);
+        QFETCH(double, halfHeight);
+        QFETCH(double, drop);
+        QFETCH(bool, round);
+        DrawnFaceOptions o;
+        o.glasses = true;
+        o.roundGlasses = round;
+        o.lensHalfWidth = halfWidth;
+        o.lensHalfHeight = halfHeight;
+        o.lensDrop = drop;
+        const AppearanceFindings f = find(o);
+        const GlassesFit &lens = f.appearance.lens;
+        const QByteArray what = QStringLiteral("%1: lens %2 x %3, out %4, down %5")
+                                    .arg(describe(f))
+                                    .arg(lens.halfWidth, 0, 'f', 3)
+                                    .arg(lens.halfHeight, 0, 'f', 3)
+                                    .arg(lens.outward, 0, 'f', 3)
+                                    .arg(lens.down, 0, 'f', 3)
+                                    .toUtf8();
+        QVERIFY2(f.appearance.glasses != GlassesShape::None && lens.isSet(), what.constData());
+        constexpr double kWithin = 0.04;
+        QVERIFY2(std::abs(lens.halfWidth - halfWidth) <= kWithin, what.constData());
+        QVERIFY2(std::abs(lens.halfHeight - halfHeight) <= kWithin, what.constData());
+        QVERIFY2(std::abs(lens.outward) <= kWithin, what.constData());
+        QVERIFY2(std::abs(lens.down - drop) <= kWithin, what.constData());
+        // Drawn at that size: the glasses' layer as wide as the measured lenses (with the arms).
+        Style style;
+        style.appearance = f.appearance;
+        const FaceModel face = testing::drawnFaceModel();
+        const double es0 = face.fapu().es0;
+        QRectF drawn;
+        for (const FacePart &part : SvgFace(face, style).parts()) {
+            if (part.id == QLatin1String("glasses"))
+                drawn = lensBounds(part.geometry.value(QStringLiteral("d")));
+        }
+        QVERIFY2(!drawn.isEmpty(), what.constData());
+        QVERIFY2(std::abs(drawn.height() - 2 * lens.halfHeight * es0) <= 0.08 * es0,
+            qPrintable(QStringLiteral("%1; drawn %2 high").arg(QString::fromUtf8(what)).arg(drawn.height() / es0)));
     }
 
     // Brows are drawn as thick as they are: a heavy brow heavier than a fine one.

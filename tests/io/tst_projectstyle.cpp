@@ -47,7 +47,16 @@ private Q_SLOTS:
         QFETCH(bool, flags);
         Style style = Style::preset(QStringLiteral("bold"));
         style.caricature = caricature;
-        style.appearance = {GlassesShape(glasses), flags, flags, flags, flags};
+        style.appearance = {GlassesShape(glasses), flags, flags, flags, flags, {}};
+        if (flags)
+            style.appearance.lens = {0.46, 0.31, 0.04, 0.12};
+        // A layer that follows the head (or not) keeps doing so.
+        StyleLayer layer;
+        layer.name = QStringLiteral("hat.svg");
+        layer.svg
+            = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 10 10\"><rect width=\"10\" height=\"4\"/></svg>";
+        layer.followsHead = flags;
+        style.layers = {layer};
         style.components[QStringLiteral("glasses")].stroke = QColor(0x80, 0x20, 0x20);
         style.components[QStringLiteral("hat")].visible = false;
         QTemporaryDir tmp;
@@ -89,6 +98,16 @@ private Q_SLOTS:
         QTest::newRow("beard number") << QStringLiteral(
             "appearance") << QByteArray(R"({"glasses":"none","moustache":false,"beard":1,"hat":false,"bald":false})")
                                       << QStringLiteral("style.appearance.beard: expected true or false");
+        QTest::newRow("lens too big")
+            << QStringLiteral("appearance")
+            << QByteArray(R"({"glasses":"round","moustache":false,"beard":false,"hat":false,"bald":false,)"
+                          R"("lens":{"halfWidth":9,"halfHeight":0.3,"outward":0,"down":0}})")
+            << QStringLiteral("style.appearance.lens: expected lens half sizes above 0 and at most 2");
+        QTest::newRow("lens without its height")
+            << QStringLiteral("appearance")
+            << QByteArray(R"({"glasses":"round","moustache":false,"beard":false,"hat":false,"bald":false,)"
+                          R"("lens":{"halfWidth":0.4,"outward":0,"down":0}})")
+            << QStringLiteral("style.appearance.lens.halfHeight: ");
         QTest::newRow("appearance array") << QStringLiteral("appearance") << QByteArray("[]")
                                           << QStringLiteral("style.appearance: expected an object");
     }

@@ -18,6 +18,7 @@
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTransform>
 
 #include <cmath>
 
@@ -117,6 +118,51 @@ private Q_SLOTS:
         style.layers = {square(QPointF(0.3, -0.6), true)};
         style.layers[0].visible = false;
         QVERIFY(!SvgFace(face, style).svg().contains("style-layer-1"));
+    }
+
+    // A layer that follows the head is drawn in the head's group: it moves with the head's
+    // translation and turn, in the preview's drawing and the SMIL export (whose head animation is
+    // on that group); one that does not stays where it was.
+    void followsTheHead()
+    {
+        const FaceModel face = testFace();
+        const double es0 = face.fapu().es0;
+        Style style = Style::preset(QStringLiteral("normal"));
+        style.layers = {square(QPointF(0.3, -0.6), true), square(QPointF(-1.4, 1.6), true)};
+        style.layers[0].followsHead = true;
+        const Node root = parsed(SvgFace(face, style).svg());
+        const Node *head = findId(root, QStringLiteral("head"));
+        QVERIFY(head);
+        QVERIFY(findId(*head, QStringLiteral("style-layer-1")));
+        QVERIFY(!findId(*head, QStringLiteral("style-layer-2")));
+        QVERIFY(indexOfId(root, QStringLiteral("style-layer-2")) > indexOfId(root, QStringLiteral("head")));
+        // In front of the face's parts: the last of the head's group.
+        QCOMPARE(head->children.last().attribute(QStringLiteral("id")), QStringLiteral("style-layer-1"));
+
+        // The head moved 0.8 ES0 right and turned: the first square moved with it, the second did not.
+        Pose pose;
+        pose.head.translation = QPointF(0.8 * es0, 0);
+        pose.head.rotationDeg = 10;
+        const QImage moved = rasterizeSvg(SvgFace(face, style).svg(pose), face.imageSize());
+        const QPointF c = faceCentre(face);
+        const QPointF was = c + QPointF(0.3, -0.6) * es0;
+        QVERIFY(!green(moved.pixelColor((was - QPointF(0.4, 0) * es0).toPoint())));
+        // Where the head's transform takes the square's centre.
+        QTransform t;
+        t.translate(c.x() + 0.8 * es0, c.y());
+        t.rotate(10);
+        t.translate(-c.x(), -c.y());
+        QVERIFY(green(moved.pixelColor(t.map(was).toPoint())));
+        QVERIFY(green(moved.pixelColor((c + QPointF(-1.4, 1.6) * es0).toPoint())));
+
+        // The SMIL export animates the head's group: the layer is in it.
+        QString error;
+        AnimationExportOptions options;
+        Timeline timeline;
+        const QByteArray smil = exportSmilSvg(face, style, timeline, MouthShapeSet(), options, &error);
+        const Node exported = parsed(smil);
+        const Node *exportedHead = findId(exported, QStringLiteral("head"));
+        QVERIFY2(exportedHead && findId(*exportedHead, QStringLiteral("style-layer-1-sq")), qPrintable(error));
     }
 
     // Anything that could run or fetch is left out; references inside the layer keep working.

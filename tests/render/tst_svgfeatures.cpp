@@ -109,7 +109,7 @@ private Q_SLOTS:
     {
         const FaceModel face = testFace();
         Style style = Style::preset(QStringLiteral("normal"));
-        style.appearance = {GlassesShape::Rectangular, true, true, true, false};
+        style.appearance = {GlassesShape::Rectangular, true, true, true, false, {}};
         const SvgFace svg(face, style);
         const QVector<FacePart> still = svg.parts();
         const Pose open = mouthPose(face, MouthShapeSet(), MouthShape::A);
@@ -164,6 +164,48 @@ private Q_SLOTS:
         const double crown = face.point("h.10").y();
         QVERIFY(top(geometryOf(bald, "face")) < crown + 2);
         QVERIFY(top(geometryOf(haired, "face")) > crown + 10);
+    }
+
+    // A bald head under a hair outline that strayed into the room (tall and boxy, as the outline
+    // search may leave over a shaved head): the skull drawn stays a skull's height over the eyes
+    // and round at its shoulders, where it followed the stray outline before.
+    void skullIgnoresAStrayOutline()
+    {
+        const FaceModel face = testFace();
+        const double es0 = face.fapu().es0;
+        const double eyeY = (face.point("5.2").y() + face.point("5.1").y()) / 2.0;
+        FaceModel stray = face;
+        for (int k = 0; k < 19; ++k) {
+            const QPointF h = face.point(pt::idx("h.1") + k);
+            if (h.y() < eyeY) // up to a box 2.6 ES0 over the eyes, its sides straight up
+                stray.setPoint(pt::idx("h.1") + k,
+                    QPointF(k < 9   ? face.point("h.1").x()
+                            : k > 9 ? face.point("h.19").x()
+                                    : h.x(),
+                        eyeY - 2.6 * es0));
+        }
+        Style style = Style::preset(QStringLiteral("normal"));
+        style.caricature = 0;
+        style.appearance.bald = true;
+        static const QRegularExpression number(QStringLiteral("-?\\d+(\\.\\d+)?"));
+        auto box = [&](const QString &d) {
+            QVector<double> v;
+            for (auto it = number.globalMatch(d); it.hasNext();)
+                v.push_back(it.next().captured().toDouble());
+            QRectF r;
+            for (qsizetype k = 0; k + 1 < v.size(); k += 2)
+                r = r.united(QRectF(v[k], v[k + 1], 1e-6, 1e-6));
+            return r;
+        };
+        const QRectF normal = box(geometryOf(SvgFace(face, style).parts(), "face"));
+        const QRectF skull = box(geometryOf(SvgFace(stray, style).parts(), "face"));
+        const QByteArray what = QStringLiteral("skull top %1 ES0 over the eyes, %2 for the face's own outline")
+                                    .arg((eyeY - skull.top()) / es0)
+                                    .arg((eyeY - normal.top()) / es0)
+                                    .toUtf8();
+        QVERIFY2(eyeY - skull.top() <= 1.95 * es0, what.constData());
+        QVERIFY2(std::abs(skull.top() - normal.top()) <= 0.5 * es0, what.constData());
+        QVERIFY2(std::abs(skull.width() - normal.width()) <= 0.2 * es0, what.constData());
     }
 
     // Caricature: nothing at 0 (and nothing for the average face itself); a face's differences

@@ -88,11 +88,16 @@ private Q_SLOTS:
         list->item(0)->setCheckState(Qt::Unchecked);
         QCOMPARE(undo->count(), 7);
         QVERIFY(!doc.style().layers[0].visible);
+        // Made to move with the head: one step.
+        QVERIFY(!doc.style().layers[0].followsHead);
+        panel.findChild<QCheckBox *>(QStringLiteral("layerFollowsHead"))->click();
+        QCOMPARE(undo->count(), 8);
+        QVERIFY(doc.style().layers[0].followsHead);
 
         // Remove the shirt.
         editor->setCurrentLayer(1);
         panel.findChild<QPushButton *>(QStringLiteral("removeLayer"))->click();
-        QCOMPARE(undo->count(), 8);
+        QCOMPARE(undo->count(), 9);
         QCOMPARE(doc.style().layers.size(), 1);
 
         // Undo walks back through every step to no layers.

@@ -58,12 +58,17 @@ LayersEditor::LayersEditor(Document *document, QWidget *parent)
     m_front = new QCheckBox(tr("In front of the face"));
     m_front->setObjectName(QStringLiteral("layerFront"));
     m_front->setToolTip(tr("Unticked, the drawing lies behind the head, over the neck and shoulders"));
+    m_follows = new QCheckBox(tr("Moves with the head"));
+    m_follows->setObjectName(QStringLiteral("layerFollowsHead"));
+    m_follows->setToolTip(tr("Ticked, the drawing moves, turns and nods with the head (a hat, glasses, earrings); "
+                             "unticked, it stays still as the head moves (clothes)"));
     auto *position = new QHBoxLayout;
     position->addWidget(m_x);
     position->addWidget(m_y);
     form->addRow(tr("Position:"), position);
     form->addRow(tr("Width:"), m_width);
     form->addRow(QString(), m_front);
+    form->addRow(QString(), m_follows);
     layout->addLayout(form);
 
     connect(m_add, &QPushButton::clicked, this, &LayersEditor::chooseFiles);
@@ -103,6 +108,13 @@ LayersEditor::LayersEditor(Document *document, QWidget *parent)
         if (i >= 0)
             change(
                 on ? tr("Layer in front") : tr("Layer behind"), [&](QVector<StyleLayer> &l) { l[i].front = on; }, i);
+    });
+    connect(m_follows, &QCheckBox::clicked, this, [this](bool on) {
+        const int i = currentLayer();
+        if (i >= 0)
+            change(
+                on ? tr("Layer follows the head") : tr("Layer stays still"),
+                [&](QVector<StyleLayer> &l) { l[i].followsHead = on; }, i);
     });
     connect(m_document, &Document::changed, this, &LayersEditor::onDocumentChanged);
     sync();
@@ -197,7 +209,7 @@ void LayersEditor::sync()
     m_list->setCurrentRow(row);
     const bool has = row >= 0;
     setEnabled(m_document->hasFace());
-    for (QWidget *w : std::initializer_list<QWidget *> {m_remove, m_x, m_y, m_width, m_front})
+    for (QWidget *w : std::initializer_list<QWidget *> {m_remove, m_x, m_y, m_width, m_front, m_follows})
         w->setEnabled(has);
     m_up->setEnabled(has && row > 0);
     m_down->setEnabled(has && row + 1 < layers.size());
@@ -207,6 +219,7 @@ void LayersEditor::sync()
         m_y->setValue(l.offset.y());
         m_width->setValue(l.width);
         m_front->setChecked(l.front);
+        m_follows->setChecked(l.followsHead);
     }
     m_syncing = false;
 }

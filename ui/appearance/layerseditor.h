@@ -48,6 +48,7 @@ private:
     QDoubleSpinBox *m_y;
     QDoubleSpinBox *m_width;
     QCheckBox *m_front;
+    QCheckBox *m_follows;
     bool m_syncing = false;
 };
 
