@@ -1,5 +1,7 @@
 #include "detect/detector.h"
 
+#include "i18n/coretext.h"
+
 #include "detect/classic.h"
 #include "detect/detectionruntime.h"
 #include "detect/facescan.h"
@@ -433,7 +435,7 @@ DetectionResult detectWithClassic(
     result.debugImages = c.debugImages;
     if (!c.ok || !c.eyePairInFace) {
         result.status = DetectStatus::NoFace;
-        result.error = c.ok ? QStringLiteral("The classic method found no face: %1.").arg(c.faceCheck) : c.error;
+        result.error = c.ok ? DetectText::tr("The classic method found no face: %1.").arg(c.faceCheck) : c.error;
         return result;
     }
     result.status = DetectStatus::Ok;
@@ -520,7 +522,7 @@ DetectionResult runDetection(
     auto cancelled = [&] {
         if (cancel && cancel->load()) {
             result.status = DetectStatus::Cancelled;
-            result.error = QStringLiteral("Face detection was cancelled.");
+            result.error = DetectText::tr("Face detection was cancelled.");
             return true;
         }
         return false;
@@ -528,7 +530,7 @@ DetectionResult runDetection(
 
     if (image.isNull()) {
         result.status = DetectStatus::BadImage;
-        result.error = QStringLiteral("The image is empty.");
+        result.error = DetectText::tr("The image is empty.");
         return result;
     }
     if (options.method == DetectionMethod::Classic)

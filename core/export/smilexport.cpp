@@ -1,5 +1,7 @@
 #include "export/smilexport.h"
 
+#include "i18n/coretext.h"
+
 #include "anim/timeline.h"
 #include "anim/timelineevaluator.h"
 #include "export/smilaudio.h"
@@ -110,7 +112,7 @@ bool prepareDrawing(const Timeline &timeline, const MouthShapeSet &shapes, const
     d->parts = d->svg.parts(start);
     QVector<double> neutralHead;
     if (!headNumbers(d->svg, HeadPose {}, &neutralHead)) {
-        *error = QStringLiteral("unexpected head transform '%1'").arg(d->svg.headTransform(HeadPose {}));
+        *error = ExportText::tr("unexpected head transform '%1'").arg(d->svg.headTransform(HeadPose {}));
         return false;
     }
     d->channels = makeChannels(d->parts, neutralHead, viewBoxOf(d->document));
@@ -214,7 +216,7 @@ bool framesDocument(const Drawing &d, const TimelineEvaluator &evaluator, const 
     const int frames = std::max(1, timeline.frameCount());
     const XmlNode *head = findById(d.document, "head");
     if (!head) {
-        *error = QStringLiteral("the drawing has no head group");
+        *error = ExportText::tr("the drawing has no head group");
         return false;
     }
     QHash<QByteArray, int> partOf;

@@ -1,5 +1,7 @@
 #include "export/smilkeys.h"
 
+#include "i18n/coretext.h"
+
 #include "export/smilutil.h"
 
 #include <QHash>
@@ -215,7 +217,7 @@ bool buildGroup(const QVector<int> &which, const QVector<Channel> &channels, con
         keyTimes.append(grid.duration);
         segments.append(TimelineEvaluator::Segment::Mixed);
     }
-    const QString structureError = QStringLiteral("the drawing changes its structure with the pose");
+    const QString structureError = ExportText::tr("the drawing changes its structure with the pose");
     if (!table.add(nodes, sampler, which, grid)) {
         *error = structureError;
         return false;

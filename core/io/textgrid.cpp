@@ -1,5 +1,7 @@
 #include "io/textgrid.h"
 
+#include "i18n/coretext.h"
+
 #include <QFile>
 #include <QRegularExpression>
 #include <QStringList>
@@ -40,7 +42,7 @@ QVector<TextGridInterval> readTextGridTier(const QString &path, const QString &t
         }
         return out;
     }
-    return fail(QStringLiteral("no interval tier named '%1'").arg(tier));
+    return fail(LipSyncText::tr("no interval tier named '%1'").arg(tier));
 }
 
 } // namespace toonface

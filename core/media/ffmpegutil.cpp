@@ -1,5 +1,7 @@
 #include "media/ffmpegutil.h"
 
+#include "i18n/coretext.h"
+
 #include <QDir>
 #include <QFile>
 
@@ -43,7 +45,7 @@ CodecPtr openDecoder(AVFormatContext *input, AVMediaType type, int *streamIndex,
     const AVStream *stream = input->streams[index];
     const AVCodec *codec = avcodec_find_decoder(stream->codecpar->codec_id);
     if (!codec) {
-        *problem = QStringLiteral("no decoder for its %1 codec '%2'")
+        *problem = VideoText::tr("no decoder for its %1 codec '%2'")
                        .arg(QString::fromLatin1(av_get_media_type_string(type)),
                            QString::fromLatin1(avcodec_get_name(stream->codecpar->codec_id)));
         return {};
@@ -55,7 +57,7 @@ CodecPtr openDecoder(AVFormatContext *input, AVMediaType type, int *streamIndex,
         r = avcodec_open2(ctx.get(), codec, nullptr);
     }
     if (r < 0) {
-        *problem = QStringLiteral("cannot open its %1 decoder: %2").arg(QString::fromLatin1(codec->name), avError(r));
+        *problem = VideoText::tr("cannot open its %1 decoder: %2").arg(QString::fromLatin1(codec->name), avError(r));
         return {};
     }
     *streamIndex = index;

@@ -1,5 +1,7 @@
 #include "speech/lipsync.h"
 
+#include "i18n/coretext.h"
+
 #include "speech/englishshapes.h"
 
 #include <QJsonArray>
@@ -137,7 +139,7 @@ LipsyncOutcome lipsyncRecording(const QString &audioPath, const Script &script, 
         return out;
     case AlignStatus::CannotAlign:
         out.status = LipsyncStatus::CannotAlign;
-        out.error = QStringLiteral("%1 and %2 could not be aligned: %3").arg(audioPath, scriptName, aligned.error);
+        out.error = ScriptText::tr("%1 and %2 could not be aligned: %3").arg(audioPath, scriptName, aligned.error);
         return out;
     case AlignStatus::BadInput: out.error = QStringLiteral("%1: %2").arg(audioPath, aligned.error); return out;
     }

@@ -1,4 +1,6 @@
 #include "detect/classic.h"
+
+#include "i18n/coretext.h"
 #include "detect/regions.h"
 #include "track/trackingmethod.h"
 
@@ -226,7 +228,7 @@ std::unique_ptr<TrackingMethod> makeClassicMethod(const DetectionResult &neutral
     if (!neutral.tracking.valid || neutral.tracking.mouth.isEmpty()
         || QLineF(neutral.tracking.eyeballs[0], neutral.tracking.eyeballs[1]).length() < 4) {
         if (error)
-            *error = QStringLiteral("the neutral face's detection kept no tracking seed (thresholds, eyeballs, "
+            *error = VideoText::tr("the neutral face's detection kept no tracking seed (thresholds, eyeballs, "
                                     "mouth region) for the classic method");
         return nullptr;
     }

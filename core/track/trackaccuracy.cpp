@@ -1,5 +1,7 @@
 #include "track/trackaccuracy.h"
 
+#include "i18n/coretext.h"
+
 #include "detect/landmarkfit.h"
 #include "detect/landmarkmap.h"
 #include "track/retarget.h"
@@ -57,7 +59,7 @@ std::optional<ClipSignals> referenceSignals(const QString &path, QString *error)
     }
     if (!anyFace) {
         if (error)
-            *error = source.error().isEmpty() ? path + QStringLiteral(": no face in any frame") : source.error();
+            *error = source.error().isEmpty() ? VideoText::tr("%1: no face in any frame").arg(path) : source.error();
         return std::nullopt;
     }
     return s;

@@ -1,0 +1,43 @@
+#pragma once
+
+#include <QCoreApplication>
+
+namespace toonface {
+
+// The contexts of core's user-visible messages (errors of the files it reads and writes,
+// detection and export problems) in the translations (resources/translations), one per area:
+// `ProjectText::tr("...")`. Developer logs, file contents and JSON keys stay untranslated.
+struct ProjectText // projects and the JSON files inside them (face, timeline, layers, syllables)
+{
+    Q_DECLARE_TR_FUNCTIONS(toonface::ProjectFile)
+};
+struct ImageText // photos and SVG layers
+{
+    Q_DECLARE_TR_FUNCTIONS(toonface::ImageFile)
+};
+struct SoundText // sound files read and written
+{
+    Q_DECLARE_TR_FUNCTIONS(toonface::SoundFile)
+};
+struct VideoText // video files read, and face tracking through them
+{
+    Q_DECLARE_TR_FUNCTIONS(toonface::VideoFile)
+};
+struct ScriptText // scripts, speech synthesis, alignment, the pinyin dictionaries
+{
+    Q_DECLARE_TR_FUNCTIONS(toonface::Script)
+};
+struct LipSyncText // lip-sync files of other programs (Rhubarb, Papagayo, Moho, TextGrid)
+{
+    Q_DECLARE_TR_FUNCTIONS(toonface::LipSyncFile)
+};
+struct ExportText // animation export: SVG, HTML, MP4, GIF, PNG frames
+{
+    Q_DECLARE_TR_FUNCTIONS(toonface::Export)
+};
+struct DetectText // face detection, its models and caches
+{
+    Q_DECLARE_TR_FUNCTIONS(toonface::Detector)
+};
+
+} // namespace toonface
