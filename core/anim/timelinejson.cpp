@@ -35,7 +35,7 @@ public:
     bool fail(const char *field, const QString &problem)
     {
         if (m_ok && m_error)
-            *m_error = pathOf(field) + QStringLiteral(": ") + problem;
+            *m_error = withProblem(pathOf(field), problem);
         m_ok = false;
         return false;
     }
@@ -335,10 +335,10 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
             return r.fail("offsets", ProjectText::tr("expected an object"));
         const QJsonObject map = offsets.toObject();
         for (auto it = map.constBegin(); it != map.constEnd(); ++it) {
-            const QString where = r.pathOf("offsets") + u'.' + it.key() + QStringLiteral(": ");
+            const QString where = r.pathOf("offsets") + u'.' + it.key();
             auto failWith = [&](const QString &problem) {
                 if (error)
-                    *error = where + problem;
+                    *error = withProblem(where, problem);
                 return false;
             };
             if (pointIndex(it.key()) < 0)

@@ -389,7 +389,7 @@ bool readIbugPts(const QString &path, std::array<QPointF, kIbugPointCount> *pts,
 {
     auto fail = [&](const QString &why) {
         if (error)
-            *error = QStringLiteral("%1: %2").arg(path, why);
+            *error = withProblem(path, why);
         return false;
     };
     QFile file(path);

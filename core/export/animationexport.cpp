@@ -31,7 +31,7 @@ constexpr double kMaxFps = 120;
 
 ExportResult result(ExportStatus status, const QString &file, const QString &problem)
 {
-    return {status, QDir::toNativeSeparators(file) + QStringLiteral(": ") + problem};
+    return {status, withProblem(QDir::toNativeSeparators(file), problem)};
 }
 
 // Reports rising fractions of the whole export: [from, to] of it for one stage.

@@ -23,6 +23,10 @@ struct VideoText // video files read, and face tracking through them
 {
     Q_DECLARE_TR_FUNCTIONS(toonface::VideoFile)
 };
+struct MediaText // FFmpeg's most common errors, in audio and video files alike
+{
+    Q_DECLARE_TR_FUNCTIONS(toonface::Media)
+};
 struct ScriptText // scripts, speech synthesis, alignment, the pinyin dictionaries
 {
     Q_DECLARE_TR_FUNCTIONS(toonface::Script)
@@ -39,5 +43,12 @@ struct DetectText // face detection, its models and caches
 {
     Q_DECLARE_TR_FUNCTIONS(toonface::Detector)
 };
+
+// "WHERE: problem", a file's or a field's name and what is wrong with it, joined as the language
+// writes it (a full-width colon in Chinese).
+inline QString withProblem(const QString &where, const QString &problem)
+{
+    return QCoreApplication::translate("toonface::Problem", "%1: %2").arg(where, problem);
+}
 
 } // namespace toonface

@@ -20,7 +20,7 @@ constexpr qint64 kMaxPhotoFileBytes = 1024ll * 1024 * 1024;
 
 QString withFile(const QString &path, const QString &message)
 {
-    return QDir::toNativeSeparators(path) + QStringLiteral(": ") + message;
+    return withProblem(QDir::toNativeSeparators(path), message);
 }
 
 bool startsWith(const QByteArray &data, qsizetype at, const char *magic)

@@ -109,7 +109,7 @@ bool JsonField::toArray(QJsonArray *out, QString *error) const
 bool JsonField::fail(const QString &problem, QString *error) const
 {
     if (error)
-        *error = m_path.isEmpty() ? problem : m_path + QStringLiteral(": ") + problem;
+        *error = m_path.isEmpty() ? problem : withProblem(m_path, problem);
     return false;
 }
 

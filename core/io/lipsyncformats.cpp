@@ -363,7 +363,7 @@ std::optional<LipSyncTrack> parseJson(
     }
     auto failField = [&](const QString &problem) {
         if (error)
-            *error = fileName + QStringLiteral(": ") + problem;
+            *error = withProblem(fileName, problem);
         return std::nullopt;
     };
     if (!doc.isObject())

@@ -266,7 +266,7 @@ bool mouthShapesFromJson(const JsonField &field, MouthShapeSet *shapes, QString 
 
 QString withFile(const QString &path, const QString &message)
 {
-    return QDir::toNativeSeparators(path) + QStringLiteral(": ") + message;
+    return withProblem(QDir::toNativeSeparators(path), message);
 }
 
 } // namespace

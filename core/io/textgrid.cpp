@@ -12,7 +12,7 @@ QVector<TextGridInterval> readTextGridTier(const QString &path, const QString &t
 {
     auto fail = [&](const QString &why) {
         if (error)
-            *error = QStringLiteral("%1: %2").arg(path, why);
+            *error = withProblem(path, why);
         return QVector<TextGridInterval> {};
     };
     QFile f(path);

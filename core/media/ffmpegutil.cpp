@@ -5,12 +5,29 @@
 #include <QDir>
 #include <QFile>
 
+#include <cerrno>
 #include <mutex>
 
 namespace toonface::av {
 
 QString avError(int code)
 {
+    // The errors a user meets most, in the interface's language; FFmpeg's own words for the rest.
+    switch (code) {
+    case AVERROR_INVALIDDATA: return MediaText::tr("the data is invalid or damaged");
+    case AVERROR_EOF: return MediaText::tr("the file ends early");
+    case AVERROR_DECODER_NOT_FOUND: return MediaText::tr("no decoder for it");
+    case AVERROR_ENCODER_NOT_FOUND: return MediaText::tr("no encoder for it");
+    case AVERROR_DEMUXER_NOT_FOUND: return MediaText::tr("its format is not recognised");
+    case AVERROR_MUXER_NOT_FOUND: return MediaText::tr("the format cannot be written");
+    case AVERROR(ENOENT): return MediaText::tr("no such file or folder");
+    case AVERROR(EACCES): return MediaText::tr("permission denied");
+    case AVERROR(EISDIR): return MediaText::tr("it is a folder");
+    case AVERROR(ENOSPC): return MediaText::tr("the disk is full");
+    case AVERROR(EROFS): return MediaText::tr("the disk is read-only");
+    case AVERROR(ENOMEM): return MediaText::tr("out of memory");
+    default: break;
+    }
     char buf[AV_ERROR_MAX_STRING_SIZE] = {};
     av_strerror(code, buf, sizeof buf);
     return QString::fromUtf8(buf);
@@ -19,7 +36,7 @@ QString avError(int code)
 bool fail(QString *error, const QString &path, const QString &problem)
 {
     if (error)
-        *error = QDir::toNativeSeparators(path) + QStringLiteral(": ") + problem;
+        *error = withProblem(QDir::toNativeSeparators(path), problem);
     return false;
 }
 

@@ -1,6 +1,7 @@
 #include "speech/audio.h"
 
 #include "i18n/coretext.h"
+#include "media/ffmpegutil.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -23,6 +24,8 @@ namespace toonface {
 
 namespace {
 
+using av::avError;
+
 // FFmpeg's own log would repeat each problem of a corrupt file on stderr; the errors this
 // file returns say it once. TOONFACE_FFMPEG_LOG=1 keeps FFmpeg's log for debugging.
 void quietFfmpegLog()
@@ -32,13 +35,6 @@ void quietFfmpegLog()
         if (qEnvironmentVariableIsEmpty("TOONFACE_FFMPEG_LOG"))
             av_log_set_level(AV_LOG_FATAL);
     });
-}
-
-QString avError(int code)
-{
-    char buf[AV_ERROR_MAX_STRING_SIZE] = {};
-    av_strerror(code, buf, sizeof buf);
-    return QString::fromUtf8(buf);
 }
 
 struct FormatInputDeleter
@@ -112,7 +108,7 @@ AudioResult streamAudio(
     AudioResult r;
     auto fail = [&](AudioStatus status, const QString &what) {
         r.status = status;
-        r.error = QStringLiteral("%1: %2").arg(path, what);
+        r.error = withProblem(path, what);
         r.audio = {};
         return r;
     };

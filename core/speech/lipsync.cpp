@@ -141,7 +141,7 @@ LipsyncOutcome lipsyncRecording(const QString &audioPath, const Script &script, 
         out.status = LipsyncStatus::CannotAlign;
         out.error = ScriptText::tr("%1 and %2 could not be aligned: %3").arg(audioPath, scriptName, aligned.error);
         return out;
-    case AlignStatus::BadInput: out.error = QStringLiteral("%1: %2").arg(audioPath, aligned.error); return out;
+    case AlignStatus::BadInput: out.error = withProblem(audioPath, aligned.error); return out;
     }
     out.status = LipsyncStatus::Ok;
     out.result = lipsyncResult(script, aligned, double(audio.sampleCount) / kSpeechSampleRate);

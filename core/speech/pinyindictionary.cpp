@@ -458,7 +458,7 @@ std::shared_ptr<const PinyinDictionary> PinyinDictionary::loadCached(
         }
         how = index ? CacheUse::RebuiltStale : CacheUse::RebuiltDamaged;
         note = index ? ScriptText::tr("%1: built from other sources").arg(cachePath)
-                     : QStringLiteral("%1: %2").arg(cachePath, why);
+                     : withProblem(cachePath, why);
     }
     QByteArray block = buildBlock(root, error);
     if (block.isEmpty())

@@ -286,7 +286,7 @@ ScriptParse readScriptFile(const QString &path, Language language, QString *text
         *textRead = text.trimmed();
     ScriptParse r = parseScript(text, language);
     if (!r.ok())
-        r.error = path + QStringLiteral(": ") + r.error;
+        r.error = withProblem(path, r.error);
     return r;
 }
 

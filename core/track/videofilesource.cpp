@@ -70,7 +70,7 @@ struct VideoFileSource::Private
 
     bool fail(QString *out, const QString &problem)
     {
-        error = path + QStringLiteral(": ") + problem;
+        error = withProblem(path, problem);
         if (out)
             *out = error;
         return false;

@@ -2459,6 +2459,57 @@ The points are unchanged.</source>
     </message>
 </context>
 <context>
+    <name>toonface::Media</name>
+    <message>
+        <source>the data is invalid or damaged</source>
+        <translation>数据无效或已损坏</translation>
+    </message>
+    <message>
+        <source>the file ends early</source>
+        <translation>文件提前结束</translation>
+    </message>
+    <message>
+        <source>no decoder for it</source>
+        <translation>没有对应的解码器</translation>
+    </message>
+    <message>
+        <source>no encoder for it</source>
+        <translation>没有对应的编码器</translation>
+    </message>
+    <message>
+        <source>its format is not recognised</source>
+        <translation>无法识别其格式</translation>
+    </message>
+    <message>
+        <source>the format cannot be written</source>
+        <translation>无法写入此格式</translation>
+    </message>
+    <message>
+        <source>no such file or folder</source>
+        <translation>文件或文件夹不存在</translation>
+    </message>
+    <message>
+        <source>permission denied</source>
+        <translation>权限不足</translation>
+    </message>
+    <message>
+        <source>it is a folder</source>
+        <translation>这是文件夹</translation>
+    </message>
+    <message>
+        <source>the disk is full</source>
+        <translation>磁盘已满</translation>
+    </message>
+    <message>
+        <source>the disk is read-only</source>
+        <translation>磁盘为只读</translation>
+    </message>
+    <message>
+        <source>out of memory</source>
+        <translation>内存不足</translation>
+    </message>
+</context>
+<context>
     <name>toonface::MediaAudioTrack</name>
     <message>
         <source>Cannot play the audio file %1: %2</source>
@@ -2836,6 +2887,13 @@ The points are unchanged.</source>
     <message>
         <source>Drawing the cartoon…</source>
         <translation>正在绘制卡通…</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::Problem</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
     </message>
 </context>
 <context>

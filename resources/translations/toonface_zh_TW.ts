@@ -2459,6 +2459,57 @@ The points are unchanged.</source>
     </message>
 </context>
 <context>
+    <name>toonface::Media</name>
+    <message>
+        <source>the data is invalid or damaged</source>
+        <translation>資料無效或已損壞</translation>
+    </message>
+    <message>
+        <source>the file ends early</source>
+        <translation>檔案提前結束</translation>
+    </message>
+    <message>
+        <source>no decoder for it</source>
+        <translation>沒有對應的解碼器</translation>
+    </message>
+    <message>
+        <source>no encoder for it</source>
+        <translation>沒有對應的編碼器</translation>
+    </message>
+    <message>
+        <source>its format is not recognised</source>
+        <translation>無法辨識其格式</translation>
+    </message>
+    <message>
+        <source>the format cannot be written</source>
+        <translation>無法寫入此格式</translation>
+    </message>
+    <message>
+        <source>no such file or folder</source>
+        <translation>檔案或資料夾不存在</translation>
+    </message>
+    <message>
+        <source>permission denied</source>
+        <translation>權限不足</translation>
+    </message>
+    <message>
+        <source>it is a folder</source>
+        <translation>這是資料夾</translation>
+    </message>
+    <message>
+        <source>the disk is full</source>
+        <translation>磁碟已滿</translation>
+    </message>
+    <message>
+        <source>the disk is read-only</source>
+        <translation>磁碟為唯讀</translation>
+    </message>
+    <message>
+        <source>out of memory</source>
+        <translation>記憶體不足</translation>
+    </message>
+</context>
+<context>
     <name>toonface::MediaAudioTrack</name>
     <message>
         <source>Cannot play the audio file %1: %2</source>
@@ -2836,6 +2887,13 @@ The points are unchanged.</source>
     <message>
         <source>Drawing the cartoon…</source>
         <translation>正在繪製卡通…</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::Problem</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
     </message>
 </context>
 <context>
