@@ -1,8 +1,7 @@
 #include "anim/timeline.h"
 
-#include "i18n/coretext.h"
-
 #include "face/pointtable.h"
+#include "i18n/coretext.h"
 
 #include <QJsonArray>
 #include <QJsonValue>
@@ -236,7 +235,8 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
         return std::nullopt;
     }
     if (version > kJsonVersion) {
-        top.fail("version", ProjectText::tr("%1 is newer than this Toonface reads (%2)").arg(version).arg(kJsonVersion));
+        top.fail(
+            "version", ProjectText::tr("%1 is newer than this Toonface reads (%2)").arg(version).arg(kJsonVersion));
         return std::nullopt;
     }
     if (!top.number("fps", &timeline.m_frameRate, false, positive))

@@ -1,8 +1,7 @@
 #include "detect/classic.h"
 
-#include "i18n/coretext.h"
-
 #include "detect/tsai.h"
+#include "i18n/coretext.h"
 
 #include <QElapsedTimer>
 #include <QLineF>
@@ -764,7 +763,7 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
                   .arg(std::lround(l.y() / scale))
                   .arg(std::lround(r.x() / scale))
                   .arg(std::lround(r.y() / scale))
-                  .arg(failed.join(QStringLiteral("; ")));
+                  .arg(joinReasons(failed));
     }
     for (int k = 0; k < 2; ++k) {
         const Region &r = *eyeRegion[k];

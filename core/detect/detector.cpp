@@ -1,7 +1,5 @@
 #include "detect/detector.h"
 
-#include "i18n/coretext.h"
-
 #include "detect/classic.h"
 #include "detect/detectionruntime.h"
 #include "detect/facescan.h"
@@ -12,6 +10,7 @@
 #include "detect/landmarkmap.h"
 #include "detect/landmarkpredictor.h"
 #include "face/averageface.h"
+#include "i18n/coretext.h"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -1,8 +1,7 @@
 #include "detect/facescan.h"
 
-#include "i18n/coretext.h"
-
 #include "detect/grayview.h"
+#include "i18n/coretext.h"
 
 #include <QDir>
 #include <QElapsedTimer>

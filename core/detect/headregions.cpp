@@ -1,9 +1,8 @@
 #include "detect/headregions.h"
 
-#include "i18n/coretext.h"
-
 #include "detect/landmarkmap.h"
 #include "detect/regions.h"
+#include "i18n/coretext.h"
 
 #include <QPainter>
 #include <QPolygonF>

@@ -1,10 +1,9 @@
 #include "detect/landmarkpredictor.h"
 
-#include "i18n/coretext.h"
-
 #include "detect/grayview.h"
 #include "detect/landmarkflat.h"
 #include "detect/shapemodelfile.h"
+#include "i18n/coretext.h"
 
 #include <QDir>
 #include <QFile>

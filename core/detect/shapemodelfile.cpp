@@ -1,8 +1,7 @@
 #include "detect/shapemodelfile.h"
 
-#include "i18n/coretext.h"
-
 #include "detect/landmarkflat.h"
+#include "i18n/coretext.h"
 
 #include <QFile>
 

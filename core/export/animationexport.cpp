@@ -1,12 +1,11 @@
 #include "export/animationexport.h"
 
-#include "i18n/coretext.h"
-
 #include "export/framerenderer.h"
 #include "export/htmlplayer.h"
 #include "export/smilexport.h"
 #include "export/videoencoder.h"
 #include "face/pose.h"
+#include "i18n/coretext.h"
 #include "io/project.h"
 #include "media/pngframes.h"
 #include "render/svgface.h"

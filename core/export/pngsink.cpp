@@ -1,7 +1,6 @@
 #include "export/videosink.h"
 
 #include "i18n/coretext.h"
-
 #include "media/pngframes.h"
 
 #include <QDir>

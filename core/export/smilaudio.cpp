@@ -1,11 +1,10 @@
 #include "export/smilaudio.h"
 
-#include "i18n/coretext.h"
-
 #include "anim/timeline.h"
 #include "export/smilutil.h"
 #include "export/svgnumbers.h"
 #include "export/svgxml.h"
+#include "i18n/coretext.h"
 #include "media/mediareader.h"
 #include "speech/audio.h"
 

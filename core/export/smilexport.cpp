@@ -1,7 +1,5 @@
 #include "export/smilexport.h"
 
-#include "i18n/coretext.h"
-
 #include "anim/timeline.h"
 #include "anim/timelineevaluator.h"
 #include "export/smilaudio.h"
@@ -12,6 +10,7 @@
 #include "export/svgxml.h"
 #include "face/facemodel.h"
 #include "face/pose.h"
+#include "i18n/coretext.h"
 #include "render/svgface.h"
 
 #include <QHash>

@@ -1,8 +1,7 @@
 #include "export/smilkeys.h"
 
-#include "i18n/coretext.h"
-
 #include "export/smilutil.h"
+#include "i18n/coretext.h"
 
 #include <QHash>
 

@@ -1,8 +1,7 @@
 #include "export/svgxml.h"
 
-#include "i18n/coretext.h"
-
 #include "export/svgnumbers.h"
+#include "i18n/coretext.h"
 
 #include <QVector>
 #include <QXmlStreamReader>

@@ -1,8 +1,7 @@
 #include "export/videoencoder.h"
 
-#include "i18n/coretext.h"
-
 #include "export/videosink.h"
+#include "i18n/coretext.h"
 
 #include <QDir>
 #include <QFileInfo>

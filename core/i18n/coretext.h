@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QCoreApplication>
+#include <QStringList>
 
 namespace toonface {
 
@@ -49,6 +50,19 @@ struct DetectText // face detection, its models and caches
 inline QString withProblem(const QString &where, const QString &problem)
 {
     return QCoreApplication::translate("toonface::Problem", "%1: %2").arg(where, problem);
+}
+
+// Two sentences one after the other: a space between them in English, none in Chinese.
+inline QString joinSentences(const QString &first, const QString &second)
+{
+    return QCoreApplication::translate("toonface::Problem", "%1 %2", "two sentences one after the other")
+        .arg(first, second);
+}
+
+// Reasons given one after the other ("a; b"; a full-width semicolon in Chinese).
+inline QString joinReasons(const QStringList &reasons)
+{
+    return reasons.join(QCoreApplication::translate("toonface::Problem", "; ", "between two reasons"));
 }
 
 } // namespace toonface

@@ -1,9 +1,8 @@
 #include "io/facejson.h"
 
-#include "i18n/coretext.h"
-
 #include "detect/detector.h"
 #include "face/fapu.h"
+#include "i18n/coretext.h"
 #include "io/jsonfield.h"
 #include "io/pointsjson.h"
 

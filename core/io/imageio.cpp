@@ -259,7 +259,7 @@ QImage loadPhoto(const QString &path, QString *error)
         if (pixels > kMaxPhotoPixels) {
             *error = withFile(path,
                 ImageText::tr("the image is too large: %1 × %2 pixels (%3 megapixels); "
-                               "the limit is %4 megapixels")
+                              "the limit is %4 megapixels")
                     .arg(size.width())
                     .arg(size.height())
                     .arg(double(pixels) / 1e6, 0, 'f', 0)

@@ -1,7 +1,6 @@
 #include "io/layersjson.h"
 
 #include "i18n/coretext.h"
-
 #include "render/svglayer.h"
 
 namespace toonface {

@@ -1,7 +1,6 @@
 #include "io/lipsyncformats.h"
 
 #include "i18n/coretext.h"
-
 #include "io/jsonfield.h"
 
 #include <QFile>
@@ -401,10 +400,11 @@ std::optional<LipSyncTrack> parseJson(
         if (start < 0)
             return failField(LipSyncText::tr("%1: expected a time of at least 0").arg(cue.member("start").path()));
         if (end < start)
-            return failField(
-                LipSyncText::tr("%1: ends (%2) before it starts (%3)").arg(cue.member("end").path(), QString::number(end), QString::number(start)));
+            return failField(LipSyncText::tr("%1: ends (%2) before it starts (%3)")
+                                 .arg(cue.member("end").path(), QString::number(end), QString::number(start)));
         if (start < previousEnd - 1e-9)
-            return failField(LipSyncText::tr("%1: starts (%2) before the previous cue ends (%3)")
+            return failField(
+                LipSyncText::tr("%1: starts (%2) before the previous cue ends (%3)")
                     .arg(cue.member("start").path(), QString::number(start), QString::number(previousEnd)));
         const JsonField valueField = cue.member("value").isMissing() ? cue.member("shape") : cue.member("value");
         QString value;
@@ -419,7 +419,7 @@ std::optional<LipSyncTrack> parseJson(
         case ShapeMapping::Match::Rest: break;
         case ShapeMapping::Match::Unknown:
             return failField(LipSyncText::tr("%1: unknown mouth shape '%2' (known: %3)")
-                    .arg(valueField.path(), value, mapping.importNames().join(QStringLiteral(", "))));
+                                 .arg(valueField.path(), value, mapping.importNames().join(QStringLiteral(", "))));
         }
         previousEnd = end;
     }

@@ -1,7 +1,6 @@
 #include "io/project.h"
 
 #include "i18n/coretext.h"
-
 #include "io/jsonfield.h"
 #include "io/layersjson.h"
 #include "io/pointsjson.h"
@@ -241,7 +240,8 @@ bool mouthShapesFromJson(const JsonField &field, MouthShapeSet *shapes, QString 
             for (MouthShape s : kAllMouthShapes)
                 names << mouthShapeName(s);
             return field.member(it.key()).fail(
-                ProjectText::tr("unknown mouth shape (the shapes are %1)").arg(names.join(QStringLiteral(", "))), error);
+                ProjectText::tr("unknown mouth shape (the shapes are %1)").arg(names.join(QStringLiteral(", "))),
+                error);
         }
     }
     for (MouthShape shape : kAllMouthShapes) {

@@ -1,7 +1,6 @@
 #include "io/syllablesjson.h"
 
 #include "i18n/coretext.h"
-
 #include "io/jsonfield.h"
 
 #include <QJsonObject>

@@ -46,8 +46,8 @@ bool AudioFeed::open(const AudioSource &source, QString *error)
         m_frame.reset(av_frame_alloc());
     } else {
         if (source.sampleRate <= 0)
-            return fail(error, SoundText::tr("audio samples"),
-                SoundText::tr("invalid sample rate %1").arg(source.sampleRate));
+            return fail(
+                error, SoundText::tr("audio samples"), SoundText::tr("invalid sample rate %1").arg(source.sampleRate));
         m_sourceRate = source.sampleRate;
     }
     if (m_sourceRate <= 0)

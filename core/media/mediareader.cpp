@@ -1,7 +1,6 @@
 #include "media/mediareader.h"
 
 #include "i18n/coretext.h"
-
 #include "media/audiofeed.h"
 #include "media/ffmpegutil.h"
 #include "media/pngframes.h"

@@ -1,9 +1,8 @@
 #include "render/svgface.h"
 
-#include "i18n/coretext.h"
-
 #include "face/caricature.h"
 #include "face/fapu.h"
+#include "i18n/coretext.h"
 #include "render/curves.h"
 #include "render/svgbody.h"
 #include "render/svgexpression.h"

@@ -1,7 +1,6 @@
 #include "render/svglayer.h"
 
 #include "i18n/coretext.h"
-
 #include "render/style.h"
 
 #include <QFile>

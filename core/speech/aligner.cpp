@@ -1,7 +1,6 @@
 #include "speech/aligner.h"
 
 #include "i18n/coretext.h"
-
 #include "speech/dtw.h"
 #include "speech/features.h"
 #include "speech/onsetsignals.h"

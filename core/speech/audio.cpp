@@ -122,8 +122,7 @@ AudioResult streamAudio(
     const QByteArray local = QFile::encodeName(path);
     int rc = avformat_open_input(&rawFmt, local.constData(), nullptr, nullptr);
     if (rc < 0)
-        return fail(
-            AudioStatus::Unreadable, SoundText::tr("not a readable sound or video file (%1)").arg(avError(rc)));
+        return fail(AudioStatus::Unreadable, SoundText::tr("not a readable sound or video file (%1)").arg(avError(rc)));
     std::unique_ptr<AVFormatContext, FormatInputDeleter> fmt(rawFmt);
     if ((rc = avformat_find_stream_info(fmt.get(), nullptr)) < 0)
         return fail(AudioStatus::Unreadable, SoundText::tr("cannot read its streams (%1)").arg(avError(rc)));

@@ -1,7 +1,6 @@
 #include "speech/lipsync.h"
 
 #include "i18n/coretext.h"
-
 #include "speech/englishshapes.h"
 
 #include <QJsonArray>

@@ -457,8 +457,7 @@ std::shared_ptr<const PinyinDictionary> PinyinDictionary::loadCached(
             return std::shared_ptr<const PinyinDictionary>(new PinyinDictionary(std::move(*index)));
         }
         how = index ? CacheUse::RebuiltStale : CacheUse::RebuiltDamaged;
-        note = index ? ScriptText::tr("%1: built from other sources").arg(cachePath)
-                     : withProblem(cachePath, why);
+        note = index ? ScriptText::tr("%1: built from other sources").arg(cachePath) : withProblem(cachePath, why);
     }
     QByteArray block = buildBlock(root, error);
     if (block.isEmpty())

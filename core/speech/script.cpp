@@ -1,7 +1,6 @@
 #include "speech/script.h"
 
 #include "i18n/coretext.h"
-
 #include "speech/pinyin.h"
 #include "speech/pinyindictionary.h"
 #include "speech/zhuyin.h"
@@ -258,7 +257,8 @@ ScriptParse parseScript(const QString &text, Language language)
         result.error = ScriptText::tr("line %1, column %2: '%3' %4")
                            .arg(QString::number(p.line), QString::number(p.column), p.text, p.reason);
         if (result.problems.size() > 1)
-            result.error = ScriptText::tr("%1 (and %n more)", nullptr, int(result.problems.size() - 1)).arg(result.error);
+            result.error
+                = ScriptText::tr("%1 (and %n more)", nullptr, int(result.problems.size() - 1)).arg(result.error);
     } else if (syllables.isEmpty()) {
         result.error = ScriptText::tr("the script holds nothing to speak");
     }

@@ -1,7 +1,6 @@
 #include "speech/tts.h"
 
 #include "i18n/coretext.h"
-
 #include "speech/pinyin.h"
 #include "speech/ttsvoicefile.h"
 

@@ -1,7 +1,7 @@
 #include "detect/classic.h"
 
-#include "i18n/coretext.h"
 #include "detect/regions.h"
+#include "i18n/coretext.h"
 #include "track/trackingmethod.h"
 
 #include <QLineF>
@@ -229,7 +229,7 @@ std::unique_ptr<TrackingMethod> makeClassicMethod(const DetectionResult &neutral
         || QLineF(neutral.tracking.eyeballs[0], neutral.tracking.eyeballs[1]).length() < 4) {
         if (error)
             *error = VideoText::tr("the neutral face's detection kept no tracking seed (thresholds, eyeballs, "
-                                    "mouth region) for the classic method");
+                                   "mouth region) for the classic method");
         return nullptr;
     }
     return std::make_unique<ClassicMethod>(neutral);

@@ -1,9 +1,8 @@
 #include "track/trackaccuracy.h"
 
-#include "i18n/coretext.h"
-
 #include "detect/landmarkfit.h"
 #include "detect/landmarkmap.h"
+#include "i18n/coretext.h"
 #include "track/retarget.h"
 #include "track/videofilesource.h"
 

@@ -1,7 +1,6 @@
 #include "track/trackvideo.h"
 
 #include "i18n/coretext.h"
-
 #include "io/facejson.h"
 #include "track/videofilesource.h"
 
@@ -139,8 +138,8 @@ TrackResult trackVideo(const QString &path, const TrackVideoOptions &options,
     if (!neutral) {
         result.error = !source.error().isEmpty() ? source.error()
             : seen == 0                          ? VideoText::tr("%1: no video frame could be decoded").arg(path)
-                                                 : VideoText::tr("%1: the neutral frame %2 is past the video's end (it has %3 frames)")
-                      .arg(path, QString::number(options.neutralFrame), QString::number(seen));
+                        : VideoText::tr("%1: the neutral frame %2 is past the video's end (it has %3 frames)")
+                              .arg(path, QString::number(options.neutralFrame), QString::number(seen));
         return result;
     }
     Tracker tracker(options.tracker);
@@ -184,16 +183,17 @@ TrackResult trackVideo(const QString &path, const TrackVideoOptions &options,
     if (result.status == TrackStatus::Cancelled)
         return result;
     if (!source.error().isEmpty())
-        result.warnings << VideoText::tr("%1 (tracked the %2 frames before)").arg(source.error(), QString::number(result.frames.size()));
+        result.warnings << VideoText::tr("%1 (tracked the %2 frames before)")
+                               .arg(source.error(), QString::number(result.frames.size()));
     if (source.damagedPackets() > 0)
         result.warnings << VideoText::tr("%1: %2 damaged packets were skipped; the frames around them may be wrong")
-                                .arg(path, QString::number(source.damagedPackets()));
+                               .arg(path, QString::number(source.damagedPackets()));
     int lost = 0;
     for (const TrackedFrame &f : std::as_const(result.frames))
         lost += f.lost;
     if (lost > 0)
         result.warnings << VideoText::tr("%1: the face was lost in %2 of %3 frames (they hold the last pose)")
-                                .arg(path, QString::number(lost), QString::number(result.frames.size()));
+                               .arg(path, QString::number(lost), QString::number(result.frames.size()));
     result.status = TrackStatus::Ok;
     return result;
 }

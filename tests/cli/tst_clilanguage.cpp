@@ -154,16 +154,18 @@ private Q_SLOTS:
             QString want;
         };
         const QList<Case> cases {
-            {{QStringLiteral("cartoon"), QStringLiteral("empty.toonface"), QStringLiteral("-o"), QStringLiteral("x.svg")},
+            {{QStringLiteral("cartoon"), QStringLiteral("empty.toonface"), QStringLiteral("-o"),
+                 QStringLiteral("x.svg")},
                 joined(QStringLiteral("empty.toonface"),
-                    text("toonface::ProjectFile", QStringLiteral("not a Toonface project (it has no \"format\" field)")))},
-            {{QStringLiteral("lipsync"), QStringLiteral("--audio"), QStringLiteral("noise.wav"), QStringLiteral("--script"),
-                 QStringLiteral("good.txt")},
+                    text("toonface::ProjectFile",
+                        QStringLiteral("not a Toonface project (it has no \"format\" field)")))},
+            {{QStringLiteral("lipsync"), QStringLiteral("--audio"), QStringLiteral("noise.wav"),
+                 QStringLiteral("--script"), QStringLiteral("good.txt")},
                 joined(QStringLiteral("noise.wav"),
                     text("toonface::SoundFile", QStringLiteral("not a readable sound or video file (%1)"))
                         .arg(text("toonface::Media", QStringLiteral("the data is invalid or damaged"))))},
-            {{QStringLiteral("lipsync"), QStringLiteral("--audio"), QStringLiteral("noise.wav"), QStringLiteral("--script"),
-                 QStringLiteral("bad.txt")},
+            {{QStringLiteral("lipsync"), QStringLiteral("--audio"), QStringLiteral("noise.wav"),
+                 QStringLiteral("--script"), QStringLiteral("bad.txt")},
                 joined(QStringLiteral("bad.txt"),
                     text("toonface::Script", QStringLiteral("line %1, column %2: '%3' %4"))
                         .arg(QStringLiteral("1"), QStringLiteral("4"), QStringLiteral("ⓧ"),

@@ -187,7 +187,8 @@ private Q_SLOTS:
             QVERIFY2(hasHan(message.mid(m_dir.path().size())) == chinese, qPrintable(message));
         }
         if (!chinese) // English as before the translations, word for word
-            QCOMPARE(got.first(), path("empty.toonface") + QStringLiteral(": not a Toonface project (it has no \"format\" field)"));
+            QCOMPARE(got.first(),
+                path("empty.toonface") + QStringLiteral(": not a Toonface project (it has no \"format\" field)"));
     }
 
     void editorSaysWhyAProjectCannotOpen_data()
@@ -221,8 +222,10 @@ private Q_SLOTS:
         QVERIFY2(text.startsWith(QDir::toNativeSeparators(broken)), qPrintable(text));
         const QString problem = text.mid(QDir::toNativeSeparators(broken).size());
         QVERIFY2(problem.startsWith(QStringLiteral("：")), qPrintable(text)); // a full-width colon
-        QVERIFY2(problem.contains(want.text("ProjectFile", QStringLiteral("not a Toonface project: %1 at offset %2 (line %3, column %4)"))
-                                      .section(QLatin1Char('%'), 0, 0)),
+        QVERIFY2(
+            problem.contains(
+                want.text("ProjectFile", QStringLiteral("not a Toonface project: %1 at offset %2 (line %3, column %4)"))
+                    .section(QLatin1Char('%'), 0, 0)),
             qPrintable(text));
         QVERIFY2(hasHan(problem), qPrintable(text));
         QVERIFY2(wide, qPrintable(QStringLiteral("%1 x %2").arg(size.width()).arg(size.height())));
