@@ -383,7 +383,7 @@ bool framesDocument(const Drawing &d, const TimelineEvaluator &evaluator, const 
     constexpr int kChunk = 256;
     for (int first = 0; first < frames; first += kChunk) {
         if (cancelled(options)) {
-            *error = QStringLiteral("cancelled");
+            *error = ExportText::tr("cancelled");
             return false;
         }
         const int count = std::min(kChunk, frames - first);

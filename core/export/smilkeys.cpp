@@ -254,7 +254,7 @@ bool buildGroup(const QVector<int> &which, const QVector<Channel> &channels, con
     const qint64 minSpan = std::max<qint64>(4, qint64(std::ceil(1e-3 / grid.time(1))));
     while (!pending.isEmpty()) {
         if (cancelled(options)) {
-            *error = QStringLiteral("cancelled");
+            *error = ExportText::tr("cancelled");
             return false;
         }
         // A span over one ease is checked at its quarters: the geometry being linear in the

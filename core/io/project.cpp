@@ -420,7 +420,7 @@ std::optional<Project> projectFromJson(const QJsonObject &json, const QString &p
         return std::nullopt;
     if (!p.scriptLanguage.isEmpty() && p.scriptLanguage != QLatin1StringView("cmn")
         && p.scriptLanguage != QLatin1StringView("en")) {
-        language.expected(QStringLiteral("\"cmn\", \"en\" or \"\""), error);
+        language.expected(ProjectText::tr("\"cmn\", \"en\" or \"\""), error);
         return std::nullopt;
     }
     // Older files have no syllables.

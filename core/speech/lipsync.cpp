@@ -116,7 +116,7 @@ LipsyncOutcome lipsyncRecording(const QString &audioPath, const Script &script, 
         cancel);
     if (audio.status == AudioStatus::Cancelled) {
         out.status = LipsyncStatus::Cancelled;
-        out.error = QStringLiteral("cancelled");
+        out.error = ScriptText::tr("cancelled");
         return out;
     }
     if (!audio.ok()) {
@@ -134,7 +134,7 @@ LipsyncOutcome lipsyncRecording(const QString &audioPath, const Script &script, 
     case AlignStatus::Ok: break;
     case AlignStatus::Cancelled:
         out.status = LipsyncStatus::Cancelled;
-        out.error = QStringLiteral("cancelled");
+        out.error = ScriptText::tr("cancelled");
         return out;
     case AlignStatus::CannotAlign:
         out.status = LipsyncStatus::CannotAlign;

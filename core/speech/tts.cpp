@@ -247,7 +247,7 @@ TtsResult synthesize(const Script &script, const TtsOptions &options, const Audi
     espeak_Synchronize();
     g_collector = nullptr;
     if (isCancelled(cancel)) {
-        result.error = QStringLiteral("cancelled");
+        result.error = ScriptText::tr("cancelled");
         return result;
     }
     if (rc != EE_OK || collector.count == 0) {
