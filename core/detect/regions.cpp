@@ -3,6 +3,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 
@@ -36,33 +37,45 @@ namespace {
 // The HSI hue angle (Gonzalez & Woods): theta = acos(((r-g)+(r-b)) / (2 sqrt((r-g)^2 + (r-b)(g-b)))),
 // negated when b > g, kept signed in (-180, 180] and scaled to [-127, 128]. The same angle is
 // atan2(sqrt(3) (g-b), 2r-g-b) (the numerator is its cosine side, the root its length), so it
-// depends on u = g-b and v = 2r-g-b only: a table over their 511 x 1021 integer values (built
-// once, 2 MB) replaces a trigonometric call per pixel.
+// depends on u = g-b and v = 2r-g-b only: a table over their 511 x 1021 integer values replaces
+// a trigonometric call per pixel. Filling all of it takes half a million atan2 calls (20 ms, more
+// than a whole detection's regions stage, paid by the first detection of a process), while a
+// photo holds a few ten thousand of those pairs: each entry is computed the first time a pixel
+// needs it. Entries are atomic because detections on several threads share the table; a race
+// writes the same value twice.
 class HueTable
 {
 public:
     HueTable()
         : m_values(size_t(kU) * kV)
     {
-        for (int u = -255; u <= 255; ++u)
-            for (int v = -510; v <= 510; ++v) {
-                const double theta = std::atan2(std::numbers::sqrt3 * u, v) * 180.0 / std::numbers::pi;
-                m_values[size_t(u + 255) * kV + size_t(v + 510)]
-                    = float(std::clamp(theta * 255.0 / 360.0, -127.0, 128.0));
-            }
+        for (auto &v : m_values)
+            v.store(kUnset, std::memory_order_relaxed);
     }
-    float at(int r, int g, int b) const { return m_values[size_t(g - b + 255) * kV + size_t(2 * r - g - b + 510)]; }
+    float at(int r, int g, int b)
+    {
+        const int u = g - b, v = 2 * r - g - b;
+        std::atomic<float> &slot = m_values[size_t(u + 255) * kV + size_t(v + 510)];
+        float value = slot.load(std::memory_order_relaxed);
+        if (value == kUnset) {
+            const double theta = std::atan2(std::numbers::sqrt3 * u, v) * 180.0 / std::numbers::pi;
+            value = float(std::clamp(theta * 255.0 / 360.0, -127.0, 128.0));
+            slot.store(value, std::memory_order_relaxed);
+        }
+        return value;
+    }
 
 private:
     static constexpr int kU = 511, kV = 1021;
-    std::vector<float> m_values;
+    static constexpr float kUnset = 1000.0f; // outside [-127, 128]
+    std::vector<std::atomic<float>> m_values;
 };
 
 } // namespace
 
 Plane huePlane(const QImage &image)
 {
-    static const HueTable table;
+    static HueTable table;
     const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
     Plane p {rgb.size(), std::vector<float>(size_t(rgb.width()) * rgb.height())};
     for (int y = 0; y < rgb.height(); ++y) {

@@ -16,6 +16,7 @@ extern "C" {
 }
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -59,6 +60,16 @@ struct PacketDeleter
 };
 
 using SwrPtr = std::unique_ptr<SwrContext, SwrDeleter>;
+
+// Below this rate sound cannot carry speech (telephone speech is 8000 Hz); a header claiming
+// less is damaged, and resampling it up to kSpeechSampleRate would make hours from kilobytes.
+constexpr int kMinSampleRate = 4000;
+// No speech codec a recording is made with spends fewer bytes on a second of sound (Opus's
+// lowest speech rate is 750 bytes a second, AMR's 600, PCM thousands): a file decoding to more
+// seconds than its size allows at this rate (plus a little for headers and silence) is damaged
+// or made to blow up, and is refused before it is decoded whole.
+constexpr double kMinBytesPerSecond = 100;
+constexpr double kFreeSeconds = 30;
 
 // Appends everything `swr` gives for `in` (null = flush) as mono floats.
 void convertInto(SwrContext *swr, const uint8_t **in, int inCount, int outRate, int inRate, QVector<float> &out)
@@ -171,8 +182,17 @@ AudioResult streamAudio(
     int64_t decodedFrames = 0;
     double lastReport = -1;
 
+    const double plausibleSeconds
+        = fileSize > 0 ? kFreeSeconds + double(fileSize) / kMinBytesPerSecond : std::numeric_limits<double>::infinity();
+    QString refusal; // why drain() stopped, when it did
     auto drain = [&]() -> bool {
         while (avcodec_receive_frame(dec.get(), frame.get()) >= 0) {
+            if (frame->sample_rate < kMinSampleRate) {
+                refusal = SoundText::tr("its sample rate (%1 Hz) is too low for speech (at least %2 Hz)")
+                              .arg(frame->sample_rate)
+                              .arg(kMinSampleRate);
+                return false;
+            }
             if (!swr || frame->sample_rate != swrRate || frame->format != swrFormat) {
                 if (swr) {
                     convertInto(swr.get(), nullptr, 0, kSpeechSampleRate, swrRate, out);
@@ -187,8 +207,10 @@ AudioResult streamAudio(
                 swrFormat = AVSampleFormat(frame->format);
                 swr = monoFloatResampler(&layout, swrFormat, swrRate, kSpeechSampleRate);
                 av_channel_layout_uninit(&layout);
-                if (!swr)
+                if (!swr) {
+                    refusal = SoundText::tr("cannot convert its samples");
                     return false;
+                }
             }
             convertInto(swr.get(), const_cast<const uint8_t **>(frame->extended_data), frame->nb_samples,
                 kSpeechSampleRate, swrRate, out);
@@ -196,6 +218,13 @@ AudioResult streamAudio(
             r.sourceDuration += double(frame->nb_samples) / std::max(frame->sample_rate, 1);
             ++decodedFrames;
             av_frame_unref(frame.get());
+            if (r.sourceDuration > plausibleSeconds) {
+                refusal = SoundText::tr("it is damaged: it decodes to more than %1 s of sound, more than its %2 bytes "
+                                        "can hold")
+                              .arg(int(plausibleSeconds))
+                              .arg(fileSize);
+                return false;
+            }
         }
         return true;
     };
@@ -207,7 +236,7 @@ AudioResult streamAudio(
             if (avcodec_send_packet(dec.get(), packet.get()) < 0)
                 ++badPackets;
             if (!drain())
-                return fail(AudioStatus::Unreadable, SoundText::tr("cannot convert its samples"));
+                return fail(AudioStatus::Unreadable, refusal);
         }
         av_packet_unref(packet.get());
         if (progress && fileSize > 0) {
@@ -219,7 +248,8 @@ AudioResult streamAudio(
         }
     }
     avcodec_send_packet(dec.get(), nullptr);
-    drain();
+    if (!drain())
+        return fail(AudioStatus::Unreadable, refusal);
     if (swr) {
         convertInto(swr.get(), nullptr, 0, kSpeechSampleRate, swrRate, out);
         hand();

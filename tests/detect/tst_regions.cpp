@@ -3,7 +3,10 @@
 #include <QPainter>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
+#include <thread>
+#include <vector>
 
 using namespace toonface;
 
@@ -14,6 +17,7 @@ class TestRegions : public QObject
 private Q_SLOTS:
     void intensityAndHue_data();
     void intensityAndHue();
+    void hueOfEveryColourOnManyThreads();
     void firstLevel();
     void regionGrowing();
     void refinement();
@@ -41,6 +45,50 @@ void TestRegions::intensityAndHue()
     img.fill(colour);
     QVERIFY(std::abs(intensityPlane(img).at(2, 1) - intensity) < 1e-4);
     QVERIFY2(std::abs(huePlane(img).at(1, 1) - hue) < 1e-3, qPrintable(QString::number(huePlane(img).at(1, 1))));
+}
+
+// The hue of a photo's every colour, worked out on four threads at once (detections share the
+// hue's table, filled as colours are met): each pixel is the Gonzalez & Woods HSI angle, from
+// its arc cosine, the same on every thread.
+void TestRegions::hueOfEveryColourOnManyThreads()
+{
+    QImage img(512, 256, QImage::Format_RGB32);
+    quint32 seed = 12345;
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+            seed = seed * 1664525u + 1013904223u;
+            img.setPixel(x, y, qRgb(int(seed >> 24), int((seed >> 16) & 0xff), int((seed >> 8) & 0xff)));
+        }
+    std::vector<Plane> planes(4);
+    {
+        std::vector<std::thread> threads;
+        for (size_t i = 0; i < planes.size(); ++i)
+            threads.emplace_back([&, i] { planes[i] = huePlane(img); });
+        for (auto &t : threads)
+            t.join();
+    }
+    int checked = 0;
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+            const QRgb c = img.pixel(x, y);
+            const double r = qRed(c), g = qGreen(c), b = qBlue(c);
+            const double sum = r + g + b;
+            const double saturation = sum > 0 ? 1 - 3 * std::min({r, g, b}) / sum : 0;
+            double expected = 128;
+            const double root = 2 * std::sqrt((r - g) * (r - g) + (r - b) * (g - b));
+            if (saturation >= kMinSaturation && root > 0) {
+                double theta = std::acos(std::clamp(((r - g) + (r - b)) / root, -1.0, 1.0)) * 180 / M_PI;
+                if (b > g)
+                    theta = -theta;
+                expected = std::clamp(theta * 255 / 360, -127.0, 128.0);
+                ++checked;
+            }
+            for (const Plane &p : planes)
+                QVERIFY2(std::abs(p.at(x, y) - expected) < 1e-3,
+                    qPrintable(
+                        QStringLiteral("(%1, %2, %3): %4, not %5").arg(r).arg(g).arg(b).arg(p.at(x, y)).arg(expected)));
+        }
+    QVERIFY(checked > img.width() * img.height() / 2);
 }
 
 // t1 = m1 - s1 inside the rectangle only (sample standard deviation, eq. 3.2).

@@ -2,6 +2,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -252,6 +253,37 @@ private Q_SLOTS:
             QVERIFY(std::isfinite(v));
         QVERIFY(rms(r.audio.samples, 0, rate / 5) > 0.3); // the tone before them is intact
         QVERIFY(rms(r.audio.samples, rate / 3, rate / 2) > 0.3); // and after
+    }
+
+    // Found by fuzz_audio (a 20-second timeout in CI): a WAV header claiming 1 sample a second,
+    // which resampled to speech rate made hours of sound from kilobytes. Refused at its first frame.
+    void sampleRateTooLowIsRefused()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("rate1.wav"));
+        QVERIFY(writeFile(path, wavBytes(1, 1, 0.1, 0.5, 20000)));
+        const AudioResult r = loadAudio(path);
+        QCOMPARE(int(r.status), int(AudioStatus::Unreadable));
+        QVERIFY2(r.error.contains(path) && r.error.contains(QStringLiteral("sample rate (1 Hz)")), qPrintable(r.error));
+        QCOMPARE(r.sampleCount, qint64(0));
+        // The lowest rate speech is recorded at still loads.
+        const QString phone = m_dir.filePath(QStringLiteral("rate8k.wav"));
+        QVERIFY(writeFile(phone, wavBytes(8000, 1, 300, 0.5, 0.5)));
+        QVERIFY2(loadAudio(phone).ok(), qPrintable(loadAudio(phone).error));
+    }
+
+    // A file that decodes to far more sound than its size can hold is damaged or made to blow
+    // up: refused as soon as the decoded length passes what the size allows, not decoded whole.
+    // The fixture is ten minutes of a constant level at 8000 Hz in 9 KB, made with
+    // `ffmpeg -f lavfi -i aevalsrc=0.25:s=8000:d=600 -c:a flac -frame_size 65535`.
+    void soundMoreThanItsSizeCanHoldIsRefused()
+    {
+        const QString path = QStringLiteral(TOONFACE_TEST_DATA "/speech/constant-10min.flac");
+        QVERIFY(QFileInfo(path).size() < 600 * 100 / 2); // the premise: far under 100 bytes a second
+        const AudioResult r = loadAudio(path);
+        QCOMPARE(int(r.status), int(AudioStatus::Unreadable));
+        QVERIFY2(r.error.contains(path) && r.error.contains(QStringLiteral("damaged")), qPrintable(r.error));
+        QVERIFY2(r.sourceDuration < 300, qPrintable(QString::number(r.sourceDuration)));
+        QVERIFY(r.audio.isEmpty());
     }
 
     void missingFile()
