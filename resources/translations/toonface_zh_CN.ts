@@ -1087,6 +1087,10 @@
         <source>no frames to write</source>
         <translation>没有可写入的帧</translation>
     </message>
+    <message>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
 </context>
 <context>
     <name>toonface::ExportAnimationDialog</name>
@@ -3180,6 +3184,14 @@ The points are unchanged.</source>
         <source>a time after the start (%1 s)</source>
         <translation>开始时间（%1 秒）之后的时间</translation>
     </message>
+    <message>
+        <source>expected %1 points, found %2</source>
+        <translation>应有 %1 个点，实际有 %2 个</translation>
+    </message>
+    <message>
+        <source>&quot;cmn&quot;, &quot;en&quot; or &quot;&quot;</source>
+        <translation>“cmn”、“en”或“”</translation>
+    </message>
 </context>
 <context>
     <name>toonface::Questions</name>
@@ -3491,6 +3503,10 @@ The points are unchanged.</source>
         <source>espeak-ng could not speak the script</source>
         <translation>espeak-ng 无法朗读文稿</translation>
     </message>
+    <message>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
 </context>
 <context>
     <name>toonface::SecondsBox</name>
@@ -3623,6 +3639,18 @@ The points are unchanged.</source>
     <message>
         <source>encoding failed</source>
         <translation>编码失败</translation>
+    </message>
+    <message>
+        <source>its sample rate (%1 Hz) is too low for speech (at least %2 Hz)</source>
+        <translation>其采样率（%1 Hz）太低，不足以承载语音（至少需要 %2 Hz）</translation>
+    </message>
+    <message>
+        <source>it is damaged: it decodes to more than %1 s of sound, more than its %2 bytes can hold</source>
+        <translation>文件已损坏：解码出超过 %1 秒的声音，超出其 %2 字节所能容纳的长度</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>已取消</translation>
     </message>
 </context>
 <context>
