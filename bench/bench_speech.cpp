@@ -707,6 +707,18 @@ QJsonObject lipsyncLongReal()
         runs.insert(QStringLiteral("%1s").arg(int(std::lround(audio.duration()))), o);
     }
     out.insert(QStringLiteral("runs"), runs);
+    // The process start alone (dynamic linking of the libraries, Qt's set-up): what every run
+    // above spends before its first sample.
+    {
+        std::vector<ChildRun> start;
+        for (int k = 0; k < 5; ++k)
+            start.push_back(runMeasured(QStringLiteral(TOONFACE_CLI_PATH), {QStringLiteral("--help")}));
+        std::sort(start.begin(), start.end(), [](const ChildRun &a, const ChildRun &b) { return a.cpuMs < b.cpuMs; });
+        QJsonObject o;
+        o.insert(QStringLiteral("cpuMs"), std::round(start[2].cpuMs));
+        o.insert(QStringLiteral("wallMs"), std::round(start[2].wallMs));
+        out.insert(QStringLiteral("processStart"), o);
+    }
     out.insert(QStringLiteral("what"),
         QStringLiteral("toonface-cli lipsync on real recordings joined to ~1 and ~10 min (median by CPU time of "
                        "3 / 2 runs; wall, CPU and peak RSS of that run); onset errors against the P2FA word and "

@@ -59,6 +59,16 @@ using flat::kSectionAlignment;
 using flat::kShapeValues;
 using flat::kVersion;
 
+// The shape lives in the face box's normalised frame (about 0..1): a value far outside it, or one
+// that is not a number, comes from a damaged model. Positions that large would overflow the
+// integer pixel coordinates dlib turns them into.
+constexpr float kMaxShapeValue = 1000;
+
+bool plausible(float v)
+{
+    return std::isfinite(v) && std::abs(v) <= kMaxShapeValue;
+}
+
 // A cascade as read from dlib's file, before it is laid out in a block.
 struct ReadCascade
 {
@@ -164,7 +174,10 @@ std::pair<std::shared_ptr<std::byte>, size_t> layOut(
     const size_t size = end;
     std::shared_ptr<std::byte> block = alignedBlock(size);
     std::byte *out = block.get();
-    auto put = [out](quint64 offset, const void *data, size_t bytes) { std::memcpy(out + offset, data, bytes); };
+    auto put = [out](quint64 offset, const void *data, size_t bytes) {
+        if (bytes > 0) // an empty array's data() may be null
+            std::memcpy(out + offset, data, bytes);
+    };
     put(0, &header, sizeof header);
     put(header.initialAt, &initial(0), kShapeValues * sizeof(float));
     put(header.tableAt, table.data(), table.size() * sizeof(flat::Cascade));
@@ -295,6 +308,8 @@ std::shared_ptr<const LandmarkPredictor> LandmarkPredictor::fromFlat(
         = section<std::byte>(block, header.tableAt, quint64(header.cascades) * sizeof(flat::Cascade));
     if (!initial || !tableBytes)
         return fail("the mean shape or the table of cascades lies outside the block");
+    if (!std::all_of(initial, initial + kShapeValues, plausible))
+        return fail("the mean shape holds a value that is not a plausible position");
 
     std::shared_ptr<LandmarkPredictor> model(new LandmarkPredictor);
     model->m_initial.assign(initial, initial + kShapeValues);
@@ -320,6 +335,8 @@ std::shared_ptr<const LandmarkPredictor> LandmarkPredictor::fromFlat(
         for (quint32 f = 0; f < e.features; ++f) {
             if (anchors[f] >= quint32(kIbugPointCount))
                 return fail("a pixel feature is anchored to no point");
+            if (!plausible(deltas[2 * f]) || !plausible(deltas[2 * f + 1]))
+                return fail("a pixel feature's offset is not a plausible position");
             cascade.anchors.push_back(anchors[f]);
             cascade.deltas.emplace_back(deltas[2 * f], deltas[2 * f + 1]);
         }
@@ -367,6 +384,12 @@ LandmarkPredictor::Shape LandmarkPredictor::predict(const GrayView &image, const
             const float *__restrict leaf = chosen[t];
             for (int i = 0; i < kShapeValues; ++i)
                 sum[i] += leaf[i];
+        }
+        // Leaves are not checked when a model is read (there are millions): a damaged model's
+        // leaves can push the shape anywhere, and then it gives its mean shape.
+        if (!std::all_of(sum, sum + kShapeValues, plausible)) {
+            shape = initial;
+            break;
         }
     }
     const dlib::point_transform_affine toImage = dlib::impl::unnormalizing_tform(rect);

@@ -1,6 +1,7 @@
 #include "speech/aligner.h"
 
 #include "i18n/coretext.h"
+#include "speech/boundaryrefine.h"
 #include "speech/dtw.h"
 #include "speech/features.h"
 #include "speech/onsetsignals.h"
@@ -217,7 +218,7 @@ namespace {
 
 // The aligner proper, on the recording's features `a` and the padded reference's `b`.
 AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const TtsResult &reference,
-    const SpeechFeatures &b, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+    const SpeechFeatures &b, bool refine, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
     const int n = int(script.syllables.size());
     if (!reference.ok() || reference.units.size() != n)
@@ -461,6 +462,24 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         AlignedSyllable &s = r.syllables[k];
         s.start = candidates[size_t(k)][size_t(chosen[size_t(k)])].start;
     }
+    // The second pass: each onset to its landmark nearby.
+    std::vector<double> landmark(static_cast<size_t>(n), 0.0);
+    if (refine) {
+        BoundaryInput in;
+        in.speechEnd = a.time(last + 1) - 0.5 * SpeechFeatures::kHop;
+        for (int k = 0; k < n; ++k) {
+            in.starts.push_back(r.syllables[k].start);
+            in.kinds.push_back(onsetKind(script.syllables[k]));
+            const QString before = k > 0 ? script.syllables[k - 1].pinyin : QString();
+            in.afterNasal.push_back(before.endsWith(QLatin1Char('n')) || before.endsWith(QLatin1String("ng")));
+            in.minSeconds.push_back(minSeconds[size_t(k)]);
+        }
+        const std::vector<RefinedBoundary> refined = refineBoundaries(a, sig, in);
+        for (int k = 0; k < n; ++k) {
+            r.syllables[k].start = refined[size_t(k)].start;
+            landmark[size_t(k)] = refined[size_t(k)].strength;
+        }
+    }
     for (int k = 0; k < n; ++k) {
         AlignedSyllable &s = r.syllables[k];
         // A syllable ends where the next begins, or where a pause after it begins (never
@@ -477,7 +496,7 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         // reference (a mean distance of 0.15 is the same sounds in another voice, 0.4 none),
         // lasting about as long as the reference says at this pace (half or twice as long
         // halves that share), and not held at its least length by the duration model.
-        const double e = std::clamp(evidence[size_t(k)] / 0.5, 0.0, 1.0);
+        const double e = std::max(std::clamp(evidence[size_t(k)] / 0.5, 0.0, 1.0), landmark[size_t(k)]);
         const double shift = std::abs(onsets[size_t(k)] - prior[size_t(k)]) * SpeechFeatures::kHop;
         const double matched = std::clamp((0.4 - match[size_t(k)]) / 0.25, 0.0, 1.0);
         const double length = std::max(s.end - s.start, 0.01);
@@ -523,7 +542,7 @@ AlignResult alignToReference(const Audio &audio, const Script &script, const Tts
         return *stopped;
     if (!reference.ok() || reference.units.size() != script.syllables.size())
         return failure(AlignStatus::BadInput, ScriptText::tr("no reference rendering of the script"));
-    return alignFeatures(a, script, reference, referenceFeatures(reference.audio, cancel), progress, cancel);
+    return alignFeatures(a, script, reference, referenceFeatures(reference.audio, cancel), true, progress, cancel);
 }
 
 AlignResult alignScript(const Audio &audio, const Script &script, const AlignOptions &options,
@@ -570,7 +589,7 @@ AlignResult alignScript(const SpeechFeatures &a, const Script &script, const Ali
         else if (whole) {
             if (progress)
                 progress(0.1, QStringLiteral("reference"));
-            return alignFeatures(a, script, sample, probeFeatures, progress, cancel);
+            return alignFeatures(a, script, sample, probeFeatures, options.refineBoundaries, progress, cancel);
         }
     }
     SpeechFeatures b;
@@ -581,7 +600,7 @@ AlignResult alignScript(const SpeechFeatures &a, const Script &script, const Ali
         return failure(AlignStatus::BadInput, reference.error);
     if (progress)
         progress(0.1, QStringLiteral("reference"));
-    return alignFeatures(a, script, reference, b, progress, cancel);
+    return alignFeatures(a, script, reference, b, options.refineBoundaries, progress, cancel);
 }
 
 } // namespace toonface

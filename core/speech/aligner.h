@@ -16,6 +16,8 @@ struct AlignOptions
     // The espeak-ng rendering the recording is warped against. rate 0 matches the speaker's
     // rate automatically (a first rendering measures it).
     TtsOptions reference {0, 50, 50, {}};
+    // The second pass that moves each onset to the acoustic landmark nearby (boundaryrefine.h).
+    bool refineBoundaries = true;
 };
 
 enum class AlignStatus { Ok, CannotAlign, BadInput, Cancelled };

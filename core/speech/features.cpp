@@ -2,11 +2,15 @@
 
 #include "speech/localnorm.h"
 
-#include <opencv2/core.hpp>
+extern "C" {
+#include <libavcodec/avfft.h>
+#include <libavutil/mem.h>
+}
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 
 namespace toonface {
 
@@ -14,7 +18,8 @@ namespace {
 
 constexpr int kWindow = 400; // 25 ms
 constexpr int kHopSamples = 160;
-constexpr int kFft = 1024; // twice the window and more: the autocorrelation does not wrap
+constexpr int kFftBits = 10;
+constexpr int kFft = 1 << kFftBits; // twice the window and more: the autocorrelation does not wrap
 constexpr int kBins = kFft / 2 + 1;
 constexpr int kMelBands = 24;
 
@@ -121,7 +126,31 @@ const std::array<float, kWindow> &windowAutocorrelation()
     return r;
 }
 
-constexpr int kBlock = 256; // frames per pass through the DFT
+constexpr int kBlock = 256; // frames per call of frameBlock
+
+// FFmpeg's real FFT of kFft points, forward and inverse, with its aligned work buffer: one
+// per thread (a transform context is not safe to share), set up once.
+struct RealFft
+{
+    struct RdftEnd
+    {
+        void operator()(RDFTContext *c) const { av_rdft_end(c); }
+    };
+    struct Free
+    {
+        void operator()(float *p) const { av_free(p); }
+    };
+    std::unique_ptr<RDFTContext, RdftEnd> forward {av_rdft_init(kFftBits, DFT_R2C)};
+    std::unique_ptr<RDFTContext, RdftEnd> inverse {av_rdft_init(kFftBits, IDFT_C2R)};
+    std::unique_ptr<float, Free> buffer {static_cast<float *>(av_malloc(kFft * sizeof(float)))};
+    float *data = buffer.get();
+};
+
+RealFft &realFft()
+{
+    thread_local RealFft fft;
+    return fft;
+}
 
 } // namespace
 
@@ -148,34 +177,34 @@ void SpeechFeatureStream::frameBlock(const float *samples, int count)
 {
     const MelBank &bank = melBank();
     const auto &hamming = hammingWindow();
-    const auto &windowAutocorr = windowAutocorrelation();
+    static const std::array<float, kWindow> inverseWindowAutocorr = [] {
+        std::array<float, kWindow> inv;
+        for (int lag = 0; lag < kWindow; ++lag)
+            inv[size_t(lag)] = 1.0f / windowAutocorrelation()[size_t(lag)];
+        return inv;
+    }();
     const int bandLo = 300 * kFft / kSpeechSampleRate, bandHi = 3000 * kFft / kSpeechSampleRate;
     const int highLo = 3500 * kFft / kSpeechSampleRate, lowHi = 400 * kFft / kSpeechSampleRate;
     const int lagLo = kSpeechSampleRate / 400, lagHi = kSpeechSampleRate / 70;
     std::array<float, kBins> power;
     std::array<float, kMelBands> logMel;
-    // Frames go through OpenCV's real DFT a block at a time (rows), forward for the spectrum
-    // and inverse of the power spectrum for the autocorrelation. Both are in OpenCV's packed
-    // real layout: Re0, Re1, Im1, ..., Re(N/2-1), Im(N/2-1), Re(N/2).
-    // Each row's samples fill its first kWindow columns; the zero padding after them stays.
-    cv::Mat windows(kBlock, kFft, CV_32F, cv::Scalar(0)), spectra, powers(kBlock, kFft, CV_32F), autocorr;
+    RealFft &fft = realFft();
+    float *z = fft.data;
     for (int r = 0; r < count; ++r) {
         const float *s = samples + size_t(r) * kHopSamples;
         float mean = 0;
         for (int i = 0; i < kWindow; ++i)
             mean += s[i];
         mean /= kWindow;
-        float *row = windows.ptr<float>(r);
         for (int i = 0; i < kWindow; ++i)
-            row[i] = (s[i] - mean) * hamming[size_t(i)];
-    }
-    cv::dft(windows, spectra, cv::DFT_ROWS, count);
-    for (int r = 0; r < count; ++r) {
-        const float *z = spectra.ptr<float>(r);
+            z[i] = (s[i] - mean) * hamming[size_t(i)];
+        std::fill(z + kWindow, z + kFft, 0.0f);
+        // FFmpeg's packed real layout: Re0, Re(N/2), Re1, Im1, ..., Re(N/2-1), Im(N/2-1).
+        av_rdft_calc(fft.forward.get(), z);
         power[0] = z[0] * z[0];
         for (int k = 1; k < kBins - 1; ++k)
-            power[size_t(k)] = z[2 * k - 1] * z[2 * k - 1] + z[2 * k] * z[2 * k];
-        power[kBins - 1] = z[kFft - 1] * z[kFft - 1];
+            power[size_t(k)] = z[2 * k] * z[2 * k] + z[2 * k + 1] * z[2 * k + 1];
+        power[kBins - 1] = z[1] * z[1];
         double total = 0, mid = 0, high = 0, low = 0;
         for (int k = 0; k < kBins; ++k) {
             total += power[size_t(k)];
@@ -203,26 +232,24 @@ void SpeechFeatureStream::frameBlock(const float *samples, int count)
                 acc += bank.dct[size_t(c)][size_t(b)] * logMel[size_t(b)];
             m_cep.push_back(acc);
         }
-        float *p = powers.ptr<float>(r);
-        p[0] = power[0];
+        // The autocorrelation: the inverse transform of the power spectrum (its scale does
+        // not matter, only its ratio to lag 0).
+        z[0] = power[0];
+        z[1] = power[kBins - 1];
         for (int k = 1; k < kBins - 1; ++k) {
-            p[2 * k - 1] = power[size_t(k)];
-            p[2 * k] = 0;
+            z[2 * k] = power[size_t(k)];
+            z[2 * k + 1] = 0;
         }
-        p[kFft - 1] = power[kBins - 1];
-    }
-    cv::dft(powers, autocorr, cv::DFT_ROWS | cv::DFT_INVERSE | cv::DFT_REAL_OUTPUT, count);
-    for (int r = 0; r < count; ++r) {
-        const float *ac = autocorr.ptr<float>(r);
+        av_rdft_calc(fft.inverse.get(), z);
+        const float *ac = z;
         const float r0 = ac[0];
         float best = 0;
         if (r0 > 0) {
-            for (int lag = lagLo; lag <= lagHi; ++lag) {
-                // Divided by the window's own autocorrelation at this lag (Boersma 1993):
-                // the Hamming taper alone lowers a 70 Hz voice's peak to a seventh.
-                const float v = ac[lag] / r0 / windowAutocorr[size_t(lag)];
-                best = std::max(best, v);
-            }
+            // Divided by the window's own autocorrelation at this lag (Boersma 1993): the
+            // Hamming taper alone lowers a 70 Hz voice's peak to a seventh.
+            for (int lag = lagLo; lag <= lagHi; ++lag)
+                best = std::max(best, ac[lag] * inverseWindowAutocorr[size_t(lag)]);
+            best /= r0;
         }
         m_voicing.push_back(std::clamp(best, 0.0f, 1.0f));
     }
@@ -280,6 +307,7 @@ SpeechFeatures SpeechFeatureStream::finish()
         }
         f.loudness[size_t(t)] = float(acc / cnt);
     }
+    f.band = std::move(band);
 
     // Silence: below a threshold between the noise floor and the speech level, softly.
     f.noiseFloor = percentile(f.logEnergy, 0.05);

@@ -20,6 +20,7 @@ struct SpeechFeatures
     std::vector<float> vectors; // frames × kDim
     std::vector<float> logEnergy; // natural log of the frame's power
     std::vector<float> loudness; // log power in 300–3000 Hz, smoothed over ±20 ms
+    std::vector<float> band; // the same log power unsmoothed (sharp steps for boundaries)
     std::vector<float> loudnessNorm; // loudness between its 5th (0) and 95th (1) percentile, clamped
     std::vector<float> voicing; // 0..1: peak of the normalised autocorrelation at 70–400 Hz
     std::vector<float> silence; // 0..1: how surely the frame is silence (or noise)

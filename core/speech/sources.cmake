@@ -12,6 +12,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/dtw.h speech/dtw.cpp
   speech/onsetsignals.h speech/onsetsignals.cpp
   speech/referencefeatures.h speech/referencefeatures.cpp
+  speech/boundaryrefine.h speech/boundaryrefine.cpp
   speech/aligner.h speech/aligner.cpp
   speech/englishshapes.h speech/englishshapes.cpp
   speech/lipsync.h speech/lipsync.cpp

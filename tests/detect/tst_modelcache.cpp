@@ -1,6 +1,7 @@
 #include "detect/detector.h"
 #include "detect/facescan.h"
 #include "detect/grayview.h"
+#include "detect/landmarkflat.h"
 #include "detect/landmarkpredictor.h"
 #include "detect/modelcache.h"
 #include "madeupmodel.h"
@@ -18,7 +19,9 @@
 #include <dlib/serialize.h>
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <thread>
 
@@ -84,6 +87,7 @@ private Q_SLOTS:
     void damagedCacheRejectedAndRebuilt_data();
     void damagedCacheRejectedAndRebuilt();
     void damagedBlockNeverTrusted();
+    void runawayLeavesGiveTheMeanShape();
     void cacheWrittenLater();
     void unwritableCacheStillLoads();
     void staleTemporaryFilesRemoved();
@@ -326,6 +330,50 @@ void TestModelCache::damagedCacheRejectedAndRebuilt()
     const LandmarkModelLoad third = loadLandmarkModel(m_model, m_cacheDir);
     QCOMPARE(third.cache, Cache::Used);
     QVERIFY(largestDifference(predictOn(*third.model, gray, box), good) <= 1e-4);
+}
+
+// Leaves are not checked when a model is read (there are millions): a damaged model whose
+// leaves push the shape past any position gives its mean shape, placed in the box, and never
+// turns such a position into a pixel (UndefinedBehaviorSanitizer caught one: a float too large
+// for an integer). Offsets and the mean shape are checked when the model is read.
+void TestModelCache::runawayLeavesGiveTheMeanShape()
+{
+    QString error;
+    const auto model = LandmarkPredictor::read(m_model, &error);
+    QVERIFY2(model, qPrintable(error));
+    std::vector<std::byte> copy(model->flat().begin(), model->flat().end());
+    flat::Header header;
+    std::memcpy(&header, copy.data(), sizeof header);
+    flat::Cascade first;
+    std::memcpy(&first, copy.data() + header.tableAt, sizeof first);
+    const quint64 leaves = quint64(first.trees) * (first.splitsPerTree + 1) * flat::kShapeValues;
+    const float huge = 1e30f;
+    for (quint64 i = 0; i < leaves; ++i)
+        std::memcpy(copy.data() + first.leavesAt + i * sizeof huge, &huge, sizeof huge);
+    auto owner = std::make_shared<std::vector<std::byte>>(copy);
+    const auto damaged
+        = LandmarkPredictor::fromFlat(owner, std::span<const std::byte>(owner->data(), owner->size()), &error);
+    QVERIFY2(damaged, qPrintable(error));
+    const QRect box(60, 40, 150, 150);
+    const LandmarkPredictor::Shape points = predictOn(*damaged, testImage(), box);
+    for (int i = 0; i < kIbugPointCount; ++i) {
+        const QPointF m = damaged->meanShape()[i];
+        const QPointF expected(
+            box.left() + m.x() * (box.right() - box.left()), box.top() + m.y() * (box.bottom() - box.top()));
+        QVERIFY2(std::abs(points[i].x() - expected.x()) < 1e-3 && std::abs(points[i].y() - expected.y()) < 1e-3,
+            qPrintable(QStringLiteral("point %1").arg(i)));
+    }
+
+    // A pixel feature's offset, or a mean shape value, that is no position: refused on reading.
+    std::vector<std::byte> badOffset(model->flat().begin(), model->flat().end());
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    std::memcpy(badOffset.data() + first.deltasAt, &nan, sizeof nan);
+    QVERIFY(!LandmarkPredictor::fromFlat({}, std::span<const std::byte>(badOffset.data(), badOffset.size()), &error));
+    QVERIFY2(error.contains(QStringLiteral("offset")), qPrintable(error));
+    std::vector<std::byte> badMean(model->flat().begin(), model->flat().end());
+    std::memcpy(badMean.data() + header.initialAt, &huge, sizeof huge);
+    QVERIFY(!LandmarkPredictor::fromFlat({}, std::span<const std::byte>(badMean.data(), badMean.size()), &error));
+    QVERIFY2(error.contains(QStringLiteral("mean shape")), qPrintable(error));
 }
 
 // A block whose checksum was right but whose counts or offsets are wrong (a bug, or another

