@@ -1,6 +1,7 @@
 #include "anim/timeline.h"
 
 #include "face/pointtable.h"
+#include "i18n/coretext.h"
 
 #include <QJsonArray>
 #include <QJsonValue>
@@ -33,7 +34,7 @@ public:
     bool fail(const char *field, const QString &problem)
     {
         if (m_ok && m_error)
-            *m_error = pathOf(field) + QStringLiteral(": ") + problem;
+            *m_error = withProblem(pathOf(field), problem);
         m_ok = false;
         return false;
     }
@@ -46,7 +47,7 @@ public:
         if (v.isUndefined())
             return required ? fail(field, QStringLiteral("missing")) : m_ok;
         if (!v.isDouble() || !std::isfinite(v.toDouble()))
-            return fail(field, QStringLiteral("expected a number"));
+            return fail(field, ProjectText::tr("expected a number"));
         if (valid) {
             const QString problem = valid(v.toDouble());
             if (!problem.isEmpty())
@@ -62,7 +63,7 @@ public:
         if (v.isUndefined())
             return required ? fail(field, QStringLiteral("missing")) : m_ok;
         if (!v.isString())
-            return fail(field, QStringLiteral("expected a string"));
+            return fail(field, ProjectText::tr("expected a string"));
         *out = v.toString();
         return m_ok;
     }
@@ -76,17 +77,17 @@ private:
 
 QString nonNegative(double v)
 {
-    return v < 0 ? QStringLiteral("must not be negative") : QString();
+    return v < 0 ? ProjectText::tr("must not be negative") : QString();
 }
 
 QString positive(double v)
 {
-    return v <= 0 ? QStringLiteral("must be positive") : QString();
+    return v <= 0 ? ProjectText::tr("must be positive") : QString();
 }
 
 QString unitInterval(double v)
 {
-    return v < 0 || v > 1 ? QStringLiteral("must be between 0 and 1") : QString();
+    return v < 0 || v > 1 ? ProjectText::tr("must be between 0 and 1") : QString();
 }
 
 // Reads the array `field` of `json`, calling read(object, path) for each element; returns false
@@ -99,7 +100,7 @@ bool readArray(const QJsonObject &json, const char *field, QString *error,
         return true;
     if (!v.isArray()) {
         if (error)
-            *error = key(field) + QStringLiteral(": expected an array");
+            *error = ProjectText::tr("%1: expected an array").arg(key(field));
         return false;
     }
     const QJsonArray array = v.toArray();
@@ -107,7 +108,7 @@ bool readArray(const QJsonObject &json, const char *field, QString *error,
         const QString path = key(field) + u'[' + QString::number(i) + u']';
         if (!array[i].isObject()) {
             if (error)
-                *error = path + QStringLiteral(": expected an object");
+                *error = ProjectText::tr("%1: expected an object").arg(path);
             return false;
         }
         if (!read(array[i].toObject(), path))
@@ -230,11 +231,12 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
     if (!top.number("version", &version, false))
         return std::nullopt;
     if (version != std::floor(version) || version < 1) {
-        top.fail("version", QStringLiteral("expected a positive integer"));
+        top.fail("version", ProjectText::tr("expected a positive integer"));
         return std::nullopt;
     }
     if (version > kJsonVersion) {
-        top.fail("version", QStringLiteral("%1 is newer than this Toonface reads (%2)").arg(version).arg(kJsonVersion));
+        top.fail(
+            "version", ProjectText::tr("%1 is newer than this Toonface reads (%2)").arg(version).arg(kJsonVersion));
         return std::nullopt;
     }
     if (!top.number("fps", &timeline.m_frameRate, false, positive))
@@ -244,7 +246,7 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
     if (!smoothingValue.isUndefined()) {
         if (!smoothingValue.isObject()) {
             if (error)
-                *error = QStringLiteral("smoothing: expected an object");
+                *error = ProjectText::tr("smoothing: expected an object");
             return std::nullopt;
         }
         FieldReader r(smoothingValue.toObject(), QStringLiteral("smoothing"), error);
@@ -263,7 +265,7 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
             return false;
         const auto parsed = mouthShapeFromName(shape);
         if (!parsed)
-            return r.fail("shape", QStringLiteral("unknown mouth shape '%1'").arg(shape));
+            return r.fail("shape", ProjectText::tr("unknown mouth shape '%1'").arg(shape));
         k.shape = *parsed;
         double duration = 0;
         const bool hasDuration = o.contains(QStringLiteral("duration"));
@@ -280,12 +282,12 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
         if (!r.number("start", &c.start, true) || !r.number("end", &c.end, true))
             return false;
         if (c.end < c.start)
-            return r.fail("end", QStringLiteral("must not be before start"));
+            return r.fail("end", ProjectText::tr("must not be before start"));
         if (!r.string("emotion", &name, true))
             return false;
         const auto parsed = emotionFromName(name);
         if (!parsed)
-            return r.fail("emotion", QStringLiteral("unknown emotion '%1'").arg(name));
+            return r.fail("emotion", ProjectText::tr("unknown emotion '%1'").arg(name));
         c.emotion = *parsed;
         if (!r.number("intensity", &c.intensity, false, unitInterval)
             || !r.number("fadeIn", &c.fadeIn, false, nonNegative)
@@ -330,21 +332,21 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
             return true;
         }
         if (!offsets.isObject())
-            return r.fail("offsets", QStringLiteral("expected an object"));
+            return r.fail("offsets", ProjectText::tr("expected an object"));
         const QJsonObject map = offsets.toObject();
         for (auto it = map.constBegin(); it != map.constEnd(); ++it) {
-            const QString where = r.pathOf("offsets") + u'.' + it.key() + QStringLiteral(": ");
+            const QString where = r.pathOf("offsets") + u'.' + it.key();
             auto failWith = [&](const QString &problem) {
                 if (error)
-                    *error = where + problem;
+                    *error = withProblem(where, problem);
                 return false;
             };
             if (pointIndex(it.key()) < 0)
-                return failWith(QStringLiteral("unknown point ID"));
+                return failWith(ProjectText::tr("unknown point ID"));
             const QJsonArray xy = it.value().toArray();
             if (!it.value().isArray() || xy.size() != 2 || !xy[0].isDouble() || !xy[1].isDouble()
                 || !std::isfinite(xy[0].toDouble()) || !std::isfinite(xy[1].toDouble()))
-                return failWith(QStringLiteral("expected [dx, dy], two numbers"));
+                return failWith(ProjectText::tr("expected [dx, dy], two numbers"));
             k.offsetsEs0.insert(it.key(), QPointF(xy[0].toDouble(), xy[1].toDouble()));
         }
         timeline.m_pose.append(k);
@@ -357,7 +359,7 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
     if (!audioValue.isUndefined() && !audioValue.isNull()) {
         if (!audioValue.isObject()) {
             if (error)
-                *error = QStringLiteral("audio: expected an object");
+                *error = ProjectText::tr("audio: expected an object");
             return std::nullopt;
         }
         FieldReader r(audioValue.toObject(), QStringLiteral("audio"), error);
@@ -372,7 +374,7 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
     if (!videoValue.isUndefined() && !videoValue.isNull()) {
         if (!videoValue.isObject()) {
             if (error)
-                *error = QStringLiteral("video: expected an object");
+                *error = ProjectText::tr("video: expected an object");
             return std::nullopt;
         }
         FieldReader r(videoValue.toObject(), QStringLiteral("video"), error);

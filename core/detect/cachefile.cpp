@@ -1,5 +1,7 @@
 #include "detect/cachefile.h"
 
+#include "i18n/coretext.h"
+
 #include <QDateTime>
 #include <QDir>
 #include <QFile>
@@ -98,34 +100,34 @@ bool readCacheFile(const QString &path, const char (&kind)[5], const CacheKey &k
 {
     auto file = std::make_shared<QFile>(path);
     if (!file->exists()) {
-        *why = QStringLiteral("there is no cache yet");
+        *why = DetectText::tr("there is no cache yet");
         return false;
     }
     if (!file->open(QIODevice::ReadOnly)) {
-        *why = QStringLiteral("the cache could not be opened: %1").arg(file->errorString());
+        *why = DetectText::tr("the cache could not be opened: %1").arg(file->errorString());
         return false;
     }
     const qint64 size = file->size();
     Header header {};
     if (size < qint64(sizeof header) || file->read(reinterpret_cast<char *>(&header), sizeof header) != sizeof header) {
-        *why = QStringLiteral("the cache is cut short");
+        *why = DetectText::tr("the cache is cut short");
         return false;
     }
     if (!std::equal(std::begin(kMagic), std::end(kMagic), header.magic) || header.byteOrder != kByteOrderTag
         || header.headerBytes != sizeof header || !std::equal(kind, kind + 4, header.kind)) {
-        *why = QStringLiteral("the file is not a cache of this kind");
+        *why = DetectText::tr("the file is not a cache of this kind");
         return false;
     }
     if (header.version != kVersion) {
-        *why = QStringLiteral("the cache is of another version (%1)").arg(header.version);
+        *why = DetectText::tr("the cache is of another version (%1)").arg(header.version);
         return false;
     }
     if (header.keySize != key.size || header.keyTime != key.time || header.keyChecksum != key.checksum) {
-        *why = QStringLiteral("the cache was made from another model");
+        *why = DetectText::tr("the cache was made from another model");
         return false;
     }
     if (header.blockBytes != quint64(size) - sizeof header) {
-        *why = QStringLiteral("the cache is %1 bytes, not the %2 its header gives")
+        *why = DetectText::tr("the cache is %1 bytes, not the %2 its header gives")
                    .arg(size)
                    .arg(header.blockBytes + sizeof header);
         return false;
@@ -141,14 +143,14 @@ bool readCacheFile(const QString &path, const char (&kind)[5], const CacheKey &k
         owner = std::shared_ptr<std::byte>(
             copy, [](std::byte *p) { ::operator delete(p, std::align_val_t(kAlignment)); });
         if (file->read(reinterpret_cast<char *>(copy), qint64(header.blockBytes)) != qint64(header.blockBytes)) {
-            *why = QStringLiteral("the cache could not be read: %1").arg(file->errorString());
+            *why = DetectText::tr("the cache could not be read: %1").arg(file->errorString());
             return false;
         }
         bytes = copy;
     }
     const std::span<const std::byte> block(bytes, header.blockBytes);
     if (cacheChecksum(block) != header.blockChecksum) {
-        *why = QStringLiteral("the cache is damaged (its checksum does not match)");
+        *why = DetectText::tr("the cache is damaged (its checksum does not match)");
         return false;
     }
     *out = {owner, block};
@@ -160,7 +162,7 @@ bool writeCacheFile(
 {
     const QString dir = QFileInfo(path).absolutePath();
     if (!QDir().mkpath(dir)) {
-        *error = QStringLiteral("the folder %1 could not be made").arg(dir);
+        *error = DetectText::tr("the folder %1 could not be made").arg(dir);
         return false;
     }
     removeStaleTemporaries(path);
@@ -178,13 +180,13 @@ bool writeCacheFile(
 
     QTemporaryFile temporary(path + QStringLiteral(".XXXXXX.tmp"));
     if (!temporary.open()) {
-        *error = QStringLiteral("%1 could not be written: %2").arg(path, temporary.errorString());
+        *error = DetectText::tr("%1 could not be written: %2").arg(path, temporary.errorString());
         return false;
     }
     if (temporary.write(reinterpret_cast<const char *>(&header), sizeof header) != sizeof header
         || temporary.write(reinterpret_cast<const char *>(block.data()), qint64(block.size())) != qint64(block.size())
         || !temporary.flush()) {
-        *error = QStringLiteral("%1 could not be written: %2").arg(path, temporary.errorString());
+        *error = DetectText::tr("%1 could not be written: %2").arg(path, temporary.errorString());
         return false;
     }
     temporary.close();
@@ -194,7 +196,7 @@ bool writeCacheFile(
     std::filesystem::rename(
         QFile::encodeName(temporary.fileName()).toStdString(), QFile::encodeName(path).toStdString(), ec);
     if (ec) {
-        *error = QStringLiteral("%1 could not be written: %2").arg(path, QString::fromLocal8Bit(ec.message()));
+        *error = DetectText::tr("%1 could not be written: %2").arg(path, QString::fromLocal8Bit(ec.message()));
         return false;
     }
     temporary.setAutoRemove(false);

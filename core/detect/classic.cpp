@@ -1,6 +1,7 @@
 #include "detect/classic.h"
 
 #include "detect/tsai.h"
+#include "i18n/coretext.h"
 
 #include <QElapsedTimer>
 #include <QLineF>
@@ -525,7 +526,7 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
         stage.restart();
     };
     if (input.isNull() || input.width() < 16 || input.height() < 16) {
-        res.error = QStringLiteral("The image is too small for the classic method.");
+        res.error = DetectText::tr("The image is too small for the classic method.");
         return res;
     }
     // The pipeline works on a copy at most 640 pixels on its longer side; points go back to
@@ -727,7 +728,7 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
     res.timingMs.insert(QStringLiteral("eyePair"), eyePairMs);
     stage.restart();
     if (eyes.empty()) {
-        res.error = QStringLiteral("No eye pair was found (the classic method needs a large frontal face "
+        res.error = DetectText::tr("No eye pair was found (the classic method needs a large frontal face "
                                    "on a plain background).");
         return res;
     }
@@ -741,28 +742,28 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
         const double mouth = mouthRowContrast(I, l, r);
         QStringList failed;
         if (reach.below <= 0 && reach.side <= 0)
-            failed << QStringLiteral("the point between the eyes is not in the face region");
+            failed << DetectText::tr("the point between the eyes is not in the face region");
         else if (reach.below < kMinReachBelow)
-            failed << QStringLiteral("the face region reaches %1 eye distances below it (%2 needed)")
+            failed << DetectText::tr("the face region reaches %1 eye distances below it (%2 needed)")
                           .arg(reach.below, 0, 'f', 2)
                           .arg(kMinReachBelow);
         if ((reach.below > 0 || reach.side > 0) && (reach.side < kMinReachSide || reach.side > kMaxReachSide))
-            failed << QStringLiteral("%1 eye distances to its nearer side (%2 .. %3 needed)")
+            failed << DetectText::tr("%1 eye distances to its nearer side (%2 .. %3 needed)")
                           .arg(reach.side, 0, 'f', 2)
                           .arg(kMinReachSide)
                           .arg(kMaxReachSide);
         if (mouth < kMinMouthRowContrast)
-            failed << QStringLiteral("no mouth row below it (the darkest row is %1% darker than the median, %2% "
+            failed << DetectText::tr("no mouth row below it (the darkest row is %1% darker than the median, %2% "
                                      "needed)")
                           .arg(int(std::lround(100 * mouth)))
                           .arg(int(std::lround(100 * kMinMouthRowContrast)));
         res.faceCheck
-            = QStringLiteral("the best eye pair by eq. (3.5), at (%1, %2) and (%3, %4), has no face around it: %5")
+            = DetectText::tr("the best eye pair by eq. (3.5), at (%1, %2) and (%3, %4), has no face around it: %5")
                   .arg(std::lround(l.x() / scale))
                   .arg(std::lround(l.y() / scale))
                   .arg(std::lround(r.x() / scale))
                   .arg(std::lround(r.y() / scale))
-                  .arg(failed.join(QStringLiteral("; ")));
+                  .arg(joinReasons(failed));
     }
     for (int k = 0; k < 2; ++k) {
         const Region &r = *eyeRegion[k];
@@ -1127,7 +1128,7 @@ ClassicResult detectClassic(const QImage &input, bool withDebugImages, QRect fac
     face.setImageSize(input.size());
     res.face = face;
     if (!face.isValid()) {
-        res.error = QStringLiteral("The classic method found an eye pair but could not place a face around it "
+        res.error = DetectText::tr("The classic method found an eye pair but could not place a face around it "
                                    "(a feature collapsed to nothing).");
         res.timingMs.insert(QStringLiteral("total"), total.nsecsElapsed() / 1e6);
         return res;

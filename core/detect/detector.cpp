@@ -10,6 +10,7 @@
 #include "detect/landmarkmap.h"
 #include "detect/landmarkpredictor.h"
 #include "face/averageface.h"
+#include "i18n/coretext.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -433,7 +434,7 @@ DetectionResult detectWithClassic(
     result.debugImages = c.debugImages;
     if (!c.ok || !c.eyePairInFace) {
         result.status = DetectStatus::NoFace;
-        result.error = c.ok ? QStringLiteral("The classic method found no face: %1.").arg(c.faceCheck) : c.error;
+        result.error = c.ok ? DetectText::tr("The classic method found no face: %1.").arg(c.faceCheck) : c.error;
         return result;
     }
     result.status = DetectStatus::Ok;
@@ -520,7 +521,7 @@ DetectionResult runDetection(
     auto cancelled = [&] {
         if (cancel && cancel->load()) {
             result.status = DetectStatus::Cancelled;
-            result.error = QStringLiteral("Face detection was cancelled.");
+            result.error = DetectText::tr("Face detection was cancelled.");
             return true;
         }
         return false;
@@ -528,7 +529,7 @@ DetectionResult runDetection(
 
     if (image.isNull()) {
         result.status = DetectStatus::BadImage;
-        result.error = QStringLiteral("The image is empty.");
+        result.error = DetectText::tr("The image is empty.");
         return result;
     }
     if (options.method == DetectionMethod::Classic)

@@ -1,6 +1,7 @@
 #include "detect/facescan.h"
 
 #include "detect/grayview.h"
+#include "i18n/coretext.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -65,10 +66,10 @@ FaceDetectorLoad loadDetector(const QString &cacheDir, dlib::frontal_face_detect
                     load.ms = timer.nsecsElapsed() / 1e6;
                     return load;
                 }
-                load.cacheNote = QStringLiteral("the cache is damaged (it holds no detector)");
+                load.cacheNote = DetectText::tr("the cache is damaged (it holds no detector)");
             } catch (const std::exception &e) {
                 load.cacheNote
-                    = QStringLiteral("the cache is damaged (%1)").arg(QString::fromLocal8Bit(e.what()).trimmed());
+                    = DetectText::tr("the cache is damaged (%1)").arg(QString::fromLocal8Bit(e.what()).trimmed());
             }
         }
     }

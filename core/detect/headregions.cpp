@@ -2,6 +2,7 @@
 
 #include "detect/landmarkmap.h"
 #include "detect/regions.h"
+#include "i18n/coretext.h"
 
 #include <QPainter>
 #include <QPolygonF>
@@ -136,7 +137,7 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
 {
     HeadRegionReport rep;
     if (image.isNull() || !face->isValid()) {
-        rep.hairProblem = QStringLiteral("no face to search around");
+        rep.hairProblem = DetectText::tr("no face to search around");
         return rep;
     }
     Work w;
@@ -144,7 +145,7 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
     const HeadGeometry &g = w.g;
     const double d = g.eyeDistance;
     if (d < 6) {
-        rep.hairProblem = QStringLiteral("the face is too small");
+        rep.hairProblem = DetectText::tr("the face is too small");
         return rep;
     }
     auto L = [&](const char *id) { return g.toLocal(face->point(id)); };
@@ -158,7 +159,7 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
         w.crop = corners.boundingRect().toAlignedRect().intersected(image.rect());
     }
     if (w.crop.width() < 16 || w.crop.height() < 16) {
-        rep.hairProblem = QStringLiteral("the head is outside the photo");
+        rep.hairProblem = DetectText::tr("the head is outside the photo");
         return rep;
     }
     w.scale = std::min(1.0, kWorkEyeDistance / d);
@@ -186,7 +187,7 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
         rect = corners.boundingRect().toAlignedRect().intersected(QRect(QPoint(0, 0), w.size));
     }
     if (rect.width() < 3 || rect.height() < 3) {
-        rep.hairProblem = QStringLiteral("the face is outside the photo");
+        rep.hairProblem = DetectText::tr("the face is outside the photo");
         return rep;
     }
     const Plane I = intensityPlane(work);
@@ -208,7 +209,7 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
                     ++n;
                 }
         if (n < 10) {
-            rep.hairProblem = QStringLiteral("the face's central rectangle is dark");
+            rep.hairProblem = DetectText::tr("the face's central rectangle is dark");
             return rep;
         }
         m2 = sum / n;
@@ -266,7 +267,7 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
             }
         }
         if (label == 0) {
-            rep.hairProblem = QStringLiteral("the face region misses the face");
+            rep.hairProblem = DetectText::tr("the face region misses the face");
             return rep;
         }
         for (size_t i = 0; i < labels.size(); ++i)
@@ -420,7 +421,7 @@ HeadRegionReport refineFromRegions(FaceModel *face, const QImage &image, bool wi
         radius[side] = smooth;
     }
     if (foundCount < int(0.7 * 2 * kRays)) {
-        rep.hairProblem = QStringLiteral("the head's outline could not be followed (%1 of %2 searches ended on it)")
+        rep.hairProblem = DetectText::tr("the head's outline could not be followed (%1 of %2 searches ended on it)")
                               .arg(foundCount)
                               .arg(2 * kRays);
     } else {

@@ -1,5 +1,7 @@
 #include "detect/landmarkmap.h"
 
+#include "i18n/coretext.h"
+
 #include <QFile>
 #include <QLineF>
 #include <QRectF>
@@ -387,7 +389,7 @@ bool readIbugPts(const QString &path, std::array<QPointF, kIbugPointCount> *pts,
 {
     auto fail = [&](const QString &why) {
         if (error)
-            *error = QStringLiteral("%1: %2").arg(path, why);
+            *error = withProblem(path, why);
         return false;
     };
     QFile file(path);
@@ -396,17 +398,17 @@ bool readIbugPts(const QString &path, std::array<QPointF, kIbugPointCount> *pts,
     const QString text = QString::fromUtf8(file.read(1 << 20));
     const qsizetype open = text.indexOf(QLatin1Char('{')), close = text.indexOf(QLatin1Char('}'));
     if (open < 0 || close < open)
-        return fail(QStringLiteral("no { } block of points"));
+        return fail(DetectText::tr("no { } block of points"));
     static const QRegularExpression space(QStringLiteral("\\s+"));
     const QStringList nums = text.mid(open + 1, close - open - 1).split(space, Qt::SkipEmptyParts);
     if (nums.size() != 2 * kIbugPointCount)
         return fail(
-            QStringLiteral("%1 numbers where %2 coordinates were expected").arg(nums.size()).arg(2 * kIbugPointCount));
+            DetectText::tr("%1 numbers where %2 coordinates were expected").arg(nums.size()).arg(2 * kIbugPointCount));
     for (int i = 0; i < kIbugPointCount; ++i) {
         bool okX = false, okY = false;
         const double x = nums[2 * i].toDouble(&okX), y = nums[2 * i + 1].toDouble(&okY);
         if (!okX || !okY)
-            return fail(QStringLiteral("point %1 is not two numbers").arg(i + 1));
+            return fail(DetectText::tr("point %1 is not two numbers").arg(i + 1));
         (*pts)[i] = QPointF(x - 1, y - 1);
     }
     return true;

@@ -3,6 +3,7 @@
 #include "detect/grayview.h"
 #include "detect/landmarkflat.h"
 #include "detect/shapemodelfile.h"
+#include "i18n/coretext.h"
 
 #include <QDir>
 #include <QFile>
@@ -42,8 +43,11 @@ LandmarkPredictor::~LandmarkPredictor() = default;
 
 namespace {
 
-const QString kMissing = QStringLiteral("is missing (install the package libdlib-data, or set "
-                                        "TOONFACE_LANDMARK_MODEL to shape_predictor_68_face_landmarks.dat).");
+QString missingText()
+{
+    return DetectText::tr("is missing (install the package libdlib-data, or set "
+                          "TOONFACE_LANDMARK_MODEL to shape_predictor_68_face_landmarks.dat).");
+}
 
 using flat::alignUp;
 using flat::kMagic;
@@ -211,12 +215,12 @@ std::shared_ptr<const LandmarkPredictor> LandmarkPredictor::read(const QString &
 {
     auto fail = [&](const QString &why) {
         if (error)
-            *error = QStringLiteral("The landmark model %1 %2").arg(QDir::toNativeSeparators(path), why);
+            *error = DetectText::tr("The landmark model %1 %2").arg(QDir::toNativeSeparators(path), why);
         return std::shared_ptr<const LandmarkPredictor>();
     };
     const QFileInfo info(path);
     if (!info.isFile() || !info.isReadable())
-        return fail(kMissing);
+        return fail(missingText());
     const ShapeModelFile file = readShapeModelFile(path);
     if (file.status == ShapeModelFile::Status::OldFormat)
         return readThroughDlib(path, error);
@@ -225,7 +229,7 @@ std::shared_ptr<const LandmarkPredictor> LandmarkPredictor::read(const QString &
     QString why;
     auto model = fromFlat(file.owner, file.block, &why);
     if (!model)
-        return fail(QStringLiteral("could not be read: %1").arg(why));
+        return fail(DetectText::tr("could not be read: %1").arg(why));
     return model;
 }
 
@@ -233,19 +237,19 @@ std::shared_ptr<const LandmarkPredictor> LandmarkPredictor::readThroughDlib(cons
 {
     auto fail = [&](const QString &why) {
         if (error)
-            *error = QStringLiteral("The landmark model %1 %2").arg(QDir::toNativeSeparators(path), why);
+            *error = DetectText::tr("The landmark model %1 %2").arg(QDir::toNativeSeparators(path), why);
         return std::shared_ptr<const LandmarkPredictor>();
     };
     const QFileInfo info(path);
     if (!info.isFile() || !info.isReadable())
-        return fail(kMissing);
+        return fail(missingText());
 
     std::shared_ptr<std::byte> block;
     size_t size = 0;
     try {
         std::ifstream in(QFile::encodeName(path).toStdString(), std::ios::binary);
         if (!in)
-            return fail(QStringLiteral("could not be opened."));
+            return fail(DetectText::tr("could not be opened."));
         int version = 0;
         dlib::deserialize(version, in);
         if (version != 1)
@@ -253,7 +257,7 @@ std::shared_ptr<const LandmarkPredictor> LandmarkPredictor::readThroughDlib(cons
         dlib::matrix<float, 0, 1> initial;
         dlib::deserialize(initial, in);
         if (initial.size() != kShapeValues)
-            return fail(QStringLiteral("gives %1 points, not the 68 of the iBUG scheme.").arg(initial.size() / 2));
+            return fail(DetectText::tr("gives %1 points, not the 68 of the iBUG scheme.").arg(initial.size() / 2));
         std::vector<ReadCascade> cascades;
         readForest(in, &cascades);
         std::vector<std::vector<unsigned long>> anchors;
@@ -270,12 +274,12 @@ std::shared_ptr<const LandmarkPredictor> LandmarkPredictor::readThroughDlib(cons
         }
         std::tie(block, size) = layOut(initial, cascades);
     } catch (const std::exception &e) {
-        return fail(QStringLiteral("could not be read: %1").arg(QString::fromLocal8Bit(e.what()).trimmed()));
+        return fail(DetectText::tr("could not be read: %1").arg(QString::fromLocal8Bit(e.what()).trimmed()));
     }
     QString why;
     auto model = fromFlat(block, std::span<const std::byte>(block.get(), size), &why);
     if (!model)
-        return fail(QStringLiteral("could not be read: %1").arg(why));
+        return fail(DetectText::tr("could not be read: %1").arg(why));
     return model;
 }
 

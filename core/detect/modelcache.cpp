@@ -1,5 +1,7 @@
 #include "detect/modelcache.h"
 
+#include "i18n/coretext.h"
+
 #include <QCryptographicHash>
 #include <QDir>
 #include <QElapsedTimer>
@@ -76,7 +78,7 @@ LandmarkModelLoad loadLandmarkModel(const QString &modelPath, const QString &cac
             load.cache = CacheUse::Used;
             return finish();
         }
-        load.cacheNote = QStringLiteral("the cache is damaged (%1)").arg(damage);
+        load.cacheNote = DetectText::tr("the cache is damaged (%1)").arg(damage);
     }
     load.model = LandmarkPredictor::read(modelPath, &load.error);
     if (!load.model)

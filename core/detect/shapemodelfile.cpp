@@ -1,6 +1,7 @@
 #include "detect/shapemodelfile.h"
 
 #include "detect/landmarkflat.h"
+#include "i18n/coretext.h"
 
 #include <QFile>
 
@@ -124,12 +125,12 @@ public:
 
     [[noreturn]] void malformed(const char *what) const
     {
-        throw Malformed {QStringLiteral("could not be read: %1 at byte %2").arg(QLatin1StringView(what)).arg(at())};
+        throw Malformed {DetectText::tr("could not be read: %1 at byte %2").arg(QLatin1StringView(what)).arg(at())};
     }
     [[noreturn]] void cutShort() const
     {
         throw Malformed {
-            QStringLiteral("could not be read: it ends early (at byte %1, in the middle of the model)").arg(at())};
+            DetectText::tr("could not be read: it ends early (at byte %1, in the middle of the model)").arg(at())};
     }
 
 private:
@@ -186,7 +187,7 @@ public:
         m_mapping->data
             = mmap(nullptr, capacity, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
         if (m_mapping->data == MAP_FAILED)
-            throw Malformed {QStringLiteral("could not be read: no memory for it (%1)")
+            throw Malformed {DetectText::tr("could not be read: no memory for it (%1)")
                                  .arg(QString::fromLocal8Bit(std::strerror(errno)))};
     }
 
@@ -241,7 +242,7 @@ void decode(Decoder &in, Block &block)
     const auto [rows, columns] = in.matrixSize();
     if (columns != 1 || rows != kShapeValues) {
         if (columns == 1 && rows >= 0 && rows % 2 == 0 && rows < 1000000)
-            throw Malformed {QStringLiteral("gives %1 points, not the 68 of the iBUG scheme.").arg(rows / 2)};
+            throw Malformed {DetectText::tr("gives %1 points, not the 68 of the iBUG scheme.").arg(rows / 2)};
         in.malformed("a mean shape that is not a column of points");
     }
     Header header {};
@@ -338,7 +339,7 @@ ShapeModelFile readShapeModelFile(const QString &path)
     ShapeModelFile out;
     const int fd = open(QFile::encodeName(path).constData(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) {
-        out.error = QStringLiteral("could not be opened: %1").arg(QString::fromLocal8Bit(std::strerror(errno)));
+        out.error = DetectText::tr("could not be opened: %1").arg(QString::fromLocal8Bit(std::strerror(errno)));
         return out;
     }
     struct stat info
@@ -352,7 +353,7 @@ ShapeModelFile readShapeModelFile(const QString &path)
     }
     close(fd);
     if (file.data == MAP_FAILED && info.st_size > 0) {
-        out.error = QStringLiteral("could not be read: %1").arg(QString::fromLocal8Bit(std::strerror(errno)));
+        out.error = DetectText::tr("could not be read: %1").arg(QString::fromLocal8Bit(std::strerror(errno)));
         return out;
     }
     Decoder in(static_cast<const uchar *>(file.data == MAP_FAILED ? nullptr : file.data), file.size);

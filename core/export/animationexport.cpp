@@ -5,6 +5,7 @@
 #include "export/smilexport.h"
 #include "export/videoencoder.h"
 #include "face/pose.h"
+#include "i18n/coretext.h"
 #include "io/project.h"
 #include "media/pngframes.h"
 #include "render/svgface.h"
@@ -29,7 +30,7 @@ constexpr double kMaxFps = 120;
 
 ExportResult result(ExportStatus status, const QString &file, const QString &problem)
 {
-    return {status, QDir::toNativeSeparators(file) + QStringLiteral(": ") + problem};
+    return {status, withProblem(QDir::toNativeSeparators(file), problem)};
 }
 
 // Reports rising fractions of the whole export: [from, to] of it for one stage.
@@ -88,13 +89,13 @@ std::optional<ExportResult> checkRequest(const ExportRequest &request, SvgFace *
 {
     const QString out = request.outputPath;
     if (out.isEmpty())
-        return ExportResult {ExportStatus::BadInput, QStringLiteral("no output file given")};
+        return ExportResult {ExportStatus::BadInput, ExportText::tr("no output file given")};
     if (request.size != 0 && (request.size < kMinSize || request.size > kMaxSize))
         return result(ExportStatus::BadInput, out,
-            QStringLiteral("unsupported size %1 (from %2 to %3 pixels)").arg(request.size).arg(kMinSize).arg(kMaxSize));
+            ExportText::tr("unsupported size %1 (from %2 to %3 pixels)").arg(request.size).arg(kMinSize).arg(kMaxSize));
     if (!std::isfinite(request.fps) || request.fps < 0 || request.fps > kMaxFps)
         return result(ExportStatus::BadInput, out,
-            QStringLiteral("unsupported frame rate %1 (more than 0, up to %2)").arg(request.fps).arg(kMaxFps));
+            ExportText::tr("unsupported frame rate %1 (more than 0, up to %2)").arg(request.fps).arg(kMaxFps));
     for (const QString &layer : request.layerFiles) {
         QString error;
         if (!face->addLayerFile(layer, &error))
@@ -103,17 +104,17 @@ std::optional<ExportResult> checkRequest(const ExportRequest &request, SvgFace *
     const QString sound = soundPath(request);
     const bool silent = request.format == AnimationFormat::Gif || request.format == AnimationFormat::PngSequence;
     if (!silent && !sound.isEmpty() && !QFileInfo(sound).isFile())
-        return result(ExportStatus::BadInput, sound, QStringLiteral("the sound file does not exist"));
+        return result(ExportStatus::BadInput, sound, ExportText::tr("the sound file does not exist"));
     const QFileInfo target(QDir::cleanPath(out));
     if (!target.absoluteDir().exists())
         return result(ExportStatus::Failed, out,
-            QStringLiteral("cannot write: the folder %1 does not exist")
+            ExportText::tr("cannot write: the folder %1 does not exist")
                 .arg(QDir::toNativeSeparators(target.absolutePath())));
     if (request.format == AnimationFormat::PngSequence ? target.exists() && !target.isDir() : target.isDir())
         return result(ExportStatus::Failed, out,
             request.format == AnimationFormat::PngSequence
-                ? QStringLiteral("cannot write PNG frames: it is a file, not a folder")
-                : QStringLiteral("cannot write: it is a folder"));
+                ? ExportText::tr("cannot write PNG frames: it is a file, not a folder")
+                : ExportText::tr("cannot write: it is a folder"));
     return std::nullopt;
 }
 
@@ -141,13 +142,13 @@ ExportResult exportDocument(const ExportRequest &request, const SvgFace &face, c
     // when it is not committed.
     QSaveFile file(out);
     if (!file.open(QIODevice::WriteOnly) || file.write(data) != data.size())
-        return result(ExportStatus::Failed, out, QStringLiteral("cannot write: %1").arg(file.errorString()));
+        return result(ExportStatus::Failed, out, ExportText::tr("cannot write: %1").arg(file.errorString()));
     if (isCancelled(cancel)) {
         file.cancelWriting();
         return result(ExportStatus::Cancelled, out, QStringLiteral("cancelled"));
     }
     if (!file.commit())
-        return result(ExportStatus::Failed, out, QStringLiteral("cannot write: %1").arg(file.errorString()));
+        return result(ExportStatus::Failed, out, ExportText::tr("cannot write: %1").arg(file.errorString()));
     progress.finish();
     return {ExportStatus::Done, {}};
 }
@@ -196,7 +197,7 @@ bool placeFrames(TemporaryFolder &from, const QString &to, QString *problem)
         std::filesystem::rename(
             QFile::encodeName(from.path()).toStdString(), QFile::encodeName(target).toStdString(), ec);
         if (ec) {
-            *problem = QStringLiteral("cannot write: %1").arg(QString::fromStdString(ec.message()));
+            *problem = ExportText::tr("cannot write: %1").arg(QString::fromStdString(ec.message()));
             return false;
         }
         from.release();
@@ -209,7 +210,7 @@ bool placeFrames(TemporaryFolder &from, const QString &to, QString *problem)
         std::filesystem::rename(QFile::encodeName(source.filePath(name)).toStdString(),
             QFile::encodeName(dir.filePath(name)).toStdString(), ec);
         if (ec) {
-            *problem = QStringLiteral("cannot write %1: %2").arg(name, QString::fromStdString(ec.message()));
+            *problem = ExportText::tr("cannot write %1: %2").arg(name, QString::fromStdString(ec.message()));
             return false;
         }
     }
@@ -252,7 +253,7 @@ ExportResult exportFrames(const ExportRequest &request, const SvgFace &face, con
         folder.emplace(out);
         if (folder->path().isEmpty())
             return result(ExportStatus::Failed, out,
-                QStringLiteral("cannot write: cannot create a folder in %1")
+                ExportText::tr("cannot write: cannot create a folder in %1")
                     .arg(QDir::toNativeSeparators(QFileInfo(QDir::cleanPath(out)).absolutePath())));
         path = folder->path();
     }
@@ -278,7 +279,7 @@ ExportResult exportFrames(const ExportRequest &request, const SvgFace &face, con
     }
     if (!rendered) {
         writer.cancel();
-        return error.isEmpty() ? result(ExportStatus::Failed, out, QStringLiteral("rendering stopped"))
+        return error.isEmpty() ? result(ExportStatus::Failed, out, ExportText::tr("rendering stopped"))
                                : ExportResult {ExportStatus::Failed, named(error)};
     }
     if (!writer.finish(&error))

@@ -1,5 +1,7 @@
 #include "export/videosink.h"
 
+#include "i18n/coretext.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -183,10 +185,10 @@ public:
     {
         const AVCodec *gif = avcodec_find_encoder(AV_CODEC_ID_GIF);
         if (!gif)
-            return fail(error, path, QStringLiteral("cannot write GIF: FFmpeg has no GIF encoder"));
+            return fail(error, path, ExportText::tr("cannot write GIF: FFmpeg has no GIF encoder"));
         if (size.width() < 1 || size.height() < 1 || size.width() > 65535 || size.height() > 65535)
             return fail(error, path,
-                QStringLiteral("unsupported size %1x%2 (GIF takes 1 to 65535 pixels a side)")
+                ExportText::tr("unsupported size %1x%2 (GIF takes 1 to 65535 pixels a side)")
                     .arg(size.width())
                     .arg(size.height()));
         m_step = std::max(1, int(std::ceil(fps / std::max(1.0, options.gifMaxFps) - 1e-9)));
@@ -206,7 +208,7 @@ public:
         int r = avcodec_open2(v, gif, nullptr);
         if (r < 0) {
             cancel();
-            return fail(error, path, QStringLiteral("cannot start the GIF encoder: %1").arg(avError(r)));
+            return fail(error, path, ExportText::tr("cannot start the GIF encoder: %1").arg(avError(r)));
         }
         m_videoStream = addStream(v, error);
         if (!m_videoStream) {
@@ -220,7 +222,7 @@ public:
         if (av_frame_get_buffer(m_frame.get(), 0) < 0) {
             cancel();
             return fail(
-                error, path, QStringLiteral("out of memory for a %1x%2 frame").arg(size.width()).arg(size.height()));
+                error, path, ExportText::tr("out of memory for a %1x%2 frame").arg(size.width()).arg(size.height()));
         }
         AVDictionary *opts = nullptr;
         av_dict_set(&opts, "loop", "0", 0);
@@ -247,7 +249,7 @@ protected:
             m_palette.build(images);
         }
         if (av_frame_make_writable(m_frame.get()) < 0)
-            return fail(error, m_path, QStringLiteral("out of memory"));
+            return fail(error, m_path, ExportText::tr("out of memory"));
         m_palette.map(rgb, m_frame->data[0], m_frame->linesize[0]);
         std::copy(
             m_palette.colours().begin(), m_palette.colours().end(), reinterpret_cast<uint32_t *>(m_frame->data[1]));

@@ -1,5 +1,6 @@
 #include "export/videosink.h"
 
+#include "i18n/coretext.h"
 #include "media/audiofeed.h"
 
 #include <algorithm>
@@ -25,10 +26,10 @@ public:
     {
         const AVCodec *h264 = avcodec_find_encoder_by_name("libx264");
         if (!h264)
-            return fail(error, path, QStringLiteral("cannot write MP4: FFmpeg has no H.264 encoder (libx264)"));
+            return fail(error, path, ExportText::tr("cannot write MP4: FFmpeg has no H.264 encoder (libx264)"));
         if (size.width() < 2 || size.height() < 2 || size.width() > 8192 || size.height() > 8192)
             return fail(error, path,
-                QStringLiteral("unsupported size %1x%2 (MP4 takes 2 to 8192 pixels a side)")
+                ExportText::tr("unsupported size %1x%2 (MP4 takes 2 to 8192 pixels a side)")
                     .arg(size.width())
                     .arg(size.height()));
         m_size = size;
@@ -59,7 +60,7 @@ public:
         if (r < 0) {
             cancel();
             return fail(error, path,
-                QStringLiteral("cannot start the H.264 encoder at %1x%2: %3")
+                ExportText::tr("cannot start the H.264 encoder at %1x%2: %3")
                     .arg(m_encoded.width())
                     .arg(m_encoded.height())
                     .arg(avError(r)));
@@ -91,14 +92,14 @@ public:
         if (r < 0) {
             cancel();
             return fail(
-                error, path, QStringLiteral("out of memory for a %1x%2 frame").arg(size.width()).arg(size.height()));
+                error, path, ExportText::tr("out of memory for a %1x%2 frame").arg(size.width()).arg(size.height()));
         }
         m_sws.reset(sws_getContext(m_encoded.width(), m_encoded.height(), AV_PIX_FMT_RGB32, m_encoded.width(),
             m_encoded.height(), AV_PIX_FMT_YUV420P, SWS_BILINEAR, nullptr, nullptr, nullptr));
         if (!m_sws) {
             cancel();
             return fail(
-                error, path, QStringLiteral("cannot convert %1x%2 RGB to YUV").arg(size.width()).arg(size.height()));
+                error, path, ExportText::tr("cannot convert %1x%2 RGB to YUV").arg(size.width()).arg(size.height()));
         }
         // RGB (full range) to BT.709 limited-range YUV, matching the stream's colour tags.
         const int *coefficients = sws_getCoefficients(SWS_CS_ITU709);
@@ -120,7 +121,7 @@ protected:
     {
         const QImage rgb = padded(opaqueRgb32(frame, m_background), m_encoded);
         if (av_frame_make_writable(m_frame.get()) < 0)
-            return fail(error, m_path, QStringLiteral("out of memory"));
+            return fail(error, m_path, ExportText::tr("out of memory"));
         // swscale reads and writes whole SIMD blocks: it gets FFmpeg's padded buffers, not QImage's.
         for (int y = 0; y < rgb.height(); ++y)
             std::memcpy(
@@ -146,7 +147,7 @@ private:
     {
         const AVCodec *aac = avcodec_find_encoder(AV_CODEC_ID_AAC);
         if (!aac)
-            return fail(error, path, QStringLiteral("cannot write MP4: FFmpeg has no AAC encoder"));
+            return fail(error, path, ExportText::tr("cannot write MP4: FFmpeg has no AAC encoder"));
         m_feed = std::make_unique<AudioFeed>();
         if (!m_feed->open(audio, error))
             return false;
@@ -165,7 +166,7 @@ private:
             a->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
         const int r = avcodec_open2(a, aac, nullptr);
         if (r < 0)
-            return fail(error, path, QStringLiteral("cannot start the AAC encoder: %1").arg(avError(r)));
+            return fail(error, path, ExportText::tr("cannot start the AAC encoder: %1").arg(avError(r)));
         m_audioStream = addStream(a, error);
         if (!m_audioStream)
             return false;
@@ -175,7 +176,7 @@ private:
         av_channel_layout_default(&m_audioFrame->ch_layout, 1);
         m_audioFrame->nb_samples = a->frame_size;
         if (av_frame_get_buffer(m_audioFrame.get(), 0) < 0)
-            return fail(error, path, QStringLiteral("out of memory"));
+            return fail(error, path, ExportText::tr("out of memory"));
         return true;
     }
 
@@ -198,7 +199,7 @@ private:
                 return true;
             const int n = int(std::min<int64_t>(frameSize, left));
             if (av_frame_make_writable(m_audioFrame.get()) < 0)
-                return fail(error, m_path, QStringLiteral("out of memory"));
+                return fail(error, m_path, ExportText::tr("out of memory"));
             m_audioFrame->nb_samples = n;
             if (!m_feed->read(reinterpret_cast<float *>(m_audioFrame->data[0]), n, error))
                 return false;

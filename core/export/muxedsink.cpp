@@ -1,5 +1,7 @@
 #include "export/videosink.h"
 
+#include "i18n/coretext.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
@@ -42,14 +44,14 @@ QImage padded(const QImage &rgb32, QSize size)
 bool MuxedSink::addFrame(const QImage &frame, QString *error)
 {
     if (!m_fmt)
-        return fail(error, m_path, QStringLiteral("the writer is closed"));
+        return fail(error, m_path, ExportText::tr("the writer is closed"));
     return encodeFrame(frame, error);
 }
 
 bool MuxedSink::finish(QString *error)
 {
     if (!m_fmt)
-        return fail(error, m_path, QStringLiteral("the writer is closed"));
+        return fail(error, m_path, ExportText::tr("the writer is closed"));
     if (!finishStreams(error) || !drain(m_video.get(), m_videoStream, nullptr, error)) {
         cancel();
         return false;
@@ -60,7 +62,7 @@ bool MuxedSink::finish(QString *error)
         r = avio_closep(&m_fmt->pb);
     if (r < 0) {
         cancel();
-        return fail(error, m_path, QStringLiteral("cannot write: %1").arg(avError(r)));
+        return fail(error, m_path, ExportText::tr("cannot write: %1").arg(avError(r)));
     }
     closeAll();
     if (QFileInfo::exists(m_path)) // a replaced file keeps its permissions, as with QSaveFile
@@ -70,7 +72,7 @@ bool MuxedSink::finish(QString *error)
         std::filesystem::path(localPath(m_path).toStdString()), ec);
     if (ec) {
         QFile::remove(m_temp);
-        return fail(error, m_path, QStringLiteral("cannot write: %1").arg(QString::fromStdString(ec.message())));
+        return fail(error, m_path, ExportText::tr("cannot write: %1").arg(QString::fromStdString(ec.message())));
     }
     m_temp.clear();
     return true;
@@ -95,9 +97,9 @@ bool MuxedSink::openOutput(const QString &path, const char *formatName, QString 
     const QFileInfo info(path);
     const QString dir = info.absolutePath();
     if (!QFileInfo(dir).isDir())
-        return fail(error, path, QStringLiteral("cannot write: the folder %1 does not exist").arg(dir));
+        return fail(error, path, ExportText::tr("cannot write: the folder %1 does not exist").arg(dir));
     if (info.isDir())
-        return fail(error, path, QStringLiteral("cannot write: it is a folder"));
+        return fail(error, path, ExportText::tr("cannot write: it is a folder"));
     // A new file (NewOnly) gets the usual permissions, 0666 less the umask, unlike a
     // QTemporaryFile's 0600.
     static std::atomic<int> serial = 0;
@@ -111,13 +113,13 @@ bool MuxedSink::openOutput(const QString &path, const char *formatName, QString 
             m_temp = name;
         else if (!QFileInfo::exists(name) || attempt > 100)
             return fail(error, path,
-                QStringLiteral("cannot write in the folder %1: %2")
+                ExportText::tr("cannot write in the folder %1: %2")
                     .arg(QDir::toNativeSeparators(dir), temp.errorString()));
     }
     int r = avformat_alloc_output_context2(&m_fmt, nullptr, formatName, localPath(m_temp).constData());
     if (r < 0 || !m_fmt)
         return fail(
-            error, path, QStringLiteral("FFmpeg has no %1 muxer: %2").arg(QString::fromLatin1(formatName), avError(r)));
+            error, path, ExportText::tr("FFmpeg has no %1 muxer: %2").arg(QString::fromLatin1(formatName), avError(r)));
     return true;
 }
 
@@ -125,11 +127,11 @@ bool MuxedSink::startWriting(AVDictionary **options, QString *error)
 {
     int r = avio_open(&m_fmt->pb, localPath(m_temp).constData(), AVIO_FLAG_WRITE);
     if (r < 0)
-        return fail(error, m_path, QStringLiteral("cannot write: %1").arg(avError(r)));
+        return fail(error, m_path, ExportText::tr("cannot write: %1").arg(avError(r)));
     r = avformat_write_header(m_fmt, options);
     av_dict_free(options);
     if (r < 0)
-        return fail(error, m_path, QStringLiteral("cannot write the header: %1").arg(avError(r)));
+        return fail(error, m_path, ExportText::tr("cannot write the header: %1").arg(avError(r)));
     m_headerWritten = true;
     m_packet.reset(av_packet_alloc());
     return true;
@@ -139,13 +141,13 @@ AVStream *MuxedSink::addStream(AVCodecContext *ctx, QString *error)
 {
     AVStream *stream = avformat_new_stream(m_fmt, nullptr);
     if (!stream) {
-        fail(error, m_path, QStringLiteral("out of memory"));
+        fail(error, m_path, ExportText::tr("out of memory"));
         return nullptr;
     }
     stream->time_base = ctx->time_base;
     const int r = avcodec_parameters_from_context(stream->codecpar, ctx);
     if (r < 0) {
-        fail(error, m_path, QStringLiteral("cannot set up the stream: %1").arg(avError(r)));
+        fail(error, m_path, ExportText::tr("cannot set up the stream: %1").arg(avError(r)));
         return nullptr;
     }
     return stream;
@@ -156,21 +158,21 @@ bool MuxedSink::drain(AVCodecContext *ctx, AVStream *stream, AVFrame *frame, QSt
     int r = avcodec_send_frame(ctx, frame);
     if (r < 0 && !(frame == nullptr && r == AVERROR_EOF))
         return fail(error, m_path,
-            QStringLiteral("cannot encode (%1): %2").arg(QString::fromLatin1(ctx->codec->name), avError(r)));
+            ExportText::tr("cannot encode (%1): %2").arg(QString::fromLatin1(ctx->codec->name), avError(r)));
     while (true) {
         r = avcodec_receive_packet(ctx, m_packet.get());
         if (r == AVERROR(EAGAIN) || r == AVERROR_EOF)
             return true;
         if (r < 0)
             return fail(error, m_path,
-                QStringLiteral("cannot encode (%1): %2").arg(QString::fromLatin1(ctx->codec->name), avError(r)));
+                ExportText::tr("cannot encode (%1): %2").arg(QString::fromLatin1(ctx->codec->name), avError(r)));
         if (m_packet->duration == 0 && ctx->codec_type == AVMEDIA_TYPE_VIDEO)
             m_packet->duration = m_frameDuration;
         av_packet_rescale_ts(m_packet.get(), ctx->time_base, stream->time_base);
         m_packet->stream_index = stream->index;
         r = av_interleaved_write_frame(m_fmt, m_packet.get());
         if (r < 0)
-            return fail(error, m_path, QStringLiteral("cannot write: %1").arg(avError(r)));
+            return fail(error, m_path, ExportText::tr("cannot write: %1").arg(avError(r)));
     }
 }
 

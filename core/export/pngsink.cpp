@@ -1,5 +1,6 @@
 #include "export/videosink.h"
 
+#include "i18n/coretext.h"
 #include "media/pngframes.h"
 
 #include <QDir>
@@ -20,14 +21,14 @@ public:
     {
         if (size.width() < 1 || size.height() < 1 || size.width() > 32768 || size.height() > 32768)
             return fail(error, folder,
-                QStringLiteral("unsupported size %1x%2 (PNG frames take 1 to 32768 pixels a side)")
+                ExportText::tr("unsupported size %1x%2 (PNG frames take 1 to 32768 pixels a side)")
                     .arg(size.width())
                     .arg(size.height()));
         const QFileInfo info(folder);
         if (info.exists() && !info.isDir())
-            return fail(error, folder, QStringLiteral("cannot write PNG frames: it is a file, not a folder"));
+            return fail(error, folder, ExportText::tr("cannot write PNG frames: it is a file, not a folder"));
         if (!QDir().mkpath(folder))
-            return fail(error, folder, QStringLiteral("cannot create the folder for PNG frames"));
+            return fail(error, folder, ExportText::tr("cannot create the folder for PNG frames"));
         m_dir = QDir(folder);
         m_folder = folder;
         return true;
@@ -39,16 +40,16 @@ public:
         QSaveFile file(path);
         if (!file.open(QIODevice::WriteOnly))
             return fail(error, m_folder,
-                QStringLiteral("cannot write %1: %2").arg(pngFrameName(m_count + 1), file.errorString()));
+                ExportText::tr("cannot write %1: %2").arg(pngFrameName(m_count + 1), file.errorString()));
         QImageWriter writer(&file, "png");
         if (!writer.write(frame)) {
             file.cancelWriting();
             return fail(error, m_folder,
-                QStringLiteral("cannot write %1: %2").arg(pngFrameName(m_count + 1), writer.errorString()));
+                ExportText::tr("cannot write %1: %2").arg(pngFrameName(m_count + 1), writer.errorString()));
         }
         if (!file.commit())
             return fail(error, m_folder,
-                QStringLiteral("cannot write %1: %2").arg(pngFrameName(m_count + 1), file.errorString()));
+                ExportText::tr("cannot write %1: %2").arg(pngFrameName(m_count + 1), file.errorString()));
         ++m_count;
         return true;
     }

@@ -4,6 +4,7 @@
 #include "export/smilutil.h"
 #include "export/svgnumbers.h"
 #include "export/svgxml.h"
+#include "i18n/coretext.h"
 #include "media/mediareader.h"
 #include "speech/audio.h"
 
@@ -82,7 +83,7 @@ bool resolveAudio(
     if (options.audio == ExportAudio::Embed) {
         QFile file(path);
         if (!file.open(QIODevice::ReadOnly)) {
-            *error = QStringLiteral("cannot read the audio file %1: %2").arg(path, file.errorString());
+            *error = SoundText::tr("cannot read the audio file %1: %2").arg(path, file.errorString());
             return false;
         }
         QByteArray aac;
@@ -93,7 +94,7 @@ bool resolveAudio(
         return true;
     }
     if (!info.isFile()) {
-        *error = QStringLiteral("the audio file %1 does not exist").arg(path);
+        *error = SoundText::tr("the audio file %1 does not exist").arg(path);
         return false;
     }
     const QDir base(options.outputDir.isEmpty() ? QDir::currentPath() : options.outputDir);

@@ -10,6 +10,7 @@
 #include "export/svgxml.h"
 #include "face/facemodel.h"
 #include "face/pose.h"
+#include "i18n/coretext.h"
 #include "render/svgface.h"
 
 #include <QHash>
@@ -110,7 +111,7 @@ bool prepareDrawing(const Timeline &timeline, const MouthShapeSet &shapes, const
     d->parts = d->svg.parts(start);
     QVector<double> neutralHead;
     if (!headNumbers(d->svg, HeadPose {}, &neutralHead)) {
-        *error = QStringLiteral("unexpected head transform '%1'").arg(d->svg.headTransform(HeadPose {}));
+        *error = ExportText::tr("unexpected head transform '%1'").arg(d->svg.headTransform(HeadPose {}));
         return false;
     }
     d->channels = makeChannels(d->parts, neutralHead, viewBoxOf(d->document));
@@ -214,7 +215,7 @@ bool framesDocument(const Drawing &d, const TimelineEvaluator &evaluator, const 
     const int frames = std::max(1, timeline.frameCount());
     const XmlNode *head = findById(d.document, "head");
     if (!head) {
-        *error = QStringLiteral("the drawing has no head group");
+        *error = ExportText::tr("the drawing has no head group");
         return false;
     }
     QHash<QByteArray, int> partOf;
@@ -382,7 +383,7 @@ bool framesDocument(const Drawing &d, const TimelineEvaluator &evaluator, const 
     constexpr int kChunk = 256;
     for (int first = 0; first < frames; first += kChunk) {
         if (cancelled(options)) {
-            *error = QStringLiteral("cancelled");
+            *error = ExportText::tr("cancelled");
             return false;
         }
         const int count = std::min(kChunk, frames - first);

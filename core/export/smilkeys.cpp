@@ -1,6 +1,7 @@
 #include "export/smilkeys.h"
 
 #include "export/smilutil.h"
+#include "i18n/coretext.h"
 
 #include <QHash>
 
@@ -215,7 +216,7 @@ bool buildGroup(const QVector<int> &which, const QVector<Channel> &channels, con
         keyTimes.append(grid.duration);
         segments.append(TimelineEvaluator::Segment::Mixed);
     }
-    const QString structureError = QStringLiteral("the drawing changes its structure with the pose");
+    const QString structureError = ExportText::tr("the drawing changes its structure with the pose");
     if (!table.add(nodes, sampler, which, grid)) {
         *error = structureError;
         return false;
@@ -253,7 +254,7 @@ bool buildGroup(const QVector<int> &which, const QVector<Channel> &channels, con
     const qint64 minSpan = std::max<qint64>(4, qint64(std::ceil(1e-3 / grid.time(1))));
     while (!pending.isEmpty()) {
         if (cancelled(options)) {
-            *error = QStringLiteral("cancelled");
+            *error = ExportText::tr("cancelled");
             return false;
         }
         // A span over one ease is checked at its quarters: the geometry being linear in the

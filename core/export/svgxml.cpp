@@ -1,6 +1,7 @@
 #include "export/svgxml.h"
 
 #include "export/svgnumbers.h"
+#include "i18n/coretext.h"
 
 #include <QVector>
 #include <QXmlStreamReader>
@@ -38,7 +39,7 @@ bool parseXml(const QByteArray &data, XmlNode *root, QString *error)
         }
     }
     if (reader.hasError()) {
-        *error = QStringLiteral("the drawing is not valid XML: %1").arg(reader.errorString());
+        *error = ExportText::tr("the drawing is not valid XML: %1").arg(reader.errorString());
         return false;
     }
     return true;

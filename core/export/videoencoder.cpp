@@ -1,6 +1,7 @@
 #include "export/videoencoder.h"
 
 #include "export/videosink.h"
+#include "i18n/coretext.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -48,13 +49,13 @@ bool VideoWriter::open(const QString &path, VideoFormat format, QSize size, doub
     QString *error, const VideoOptions &options)
 {
     if (d->sink)
-        return fail(error, path, QStringLiteral("the writer is already writing %1").arg(d->path));
+        return fail(error, path, ExportText::tr("the writer is already writing %1").arg(d->path));
     quietFfmpegLogs();
     if (!std::isfinite(fps) || fps <= 0 || fps > 240)
         return fail(
-            error, path, QStringLiteral("unsupported frame rate %1 (expected more than 0, up to 240)").arg(fps));
+            error, path, ExportText::tr("unsupported frame rate %1 (expected more than 0, up to 240)").arg(fps));
     if (size.isEmpty())
-        return fail(error, path, QStringLiteral("unsupported size %1x%2").arg(size.width()).arg(size.height()));
+        return fail(error, path, ExportText::tr("unsupported size %1x%2").arg(size.width()).arg(size.height()));
     d->path = path;
     d->size = size;
     d->encoded = size;
@@ -74,12 +75,12 @@ bool VideoWriter::addFrame(const QImage &frame, QString *error)
 {
     if (!d->sink)
         return fail(
-            error, d->path.isEmpty() ? QStringLiteral("video") : d->path, QStringLiteral("the writer is not open"));
+            error, d->path.isEmpty() ? QStringLiteral("video") : d->path, ExportText::tr("the writer is not open"));
     if (d->failed)
-        return fail(error, d->path, QStringLiteral("an earlier frame failed; cancel the writer"));
+        return fail(error, d->path, ExportText::tr("an earlier frame failed; cancel the writer"));
     if (frame.size() != d->size)
         return fail(error, d->path,
-            QStringLiteral("frame %1 is %2x%3, the video is %4x%5")
+            ExportText::tr("frame %1 is %2x%3, the video is %4x%5")
                 .arg(d->frames + 1)
                 .arg(frame.width())
                 .arg(frame.height())
@@ -97,12 +98,12 @@ bool VideoWriter::finish(QString *error)
 {
     if (!d->sink)
         return fail(
-            error, d->path.isEmpty() ? QStringLiteral("video") : d->path, QStringLiteral("the writer is not open"));
+            error, d->path.isEmpty() ? QStringLiteral("video") : d->path, ExportText::tr("the writer is not open"));
     if (d->failed || d->frames == 0) {
         cancel();
         return fail(error, d->path,
-            d->failed ? QStringLiteral("an earlier frame failed; nothing was written")
-                      : QStringLiteral("no frames to write"));
+            d->failed ? ExportText::tr("an earlier frame failed; nothing was written")
+                      : ExportText::tr("no frames to write"));
     }
     const bool ok = d->sink->finish(error);
     if (!ok)

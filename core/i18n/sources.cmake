@@ -1,2 +1,2 @@
 list(APPEND TOONFACE_CORE_SOURCES
-  i18n/translations.h i18n/translations.cpp)
+  i18n/coretext.h i18n/translations.h i18n/translations.cpp)

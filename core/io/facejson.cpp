@@ -2,6 +2,7 @@
 
 #include "detect/detector.h"
 #include "face/fapu.h"
+#include "i18n/coretext.h"
 #include "io/jsonfield.h"
 #include "io/pointsjson.h"
 
@@ -124,7 +125,7 @@ bool pointFrom(const JsonField &f, QPointF *out, QString *error)
     if (!f.toArray(&a, error))
         return false;
     if (a.size() != 2)
-        return f.expected(QStringLiteral("an [x, y] pair"), error);
+        return f.expected(ProjectText::tr("an [x, y] pair"), error);
     double x = 0, y = 0;
     if (!numberFrom(f.at(0), &x, error) || !numberFrom(f.at(1), &y, error))
         return false;
@@ -142,7 +143,7 @@ bool boxFrom(const JsonField &f, QRectF *out, QString *error)
         || !numberFrom(f.member("width"), &w, error) || !numberFrom(f.member("height"), &h, error))
         return false;
     if (w < 0 || h < 0)
-        return f.fail(QStringLiteral("a box of negative size"), error);
+        return f.fail(ProjectText::tr("a box of negative size"), error);
     *out = QRectF(x, y, w, h);
     return true;
 }
@@ -169,7 +170,7 @@ bool pairFrom(const JsonField &f, QRectF (&out)[2], QString *error)
     if (!f.toArray(&a, error))
         return false;
     if (a.size() != 2)
-        return f.expected(QStringLiteral("two boxes, image-left first"), error);
+        return f.expected(ProjectText::tr("two boxes, image-left first"), error);
     return boxFrom(f.at(0), &out[0], error) && boxFrom(f.at(1), &out[1], error);
 }
 
@@ -210,7 +211,7 @@ bool trackingFrom(const JsonField &f, TrackingSeed *t, QString *error)
     if (!eyeballs.toArray(&a, error))
         return false;
     if (a.size() != 2)
-        return eyeballs.expected(QStringLiteral("two eyeballs, image-left first"), error);
+        return eyeballs.expected(ProjectText::tr("two eyeballs, image-left first"), error);
     for (int k = 0; k < 2; ++k) {
         const JsonField e = eyeballs.at(k);
         double x = 0, y = 0;
@@ -229,7 +230,7 @@ bool trackingFrom(const JsonField &f, TrackingSeed *t, QString *error)
         if (!edges.toArray(&a, error))
             return false;
         if (a.size() != 4)
-            return edges.expected(QStringLiteral("four edge thresholds, top part first"), error);
+            return edges.expected(ProjectText::tr("four edge thresholds, top part first"), error);
         for (int k = 0; k < 4; ++k)
             if (!numberFrom(edges.at(k), &t->edgeThresholds[size_t(k)], error))
                 return false;
@@ -306,7 +307,7 @@ std::optional<FaceModel> faceFromJson(const QJsonObject &json, QString *error, Q
         const auto m = versioned.match(format);
         if (m.hasMatch() && m.captured(1).toInt() > 1) {
             formatField.fail(
-                QStringLiteral("%1 was made by a newer Toonface (this version reads %2)").arg(format, want), error);
+                ProjectText::tr("%1 was made by a newer Toonface (this version reads %2)").arg(format, want), error);
         } else {
             formatField.expected(QStringLiteral("\"%1\"").arg(want), error);
         }

@@ -1,5 +1,7 @@
 #include "io/imageio.h"
 
+#include "i18n/coretext.h"
+
 #include <QBuffer>
 #include <QColorSpace>
 #include <QDir>
@@ -18,7 +20,7 @@ constexpr qint64 kMaxPhotoFileBytes = 1024ll * 1024 * 1024;
 
 QString withFile(const QString &path, const QString &message)
 {
-    return QDir::toNativeSeparators(path) + QStringLiteral(": ") + message;
+    return withProblem(QDir::toNativeSeparators(path), message);
 }
 
 bool startsWith(const QByteArray &data, qsizetype at, const char *magic)
@@ -47,33 +49,33 @@ QString describeNonImage(const QByteArray &data)
 {
     const QByteArray head = data.left(512);
     if (startsWith(head, 0, "RIFF") && startsWith(head, 8, "WEBP"))
-        return QStringLiteral("a WebP image, which this build cannot read; convert it to PNG or JPEG");
+        return ImageText::tr("a WebP image, which this build cannot read; convert it to PNG or JPEG");
     if (startsWith(head, 4, "ftypheic") || startsWith(head, 4, "ftypheix") || startsWith(head, 4, "ftypmif1")
         || startsWith(head, 4, "ftyphevc"))
-        return QStringLiteral("a HEIC image, which this build cannot read; convert it to PNG or JPEG");
+        return ImageText::tr("a HEIC image, which this build cannot read; convert it to PNG or JPEG");
     if (startsWith(head, 4, "ftypavif"))
-        return QStringLiteral("an AVIF image, which this build cannot read; convert it to PNG or JPEG");
+        return ImageText::tr("an AVIF image, which this build cannot read; convert it to PNG or JPEG");
     if (startsWith(head, 0, "II*") || startsWith(head, 0, "MM"))
         if (head.size() >= 4 && (head.at(2) == '*' || head.at(3) == '*'))
-            return QStringLiteral("a TIFF image, which this build cannot read; convert it to PNG or JPEG");
+            return ImageText::tr("a TIFF image, which this build cannot read; convert it to PNG or JPEG");
     if (startsWith(head, 4, "ftyp"))
-        return QStringLiteral("a video or audio file (MP4/QuickTime), not a photo");
+        return ImageText::tr("a video or audio file (MP4/QuickTime), not a photo");
     if (startsWith(head, 0, "RIFF") && startsWith(head, 8, "WAVE"))
-        return QStringLiteral("a WAV audio file, not a photo");
+        return ImageText::tr("a WAV audio file, not a photo");
     if (startsWith(head, 0, "ID3") || startsWith(head, 0, "OggS") || startsWith(head, 0, "fLaC"))
-        return QStringLiteral("an audio file, not a photo");
+        return ImageText::tr("an audio file, not a photo");
     if (startsWith(head, 0, "%PDF"))
-        return QStringLiteral("a PDF document, not an image");
+        return ImageText::tr("a PDF document, not an image");
     if (startsWith(head, 0, "PK\x03\x04"))
-        return QStringLiteral("a ZIP archive (or an office document), not an image");
+        return ImageText::tr("a ZIP archive (or an office document), not an image");
     if (looksLikeText(head)) {
         QString sample = QString::fromUtf8(head.left(40)).simplified();
-        return QStringLiteral("text, not an image (it starts with \"%1\")").arg(sample);
+        return ImageText::tr("text, not an image (it starts with \"%1\")").arg(sample);
     }
     QStringList bytes;
     for (qsizetype i = 0; i < qMin<qsizetype>(8, head.size()); ++i)
         bytes << QStringLiteral("%1").arg(uchar(head.at(i)), 2, 16, QLatin1Char('0'));
-    return QStringLiteral("not an image (unrecognised data starting with %1)").arg(bytes.join(QLatin1Char(' ')));
+    return ImageText::tr("not an image (unrecognised data starting with %1)").arg(bytes.join(QLatin1Char(' ')));
 }
 
 // The first PNG chunk (before IEND) whose declared length runs past the end of the file,
@@ -93,7 +95,7 @@ QString pngOverrun(const QByteArray &data)
         if (type == "IEND")
             return {};
         if (qint64(length) + 4 > left) // the data and its CRC
-            return QStringLiteral("its %1 chunk claims %2 bytes, but only %3 are left in the file")
+            return ImageText::tr("its %1 chunk claims %2 bytes, but only %3 are left in the file")
                 .arg(QString::fromLatin1(type.toPercentEncoding()))
                 .arg(length)
                 .arg(std::max<qint64>(0, left - 4));
@@ -197,24 +199,24 @@ QImage loadPhoto(const QString &path, QString *error)
         error = &scratch;
     const QFileInfo info(path);
     if (!info.exists()) {
-        *error = withFile(path, QStringLiteral("no such file"));
+        *error = withFile(path, ImageText::tr("no such file"));
         return {};
     }
     if (info.isDir()) {
-        *error = withFile(path, QStringLiteral("is a folder, not an image"));
+        *error = withFile(path, ImageText::tr("is a folder, not an image"));
         return {};
     }
     if (info.size() == 0) {
-        *error = withFile(path, QStringLiteral("the file is empty"));
+        *error = withFile(path, ImageText::tr("the file is empty"));
         return {};
     }
     if (info.size() > kMaxPhotoFileBytes) {
-        *error = withFile(path, QStringLiteral("the file is too large for a photo (%1 MB)").arg(info.size() >> 20));
+        *error = withFile(path, ImageText::tr("the file is too large for a photo (%1 MB)").arg(info.size() >> 20));
         return {};
     }
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        *error = withFile(path, QStringLiteral("cannot read: ") + file.errorString());
+        *error = withFile(path, ImageText::tr("cannot read: %1").arg(file.errorString()));
         return {};
     }
     QByteArray data = file.readAll();
@@ -235,12 +237,12 @@ QImage loadPhoto(const QString &path, QString *error)
     }
     if (jpegEnd(data) == JpegEnd::Truncated) {
         *error
-            = withFile(path, QStringLiteral("the JPEG image is truncated (the file ends before the image data does)"));
+            = withFile(path, ImageText::tr("the JPEG image is truncated (the file ends before the image data does)"));
         return {};
     }
     const QString format = QString::fromLatin1(reader.format()).toUpper();
     if (const QString overrun = pngOverrun(data); !overrun.isEmpty()) {
-        *error = withFile(path, QStringLiteral("the PNG image is corrupt or truncated (%1)").arg(overrun));
+        *error = withFile(path, ImageText::tr("the PNG image is corrupt or truncated (%1)").arg(overrun));
         return {};
     }
     const QSize size = reader.size();
@@ -248,7 +250,7 @@ QImage loadPhoto(const QString &path, QString *error)
         const qint64 pixels = qint64(size.width()) * size.height();
         if (pixels == 0) {
             *error = withFile(path,
-                QStringLiteral("the %1 image is empty (%2 × %3 pixels)")
+                ImageText::tr("the %1 image is empty (%2 × %3 pixels)")
                     .arg(format)
                     .arg(size.width())
                     .arg(size.height()));
@@ -256,8 +258,8 @@ QImage loadPhoto(const QString &path, QString *error)
         }
         if (pixels > kMaxPhotoPixels) {
             *error = withFile(path,
-                QStringLiteral("the image is too large: %1 × %2 pixels (%3 megapixels); "
-                               "the limit is %4 megapixels")
+                ImageText::tr("the image is too large: %1 × %2 pixels (%3 megapixels); "
+                              "the limit is %4 megapixels")
                     .arg(size.width())
                     .arg(size.height())
                     .arg(double(pixels) / 1e6, 0, 'f', 0)
@@ -268,7 +270,7 @@ QImage loadPhoto(const QString &path, QString *error)
     const QImage image = reader.read();
     if (image.isNull()) {
         *error = withFile(
-            path, QStringLiteral("the %1 image is corrupt or truncated (%2)").arg(format, reader.errorString()));
+            path, ImageText::tr("the %1 image is corrupt or truncated (%2)").arg(format, reader.errorString()));
         return {};
     }
     return toRgb32(image);

@@ -1,5 +1,7 @@
 #include "io/jsonfield.h"
 
+#include "i18n/coretext.h"
+
 #include <QLocale>
 
 #include <cmath>
@@ -40,10 +42,10 @@ JsonField JsonField::at(qsizetype index) const
 bool JsonField::toNumber(double *out, QString *error) const
 {
     if (!m_value.isDouble())
-        return expected(QStringLiteral("a number"), error);
+        return expected(ProjectText::tr("a number"), error);
     const double d = m_value.toDouble();
     if (!std::isfinite(d))
-        return expected(QStringLiteral("a finite number"), error);
+        return expected(ProjectText::tr("a finite number"), error);
     *out = d;
     return true;
 }
@@ -55,14 +57,14 @@ bool JsonField::toBoundedNumber(double limit, double *out, QString *error) const
         return false;
     if (std::abs(d) > limit)
         return expected(
-            QStringLiteral("a number between %1 and %2").arg(-limit, 0, 'g', 12).arg(limit, 0, 'g', 12), error);
+            ProjectText::tr("a number between %1 and %2").arg(-limit, 0, 'g', 12).arg(limit, 0, 'g', 12), error);
     *out = d;
     return true;
 }
 
 bool JsonField::toInt(int min, int max, int *out, QString *error) const
 {
-    const QString what = QStringLiteral("an integer from %1 to %2").arg(min).arg(max);
+    const QString what = ProjectText::tr("an integer from %1 to %2").arg(min).arg(max);
     if (!m_value.isDouble())
         return expected(what, error);
     const double d = m_value.toDouble();
@@ -75,7 +77,7 @@ bool JsonField::toInt(int min, int max, int *out, QString *error) const
 bool JsonField::toBool(bool *out, QString *error) const
 {
     if (!m_value.isBool())
-        return expected(QStringLiteral("true or false"), error);
+        return expected(ProjectText::tr("true or false"), error);
     *out = m_value.toBool();
     return true;
 }
@@ -83,7 +85,7 @@ bool JsonField::toBool(bool *out, QString *error) const
 bool JsonField::toString(QString *out, QString *error) const
 {
     if (!m_value.isString())
-        return expected(QStringLiteral("a string"), error);
+        return expected(ProjectText::tr("a string"), error);
     *out = m_value.toString();
     return true;
 }
@@ -91,7 +93,7 @@ bool JsonField::toString(QString *out, QString *error) const
 bool JsonField::toObject(QJsonObject *out, QString *error) const
 {
     if (!m_value.isObject())
-        return expected(QStringLiteral("an object"), error);
+        return expected(ProjectText::tr("an object"), error);
     *out = m_value.toObject();
     return true;
 }
@@ -99,7 +101,7 @@ bool JsonField::toObject(QJsonObject *out, QString *error) const
 bool JsonField::toArray(QJsonArray *out, QString *error) const
 {
     if (!m_value.isArray())
-        return expected(QStringLiteral("an array"), error);
+        return expected(ProjectText::tr("an array"), error);
     *out = m_value.toArray();
     return true;
 }
@@ -107,31 +109,31 @@ bool JsonField::toArray(QJsonArray *out, QString *error) const
 bool JsonField::fail(const QString &problem, QString *error) const
 {
     if (error)
-        *error = m_path.isEmpty() ? problem : m_path + QStringLiteral(": ") + problem;
+        *error = m_path.isEmpty() ? problem : withProblem(m_path, problem);
     return false;
 }
 
 bool JsonField::expected(const QString &expected, QString *error) const
 {
-    return fail(QStringLiteral("expected %1, %2").arg(expected, describe(m_value)), error);
+    return fail(ProjectText::tr("expected %1, %2").arg(expected, describe(m_value)), error);
 }
 
 QString JsonField::describe(const QJsonValue &value)
 {
     switch (value.type()) {
-    case QJsonValue::Undefined: return QStringLiteral("it is missing");
-    case QJsonValue::Null: return QStringLiteral("found null");
-    case QJsonValue::Bool: return value.toBool() ? QStringLiteral("found true") : QStringLiteral("found false");
+    case QJsonValue::Undefined: return ProjectText::tr("it is missing");
+    case QJsonValue::Null: return ProjectText::tr("found null");
+    case QJsonValue::Bool: return value.toBool() ? ProjectText::tr("found true") : ProjectText::tr("found false");
     case QJsonValue::Double:
-        return QStringLiteral("found ") + QString::number(value.toDouble(), 'g', QLocale::FloatingPointShortest);
+        return ProjectText::tr("found %1").arg(QString::number(value.toDouble(), 'g', QLocale::FloatingPointShortest));
     case QJsonValue::String: {
         QString s = value.toString();
         if (s.size() > 40)
             s = s.left(37) + QStringLiteral("...");
-        return QStringLiteral("found the string \"%1\"").arg(s);
+        return ProjectText::tr("found the string \"%1\"").arg(s);
     }
-    case QJsonValue::Array: return QStringLiteral("found an array");
-    case QJsonValue::Object: return QStringLiteral("found an object");
+    case QJsonValue::Array: return ProjectText::tr("found an array");
+    case QJsonValue::Object: return ProjectText::tr("found an object");
     }
     return {};
 }

@@ -1,5 +1,6 @@
 #include "io/layersjson.h"
 
+#include "i18n/coretext.h"
 #include "render/svglayer.h"
 
 namespace toonface {
@@ -54,13 +55,13 @@ bool styleLayersFromJson(const JsonField &field, QVector<StyleLayer> *layers, QS
             !follows.isMissing() && !follows.toBool(&layer.followsHead, error))
             return false;
         if (!(layer.width > 0))
-            return f.member("width").expected(QStringLiteral("a width more than 0"), error);
+            return f.member("width").expected(ProjectText::tr("a width more than 0"), error);
         layer.offset = QPointF(x, y);
         layer.svg = svg.toUtf8();
         LayerDrawing drawing;
         QString why;
         if (!readLayerSvg(layer.svg, QString(), &drawing, &why))
-            return f.member("svg").fail(QStringLiteral("not an SVG drawing: ") + why, error);
+            return f.member("svg").fail(ProjectText::tr("not an SVG drawing: %1").arg(why), error);
         layers->append(layer);
     }
     return true;

@@ -1,5 +1,6 @@
 #include "io/lipsyncformats.h"
 
+#include "i18n/coretext.h"
 #include "io/jsonfield.h"
 
 #include <QFile>
@@ -200,7 +201,7 @@ public:
     {
         if (atEnd())
             return failAt(
-                int(m_lines.size()) + 1, QStringLiteral("unexpected end of file, expected %1").arg(what), error);
+                int(m_lines.size()) + 1, LipSyncText::tr("unexpected end of file, expected %1").arg(what), error);
         *line = m_lines[m_next++].trimmed();
         return true;
     }
@@ -217,7 +218,7 @@ public:
         const int v = text.toInt(&ok);
         if (!ok || v < min)
             return fail(
-                QStringLiteral("expected %1 (an integer of at least %2), found '%3'").arg(what).arg(min).arg(text),
+                LipSyncText::tr("expected %1 (an integer of at least %2), found '%3'").arg(what).arg(min).arg(text),
                 error);
         *out = v;
         return true;
@@ -226,7 +227,7 @@ public:
     bool failAt(int line, const QString &problem, QString *error) const
     {
         if (error)
-            *error = QStringLiteral("%1: line %2: %3").arg(m_fileName).arg(line).arg(problem);
+            *error = LipSyncText::tr("%1: line %2: %3").arg(m_fileName, QString::number(line), problem);
         return false;
     }
 
@@ -252,7 +253,7 @@ bool lookUp(const ShapeMapping &mapping, const QString &name, const LineReader &
     case ShapeMapping::Match::Rest: *out = std::nullopt; return true;
     case ShapeMapping::Match::Unknown: break;
     }
-    return reader.fail(QStringLiteral("unknown mouth shape '%1' (known: %2)")
+    return reader.fail(LipSyncText::tr("unknown mouth shape '%1' (known: %2)")
                            .arg(name, mapping.importNames().join(QStringLiteral(", "))),
         error);
 }
@@ -292,20 +293,20 @@ std::optional<LipSyncTrack> parseTsv(
             continue;
         const QStringList fields = splitFields(line);
         if (fields.size() != 2) {
-            reader.fail(QStringLiteral("expected 'start<TAB>shape', found '%1'").arg(line), error);
+            reader.fail(LipSyncText::tr("expected 'start<TAB>shape', found '%1'").arg(line), error);
             return std::nullopt;
         }
         bool ok = false;
         const double t = fields[0].toDouble(&ok);
         if (!ok || !std::isfinite(t) || t < 0) {
             reader.fail(
-                QStringLiteral("expected a start time in seconds (a number of at least 0), found '%1'").arg(fields[0]),
+                LipSyncText::tr("expected a start time in seconds (a number of at least 0), found '%1'").arg(fields[0]),
                 error);
             return std::nullopt;
         }
         if (!events.isEmpty() && t < events.last().time) {
             reader.fail(
-                QStringLiteral("time %1 is before the previous line's %2").arg(fields[0]).arg(events.last().time),
+                LipSyncText::tr("time %1 is before the previous line's %2").arg(fields[0]).arg(events.last().time),
                 error);
             return std::nullopt;
         }
@@ -353,7 +354,7 @@ std::optional<LipSyncTrack> parseJson(
         const QByteArray before = data.left(parseError.offset);
         const int line = int(before.count('\n')) + 1;
         if (error)
-            *error = QStringLiteral("%1: line %2: not valid JSON: %3")
+            *error = LipSyncText::tr("%1: line %2: not valid JSON: %3")
                          .arg(fileName)
                          .arg(line)
                          .arg(parseError.errorString());
@@ -361,11 +362,11 @@ std::optional<LipSyncTrack> parseJson(
     }
     auto failField = [&](const QString &problem) {
         if (error)
-            *error = fileName + QStringLiteral(": ") + problem;
+            *error = withProblem(fileName, problem);
         return std::nullopt;
     };
     if (!doc.isObject())
-        return failField(QStringLiteral("expected a JSON object with mouthCues"));
+        return failField(LipSyncText::tr("expected a JSON object with mouthCues"));
     const JsonField root(doc.object(), {});
     QString problem;
     LipSyncTrack track;
@@ -382,7 +383,7 @@ std::optional<LipSyncTrack> parseJson(
             if (!duration.toNumber(&track.duration, &problem))
                 return failField(problem);
             if (track.duration < 0)
-                return failField(duration.path() + QStringLiteral(": expected a duration of at least 0"));
+                return failField(LipSyncText::tr("%1: expected a duration of at least 0").arg(duration.path()));
         }
     }
     const JsonField cuesField = root.member("mouthCues");
@@ -397,13 +398,14 @@ std::optional<LipSyncTrack> parseJson(
         if (!cue.member("start").toNumber(&start, &problem) || !cue.member("end").toNumber(&end, &problem))
             return failField(problem);
         if (start < 0)
-            return failField(cue.member("start").path() + QStringLiteral(": expected a time of at least 0"));
+            return failField(LipSyncText::tr("%1: expected a time of at least 0").arg(cue.member("start").path()));
         if (end < start)
-            return failField(
-                cue.member("end").path() + QStringLiteral(": ends (%1) before it starts (%2)").arg(end).arg(start));
+            return failField(LipSyncText::tr("%1: ends (%2) before it starts (%3)")
+                                 .arg(cue.member("end").path(), QString::number(end), QString::number(start)));
         if (start < previousEnd - 1e-9)
-            return failField(cue.member("start").path()
-                + QStringLiteral(": starts (%1) before the previous cue ends (%2)").arg(start).arg(previousEnd));
+            return failField(
+                LipSyncText::tr("%1: starts (%2) before the previous cue ends (%3)")
+                    .arg(cue.member("start").path(), QString::number(start), QString::number(previousEnd)));
         const JsonField valueField = cue.member("value").isMissing() ? cue.member("shape") : cue.member("value");
         QString value;
         if (!valueField.toString(&value, &problem))
@@ -416,9 +418,8 @@ std::optional<LipSyncTrack> parseJson(
             break;
         case ShapeMapping::Match::Rest: break;
         case ShapeMapping::Match::Unknown:
-            return failField(valueField.path()
-                + QStringLiteral(": unknown mouth shape '%1' (known: %2)")
-                      .arg(value, mapping.importNames().join(QStringLiteral(", "))));
+            return failField(LipSyncText::tr("%1: unknown mouth shape '%2' (known: %3)")
+                                 .arg(valueField.path(), value, mapping.importNames().join(QStringLiteral(", "))));
         }
         previousEnd = end;
     }
@@ -473,20 +474,20 @@ std::optional<LipSyncTrack> parsePapagayo(
 {
     LineReader reader(data, fileName);
     QString line;
-    if (!reader.next(&line, QStringLiteral("the header 'lipsync version 1'"), error))
+    if (!reader.next(&line, LipSyncText::tr("the header 'lipsync version 1'"), error))
         return std::nullopt;
     if (line.compare(u"lipsync version 1", Qt::CaseInsensitive) != 0) {
-        reader.fail(QStringLiteral("expected the header 'lipsync version 1', found '%1'").arg(line), error);
+        reader.fail(LipSyncText::tr("expected the header 'lipsync version 1', found '%1'").arg(line), error);
         return std::nullopt;
     }
     LipSyncTrack track;
     int fps = 0;
     int durationFrames = 0;
     int voices = 0;
-    if (!reader.next(&track.soundFile, QStringLiteral("the sound file"), error)
-        || !reader.nextInt(1, &fps, QStringLiteral("the frame rate"), error)
-        || !reader.nextInt(0, &durationFrames, QStringLiteral("the duration in frames"), error)
-        || !reader.nextInt(0, &voices, QStringLiteral("the number of voices"), error))
+    if (!reader.next(&track.soundFile, LipSyncText::tr("the sound file"), error)
+        || !reader.nextInt(1, &fps, LipSyncText::tr("the frame rate"), error)
+        || !reader.nextInt(0, &durationFrames, LipSyncText::tr("the duration in frames"), error)
+        || !reader.nextInt(0, &voices, LipSyncText::tr("the number of voices"), error))
         return std::nullopt;
     track.duration = double(durationFrames) / fps;
     if (voices == 0)
@@ -495,9 +496,9 @@ std::optional<LipSyncTrack> parsePapagayo(
     QString voiceName;
     QString voiceText;
     int phrases = 0;
-    if (!reader.next(&voiceName, QStringLiteral("the voice's name"), error)
-        || !reader.next(&voiceText, QStringLiteral("the voice's text"), error)
-        || !reader.nextInt(0, &phrases, QStringLiteral("the number of phrases"), error))
+    if (!reader.next(&voiceName, LipSyncText::tr("the voice's name"), error)
+        || !reader.next(&voiceText, LipSyncText::tr("the voice's text"), error)
+        || !reader.nextInt(0, &phrases, LipSyncText::tr("the number of phrases"), error))
         return std::nullopt;
     QVector<MouthCue> cues;
     for (int p = 0; p < phrases; ++p) {
@@ -505,19 +506,19 @@ std::optional<LipSyncTrack> parsePapagayo(
         int start = 0;
         int end = 0;
         int words = 0;
-        if (!reader.next(&text, QStringLiteral("the text of phrase %1").arg(p + 1), error)
-            || !reader.nextInt(0, &start, QStringLiteral("the start frame of phrase %1").arg(p + 1), error)
-            || !reader.nextInt(0, &end, QStringLiteral("the end frame of phrase %1").arg(p + 1), error)
-            || !reader.nextInt(0, &words, QStringLiteral("the number of words of phrase %1").arg(p + 1), error))
+        if (!reader.next(&text, LipSyncText::tr("the text of phrase %1").arg(p + 1), error)
+            || !reader.nextInt(0, &start, LipSyncText::tr("the start frame of phrase %1").arg(p + 1), error)
+            || !reader.nextInt(0, &end, LipSyncText::tr("the end frame of phrase %1").arg(p + 1), error)
+            || !reader.nextInt(0, &words, LipSyncText::tr("the number of words of phrase %1").arg(p + 1), error))
             return std::nullopt;
         for (int w = 0; w < words; ++w) {
             const QString what
-                = QStringLiteral("word %1 of phrase %2 ('text start end phonemes')").arg(w + 1).arg(p + 1);
+                = LipSyncText::tr("word %1 of phrase %2 ('text start end phonemes')").arg(w + 1).arg(p + 1);
             if (!reader.next(&line, what, error))
                 return std::nullopt;
             const QStringList fields = splitFields(line);
             if (fields.size() < 4) {
-                reader.fail(QStringLiteral("expected %1, found '%2'").arg(what, line), error);
+                reader.fail(LipSyncText::tr("expected %1, found '%2'").arg(what, line), error);
                 return std::nullopt;
             }
             const QString wordText = fields.mid(0, fields.size() - 3).join(QLatin1Char(' '));
@@ -526,14 +527,14 @@ std::optional<LipSyncTrack> parsePapagayo(
             int phonemes = 0;
             const qsizetype n = fields.size();
             if (!reader.toInt(
-                    fields[n - 3], 0, &wordStart, QStringLiteral("the start frame of '%1'").arg(wordText), error)
+                    fields[n - 3], 0, &wordStart, LipSyncText::tr("the start frame of '%1'").arg(wordText), error)
                 || !reader.toInt(
-                    fields[n - 2], 0, &wordEnd, QStringLiteral("the end frame of '%1'").arg(wordText), error)
+                    fields[n - 2], 0, &wordEnd, LipSyncText::tr("the end frame of '%1'").arg(wordText), error)
                 || !reader.toInt(
-                    fields[n - 1], 0, &phonemes, QStringLiteral("the phoneme count of '%1'").arg(wordText), error))
+                    fields[n - 1], 0, &phonemes, LipSyncText::tr("the phoneme count of '%1'").arg(wordText), error))
                 return std::nullopt;
             if (wordEnd < wordStart) {
-                reader.fail(QStringLiteral("word '%1' ends (frame %2) before it starts (frame %3)")
+                reader.fail(LipSyncText::tr("word '%1' ends (frame %2) before it starts (frame %3)")
                                 .arg(wordText)
                                 .arg(wordEnd)
                                 .arg(wordStart),
@@ -543,19 +544,19 @@ std::optional<LipSyncTrack> parsePapagayo(
             QVector<Event> events;
             for (int k = 0; k < phonemes; ++k) {
                 const QString phonemeWhat
-                    = QStringLiteral("phoneme %1 of '%2' ('frame name')").arg(k + 1).arg(wordText);
+                    = LipSyncText::tr("phoneme %1 of '%2' ('frame name')").arg(k + 1).arg(wordText);
                 if (!reader.next(&line, phonemeWhat, error))
                     return std::nullopt;
                 const QStringList pf = splitFields(line);
                 int frame = 0;
                 if (pf.size() != 2) {
-                    reader.fail(QStringLiteral("expected %1, found '%2'").arg(phonemeWhat, line), error);
+                    reader.fail(LipSyncText::tr("expected %1, found '%2'").arg(phonemeWhat, line), error);
                     return std::nullopt;
                 }
-                if (!reader.toInt(pf[0], 0, &frame, QStringLiteral("the frame of a phoneme"), error))
+                if (!reader.toInt(pf[0], 0, &frame, LipSyncText::tr("the frame of a phoneme"), error))
                     return std::nullopt;
                 if (!events.isEmpty() && frame < events.last().time) {
-                    reader.fail(QStringLiteral("phoneme frame %1 is before the previous phoneme's %2")
+                    reader.fail(LipSyncText::tr("phoneme frame %1 is before the previous phoneme's %2")
                                     .arg(frame)
                                     .arg(events.last().time),
                         error);
@@ -607,10 +608,10 @@ std::optional<LipSyncTrack> parseMoho(
 {
     LineReader reader(data, fileName);
     QString line;
-    if (!reader.next(&line, QStringLiteral("the header 'MohoSwitch1'"), error))
+    if (!reader.next(&line, LipSyncText::tr("the header 'MohoSwitch1'"), error))
         return std::nullopt;
     if (line.compare(u"MohoSwitch1", Qt::CaseInsensitive) != 0) {
-        reader.fail(QStringLiteral("expected the header 'MohoSwitch1', found '%1'").arg(line), error);
+        reader.fail(LipSyncText::tr("expected the header 'MohoSwitch1', found '%1'").arg(line), error);
         return std::nullopt;
     }
     QVector<Event> events;
@@ -621,15 +622,15 @@ std::optional<LipSyncTrack> parseMoho(
             continue;
         const QStringList fields = splitFields(line);
         if (fields.size() != 2) {
-            reader.fail(QStringLiteral("expected 'frame shape', found '%1'").arg(line), error);
+            reader.fail(LipSyncText::tr("expected 'frame shape', found '%1'").arg(line), error);
             return std::nullopt;
         }
         int frame = 0;
-        if (!reader.toInt(fields[0], 0, &frame, QStringLiteral("a frame number"), error))
+        if (!reader.toInt(fields[0], 0, &frame, LipSyncText::tr("a frame number"), error))
             return std::nullopt;
         if (frame < previous) {
             reader.fail(
-                QStringLiteral("frame %1 is before the previous line's frame %2").arg(frame).arg(previous), error);
+                LipSyncText::tr("frame %1 is before the previous line's frame %2").arg(frame).arg(previous), error);
             return std::nullopt;
         }
         previous = frame;
@@ -663,7 +664,7 @@ std::optional<LipSyncTrack> parseLipSync(const QByteArray &data, LipSyncFormat f
 {
     if (!(options.fps > 0) || !std::isfinite(options.fps)) {
         if (error)
-            *error = QStringLiteral("%1: cannot read at %2 frames per second").arg(fileName).arg(options.fps);
+            *error = LipSyncText::tr("%1: cannot read at %2 frames per second").arg(fileName).arg(options.fps);
         return std::nullopt;
     }
     const ShapeMapping mapping = mappingFor(format, options);
@@ -683,7 +684,7 @@ bool saveLipSync(
     const QByteArray data = writeLipSync(track, format, options);
     if (!file.open(QIODevice::WriteOnly) || file.write(data) != data.size() || !file.commit()) {
         if (error)
-            *error = QStringLiteral("%1: not saved: %2").arg(path, file.errorString());
+            *error = LipSyncText::tr("%1: not saved: %2").arg(path, file.errorString());
         return false;
     }
     return true;
@@ -696,13 +697,13 @@ std::optional<LipSyncTrack> loadLipSync(
         format = lipSyncFormatForPath(path);
     if (!format) {
         if (error)
-            *error = QStringLiteral("%1: unknown lip-sync format (expected .tsv, .json, .pgo or .dat)").arg(path);
+            *error = LipSyncText::tr("%1: unknown lip-sync format (expected .tsv, .json, .pgo or .dat)").arg(path);
         return std::nullopt;
     }
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
         if (error)
-            *error = QStringLiteral("%1: cannot read: %2").arg(path, file.errorString());
+            *error = LipSyncText::tr("%1: cannot read: %2").arg(path, file.errorString());
         return std::nullopt;
     }
     return parseLipSync(file.readAll(), *format, path, options, error);

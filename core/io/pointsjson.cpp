@@ -1,5 +1,7 @@
 #include "io/pointsjson.h"
 
+#include "i18n/coretext.h"
+
 #include <QJsonObject>
 
 namespace toonface {
@@ -29,7 +31,7 @@ bool pointsFromJson(const JsonField &points, FaceModel *face, QString *error)
     if (!points.toArray(&array, error))
         return false;
     if (array.size() != kPointCount) {
-        return points.fail(QStringLiteral("expected %1 points, found %2").arg(kPointCount).arg(array.size()), error);
+        return points.fail(ProjectText::tr("expected %1 points, found %2").arg(kPointCount).arg(array.size()), error);
     }
     const auto &table = pointTable();
     for (int i = 0; i < kPointCount; ++i) {

@@ -1,5 +1,6 @@
 #include "io/project.h"
 
+#include "i18n/coretext.h"
 #include "io/jsonfield.h"
 #include "io/layersjson.h"
 #include "io/pointsjson.h"
@@ -47,7 +48,7 @@ bool enumFromJson(
         }
         all << QLatin1Char('"') + nameOf(v) + QLatin1Char('"');
     }
-    return field.expected(QStringLiteral("one of %1").arg(all.join(QStringLiteral(", "))), error);
+    return field.expected(ProjectText::tr("one of %1").arg(all.join(QStringLiteral(", "))), error);
 }
 
 int hexDigit(QChar c)
@@ -77,7 +78,7 @@ bool colourFromJson(const JsonField &field, QColor *out, QString *error)
         *out = QColor();
         return true;
     }
-    const QString expected = QStringLiteral("a colour like #rrggbb or #aarrggbb, or \"none\"");
+    const QString expected = ProjectText::tr("a colour like #rrggbb or #aarrggbb, or \"none\"");
     if (!field.value().isString())
         return field.expected(expected, error);
     const QString s = field.value().toString();
@@ -176,7 +177,7 @@ bool styleFromJson(const JsonField &field, Style *style, QString *error)
         if (!c.toNumber(&style->caricature, error))
             return false;
         if (style->caricature < 0 || style->caricature > kMaxCaricature)
-            return c.expected(QStringLiteral("a number from 0 to %1").arg(kMaxCaricature), error);
+            return c.expected(ProjectText::tr("a number from 0 to %1").arg(kMaxCaricature), error);
     }
     style->appearance = Appearance();
     if (const JsonField look = field.member("appearance"); !look.isMissing()) {
@@ -208,7 +209,7 @@ bool styleFromJson(const JsonField &field, Style *style, QString *error)
     for (auto it = all.constBegin(); it != all.constEnd(); ++it) {
         const JsonField c = components.member(it.key());
         if (it.key().isEmpty())
-            return c.fail(QStringLiteral("a component needs a name"), error);
+            return c.fail(ProjectText::tr("a component needs a name"), error);
         ComponentStyle cs;
         if (!c.toObject(&unused, error) || !colourFromJson(c.member("fill"), &cs.fill, error)
             || !colourFromJson(c.member("stroke"), &cs.stroke, error))
@@ -217,7 +218,7 @@ bool styleFromJson(const JsonField &field, Style *style, QString *error)
         if (!width.toNumber(&cs.strokeWidth, error))
             return false;
         if (cs.strokeWidth < 0)
-            return width.expected(QStringLiteral("a width of 0 or more"), error);
+            return width.expected(ProjectText::tr("a width of 0 or more"), error);
         if (!c.member("visible").toBool(&cs.visible, error))
             return false;
         style->components.insert(it.key(), cs);
@@ -256,7 +257,8 @@ bool mouthShapesFromJson(const JsonField &field, MouthShapeSet *shapes, QString 
             for (MouthShape s : kAllMouthShapes)
                 names << mouthShapeName(s);
             return field.member(it.key()).fail(
-                QStringLiteral("unknown mouth shape (the shapes are %1)").arg(names.join(QStringLiteral(", "))), error);
+                ProjectText::tr("unknown mouth shape (the shapes are %1)").arg(names.join(QStringLiteral(", "))),
+                error);
         }
     }
     for (MouthShape shape : kAllMouthShapes) {
@@ -281,7 +283,7 @@ bool mouthShapesFromJson(const JsonField &field, MouthShapeSet *shapes, QString 
 
 QString withFile(const QString &path, const QString &message)
 {
-    return QDir::toNativeSeparators(path) + QStringLiteral(": ") + message;
+    return withProblem(QDir::toNativeSeparators(path), message);
 }
 
 } // namespace
@@ -339,22 +341,22 @@ std::optional<Project> projectFromJson(const QJsonObject &json, const QString &p
 
     const JsonField format = root.member("format");
     if (format.isMissing()) {
-        *error = QStringLiteral("not a Toonface project (it has no \"format\" field)");
+        *error = ProjectText::tr("not a Toonface project (it has no \"format\" field)");
         return std::nullopt;
     }
     if (format.value().toString() != QLatin1StringView(kProjectFormat)) {
-        *error = QStringLiteral("not a Toonface project (format: expected \"%1\", %2)")
+        *error = ProjectText::tr("not a Toonface project (format: expected \"%1\", %2)")
                      .arg(QLatin1StringView(kProjectFormat), JsonField::describe(format.value()));
         return std::nullopt;
     }
     const JsonField versionField = root.member("version");
     int version = 0;
     if (!versionField.toInt(1, std::numeric_limits<int>::max(), &version, nullptr)) {
-        versionField.expected(QStringLiteral("a version number (1 or more)"), error);
+        versionField.expected(ProjectText::tr("a version number (1 or more)"), error);
         return std::nullopt;
     }
     if (version > kProjectVersion) {
-        *error = QStringLiteral("made by a newer Toonface (project version %1; this version reads up to %2)")
+        *error = ProjectText::tr("made by a newer Toonface (project version %1; this version reads up to %2)")
                      .arg(version)
                      .arg(kProjectVersion);
         return std::nullopt;
@@ -389,7 +391,7 @@ std::optional<Project> projectFromJson(const QJsonObject &json, const QString &p
         if (!layers.at(i).toString(&layer, error))
             return std::nullopt;
         if (layer.isEmpty()) {
-            layers.at(i).expected(QStringLiteral("a file path"), error);
+            layers.at(i).expected(ProjectText::tr("a file path"), error);
             return std::nullopt;
         }
         p.layerPaths << pathFromDisk(layer, dir);
@@ -435,7 +437,7 @@ std::optional<Project> projectFromJson(const QJsonObject &json, const QString &p
         return std::nullopt;
     if (!p.scriptLanguage.isEmpty() && p.scriptLanguage != QLatin1StringView("cmn")
         && p.scriptLanguage != QLatin1StringView("en")) {
-        language.expected(QStringLiteral("\"cmn\", \"en\" or \"\""), error);
+        language.expected(ProjectText::tr("\"cmn\", \"en\" or \"\""), error);
         return std::nullopt;
     }
     // Older files have no syllables.
@@ -455,14 +457,14 @@ bool saveProject(const Project &project, const QString &path, QString *error)
     // Never write a file that loadProject would refuse (JSON has no NaN: it would become null).
     QString invalid;
     if (!projectFromJson(json, dir, &invalid)) {
-        *error = withFile(path, QStringLiteral("not saved: the project is invalid at ") + invalid);
+        *error = withFile(path, ProjectText::tr("not saved: the project is invalid at %1").arg(invalid));
         return false;
     }
     const QByteArray bytes = QJsonDocument(json).toJson(QJsonDocument::Indented);
 
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
-        *error = withFile(path, QStringLiteral("cannot save: ") + file.errorString());
+        *error = withFile(path, ProjectText::tr("cannot save: %1").arg(file.errorString()));
         return false;
     }
     const qint64 written = file.write(bytes);
@@ -470,18 +472,18 @@ bool saveProject(const Project &project, const QString &path, QString *error)
         // A short write without an error code is what a full disk or a file size limit gives.
         const QString why = file.error() != QFileDevice::NoError
             ? file.errorString()
-            : QStringLiteral("only %1 of %2 bytes could be written (is the disk full?)")
+            : ProjectText::tr("only %1 of %2 bytes could be written (is the disk full?)")
                   .arg(qMax<qint64>(written, 0))
                   .arg(bytes.size());
-        *error = withFile(path, QStringLiteral("cannot save: ") + why);
+        *error = withFile(path, ProjectText::tr("cannot save: %1").arg(why));
         file.cancelWriting();
         return false;
     }
     if (!file.commit()) {
         const QString why = file.error() != QFileDevice::NoError
             ? file.errorString()
-            : QStringLiteral("the file could not be completed (is the disk full?)");
-        *error = withFile(path, QStringLiteral("cannot save: ") + why);
+            : ProjectText::tr("the file could not be completed (is the disk full?)");
+        *error = withFile(path, ProjectText::tr("cannot save: %1").arg(why));
         return false;
     }
     return true;
@@ -494,25 +496,25 @@ std::optional<Project> loadProject(const QString &path, QString *error)
         error = &scratch;
     const QFileInfo info(path);
     if (!info.exists()) {
-        *error = withFile(path, QStringLiteral("no such file"));
+        *error = withFile(path, ProjectText::tr("no such file"));
         return std::nullopt;
     }
     if (info.isDir()) {
-        *error = withFile(path, QStringLiteral("is a folder, not a Toonface project"));
+        *error = withFile(path, ProjectText::tr("is a folder, not a Toonface project"));
         return std::nullopt;
     }
     if (info.size() > kMaxProjectBytes) {
-        *error = withFile(path, QStringLiteral("too large to be a Toonface project (%1 MB)").arg(info.size() >> 20));
+        *error = withFile(path, ProjectText::tr("too large to be a Toonface project (%1 MB)").arg(info.size() >> 20));
         return std::nullopt;
     }
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        *error = withFile(path, QStringLiteral("cannot read: ") + file.errorString());
+        *error = withFile(path, ProjectText::tr("cannot read: %1").arg(file.errorString()));
         return std::nullopt;
     }
     const QByteArray bytes = file.readAll();
     if (bytes.trimmed().isEmpty()) {
-        *error = withFile(path, QStringLiteral("the file is empty, not a Toonface project"));
+        *error = withFile(path, ProjectText::tr("the file is empty, not a Toonface project"));
         return std::nullopt;
     }
     QJsonParseError parseError;
@@ -522,7 +524,7 @@ std::optional<Project> loadProject(const QString &path, QString *error)
         const qsizetype line = before.count('\n') + 1;
         const qsizetype column = before.size() - before.lastIndexOf('\n');
         *error = withFile(path,
-            QStringLiteral("not a Toonface project: %1 at offset %2 (line %3, column %4)")
+            ProjectText::tr("not a Toonface project: %1 at offset %2 (line %3, column %4)")
                 .arg(parseError.errorString())
                 .arg(parseError.offset)
                 .arg(line)
@@ -530,7 +532,7 @@ std::optional<Project> loadProject(const QString &path, QString *error)
         return std::nullopt;
     }
     if (!doc.isObject()) {
-        *error = withFile(path, QStringLiteral("not a Toonface project (expected a JSON object, found an array)"));
+        *error = withFile(path, ProjectText::tr("not a Toonface project (expected a JSON object, found an array)"));
         return std::nullopt;
     }
     QString problem;

@@ -1,5 +1,6 @@
 #include "io/syllablesjson.h"
 
+#include "i18n/coretext.h"
 #include "io/jsonfield.h"
 
 #include <QJsonObject>
@@ -27,11 +28,11 @@ bool shapesFromJson(const JsonField &field, const LipsyncSyllable &syllable, QVe
             return false;
         const std::optional<MouthShape> shape = mouthShapeFromName(name);
         if (!shape)
-            return s.member("shape").fail(QStringLiteral("unknown mouth shape '%1'").arg(name), error);
+            return s.member("shape").fail(ProjectText::tr("unknown mouth shape '%1'").arg(name), error);
         key.shape = *shape;
         if (key.start < previous - kTimeSlack || key.start > syllable.end + kTimeSlack)
             return s.member("start").fail(
-                QStringLiteral("%1 s is outside the syllable (%2 to %3 s) or before the shape before it")
+                ProjectText::tr("%1 s is outside the syllable (%2 to %3 s) or before the shape before it")
                     .arg(key.start)
                     .arg(previous)
                     .arg(syllable.end),
@@ -85,9 +86,9 @@ bool syllablesFromJson(const JsonField &field, QVector<LipsyncSyllable> *out, QS
             || !f.member("confidence").toNumber(&s.confidence, error))
             return false;
         if (s.start < 0)
-            return f.member("start").expected(QStringLiteral("a time of 0 s or more"), error);
+            return f.member("start").expected(ProjectText::tr("a time of 0 s or more"), error);
         if (s.end < s.start)
-            return f.member("end").expected(QStringLiteral("a time after the start (%1 s)").arg(s.start), error);
+            return f.member("end").expected(ProjectText::tr("a time after the start (%1 s)").arg(s.start), error);
         if (!shapesFromJson(f.member("shapes"), s, &s.shapes, error))
             return false;
         result.append(std::move(s));

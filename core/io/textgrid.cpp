@@ -1,5 +1,7 @@
 #include "io/textgrid.h"
 
+#include "i18n/coretext.h"
+
 #include <QFile>
 #include <QRegularExpression>
 #include <QStringList>
@@ -10,7 +12,7 @@ QVector<TextGridInterval> readTextGridTier(const QString &path, const QString &t
 {
     auto fail = [&](const QString &why) {
         if (error)
-            *error = QStringLiteral("%1: %2").arg(path, why);
+            *error = withProblem(path, why);
         return QVector<TextGridInterval> {};
     };
     QFile f(path);
@@ -40,7 +42,7 @@ QVector<TextGridInterval> readTextGridTier(const QString &path, const QString &t
         }
         return out;
     }
-    return fail(QStringLiteral("no interval tier named '%1'").arg(tier));
+    return fail(LipSyncText::tr("no interval tier named '%1'").arg(tier));
 }
 
 } // namespace toonface

@@ -1,5 +1,7 @@
 #include "media/audiofeed.h"
 
+#include "i18n/coretext.h"
+
 #include <algorithm>
 
 namespace toonface {
@@ -30,26 +32,26 @@ bool AudioFeed::open(const AudioSource &source, QString *error)
         AVFormatContext *raw = nullptr;
         int r = avformat_open_input(&raw, localPath(source.path).constData(), nullptr, nullptr);
         if (r < 0)
-            return fail(error, source.path, QStringLiteral("cannot read the audio: %1").arg(avError(r)));
+            return fail(error, source.path, SoundText::tr("cannot read the audio: %1").arg(avError(r)));
         m_input.reset(raw);
         r = avformat_find_stream_info(raw, nullptr);
         if (r < 0)
-            return fail(error, source.path, QStringLiteral("cannot read the audio: %1").arg(avError(r)));
-        QString problem = QStringLiteral("no audio stream");
+            return fail(error, source.path, SoundText::tr("cannot read the audio: %1").arg(avError(r)));
+        QString problem = SoundText::tr("no audio stream");
         m_decoder = openDecoder(raw, AVMEDIA_TYPE_AUDIO, &m_stream, &problem);
         if (!m_decoder)
-            return fail(error, source.path, QStringLiteral("cannot read the audio: %1").arg(problem));
+            return fail(error, source.path, SoundText::tr("cannot read the audio: %1").arg(problem));
         m_sourceRate = m_decoder->sample_rate;
         m_packet.reset(av_packet_alloc());
         m_frame.reset(av_frame_alloc());
     } else {
         if (source.sampleRate <= 0)
-            return fail(error, QStringLiteral("audio samples"),
-                QStringLiteral("invalid sample rate %1").arg(source.sampleRate));
+            return fail(
+                error, SoundText::tr("audio samples"), SoundText::tr("invalid sample rate %1").arg(source.sampleRate));
         m_sourceRate = source.sampleRate;
     }
     if (m_sourceRate <= 0)
-        return fail(error, source.path, QStringLiteral("the audio has no sample rate"));
+        return fail(error, source.path, SoundText::tr("the audio has no sample rate"));
     return true;
 }
 
@@ -96,7 +98,7 @@ bool AudioFeed::start(int rate, QString *error)
     if (r >= 0)
         r = swr_init(raw);
     if (r < 0)
-        return fail(error, sourceName(), QStringLiteral("cannot resample the audio: %1").arg(avError(r)));
+        return fail(error, sourceName(), SoundText::tr("cannot resample the audio: %1").arg(avError(r)));
     // A positive offset is silence first; a negative one skips the source's beginning.
     const qint64 shift = qint64(std::llround(m_source.offset * rate));
     m_silenceBefore = std::max<qint64>(0, shift);
@@ -166,7 +168,7 @@ bool AudioFeed::decodeMore(QString *error)
         if (r == AVERROR_EOF)
             return flush(error);
         if (r != AVERROR(EAGAIN))
-            return fail(error, m_source.path, QStringLiteral("cannot decode the audio: %1").arg(avError(r)));
+            return fail(error, m_source.path, SoundText::tr("cannot decode the audio: %1").arg(avError(r)));
         if (m_draining) // the decoder said EAGAIN after a flush: nothing more will come
             return flush(error);
         r = av_read_frame(m_input.get(), m_packet.get());
@@ -176,13 +178,13 @@ bool AudioFeed::decodeMore(QString *error)
             continue;
         }
         if (r < 0)
-            return fail(error, m_source.path, QStringLiteral("cannot read the audio: %1").arg(avError(r)));
+            return fail(error, m_source.path, SoundText::tr("cannot read the audio: %1").arg(avError(r)));
         if (m_packet->stream_index == m_stream) {
             r = avcodec_send_packet(m_decoder.get(), m_packet.get());
             // A damaged packet is skipped, as players do.
             if (r < 0 && r != AVERROR(EAGAIN) && r != AVERROR_INVALIDDATA) {
                 av_packet_unref(m_packet.get());
-                return fail(error, m_source.path, QStringLiteral("cannot decode the audio: %1").arg(avError(r)));
+                return fail(error, m_source.path, SoundText::tr("cannot decode the audio: %1").arg(avError(r)));
             }
         }
         av_packet_unref(m_packet.get());
@@ -199,7 +201,7 @@ bool AudioFeed::convert(const uint8_t **in, int n, QString *error)
     uint8_t *out = reinterpret_cast<uint8_t *>(m_buffer.data() + old);
     const int got = swr_convert(m_swr.get(), &out, capacity, in, n);
     if (got < 0)
-        return fail(error, sourceName(), QStringLiteral("cannot resample the audio: %1").arg(avError(got)));
+        return fail(error, sourceName(), SoundText::tr("cannot resample the audio: %1").arg(avError(got)));
     m_buffer.resize(old + size_t(got));
     return true;
 }

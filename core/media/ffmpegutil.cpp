@@ -1,14 +1,33 @@
 #include "media/ffmpegutil.h"
 
+#include "i18n/coretext.h"
+
 #include <QDir>
 #include <QFile>
 
+#include <cerrno>
 #include <mutex>
 
 namespace toonface::av {
 
 QString avError(int code)
 {
+    // The errors a user meets most, in the interface's language; FFmpeg's own words for the rest.
+    switch (code) {
+    case AVERROR_INVALIDDATA: return MediaText::tr("the data is invalid or damaged");
+    case AVERROR_EOF: return MediaText::tr("the file ends early");
+    case AVERROR_DECODER_NOT_FOUND: return MediaText::tr("no decoder for it");
+    case AVERROR_ENCODER_NOT_FOUND: return MediaText::tr("no encoder for it");
+    case AVERROR_DEMUXER_NOT_FOUND: return MediaText::tr("its format is not recognised");
+    case AVERROR_MUXER_NOT_FOUND: return MediaText::tr("the format cannot be written");
+    case AVERROR(ENOENT): return MediaText::tr("no such file or folder");
+    case AVERROR(EACCES): return MediaText::tr("permission denied");
+    case AVERROR(EISDIR): return MediaText::tr("it is a folder");
+    case AVERROR(ENOSPC): return MediaText::tr("the disk is full");
+    case AVERROR(EROFS): return MediaText::tr("the disk is read-only");
+    case AVERROR(ENOMEM): return MediaText::tr("out of memory");
+    default: break;
+    }
     char buf[AV_ERROR_MAX_STRING_SIZE] = {};
     av_strerror(code, buf, sizeof buf);
     return QString::fromUtf8(buf);
@@ -17,7 +36,7 @@ QString avError(int code)
 bool fail(QString *error, const QString &path, const QString &problem)
 {
     if (error)
-        *error = QDir::toNativeSeparators(path) + QStringLiteral(": ") + problem;
+        *error = withProblem(QDir::toNativeSeparators(path), problem);
     return false;
 }
 
@@ -43,7 +62,7 @@ CodecPtr openDecoder(AVFormatContext *input, AVMediaType type, int *streamIndex,
     const AVStream *stream = input->streams[index];
     const AVCodec *codec = avcodec_find_decoder(stream->codecpar->codec_id);
     if (!codec) {
-        *problem = QStringLiteral("no decoder for its %1 codec '%2'")
+        *problem = VideoText::tr("no decoder for its %1 codec '%2'")
                        .arg(QString::fromLatin1(av_get_media_type_string(type)),
                            QString::fromLatin1(avcodec_get_name(stream->codecpar->codec_id)));
         return {};
@@ -55,7 +74,7 @@ CodecPtr openDecoder(AVFormatContext *input, AVMediaType type, int *streamIndex,
         r = avcodec_open2(ctx.get(), codec, nullptr);
     }
     if (r < 0) {
-        *problem = QStringLiteral("cannot open its %1 decoder: %2").arg(QString::fromLatin1(codec->name), avError(r));
+        *problem = VideoText::tr("cannot open its %1 decoder: %2").arg(QString::fromLatin1(codec->name), avError(r));
         return {};
     }
     *streamIndex = index;

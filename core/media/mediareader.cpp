@@ -1,5 +1,6 @@
 #include "media/mediareader.h"
 
+#include "i18n/coretext.h"
 #include "media/audiofeed.h"
 #include "media/ffmpegutil.h"
 #include "media/pngframes.h"
@@ -32,7 +33,7 @@ std::optional<MediaInfo> probePngSequence(const QString &folder, QString *error)
         ++info.frameCount;
     }
     if (info.frameCount == 0) {
-        fail(error, folder, QStringLiteral("no frame_NNNNN.png files in the folder"));
+        fail(error, folder, VideoText::tr("no frame_NNNNN.png files in the folder"));
         return std::nullopt;
     }
     const QImage image(dir.filePath(first));
@@ -51,13 +52,13 @@ std::optional<MediaInfo> probeMedia(const QString &path, QString *error)
     AVFormatContext *raw = nullptr;
     int r = avformat_open_input(&raw, localPath(path).constData(), nullptr, nullptr);
     if (r < 0) {
-        fail(error, path, QStringLiteral("cannot open: %1").arg(avError(r)));
+        fail(error, path, VideoText::tr("cannot open: %1").arg(avError(r)));
         return std::nullopt;
     }
     InputPtr input(raw);
     r = avformat_find_stream_info(raw, nullptr);
     if (r < 0) {
-        fail(error, path, QStringLiteral("cannot read the streams: %1").arg(avError(r)));
+        fail(error, path, VideoText::tr("cannot read the streams: %1").arg(avError(r)));
         return std::nullopt;
     }
     MediaInfo info;
@@ -68,7 +69,7 @@ std::optional<MediaInfo> probeMedia(const QString &path, QString *error)
     CodecPtr video = openDecoder(raw, AVMEDIA_TYPE_VIDEO, &videoIndex, &problem);
     CodecPtr audio = openDecoder(raw, AVMEDIA_TYPE_AUDIO, &audioIndex, &problem);
     if (!video && !audio) {
-        fail(error, path, problem.isEmpty() ? QStringLiteral("no video or audio stream") : problem);
+        fail(error, path, problem.isEmpty() ? VideoText::tr("no video or audio stream") : problem);
         return std::nullopt;
     }
     if (video) {
@@ -139,12 +140,12 @@ std::optional<QImage> readVideoFrame(const QString &path, int index, QString *er
     AVFormatContext *raw = nullptr;
     int r = avformat_open_input(&raw, localPath(path).constData(), nullptr, nullptr);
     if (r < 0) {
-        fail(error, path, QStringLiteral("cannot open: %1").arg(avError(r)));
+        fail(error, path, VideoText::tr("cannot open: %1").arg(avError(r)));
         return std::nullopt;
     }
     InputPtr input(raw);
     r = avformat_find_stream_info(raw, nullptr);
-    QString problem = QStringLiteral("no video stream");
+    QString problem = VideoText::tr("no video stream");
     int stream = -1;
     CodecPtr video = r < 0 ? nullptr : openDecoder(raw, AVMEDIA_TYPE_VIDEO, &stream, &problem);
     if (!video) {
@@ -192,7 +193,7 @@ std::optional<QImage> readVideoFrame(const QString &path, int index, QString *er
         receive();
     }
     if (!result)
-        fail(error, path, QStringLiteral("has no frame %1 (it has %2)").arg(index).arg(seen));
+        fail(error, path, VideoText::tr("has no frame %1 (it has %2)").arg(index).arg(seen));
     return result;
 }
 
@@ -200,7 +201,7 @@ std::optional<QVector<float>> readAudio(const QString &path, int sampleRate, QSt
 {
     quietFfmpegLogs();
     if (sampleRate <= 0) {
-        fail(error, path, QStringLiteral("invalid sample rate %1").arg(sampleRate));
+        fail(error, path, VideoText::tr("invalid sample rate %1").arg(sampleRate));
         return std::nullopt;
     }
     AudioFeed feed;

@@ -2,6 +2,7 @@
 
 #include "face/caricature.h"
 #include "face/fapu.h"
+#include "i18n/coretext.h"
 #include "render/curves.h"
 #include "render/svgbody.h"
 #include "render/svgexpression.h"
@@ -608,14 +609,14 @@ bool SvgFace::addLayerFile(const QString &svgPath, QString *error)
     QFile file(svgPath);
     if (!file.open(QIODevice::ReadOnly)) {
         if (error)
-            *error = QStringLiteral("cannot read layer file %1: %2").arg(svgPath, file.errorString());
+            *error = ImageText::tr("cannot read layer file %1: %2").arg(svgPath, file.errorString());
         return false;
     }
     LayerDrawing drawing;
     QString why;
     if (!readLayerSvg(file.readAll(), QStringLiteral("layer-%1-").arg(m_layers.size() + 1), &drawing, &why)) {
         if (error)
-            *error = QStringLiteral("layer file %1 is not a valid SVG file: %2").arg(svgPath, why);
+            *error = ImageText::tr("layer file %1 is not a valid SVG file: %2").arg(svgPath, why);
         return false;
     }
     m_layers.append(drawing.fragment);

@@ -1,5 +1,6 @@
 #include "render/svglayer.h"
 
+#include "i18n/coretext.h"
 #include "render/style.h"
 
 #include <QFile>
@@ -159,7 +160,7 @@ bool readLayerSvg(const QByteArray &content, const QString &idPrefix, LayerDrawi
             if (!sawRoot) {
                 sawRoot = true;
                 if (reader.name() != QLatin1StringView("svg")) {
-                    *error = QStringLiteral("the root element is <%1>, not <svg>").arg(reader.name());
+                    *error = ImageText::tr("the root element is <%1>, not <svg>").arg(reader.name());
                     return false;
                 }
                 out->viewBox = rootBox(reader.attributes());
@@ -208,14 +209,14 @@ bool readLayerSvg(const QByteArray &content, const QString &idPrefix, LayerDrawi
         }
     }
     if (reader.hasError()) {
-        *error = QStringLiteral("line %1, column %2: %3")
+        *error = ImageText::tr("line %1, column %2: %3")
                      .arg(reader.lineNumber())
                      .arg(reader.columnNumber())
                      .arg(reader.errorString());
         return false;
     }
     if (!sawRoot) {
-        *error = QStringLiteral("no root element");
+        *error = ImageText::tr("no root element");
         return false;
     }
     writer.writeEndElement();
@@ -233,19 +234,19 @@ bool loadLayerFile(const QString &path, StyleLayer *out, QString *error)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        *error = QStringLiteral("cannot read layer file %1: %2").arg(path, file.errorString());
+        *error = ImageText::tr("cannot read layer file %1: %2").arg(path, file.errorString());
         return false;
     }
     constexpr qint64 kMaxLayerBytes = 16 << 20;
     if (file.size() > kMaxLayerBytes) {
-        *error = QStringLiteral("layer file %1 is too large (more than 16 MB)").arg(path);
+        *error = ImageText::tr("layer file %1 is too large (more than 16 MB)").arg(path);
         return false;
     }
     const QByteArray content = file.readAll();
     LayerDrawing drawing;
     QString why;
     if (!readLayerSvg(content, QString(), &drawing, &why)) {
-        *error = QStringLiteral("layer file %1 is not a valid SVG file: %2").arg(path, why);
+        *error = ImageText::tr("layer file %1 is not a valid SVG file: %2").arg(path, why);
         return false;
     }
     StyleLayer layer;

@@ -1,5 +1,6 @@
 #include "speech/aligner.h"
 
+#include "i18n/coretext.h"
 #include "speech/boundaryrefine.h"
 #include "speech/dtw.h"
 #include "speech/features.h"
@@ -221,7 +222,7 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
 {
     const int n = int(script.syllables.size());
     if (!reference.ok() || reference.units.size() != n)
-        return failure(AlignStatus::BadInput, QStringLiteral("no reference rendering of the script"));
+        return failure(AlignStatus::BadInput, ScriptText::tr("no reference rendering of the script"));
     if (isCancelled(cancel))
         return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
     if (progress)
@@ -230,18 +231,18 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     // ln(power) spans at least ~12 dB between pauses and speech in any recording with speech.
     const double speech = a.speechDuration();
     if (a.frames < 10 || a.speechLevel - a.noiseFloor < 2.8f || speech < 0.08)
-        return failure(AlignStatus::CannotAlign, QStringLiteral("no speech found in the audio"));
+        return failure(AlignStatus::CannotAlign, ScriptText::tr("no speech found in the audio"));
     const double expected = b.speechDuration();
     if (speech < 0.3 * expected)
         return failure(AlignStatus::CannotAlign,
-            QStringLiteral("the script is far too long for the audio: its %1 syllables need about %2 s of "
+            ScriptText::tr("the script is far too long for the audio: its %1 syllables need about %2 s of "
                            "speech, the audio holds %3 s")
                 .arg(n)
                 .arg(expected, 0, 'f', 1)
                 .arg(speech, 0, 'f', 1));
     if (speech > 6.0 * expected)
         return failure(AlignStatus::CannotAlign,
-            QStringLiteral("the audio holds far more speech (%1 s) than the script's %2 syllables (about "
+            ScriptText::tr("the audio holds far more speech (%1 s) than the script's %2 syllables (about "
                            "%3 s)")
                 .arg(speech, 0, 'f', 1)
                 .arg(n)
@@ -280,7 +281,7 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     if (isCancelled(cancel))
         return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
     if (path.empty())
-        return failure(AlignStatus::CannotAlign, QStringLiteral("the audio and the script could not be matched"));
+        return failure(AlignStatus::CannotAlign, ScriptText::tr("the audio and the script could not be matched"));
     if (progress)
         progress(0.8, QStringLiteral("warping"));
     const Warp warp(path, b.frames);
@@ -522,9 +523,9 @@ std::optional<AlignResult> recordingFeatures(
     const Audio &audio, const Script &script, const std::atomic_bool *cancel, SpeechFeatures *out)
 {
     if (script.syllables.isEmpty())
-        return failure(AlignStatus::BadInput, QStringLiteral("the script is empty"));
+        return failure(AlignStatus::BadInput, ScriptText::tr("the script is empty"));
     if (audio.isEmpty())
-        return failure(AlignStatus::BadInput, QStringLiteral("the audio is empty"));
+        return failure(AlignStatus::BadInput, ScriptText::tr("the audio is empty"));
     *out = computeSpeechFeatures(resampled(audio, kSpeechSampleRate), cancel);
     if (isCancelled(cancel))
         return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
@@ -540,7 +541,7 @@ AlignResult alignToReference(const Audio &audio, const Script &script, const Tts
     if (std::optional<AlignResult> stopped = recordingFeatures(audio, script, cancel, &a))
         return *stopped;
     if (!reference.ok() || reference.units.size() != script.syllables.size())
-        return failure(AlignStatus::BadInput, QStringLiteral("no reference rendering of the script"));
+        return failure(AlignStatus::BadInput, ScriptText::tr("no reference rendering of the script"));
     return alignFeatures(a, script, reference, referenceFeatures(reference.audio, cancel), true, progress, cancel);
 }
 
@@ -557,7 +558,7 @@ AlignResult alignScript(const SpeechFeatures &a, const Script &script, const Ali
     const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
     if (script.syllables.isEmpty())
-        return failure(AlignStatus::BadInput, QStringLiteral("the script is empty"));
+        return failure(AlignStatus::BadInput, ScriptText::tr("the script is empty"));
     TtsOptions tts = options.reference;
     const bool matchRate = tts.rate <= 0;
     if (matchRate)

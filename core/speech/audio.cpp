@@ -1,5 +1,8 @@
 #include "speech/audio.h"
 
+#include "i18n/coretext.h"
+#include "media/ffmpegutil.h"
+
 #include <QFile>
 #include <QFileInfo>
 #include <QSaveFile>
@@ -22,6 +25,8 @@ namespace toonface {
 
 namespace {
 
+using av::avError;
+
 // FFmpeg's own log would repeat each problem of a corrupt file on stderr; the errors this
 // file returns say it once. TOONFACE_FFMPEG_LOG=1 keeps FFmpeg's log for debugging.
 void quietFfmpegLog()
@@ -31,13 +36,6 @@ void quietFfmpegLog()
         if (qEnvironmentVariableIsEmpty("TOONFACE_FFMPEG_LOG"))
             av_log_set_level(AV_LOG_FATAL);
     });
-}
-
-QString avError(int code)
-{
-    char buf[AV_ERROR_MAX_STRING_SIZE] = {};
-    av_strerror(code, buf, sizeof buf);
-    return QString::fromUtf8(buf);
 }
 
 struct FormatInputDeleter
@@ -121,36 +119,35 @@ AudioResult streamAudio(
     AudioResult r;
     auto fail = [&](AudioStatus status, const QString &what) {
         r.status = status;
-        r.error = QStringLiteral("%1: %2").arg(path, what);
+        r.error = withProblem(path, what);
         r.audio = {};
         return r;
     };
     quietFfmpegLog();
     if (!QFileInfo(path).isFile())
-        return fail(AudioStatus::Unreadable, QStringLiteral("no such file"));
+        return fail(AudioStatus::Unreadable, SoundText::tr("no such file"));
     if (QFileInfo(path).size() == 0)
-        return fail(AudioStatus::Empty, QStringLiteral("the file is empty"));
+        return fail(AudioStatus::Empty, SoundText::tr("the file is empty"));
 
     AVFormatContext *rawFmt = nullptr;
     const QByteArray local = QFile::encodeName(path);
     int rc = avformat_open_input(&rawFmt, local.constData(), nullptr, nullptr);
     if (rc < 0)
-        return fail(
-            AudioStatus::Unreadable, QStringLiteral("not a readable sound or video file (%1)").arg(avError(rc)));
+        return fail(AudioStatus::Unreadable, SoundText::tr("not a readable sound or video file (%1)").arg(avError(rc)));
     std::unique_ptr<AVFormatContext, FormatInputDeleter> fmt(rawFmt);
     if ((rc = avformat_find_stream_info(fmt.get(), nullptr)) < 0)
-        return fail(AudioStatus::Unreadable, QStringLiteral("cannot read its streams (%1)").arg(avError(rc)));
+        return fail(AudioStatus::Unreadable, SoundText::tr("cannot read its streams (%1)").arg(avError(rc)));
     const AVCodec *codec = nullptr;
     const int stream = av_find_best_stream(fmt.get(), AVMEDIA_TYPE_AUDIO, -1, -1, &codec, 0);
     if (stream < 0 || !codec)
         return fail(AudioStatus::Unreadable,
-            stream == AVERROR_DECODER_NOT_FOUND ? QStringLiteral("no decoder for its sound track")
-                                                : QStringLiteral("it has no sound track"));
+            stream == AVERROR_DECODER_NOT_FOUND ? SoundText::tr("no decoder for its sound track")
+                                                : SoundText::tr("it has no sound track"));
     std::unique_ptr<AVCodecContext, CodecDeleter> dec(avcodec_alloc_context3(codec));
     if (!dec || avcodec_parameters_to_context(dec.get(), fmt->streams[stream]->codecpar) < 0
         || avcodec_open2(dec.get(), codec, nullptr) < 0)
         return fail(
-            AudioStatus::Unreadable, QStringLiteral("cannot open the %1 decoder").arg(QString::fromUtf8(codec->name)));
+            AudioStatus::Unreadable, SoundText::tr("cannot open the %1 decoder").arg(QString::fromUtf8(codec->name)));
 
     if (dec->ch_layout.order == AV_CHANNEL_ORDER_UNSPEC) {
         const int n = dec->ch_layout.nb_channels > 0 ? dec->ch_layout.nb_channels : 1;
@@ -191,7 +188,7 @@ AudioResult streamAudio(
     auto drain = [&]() -> bool {
         while (avcodec_receive_frame(dec.get(), frame.get()) >= 0) {
             if (frame->sample_rate < kMinSampleRate) {
-                refusal = QStringLiteral("its sample rate (%1 Hz) is too low for speech (at least %2 Hz)")
+                refusal = SoundText::tr("its sample rate (%1 Hz) is too low for speech (at least %2 Hz)")
                               .arg(frame->sample_rate)
                               .arg(kMinSampleRate);
                 return false;
@@ -211,7 +208,7 @@ AudioResult streamAudio(
                 swr = monoFloatResampler(&layout, swrFormat, swrRate, kSpeechSampleRate);
                 av_channel_layout_uninit(&layout);
                 if (!swr) {
-                    refusal = QStringLiteral("cannot convert its samples");
+                    refusal = SoundText::tr("cannot convert its samples");
                     return false;
                 }
             }
@@ -222,8 +219,8 @@ AudioResult streamAudio(
             ++decodedFrames;
             av_frame_unref(frame.get());
             if (r.sourceDuration > plausibleSeconds) {
-                refusal = QStringLiteral("it is damaged: it decodes to more than %1 s of sound, more than its %2 bytes "
-                                         "can hold")
+                refusal = SoundText::tr("it is damaged: it decodes to more than %1 s of sound, more than its %2 bytes "
+                                        "can hold")
                               .arg(int(plausibleSeconds))
                               .arg(fileSize);
                 return false;
@@ -261,13 +258,13 @@ AudioResult streamAudio(
     if (r.sampleCount == 0) {
         if (badPackets > 0 || decodedFrames == 0)
             return fail(decodedFrames == 0 && badPackets == 0 ? AudioStatus::Empty : AudioStatus::Unreadable,
-                badPackets > 0 ? QStringLiteral("its sound track cannot be decoded (corrupt data)")
-                               : QStringLiteral("it holds no sound"));
-        return fail(AudioStatus::Empty, QStringLiteral("it holds no sound"));
+                badPackets > 0 ? SoundText::tr("its sound track cannot be decoded (corrupt data)")
+                               : SoundText::tr("it holds no sound"));
+        return fail(AudioStatus::Empty, SoundText::tr("it holds no sound"));
     }
     if (peak < 1e-3f)
         return fail(AudioStatus::Silent,
-            QStringLiteral("it is silent (peak %1 dBFS)").arg(peak > 0 ? 20 * std::log10(peak) : -999.0, 0, 'f', 0));
+            SoundText::tr("it is silent (peak %1 dBFS)").arg(peak > 0 ? 20 * std::log10(peak) : -999.0, 0, 'f', 0));
     r.audio.sampleRate = kSpeechSampleRate;
     r.status = AudioStatus::Ok;
     if (progress)
@@ -362,7 +359,7 @@ bool writeWav(const QString &path, const Audio &audio, QString *error)
 {
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly)) {
-        *error = QStringLiteral("cannot write %1: %2").arg(path, f.errorString());
+        *error = SoundText::tr("cannot write %1: %2").arg(path, f.errorString());
         return false;
     }
     const quint32 dataBytes = quint32(audio.samples.size() * 2);
@@ -397,7 +394,7 @@ bool writeWav(const QString &path, const Audio &audio, QString *error)
     f.write(h);
     f.write(pcm);
     if (!f.commit()) {
-        *error = QStringLiteral("cannot write %1: %2").arg(path, f.errorString());
+        *error = SoundText::tr("cannot write %1: %2").arg(path, f.errorString());
         return false;
     }
     return true;
@@ -422,7 +419,7 @@ bool writeAudio(const QString &path, const Audio &audio, QString *error)
         return writeWav(path, audio, error);
     quietFfmpegLog();
     auto fail = [&](const QString &what) {
-        *error = QStringLiteral("cannot write %1: %2").arg(path, what);
+        *error = SoundText::tr("cannot write %1: %2").arg(path, what);
         return false;
     };
     const AVCodec *codec = nullptr;
@@ -437,14 +434,14 @@ bool writeAudio(const QString &path, const Audio &audio, QString *error)
     else if (suffix == QLatin1String("m4a") || suffix == QLatin1String("aac"))
         codec = avcodec_find_encoder(AV_CODEC_ID_AAC);
     else
-        return fail(QStringLiteral("unknown sound format '.%1' (use wav, flac, mp3, ogg, opus or m4a)").arg(suffix));
+        return fail(SoundText::tr("unknown sound format '.%1' (use wav, flac, mp3, ogg, opus or m4a)").arg(suffix));
     if (!codec)
-        return fail(QStringLiteral("this FFmpeg has no encoder for .%1").arg(suffix));
+        return fail(SoundText::tr("this FFmpeg has no encoder for .%1").arg(suffix));
 
     const QByteArray local = QFile::encodeName(path);
     AVFormatContext *rawOut = nullptr;
     if (avformat_alloc_output_context2(&rawOut, nullptr, nullptr, local.constData()) < 0 || !rawOut)
-        return fail(QStringLiteral("no container for .%1").arg(suffix));
+        return fail(SoundText::tr("no container for .%1").arg(suffix));
     std::unique_ptr<AVFormatContext, FormatOutputDeleter> oc(rawOut);
     std::unique_ptr<AVCodecContext, CodecDeleter> enc(avcodec_alloc_context3(codec));
     enc->sample_fmt = codec->sample_fmts ? codec->sample_fmts[0] : AV_SAMPLE_FMT_FLTP;
@@ -467,10 +464,10 @@ bool writeAudio(const QString &path, const Audio &audio, QString *error)
         enc->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
     int rc = avcodec_open2(enc.get(), codec, nullptr);
     if (rc < 0)
-        return fail(QStringLiteral("cannot open the %1 encoder (%2)").arg(QString::fromUtf8(codec->name), avError(rc)));
+        return fail(SoundText::tr("cannot open the %1 encoder (%2)").arg(QString::fromUtf8(codec->name), avError(rc)));
     AVStream *st = avformat_new_stream(oc.get(), nullptr);
     if (!st || avcodec_parameters_from_context(st->codecpar, enc.get()) < 0)
-        return fail(QStringLiteral("cannot add a sound stream"));
+        return fail(SoundText::tr("cannot add a sound stream"));
     st->time_base = enc->time_base;
     if (!(oc->oformat->flags & AVFMT_NOFILE) && (rc = avio_open(&oc->pb, local.constData(), AVIO_FLAG_WRITE)) < 0)
         return fail(avError(rc));
@@ -484,7 +481,7 @@ bool writeAudio(const QString &path, const Audio &audio, QString *error)
             < 0
         || swr_init(rawSwr) < 0) {
         swr_free(&rawSwr);
-        return fail(QStringLiteral("cannot convert the samples"));
+        return fail(SoundText::tr("cannot convert the samples"));
     }
     SwrPtr swr(rawSwr);
     const int bytesPerSample = av_get_bytes_per_sample(enc->sample_fmt);
@@ -499,7 +496,7 @@ bool writeAudio(const QString &path, const Audio &audio, QString *error)
         total += std::max(more, 0);
     }
     if (total < 0)
-        return fail(QStringLiteral("cannot convert the samples"));
+        return fail(SoundText::tr("cannot convert the samples"));
 
     std::unique_ptr<AVFrame, FrameDeleter> frame(av_frame_alloc());
     std::unique_ptr<AVPacket, PacketDeleter> pkt(av_packet_alloc());
@@ -526,17 +523,17 @@ bool writeAudio(const QString &path, const Audio &audio, QString *error)
         frame->sample_rate = rate;
         av_channel_layout_copy(&frame->ch_layout, &mono);
         if (av_frame_get_buffer(frame.get(), 0) < 0)
-            return fail(QStringLiteral("out of memory"));
+            return fail(SoundText::tr("out of memory"));
         memset(frame->data[0], 0, size_t(frameSamples) * size_t(bytesPerSample));
         memcpy(
             frame->data[0], converted.constData() + qsizetype(at) * bytesPerSample, size_t(n) * size_t(bytesPerSample));
         frame->pts = at;
         if (avcodec_send_frame(enc.get(), frame.get()) < 0 || !writePackets())
-            return fail(QStringLiteral("encoding failed"));
+            return fail(SoundText::tr("encoding failed"));
     }
     avcodec_send_frame(enc.get(), nullptr);
     if (!writePackets() || av_write_trailer(oc.get()) < 0)
-        return fail(QStringLiteral("encoding failed"));
+        return fail(SoundText::tr("encoding failed"));
     return true;
 }
 

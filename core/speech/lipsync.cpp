@@ -1,5 +1,6 @@
 #include "speech/lipsync.h"
 
+#include "i18n/coretext.h"
 #include "speech/englishshapes.h"
 
 #include <QJsonArray>
@@ -115,7 +116,7 @@ LipsyncOutcome lipsyncRecording(const QString &audioPath, const Script &script, 
         cancel);
     if (audio.status == AudioStatus::Cancelled) {
         out.status = LipsyncStatus::Cancelled;
-        out.error = QStringLiteral("cancelled");
+        out.error = ScriptText::tr("cancelled");
         return out;
     }
     if (!audio.ok()) {
@@ -133,13 +134,13 @@ LipsyncOutcome lipsyncRecording(const QString &audioPath, const Script &script, 
     case AlignStatus::Ok: break;
     case AlignStatus::Cancelled:
         out.status = LipsyncStatus::Cancelled;
-        out.error = QStringLiteral("cancelled");
+        out.error = ScriptText::tr("cancelled");
         return out;
     case AlignStatus::CannotAlign:
         out.status = LipsyncStatus::CannotAlign;
-        out.error = QStringLiteral("%1 and %2 could not be aligned: %3").arg(audioPath, scriptName, aligned.error);
+        out.error = ScriptText::tr("%1 and %2 could not be aligned: %3").arg(audioPath, scriptName, aligned.error);
         return out;
-    case AlignStatus::BadInput: out.error = QStringLiteral("%1: %2").arg(audioPath, aligned.error); return out;
+    case AlignStatus::BadInput: out.error = withProblem(audioPath, aligned.error); return out;
     }
     out.status = LipsyncStatus::Ok;
     out.result = lipsyncResult(script, aligned, double(audio.sampleCount) / kSpeechSampleRate);

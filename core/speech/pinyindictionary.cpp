@@ -1,5 +1,7 @@
 #include "speech/pinyindictionary.h"
 
+#include "i18n/coretext.h"
+
 #include <QDateTime>
 #include <QDir>
 #include <QFile>
@@ -32,13 +34,13 @@ QByteArray readMaybeCompressed(const QString &bz2Path, QString *error)
     }
     QFile f(bz2Path);
     if (!f.open(QIODevice::ReadOnly)) {
-        *error = QStringLiteral("cannot read %1").arg(bz2Path);
+        *error = ScriptText::tr("cannot read %1").arg(bz2Path);
         return {};
     }
     const QByteArray packed = f.readAll();
     bz_stream s {};
     if (BZ2_bzDecompressInit(&s, 0, 0) != BZ_OK) {
-        *error = QStringLiteral("cannot start bzip2 decompression of %1").arg(bz2Path);
+        *error = ScriptText::tr("cannot start bzip2 decompression of %1").arg(bz2Path);
         return {};
     }
     QByteArray out;
@@ -60,7 +62,7 @@ QByteArray readMaybeCompressed(const QString &bz2Path, QString *error)
     }
     BZ2_bzDecompressEnd(&s);
     if (rc != BZ_STREAM_END) {
-        *error = QStringLiteral("%1 is not a valid bzip2 file").arg(bz2Path);
+        *error = ScriptText::tr("%1 is not a valid bzip2 file").arg(bz2Path);
         return {};
     }
     out.resize(used);
@@ -244,7 +246,7 @@ std::optional<Sources> parseSources(const QString &root, QString *error)
     const QString readingsPath = root + QStringLiteral("/unicode/Unihan_Readings.txt.bz2");
     const QByteArray readings = readMaybeCompressed(readingsPath, &err);
     if (readings.isEmpty()) {
-        *error = QStringLiteral("Chinese character readings are missing (%1; install the Debian package unicode-data)")
+        *error = ScriptText::tr("Chinese character readings are missing (%1; install the Debian package unicode-data)")
                      .arg(err);
         return std::nullopt;
     }
@@ -273,7 +275,7 @@ std::optional<Sources> parseSources(const QString &root, QString *error)
             d.readings.insert(it.key(), all);
     }
     if (d.readings.size() < 1000) {
-        *error = QStringLiteral("%1 holds no Mandarin readings").arg(readingsPath);
+        *error = ScriptText::tr("%1 holds no Mandarin readings").arg(readingsPath);
         return std::nullopt;
     }
 
@@ -295,7 +297,7 @@ std::optional<Sources> parseSources(const QString &root, QString *error)
     QFile terra(terraPath);
     if (!terra.open(QIODevice::ReadOnly)) {
         *error
-            = QStringLiteral("the phrase dictionary %1 is missing (install the Debian package rime-data-terra-pinyin)")
+            = ScriptText::tr("the phrase dictionary %1 is missing (install the Debian package rime-data-terra-pinyin)")
                   .arg(terraPath);
         return std::nullopt;
     }
@@ -455,8 +457,7 @@ std::shared_ptr<const PinyinDictionary> PinyinDictionary::loadCached(
             return std::shared_ptr<const PinyinDictionary>(new PinyinDictionary(std::move(*index)));
         }
         how = index ? CacheUse::RebuiltStale : CacheUse::RebuiltDamaged;
-        note = index ? QStringLiteral("%1: built from other sources").arg(cachePath)
-                     : QStringLiteral("%1: %2").arg(cachePath, why);
+        note = index ? ScriptText::tr("%1: built from other sources").arg(cachePath) : withProblem(cachePath, why);
     }
     QByteArray block = buildBlock(root, error);
     if (block.isEmpty())
@@ -466,7 +467,7 @@ std::shared_ptr<const PinyinDictionary> PinyinDictionary::loadCached(
     if (!QDir().mkpath(cacheDir) || !out.open(QIODevice::WriteOnly) || out.write(block) != block.size()
         || !out.commit()) {
         how = CacheUse::NotWritten;
-        note = QStringLiteral("cannot write %1: %2").arg(cachePath, out.errorString());
+        note = ScriptText::tr("cannot write %1: %2").arg(cachePath, out.errorString());
     }
     std::optional<PinyinIndex> index = PinyinIndex::fromBlock(std::move(block), error);
     if (!index)

@@ -1,5 +1,7 @@
 #include "speech/pinyinindex.h"
 
+#include "i18n/coretext.h"
+
 #include <algorithm>
 #include <cstring>
 #include <map>
@@ -171,12 +173,12 @@ std::optional<PinyinIndex> PinyinIndex::fromBlock(QByteArray block, QString *err
     };
     Header h;
     if (size_t(block.size()) < sizeof h)
-        return fail(QStringLiteral("too short to be a pinyin index"));
+        return fail(ScriptText::tr("too short to be a pinyin index"));
     std::memcpy(&h, block.constData(), sizeof h);
     if (std::memcmp(h.magic, kMagic, sizeof kMagic) != 0)
-        return fail(QStringLiteral("not a pinyin index"));
+        return fail(ScriptText::tr("not a pinyin index"));
     if (h.version != kVersion)
-        return fail(QStringLiteral("pinyin index format %1, expected %2").arg(h.version).arg(kVersion));
+        return fail(ScriptText::tr("pinyin index format %1, expected %2").arg(h.version).arg(kVersion));
     // The sections' sizes, in 64-bit arithmetic: a damaged header cannot overflow them.
     const quint64 syllables = aligned4(h.syllableBytes);
     const quint64 chars = 12ull * h.charCount;
@@ -186,9 +188,9 @@ std::optional<PinyinIndex> PinyinIndex::fromBlock(QByteArray block, QString *err
     const quint64 phraseReadings = aligned4(2ull * h.phraseCharCount);
     const quint64 need = sizeof h + syllables + chars + charReadings + phrases + phraseChars + phraseReadings;
     if (quint64(block.size()) != need)
-        return fail(QStringLiteral("pinyin index of %1 bytes, its header describes %2").arg(block.size()).arg(need));
+        return fail(ScriptText::tr("pinyin index of %1 bytes, its header describes %2").arg(block.size()).arg(need));
     if (blockChecksum(h, block.constData() + sizeof h, size_t(block.size()) - sizeof h) != h.checksum)
-        return fail(QStringLiteral("pinyin index checksum mismatch (damaged)"));
+        return fail(ScriptText::tr("pinyin index checksum mismatch (damaged)"));
 
     PinyinIndex index;
     const QList<QByteArray> lines
@@ -200,11 +202,11 @@ std::optional<PinyinIndex> PinyinIndex::fromBlock(QByteArray block, QString *err
         bool ok = false;
         const int tone = space > 0 ? line.mid(space + 1).toInt(&ok) : 0;
         if (!ok || tone < 1 || tone > 5)
-            return fail(QStringLiteral("pinyin index has a bad syllable '%1'").arg(QString::fromUtf8(line)));
+            return fail(ScriptText::tr("pinyin index has a bad syllable '%1'").arg(QString::fromUtf8(line)));
         index.m_syllables.append({QString::fromUtf8(line.left(space)), tone});
     }
     if (quint32(index.m_syllables.size()) != h.syllableCount)
-        return fail(QStringLiteral("pinyin index syllable table is damaged"));
+        return fail(ScriptText::tr("pinyin index syllable table is damaged"));
     index.m_chars = sizeof h + syllables;
     index.m_charReadings = index.m_chars + chars;
     index.m_phrases = index.m_charReadings + charReadings;
@@ -220,19 +222,19 @@ std::optional<PinyinIndex> PinyinIndex::fromBlock(QByteArray block, QString *err
         const quint64 first = index.u32(index.m_chars, 3 * c + 1), count = index.u32(index.m_chars, 3 * c + 2);
         if (first + count > h.charReadingCount
             || (c > 0 && index.u32(index.m_chars, 3 * c) <= index.u32(index.m_chars, 3 * (c - 1))))
-            return fail(QStringLiteral("pinyin index character table is damaged"));
+            return fail(ScriptText::tr("pinyin index character table is damaged"));
     }
     for (quint32 k = 0; k < h.charReadingCount; ++k)
         if (index.u16(index.m_charReadings, k) >= h.syllableCount)
-            return fail(QStringLiteral("pinyin index character readings are damaged"));
+            return fail(ScriptText::tr("pinyin index character readings are damaged"));
     for (quint32 p = 0; p < h.phraseCount; ++p) {
         const quint64 first = index.u32(index.m_phrases, 2 * p), count = index.u32(index.m_phrases, 2 * p + 1);
         if (count == 0 || count > index.m_maxPhraseLength || first + count > h.phraseCharCount)
-            return fail(QStringLiteral("pinyin index phrase table is damaged"));
+            return fail(ScriptText::tr("pinyin index phrase table is damaged"));
     }
     for (quint32 k = 0; k < h.phraseCharCount; ++k)
         if (index.u16(index.m_phraseReadings, k) >= h.syllableCount)
-            return fail(QStringLiteral("pinyin index phrase readings are damaged"));
+            return fail(ScriptText::tr("pinyin index phrase readings are damaged"));
     return index;
 }
 

@@ -1,5 +1,6 @@
 #include "speech/script.h"
 
+#include "i18n/coretext.h"
 #include "speech/pinyin.h"
 #include "speech/pinyindictionary.h"
 #include "speech/zhuyin.h"
@@ -178,10 +179,10 @@ ScriptParse parseScript(const QString &text, Language language)
             if (!syllables.isEmpty())
                 syllables.back().phraseBreakAfter = true;
             break;
-        case Kind::Problem: addProblem(t.first, 1, QStringLiteral("cannot be spoken")); break;
+        case Kind::Problem: addProblem(t.first, 1, ScriptText::tr("cannot be spoken")); break;
         case Kind::Han: {
             if (language == Language::English) {
-                addProblem(t.first, t.count, QStringLiteral("is not English"));
+                addProblem(t.first, t.count, ScriptText::tr("is not English"));
                 break;
             }
             QString dictError;
@@ -198,7 +199,7 @@ ScriptParse parseScript(const QString &text, Language language)
                 const CodePoint &cp = cps[size_t(t.first + k)];
                 const PinyinSyllable &r = readings[k];
                 if (r.pinyin.isEmpty()) {
-                    addProblem(t.first + k, 1, QStringLiteral("has no Mandarin reading in the dictionary"));
+                    addProblem(t.first + k, 1, ScriptText::tr("has no Mandarin reading in the dictionary"));
                     continue;
                 }
                 syllables.append({text.mid(cp.pos, cp.len), r.pinyin, r.tone, cp.pos, cp.len, false});
@@ -207,14 +208,14 @@ ScriptParse parseScript(const QString &text, Language language)
         }
         case Kind::Zhuyin: {
             if (language == Language::English) {
-                addProblem(t.first, t.count, QStringLiteral("is not English"));
+                addProblem(t.first, t.count, ScriptText::tr("is not English"));
                 break;
             }
             const QString run = tokenText(t);
             QVector<int> lengths;
             const auto sylls = zhuyinToPinyin(run, &lengths);
             if (!sylls) {
-                addProblem(t.first, t.count, QStringLiteral("is not valid Zhuyin"));
+                addProblem(t.first, t.count, ScriptText::tr("is not valid Zhuyin"));
                 break;
             }
             int offset = cps[size_t(t.first)].pos;
@@ -239,8 +240,8 @@ ScriptParse parseScript(const QString &text, Language language)
                 for (const QChar ch : word)
                     number = number && ch.isDigit();
                 addProblem(t.first, t.count,
-                    number ? QStringLiteral("is a number: write it in characters or pinyin")
-                           : QStringLiteral("is not Hanyu pinyin"));
+                    number ? ScriptText::tr("is a number: write it in characters or pinyin")
+                           : ScriptText::tr("is not Hanyu pinyin"));
                 break;
             }
             for (int k = 0; k < sylls->size(); ++k)
@@ -253,11 +254,13 @@ ScriptParse parseScript(const QString &text, Language language)
 
     if (!result.problems.isEmpty()) {
         const ScriptProblem &p = result.problems.first();
-        result.error = QStringLiteral("line %1, column %2: '%3' %4").arg(p.line).arg(p.column).arg(p.text, p.reason);
+        result.error = ScriptText::tr("line %1, column %2: '%3' %4")
+                           .arg(QString::number(p.line), QString::number(p.column), p.text, p.reason);
         if (result.problems.size() > 1)
-            result.error += QStringLiteral(" (and %1 more)").arg(result.problems.size() - 1);
+            result.error
+                = ScriptText::tr("%1 (and %n more)", nullptr, int(result.problems.size() - 1)).arg(result.error);
     } else if (syllables.isEmpty()) {
-        result.error = QStringLiteral("the script holds nothing to speak");
+        result.error = ScriptText::tr("the script holds nothing to speak");
     }
     return result;
 }
@@ -267,14 +270,14 @@ ScriptParse readScriptFile(const QString &path, Language language, QString *text
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {
         ScriptParse r;
-        r.error = QStringLiteral("cannot read the script %1: %2").arg(path, f.errorString());
+        r.error = ScriptText::tr("cannot read the script %1: %2").arg(path, f.errorString());
         return r;
     }
     const QByteArray bytes = f.readAll();
     QString text = QString::fromUtf8(bytes);
     if (text.contains(QChar::ReplacementCharacter) && !bytes.contains("\xEF\xBF\xBD")) {
         ScriptParse r;
-        r.error = QStringLiteral("the script %1 is not UTF-8 text").arg(path);
+        r.error = ScriptText::tr("the script %1 is not UTF-8 text").arg(path);
         return r;
     }
     if (text.startsWith(QChar(0xFEFF)))
@@ -283,7 +286,7 @@ ScriptParse readScriptFile(const QString &path, Language language, QString *text
         *textRead = text.trimmed();
     ScriptParse r = parseScript(text, language);
     if (!r.ok())
-        r.error = path + QStringLiteral(": ") + r.error;
+        r.error = withProblem(path, r.error);
     return r;
 }
 

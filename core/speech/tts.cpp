@@ -1,5 +1,6 @@
 #include "speech/tts.h"
 
+#include "i18n/coretext.h"
 #include "speech/pinyin.h"
 #include "speech/ttsvoicefile.h"
 
@@ -159,7 +160,7 @@ int ttsSampleRate()
 
 QString ttsUnavailable()
 {
-    return QStringLiteral("espeak-ng cannot start: its data is missing (install espeak-ng-data)");
+    return ScriptText::tr("espeak-ng cannot start: its data is missing (install espeak-ng-data)");
 }
 
 QString ttsVoice(const TtsOptions &options, Language language)
@@ -211,7 +212,7 @@ TtsResult synthesize(const Script &script, const TtsOptions &options, const Audi
 {
     TtsResult result;
     if (script.syllables.isEmpty()) {
-        result.error = QStringLiteral("nothing to speak");
+        result.error = ScriptText::tr("nothing to speak");
         return result;
     }
     QMutexLocker lock(&espeakMutex());
@@ -222,7 +223,7 @@ TtsResult synthesize(const Script &script, const TtsOptions &options, const Audi
     }
     const QString voice = ttsVoice(options, script.language);
     if (!selectVoice(voice)) {
-        result.error = QStringLiteral("espeak-ng has no voice '%1'").arg(voice);
+        result.error = ScriptText::tr("espeak-ng has no voice '%1'").arg(voice);
         return result;
     }
     espeak_SetParameter(espeakRATE, std::clamp(options.rate, 80, 450), 0);
@@ -246,11 +247,11 @@ TtsResult synthesize(const Script &script, const TtsOptions &options, const Audi
     espeak_Synchronize();
     g_collector = nullptr;
     if (isCancelled(cancel)) {
-        result.error = QStringLiteral("cancelled");
+        result.error = ScriptText::tr("cancelled");
         return result;
     }
     if (rc != EE_OK || collector.count == 0) {
-        result.error = QStringLiteral("espeak-ng could not speak the script");
+        result.error = ScriptText::tr("espeak-ng could not speak the script");
         return result;
     }
 

@@ -1,5 +1,7 @@
 #include "speech/waveformpeaks.h"
 
+#include "i18n/coretext.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -115,7 +117,7 @@ WaveformPeaksResult loadWaveformPeaks(
     result.peaks = WaveformPeaks::compute(decoded.audio, cancel);
     if (result.peaks.isEmpty() && isCancelled(cancel)) {
         result.status = AudioStatus::Cancelled;
-        result.error = QStringLiteral("%1: cancelled").arg(path);
+        result.error = withProblem(path, SoundText::tr("cancelled"));
         return result;
     }
     return result;

@@ -1,5 +1,7 @@
 #include "detect/classic.h"
+
 #include "detect/regions.h"
+#include "i18n/coretext.h"
 #include "track/trackingmethod.h"
 
 #include <QLineF>
@@ -226,8 +228,8 @@ std::unique_ptr<TrackingMethod> makeClassicMethod(const DetectionResult &neutral
     if (!neutral.tracking.valid || neutral.tracking.mouth.isEmpty()
         || QLineF(neutral.tracking.eyeballs[0], neutral.tracking.eyeballs[1]).length() < 4) {
         if (error)
-            *error = QStringLiteral("the neutral face's detection kept no tracking seed (thresholds, eyeballs, "
-                                    "mouth region) for the classic method");
+            *error = VideoText::tr("the neutral face's detection kept no tracking seed (thresholds, eyeballs, "
+                                   "mouth region) for the classic method");
         return nullptr;
     }
     return std::make_unique<ClassicMethod>(neutral);

@@ -2,6 +2,7 @@
 
 #include "detect/landmarkfit.h"
 #include "detect/landmarkmap.h"
+#include "i18n/coretext.h"
 #include "track/retarget.h"
 #include "track/videofilesource.h"
 
@@ -57,7 +58,7 @@ std::optional<ClipSignals> referenceSignals(const QString &path, QString *error)
     }
     if (!anyFace) {
         if (error)
-            *error = source.error().isEmpty() ? path + QStringLiteral(": no face in any frame") : source.error();
+            *error = source.error().isEmpty() ? VideoText::tr("%1: no face in any frame").arg(path) : source.error();
         return std::nullopt;
     }
     return s;

@@ -1,6 +1,7 @@
 #include "track/tracker.h"
 
 #include "face/fapu.h"
+#include "i18n/coretext.h"
 #include "track/trackingmethod.h"
 
 #include <QLineF>
@@ -76,7 +77,7 @@ bool Tracker::setNeutral(const QImage &frame, QString *error, DetectStatus *stat
         return false;
     };
     if (frame.isNull())
-        return failWith(DetectStatus::BadImage, QStringLiteral("the neutral frame is empty"));
+        return failWith(DetectStatus::BadImage, VideoText::tr("the neutral frame is empty"));
     DetectOptions detect;
     detect.method = m_options.method;
     m_neutral = detectFace(frame, detect);
@@ -94,8 +95,7 @@ bool Tracker::setNeutral(const QImage &frame, QString *error, DetectStatus *stat
     m_neutralMeasure = m_method->measure(frame);
     if (!m_neutralMeasure.found || !(neutralEs0() > 0))
         return failWith(DetectStatus::NoFace,
-            QStringLiteral("the %1 tracking cannot follow the face it detected on the neutral frame")
-                .arg(methodName()));
+            VideoText::tr("the %1 tracking cannot follow the face it detected on the neutral frame").arg(methodName()));
 
     const FaceModel &face = m_neutral.face;
     const double es0 = face.fapu().es0;

@@ -1,5 +1,6 @@
 #include "track/trackvideo.h"
 
+#include "i18n/coretext.h"
 #include "io/facejson.h"
 #include "track/videofilesource.h"
 
@@ -103,13 +104,13 @@ TrackResult trackVideo(const QString &path, const TrackVideoOptions &options,
     auto cancelled = [&] {
         if (cancel && cancel->load()) {
             result.status = TrackStatus::Cancelled;
-            result.error = path + QStringLiteral(": tracking was cancelled");
+            result.error = VideoText::tr("%1: tracking was cancelled").arg(path);
             return true;
         }
         return false;
     };
     if (options.neutralFrame < 0) {
-        result.error = path + QStringLiteral(": the neutral frame must be 0 or later");
+        result.error = VideoText::tr("%1: the neutral frame must be 0 or later").arg(path);
         return result;
     }
 
@@ -136,18 +137,16 @@ TrackResult trackVideo(const QString &path, const TrackVideoOptions &options,
         return result;
     if (!neutral) {
         result.error = !source.error().isEmpty() ? source.error()
-            : seen == 0                          ? path + QStringLiteral(": no video frame could be decoded")
-                                                 : path
-                + QStringLiteral(": the neutral frame %1 is past the video's end (it has %2 frames)")
-                      .arg(options.neutralFrame)
-                      .arg(seen);
+            : seen == 0                          ? VideoText::tr("%1: no video frame could be decoded").arg(path)
+                        : VideoText::tr("%1: the neutral frame %2 is past the video's end (it has %3 frames)")
+                              .arg(path, QString::number(options.neutralFrame), QString::number(seen));
         return result;
     }
     Tracker tracker(options.tracker);
     DetectStatus status = DetectStatus::NoFace;
     if (!tracker.setNeutral(neutral->image, &error, &status)) {
         result.status = statusOf(status);
-        result.error = path + QStringLiteral(": frame %1: %2").arg(options.neutralFrame).arg(error);
+        result.error = VideoText::tr("%1: frame %2: %3").arg(path, QString::number(options.neutralFrame), error);
         return result;
     }
     result.method = tracker.methodName();
@@ -184,19 +183,17 @@ TrackResult trackVideo(const QString &path, const TrackVideoOptions &options,
     if (result.status == TrackStatus::Cancelled)
         return result;
     if (!source.error().isEmpty())
-        result.warnings << source.error() + QStringLiteral(" (tracked the %1 frames before)").arg(result.frames.size());
+        result.warnings << VideoText::tr("%1 (tracked the %2 frames before)")
+                               .arg(source.error(), QString::number(result.frames.size()));
     if (source.damagedPackets() > 0)
-        result.warnings << path
-                + QStringLiteral(": %1 damaged packets were skipped; the frames around them may be wrong")
-                      .arg(source.damagedPackets());
+        result.warnings << VideoText::tr("%1: %2 damaged packets were skipped; the frames around them may be wrong")
+                               .arg(path, QString::number(source.damagedPackets()));
     int lost = 0;
     for (const TrackedFrame &f : std::as_const(result.frames))
         lost += f.lost;
     if (lost > 0)
-        result.warnings << path
-                + QStringLiteral(": the face was lost in %1 of %2 frames (they hold the last pose)")
-                      .arg(lost)
-                      .arg(result.frames.size());
+        result.warnings << VideoText::tr("%1: the face was lost in %2 of %3 frames (they hold the last pose)")
+                               .arg(path, QString::number(lost), QString::number(result.frames.size()));
     result.status = TrackStatus::Ok;
     return result;
 }

@@ -1,5 +1,7 @@
 #include "track/videofilesource.h"
 
+#include "i18n/coretext.h"
+
 #include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
@@ -68,7 +70,7 @@ struct VideoFileSource::Private
 
     bool fail(QString *out, const QString &problem)
     {
-        error = path + QStringLiteral(": ") + problem;
+        error = withProblem(path, problem);
         if (out)
             *out = error;
         return false;
@@ -84,7 +86,7 @@ struct VideoFileSource::Private
             if (r == AVERROR_EOF)
                 return false;
             if (r != AVERROR(EAGAIN)) {
-                error = path + QStringLiteral(": the video cannot be decoded (%1)").arg(avError(r));
+                error = VideoText::tr("%1: the video cannot be decoded (%2)").arg(path, avError(r));
                 return false;
             }
             if (flushing)
@@ -112,7 +114,7 @@ struct VideoFileSource::Private
         sws = sws_getCachedContext(sws, frame->width, frame->height, AVPixelFormat(frame->format), frame->width,
             frame->height, AV_PIX_FMT_RGB32, SWS_BILINEAR, nullptr, nullptr, nullptr);
         if (!sws) {
-            error = path + QStringLiteral(": cannot convert the video's pixel format");
+            error = VideoText::tr("%1: cannot convert the video's pixel format").arg(path);
             return std::nullopt;
         }
         const int space = frame->colorspace == AVCOL_SPC_BT709 ? SWS_CS_ITU709 : SWS_CS_DEFAULT;
@@ -127,7 +129,7 @@ struct VideoFileSource::Private
             rgb->width = frame->width;
             rgb->height = frame->height;
             if (av_frame_get_buffer(rgb, 0) < 0) {
-                error = path + QStringLiteral(": out of memory");
+                error = VideoText::tr("%1: out of memory").arg(path);
                 return std::nullopt;
             }
         }
@@ -165,32 +167,32 @@ bool VideoFileSource::open(const QString &path, const Options &options, QString 
     d->options = options;
     av_log_set_level(AV_LOG_QUIET);
     if (!QFileInfo(path).isFile())
-        return d->fail(error, QStringLiteral("no such file"));
+        return d->fail(error, VideoText::tr("no such file"));
     int r = avformat_open_input(&d->input, QFile::encodeName(path).constData(), nullptr, nullptr);
     if (r < 0)
-        return d->fail(error, QStringLiteral("not a video FFmpeg can read (%1)").arg(avError(r)));
+        return d->fail(error, VideoText::tr("not a video FFmpeg can read (%1)").arg(avError(r)));
     r = avformat_find_stream_info(d->input, nullptr);
     if (r < 0)
-        return d->fail(error, QStringLiteral("not a video FFmpeg can read (%1)").arg(avError(r)));
+        return d->fail(error, VideoText::tr("not a video FFmpeg can read (%1)").arg(avError(r)));
     const AVCodec *decoder = nullptr;
     d->stream = av_find_best_stream(d->input, AVMEDIA_TYPE_VIDEO, -1, -1, &decoder, 0);
     if (d->stream < 0 || !decoder)
-        return d->fail(error, QStringLiteral("the file holds no video"));
+        return d->fail(error, VideoText::tr("the file holds no video"));
     d->audio = av_find_best_stream(d->input, AVMEDIA_TYPE_AUDIO, -1, -1, nullptr, 0) >= 0;
     AVStream *s = d->input->streams[d->stream];
     d->codec = avcodec_alloc_context3(decoder);
     if (!d->codec || avcodec_parameters_to_context(d->codec, s->codecpar) < 0)
-        return d->fail(error, QStringLiteral("cannot set up the video decoder"));
+        return d->fail(error, VideoText::tr("cannot set up the video decoder"));
     d->codec->thread_count = 1; // the tracker runs beside the decoder; small frames gain nothing
     r = avcodec_open2(d->codec, decoder, nullptr);
     if (r < 0)
-        return d->fail(error, QStringLiteral("cannot open the video decoder (%1)").arg(avError(r)));
+        return d->fail(error, VideoText::tr("cannot open the video decoder (%1)").arg(avError(r)));
     d->timeBase = av_q2d(s->time_base);
     const AVRational rate = s->avg_frame_rate.num > 0 ? s->avg_frame_rate : s->r_frame_rate;
     d->fps = rate.num > 0 && rate.den > 0 ? av_q2d(rate) : 0.0;
     d->size = QSize(s->codecpar->width, s->codecpar->height);
     if (d->size.isEmpty())
-        return d->fail(error, QStringLiteral("the video has no picture size"));
+        return d->fail(error, VideoText::tr("the video has no picture size"));
     if (d->input->duration > 0)
         d->duration = d->input->duration / double(AV_TIME_BASE);
     if (s->nb_frames > 0)
@@ -200,7 +202,7 @@ bool VideoFileSource::open(const QString &path, const Options &options, QString 
     d->packet = av_packet_alloc();
     d->frame = av_frame_alloc();
     if (!d->packet || !d->frame)
-        return d->fail(error, QStringLiteral("out of memory"));
+        return d->fail(error, VideoText::tr("out of memory"));
     return true;
 }
 

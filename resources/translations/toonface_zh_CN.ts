@@ -679,6 +679,178 @@
         <source>The image (%1 x %2 pixels) is too small to hold a face.</source>
         <translation>图像（%1 x %2 像素）太小，容纳不下一张人脸。</translation>
     </message>
+    <message>
+        <source>there is no cache yet</source>
+        <translation>还没有缓存</translation>
+    </message>
+    <message>
+        <source>the cache could not be opened: %1</source>
+        <translation>无法打开缓存：%1</translation>
+    </message>
+    <message>
+        <source>the cache is cut short</source>
+        <translation>缓存不完整（文件被截断）</translation>
+    </message>
+    <message>
+        <source>the file is not a cache of this kind</source>
+        <translation>此文件不是这一类的缓存</translation>
+    </message>
+    <message>
+        <source>the cache is of another version (%1)</source>
+        <translation>缓存属于另一个版本（%1）</translation>
+    </message>
+    <message>
+        <source>the cache was made from another model</source>
+        <translation>缓存是由另一个模型生成的</translation>
+    </message>
+    <message>
+        <source>the cache is %1 bytes, not the %2 its header gives</source>
+        <translation>缓存有 %1 字节，而不是文件头记载的 %2</translation>
+    </message>
+    <message>
+        <source>the cache could not be read: %1</source>
+        <translation>无法读取缓存：%1</translation>
+    </message>
+    <message>
+        <source>the cache is damaged (its checksum does not match)</source>
+        <translation>缓存已损坏（校验和不符）</translation>
+    </message>
+    <message>
+        <source>the folder %1 could not be made</source>
+        <translation>无法创建文件夹 %1</translation>
+    </message>
+    <message>
+        <source>%1 could not be written: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>The image is too small for the classic method.</source>
+        <translation>图像太小，无法使用经典方法。</translation>
+    </message>
+    <message>
+        <source>No eye pair was found (the classic method needs a large frontal face on a plain background).</source>
+        <translation>找不到一对眼睛（经典方法需要纯色背景前的大幅正面人脸）。</translation>
+    </message>
+    <message>
+        <source>the point between the eyes is not in the face region</source>
+        <translation>两眼之间的点不在人脸区域内</translation>
+    </message>
+    <message>
+        <source>the face region reaches %1 eye distances below it (%2 needed)</source>
+        <translation>人脸区域向下只延伸 %1 个眼距（需要 %2）</translation>
+    </message>
+    <message>
+        <source>%1 eye distances to its nearer side (%2 .. %3 needed)</source>
+        <translation>到较近一侧的距离为 %1 个眼距（需要 %2 .. %3）</translation>
+    </message>
+    <message>
+        <source>no mouth row below it (the darkest row is %1% darker than the median, %2% needed)</source>
+        <translation>下方没有嘴巴所在的行（最暗的行比中位数暗 %1%，需要 %2%）</translation>
+    </message>
+    <message>
+        <source>the best eye pair by eq. (3.5), at (%1, %2) and (%3, %4), has no face around it: %5</source>
+        <translation>按式 (3.5) 最佳的一对眼睛位于 (%1, %2) 和 (%3, %4)，但周围没有人脸：%5</translation>
+    </message>
+    <message>
+        <source>The classic method found an eye pair but could not place a face around it (a feature collapsed to nothing).</source>
+        <translation>经典方法找到了一对眼睛，但无法在其周围放置人脸（有个特征缩成了零）。</translation>
+    </message>
+    <message>
+        <source>The classic method found no face: %1.</source>
+        <translation>经典方法找不到人脸：%1。</translation>
+    </message>
+    <message>
+        <source>Face detection was cancelled.</source>
+        <translation>人脸检测已取消。</translation>
+    </message>
+    <message>
+        <source>The image is empty.</source>
+        <translation>图像是空的。</translation>
+    </message>
+    <message>
+        <source>the cache is damaged (it holds no detector)</source>
+        <translation>缓存已损坏（其中没有检测器）</translation>
+    </message>
+    <message>
+        <source>the cache is damaged (%1)</source>
+        <translation>缓存已损坏（%1）</translation>
+    </message>
+    <message>
+        <source>no face to search around</source>
+        <translation>没有可供搜索周围的人脸</translation>
+    </message>
+    <message>
+        <source>the face is too small</source>
+        <translation>人脸太小</translation>
+    </message>
+    <message>
+        <source>the head is outside the photo</source>
+        <translation>头部超出照片范围</translation>
+    </message>
+    <message>
+        <source>the face is outside the photo</source>
+        <translation>人脸超出照片范围</translation>
+    </message>
+    <message>
+        <source>the face&apos;s central rectangle is dark</source>
+        <translation>人脸中央的矩形太暗</translation>
+    </message>
+    <message>
+        <source>the face region misses the face</source>
+        <translation>人脸区域没有覆盖人脸</translation>
+    </message>
+    <message>
+        <source>the head&apos;s outline could not be followed (%1 of %2 searches ended on it)</source>
+        <translation>无法沿着头部轮廓跟踪（%2 次搜索中只有 %1 次停在轮廓上）</translation>
+    </message>
+    <message>
+        <source>no { } block of points</source>
+        <translation>没有 { } 点块</translation>
+    </message>
+    <message>
+        <source>%1 numbers where %2 coordinates were expected</source>
+        <translation>有 %1 个数字，但应有 %2 个坐标</translation>
+    </message>
+    <message>
+        <source>point %1 is not two numbers</source>
+        <translation>第 %1 个点不是两个数字</translation>
+    </message>
+    <message>
+        <source>is missing (install the package libdlib-data, or set TOONFACE_LANDMARK_MODEL to shape_predictor_68_face_landmarks.dat).</source>
+        <translation>不存在（请安装 libdlib-data 软件包，或将 TOONFACE_LANDMARK_MODEL 设为 shape_predictor_68_face_landmarks.dat）。</translation>
+    </message>
+    <message>
+        <source>The landmark model %1 %2</source>
+        <translation>关键点模型 %1 %2</translation>
+    </message>
+    <message>
+        <source>could not be read: %1</source>
+        <translation>无法读取：%1</translation>
+    </message>
+    <message>
+        <source>could not be opened.</source>
+        <translation>无法打开。</translation>
+    </message>
+    <message>
+        <source>gives %1 points, not the 68 of the iBUG scheme.</source>
+        <translation>有 %1 个点，而不是 iBUG 规范的 68 个。</translation>
+    </message>
+    <message>
+        <source>could not be read: %1 at byte %2</source>
+        <translation>无法读取：%1（在第 %2 字节）</translation>
+    </message>
+    <message>
+        <source>could not be read: it ends early (at byte %1, in the middle of the model)</source>
+        <translation>无法读取：文件提前结束（在第 %1 字节，模型的中途）</translation>
+    </message>
+    <message>
+        <source>could not be read: no memory for it (%1)</source>
+        <translation>无法读取：内存不足（%1）</translation>
+    </message>
+    <message>
+        <source>could not be opened: %1</source>
+        <translation>无法打开：%1</translation>
+    </message>
 </context>
 <context>
     <name>toonface::Document</name>
@@ -743,6 +915,181 @@
     <message>
         <source>%1: click to apply to the selection (or 2 s from the playhead), or drag onto the emotion track</source>
         <translation>%1：单击应用到所选范围（或从播放头起 2 秒），或拖动到表情轨道</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::Export</name>
+    <message>
+        <source>no output file given</source>
+        <translation>没有指定输出文件</translation>
+    </message>
+    <message>
+        <source>unsupported size %1 (from %2 to %3 pixels)</source>
+        <translation>不支持的尺寸 %1（应为 %2 到 %3 像素）</translation>
+    </message>
+    <message>
+        <source>unsupported frame rate %1 (more than 0, up to %2)</source>
+        <translation>不支持的帧率 %1（应大于 0，最多 %2）</translation>
+    </message>
+    <message>
+        <source>the sound file does not exist</source>
+        <translation>声音文件不存在</translation>
+    </message>
+    <message>
+        <source>cannot write: the folder %1 does not exist</source>
+        <translation>无法写入：文件夹 %1 不存在</translation>
+    </message>
+    <message>
+        <source>cannot write PNG frames: it is a file, not a folder</source>
+        <translation>无法写入 PNG 帧：这是文件，不是文件夹</translation>
+    </message>
+    <message>
+        <source>cannot write: it is a folder</source>
+        <translation>无法写入：这是文件夹</translation>
+    </message>
+    <message>
+        <source>cannot write: %1</source>
+        <translation>无法写入：%1</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot write: cannot create a folder in %1</source>
+        <translation>无法写入：无法在 %1 中创建文件夹</translation>
+    </message>
+    <message>
+        <source>rendering stopped</source>
+        <translation>渲染已停止</translation>
+    </message>
+    <message>
+        <source>cannot write GIF: FFmpeg has no GIF encoder</source>
+        <translation>无法写入 GIF：FFmpeg 没有 GIF 编码器</translation>
+    </message>
+    <message>
+        <source>unsupported size %1x%2 (GIF takes 1 to 65535 pixels a side)</source>
+        <translation>不支持的尺寸 %1x%2（GIF 每边须为 1 到 65535 像素）</translation>
+    </message>
+    <message>
+        <source>cannot start the GIF encoder: %1</source>
+        <translation>无法启动 GIF 编码器：%1</translation>
+    </message>
+    <message>
+        <source>out of memory for a %1x%2 frame</source>
+        <translation>内存不足，无法容纳 %1x%2 的帧</translation>
+    </message>
+    <message>
+        <source>out of memory</source>
+        <translation>内存不足</translation>
+    </message>
+    <message>
+        <source>cannot write MP4: FFmpeg has no H.264 encoder (libx264)</source>
+        <translation>无法写入 MP4：FFmpeg 没有 H.264 编码器（libx264）</translation>
+    </message>
+    <message>
+        <source>unsupported size %1x%2 (MP4 takes 2 to 8192 pixels a side)</source>
+        <translation>不支持的尺寸 %1x%2（MP4 每边须为 2 到 8192 像素）</translation>
+    </message>
+    <message>
+        <source>cannot start the H.264 encoder at %1x%2: %3</source>
+        <translation>无法以 %1x%2 启动 H.264 编码器：%3</translation>
+    </message>
+    <message>
+        <source>cannot convert %1x%2 RGB to YUV</source>
+        <translation>无法将 %1x%2 的 RGB 转换为 YUV</translation>
+    </message>
+    <message>
+        <source>cannot write MP4: FFmpeg has no AAC encoder</source>
+        <translation>无法写入 MP4：FFmpeg 没有 AAC 编码器</translation>
+    </message>
+    <message>
+        <source>cannot start the AAC encoder: %1</source>
+        <translation>无法启动 AAC 编码器：%1</translation>
+    </message>
+    <message>
+        <source>the writer is closed</source>
+        <translation>写入器已关闭</translation>
+    </message>
+    <message>
+        <source>cannot write in the folder %1: %2</source>
+        <translation>无法写入文件夹 %1：%2</translation>
+    </message>
+    <message>
+        <source>FFmpeg has no %1 muxer: %2</source>
+        <translation>FFmpeg 没有 %1 封装器：%2</translation>
+    </message>
+    <message>
+        <source>cannot write the header: %1</source>
+        <translation>无法写入文件头：%1</translation>
+    </message>
+    <message>
+        <source>cannot set up the stream: %1</source>
+        <translation>无法配置流：%1</translation>
+    </message>
+    <message>
+        <source>cannot encode (%1): %2</source>
+        <translation>无法编码（%1）：%2</translation>
+    </message>
+    <message>
+        <source>unsupported size %1x%2 (PNG frames take 1 to 32768 pixels a side)</source>
+        <translation>不支持的尺寸 %1x%2（PNG 帧每边须为 1 到 32768 像素）</translation>
+    </message>
+    <message>
+        <source>cannot create the folder for PNG frames</source>
+        <translation>无法创建存放 PNG 帧的文件夹</translation>
+    </message>
+    <message>
+        <source>unexpected head transform &apos;%1&apos;</source>
+        <translation>意外的头部变换“%1”</translation>
+    </message>
+    <message>
+        <source>the drawing has no head group</source>
+        <translation>绘图中没有头部分组</translation>
+    </message>
+    <message>
+        <source>the drawing changes its structure with the pose</source>
+        <translation>绘图的结构会随姿势改变</translation>
+    </message>
+    <message>
+        <source>the drawing is not valid XML: %1</source>
+        <translation>绘图不是有效的 XML：%1</translation>
+    </message>
+    <message>
+        <source>the writer is already writing %1</source>
+        <translation>写入器正在写入 %1</translation>
+    </message>
+    <message>
+        <source>unsupported frame rate %1 (expected more than 0, up to 240)</source>
+        <translation>不支持的帧率 %1（应大于 0，最多 240）</translation>
+    </message>
+    <message>
+        <source>unsupported size %1x%2</source>
+        <translation>不支持的尺寸 %1x%2</translation>
+    </message>
+    <message>
+        <source>the writer is not open</source>
+        <translation>写入器尚未打开</translation>
+    </message>
+    <message>
+        <source>an earlier frame failed; cancel the writer</source>
+        <translation>先前的帧失败了，请取消写入</translation>
+    </message>
+    <message>
+        <source>frame %1 is %2x%3, the video is %4x%5</source>
+        <translation>第 %1 帧为 %2x%3，但视频为 %4x%5</translation>
+    </message>
+    <message>
+        <source>an earlier frame failed; nothing was written</source>
+        <translation>先前的帧失败了，没有写入任何内容</translation>
+    </message>
+    <message>
+        <source>no frames to write</source>
+        <translation>没有可写入的帧</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>已取消</translation>
     </message>
 </context>
 <context>
@@ -923,6 +1270,121 @@
     <message>
         <source>%1: has no frame %2 (it has %3)</source>
         <translation>%1：没有第 %2 帧（只有 %3 帧）</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::ImageFile</name>
+    <message>
+        <source>a WebP image, which this build cannot read; convert it to PNG or JPEG</source>
+        <translation>这是 WebP 图像，此版本无法读取；请转换为 PNG 或 JPEG</translation>
+    </message>
+    <message>
+        <source>a HEIC image, which this build cannot read; convert it to PNG or JPEG</source>
+        <translation>这是 HEIC 图像，此版本无法读取；请转换为 PNG 或 JPEG</translation>
+    </message>
+    <message>
+        <source>an AVIF image, which this build cannot read; convert it to PNG or JPEG</source>
+        <translation>这是 AVIF 图像，此版本无法读取；请转换为 PNG 或 JPEG</translation>
+    </message>
+    <message>
+        <source>a TIFF image, which this build cannot read; convert it to PNG or JPEG</source>
+        <translation>这是 TIFF 图像，此版本无法读取；请转换为 PNG 或 JPEG</translation>
+    </message>
+    <message>
+        <source>a video or audio file (MP4/QuickTime), not a photo</source>
+        <translation>这是视频或音频文件（MP4/QuickTime），不是照片</translation>
+    </message>
+    <message>
+        <source>a WAV audio file, not a photo</source>
+        <translation>这是 WAV 音频文件，不是照片</translation>
+    </message>
+    <message>
+        <source>an audio file, not a photo</source>
+        <translation>这是音频文件，不是照片</translation>
+    </message>
+    <message>
+        <source>a PDF document, not an image</source>
+        <translation>这是 PDF 文档，不是图像</translation>
+    </message>
+    <message>
+        <source>a ZIP archive (or an office document), not an image</source>
+        <translation>这是 ZIP 压缩包（或办公文档），不是图像</translation>
+    </message>
+    <message>
+        <source>text, not an image (it starts with &quot;%1&quot;)</source>
+        <translation>这是文本，不是图像（开头为“%1”）</translation>
+    </message>
+    <message>
+        <source>not an image (unrecognised data starting with %1)</source>
+        <translation>不是图像（无法识别的数据，开头为 %1）</translation>
+    </message>
+    <message>
+        <source>its %1 chunk claims %2 bytes, but only %3 are left in the file</source>
+        <translation>其 %1 块声称有 %2 字节，但文件只剩 %3 字节</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>文件不存在</translation>
+    </message>
+    <message>
+        <source>is a folder, not an image</source>
+        <translation>这是文件夹，不是图像</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>文件是空的</translation>
+    </message>
+    <message>
+        <source>the file is too large for a photo (%1 MB)</source>
+        <translation>文件太大，不像是照片（%1 MB）</translation>
+    </message>
+    <message>
+        <source>cannot read: %1</source>
+        <translation>无法读取：%1</translation>
+    </message>
+    <message>
+        <source>the JPEG image is truncated (the file ends before the image data does)</source>
+        <translation>JPEG 图像不完整（文件在图像数据结束前就结束了）</translation>
+    </message>
+    <message>
+        <source>the PNG image is corrupt or truncated (%1)</source>
+        <translation>PNG 图像已损坏或不完整（%1）</translation>
+    </message>
+    <message>
+        <source>the %1 image is empty (%2 × %3 pixels)</source>
+        <translation>%1 图像是空的（%2 × %3 像素）</translation>
+    </message>
+    <message>
+        <source>the image is too large: %1 × %2 pixels (%3 megapixels); the limit is %4 megapixels</source>
+        <translation>图像太大：%1 × %2 像素（%3 百万像素）；上限为 %4 百万像素</translation>
+    </message>
+    <message>
+        <source>the %1 image is corrupt or truncated (%2)</source>
+        <translation>%1 图像已损坏或不完整（%2）</translation>
+    </message>
+    <message>
+        <source>cannot read layer file %1: %2</source>
+        <translation>无法读取图层文件 %1：%2</translation>
+    </message>
+    <message>
+        <source>layer file %1 is not a valid SVG file: %2</source>
+        <translation>图层文件 %1 不是有效的 SVG 文件：%2</translation>
+    </message>
+    <message>
+        <source>the root element is &lt;%1&gt;, not &lt;svg&gt;</source>
+        <translation>根元素是 &lt;%1&gt;，不是 &lt;svg&gt;</translation>
+    </message>
+    <message>
+        <source>line %1, column %2: %3</source>
+        <translation>第 %1 行第 %2 列：%3</translation>
+    </message>
+    <message>
+        <source>no root element</source>
+        <translation>没有根元素</translation>
+    </message>
+    <message>
+        <source>layer file %1 is too large (more than 16 MB)</source>
+        <translation>图层文件 %1 太大（超过 16 MB）</translation>
     </message>
 </context>
 <context>
@@ -1353,6 +1815,193 @@
     <message>
         <source>Lip Sync from %1</source>
         <translation>根据 %1 做口型同步</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::LipSyncFile</name>
+    <message>
+        <source>unexpected end of file, expected %1</source>
+        <translation>文件意外结束，应有%1</translation>
+    </message>
+    <message>
+        <source>expected %1 (an integer of at least %2), found &apos;%3&apos;</source>
+        <translation>应为%1（至少为 %2 的整数），实际为“%3”</translation>
+    </message>
+    <message>
+        <source>%1: line %2: %3</source>
+        <translation>%1：第 %2 行：%3</translation>
+    </message>
+    <message>
+        <source>unknown mouth shape &apos;%1&apos; (known: %2)</source>
+        <translation>未知的口型“%1”（已知：%2）</translation>
+    </message>
+    <message>
+        <source>expected &apos;start&lt;TAB&gt;shape&apos;, found &apos;%1&apos;</source>
+        <translation>应为“开始时间&lt;TAB&gt;口型”，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>expected a start time in seconds (a number of at least 0), found &apos;%1&apos;</source>
+        <translation>应为以秒计的开始时间（至少为 0 的数字），实际为“%1”</translation>
+    </message>
+    <message>
+        <source>time %1 is before the previous line&apos;s %2</source>
+        <translation>时间 %1 早于上一行的 %2</translation>
+    </message>
+    <message>
+        <source>%1: line %2: not valid JSON: %3</source>
+        <translation>%1：第 %2 行：不是有效的 JSON：%3</translation>
+    </message>
+    <message>
+        <source>expected a JSON object with mouthCues</source>
+        <translation>应为含有 mouthCues 的 JSON 对象</translation>
+    </message>
+    <message>
+        <source>%1: expected a duration of at least 0</source>
+        <translation>%1：应为至少 0 的时长</translation>
+    </message>
+    <message>
+        <source>%1: expected a time of at least 0</source>
+        <translation>%1：应为至少 0 的时间</translation>
+    </message>
+    <message>
+        <source>%1: ends (%2) before it starts (%3)</source>
+        <translation>%1：结束时间（%2）早于开始时间（%3）</translation>
+    </message>
+    <message>
+        <source>%1: starts (%2) before the previous cue ends (%3)</source>
+        <translation>%1：开始时间（%2）早于上一个提示的结束时间（%3）</translation>
+    </message>
+    <message>
+        <source>%1: unknown mouth shape &apos;%2&apos; (known: %3)</source>
+        <translation>%1：未知的口型“%2”（已知：%3）</translation>
+    </message>
+    <message>
+        <source>the header &apos;lipsync version 1&apos;</source>
+        <translation>文件头“lipsync version 1”</translation>
+    </message>
+    <message>
+        <source>expected the header &apos;lipsync version 1&apos;, found &apos;%1&apos;</source>
+        <translation>应为文件头“lipsync version 1”，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>the sound file</source>
+        <translation>声音文件</translation>
+    </message>
+    <message>
+        <source>the frame rate</source>
+        <translation>帧率</translation>
+    </message>
+    <message>
+        <source>the duration in frames</source>
+        <translation>以帧计的时长</translation>
+    </message>
+    <message>
+        <source>the number of voices</source>
+        <translation>声部数量</translation>
+    </message>
+    <message>
+        <source>the voice&apos;s name</source>
+        <translation>声部名称</translation>
+    </message>
+    <message>
+        <source>the voice&apos;s text</source>
+        <translation>声部文本</translation>
+    </message>
+    <message>
+        <source>the number of phrases</source>
+        <translation>短语数量</translation>
+    </message>
+    <message>
+        <source>the text of phrase %1</source>
+        <translation>第 %1 个短语的文本</translation>
+    </message>
+    <message>
+        <source>the start frame of phrase %1</source>
+        <translation>第 %1 个短语的开始帧</translation>
+    </message>
+    <message>
+        <source>the end frame of phrase %1</source>
+        <translation>第 %1 个短语的结束帧</translation>
+    </message>
+    <message>
+        <source>the number of words of phrase %1</source>
+        <translation>第 %1 个短语的词数</translation>
+    </message>
+    <message>
+        <source>word %1 of phrase %2 (&apos;text start end phonemes&apos;)</source>
+        <translation>第 %2 个短语的第 %1 个词（“文本 开始 结束 音素数”）</translation>
+    </message>
+    <message>
+        <source>expected %1, found &apos;%2&apos;</source>
+        <translation>应为%1，实际为“%2”</translation>
+    </message>
+    <message>
+        <source>the start frame of &apos;%1&apos;</source>
+        <translation>“%1”的开始帧</translation>
+    </message>
+    <message>
+        <source>the end frame of &apos;%1&apos;</source>
+        <translation>“%1”的结束帧</translation>
+    </message>
+    <message>
+        <source>the phoneme count of &apos;%1&apos;</source>
+        <translation>“%1”的音素数</translation>
+    </message>
+    <message>
+        <source>word &apos;%1&apos; ends (frame %2) before it starts (frame %3)</source>
+        <translation>词“%1”的结束（第 %2 帧）早于开始（第 %3 帧）</translation>
+    </message>
+    <message>
+        <source>phoneme %1 of &apos;%2&apos; (&apos;frame name&apos;)</source>
+        <translation>“%2”的第 %1 个音素（“帧 名称”）</translation>
+    </message>
+    <message>
+        <source>the frame of a phoneme</source>
+        <translation>音素的帧</translation>
+    </message>
+    <message>
+        <source>phoneme frame %1 is before the previous phoneme&apos;s %2</source>
+        <translation>音素帧 %1 早于上一个音素的 %2</translation>
+    </message>
+    <message>
+        <source>the header &apos;MohoSwitch1&apos;</source>
+        <translation>文件头“MohoSwitch1”</translation>
+    </message>
+    <message>
+        <source>expected the header &apos;MohoSwitch1&apos;, found &apos;%1&apos;</source>
+        <translation>应为文件头“MohoSwitch1”，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>expected &apos;frame shape&apos;, found &apos;%1&apos;</source>
+        <translation>应为“帧 口型”，实际为“%1”</translation>
+    </message>
+    <message>
+        <source>a frame number</source>
+        <translation>帧编号</translation>
+    </message>
+    <message>
+        <source>frame %1 is before the previous line&apos;s frame %2</source>
+        <translation>第 %1 帧早于上一行的第 %2 帧</translation>
+    </message>
+    <message>
+        <source>%1: cannot read at %2 frames per second</source>
+        <translation>%1：无法以每秒 %2 帧读取</translation>
+    </message>
+    <message>
+        <source>%1: not saved: %2</source>
+        <translation>%1：未保存：%2</translation>
+    </message>
+    <message>
+        <source>%1: unknown lip-sync format (expected .tsv, .json, .pgo or .dat)</source>
+        <translation>%1：未知的口型同步格式（应为 .tsv、.json、.pgo 或 .dat）</translation>
+    </message>
+    <message>
+        <source>%1: cannot read: %2</source>
+        <translation>%1：无法读取：%2</translation>
+    </message>
+    <message>
+        <source>no interval tier named &apos;%1&apos;</source>
+        <translation>没有名为“%1”的区间层</translation>
     </message>
 </context>
 <context>
@@ -1830,6 +2479,57 @@ The points are unchanged.</source>
     </message>
 </context>
 <context>
+    <name>toonface::Media</name>
+    <message>
+        <source>the data is invalid or damaged</source>
+        <translation>数据无效或已损坏</translation>
+    </message>
+    <message>
+        <source>the file ends early</source>
+        <translation>文件提前结束</translation>
+    </message>
+    <message>
+        <source>no decoder for it</source>
+        <translation>没有对应的解码器</translation>
+    </message>
+    <message>
+        <source>no encoder for it</source>
+        <translation>没有对应的编码器</translation>
+    </message>
+    <message>
+        <source>its format is not recognised</source>
+        <translation>无法识别其格式</translation>
+    </message>
+    <message>
+        <source>the format cannot be written</source>
+        <translation>无法写入此格式</translation>
+    </message>
+    <message>
+        <source>no such file or folder</source>
+        <translation>文件或文件夹不存在</translation>
+    </message>
+    <message>
+        <source>permission denied</source>
+        <translation>权限不足</translation>
+    </message>
+    <message>
+        <source>it is a folder</source>
+        <translation>这是文件夹</translation>
+    </message>
+    <message>
+        <source>the disk is full</source>
+        <translation>磁盘已满</translation>
+    </message>
+    <message>
+        <source>the disk is read-only</source>
+        <translation>磁盘为只读</translation>
+    </message>
+    <message>
+        <source>out of memory</source>
+        <translation>内存不足</translation>
+    </message>
+</context>
+<context>
     <name>toonface::MediaAudioTrack</name>
     <message>
         <source>Cannot play the audio file %1: %2</source>
@@ -2210,6 +2910,306 @@ The points are unchanged.</source>
     </message>
 </context>
 <context>
+    <name>toonface::Problem</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <comment>two sentences one after the other</comment>
+        <translation>%1%2</translation>
+    </message>
+    <message>
+        <source>; </source>
+        <comment>between two reasons</comment>
+        <translation>；</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::ProjectFile</name>
+    <message>
+        <source>expected a number</source>
+        <translation>应为数字</translation>
+    </message>
+    <message>
+        <source>expected a string</source>
+        <translation>应为字符串</translation>
+    </message>
+    <message>
+        <source>must not be negative</source>
+        <translation>不能为负数</translation>
+    </message>
+    <message>
+        <source>must be positive</source>
+        <translation>必须为正数</translation>
+    </message>
+    <message>
+        <source>must be between 0 and 1</source>
+        <translation>必须介于 0 和 1 之间</translation>
+    </message>
+    <message>
+        <source>%1: expected an array</source>
+        <translation>%1：应为数组</translation>
+    </message>
+    <message>
+        <source>%1: expected an object</source>
+        <translation>%1：应为对象</translation>
+    </message>
+    <message>
+        <source>expected a positive integer</source>
+        <translation>应为正整数</translation>
+    </message>
+    <message>
+        <source>%1 is newer than this Toonface reads (%2)</source>
+        <translation>%1 比这个 Toonface 能读取的版本（%2）更新</translation>
+    </message>
+    <message>
+        <source>smoothing: expected an object</source>
+        <translation>smoothing：应为对象</translation>
+    </message>
+    <message>
+        <source>unknown mouth shape &apos;%1&apos;</source>
+        <translation>未知的口型“%1”</translation>
+    </message>
+    <message>
+        <source>must not be before start</source>
+        <translation>不能早于 start</translation>
+    </message>
+    <message>
+        <source>unknown emotion &apos;%1&apos;</source>
+        <translation>未知的表情“%1”</translation>
+    </message>
+    <message>
+        <source>expected an object</source>
+        <translation>应为对象</translation>
+    </message>
+    <message>
+        <source>unknown point ID</source>
+        <translation>未知的特征点 ID</translation>
+    </message>
+    <message>
+        <source>expected [dx, dy], two numbers</source>
+        <translation>应为 [dx, dy] 两个数字</translation>
+    </message>
+    <message>
+        <source>audio: expected an object</source>
+        <translation>audio：应为对象</translation>
+    </message>
+    <message>
+        <source>video: expected an object</source>
+        <translation>video：应为对象</translation>
+    </message>
+    <message>
+        <source>an [x, y] pair</source>
+        <translation>一组 [x, y]</translation>
+    </message>
+    <message>
+        <source>a box of negative size</source>
+        <translation>方框的尺寸为负数</translation>
+    </message>
+    <message>
+        <source>two boxes, image-left first</source>
+        <translation>两个方框，图像左侧的在前</translation>
+    </message>
+    <message>
+        <source>two eyeballs, image-left first</source>
+        <translation>两个眼球，图像左侧的在前</translation>
+    </message>
+    <message>
+        <source>four edge thresholds, top part first</source>
+        <translation>四个边缘阈值，上半部的在前</translation>
+    </message>
+    <message>
+        <source>%1 was made by a newer Toonface (this version reads %2)</source>
+        <translation>%1 是由较新版的 Toonface 创建的（此版本读取 %2）</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>数字</translation>
+    </message>
+    <message>
+        <source>a finite number</source>
+        <translation>有限的数字</translation>
+    </message>
+    <message>
+        <source>a number between %1 and %2</source>
+        <translation>介于 %1 和 %2 之间的数字</translation>
+    </message>
+    <message>
+        <source>an integer from %1 to %2</source>
+        <translation>%1 到 %2 的整数</translation>
+    </message>
+    <message>
+        <source>true or false</source>
+        <translation>true 或 false</translation>
+    </message>
+    <message>
+        <source>a string</source>
+        <translation>字符串</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>对象</translation>
+    </message>
+    <message>
+        <source>an array</source>
+        <translation>数组</translation>
+    </message>
+    <message>
+        <source>expected %1, %2</source>
+        <translation>应为%1，%2</translation>
+    </message>
+    <message>
+        <source>it is missing</source>
+        <translation>但缺少此项</translation>
+    </message>
+    <message>
+        <source>found null</source>
+        <translation>实际为 null</translation>
+    </message>
+    <message>
+        <source>found true</source>
+        <translation>实际为 true</translation>
+    </message>
+    <message>
+        <source>found false</source>
+        <translation>实际为 false</translation>
+    </message>
+    <message>
+        <source>found %1</source>
+        <translation>实际为 %1</translation>
+    </message>
+    <message>
+        <source>found the string &quot;%1&quot;</source>
+        <translation>实际为字符串“%1”</translation>
+    </message>
+    <message>
+        <source>found an array</source>
+        <translation>实际为数组</translation>
+    </message>
+    <message>
+        <source>found an object</source>
+        <translation>实际为对象</translation>
+    </message>
+    <message>
+        <source>a width more than 0</source>
+        <translation>大于 0 的宽度</translation>
+    </message>
+    <message>
+        <source>not an SVG drawing: %1</source>
+        <translation>不是 SVG 绘图：%1</translation>
+    </message>
+    <message>
+        <source>one of %1</source>
+        <translation>下列之一：%1</translation>
+    </message>
+    <message>
+        <source>a colour like #rrggbb or #aarrggbb, or &quot;none&quot;</source>
+        <translation>#rrggbb 或 #aarrggbb 形式的颜色，或“none”</translation>
+    </message>
+    <message>
+        <source>a number from 0 to %1</source>
+        <translation>0 到 %1 的数字</translation>
+    </message>
+    <message>
+        <source>a component needs a name</source>
+        <translation>组件需要名称</translation>
+    </message>
+    <message>
+        <source>a width of 0 or more</source>
+        <translation>0 或以上的宽度</translation>
+    </message>
+    <message>
+        <source>unknown mouth shape (the shapes are %1)</source>
+        <translation>未知的口型（口型有 %1）</translation>
+    </message>
+    <message>
+        <source>not a Toonface project (it has no &quot;format&quot; field)</source>
+        <translation>不是 Toonface 项目（没有“format”字段）</translation>
+    </message>
+    <message>
+        <source>not a Toonface project (format: expected &quot;%1&quot;, %2)</source>
+        <translation>不是 Toonface 项目（format：应为“%1”，%2）</translation>
+    </message>
+    <message>
+        <source>a version number (1 or more)</source>
+        <translation>版本号（1 或以上）</translation>
+    </message>
+    <message>
+        <source>made by a newer Toonface (project version %1; this version reads up to %2)</source>
+        <translation>由较新版的 Toonface 创建（项目版本 %1；此版本最多读取到 %2）</translation>
+    </message>
+    <message>
+        <source>a file path</source>
+        <translation>文件路径</translation>
+    </message>
+    <message>
+        <source>not saved: the project is invalid at %1</source>
+        <translation>未保存：项目在 %1 处无效</translation>
+    </message>
+    <message>
+        <source>cannot save: %1</source>
+        <translation>无法保存：%1</translation>
+    </message>
+    <message>
+        <source>only %1 of %2 bytes could be written (is the disk full?)</source>
+        <translation>%2 字节中只写入了 %1 字节（磁盘是否已满？）</translation>
+    </message>
+    <message>
+        <source>the file could not be completed (is the disk full?)</source>
+        <translation>无法完成文件（磁盘是否已满？）</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>文件不存在</translation>
+    </message>
+    <message>
+        <source>is a folder, not a Toonface project</source>
+        <translation>这是文件夹，不是 Toonface 项目</translation>
+    </message>
+    <message>
+        <source>too large to be a Toonface project (%1 MB)</source>
+        <translation>文件太大，不可能是 Toonface 项目（%1 MB）</translation>
+    </message>
+    <message>
+        <source>cannot read: %1</source>
+        <translation>无法读取：%1</translation>
+    </message>
+    <message>
+        <source>the file is empty, not a Toonface project</source>
+        <translation>文件是空的，不是 Toonface 项目</translation>
+    </message>
+    <message>
+        <source>not a Toonface project: %1 at offset %2 (line %3, column %4)</source>
+        <translation>不是 Toonface 项目：偏移 %2 处%1（第 %3 行第 %4 列）</translation>
+    </message>
+    <message>
+        <source>not a Toonface project (expected a JSON object, found an array)</source>
+        <translation>不是 Toonface 项目（应为 JSON 对象，实际为数组）</translation>
+    </message>
+    <message>
+        <source>%1 s is outside the syllable (%2 to %3 s) or before the shape before it</source>
+        <translation>%1 秒超出音节范围（%2 到 %3 秒），或早于前一个口型</translation>
+    </message>
+    <message>
+        <source>a time of 0 s or more</source>
+        <translation>0 秒或以上的时间</translation>
+    </message>
+    <message>
+        <source>a time after the start (%1 s)</source>
+        <translation>开始时间（%1 秒）之后的时间</translation>
+    </message>
+    <message>
+        <source>expected %1 points, found %2</source>
+        <translation>应有 %1 个点，实际有 %2 个</translation>
+    </message>
+    <message>
+        <source>&quot;cmn&quot;, &quot;en&quot; or &quot;&quot;</source>
+        <translation>“cmn”、“en”或“”</translation>
+    </message>
+</context>
+<context>
     <name>toonface::Questions</name>
     <message>
         <source>an untitled project</source>
@@ -2348,6 +3348,183 @@ The points are unchanged.</source>
     </message>
 </context>
 <context>
+    <name>toonface::Script</name>
+    <message>
+        <source>no reference rendering of the script</source>
+        <translation>没有文稿的参考朗读</translation>
+    </message>
+    <message>
+        <source>no speech found in the audio</source>
+        <translation>音频中找不到说话声</translation>
+    </message>
+    <message>
+        <source>the script is far too long for the audio: its %1 syllables need about %2 s of speech, the audio holds %3 s</source>
+        <translation>文稿对这段音频来说太长：%1 个音节约需 %2 秒的语音，音频只有 %3 秒</translation>
+    </message>
+    <message>
+        <source>the audio holds far more speech (%1 s) than the script&apos;s %2 syllables (about %3 s)</source>
+        <translation>音频中的语音（%1 秒）远多于文稿的 %2 个音节（约 %3 秒）</translation>
+    </message>
+    <message>
+        <source>the audio and the script could not be matched</source>
+        <translation>无法将音频与文稿对应</translation>
+    </message>
+    <message>
+        <source>the script is empty</source>
+        <translation>文稿是空的</translation>
+    </message>
+    <message>
+        <source>the audio is empty</source>
+        <translation>音频是空的</translation>
+    </message>
+    <message>
+        <source>%1 and %2 could not be aligned: %3</source>
+        <translation>无法对齐 %1 和 %2：%3</translation>
+    </message>
+    <message>
+        <source>cannot read %1</source>
+        <translation>无法读取 %1</translation>
+    </message>
+    <message>
+        <source>cannot start bzip2 decompression of %1</source>
+        <translation>无法开始以 bzip2 解压 %1</translation>
+    </message>
+    <message>
+        <source>%1 is not a valid bzip2 file</source>
+        <translation>%1 不是有效的 bzip2 文件</translation>
+    </message>
+    <message>
+        <source>Chinese character readings are missing (%1; install the Debian package unicode-data)</source>
+        <translation>缺少汉字读音（%1；请安装 Debian 软件包 unicode-data）</translation>
+    </message>
+    <message>
+        <source>%1 holds no Mandarin readings</source>
+        <translation>%1 中没有普通话读音</translation>
+    </message>
+    <message>
+        <source>the phrase dictionary %1 is missing (install the Debian package rime-data-terra-pinyin)</source>
+        <translation>缺少词语词典 %1（请安装 Debian 软件包 rime-data-terra-pinyin）</translation>
+    </message>
+    <message>
+        <source>%1: built from other sources</source>
+        <translation>%1：由其他来源生成</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>too short to be a pinyin index</source>
+        <translation>太短，不可能是拼音索引</translation>
+    </message>
+    <message>
+        <source>not a pinyin index</source>
+        <translation>不是拼音索引</translation>
+    </message>
+    <message>
+        <source>pinyin index format %1, expected %2</source>
+        <translation>拼音索引格式为 %1，应为 %2</translation>
+    </message>
+    <message>
+        <source>pinyin index of %1 bytes, its header describes %2</source>
+        <translation>拼音索引有 %1 字节，但文件头记载 %2</translation>
+    </message>
+    <message>
+        <source>pinyin index checksum mismatch (damaged)</source>
+        <translation>拼音索引校验和不符（已损坏）</translation>
+    </message>
+    <message>
+        <source>pinyin index has a bad syllable &apos;%1&apos;</source>
+        <translation>拼音索引中有错误的音节“%1”</translation>
+    </message>
+    <message>
+        <source>pinyin index syllable table is damaged</source>
+        <translation>拼音索引的音节表已损坏</translation>
+    </message>
+    <message>
+        <source>pinyin index character table is damaged</source>
+        <translation>拼音索引的字符表已损坏</translation>
+    </message>
+    <message>
+        <source>pinyin index character readings are damaged</source>
+        <translation>拼音索引的字符读音已损坏</translation>
+    </message>
+    <message>
+        <source>pinyin index phrase table is damaged</source>
+        <translation>拼音索引的词语表已损坏</translation>
+    </message>
+    <message>
+        <source>pinyin index phrase readings are damaged</source>
+        <translation>拼音索引的词语读音已损坏</translation>
+    </message>
+    <message>
+        <source>cannot be spoken</source>
+        <translation>无法朗读</translation>
+    </message>
+    <message>
+        <source>is not English</source>
+        <translation>不是英文</translation>
+    </message>
+    <message>
+        <source>has no Mandarin reading in the dictionary</source>
+        <translation>在词典中没有普通话读音</translation>
+    </message>
+    <message>
+        <source>is not valid Zhuyin</source>
+        <translation>不是有效的注音</translation>
+    </message>
+    <message>
+        <source>is a number: write it in characters or pinyin</source>
+        <translation>是数字：请用汉字或拼音书写</translation>
+    </message>
+    <message>
+        <source>is not Hanyu pinyin</source>
+        <translation>不是汉语拼音</translation>
+    </message>
+    <message>
+        <source>line %1, column %2: &apos;%3&apos; %4</source>
+        <translation>第 %1 行第 %2 列：“%3”%4</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (and %n more)</source>
+        <translation>
+            <numerusform>%1（另有 %n 处）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the script holds nothing to speak</source>
+        <translation>文稿中没有可朗读的内容</translation>
+    </message>
+    <message>
+        <source>cannot read the script %1: %2</source>
+        <translation>无法读取文稿 %1：%2</translation>
+    </message>
+    <message>
+        <source>the script %1 is not UTF-8 text</source>
+        <translation>文稿 %1 不是 UTF-8 文本</translation>
+    </message>
+    <message>
+        <source>espeak-ng cannot start: its data is missing (install espeak-ng-data)</source>
+        <translation>espeak-ng 无法启动：缺少数据（请安装 espeak-ng-data）</translation>
+    </message>
+    <message>
+        <source>nothing to speak</source>
+        <translation>没有可朗读的内容</translation>
+    </message>
+    <message>
+        <source>espeak-ng has no voice &apos;%1&apos;</source>
+        <translation>espeak-ng 没有“%1”语音</translation>
+    </message>
+    <message>
+        <source>espeak-ng could not speak the script</source>
+        <translation>espeak-ng 无法朗读文稿</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+</context>
+<context>
     <name>toonface::SecondsBox</name>
     <message>
         <source> s</source>
@@ -2359,6 +3536,137 @@ The points are unchanged.</source>
     <message>
         <source>Mouth shape %1 (key %2): replaces the selected mouth keys, or inserts one at the playhead</source>
         <translation>口型 %1（按键 %2）：替换所选的口型关键帧，或在播放头处插入一个</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::SoundFile</name>
+    <message>
+        <source>cannot read the audio file %1: %2</source>
+        <translation>无法读取音频文件 %1：%2</translation>
+    </message>
+    <message>
+        <source>the audio file %1 does not exist</source>
+        <translation>音频文件 %1 不存在</translation>
+    </message>
+    <message>
+        <source>cannot read the audio: %1</source>
+        <translation>无法读取音频：%1</translation>
+    </message>
+    <message>
+        <source>no audio stream</source>
+        <translation>没有音频流</translation>
+    </message>
+    <message>
+        <source>audio samples</source>
+        <translation>音频采样</translation>
+    </message>
+    <message>
+        <source>invalid sample rate %1</source>
+        <translation>无效的采样率 %1</translation>
+    </message>
+    <message>
+        <source>the audio has no sample rate</source>
+        <translation>音频没有采样率</translation>
+    </message>
+    <message>
+        <source>cannot resample the audio: %1</source>
+        <translation>无法重采样音频：%1</translation>
+    </message>
+    <message>
+        <source>cannot decode the audio: %1</source>
+        <translation>无法解码音频：%1</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>文件不存在</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>文件是空的</translation>
+    </message>
+    <message>
+        <source>not a readable sound or video file (%1)</source>
+        <translation>不是可读取的声音或视频文件（%1）</translation>
+    </message>
+    <message>
+        <source>cannot read its streams (%1)</source>
+        <translation>无法读取其中的流（%1）</translation>
+    </message>
+    <message>
+        <source>no decoder for its sound track</source>
+        <translation>没有可解码其音轨的解码器</translation>
+    </message>
+    <message>
+        <source>it has no sound track</source>
+        <translation>其中没有音轨</translation>
+    </message>
+    <message>
+        <source>cannot open the %1 decoder</source>
+        <translation>无法打开 %1 解码器</translation>
+    </message>
+    <message>
+        <source>cannot convert its samples</source>
+        <translation>无法转换其采样</translation>
+    </message>
+    <message>
+        <source>its sound track cannot be decoded (corrupt data)</source>
+        <translation>其音轨无法解码（数据损坏）</translation>
+    </message>
+    <message>
+        <source>it holds no sound</source>
+        <translation>其中没有声音</translation>
+    </message>
+    <message>
+        <source>it is silent (peak %1 dBFS)</source>
+        <translation>是静音的（峰值 %1 dBFS）</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>unknown sound format &apos;.%1&apos; (use wav, flac, mp3, ogg, opus or m4a)</source>
+        <translation>未知的声音格式“.%1”（请使用 wav、flac、mp3、ogg、opus 或 m4a）</translation>
+    </message>
+    <message>
+        <source>this FFmpeg has no encoder for .%1</source>
+        <translation>此 FFmpeg 没有 .%1 的编码器</translation>
+    </message>
+    <message>
+        <source>no container for .%1</source>
+        <translation>没有 .%1 的容器格式</translation>
+    </message>
+    <message>
+        <source>cannot open the %1 encoder (%2)</source>
+        <translation>无法打开 %1 编码器（%2）</translation>
+    </message>
+    <message>
+        <source>cannot add a sound stream</source>
+        <translation>无法添加声音流</translation>
+    </message>
+    <message>
+        <source>cannot convert the samples</source>
+        <translation>无法转换采样</translation>
+    </message>
+    <message>
+        <source>out of memory</source>
+        <translation>内存不足</translation>
+    </message>
+    <message>
+        <source>encoding failed</source>
+        <translation>编码失败</translation>
+    </message>
+    <message>
+        <source>its sample rate (%1 Hz) is too low for speech (at least %2 Hz)</source>
+        <translation>其采样率（%1 Hz）太低，不足以承载语音（至少需要 %2 Hz）</translation>
+    </message>
+    <message>
+        <source>it is damaged: it decodes to more than %1 s of sound, more than its %2 bytes can hold</source>
+        <translation>文件已损坏：解码出超过 %1 秒的声音，超出其 %2 字节所能容纳的长度</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>已取消</translation>
     </message>
 </context>
 <context>
@@ -2675,6 +3983,133 @@ The points are unchanged.</source>
     <message>
         <source>Video</source>
         <translation>视频</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::VideoFile</name>
+    <message>
+        <source>no decoder for its %1 codec &apos;%2&apos;</source>
+        <translation>没有其 %1 编解码器“%2”的解码器</translation>
+    </message>
+    <message>
+        <source>cannot open its %1 decoder: %2</source>
+        <translation>无法打开其 %1 解码器：%2</translation>
+    </message>
+    <message>
+        <source>no frame_NNNNN.png files in the folder</source>
+        <translation>文件夹中没有 frame_NNNNN.png 文件</translation>
+    </message>
+    <message>
+        <source>cannot open: %1</source>
+        <translation>无法打开：%1</translation>
+    </message>
+    <message>
+        <source>cannot read the streams: %1</source>
+        <translation>无法读取流：%1</translation>
+    </message>
+    <message>
+        <source>no video or audio stream</source>
+        <translation>没有视频或音频流</translation>
+    </message>
+    <message>
+        <source>no video stream</source>
+        <translation>没有视频流</translation>
+    </message>
+    <message>
+        <source>has no frame %1 (it has %2)</source>
+        <translation>没有第 %1 帧（共有 %2 帧）</translation>
+    </message>
+    <message>
+        <source>invalid sample rate %1</source>
+        <translation>无效的采样率 %1</translation>
+    </message>
+    <message>
+        <source>the neutral face&apos;s detection kept no tracking seed (thresholds, eyeballs, mouth region) for the classic method</source>
+        <translation>中性脸的检测没有保留经典方法所需的跟踪种子（阈值、眼球、嘴巴区域）</translation>
+    </message>
+    <message>
+        <source>%1: no face in any frame</source>
+        <translation>%1：没有任何帧含有人脸</translation>
+    </message>
+    <message>
+        <source>the neutral frame is empty</source>
+        <translation>中性帧是空的</translation>
+    </message>
+    <message>
+        <source>the %1 tracking cannot follow the face it detected on the neutral frame</source>
+        <translation>%1 跟踪无法跟随在中性帧上检测到的人脸</translation>
+    </message>
+    <message>
+        <source>%1: tracking was cancelled</source>
+        <translation>%1：跟踪已取消</translation>
+    </message>
+    <message>
+        <source>%1: the neutral frame must be 0 or later</source>
+        <translation>%1：中性帧必须为 0 或之后</translation>
+    </message>
+    <message>
+        <source>%1: no video frame could be decoded</source>
+        <translation>%1：没有任何帧能够解码</translation>
+    </message>
+    <message>
+        <source>%1: the neutral frame %2 is past the video&apos;s end (it has %3 frames)</source>
+        <translation>%1：中性帧 %2 超出视频结尾（视频共有 %3 帧）</translation>
+    </message>
+    <message>
+        <source>%1: frame %2: %3</source>
+        <translation>%1：第 %2 帧：%3</translation>
+    </message>
+    <message>
+        <source>%1 (tracked the %2 frames before)</source>
+        <translation>%1（已跟踪之前的 %2 帧）</translation>
+    </message>
+    <message>
+        <source>%1: %2 damaged packets were skipped; the frames around them may be wrong</source>
+        <translation>%1：跳过了 %2 个损坏的数据包；附近的帧可能有误</translation>
+    </message>
+    <message>
+        <source>%1: the face was lost in %2 of %3 frames (they hold the last pose)</source>
+        <translation>%1：%3 帧中有 %2 帧跟丢了人脸（这些帧保留最后的姿势）</translation>
+    </message>
+    <message>
+        <source>%1: the video cannot be decoded (%2)</source>
+        <translation>%1：视频无法解码（%2）</translation>
+    </message>
+    <message>
+        <source>%1: cannot convert the video&apos;s pixel format</source>
+        <translation>%1：无法转换视频的像素格式</translation>
+    </message>
+    <message>
+        <source>%1: out of memory</source>
+        <translation>%1：内存不足</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>文件不存在</translation>
+    </message>
+    <message>
+        <source>not a video FFmpeg can read (%1)</source>
+        <translation>不是 FFmpeg 能读取的视频（%1）</translation>
+    </message>
+    <message>
+        <source>the file holds no video</source>
+        <translation>文件中没有视频</translation>
+    </message>
+    <message>
+        <source>cannot set up the video decoder</source>
+        <translation>无法配置视频解码器</translation>
+    </message>
+    <message>
+        <source>cannot open the video decoder (%1)</source>
+        <translation>无法打开视频解码器（%1）</translation>
+    </message>
+    <message>
+        <source>the video has no picture size</source>
+        <translation>视频没有画面尺寸</translation>
+    </message>
+    <message>
+        <source>out of memory</source>
+        <translation>内存不足</translation>
     </message>
 </context>
 <context>

@@ -679,6 +679,178 @@
         <source>The image (%1 x %2 pixels) is too small to hold a face.</source>
         <translation>影像（%1 x %2 像素）太小，容不下一張臉。</translation>
     </message>
+    <message>
+        <source>there is no cache yet</source>
+        <translation>還沒有快取</translation>
+    </message>
+    <message>
+        <source>the cache could not be opened: %1</source>
+        <translation>無法開啟快取：%1</translation>
+    </message>
+    <message>
+        <source>the cache is cut short</source>
+        <translation>快取不完整（檔案被截斷）</translation>
+    </message>
+    <message>
+        <source>the file is not a cache of this kind</source>
+        <translation>此檔案不是這一類的快取</translation>
+    </message>
+    <message>
+        <source>the cache is of another version (%1)</source>
+        <translation>快取屬於另一個版本（%1）</translation>
+    </message>
+    <message>
+        <source>the cache was made from another model</source>
+        <translation>快取是由另一個模型產生的</translation>
+    </message>
+    <message>
+        <source>the cache is %1 bytes, not the %2 its header gives</source>
+        <translation>快取有 %1 位元組，而不是標頭所記載的 %2</translation>
+    </message>
+    <message>
+        <source>the cache could not be read: %1</source>
+        <translation>無法讀取快取：%1</translation>
+    </message>
+    <message>
+        <source>the cache is damaged (its checksum does not match)</source>
+        <translation>快取已損壞（檢查碼不符）</translation>
+    </message>
+    <message>
+        <source>the folder %1 could not be made</source>
+        <translation>無法建立資料夾 %1</translation>
+    </message>
+    <message>
+        <source>%1 could not be written: %2</source>
+        <translation>無法寫入 %1：%2</translation>
+    </message>
+    <message>
+        <source>The image is too small for the classic method.</source>
+        <translation>影像太小，無法使用經典方法。</translation>
+    </message>
+    <message>
+        <source>No eye pair was found (the classic method needs a large frontal face on a plain background).</source>
+        <translation>找不到一對眼睛（經典方法需要素色背景前的大張正面臉部）。</translation>
+    </message>
+    <message>
+        <source>the point between the eyes is not in the face region</source>
+        <translation>兩眼之間的點不在臉部區域內</translation>
+    </message>
+    <message>
+        <source>the face region reaches %1 eye distances below it (%2 needed)</source>
+        <translation>臉部區域向下只延伸 %1 個眼距（需要 %2）</translation>
+    </message>
+    <message>
+        <source>%1 eye distances to its nearer side (%2 .. %3 needed)</source>
+        <translation>到較近一側的距離為 %1 個眼距（需要 %2 .. %3）</translation>
+    </message>
+    <message>
+        <source>no mouth row below it (the darkest row is %1% darker than the median, %2% needed)</source>
+        <translation>下方沒有嘴巴所在的列（最暗的列比中位數暗 %1%，需要 %2%）</translation>
+    </message>
+    <message>
+        <source>the best eye pair by eq. (3.5), at (%1, %2) and (%3, %4), has no face around it: %5</source>
+        <translation>依式 (3.5) 最佳的一對眼睛位於 (%1, %2) 與 (%3, %4)，但周圍沒有臉部：%5</translation>
+    </message>
+    <message>
+        <source>The classic method found an eye pair but could not place a face around it (a feature collapsed to nothing).</source>
+        <translation>經典方法找到了一對眼睛，但無法在其周圍放置臉部（有個特徵縮成了零）。</translation>
+    </message>
+    <message>
+        <source>The classic method found no face: %1.</source>
+        <translation>經典方法找不到臉部：%1。</translation>
+    </message>
+    <message>
+        <source>Face detection was cancelled.</source>
+        <translation>臉部偵測已取消。</translation>
+    </message>
+    <message>
+        <source>The image is empty.</source>
+        <translation>影像是空的。</translation>
+    </message>
+    <message>
+        <source>the cache is damaged (it holds no detector)</source>
+        <translation>快取已損壞（其中沒有偵測器）</translation>
+    </message>
+    <message>
+        <source>the cache is damaged (%1)</source>
+        <translation>快取已損壞（%1）</translation>
+    </message>
+    <message>
+        <source>no face to search around</source>
+        <translation>沒有可供搜尋周圍的臉部</translation>
+    </message>
+    <message>
+        <source>the face is too small</source>
+        <translation>臉部太小</translation>
+    </message>
+    <message>
+        <source>the head is outside the photo</source>
+        <translation>頭部超出照片範圍</translation>
+    </message>
+    <message>
+        <source>the face is outside the photo</source>
+        <translation>臉部超出照片範圍</translation>
+    </message>
+    <message>
+        <source>the face&apos;s central rectangle is dark</source>
+        <translation>臉部中央的矩形太暗</translation>
+    </message>
+    <message>
+        <source>the face region misses the face</source>
+        <translation>臉部區域沒有涵蓋臉</translation>
+    </message>
+    <message>
+        <source>the head&apos;s outline could not be followed (%1 of %2 searches ended on it)</source>
+        <translation>無法沿著頭部輪廓追蹤（%2 次搜尋中只有 %1 次停在輪廓上）</translation>
+    </message>
+    <message>
+        <source>no { } block of points</source>
+        <translation>沒有 { } 點區塊</translation>
+    </message>
+    <message>
+        <source>%1 numbers where %2 coordinates were expected</source>
+        <translation>有 %1 個數字，但應有 %2 個座標</translation>
+    </message>
+    <message>
+        <source>point %1 is not two numbers</source>
+        <translation>第 %1 點不是兩個數字</translation>
+    </message>
+    <message>
+        <source>is missing (install the package libdlib-data, or set TOONFACE_LANDMARK_MODEL to shape_predictor_68_face_landmarks.dat).</source>
+        <translation>不存在（請安裝 libdlib-data 套件，或將 TOONFACE_LANDMARK_MODEL 設為 shape_predictor_68_face_landmarks.dat）。</translation>
+    </message>
+    <message>
+        <source>The landmark model %1 %2</source>
+        <translation>關鍵點模型 %1 %2</translation>
+    </message>
+    <message>
+        <source>could not be read: %1</source>
+        <translation>無法讀取：%1</translation>
+    </message>
+    <message>
+        <source>could not be opened.</source>
+        <translation>無法開啟。</translation>
+    </message>
+    <message>
+        <source>gives %1 points, not the 68 of the iBUG scheme.</source>
+        <translation>有 %1 個點，而不是 iBUG 規格的 68 個。</translation>
+    </message>
+    <message>
+        <source>could not be read: %1 at byte %2</source>
+        <translation>無法讀取：%1（在第 %2 位元組）</translation>
+    </message>
+    <message>
+        <source>could not be read: it ends early (at byte %1, in the middle of the model)</source>
+        <translation>無法讀取：檔案提前結束（在第 %1 位元組，模型的中途）</translation>
+    </message>
+    <message>
+        <source>could not be read: no memory for it (%1)</source>
+        <translation>無法讀取：記憶體不足（%1）</translation>
+    </message>
+    <message>
+        <source>could not be opened: %1</source>
+        <translation>無法開啟：%1</translation>
+    </message>
 </context>
 <context>
     <name>toonface::Document</name>
@@ -743,6 +915,181 @@
     <message>
         <source>%1: click to apply to the selection (or 2 s from the playhead), or drag onto the emotion track</source>
         <translation>%1：按一下套用到所選範圍（或從播放頭起 2 秒），或拖曳到表情軌</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::Export</name>
+    <message>
+        <source>no output file given</source>
+        <translation>沒有指定輸出檔案</translation>
+    </message>
+    <message>
+        <source>unsupported size %1 (from %2 to %3 pixels)</source>
+        <translation>不支援的尺寸 %1（應為 %2 到 %3 像素）</translation>
+    </message>
+    <message>
+        <source>unsupported frame rate %1 (more than 0, up to %2)</source>
+        <translation>不支援的影格速率 %1（應大於 0，最多 %2）</translation>
+    </message>
+    <message>
+        <source>the sound file does not exist</source>
+        <translation>聲音檔案不存在</translation>
+    </message>
+    <message>
+        <source>cannot write: the folder %1 does not exist</source>
+        <translation>無法寫入：資料夾 %1 不存在</translation>
+    </message>
+    <message>
+        <source>cannot write PNG frames: it is a file, not a folder</source>
+        <translation>無法寫入 PNG 影格：這是檔案，不是資料夾</translation>
+    </message>
+    <message>
+        <source>cannot write: it is a folder</source>
+        <translation>無法寫入：這是資料夾</translation>
+    </message>
+    <message>
+        <source>cannot write: %1</source>
+        <translation>無法寫入：%1</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>無法寫入 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot write: cannot create a folder in %1</source>
+        <translation>無法寫入：無法在 %1 中建立資料夾</translation>
+    </message>
+    <message>
+        <source>rendering stopped</source>
+        <translation>繪製已停止</translation>
+    </message>
+    <message>
+        <source>cannot write GIF: FFmpeg has no GIF encoder</source>
+        <translation>無法寫入 GIF：FFmpeg 沒有 GIF 編碼器</translation>
+    </message>
+    <message>
+        <source>unsupported size %1x%2 (GIF takes 1 to 65535 pixels a side)</source>
+        <translation>不支援的尺寸 %1x%2（GIF 每邊須為 1 到 65535 像素）</translation>
+    </message>
+    <message>
+        <source>cannot start the GIF encoder: %1</source>
+        <translation>無法啟動 GIF 編碼器：%1</translation>
+    </message>
+    <message>
+        <source>out of memory for a %1x%2 frame</source>
+        <translation>記憶體不足，無法容納 %1x%2 的影格</translation>
+    </message>
+    <message>
+        <source>out of memory</source>
+        <translation>記憶體不足</translation>
+    </message>
+    <message>
+        <source>cannot write MP4: FFmpeg has no H.264 encoder (libx264)</source>
+        <translation>無法寫入 MP4：FFmpeg 沒有 H.264 編碼器（libx264）</translation>
+    </message>
+    <message>
+        <source>unsupported size %1x%2 (MP4 takes 2 to 8192 pixels a side)</source>
+        <translation>不支援的尺寸 %1x%2（MP4 每邊須為 2 到 8192 像素）</translation>
+    </message>
+    <message>
+        <source>cannot start the H.264 encoder at %1x%2: %3</source>
+        <translation>無法以 %1x%2 啟動 H.264 編碼器：%3</translation>
+    </message>
+    <message>
+        <source>cannot convert %1x%2 RGB to YUV</source>
+        <translation>無法將 %1x%2 的 RGB 轉換為 YUV</translation>
+    </message>
+    <message>
+        <source>cannot write MP4: FFmpeg has no AAC encoder</source>
+        <translation>無法寫入 MP4：FFmpeg 沒有 AAC 編碼器</translation>
+    </message>
+    <message>
+        <source>cannot start the AAC encoder: %1</source>
+        <translation>無法啟動 AAC 編碼器：%1</translation>
+    </message>
+    <message>
+        <source>the writer is closed</source>
+        <translation>寫入器已關閉</translation>
+    </message>
+    <message>
+        <source>cannot write in the folder %1: %2</source>
+        <translation>無法寫入資料夾 %1：%2</translation>
+    </message>
+    <message>
+        <source>FFmpeg has no %1 muxer: %2</source>
+        <translation>FFmpeg 沒有 %1 封裝器：%2</translation>
+    </message>
+    <message>
+        <source>cannot write the header: %1</source>
+        <translation>無法寫入標頭：%1</translation>
+    </message>
+    <message>
+        <source>cannot set up the stream: %1</source>
+        <translation>無法設定串流：%1</translation>
+    </message>
+    <message>
+        <source>cannot encode (%1): %2</source>
+        <translation>無法編碼（%1）：%2</translation>
+    </message>
+    <message>
+        <source>unsupported size %1x%2 (PNG frames take 1 to 32768 pixels a side)</source>
+        <translation>不支援的尺寸 %1x%2（PNG 影格每邊須為 1 到 32768 像素）</translation>
+    </message>
+    <message>
+        <source>cannot create the folder for PNG frames</source>
+        <translation>無法建立存放 PNG 影格的資料夾</translation>
+    </message>
+    <message>
+        <source>unexpected head transform &apos;%1&apos;</source>
+        <translation>非預期的頭部變換「%1」</translation>
+    </message>
+    <message>
+        <source>the drawing has no head group</source>
+        <translation>繪圖中沒有頭部群組</translation>
+    </message>
+    <message>
+        <source>the drawing changes its structure with the pose</source>
+        <translation>繪圖的結構會隨姿勢改變</translation>
+    </message>
+    <message>
+        <source>the drawing is not valid XML: %1</source>
+        <translation>繪圖不是有效的 XML：%1</translation>
+    </message>
+    <message>
+        <source>the writer is already writing %1</source>
+        <translation>寫入器正在寫入 %1</translation>
+    </message>
+    <message>
+        <source>unsupported frame rate %1 (expected more than 0, up to 240)</source>
+        <translation>不支援的影格速率 %1（應大於 0，最多 240）</translation>
+    </message>
+    <message>
+        <source>unsupported size %1x%2</source>
+        <translation>不支援的尺寸 %1x%2</translation>
+    </message>
+    <message>
+        <source>the writer is not open</source>
+        <translation>寫入器尚未開啟</translation>
+    </message>
+    <message>
+        <source>an earlier frame failed; cancel the writer</source>
+        <translation>先前的影格失敗了，請取消寫入</translation>
+    </message>
+    <message>
+        <source>frame %1 is %2x%3, the video is %4x%5</source>
+        <translation>第 %1 影格為 %2x%3，但影片為 %4x%5</translation>
+    </message>
+    <message>
+        <source>an earlier frame failed; nothing was written</source>
+        <translation>先前的影格失敗了，沒有寫入任何內容</translation>
+    </message>
+    <message>
+        <source>no frames to write</source>
+        <translation>沒有可寫入的影格</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>已取消</translation>
     </message>
 </context>
 <context>
@@ -923,6 +1270,121 @@
     <message>
         <source>%1: has no frame %2 (it has %3)</source>
         <translation>%1：沒有第 %2 個影格（只有 %3 個）</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::ImageFile</name>
+    <message>
+        <source>a WebP image, which this build cannot read; convert it to PNG or JPEG</source>
+        <translation>這是 WebP 影像，此版本無法讀取；請轉換為 PNG 或 JPEG</translation>
+    </message>
+    <message>
+        <source>a HEIC image, which this build cannot read; convert it to PNG or JPEG</source>
+        <translation>這是 HEIC 影像，此版本無法讀取；請轉換為 PNG 或 JPEG</translation>
+    </message>
+    <message>
+        <source>an AVIF image, which this build cannot read; convert it to PNG or JPEG</source>
+        <translation>這是 AVIF 影像，此版本無法讀取；請轉換為 PNG 或 JPEG</translation>
+    </message>
+    <message>
+        <source>a TIFF image, which this build cannot read; convert it to PNG or JPEG</source>
+        <translation>這是 TIFF 影像，此版本無法讀取；請轉換為 PNG 或 JPEG</translation>
+    </message>
+    <message>
+        <source>a video or audio file (MP4/QuickTime), not a photo</source>
+        <translation>這是影片或音訊檔案（MP4/QuickTime），不是照片</translation>
+    </message>
+    <message>
+        <source>a WAV audio file, not a photo</source>
+        <translation>這是 WAV 音訊檔案，不是照片</translation>
+    </message>
+    <message>
+        <source>an audio file, not a photo</source>
+        <translation>這是音訊檔案，不是照片</translation>
+    </message>
+    <message>
+        <source>a PDF document, not an image</source>
+        <translation>這是 PDF 文件，不是影像</translation>
+    </message>
+    <message>
+        <source>a ZIP archive (or an office document), not an image</source>
+        <translation>這是 ZIP 壓縮檔（或文書處理文件），不是影像</translation>
+    </message>
+    <message>
+        <source>text, not an image (it starts with &quot;%1&quot;)</source>
+        <translation>這是文字，不是影像（開頭為「%1」）</translation>
+    </message>
+    <message>
+        <source>not an image (unrecognised data starting with %1)</source>
+        <translation>不是影像（無法辨識的資料，開頭為 %1）</translation>
+    </message>
+    <message>
+        <source>its %1 chunk claims %2 bytes, but only %3 are left in the file</source>
+        <translation>其 %1 區塊聲稱有 %2 位元組，但檔案只剩 %3 位元組</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>檔案不存在</translation>
+    </message>
+    <message>
+        <source>is a folder, not an image</source>
+        <translation>這是資料夾，不是影像</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>檔案是空的</translation>
+    </message>
+    <message>
+        <source>the file is too large for a photo (%1 MB)</source>
+        <translation>檔案太大，不像是照片（%1 MB）</translation>
+    </message>
+    <message>
+        <source>cannot read: %1</source>
+        <translation>無法讀取：%1</translation>
+    </message>
+    <message>
+        <source>the JPEG image is truncated (the file ends before the image data does)</source>
+        <translation>JPEG 影像不完整（檔案在影像資料結束前就結束了）</translation>
+    </message>
+    <message>
+        <source>the PNG image is corrupt or truncated (%1)</source>
+        <translation>PNG 影像已損壞或不完整（%1）</translation>
+    </message>
+    <message>
+        <source>the %1 image is empty (%2 × %3 pixels)</source>
+        <translation>%1 影像是空的（%2 × %3 像素）</translation>
+    </message>
+    <message>
+        <source>the image is too large: %1 × %2 pixels (%3 megapixels); the limit is %4 megapixels</source>
+        <translation>影像太大：%1 × %2 像素（%3 百萬像素）；上限為 %4 百萬像素</translation>
+    </message>
+    <message>
+        <source>the %1 image is corrupt or truncated (%2)</source>
+        <translation>%1 影像已損壞或不完整（%2）</translation>
+    </message>
+    <message>
+        <source>cannot read layer file %1: %2</source>
+        <translation>無法讀取圖層檔案 %1：%2</translation>
+    </message>
+    <message>
+        <source>layer file %1 is not a valid SVG file: %2</source>
+        <translation>圖層檔案 %1 不是有效的 SVG 檔案：%2</translation>
+    </message>
+    <message>
+        <source>the root element is &lt;%1&gt;, not &lt;svg&gt;</source>
+        <translation>根元素是 &lt;%1&gt;，不是 &lt;svg&gt;</translation>
+    </message>
+    <message>
+        <source>line %1, column %2: %3</source>
+        <translation>第 %1 行第 %2 欄：%3</translation>
+    </message>
+    <message>
+        <source>no root element</source>
+        <translation>沒有根元素</translation>
+    </message>
+    <message>
+        <source>layer file %1 is too large (more than 16 MB)</source>
+        <translation>圖層檔案 %1 太大（超過 16 MB）</translation>
     </message>
 </context>
 <context>
@@ -1353,6 +1815,193 @@
     <message>
         <source>Lip Sync from %1</source>
         <translation>依 %1 做唇形同步</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::LipSyncFile</name>
+    <message>
+        <source>unexpected end of file, expected %1</source>
+        <translation>檔案意外結束，應有%1</translation>
+    </message>
+    <message>
+        <source>expected %1 (an integer of at least %2), found &apos;%3&apos;</source>
+        <translation>應為%1（至少為 %2 的整數），實際為「%3」</translation>
+    </message>
+    <message>
+        <source>%1: line %2: %3</source>
+        <translation>%1：第 %2 行：%3</translation>
+    </message>
+    <message>
+        <source>unknown mouth shape &apos;%1&apos; (known: %2)</source>
+        <translation>未知的口型「%1」（已知：%2）</translation>
+    </message>
+    <message>
+        <source>expected &apos;start&lt;TAB&gt;shape&apos;, found &apos;%1&apos;</source>
+        <translation>應為「開始時間&lt;TAB&gt;口型」，實際為「%1」</translation>
+    </message>
+    <message>
+        <source>expected a start time in seconds (a number of at least 0), found &apos;%1&apos;</source>
+        <translation>應為以秒計的開始時間（至少為 0 的數字），實際為「%1」</translation>
+    </message>
+    <message>
+        <source>time %1 is before the previous line&apos;s %2</source>
+        <translation>時間 %1 早於上一行的 %2</translation>
+    </message>
+    <message>
+        <source>%1: line %2: not valid JSON: %3</source>
+        <translation>%1：第 %2 行：不是有效的 JSON：%3</translation>
+    </message>
+    <message>
+        <source>expected a JSON object with mouthCues</source>
+        <translation>應為含有 mouthCues 的 JSON 物件</translation>
+    </message>
+    <message>
+        <source>%1: expected a duration of at least 0</source>
+        <translation>%1：應為至少 0 的時長</translation>
+    </message>
+    <message>
+        <source>%1: expected a time of at least 0</source>
+        <translation>%1：應為至少 0 的時間</translation>
+    </message>
+    <message>
+        <source>%1: ends (%2) before it starts (%3)</source>
+        <translation>%1：結束時間（%2）早於開始時間（%3）</translation>
+    </message>
+    <message>
+        <source>%1: starts (%2) before the previous cue ends (%3)</source>
+        <translation>%1：開始時間（%2）早於上一個提示的結束時間（%3）</translation>
+    </message>
+    <message>
+        <source>%1: unknown mouth shape &apos;%2&apos; (known: %3)</source>
+        <translation>%1：未知的口型「%2」（已知：%3）</translation>
+    </message>
+    <message>
+        <source>the header &apos;lipsync version 1&apos;</source>
+        <translation>標頭「lipsync version 1」</translation>
+    </message>
+    <message>
+        <source>expected the header &apos;lipsync version 1&apos;, found &apos;%1&apos;</source>
+        <translation>應為標頭「lipsync version 1」，實際為「%1」</translation>
+    </message>
+    <message>
+        <source>the sound file</source>
+        <translation>聲音檔案</translation>
+    </message>
+    <message>
+        <source>the frame rate</source>
+        <translation>影格速率</translation>
+    </message>
+    <message>
+        <source>the duration in frames</source>
+        <translation>以影格計的時長</translation>
+    </message>
+    <message>
+        <source>the number of voices</source>
+        <translation>聲部數量</translation>
+    </message>
+    <message>
+        <source>the voice&apos;s name</source>
+        <translation>聲部名稱</translation>
+    </message>
+    <message>
+        <source>the voice&apos;s text</source>
+        <translation>聲部文字</translation>
+    </message>
+    <message>
+        <source>the number of phrases</source>
+        <translation>片語數量</translation>
+    </message>
+    <message>
+        <source>the text of phrase %1</source>
+        <translation>第 %1 個片語的文字</translation>
+    </message>
+    <message>
+        <source>the start frame of phrase %1</source>
+        <translation>第 %1 個片語的開始影格</translation>
+    </message>
+    <message>
+        <source>the end frame of phrase %1</source>
+        <translation>第 %1 個片語的結束影格</translation>
+    </message>
+    <message>
+        <source>the number of words of phrase %1</source>
+        <translation>第 %1 個片語的字詞數</translation>
+    </message>
+    <message>
+        <source>word %1 of phrase %2 (&apos;text start end phonemes&apos;)</source>
+        <translation>第 %2 個片語的第 %1 個字詞（「文字 開始 結束 音素數」）</translation>
+    </message>
+    <message>
+        <source>expected %1, found &apos;%2&apos;</source>
+        <translation>應為%1，實際為「%2」</translation>
+    </message>
+    <message>
+        <source>the start frame of &apos;%1&apos;</source>
+        <translation>「%1」的開始影格</translation>
+    </message>
+    <message>
+        <source>the end frame of &apos;%1&apos;</source>
+        <translation>「%1」的結束影格</translation>
+    </message>
+    <message>
+        <source>the phoneme count of &apos;%1&apos;</source>
+        <translation>「%1」的音素數</translation>
+    </message>
+    <message>
+        <source>word &apos;%1&apos; ends (frame %2) before it starts (frame %3)</source>
+        <translation>字詞「%1」的結束（第 %2 影格）早於開始（第 %3 影格）</translation>
+    </message>
+    <message>
+        <source>phoneme %1 of &apos;%2&apos; (&apos;frame name&apos;)</source>
+        <translation>「%2」的第 %1 個音素（「影格 名稱」）</translation>
+    </message>
+    <message>
+        <source>the frame of a phoneme</source>
+        <translation>音素的影格</translation>
+    </message>
+    <message>
+        <source>phoneme frame %1 is before the previous phoneme&apos;s %2</source>
+        <translation>音素影格 %1 早於上一個音素的 %2</translation>
+    </message>
+    <message>
+        <source>the header &apos;MohoSwitch1&apos;</source>
+        <translation>標頭「MohoSwitch1」</translation>
+    </message>
+    <message>
+        <source>expected the header &apos;MohoSwitch1&apos;, found &apos;%1&apos;</source>
+        <translation>應為標頭「MohoSwitch1」，實際為「%1」</translation>
+    </message>
+    <message>
+        <source>expected &apos;frame shape&apos;, found &apos;%1&apos;</source>
+        <translation>應為「影格 口型」，實際為「%1」</translation>
+    </message>
+    <message>
+        <source>a frame number</source>
+        <translation>影格編號</translation>
+    </message>
+    <message>
+        <source>frame %1 is before the previous line&apos;s frame %2</source>
+        <translation>第 %1 影格早於上一行的第 %2 影格</translation>
+    </message>
+    <message>
+        <source>%1: cannot read at %2 frames per second</source>
+        <translation>%1：無法以每秒 %2 影格讀取</translation>
+    </message>
+    <message>
+        <source>%1: not saved: %2</source>
+        <translation>%1：未儲存：%2</translation>
+    </message>
+    <message>
+        <source>%1: unknown lip-sync format (expected .tsv, .json, .pgo or .dat)</source>
+        <translation>%1：未知的唇形同步格式（應為 .tsv、.json、.pgo 或 .dat）</translation>
+    </message>
+    <message>
+        <source>%1: cannot read: %2</source>
+        <translation>%1：無法讀取：%2</translation>
+    </message>
+    <message>
+        <source>no interval tier named &apos;%1&apos;</source>
+        <translation>沒有名為「%1」的區間層</translation>
     </message>
 </context>
 <context>
@@ -1830,6 +2479,57 @@ The points are unchanged.</source>
     </message>
 </context>
 <context>
+    <name>toonface::Media</name>
+    <message>
+        <source>the data is invalid or damaged</source>
+        <translation>資料無效或已損壞</translation>
+    </message>
+    <message>
+        <source>the file ends early</source>
+        <translation>檔案提前結束</translation>
+    </message>
+    <message>
+        <source>no decoder for it</source>
+        <translation>沒有對應的解碼器</translation>
+    </message>
+    <message>
+        <source>no encoder for it</source>
+        <translation>沒有對應的編碼器</translation>
+    </message>
+    <message>
+        <source>its format is not recognised</source>
+        <translation>無法辨識其格式</translation>
+    </message>
+    <message>
+        <source>the format cannot be written</source>
+        <translation>無法寫入此格式</translation>
+    </message>
+    <message>
+        <source>no such file or folder</source>
+        <translation>檔案或資料夾不存在</translation>
+    </message>
+    <message>
+        <source>permission denied</source>
+        <translation>權限不足</translation>
+    </message>
+    <message>
+        <source>it is a folder</source>
+        <translation>這是資料夾</translation>
+    </message>
+    <message>
+        <source>the disk is full</source>
+        <translation>磁碟已滿</translation>
+    </message>
+    <message>
+        <source>the disk is read-only</source>
+        <translation>磁碟為唯讀</translation>
+    </message>
+    <message>
+        <source>out of memory</source>
+        <translation>記憶體不足</translation>
+    </message>
+</context>
+<context>
     <name>toonface::MediaAudioTrack</name>
     <message>
         <source>Cannot play the audio file %1: %2</source>
@@ -2210,6 +2910,306 @@ The points are unchanged.</source>
     </message>
 </context>
 <context>
+    <name>toonface::Problem</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <comment>two sentences one after the other</comment>
+        <translation>%1%2</translation>
+    </message>
+    <message>
+        <source>; </source>
+        <comment>between two reasons</comment>
+        <translation>；</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::ProjectFile</name>
+    <message>
+        <source>expected a number</source>
+        <translation>應為數字</translation>
+    </message>
+    <message>
+        <source>expected a string</source>
+        <translation>應為字串</translation>
+    </message>
+    <message>
+        <source>must not be negative</source>
+        <translation>不可為負數</translation>
+    </message>
+    <message>
+        <source>must be positive</source>
+        <translation>必須為正數</translation>
+    </message>
+    <message>
+        <source>must be between 0 and 1</source>
+        <translation>必須介於 0 與 1 之間</translation>
+    </message>
+    <message>
+        <source>%1: expected an array</source>
+        <translation>%1：應為陣列</translation>
+    </message>
+    <message>
+        <source>%1: expected an object</source>
+        <translation>%1：應為物件</translation>
+    </message>
+    <message>
+        <source>expected a positive integer</source>
+        <translation>應為正整數</translation>
+    </message>
+    <message>
+        <source>%1 is newer than this Toonface reads (%2)</source>
+        <translation>%1 比這個 Toonface 能讀取的版本（%2）更新</translation>
+    </message>
+    <message>
+        <source>smoothing: expected an object</source>
+        <translation>smoothing：應為物件</translation>
+    </message>
+    <message>
+        <source>unknown mouth shape &apos;%1&apos;</source>
+        <translation>未知的口型「%1」</translation>
+    </message>
+    <message>
+        <source>must not be before start</source>
+        <translation>不可早於 start</translation>
+    </message>
+    <message>
+        <source>unknown emotion &apos;%1&apos;</source>
+        <translation>未知的表情「%1」</translation>
+    </message>
+    <message>
+        <source>expected an object</source>
+        <translation>應為物件</translation>
+    </message>
+    <message>
+        <source>unknown point ID</source>
+        <translation>未知的特徵點 ID</translation>
+    </message>
+    <message>
+        <source>expected [dx, dy], two numbers</source>
+        <translation>應為 [dx, dy] 兩個數字</translation>
+    </message>
+    <message>
+        <source>audio: expected an object</source>
+        <translation>audio：應為物件</translation>
+    </message>
+    <message>
+        <source>video: expected an object</source>
+        <translation>video：應為物件</translation>
+    </message>
+    <message>
+        <source>an [x, y] pair</source>
+        <translation>一組 [x, y]</translation>
+    </message>
+    <message>
+        <source>a box of negative size</source>
+        <translation>方框的尺寸為負數</translation>
+    </message>
+    <message>
+        <source>two boxes, image-left first</source>
+        <translation>兩個方框，影像左側的在前</translation>
+    </message>
+    <message>
+        <source>two eyeballs, image-left first</source>
+        <translation>兩顆眼球，影像左側的在前</translation>
+    </message>
+    <message>
+        <source>four edge thresholds, top part first</source>
+        <translation>四個邊緣閾值，上半部的在前</translation>
+    </message>
+    <message>
+        <source>%1 was made by a newer Toonface (this version reads %2)</source>
+        <translation>%1 是由較新版的 Toonface 建立的（此版本讀取 %2）</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>數字</translation>
+    </message>
+    <message>
+        <source>a finite number</source>
+        <translation>有限的數字</translation>
+    </message>
+    <message>
+        <source>a number between %1 and %2</source>
+        <translation>介於 %1 與 %2 之間的數字</translation>
+    </message>
+    <message>
+        <source>an integer from %1 to %2</source>
+        <translation>%1 到 %2 的整數</translation>
+    </message>
+    <message>
+        <source>true or false</source>
+        <translation>true 或 false</translation>
+    </message>
+    <message>
+        <source>a string</source>
+        <translation>字串</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>物件</translation>
+    </message>
+    <message>
+        <source>an array</source>
+        <translation>陣列</translation>
+    </message>
+    <message>
+        <source>expected %1, %2</source>
+        <translation>應為%1，%2</translation>
+    </message>
+    <message>
+        <source>it is missing</source>
+        <translation>但缺少此項</translation>
+    </message>
+    <message>
+        <source>found null</source>
+        <translation>實際為 null</translation>
+    </message>
+    <message>
+        <source>found true</source>
+        <translation>實際為 true</translation>
+    </message>
+    <message>
+        <source>found false</source>
+        <translation>實際為 false</translation>
+    </message>
+    <message>
+        <source>found %1</source>
+        <translation>實際為 %1</translation>
+    </message>
+    <message>
+        <source>found the string &quot;%1&quot;</source>
+        <translation>實際為字串「%1」</translation>
+    </message>
+    <message>
+        <source>found an array</source>
+        <translation>實際為陣列</translation>
+    </message>
+    <message>
+        <source>found an object</source>
+        <translation>實際為物件</translation>
+    </message>
+    <message>
+        <source>a width more than 0</source>
+        <translation>大於 0 的寬度</translation>
+    </message>
+    <message>
+        <source>not an SVG drawing: %1</source>
+        <translation>不是 SVG 繪圖：%1</translation>
+    </message>
+    <message>
+        <source>one of %1</source>
+        <translation>下列之一：%1</translation>
+    </message>
+    <message>
+        <source>a colour like #rrggbb or #aarrggbb, or &quot;none&quot;</source>
+        <translation>#rrggbb 或 #aarrggbb 形式的顏色，或「none」</translation>
+    </message>
+    <message>
+        <source>a number from 0 to %1</source>
+        <translation>0 到 %1 的數字</translation>
+    </message>
+    <message>
+        <source>a component needs a name</source>
+        <translation>元件需要名稱</translation>
+    </message>
+    <message>
+        <source>a width of 0 or more</source>
+        <translation>0 或以上的寬度</translation>
+    </message>
+    <message>
+        <source>unknown mouth shape (the shapes are %1)</source>
+        <translation>未知的口型（口型有 %1）</translation>
+    </message>
+    <message>
+        <source>not a Toonface project (it has no &quot;format&quot; field)</source>
+        <translation>不是 Toonface 專案（沒有「format」欄位）</translation>
+    </message>
+    <message>
+        <source>not a Toonface project (format: expected &quot;%1&quot;, %2)</source>
+        <translation>不是 Toonface 專案（format：應為「%1」，%2）</translation>
+    </message>
+    <message>
+        <source>a version number (1 or more)</source>
+        <translation>版本號（1 或以上）</translation>
+    </message>
+    <message>
+        <source>made by a newer Toonface (project version %1; this version reads up to %2)</source>
+        <translation>由較新版的 Toonface 建立（專案版本 %1；此版本最多讀取到 %2）</translation>
+    </message>
+    <message>
+        <source>a file path</source>
+        <translation>檔案路徑</translation>
+    </message>
+    <message>
+        <source>not saved: the project is invalid at %1</source>
+        <translation>未儲存：專案在 %1 處無效</translation>
+    </message>
+    <message>
+        <source>cannot save: %1</source>
+        <translation>無法儲存：%1</translation>
+    </message>
+    <message>
+        <source>only %1 of %2 bytes could be written (is the disk full?)</source>
+        <translation>%2 位元組中只寫入了 %1 位元組（磁碟是否已滿？）</translation>
+    </message>
+    <message>
+        <source>the file could not be completed (is the disk full?)</source>
+        <translation>無法完成檔案（磁碟是否已滿？）</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>檔案不存在</translation>
+    </message>
+    <message>
+        <source>is a folder, not a Toonface project</source>
+        <translation>這是資料夾，不是 Toonface 專案</translation>
+    </message>
+    <message>
+        <source>too large to be a Toonface project (%1 MB)</source>
+        <translation>檔案太大，不可能是 Toonface 專案（%1 MB）</translation>
+    </message>
+    <message>
+        <source>cannot read: %1</source>
+        <translation>無法讀取：%1</translation>
+    </message>
+    <message>
+        <source>the file is empty, not a Toonface project</source>
+        <translation>檔案是空的，不是 Toonface 專案</translation>
+    </message>
+    <message>
+        <source>not a Toonface project: %1 at offset %2 (line %3, column %4)</source>
+        <translation>不是 Toonface 專案：位移 %2 處%1（第 %3 行第 %4 欄）</translation>
+    </message>
+    <message>
+        <source>not a Toonface project (expected a JSON object, found an array)</source>
+        <translation>不是 Toonface 專案（應為 JSON 物件，實際為陣列）</translation>
+    </message>
+    <message>
+        <source>%1 s is outside the syllable (%2 to %3 s) or before the shape before it</source>
+        <translation>%1 秒超出音節範圍（%2 到 %3 秒），或早於前一個口型</translation>
+    </message>
+    <message>
+        <source>a time of 0 s or more</source>
+        <translation>0 秒或以上的時間</translation>
+    </message>
+    <message>
+        <source>a time after the start (%1 s)</source>
+        <translation>開始時間（%1 秒）之後的時間</translation>
+    </message>
+    <message>
+        <source>expected %1 points, found %2</source>
+        <translation>應有 %1 個點，實際有 %2 個</translation>
+    </message>
+    <message>
+        <source>&quot;cmn&quot;, &quot;en&quot; or &quot;&quot;</source>
+        <translation>「cmn」、「en」或「」</translation>
+    </message>
+</context>
+<context>
     <name>toonface::Questions</name>
     <message>
         <source>an untitled project</source>
@@ -2348,6 +3348,183 @@ The points are unchanged.</source>
     </message>
 </context>
 <context>
+    <name>toonface::Script</name>
+    <message>
+        <source>no reference rendering of the script</source>
+        <translation>沒有文稿的參考朗讀</translation>
+    </message>
+    <message>
+        <source>no speech found in the audio</source>
+        <translation>音訊中找不到說話聲</translation>
+    </message>
+    <message>
+        <source>the script is far too long for the audio: its %1 syllables need about %2 s of speech, the audio holds %3 s</source>
+        <translation>文稿對這段音訊來說太長：%1 個音節約需 %2 秒的語音，音訊只有 %3 秒</translation>
+    </message>
+    <message>
+        <source>the audio holds far more speech (%1 s) than the script&apos;s %2 syllables (about %3 s)</source>
+        <translation>音訊中的語音（%1 秒）遠多於文稿的 %2 個音節（約 %3 秒）</translation>
+    </message>
+    <message>
+        <source>the audio and the script could not be matched</source>
+        <translation>無法將音訊與文稿對應</translation>
+    </message>
+    <message>
+        <source>the script is empty</source>
+        <translation>文稿是空的</translation>
+    </message>
+    <message>
+        <source>the audio is empty</source>
+        <translation>音訊是空的</translation>
+    </message>
+    <message>
+        <source>%1 and %2 could not be aligned: %3</source>
+        <translation>無法對齊 %1 與 %2：%3</translation>
+    </message>
+    <message>
+        <source>cannot read %1</source>
+        <translation>無法讀取 %1</translation>
+    </message>
+    <message>
+        <source>cannot start bzip2 decompression of %1</source>
+        <translation>無法開始以 bzip2 解壓縮 %1</translation>
+    </message>
+    <message>
+        <source>%1 is not a valid bzip2 file</source>
+        <translation>%1 不是有效的 bzip2 檔案</translation>
+    </message>
+    <message>
+        <source>Chinese character readings are missing (%1; install the Debian package unicode-data)</source>
+        <translation>缺少漢字讀音（%1；請安裝 Debian 套件 unicode-data）</translation>
+    </message>
+    <message>
+        <source>%1 holds no Mandarin readings</source>
+        <translation>%1 中沒有華語讀音</translation>
+    </message>
+    <message>
+        <source>the phrase dictionary %1 is missing (install the Debian package rime-data-terra-pinyin)</source>
+        <translation>缺少詞語字典 %1（請安裝 Debian 套件 rime-data-terra-pinyin）</translation>
+    </message>
+    <message>
+        <source>%1: built from other sources</source>
+        <translation>%1：由其他來源建立</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>無法寫入 %1：%2</translation>
+    </message>
+    <message>
+        <source>too short to be a pinyin index</source>
+        <translation>太短，不可能是拼音索引</translation>
+    </message>
+    <message>
+        <source>not a pinyin index</source>
+        <translation>不是拼音索引</translation>
+    </message>
+    <message>
+        <source>pinyin index format %1, expected %2</source>
+        <translation>拼音索引格式為 %1，應為 %2</translation>
+    </message>
+    <message>
+        <source>pinyin index of %1 bytes, its header describes %2</source>
+        <translation>拼音索引有 %1 位元組，但標頭記載 %2</translation>
+    </message>
+    <message>
+        <source>pinyin index checksum mismatch (damaged)</source>
+        <translation>拼音索引檢查碼不符（已損壞）</translation>
+    </message>
+    <message>
+        <source>pinyin index has a bad syllable &apos;%1&apos;</source>
+        <translation>拼音索引中有錯誤的音節「%1」</translation>
+    </message>
+    <message>
+        <source>pinyin index syllable table is damaged</source>
+        <translation>拼音索引的音節表已損壞</translation>
+    </message>
+    <message>
+        <source>pinyin index character table is damaged</source>
+        <translation>拼音索引的字元表已損壞</translation>
+    </message>
+    <message>
+        <source>pinyin index character readings are damaged</source>
+        <translation>拼音索引的字元讀音已損壞</translation>
+    </message>
+    <message>
+        <source>pinyin index phrase table is damaged</source>
+        <translation>拼音索引的詞語表已損壞</translation>
+    </message>
+    <message>
+        <source>pinyin index phrase readings are damaged</source>
+        <translation>拼音索引的詞語讀音已損壞</translation>
+    </message>
+    <message>
+        <source>cannot be spoken</source>
+        <translation>無法朗讀</translation>
+    </message>
+    <message>
+        <source>is not English</source>
+        <translation>不是英文</translation>
+    </message>
+    <message>
+        <source>has no Mandarin reading in the dictionary</source>
+        <translation>在字典中沒有華語讀音</translation>
+    </message>
+    <message>
+        <source>is not valid Zhuyin</source>
+        <translation>不是有效的注音</translation>
+    </message>
+    <message>
+        <source>is a number: write it in characters or pinyin</source>
+        <translation>是數字：請用漢字或拼音書寫</translation>
+    </message>
+    <message>
+        <source>is not Hanyu pinyin</source>
+        <translation>不是漢語拼音</translation>
+    </message>
+    <message>
+        <source>line %1, column %2: &apos;%3&apos; %4</source>
+        <translation>第 %1 行第 %2 欄：「%3」%4</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (and %n more)</source>
+        <translation>
+            <numerusform>%1（另有 %n 處）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the script holds nothing to speak</source>
+        <translation>文稿中沒有可朗讀的內容</translation>
+    </message>
+    <message>
+        <source>cannot read the script %1: %2</source>
+        <translation>無法讀取文稿 %1：%2</translation>
+    </message>
+    <message>
+        <source>the script %1 is not UTF-8 text</source>
+        <translation>文稿 %1 不是 UTF-8 文字</translation>
+    </message>
+    <message>
+        <source>espeak-ng cannot start: its data is missing (install espeak-ng-data)</source>
+        <translation>espeak-ng 無法啟動：缺少資料（請安裝 espeak-ng-data）</translation>
+    </message>
+    <message>
+        <source>nothing to speak</source>
+        <translation>沒有可朗讀的內容</translation>
+    </message>
+    <message>
+        <source>espeak-ng has no voice &apos;%1&apos;</source>
+        <translation>espeak-ng 沒有「%1」語音</translation>
+    </message>
+    <message>
+        <source>espeak-ng could not speak the script</source>
+        <translation>espeak-ng 無法朗讀文稿</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+</context>
+<context>
     <name>toonface::SecondsBox</name>
     <message>
         <source> s</source>
@@ -2359,6 +3536,137 @@ The points are unchanged.</source>
     <message>
         <source>Mouth shape %1 (key %2): replaces the selected mouth keys, or inserts one at the playhead</source>
         <translation>口型 %1（按鍵 %2）：取代所選的口型關鍵影格，或在播放頭處插入一個</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::SoundFile</name>
+    <message>
+        <source>cannot read the audio file %1: %2</source>
+        <translation>無法讀取音訊檔案 %1：%2</translation>
+    </message>
+    <message>
+        <source>the audio file %1 does not exist</source>
+        <translation>音訊檔案 %1 不存在</translation>
+    </message>
+    <message>
+        <source>cannot read the audio: %1</source>
+        <translation>無法讀取音訊：%1</translation>
+    </message>
+    <message>
+        <source>no audio stream</source>
+        <translation>沒有音訊串流</translation>
+    </message>
+    <message>
+        <source>audio samples</source>
+        <translation>音訊取樣</translation>
+    </message>
+    <message>
+        <source>invalid sample rate %1</source>
+        <translation>無效的取樣率 %1</translation>
+    </message>
+    <message>
+        <source>the audio has no sample rate</source>
+        <translation>音訊沒有取樣率</translation>
+    </message>
+    <message>
+        <source>cannot resample the audio: %1</source>
+        <translation>無法重新取樣音訊：%1</translation>
+    </message>
+    <message>
+        <source>cannot decode the audio: %1</source>
+        <translation>無法解碼音訊：%1</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>檔案不存在</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>檔案是空的</translation>
+    </message>
+    <message>
+        <source>not a readable sound or video file (%1)</source>
+        <translation>不是可讀取的聲音或影片檔案（%1）</translation>
+    </message>
+    <message>
+        <source>cannot read its streams (%1)</source>
+        <translation>無法讀取其中的串流（%1）</translation>
+    </message>
+    <message>
+        <source>no decoder for its sound track</source>
+        <translation>沒有可解碼其音軌的解碼器</translation>
+    </message>
+    <message>
+        <source>it has no sound track</source>
+        <translation>其中沒有音軌</translation>
+    </message>
+    <message>
+        <source>cannot open the %1 decoder</source>
+        <translation>無法開啟 %1 解碼器</translation>
+    </message>
+    <message>
+        <source>cannot convert its samples</source>
+        <translation>無法轉換其取樣</translation>
+    </message>
+    <message>
+        <source>its sound track cannot be decoded (corrupt data)</source>
+        <translation>其音軌無法解碼（資料損壞）</translation>
+    </message>
+    <message>
+        <source>it holds no sound</source>
+        <translation>其中沒有聲音</translation>
+    </message>
+    <message>
+        <source>it is silent (peak %1 dBFS)</source>
+        <translation>是靜音的（峰值 %1 dBFS）</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>無法寫入 %1：%2</translation>
+    </message>
+    <message>
+        <source>unknown sound format &apos;.%1&apos; (use wav, flac, mp3, ogg, opus or m4a)</source>
+        <translation>未知的聲音格式「.%1」（請使用 wav、flac、mp3、ogg、opus 或 m4a）</translation>
+    </message>
+    <message>
+        <source>this FFmpeg has no encoder for .%1</source>
+        <translation>此 FFmpeg 沒有 .%1 的編碼器</translation>
+    </message>
+    <message>
+        <source>no container for .%1</source>
+        <translation>沒有 .%1 的容器格式</translation>
+    </message>
+    <message>
+        <source>cannot open the %1 encoder (%2)</source>
+        <translation>無法開啟 %1 編碼器（%2）</translation>
+    </message>
+    <message>
+        <source>cannot add a sound stream</source>
+        <translation>無法加入聲音串流</translation>
+    </message>
+    <message>
+        <source>cannot convert the samples</source>
+        <translation>無法轉換取樣</translation>
+    </message>
+    <message>
+        <source>out of memory</source>
+        <translation>記憶體不足</translation>
+    </message>
+    <message>
+        <source>encoding failed</source>
+        <translation>編碼失敗</translation>
+    </message>
+    <message>
+        <source>its sample rate (%1 Hz) is too low for speech (at least %2 Hz)</source>
+        <translation>其取樣率（%1 Hz）太低，不足以承載語音（至少需要 %2 Hz）</translation>
+    </message>
+    <message>
+        <source>it is damaged: it decodes to more than %1 s of sound, more than its %2 bytes can hold</source>
+        <translation>檔案已損壞：解碼出超過 %1 秒的聲音，超出其 %2 位元組所能容納的長度</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>已取消</translation>
     </message>
 </context>
 <context>
@@ -2675,6 +3983,133 @@ The points are unchanged.</source>
     <message>
         <source>Video</source>
         <translation>影片</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::VideoFile</name>
+    <message>
+        <source>no decoder for its %1 codec &apos;%2&apos;</source>
+        <translation>沒有其 %1 編解碼器「%2」的解碼器</translation>
+    </message>
+    <message>
+        <source>cannot open its %1 decoder: %2</source>
+        <translation>無法開啟其 %1 解碼器：%2</translation>
+    </message>
+    <message>
+        <source>no frame_NNNNN.png files in the folder</source>
+        <translation>資料夾中沒有 frame_NNNNN.png 檔案</translation>
+    </message>
+    <message>
+        <source>cannot open: %1</source>
+        <translation>無法開啟：%1</translation>
+    </message>
+    <message>
+        <source>cannot read the streams: %1</source>
+        <translation>無法讀取串流：%1</translation>
+    </message>
+    <message>
+        <source>no video or audio stream</source>
+        <translation>沒有影片或音訊串流</translation>
+    </message>
+    <message>
+        <source>no video stream</source>
+        <translation>沒有影片串流</translation>
+    </message>
+    <message>
+        <source>has no frame %1 (it has %2)</source>
+        <translation>沒有第 %1 影格（共有 %2 個）</translation>
+    </message>
+    <message>
+        <source>invalid sample rate %1</source>
+        <translation>無效的取樣率 %1</translation>
+    </message>
+    <message>
+        <source>the neutral face&apos;s detection kept no tracking seed (thresholds, eyeballs, mouth region) for the classic method</source>
+        <translation>中性臉的偵測沒有保留經典方法所需的追蹤種子（閾值、眼球、嘴巴區域）</translation>
+    </message>
+    <message>
+        <source>%1: no face in any frame</source>
+        <translation>%1：沒有任何影格含有臉部</translation>
+    </message>
+    <message>
+        <source>the neutral frame is empty</source>
+        <translation>中性影格是空的</translation>
+    </message>
+    <message>
+        <source>the %1 tracking cannot follow the face it detected on the neutral frame</source>
+        <translation>%1 追蹤無法跟隨在中性影格上偵測到的臉部</translation>
+    </message>
+    <message>
+        <source>%1: tracking was cancelled</source>
+        <translation>%1：追蹤已取消</translation>
+    </message>
+    <message>
+        <source>%1: the neutral frame must be 0 or later</source>
+        <translation>%1：中性影格必須為 0 或之後</translation>
+    </message>
+    <message>
+        <source>%1: no video frame could be decoded</source>
+        <translation>%1：沒有任何影格能夠解碼</translation>
+    </message>
+    <message>
+        <source>%1: the neutral frame %2 is past the video&apos;s end (it has %3 frames)</source>
+        <translation>%1：中性影格 %2 超出影片結尾（影片共有 %3 個影格）</translation>
+    </message>
+    <message>
+        <source>%1: frame %2: %3</source>
+        <translation>%1：第 %2 影格：%3</translation>
+    </message>
+    <message>
+        <source>%1 (tracked the %2 frames before)</source>
+        <translation>%1（已追蹤之前的 %2 個影格）</translation>
+    </message>
+    <message>
+        <source>%1: %2 damaged packets were skipped; the frames around them may be wrong</source>
+        <translation>%1：略過了 %2 個損壞的封包；附近的影格可能有誤</translation>
+    </message>
+    <message>
+        <source>%1: the face was lost in %2 of %3 frames (they hold the last pose)</source>
+        <translation>%1：%3 個影格中有 %2 個跟丟了臉部（這些影格保留最後的姿勢）</translation>
+    </message>
+    <message>
+        <source>%1: the video cannot be decoded (%2)</source>
+        <translation>%1：影片無法解碼（%2）</translation>
+    </message>
+    <message>
+        <source>%1: cannot convert the video&apos;s pixel format</source>
+        <translation>%1：無法轉換影片的像素格式</translation>
+    </message>
+    <message>
+        <source>%1: out of memory</source>
+        <translation>%1：記憶體不足</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>檔案不存在</translation>
+    </message>
+    <message>
+        <source>not a video FFmpeg can read (%1)</source>
+        <translation>不是 FFmpeg 能讀取的影片（%1）</translation>
+    </message>
+    <message>
+        <source>the file holds no video</source>
+        <translation>檔案中沒有影片</translation>
+    </message>
+    <message>
+        <source>cannot set up the video decoder</source>
+        <translation>無法設定影片解碼器</translation>
+    </message>
+    <message>
+        <source>cannot open the video decoder (%1)</source>
+        <translation>無法開啟影片解碼器（%1）</translation>
+    </message>
+    <message>
+        <source>the video has no picture size</source>
+        <translation>影片沒有畫面尺寸</translation>
+    </message>
+    <message>
+        <source>out of memory</source>
+        <translation>記憶體不足</translation>
     </message>
 </context>
 <context>

@@ -1,7 +1,10 @@
 #include "tsfile.h"
 
 #include <QDir>
+#include <QFile>
 #include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace toonface;
@@ -19,7 +22,8 @@ struct Run
 };
 
 // Runs the CLI with the locale variables of a user whose language is `lang`.
-Run cli(const QStringList &args, const QString &lang, const QString &language = QString())
+Run cli(const QStringList &args, const QString &lang, const QString &language = QString(),
+    const QString &workingDirectory = QString())
 {
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.remove(QStringLiteral("LC_ALL"));
@@ -30,6 +34,7 @@ Run cli(const QStringList &args, const QString &lang, const QString &language = 
         env.insert(QStringLiteral("LANGUAGE"), language);
     QProcess p;
     p.setProcessEnvironment(env);
+    p.setWorkingDirectory(workingDirectory);
     p.start(QStringLiteral(TOONFACE_CLI_PATH), args);
     if (!p.waitForFinished(60000))
         return {};
@@ -102,6 +107,78 @@ private Q_SLOTS:
             wrong.err.contains(ts.translate(kContext, QStringLiteral("unknown command '%1'; try 'toonface-cli --help'"))
                                    .arg(QStringLiteral("frobnicate"))),
             qPrintable(wrong.err));
+    }
+
+    void coreErrorsFollowTheLocale_data()
+    {
+        QTest::addColumn<QString>("lang");
+        QTest::addColumn<QString>("catalogue");
+        QTest::newRow("zh_TW") << QStringLiteral("zh_TW.UTF-8") << QStringLiteral("zh_TW");
+        QTest::newRow("zh_CN") << QStringLiteral("zh_CN.UTF-8") << QStringLiteral("zh_CN");
+        QTest::newRow("C") << QStringLiteral("C") << QString();
+    }
+
+    // The messages core builds (a damaged project, a file that is no sound, a script with
+    // something unspeakable) in the user's language, naming the file, after the unchanged
+    // "toonface-cli: error:" prefix; under LANG=C the English of before.
+    void coreErrorsFollowTheLocale()
+    {
+        QFETCH(QString, lang);
+        QFETCH(QString, catalogue);
+        fixture::TsFile ts;
+        if (!catalogue.isEmpty()) {
+            ts = fixture::readTsFile(QDir(kDir).filePath(QStringLiteral("toonface_%1.ts").arg(catalogue)));
+            QVERIFY2(ts.error.isEmpty(), qPrintable(ts.error));
+        }
+        // The source text in English, its translation in Chinese.
+        const auto text = [&](const char *context, const QString &source) {
+            return catalogue.isEmpty() ? source : ts.translate(QString::fromLatin1(context), source);
+        };
+        const auto joined = [&](const QString &where, const QString &problem) {
+            return text("toonface::Problem", QStringLiteral("%1: %2")).arg(where, problem);
+        };
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const auto write = [&](const QString &name, const QByteArray &bytes) {
+            QFile f(dir.filePath(name));
+            return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
+        };
+        QVERIFY(write(QStringLiteral("empty.toonface"), "{}"));
+        QVERIFY(write(QStringLiteral("noise.wav"), "hello, this is no sound"));
+        QVERIFY(write(QStringLiteral("good.txt"), "你好"));
+        QVERIFY(write(QStringLiteral("bad.txt"), "你好 ⓧ"));
+
+        struct Case
+        {
+            QStringList args;
+            QString want;
+        };
+        const QList<Case> cases {
+            {{QStringLiteral("cartoon"), QStringLiteral("empty.toonface"), QStringLiteral("-o"),
+                 QStringLiteral("x.svg")},
+                joined(QStringLiteral("empty.toonface"),
+                    text("toonface::ProjectFile",
+                        QStringLiteral("not a Toonface project (it has no \"format\" field)")))},
+            {{QStringLiteral("lipsync"), QStringLiteral("--audio"), QStringLiteral("noise.wav"),
+                 QStringLiteral("--script"), QStringLiteral("good.txt")},
+                joined(QStringLiteral("noise.wav"),
+                    text("toonface::SoundFile", QStringLiteral("not a readable sound or video file (%1)"))
+                        .arg(text("toonface::Media", QStringLiteral("the data is invalid or damaged"))))},
+            {{QStringLiteral("lipsync"), QStringLiteral("--audio"), QStringLiteral("noise.wav"),
+                 QStringLiteral("--script"), QStringLiteral("bad.txt")},
+                joined(QStringLiteral("bad.txt"),
+                    text("toonface::Script", QStringLiteral("line %1, column %2: '%3' %4"))
+                        .arg(QStringLiteral("1"), QStringLiteral("4"), QStringLiteral("ⓧ"),
+                            text("toonface::Script", QStringLiteral("cannot be spoken"))))},
+        };
+        for (const Case &c : cases) {
+            const Run run = cli(c.args, lang, QString(), dir.path());
+            QCOMPARE(run.code, 3);
+            QCOMPARE(run.err.trimmed(), QStringLiteral("toonface-cli: error: ") + c.want);
+            static const QRegularExpression han(QStringLiteral("\\p{Han}"));
+            const QString message = c.want.mid(c.want.indexOf(QLatin1Char('.')));
+            QCOMPARE(message.contains(han), !catalogue.isEmpty());
+        }
     }
 
     // LANGUAGE's first choice wins over LANG (as in gettext); other languages read English.

@@ -8,6 +8,7 @@
 #include "capture/microphone.h"
 #include "document/companionfile.h"
 #include "document/document.h"
+#include "i18n/coretext.h"
 #include "media/mediareader.h"
 #include "playback/playhead.h"
 #include "track/videofilesource.h"
@@ -152,7 +153,7 @@ LiveWindow::LiveWindow(Document *document, Playhead *playhead, QWidget *parent)
     m_restPose->setEnabled(false);
     m_record->setEnabled(false);
     setStatus(CameraFeed::cameras().isEmpty()
-            ? CameraFeed::noCameraMessage() + QLatin1Char(' ') + tr("Choose “Video file…” to perform from a clip.")
+            ? joinSentences(CameraFeed::noCameraMessage(), tr("Choose “Video file…” to perform from a clip."))
             : tr("Choose a camera or a video file."));
 }
 
@@ -276,7 +277,7 @@ void LiveWindow::applyMouthMode()
         } else if (!m_microphone->isActive()) {
             QString error;
             if (!m_microphone->start(&error)) {
-                setStatus(error + QLatin1Char(' ') + tr("The mouth follows the camera."));
+                setStatus(joinSentences(error, tr("The mouth follows the camera.")));
                 mode = LiveMouth::Camera;
             }
         }
