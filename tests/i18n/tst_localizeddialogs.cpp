@@ -1,4 +1,5 @@
 #include "animationfixture.h"
+#include "translators.h"
 #include "uifixture.h"
 
 #include "capture/capturedialog.h"
@@ -101,14 +102,7 @@ QStringList lookAt(QWidget *widget, const QString &name, bool keepSize = false)
     return problems;
 }
 
-void removeTranslators()
-{
-    for (QTranslator *t : QCoreApplication::instance()->findChildren<QTranslator *>()) {
-        QCoreApplication::removeTranslator(t);
-        delete t;
-    }
-    QLocale::setDefault(QLocale::system());
-}
+using fixture::removeTranslators;
 
 } // namespace
 

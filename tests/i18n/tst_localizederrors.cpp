@@ -1,3 +1,4 @@
+#include "translators.h"
 #include "tsfile.h"
 #include "uifixture.h"
 
@@ -31,14 +32,7 @@ namespace {
 
 const QString kDir = QStringLiteral(TOONFACE_TRANSLATIONS_DIR);
 
-void removeTranslators()
-{
-    for (QTranslator *t : QCoreApplication::instance()->findChildren<QTranslator *>()) {
-        QCoreApplication::removeTranslator(t);
-        delete t;
-    }
-    QLocale::setDefault(QLocale::system());
-}
+using fixture::removeTranslators;
 
 bool hasHan(const QString &text)
 {

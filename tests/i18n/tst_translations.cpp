@@ -1,3 +1,4 @@
+#include "translators.h"
 #include "tsfile.h"
 
 #include "i18n/translations.h"
@@ -37,14 +38,7 @@ bool hasAccelerator(const QString &text)
 }
 
 // The translators installTranslations() gave the application, removed again.
-void removeTranslators()
-{
-    for (QTranslator *t : QCoreApplication::instance()->findChildren<QTranslator *>()) {
-        QCoreApplication::removeTranslator(t);
-        delete t;
-    }
-    QLocale::setDefault(QLocale::system());
-}
+using fixture::removeTranslators;
 
 bool hasChinese(const QString &text)
 {
