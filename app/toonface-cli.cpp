@@ -92,13 +92,14 @@ int main(int argc, char *argv[])
     QStringList args;
     for (int i = 1; i < argc; ++i)
         args << QString::fromLocal8Bit(argv[i]);
-    // A command that will detect a face starts detection's one-time work now, on the other
-    // core, while the application starts and the photo is read.
+    // A command that will detect a face starts loading detection's models now, on the other
+    // core, while the application starts and the photo is read (its detection follows at once
+    // and does the rest of the first-time work itself: bench startup.firstVsTenth).
     // Qt takes the first thread that asks for its thread data for the main thread: claim it
     // before the warm-up's threads (which use Qt types) can.
     QThread::currentThread();
     if (const Command *command = findCommand(args.value(0)); command && command->detects && mayUseLandmarks(args))
-        toonface::warmUpDetection();
+        toonface::warmUpDetectionModels();
     // Rendering text and SVG needs a GUI application, but never a display.
     if (!qEnvironmentVariableIsSet("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");

@@ -187,8 +187,8 @@ static QJsonObject benchModelCache()
 }
 
 // In a process of its own: `kDetections` detections of IMAGE one after the other. MODE
-// "cli": the warm-up starts with the process, as toonface-cli's does, and the detections
-// follow at once (the first waits for what it needs of it); "warmed": they follow the
+// "cli": the models' warm-up starts with the process, as toonface-cli's does, and the
+// detections follow at once (the first waits for what it needs of it); "warmed": they follow the
 // warm-up's end, as a photo opened in the editor after launch; "none": no warm-up, the model
 // loaded before (the one-time work falls on the first detection).
 static QJsonObject childDetections(const QStringList &args)
@@ -196,7 +196,9 @@ static QJsonObject childDetections(const QStringList &args)
     QElapsedTimer process;
     process.start();
     const QString mode = args.value(1);
-    if (mode != QLatin1StringView("none"))
+    if (mode == QLatin1StringView("cli"))
+        warmUpDetectionModels();
+    else if (mode == QLatin1StringView("warmed"))
         warmUpDetection();
     int argc = 1;
     char name[] = "toonface-bench";

@@ -57,17 +57,20 @@ public:
         return warmUp;
     }
 
-    void start()
+    void start(bool refinement)
     {
-        std::call_once(m_started, [this] {
+        std::call_once(m_started, [this, refinement] {
             // The application waits for the threads before it tears down what they use.
             qAddPostRoutine(&waitForDetectionWarmUp);
             std::lock_guard lock(m_mutex);
-            m_refinementReady = m_refinementDone.get_future().share();
-            m_stages = std::thread([this] {
+            if (refinement)
+                m_refinementReady = m_refinementDone.get_future().share();
+            m_stages = std::thread([this, refinement] {
                 warmUpFaceScan(kFirstPassSize);
-                warmUpFaceRefinement();
-                m_refinementDone.set_value();
+                if (refinement) {
+                    warmUpFaceRefinement();
+                    m_refinementDone.set_value();
+                }
             });
             m_model = std::thread([] {
                 sharedLandmarkModel(nullptr);
@@ -108,7 +111,7 @@ private:
     std::once_flag m_started;
     std::mutex m_mutex;
     std::promise<void> m_refinementDone;
-    std::shared_future<void> m_refinementReady; // valid once the warm-up started
+    std::shared_future<void> m_refinementReady; // valid once a warm-up with the refinement started
     std::thread m_model;
     std::thread m_stages;
 };
@@ -174,7 +177,12 @@ LandmarkModelLoad landmarkModelLoad()
 
 void warmUpDetection()
 {
-    WarmUp::instance().start();
+    WarmUp::instance().start(true);
+}
+
+void warmUpDetectionModels()
+{
+    WarmUp::instance().start(false);
 }
 
 void awaitFaceRefinementWarmUp()

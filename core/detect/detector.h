@@ -79,9 +79,12 @@ LandmarkModelLoad landmarkModelLoad();
 // do on its way, one thing after another: the landmark model's load, the face detector's
 // decoding and its scan thread, and a first run of the stages after the scan (their tables,
 // OpenCV's set-up, first allocations). It runs on two threads of its own, beside the caller's
-// start-up; a detection started meanwhile waits only for what it needs. The CLI starts it
-// when a command will detect, the editor when its window opens. Calling it again does nothing.
+// start-up; a detection started meanwhile waits only for what it needs. The editor starts it
+// when its window opens. Calling it again does nothing.
 void warmUpDetection();
+// The same without the first run of the later stages: for a process whose detection starts at
+// once (the CLI), which would only race that run for the cores and wait for it.
+void warmUpDetectionModels();
 // Waits until the warm-up has ended (returns at once when none was started). The warm-up's
 // threads must not outlive what they use: QCoreApplication's destructor calls this, and a
 // process without one calls it before it ends.
