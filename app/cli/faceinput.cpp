@@ -1,6 +1,7 @@
 #include "cli/faceinput.h"
 
 #include "cli/command.h"
+#include "i18n/coretext.h"
 #include "io/facejson.h"
 #include "io/imageio.h"
 #include "io/project.h"
@@ -73,7 +74,7 @@ int loadFaceInput(const QString &path, const DetectOptions &options, FaceInput *
         QString imagePath;
         const auto face = faceFromJson(doc.object(), &error, &imagePath);
         if (!face)
-            return fail(ExitBadInput, QStringLiteral("%1: %2").arg(path, error));
+            return fail(ExitBadInput, withProblem(path, error));
         out->face = *face;
         if (!imagePath.isEmpty()) {
             const QString resolved
@@ -92,8 +93,7 @@ int loadFaceInput(const QString &path, const DetectOptions &options, FaceInput *
         out->photoPath = QFileInfo(path).absoluteFilePath();
         out->detection = detectFace(out->photo, options);
         if (out->detection.status != DetectStatus::Ok)
-            return fail(
-                detectionExitCode(out->detection.status), QStringLiteral("%1: %2").arg(path, out->detection.error));
+            return fail(detectionExitCode(out->detection.status), withProblem(path, out->detection.error));
         if (!out->detection.note.isEmpty())
             warn(Cli::tr("%1: the landmark method could not serve (%2); the points come from the classic method")
                      .arg(path, out->detection.note));
