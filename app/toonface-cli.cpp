@@ -1,6 +1,7 @@
 #include "cli/command.h"
 #include "detect/detector.h"
 #include "i18n/translations.h"
+#include "speech/stagetimes.h"
 
 #include <QGuiApplication>
 #include <QTextStream>
@@ -87,6 +88,7 @@ bool mayUseLandmarks(const QStringList &args)
 
 int main(int argc, char *argv[])
 {
+    toonface::markStage("main");
     qInstallMessageHandler(qtMessages);
     // Read the arguments before QGuiApplication consumes the ones it knows (--style among them).
     QStringList args;

@@ -575,43 +575,8 @@ TOONFACE_BENCHMARK("speech.alignSpeed", alignSpeed);
 
 namespace {
 
-// One run of a child process, measured alone (wait4): wall and CPU time, peak memory.
-struct ChildRun
-{
-    double wallMs = 0, cpuMs = 0, peakMb = 0;
-    bool ok = false;
-};
-
-ChildRun runMeasured(const QString &program, const QStringList &args)
-{
-    std::vector<QByteArray> bytes {QFile::encodeName(program)};
-    for (const QString &a : args)
-        bytes.push_back(a.toLocal8Bit());
-    std::vector<char *> argv;
-    for (QByteArray &b : bytes)
-        argv.push_back(b.data());
-    argv.push_back(nullptr);
-    ChildRun r;
-    QElapsedTimer t;
-    t.start();
-    const pid_t pid = fork();
-    if (pid == 0) {
-        const int devnull = open("/dev/null", O_WRONLY);
-        dup2(devnull, 2);
-        execv(argv[0], argv.data());
-        _exit(127);
-    }
-    int status = 0;
-    rusage usage {};
-    if (pid < 0 || wait4(pid, &status, 0, &usage) != pid)
-        return r;
-    r.wallMs = double(t.nsecsElapsed()) / 1e6;
-    r.cpuMs = (usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) * 1e3
-        + (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e3;
-    r.peakMb = double(usage.ru_maxrss) / 1024.0;
-    r.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
-    return r;
-}
+using bench::ChildRun;
+using bench::runMeasured;
 
 // `toonface-cli lipsync` end to end on long real recordings: the shared recordings of one
 // sentence each (two AISHELL-1 sentences, the P2FA test and SSB00050015) joined, round after

@@ -7,13 +7,9 @@
 
 #include <QElapsedTimer>
 #include <QFile>
+#include <QHash>
 #include <QJsonArray>
-#include <QProcess>
 #include <QTemporaryDir>
-
-#include <sys/resource.h>
-#include <sys/time.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cmath>
@@ -73,21 +69,39 @@ QJsonObject dictionaryStart()
     return out;
 }
 
-// Runs the CLI, returning the wall time in ms and the peak resident memory of the children so
-// far in MB (the largest run wins, so the runs go from small to large).
-std::pair<double, double> runCli(const QStringList &args, QString *error, const QProcessEnvironment &env)
+// The stages of one `toonface-cli lipsync` run in ms, from the TOONFACE_TIMINGS marks it
+// printed (speech/stagetimes.h): start-up (exec to main), script (the application, the
+// dictionary and the script), decode (the recording decoded and its features computed; the
+// pace probe renders meanwhile on the other core), reference (the reference rendered at the
+// speaker's pace, its features computed on the other core; 0 when the probe was the
+// reference), align (warp and segmentation), output (JSON written) and exit.
+QJsonObject breakdown(const bench::ChildRun &run)
 {
-    QProcess p;
-    p.setProcessEnvironment(env);
-    QElapsedTimer t;
-    t.start();
-    p.start(QStringLiteral(TOONFACE_CLI_PATH), args);
-    if (!p.waitForFinished(120000) || p.exitCode() != 0)
-        *error = QString::fromUtf8(p.readAllStandardError()).right(300);
-    const double ms = double(t.nsecsElapsed()) / 1e6;
-    rusage usage {};
-    getrusage(RUSAGE_CHILDREN, &usage);
-    return {ms, double(usage.ru_maxrss) / 1024.0};
+    QHash<QByteArray, double> marks;
+    for (const QByteArray &line : run.stderrText.split('\n')) {
+        const QList<QByteArray> parts = line.split(' ');
+        if (parts.size() == 4 && parts[1] == "timing:")
+            marks.insert(parts[2], parts[3].toDouble());
+    }
+    QJsonObject o;
+    if (!marks.contains("main") || !marks.contains("written"))
+        return o;
+    const double decoded = marks.value("decoded");
+    const double reference = marks.value("reference", decoded);
+    const double end = run.startedMs + run.wallMs;
+    const auto put = [&](const char *name, double from, double to) {
+        o.insert(QLatin1String(name), std::round((to - from) * 10) / 10);
+    };
+    put("startUpMs", run.startedMs, marks.value("main"));
+    put("scriptMs", marks.value("main"), marks.value("script"));
+    put("decodeMs", marks.value("script"), decoded);
+    if (marks.contains("probed"))
+        put("paceProbeMsOtherCore", marks.value("script"), marks.value("probed"));
+    put("referenceMs", decoded, reference);
+    put("alignMs", reference, marks.value("aligned"));
+    put("outputMs", marks.value("aligned"), marks.value("written"));
+    put("exitMs", marks.value("written"), end);
+    return o;
 }
 
 // `toonface-cli lipsync` end to end (process start, dictionary, decoding, alignment, JSON) on
@@ -97,8 +111,8 @@ QJsonObject lipsyncCli()
 {
     QJsonObject out = loadAverage();
     QTemporaryDir dir;
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(QStringLiteral("TOONFACE_CACHE_DIR"), dir.filePath(QStringLiteral("cache")));
+    const QStringList env = {QStringLiteral("TOONFACE_CACHE_DIR=") + dir.filePath(QStringLiteral("cache"))};
+    const QStringList timedEnv = env + QStringList {QStringLiteral("TOONFACE_TIMINGS=1")};
     const QString sentence = QStringLiteral("今天天气很好，我们去公园散步吧。我爱北京天安门，天安门上太阳升。"
                                             "这个问题很难回答，请你再说一遍。小明每天早上六点起床，然后去学校上课。");
     TtsOptions voice;
@@ -129,30 +143,32 @@ QJsonObject lipsyncCli()
         o.insert(QStringLiteral("audioSeconds"), std::round(audio.duration() * 10) / 10);
         if (first) {
             // The first run builds the dictionary cache.
-            const auto [ms, mb] = runCli(args, &error, env);
-            o.insert(QStringLiteral("coldCacheMs"), std::round(ms));
+            const bench::ChildRun cold = bench::runMeasured(QStringLiteral(TOONFACE_CLI_PATH), args, env);
+            o.insert(QStringLiteral("coldCacheMs"), std::round(cold.wallMs));
+            o.insert(QStringLiteral("coldCachePeakMemoryMb"), std::round(cold.peakMb));
             first = false;
         }
-        std::vector<double> times;
-        double peakMb = 0;
-        for (int run = 0; run < (seconds > 100 ? 2 : 3); ++run) {
-            const auto [ms, mb] = runCli(args, &error, env);
-            times.push_back(ms);
-            peakMb = mb;
-        }
-        std::sort(times.begin(), times.end());
-        const double ms = times[times.size() / 2];
-        o.insert(QStringLiteral("ms"), std::round(ms));
-        o.insert(QStringLiteral("timesRealTime"), std::round(audio.duration() * 1000.0 / ms));
-        o.insert(QStringLiteral("peakMemoryMbSoFar"), std::round(peakMb));
-        if (!error.isEmpty())
-            o.insert(QStringLiteral("error"), error);
+        // Each run measured alone; the run of median wall time is reported.
+        std::vector<bench::ChildRun> measured;
+        for (int run = 0; run < (seconds > 100 ? 3 : 5); ++run)
+            measured.push_back(bench::runMeasured(QStringLiteral(TOONFACE_CLI_PATH), args, timedEnv, true));
+        std::sort(measured.begin(), measured.end(),
+            [](const bench::ChildRun &a, const bench::ChildRun &b) { return a.wallMs < b.wallMs; });
+        const bench::ChildRun &m = measured[measured.size() / 2];
+        o.insert(QStringLiteral("ms"), std::round(m.wallMs));
+        o.insert(QStringLiteral("timesRealTime"), std::round(audio.duration() * 1000.0 / m.wallMs));
+        o.insert(QStringLiteral("cpuMs"), std::round(m.cpuMs));
+        o.insert(QStringLiteral("peakMemoryMb"), std::round(m.peakMb));
+        o.insert(QStringLiteral("stages"), breakdown(m));
+        if (!m.ok)
+            o.insert(QStringLiteral("error"), QString::fromLocal8Bit(m.stderrText).right(300));
         runs.append(o);
     }
     out.insert(QStringLiteral("runs"), runs);
     out.insert(QStringLiteral("what"),
-        QStringLiteral("toonface-cli lipsync with a character script, wall time (median), dictionary cache warm "
-                       "after the first run; peak RSS of the largest child so far"));
+        QStringLiteral("toonface-cli lipsync with a character script, dictionary cache warm after the first run: "
+                       "the run of median wall time (of 5, 3 for 10 min), its CPU time, its own peak RSS and its "
+                       "stages (TOONFACE_TIMINGS)"));
     return out;
 }
 

@@ -8,7 +8,18 @@
 #include <QTextStream>
 #include <QThread>
 
+#include <QTemporaryFile>
+
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <vector>
+
+extern char **environ;
 
 namespace toonface::bench {
 
@@ -35,6 +46,64 @@ QJsonObject runChild(const QString &name, const QStringList &args, const QString
     if (!process.waitForFinished(300000) || process.exitCode() != 0)
         return {{QStringLiteral("error"), QString::fromLocal8Bit(process.readAllStandardError()).trimmed()}};
     return QJsonDocument::fromJson(process.readAllStandardOutput()).object();
+}
+
+ChildRun runMeasured(const QString &program, const QStringList &args, const QStringList &env, bool keepStderr)
+{
+    std::vector<QByteArray> bytes {QFile::encodeName(program)};
+    for (const QString &a : args)
+        bytes.push_back(a.toLocal8Bit());
+    std::vector<char *> argv;
+    for (QByteArray &b : bytes)
+        argv.push_back(b.data());
+    argv.push_back(nullptr);
+    // The extra entries replace those of the same name.
+    std::vector<QByteArray> envBytes;
+    for (const QString &e : env)
+        envBytes.push_back(e.toLocal8Bit());
+    const size_t extra = envBytes.size();
+    for (char **e = environ; *e; ++e) {
+        const QByteArray entry(*e);
+        const QByteArray name = entry.left(entry.indexOf('=') + 1);
+        if (std::none_of(envBytes.begin(), envBytes.begin() + qsizetype(extra),
+                [&](const QByteArray &x) { return x.startsWith(name); }))
+            envBytes.push_back(entry);
+    }
+    std::vector<char *> envp;
+    for (QByteArray &e : envBytes)
+        envp.push_back(e.data());
+    envp.push_back(nullptr);
+    ChildRun r;
+    QTemporaryFile errors;
+    if (keepStderr && !errors.open())
+        return r;
+    timespec now {};
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    r.startedMs = double(now.tv_sec) * 1e3 + double(now.tv_nsec) / 1e6;
+    QElapsedTimer t;
+    t.start();
+    const pid_t pid = fork();
+    if (pid == 0) {
+        const int devnull = open("/dev/null", O_WRONLY);
+        dup2(devnull, 1);
+        dup2(keepStderr ? errors.handle() : devnull, 2);
+        execve(argv[0], argv.data(), envp.data());
+        _exit(127);
+    }
+    int status = 0;
+    rusage usage {};
+    if (pid < 0 || wait4(pid, &status, 0, &usage) != pid)
+        return r;
+    r.wallMs = double(t.nsecsElapsed()) / 1e6;
+    r.cpuMs = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) * 1e3
+        + double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e3;
+    r.peakMb = double(usage.ru_maxrss) / 1024.0;
+    r.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    if (keepStderr) {
+        errors.seek(0);
+        r.stderrText = errors.readAll();
+    }
+    return r;
 }
 
 double medianMs(const std::function<void()> &fn, int minRuns, double minMs)

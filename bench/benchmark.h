@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QByteArray>
 #include <QElapsedTimer>
 #include <QJsonObject>
 #include <QString>
@@ -48,6 +49,21 @@ struct ChildRegistrar
 // Runs the child measurement `name` in a new process of this executable with `args` and the
 // extra environment `env` ("NAME=value" entries); its JSON, or {"error": ...}.
 QJsonObject runChild(const QString &name, const QStringList &args, const QStringList &env = {});
+
+// One run of a program in a process of its own, measured alone (wait4): wall and CPU time,
+// its own peak memory, and what it wrote on stderr when asked for.
+struct ChildRun
+{
+    double wallMs = 0, cpuMs = 0, peakMb = 0;
+    bool ok = false; // exited with 0
+    double startedMs = 0; // CLOCK_MONOTONIC in ms just before the process was started
+    QByteArray stderrText; // when keepStderr
+};
+
+// Runs `program` with `args` and the extra environment `env` ("NAME=value" entries); its
+// stdout is dropped, its stderr too unless `keepStderr`.
+ChildRun runMeasured(
+    const QString &program, const QStringList &args, const QStringList &env = {}, bool keepStderr = false);
 
 // Runs `fn` repeatedly for at least `minMs` milliseconds (and at least `minRuns` times);
 // returns the median time of one run in milliseconds.

@@ -1,5 +1,6 @@
 #include "cli/command.h"
 #include "speech/lipsync.h"
+#include "speech/stagetimes.h"
 
 #include <QFileInfo>
 #include <QJsonDocument>
@@ -45,7 +46,9 @@ int runLipsync(const Command &self, const QStringList &args)
     const bool tsv = parser.isSet(output) && QFileInfo(parser.value(output)).suffix().toLower() == QLatin1String("tsv");
     const QByteArray data
         = tsv ? lipsyncToTsv(out.result) : QJsonDocument(lipsyncToJson(out.result)).toJson(QJsonDocument::Indented);
-    return writeOutput(parser, output, data);
+    const int written = writeOutput(parser, output, data);
+    markStage("written");
+    return written;
 }
 
 const CommandRegistrar registrar({QStringLiteral("lipsync"),

@@ -5,8 +5,10 @@
 #include "speech/dtw.h"
 #include "speech/features.h"
 #include "speech/onsetsignals.h"
+#include "speech/paceprobe.h"
 #include "speech/pinyin.h"
 #include "speech/referencefeatures.h"
+#include "speech/stagetimes.h"
 #include "speech/syllableduration.h"
 
 #include <algorithm>
@@ -18,8 +20,6 @@
 namespace toonface {
 
 namespace {
-
-constexpr int kDefaultRate = 175;
 
 AlignResult failure(AlignStatus status, const QString &why)
 {
@@ -557,24 +557,23 @@ AlignResult alignScript(const Audio &audio, const Script &script, const AlignOpt
 AlignResult alignScript(const SpeechFeatures &a, const Script &script, const AlignOptions &options,
     const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
+    PaceProbe probe(script, options.reference);
+    return alignScript(a, probe, script, options, progress, cancel);
+}
+
+AlignResult alignScript(const SpeechFeatures &a, PaceProbe &probe, const Script &script, const AlignOptions &options,
+    const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+{
     if (script.syllables.isEmpty())
         return failure(AlignStatus::BadInput, ScriptText::tr("the script is empty"));
     TtsOptions tts = options.reference;
-    const bool matchRate = tts.rate <= 0;
-    if (matchRate)
-        tts.rate = kDefaultRate;
-    if (matchRate) {
+    if (probe.needed()) {
         // Speak the reference at the speaker's pace: less warping, fewer mistakes. The pace
-        // at the default rate is measured on (at most) the first 120 syllables; when they are
-        // the whole script, that rendering may serve as the reference itself.
-        Script probe = script;
-        if (probe.syllables.size() > 120)
-            probe.syllables.resize(120);
-        const bool whole = probe.syllables.size() == script.syllables.size();
-        SpeechFeatures probeFeatures;
-        const TtsResult sample = whole ? renderReference(probe, tts, &probeFeatures, cancel)
-                                       : synthesize(
-                                           probe, tts, [](const float *, qsizetype) {}, {}, cancel);
+        // at the default rate is measured on (at most) the first PaceProbe::kProbeSyllables
+        // syllables; when they are the whole script, that rendering may serve as the reference
+        // itself.
+        tts.rate = kDefaultReferenceRate;
+        const TtsResult &sample = probe.sample(cancel);
         if (isCancelled(cancel))
             return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
         if (!sample.ok())
@@ -582,18 +581,19 @@ AlignResult alignScript(const SpeechFeatures &a, const Script &script, const Ali
         double spoken = 0;
         for (const TtsUnit &u : sample.units)
             spoken += u.end - u.start;
-        spoken *= double(script.syllables.size()) / double(probe.syllables.size());
+        spoken *= double(script.syllables.size()) / double(probe.syllables());
         const double ratio = a.speechDuration() / std::max(spoken, 0.01);
         if (ratio > 0.3 && ratio < 6 && std::abs(std::log(ratio)) > std::log(1.15))
-            tts.rate = std::clamp(int(std::lround(kDefaultRate / ratio)), 80, 450);
-        else if (whole) {
+            tts.rate = std::clamp(int(std::lround(kDefaultReferenceRate / ratio)), 80, 450);
+        else if (probe.whole()) {
             if (progress)
                 progress(0.1, QStringLiteral("reference"));
-            return alignFeatures(a, script, sample, probeFeatures, options.refineBoundaries, progress, cancel);
+            return alignFeatures(a, script, sample, probe.features(), options.refineBoundaries, progress, cancel);
         }
     }
     SpeechFeatures b;
     const TtsResult reference = renderReference(script, tts, &b, cancel);
+    markStage("reference");
     if (isCancelled(cancel))
         return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
     if (!reference.ok())

@@ -2,6 +2,7 @@
 
 #include "speech/audio.h"
 #include "speech/features.h"
+#include "speech/paceprobe.h"
 #include "speech/progress.h"
 #include "speech/script.h"
 #include "speech/tts.h"
@@ -57,6 +58,11 @@ AlignResult alignScript(const Audio &audio, const Script &script, const AlignOpt
 // SpeechFeatureStream fed while decoding): its audio need not be held.
 AlignResult alignScript(const SpeechFeatures &recording, const Script &script, const AlignOptions &options = {},
     const SpeechProgressFn &progress = {}, const std::atomic_bool *cancel = nullptr);
+
+// The same with the pace probe of `script` and `options.reference` made beforehand (started
+// before the recording is decoded, it is rendered meanwhile on another core).
+AlignResult alignScript(const SpeechFeatures &recording, PaceProbe &probe, const Script &script,
+    const AlignOptions &options = {}, const SpeechProgressFn &progress = {}, const std::atomic_bool *cancel = nullptr);
 
 // The same against a given reference rendering of the script (`reference.units` one per
 // syllable); alignScript renders it itself.

@@ -2,6 +2,7 @@
 
 #include "i18n/coretext.h"
 #include "speech/englishshapes.h"
+#include "speech/stagetimes.h"
 
 #include <QJsonArray>
 
@@ -93,6 +94,7 @@ LipsyncOutcome lipsyncFiles(const QString &audioPath, const QString &scriptPath,
     const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
     const ScriptParse script = readScriptFile(scriptPath, language);
+    markStage("script");
     if (!script.ok()) {
         LipsyncOutcome out;
         out.error = script.error;
@@ -105,6 +107,10 @@ LipsyncOutcome lipsyncRecording(const QString &audioPath, const Script &script, 
     const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
     LipsyncOutcome out;
+    // The reference's first rendering does not depend on the recording: it is made on the
+    // other core while the recording is decoded.
+    const AlignOptions options;
+    PaceProbe probe(script, options.reference);
     // The recording's features are computed while it is decoded: its samples are never held.
     SpeechFeatureStream features(cancel);
     const AudioResult audio = streamAudio(
@@ -114,6 +120,7 @@ LipsyncOutcome lipsyncRecording(const QString &audioPath, const Script &script, 
                 progress(0.2 * f, stage);
         },
         cancel);
+    markStage("decoded");
     if (audio.status == AudioStatus::Cancelled) {
         out.status = LipsyncStatus::Cancelled;
         out.error = ScriptText::tr("cancelled");
@@ -124,12 +131,13 @@ LipsyncOutcome lipsyncRecording(const QString &audioPath, const Script &script, 
         return out;
     }
     const AlignResult aligned = alignScript(
-        features.finish(), script, {},
+        features.finish(), probe, script, options,
         [&](double f, const QString &stage) {
             if (progress)
                 progress(0.2 + 0.8 * f, stage);
         },
         cancel);
+    markStage("aligned");
     switch (aligned.status) {
     case AlignStatus::Ok: break;
     case AlignStatus::Cancelled:

@@ -1,5 +1,7 @@
 #include "speech/referencefeatures.h"
 
+#include "speech/samplerelay.h"
+
 namespace toonface {
 
 ReferenceListener::ReferenceListener(int rate, const std::atomic_bool *cancel)
@@ -51,8 +53,11 @@ TtsResult renderReference(
         return failed;
     }
     ReferenceListener listener(rate, cancel);
+    // The features are computed on another core while espeak-ng speaks.
+    SampleRelay relay([&](const float *s, qsizetype n) { listener.push(s, n); });
     TtsResult r = synthesize(
-        script, options, [&](const float *s, qsizetype n) { listener.push(s, n); }, {}, cancel);
+        script, options, [&](const float *s, qsizetype n) { relay.push(s, n); }, {}, cancel);
+    relay.finish();
     *features = r.ok() ? listener.finish() : SpeechFeatures {};
     return r;
 }

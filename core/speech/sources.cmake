@@ -1,5 +1,6 @@
 list(APPEND TOONFACE_CORE_SOURCES
   speech/progress.h
+  speech/stagetimes.h speech/stagetimes.cpp
   speech/audio.h speech/audio.cpp
   speech/pinyin.h speech/pinyin.cpp
   speech/pinyindictionary.h speech/pinyindictionary.cpp
@@ -11,8 +12,10 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/localnorm.h speech/localnorm.cpp
   speech/dtw.h speech/dtw.cpp
   speech/onsetsignals.h speech/onsetsignals.cpp
+  speech/samplerelay.h speech/samplerelay.cpp
   speech/referencefeatures.h speech/referencefeatures.cpp
   speech/boundaryrefine.h speech/boundaryrefine.cpp
+  speech/paceprobe.h speech/paceprobe.cpp
   speech/aligner.h speech/aligner.cpp
   speech/englishshapes.h speech/englishshapes.cpp
   speech/lipsync.h speech/lipsync.cpp
