@@ -11,6 +11,7 @@ extern "C" {
 #include <array>
 #include <cmath>
 #include <memory>
+#include <thread>
 
 namespace toonface {
 
@@ -165,15 +166,47 @@ void SpeechFeatureStream::push(const float *samples, qsizetype count)
     m_samples += count;
     m_pending.insert(m_pending.end(), samples, samples + count);
     constexpr size_t kNeed = size_t(kBlock - 1) * kHopSamples + kWindow;
+    constexpr size_t kBlockSamples = size_t(kBlock) * kHopSamples;
     size_t used = 0;
-    while (m_pending.size() - used >= kNeed && !isCancelled(m_cancel)) {
-        frameBlock(m_pending.data() + used, kBlock);
-        used += size_t(kBlock) * kHopSamples;
+    if (m_twoCores) {
+        // Two blocks at a time (the rest waits for more samples, or for finish()): the first
+        // on a helper thread, the second here, appended in order.
+        while (m_pending.size() - used >= kNeed + kBlockSamples && !isCancelled(m_cancel)) {
+            m_first.clear();
+            m_second.clear();
+            std::thread helper([&] { frameBlock(m_pending.data() + used, kBlock, m_first); });
+            frameBlock(m_pending.data() + used + kBlockSamples, kBlock, m_second);
+            helper.join();
+            m_rows.append(m_first);
+            m_rows.append(m_second);
+            used += 2 * kBlockSamples;
+        }
+    } else {
+        while (m_pending.size() - used >= kNeed && !isCancelled(m_cancel)) {
+            frameBlock(m_pending.data() + used, kBlock, m_rows);
+            used += kBlockSamples;
+        }
     }
     m_pending.erase(m_pending.begin(), m_pending.begin() + qsizetype(used));
 }
 
-void SpeechFeatureStream::frameBlock(const float *samples, int count)
+void SpeechFeatureStream::Rows::clear()
+{
+    for (std::vector<float> *v : {&cep, &logEnergy, &band, &hf, &lf, &voicing})
+        v->clear();
+}
+
+void SpeechFeatureStream::Rows::append(const Rows &more)
+{
+    cep.insert(cep.end(), more.cep.begin(), more.cep.end());
+    logEnergy.insert(logEnergy.end(), more.logEnergy.begin(), more.logEnergy.end());
+    band.insert(band.end(), more.band.begin(), more.band.end());
+    hf.insert(hf.end(), more.hf.begin(), more.hf.end());
+    lf.insert(lf.end(), more.lf.begin(), more.lf.end());
+    voicing.insert(voicing.end(), more.voicing.begin(), more.voicing.end());
+}
+
+void SpeechFeatureStream::frameBlock(const float *samples, int count, Rows &out)
 {
     const MelBank &bank = melBank();
     const auto &hamming = hammingWindow();
@@ -215,10 +248,10 @@ void SpeechFeatureStream::frameBlock(const float *samples, int count)
             if (k <= lowHi)
                 low += power[size_t(k)];
         }
-        m_logEnergy.push_back(float(std::log(total + 1e-9)));
-        m_band.push_back(float(std::log(mid + 1e-9)));
-        m_hf.push_back(float(std::log(high + 1e-9) - std::log(total + 1e-9)));
-        m_lf.push_back(float(std::log(low + 1e-9) - std::log(total + 1e-9)));
+        out.logEnergy.push_back(float(std::log(total + 1e-9)));
+        out.band.push_back(float(std::log(mid + 1e-9)));
+        out.hf.push_back(float(std::log(high + 1e-9) - std::log(total + 1e-9)));
+        out.lf.push_back(float(std::log(low + 1e-9) - std::log(total + 1e-9)));
         for (int b = 0; b < kMelBands; ++b) {
             const auto &bd = bank.bands[size_t(b)];
             double e = 0;
@@ -230,7 +263,7 @@ void SpeechFeatureStream::frameBlock(const float *samples, int count)
             float acc = 0;
             for (int b = 0; b < kMelBands; ++b)
                 acc += bank.dct[size_t(c)][size_t(b)] * logMel[size_t(b)];
-            m_cep.push_back(acc);
+            out.cep.push_back(acc);
         }
         // The autocorrelation: the inverse transform of the power spectrum (its scale does
         // not matter, only its ratio to lag 0).
@@ -251,7 +284,7 @@ void SpeechFeatureStream::frameBlock(const float *samples, int count)
                 best = std::max(best, ac[lag] * inverseWindowAutocorr[size_t(lag)]);
             best /= r0;
         }
-        m_voicing.push_back(std::clamp(best, 0.0f, 1.0f));
+        out.voicing.push_back(std::clamp(best, 0.0f, 1.0f));
     }
 }
 
@@ -270,22 +303,22 @@ SpeechFeatures SpeechFeatureStream::finish()
     // The last windows, fewer than a block.
     while (m_pending.size() >= size_t(kWindow) && !isCancelled(m_cancel)) {
         const int count = std::min(kBlock, int((m_pending.size() - kWindow) / kHopSamples) + 1);
-        frameBlock(m_pending.data(), count);
+        frameBlock(m_pending.data(), count, m_rows);
         m_pending.erase(m_pending.begin(), m_pending.begin() + qsizetype(size_t(count) * kHopSamples));
     }
     m_pending = {};
     if (isCancelled(m_cancel))
         return {};
     SpeechFeatures f;
-    f.frames = int(m_logEnergy.size());
+    f.frames = int(m_rows.logEnergy.size());
     if (f.frames == 0)
         return f;
     const int frames = f.frames;
-    std::vector<float> cep = std::move(m_cep);
-    std::vector<float> band = std::move(m_band);
-    std::vector<float> hf = std::move(m_hf), lf = std::move(m_lf);
-    f.logEnergy = std::move(m_logEnergy);
-    f.voicing = std::move(m_voicing);
+    std::vector<float> cep = std::move(m_rows.cep);
+    std::vector<float> band = std::move(m_rows.band);
+    std::vector<float> hf = std::move(m_rows.hf), lf = std::move(m_rows.lf);
+    f.logEnergy = std::move(m_rows.logEnergy);
+    f.voicing = std::move(m_rows.voicing);
     // Every level measured against the speech around it (see levelOffsets).
     const std::vector<float> offsets = levelOffsets(f.logEnergy);
     for (int t = 0; t < frames; ++t) {

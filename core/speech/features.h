@@ -63,14 +63,26 @@ public:
     void push(const float *samples, qsizetype count);
     SpeechFeatures finish(); // empty when cancelled
     qint64 samples() const { return m_samples; } // pushed so far
+    // Computes the frames two blocks at a time, one of them on a second thread (the same
+    // features): for a recording decoded while the second core has little else to do.
+    void useSecondCore() { m_twoCores = true; }
 
 private:
-    void frameBlock(const float *samples, int count); // frames `count` windows from `samples` on
+    // Per frame: c1..c12, log energy, mid band, high and low shares, voicing.
+    struct Rows
+    {
+        std::vector<float> cep, logEnergy, band, hf, lf, voicing;
+        void clear();
+        void append(const Rows &more);
+    };
+    // Frames `count` windows from `samples` on into `out`.
+    static void frameBlock(const float *samples, int count, Rows &out);
     const std::atomic_bool *m_cancel;
     qint64 m_samples = 0;
+    bool m_twoCores = false;
     std::vector<float> m_pending; // samples from the next frame's start on
-    // Per frame: c1..c12, log energy, mid band, high and low shares, voicing.
-    std::vector<float> m_cep, m_logEnergy, m_band, m_hf, m_lf, m_voicing;
+    Rows m_rows;
+    Rows m_first, m_second; // two blocks computed at once
 };
 
 } // namespace toonface

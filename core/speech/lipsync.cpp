@@ -113,6 +113,7 @@ LipsyncOutcome lipsyncRecording(const QString &audioPath, const Script &script, 
     PaceProbe probe(script, options.reference);
     // The recording's features are computed while it is decoded: its samples are never held.
     SpeechFeatureStream features(cancel);
+    features.useSecondCore();
     const AudioResult audio = streamAudio(
         audioPath, [&](const float *s, qsizetype n) { features.push(s, n); },
         [&](double f, const QString &stage) {

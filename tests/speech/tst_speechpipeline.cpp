@@ -15,6 +15,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <thread>
 #include <vector>
 
@@ -188,6 +189,29 @@ private Q_SLOTS:
             relay.push(three, 3);
         }
         QCOMPARE(late, (std::vector<float> {1, 2, 3}));
+    }
+
+    void recordingFeaturesAreTheSameOnTwoCores()
+    {
+        // A recording's features computed two blocks at a time, one on a helper thread, fed in
+        // pieces of every size: the same as on one thread.
+        Audio audio;
+        audio.sampleRate = kSpeechSampleRate;
+        quint32 noise = 7;
+        for (int i = 0; i < kSpeechSampleRate * 23 + 777; ++i) {
+            noise = noise * 1664525u + 1013904223u;
+            const double t = double(i) / kSpeechSampleRate;
+            const double voiced
+                = std::sin(2 * M_PI * (120 + 40 * std::sin(t)) * t) * (std::fmod(t, 0.4) < 0.25 ? 0.3 : 0.0);
+            audio.samples.append(float(voiced + 0.01 * (double(noise >> 8) / double(1u << 24) - 0.5)));
+        }
+        SpeechFeatureStream two;
+        two.useSecondCore();
+        for (qsizetype at = 0, piece = 1; at < audio.samples.size(); at += piece, piece = piece * 3 % 9001 + 1)
+            two.push(audio.samples.constData() + at, std::min(piece, audio.samples.size() - at));
+        const SpeechFeatures twoCores = two.finish();
+        QVERIFY(twoCores.frames > 2000);
+        QCOMPARE(digest(twoCores), digest(computeSpeechFeatures(audio)));
     }
 
     void referenceFeaturesAreTheSameOnTwoCores()
