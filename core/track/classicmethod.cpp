@@ -5,6 +5,7 @@
 #include "track/trackingmethod.h"
 
 #include <QLineF>
+#include <QPainter>
 
 #include <algorithm>
 #include <cmath>
@@ -40,26 +41,36 @@ QRectF apertureBox(QPointF eyeball, double d)
     return {eyeball.x() - 0.22 * d, eyeball.y() - 0.18 * d, 0.44 * d, 0.36 * d};
 }
 
-// How dark a window is below `level`: the sum of (level - I)^2 over its darker pixels. The
-// iris and pupil, far darker than the lids' skin, weigh most; a shut lid hides them and leaves
-// the lashes' thin line.
-double darkness(const Window &w, double level)
-{
-    double sum = 0;
-    for (float v : w.I.values) {
-        const double below = level - v;
-        if (below > 0)
-            sum += below * below;
-    }
-    return sum;
-}
-
 double median(std::vector<float> values)
 {
     if (values.empty())
         return 0;
     std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
     return values[values.size() / 2];
+}
+
+double quantile(std::vector<float> values, double q)
+{
+    if (values.empty())
+        return 0;
+    const size_t i = std::min(values.size() - 1, size_t(q * double(values.size())));
+    std::nth_element(values.begin(), values.begin() + i, values.end());
+    return values[i];
+}
+
+// The lids' aperture: over the columns within `half` of the window's middle column, how many
+// pixels each holds darker than `level` (the iris and pupil between the lids, the lashes' line
+// alone when they are shut), mean over the columns.
+double darkThickness(const Window &w, double level, int half)
+{
+    const int mid = w.I.size.width() / 2;
+    double sum = 0;
+    int columns = 0;
+    for (int x = std::max(0, mid - half); x <= std::min(w.I.size.width() - 1, mid + half); ++x, ++columns) {
+        for (int y = 0; y < w.I.size.height(); ++y)
+            sum += w.I.at(x, y) < level ? 1 : 0;
+    }
+    return columns > 0 ? sum / columns : 0.0;
 }
 
 // The mouth's height in the middle of the mouth: over the central third of `seedBox`'s
@@ -133,20 +144,36 @@ public:
             if (w.rect.isEmpty())
                 continue;
             if (!m_haveReference) {
-                m_eyeLevel[k] = median(w.I.values);
-                m_eyeDarkness[k] = darkness(w, m_eyeLevel[k]) / w.I.values.size();
+                m_eyeLevel[k] = (median(w.I.values) + quantile(w.I.values, 0.03)) / 2;
+                m_eyeDarkness[k] = darkThickness(w, m_eyeLevel[k], int(m_radius[k] * scale));
             }
-            const double dark = darkness(w, m_eyeLevel[k]) / w.I.values.size();
+            const double dark = darkThickness(w, m_eyeLevel[k], int(m_radius[k] * scale));
             openness[k] = m_eyeDarkness[k] > 0 ? std::clamp(dark / m_eyeDarkness[k], 0.0, 2.0) : 1.0;
         }
 
+        if (qEnvironmentVariableIsSet("TFEYE")) fprintf(stderr, "EYE %g %g\n", openness[0], openness[1]);
+        if (!m_haveReference)
+            placeMouth(frame);
         const MouthFound mouth = trackMouth(frame, head);
         if (!m_haveReference) {
             m_mouthHeight = mouth.height;
+            m_mouthDarkness = mouth.darkness;
+            m_mouthEdges = mouth.edges;
             m_mouthWidth = mouth.width;
             m_haveReference = true;
+            if (qEnvironmentVariableIsSet("TFFLOOR")) m_mouthShut = qEnvironmentVariable("TFFLOOR").toDouble();
+            fprintf(stderr, "NEUTRAL gap %g d %g\n", m_neutralPoints[pt::idx("2.3")].y() - m_neutralPoints[pt::idx("2.2")].y(), m_d);
         }
-        const double opening = mouth.found ? mouth.height - m_mouthHeight : 0.0;
+        // The opening: the mean of the middle's darkness and edges relative to the neutral's,
+        // above the least seen so far (the mouth most shut: the neutral frame may show it
+        // parted). A mouth opened wide about doubles both; its lips' gap is then about 0.15 d.
+        double opening = 0;
+        if (m_mouthDarkness > 0 && m_mouthEdges > 0) {
+            const double v = (mouth.darkness / m_mouthDarkness + mouth.edges / m_mouthEdges) / 2;
+            if (!qEnvironmentVariableIsSet("TFNOMIN")) m_mouthShut = std::min(m_mouthShut, v);
+            fprintf(stderr, "SIG %g %g %g %g %g %g %g %d\n", v, mouth.darkness / m_mouthDarkness, mouth.edges / m_mouthEdges, m_eyes[0].x(), m_eyes[0].y(), m_eyes[1].x(), m_eyes[1].y(), int(m_pairFound));
+            opening = 0.15 * m_d * scale * (v - m_mouthShut);
+        }
         const double widening = mouth.found ? mouth.width - m_mouthWidth : 0.0;
 
         // 6.4: the points. The head carries the neutral face; the lids and the mouth move by
@@ -223,8 +250,12 @@ private:
             const QLineF line(found[0], found[1]);
             const QLineF old(m_eyes[0], m_eyes[1]);
             const double tilt = std::abs(std::atan2(line.dy(), line.dx())) * 180.0 / std::numbers::pi;
+            // The eyes move together: a head turns, nods and leans a little between frames. One
+            // eye stepping alone has lost its eyeball to a lash line, a brow or a rim.
+            const QPointF step0 = found[0] - m_eyes[0], step1 = found[1] - m_eyes[1];
             m_pairFound = line.dx() > 0 && tilt < 20.0 && std::abs(line.length() - old.length()) < 0.1 * d
-                && QLineF(found[0], m_eyes[0]).length() < 0.15 * d && QLineF(found[1], m_eyes[1]).length() < 0.15 * d;
+                && QLineF(step0, QPointF()).length() < 0.15 * d && QLineF(step1, QPointF()).length() < 0.15 * d
+                && QLineF(step0, step1).length() < 0.06 * d;
         }
         if (m_pairFound) {
             m_eyes[0] = found[0];
@@ -237,14 +268,37 @@ private:
         bool found = false;
         double height = 0; // in the mouth's middle, frame pixels
         double width = 0;
+        double darkness = 0; // of the mouth's middle below the neutral's median, per pixel
+        double edges = 0; // Sobel strength in the mouth's middle, per pixel
     };
+
+    // The neutral frame's mouth: R_Mouth where it holds the lip line (the darkest row below the
+    // eye pair, mouthRowContrast()), else a box of a mouth's size on that line.
+    void placeMouth(const QImage &frame)
+    {
+        m_mouthBox = m_seed.mouth;
+        const QPointF mid = (m_eyes[0] + m_eyes[1]) / 2;
+        const double d = QLineF(m_eyes[0], m_eyes[1]).length();
+        const Window w = intensityWindow(frame, QRectF(mid.x() - 0.6 * d, mid.y() - 0.1 * d, 1.2 * d, 1.8 * d));
+        if (w.rect.isEmpty())
+            return;
+        double row = 0;
+        const QPointF o(w.rect.topLeft());
+        if (mouthRowContrast(w.I, m_eyes[0] - o, m_eyes[1] - o, &row) < 0.5 * kMinMouthRowContrast)
+            return;
+        const QPointF lip = mid + QPointF(0, row);
+        if (m_mouthBox.adjusted(0, -0.1 * m_mouthBox.height(), 0, 0.1 * m_mouthBox.height()).contains(lip)
+            && std::abs(m_mouthBox.center().x() - mid.x()) < 0.1 * d)
+            return;
+        m_mouthBox = QRectF(lip.x() - 0.3 * d, lip.y() - 0.12 * d, 0.6 * d, 0.24 * d);
+    }
 
     // 6.3: the Sobel image thresholded by the reserved edge threshold of the part below Div_NM,
     // the regions grown from the reserved R_Mouth (carried by the head), their extent.
     MouthFound trackMouth(const QImage &frame, const HeadMotion &head)
     {
         MouthFound out;
-        const QRectF reserved = m_seed.mouth;
+        const QRectF reserved = m_mouthBox;
         const double s = head.scale();
         const QPointF centre = head.map(reserved.center());
         const QSizeF size = reserved.size() * s;
@@ -283,14 +337,52 @@ private:
                 grownBox = grownBox.united(r.box);
             }
         }
-        if (grownBox.isEmpty())
-            return out;
         Mask grown {edges.size, std::vector<std::uint8_t>(edges.values.size(), 0)};
         for (size_t i = 0; i < labels.size(); ++i)
             grown.values[i] = labels[i] > 0 && keep[size_t(labels[i])] ? 1 : 0;
         out.height = centralHeight(grown, seedBox.adjusted(-seedBox.width() / 2, 0, seedBox.width() / 2, 0));
         out.width = grownBox.width();
         out.found = out.height > 0;
+        // The mouth's middle: 0.4 d wide, from above the lip line down to where an open mouth's
+        // lower lip reaches. Opening darkens it (the gap) and adds edges (the inner lips, the teeth).
+        const double dd = m_d * s;
+        const QRect band = QRectF(centre.x() - 0.2 * dd, centre.y() - 0.12 * dd, 0.4 * dd, 0.45 * dd)
+                               .toAlignedRect()
+                               .translated(-w.rect.topLeft())
+                               .intersected(QRect(QPoint(1, 1), w.I.size - QSize(2, 2)));
+        if (band.isEmpty())
+            return out;
+        std::vector<float> values;
+        values.reserve(size_t(band.width()) * band.height());
+        double edgeSum = 0;
+        for (int y = band.top(); y <= band.bottom(); ++y) {
+            for (int x = band.left(); x <= band.right(); ++x) {
+                edgeSum += strength.at(x, y);
+                values.push_back(w.I.at(x, y));
+            }
+        }
+        if (!m_haveReference)
+            m_mouthLevel = median(values);
+        double dark = 0;
+        for (float v : values) {
+            const double below = m_mouthLevel - v;
+            dark += below > 0 ? below * below : 0.0;
+        }
+        out.darkness = dark / double(values.size());
+        if (!qEnvironmentVariableIsEmpty("TFDBG")) {
+            static int counter = 0;
+            QImage dbg = frame.convertToFormat(QImage::Format_RGB32);
+            QPainter p(&dbg);
+            p.setPen(Qt::green);
+            for (int k = 0; k < 2; ++k) p.drawRect(apertureBox(m_eyes[k], m_d * s));
+            p.setPen(Qt::red);
+            p.drawRect(band.translated(w.rect.topLeft()));
+            p.setPen(Qt::yellow);
+            p.drawRect(m_seed.mouth);
+            p.end();
+            dbg.save(QStringLiteral("%1/f%2.png").arg(qEnvironmentVariable("TFDBG")).arg(counter++, 4, 10, QLatin1Char('0')));
+        }
+        out.edges = edgeSum / double(values.size());
         return out;
     }
 
@@ -307,6 +399,11 @@ private:
     double m_eyeDarkness[2] = {0, 0};
     double m_mouthHeight = 0;
     double m_mouthWidth = 0;
+    double m_mouthLevel = 0;
+    double m_mouthDarkness = 0;
+    double m_mouthEdges = 0;
+    double m_mouthShut = 1.0; // the least relative darkness and edges seen
+    QRectF m_mouthBox;
 };
 
 } // namespace
