@@ -5,7 +5,6 @@
 #include "track/trackingmethod.h"
 
 #include <QLineF>
-#include <QPainter>
 
 #include <algorithm>
 #include <cmath>
@@ -107,8 +106,10 @@ public:
         , m_neutralPoints(neutral.face.points())
     {
         m_d = m_seed.d > 0 ? m_seed.d : QLineF(m_seed.eyeballs[0], m_seed.eyeballs[1]).length();
-        for (int k = 0; k < 2; ++k)
+        for (int k = 0; k < 2; ++k) {
             m_radius[k] = std::clamp(m_seed.eyeballRadius[k], 0.04 * m_d, 0.12 * m_d);
+            m_neutralEyes[k] = m_seed.eyeballs[k];
+        }
         forget();
         m_stable = {pt::idx("3.6"), pt::idx("3.5")};
     }
@@ -118,7 +119,7 @@ public:
     void forget() override
     {
         for (int k = 0; k < 2; ++k)
-            m_eyes[k] = m_seed.eyeballs[k];
+            m_eyes[k] = m_neutralEyes[k];
     }
 
     FaceMeasurement measure(const QImage &frame) override
@@ -133,8 +134,8 @@ public:
         now[pt::idx("3.6")] = m_eyes[0];
         now[pt::idx("3.5")] = m_eyes[1];
         std::array<QPointF, kPointCount> eyesAt = m_neutralPoints;
-        eyesAt[pt::idx("3.6")] = m_seed.eyeballs[0];
-        eyesAt[pt::idx("3.5")] = m_seed.eyeballs[1];
+        eyesAt[pt::idx("3.6")] = m_neutralEyes[0];
+        eyesAt[pt::idx("3.5")] = m_neutralEyes[1];
         const HeadMotion head = fitHeadMotion(eyesAt, now, m_stable);
         const double scale = head.scale();
 
@@ -151,7 +152,6 @@ public:
             openness[k] = m_eyeDarkness[k] > 0 ? std::clamp(dark / m_eyeDarkness[k], 0.0, 2.0) : 1.0;
         }
 
-        if (qEnvironmentVariableIsSet("TFEYE")) fprintf(stderr, "EYE %g %g\n", openness[0], openness[1]);
         if (!m_haveReference)
             placeMouth(frame);
         const MouthFound mouth = trackMouth(frame, head);
@@ -161,8 +161,6 @@ public:
             m_mouthEdges = mouth.edges;
             m_mouthWidth = mouth.width;
             m_haveReference = true;
-            if (qEnvironmentVariableIsSet("TFFLOOR")) m_mouthShut = qEnvironmentVariable("TFFLOOR").toDouble();
-            fprintf(stderr, "NEUTRAL gap %g d %g\n", m_neutralPoints[pt::idx("2.3")].y() - m_neutralPoints[pt::idx("2.2")].y(), m_d);
         }
         // The opening: the mean of the middle's darkness and edges relative to the neutral's,
         // above the least seen so far (the mouth most shut: the neutral frame may show it
@@ -170,8 +168,7 @@ public:
         double opening = 0;
         if (m_mouthDarkness > 0 && m_mouthEdges > 0) {
             const double v = (mouth.darkness / m_mouthDarkness + mouth.edges / m_mouthEdges) / 2;
-            if (!qEnvironmentVariableIsSet("TFNOMIN")) m_mouthShut = std::min(m_mouthShut, v);
-            fprintf(stderr, "SIG %g %g %g %g %g %g %g %d\n", v, mouth.darkness / m_mouthDarkness, mouth.edges / m_mouthEdges, m_eyes[0].x(), m_eyes[0].y(), m_eyes[1].x(), m_eyes[1].y(), int(m_pairFound));
+            m_mouthShut = std::min(m_mouthShut, v);
             opening = 0.15 * m_d * scale * (v - m_mouthShut);
         }
         const double widening = mouth.found ? mouth.width - m_mouthWidth : 0.0;
@@ -196,7 +193,8 @@ public:
         at("8.4") -= QPointF(widening / 2, 0);
         at("8.3") += QPointF(widening / 2, 0);
         m.found = true;
-        m.confidence = 0.5 * (m_pairFound ? 1.0 : 0.6) * (mouth.found ? 1.0 : 0.6) + 0.2;
+        // The old pair standing in (a blink, a lash line taken for an eyeball) is still the face.
+        m.confidence = 0.5 * (m_pairFound ? 1.0 : 0.8) * (mouth.found ? 1.0 : 0.6) + 0.2;
         return m;
     }
 
@@ -257,7 +255,15 @@ private:
                 && QLineF(step0, QPointF()).length() < 0.15 * d && QLineF(step1, QPointF()).length() < 0.15 * d
                 && QLineF(step0, step1).length() < 0.06 * d;
         }
-        if (m_pairFound) {
+        if (!m_haveReference) {
+            // The neutral frame: the eyeballs found on it are where later frames start from
+            // (the detection's may lie a pixel or more off on the pixels found here).
+            for (int k = 0; k < 2; ++k) {
+                if (ok[k])
+                    m_eyes[k] = m_neutralEyes[k] = found[k];
+            }
+            m_pairFound = ok[0] && ok[1];
+        } else if (m_pairFound) {
             m_eyes[0] = found[0];
             m_eyes[1] = found[1];
         }
@@ -303,8 +309,8 @@ private:
         const QPointF centre = head.map(reserved.center());
         const QSizeF size = reserved.size() * s;
         const QRectF mapped(centre - QPointF(size.width(), size.height()) / 2, size);
-        const QRectF area = mapped.adjusted(-0.3 * size.width(), -0.6 * size.height(), 0.3 * size.width(),
-            1.2 * size.height() + 0.25 * m_d * s);
+        const QRectF area = mapped.adjusted(
+            -0.3 * size.width(), -0.6 * size.height(), 0.3 * size.width(), 1.2 * size.height() + 0.25 * m_d * s);
         const Window w = intensityWindow(frame, area);
         if (w.rect.width() < 5 || w.rect.height() < 5)
             return out;
@@ -325,10 +331,10 @@ private:
         std::vector<int> labels;
         const std::vector<Region> regions = growRegions(edges, 1, &labels);
         // Seeds: the reserved region's central part.
-        const QRect seedBox = mapped.translated(-QPointF(w.rect.topLeft()))
-                                  .adjusted(0.2 * size.width(), 0.2 * size.height(), -0.2 * size.width(),
-                                      -0.2 * size.height())
-                                  .toAlignedRect();
+        const QRect seedBox
+            = mapped.translated(-QPointF(w.rect.topLeft()))
+                  .adjusted(0.2 * size.width(), 0.2 * size.height(), -0.2 * size.width(), -0.2 * size.height())
+                  .toAlignedRect();
         std::vector<bool> keep(regions.size() + 1, false);
         QRect grownBox;
         for (const Region &r : regions) {
@@ -369,19 +375,6 @@ private:
             dark += below > 0 ? below * below : 0.0;
         }
         out.darkness = dark / double(values.size());
-        if (!qEnvironmentVariableIsEmpty("TFDBG")) {
-            static int counter = 0;
-            QImage dbg = frame.convertToFormat(QImage::Format_RGB32);
-            QPainter p(&dbg);
-            p.setPen(Qt::green);
-            for (int k = 0; k < 2; ++k) p.drawRect(apertureBox(m_eyes[k], m_d * s));
-            p.setPen(Qt::red);
-            p.drawRect(band.translated(w.rect.topLeft()));
-            p.setPen(Qt::yellow);
-            p.drawRect(m_seed.mouth);
-            p.end();
-            dbg.save(QStringLiteral("%1/f%2.png").arg(qEnvironmentVariable("TFDBG")).arg(counter++, 4, 10, QLatin1Char('0')));
-        }
         out.edges = edgeSum / double(values.size());
         return out;
     }
@@ -389,6 +382,7 @@ private:
     TrackingSeed m_seed;
     std::array<QPointF, kPointCount> m_neutralPoints;
     QPointF m_eyes[2];
+    QPointF m_neutralEyes[2]; // the eyeballs on the neutral frame
     double m_radius[2] = {1, 1};
     double m_d = 0;
     bool m_pairFound = false;

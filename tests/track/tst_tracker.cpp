@@ -173,7 +173,7 @@ private Q_SLOTS:
             for (int i = 0; i < frames.size(); ++i) {
                 const TrackedFrame f = tracker.track(frames[i], i / kFps, i);
                 QVERIFY2(!f.lost, qPrintable(QStringLiteral("frame %1 lost").arg(i)));
-                QVERIFY2(f.confidence > 0.5 || method == DetectionMethod::Classic, qPrintable(QString::number(f.confidence)));
+                QVERIFY2(f.confidence > 0.5, qPrintable(QString::number(f.confidence)));
                 mouth.append(f.motion.mouthOpenEs0);
                 eyes.append((f.motion.leftEyeOpen + f.motion.rightEyeOpen) / 2);
                 times.append(f.time);
