@@ -59,15 +59,19 @@ double quantile(std::vector<float> values, double q)
 
 // The lids' aperture: over the columns within `half` of the window's middle column, how many
 // pixels each holds darker than `level` (the iris and pupil between the lids, the lashes' line
-// alone when they are shut), mean over the columns.
-double darkThickness(const Window &w, double level, int half)
+// alone when they are shut), mean over the columns. With `ramp` > 0 a pixel counts in part
+// within ramp / 2 of the level, so that sensor noise on pixels near it does not make the count
+// jump.
+double darkThickness(const Window &w, double level, int half, double ramp = 0)
 {
     const int mid = w.I.size.width() / 2;
     double sum = 0;
     int columns = 0;
     for (int x = std::max(0, mid - half); x <= std::min(w.I.size.width() - 1, mid + half); ++x, ++columns) {
-        for (int y = 0; y < w.I.size.height(); ++y)
-            sum += w.I.at(x, y) < level ? 1 : 0;
+        for (int y = 0; y < w.I.size.height(); ++y) {
+            const double below = level - w.I.at(x, y);
+            sum += ramp > 0 ? std::clamp(below / ramp + 0.5, 0.0, 1.0) : below > 0 ? 1.0 : 0.0;
+        }
     }
     return columns > 0 ? sum / columns : 0.0;
 }
@@ -93,6 +97,9 @@ double centralHeight(const Mask &grown, const QRect &seedBox)
     }
     return median(std::move(spans));
 }
+
+// How far the mouth's relative darkness and edges wander on a still mouth (sensor noise).
+constexpr double kMouthNoise = 0.1;
 
 // Thesis chapter 6 on what the neutral face reserved (TrackingSeed): t1, the eyeball regions
 // and their distance d, the edge thresholds and the mouth region R_Mouth. The first frame
@@ -127,6 +134,8 @@ public:
         FaceMeasurement m;
         m.stable = m_stable;
         trackEyePair(frame);
+        if (!m_haveReference)
+            trackEyePair(frame); // from where the neutral's eyeballs were found: the place later frames settle on
 
         // The head's motion since the neutral frame, from the eyeballs (thesis 6.4: the face
         // moves with them); the reserved regions are carried along.
@@ -156,20 +165,24 @@ public:
             placeMouth(frame);
         const MouthFound mouth = trackMouth(frame, head);
         if (!m_haveReference) {
-            m_mouthHeight = mouth.height;
             m_mouthDarkness = mouth.darkness;
             m_mouthEdges = mouth.edges;
             m_mouthWidth = mouth.width;
             m_haveReference = true;
         }
-        // The opening: the mean of the middle's darkness and edges relative to the neutral's,
-        // above the least seen so far (the mouth most shut: the neutral frame may show it
-        // parted). A mouth opened wide about doubles both; its lips' gap is then about 0.15 d.
-        double opening = 0;
+        // The opening: the dark between the lips in the mouth's middle (the gap's thickness,
+        // 0 when shut), plus the middle's darkness and edges relative to the neutral's above the
+        // least seen so far, which also see a gap filled by the teeth (the neutral frame may
+        // show the mouth parted). A mouth opened wide about doubles both; its lips' gap is then
+        // about 0.15 d.
+        double opening = mouth.gap;
         if (m_mouthDarkness > 0 && m_mouthEdges > 0) {
             const double v = (mouth.darkness / m_mouthDarkness + mouth.edges / m_mouthEdges) / 2;
-            m_mouthShut = std::min(m_mouthShut, v);
-            opening = 0.15 * m_d * scale * (v - m_mouthShut);
+            // Sensor noise moves v by a few hundredths from frame to frame: the floor follows
+            // only drops beyond it, or it would sink with the noise and lift a still mouth.
+            m_mouthShut = std::min(m_mouthShut, v + kMouthNoise);
+            // Capped: a mouth shut on the neutral frame has little darkness to grow from.
+            opening += 0.15 * m_d * scale * std::clamp(v - m_mouthShut, 0.0, 2.0);
         }
         const double widening = mouth.found ? mouth.width - m_mouthWidth : 0.0;
 
@@ -188,7 +201,7 @@ public:
             upper += shut;
             lower -= shut;
         }
-        at("2.3") += QPointF(0, opening);
+        at("2.3") = at("2.2") + QPointF(0, opening);
         at("8.2") += QPointF(0, opening);
         at("8.4") -= QPointF(widening / 2, 0);
         at("8.3") += QPointF(widening / 2, 0);
@@ -276,6 +289,7 @@ private:
         double width = 0;
         double darkness = 0; // of the mouth's middle below the neutral's median, per pixel
         double edges = 0; // Sobel strength in the mouth's middle, per pixel
+        double gap = 0; // the dark between the lips, frame pixels
     };
 
     // The neutral frame's mouth: R_Mouth where it holds the lip line (the darkest row below the
@@ -376,6 +390,13 @@ private:
         }
         out.darkness = dark / double(values.size());
         out.edges = edgeSum / double(values.size());
+        if (!m_haveReference)
+            m_gapLevel = (m_mouthLevel + quantile(values, 0.03)) / 2;
+        {
+            Window middle;
+            middle.I = Plane {band.size(), std::vector<float>(values.begin(), values.end())};
+            out.gap = darkThickness(middle, m_gapLevel, int(0.1 * dd), m_mouthLevel - m_gapLevel);
+        }
         return out;
     }
 
@@ -391,11 +412,11 @@ private:
     bool m_haveReference = false;
     double m_eyeLevel[2] = {0, 0};
     double m_eyeDarkness[2] = {0, 0};
-    double m_mouthHeight = 0;
     double m_mouthWidth = 0;
     double m_mouthLevel = 0;
     double m_mouthDarkness = 0;
     double m_mouthEdges = 0;
+    double m_gapLevel = 0;
     double m_mouthShut = 1.0; // the least relative darkness and edges seen
     QRectF m_mouthBox;
 };
