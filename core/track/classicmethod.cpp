@@ -98,13 +98,13 @@ double centralHeight(const Mask &grown, const QRect &seedBox)
     return median(std::move(spans));
 }
 
-// How far the mouth's relative darkness and edges wander on a still mouth (sensor noise).
+// How far the mouth's relative edges wander on a still mouth (sensor noise).
 constexpr double kMouthNoise = 0.1;
 
 // Thesis chapter 6 on what the neutral face reserved (TrackingSeed): t1, the eyeball regions
 // and their distance d, the edge thresholds and the mouth region R_Mouth. The first frame
-// measured is the neutral one: the eyes' darkness and the mouth's height measured there are
-// what later frames are compared with.
+// measured is the neutral one: its eyeballs, the dark between its lids and its mouth's edges
+// are what later frames are compared with.
 class ClassicMethod : public TrackingMethod
 {
 public:
@@ -165,23 +165,22 @@ public:
             placeMouth(frame);
         const MouthFound mouth = trackMouth(frame, head);
         if (!m_haveReference) {
-            m_mouthDarkness = mouth.darkness;
             m_mouthEdges = mouth.edges;
             m_mouthWidth = mouth.width;
             m_haveReference = true;
         }
         // The opening: the dark between the lips in the mouth's middle (the gap's thickness,
-        // 0 when shut), plus the middle's darkness and edges relative to the neutral's above the
-        // least seen so far, which also see a gap filled by the teeth (the neutral frame may
-        // show the mouth parted). A mouth opened wide about doubles both; its lips' gap is then
-        // about 0.15 d.
+        // 0 when shut), plus the growth of the middle's Sobel edges (the inner lips, the teeth:
+        // they also see a gap the teeth fill) relative to the neutral's, above the least seen
+        // so far (the neutral frame may show the mouth parted). A mouth opened wide about
+        // doubles its edges; its lips' gap is then about 0.15 d.
         double opening = mouth.gap;
-        if (m_mouthDarkness > 0 && m_mouthEdges > 0) {
-            const double v = (mouth.darkness / m_mouthDarkness + mouth.edges / m_mouthEdges) / 2;
+        if (m_mouthEdges > 0) {
+            const double v = mouth.edges / m_mouthEdges;
             // Sensor noise moves v by a few hundredths from frame to frame: the floor follows
             // only drops beyond it, or it would sink with the noise and lift a still mouth.
             m_mouthShut = std::min(m_mouthShut, v + kMouthNoise);
-            // Capped: a mouth shut on the neutral frame has little darkness to grow from.
+            // Capped: a mouth shut on the neutral frame has few edges to grow from.
             opening += 0.15 * m_d * scale * std::clamp(v - m_mouthShut, 0.0, 2.0);
         }
         const double widening = mouth.found ? mouth.width - m_mouthWidth : 0.0;
@@ -287,7 +286,6 @@ private:
         bool found = false;
         double height = 0; // in the mouth's middle, frame pixels
         double width = 0;
-        double darkness = 0; // of the mouth's middle below the neutral's median, per pixel
         double edges = 0; // Sobel strength in the mouth's middle, per pixel
         double gap = 0; // the dark between the lips, frame pixels
     };
@@ -383,12 +381,6 @@ private:
         }
         if (!m_haveReference)
             m_mouthLevel = median(values);
-        double dark = 0;
-        for (float v : values) {
-            const double below = m_mouthLevel - v;
-            dark += below > 0 ? below * below : 0.0;
-        }
-        out.darkness = dark / double(values.size());
         out.edges = edgeSum / double(values.size());
         if (!m_haveReference)
             m_gapLevel = (m_mouthLevel + quantile(values, 0.03)) / 2;
@@ -414,10 +406,9 @@ private:
     double m_eyeDarkness[2] = {0, 0};
     double m_mouthWidth = 0;
     double m_mouthLevel = 0;
-    double m_mouthDarkness = 0;
     double m_mouthEdges = 0;
     double m_gapLevel = 0;
-    double m_mouthShut = 1.0; // the least relative darkness and edges seen
+    double m_mouthShut = 1.0; // the least relative edges seen (plus kMouthNoise)
     QRectF m_mouthBox;
 };
 

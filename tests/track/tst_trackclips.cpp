@@ -71,7 +71,7 @@ private Q_SLOTS:
 
         // The classic method (thesis ch. 6): every clip's face is found by it, the blinks with no
         // extra one, the mouth's opening follows the reference, less closely than the landmarks
-        // (0.62-0.84 on the four clips).
+        // (0.76-0.83 on the four clips).
         options.tracker.method = DetectionMethod::Classic;
         const TrackResult classic = trackVideo(path, options);
         QVERIFY2(classic.status == TrackStatus::Ok, qPrintable(classic.error));
@@ -79,7 +79,7 @@ private Q_SLOTS:
         qInfo("%s classic: mouth r = %.3f, eyes r = %.3f, blinks %d of %d (%d extra)", qPrintable(clip),
             c.mouthCorrelation, c.eyeCorrelation, c.blinksFound, c.referenceBlinks, c.extraBlinks);
         QCOMPARE(classic.frames.size(), track.frames.size());
-        QVERIFY2(c.mouthCorrelation >= 0.55, qPrintable(QString::number(c.mouthCorrelation)));
+        QVERIFY2(c.mouthCorrelation >= 0.65, qPrintable(QString::number(c.mouthCorrelation)));
         QCOMPARE(c.blinksFound, c.referenceBlinks);
         QCOMPARE(c.extraBlinks, 0);
     }
