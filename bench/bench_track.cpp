@@ -32,7 +32,6 @@ QJsonObject benchTrack()
     }
     QJsonArray rows;
     for (const DetectionMethod method : {DetectionMethod::Landmarks, DetectionMethod::Classic}) {
-        if (qEnvironmentVariableIsSet("TFCLASSIC") && method == DetectionMethod::Landmarks) continue;
         int frames = 0;
         double ms = 0, cpuMs = 0;
         double mouthSum = 0, mouthMin = 1, eyeSum = 0;
@@ -42,7 +41,7 @@ QJsonObject benchTrack()
             TrackVideoOptions options;
             options.tracker.method = method;
             TrackResult best;
-            for (int run = 0; run < (qEnvironmentVariableIsSet("TFCLASSIC") ? 1 : 3); ++run) {
+            for (int run = 0; run < 3; ++run) {
                 TrackResult r = trackVideo(path, options);
                 if (r.status != TrackStatus::Ok) {
                     best = r;
@@ -61,12 +60,6 @@ QJsonObject benchTrack()
             }
             QString error;
             const auto reference = referenceSignals(path, &error);
-            if (qEnvironmentVariableIsSet("TFCLASSIC") && reference) {
-                QString line = QStringLiteral("REF ") + name;
-                for (int i = 0; i < reference->mouthOpen.size(); ++i)
-                    line += QStringLiteral(" %1,%2").arg(reference->mouthOpen[i]).arg(reference->eyeOpen[i]);
-                fprintf(stderr, "%s\n", qPrintable(line));
-            }
             const double fps = best.frames.size() / (best.trackingMs / 1000.0);
             row.insert(QStringLiteral("frames"), int(best.frames.size()));
             row.insert(QStringLiteral("fps"), std::round(fps));
