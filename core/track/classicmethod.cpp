@@ -40,14 +40,6 @@ QRectF apertureBox(QPointF eyeball, double d)
     return {eyeball.x() - 0.22 * d, eyeball.y() - 0.18 * d, 0.44 * d, 0.36 * d};
 }
 
-double median(std::vector<float> values)
-{
-    if (values.empty())
-        return 0;
-    std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-    return values[values.size() / 2];
-}
-
 double quantile(std::vector<float> values, double q)
 {
     if (values.empty())
@@ -57,9 +49,15 @@ double quantile(std::vector<float> values, double q)
     return values[i];
 }
 
-// The lids' aperture: over the columns within `half` of the window's middle column, how many
-// pixels each holds darker than `level` (the iris and pupil between the lids, the lashes' line
-// alone when they are shut), mean over the columns. With `ramp` > 0 a pixel counts in part
+double median(std::vector<float> values)
+{
+    return quantile(std::move(values), 0.5);
+}
+
+// The thickness of the dark across the window's middle: over the columns within `half` of its
+// middle column, how many pixels each holds darker than `level`, mean over the columns. Between
+// the lids: the iris and pupil, the lashes' line alone when they are shut; between the lips: the
+// mouth's inside. With `ramp` > 0 a pixel counts in part
 // within ramp / 2 of the level, so that sensor noise on pixels near it does not make the count
 // jump.
 double darkThickness(const Window &w, double level, int half, double ramp = 0)
@@ -133,6 +131,8 @@ public:
     {
         FaceMeasurement m;
         m.stable = m_stable;
+        if (frame.isNull())
+            return m;
         trackEyePair(frame);
         if (!m_haveReference)
             trackEyePair(frame); // from where the neutral's eyeballs were found: the place later frames settle on
