@@ -224,39 +224,42 @@ QJsonObject trackToJson(const TrackResult &track)
         if (p.control || p.group == PointGroup::Mouth)
             moving.append(i);
     }
-    auto round = [](double v, double unit) { return std::round(v / unit) * unit; };
+    // To `decimals` places, so that the JSON shows them and no more (0.9526, not 0.9526000000000001).
+    auto round = [](double v, int decimals) {
+        const double scale = std::pow(10.0, decimals);
+        return std::round(v * scale) / scale;
+    };
     QJsonArray frames;
     for (const TrackedFrame &f : track.frames) {
         QJsonObject o;
-        o.insert(QStringLiteral("time"), round(f.time, 1e-6));
+        o.insert(QStringLiteral("time"), round(f.time, 6));
         o.insert(QStringLiteral("lost"), f.lost);
-        o.insert(QStringLiteral("confidence"), round(f.confidence, 1e-4));
+        o.insert(QStringLiteral("confidence"), round(f.confidence, 4));
         QJsonArray points;
         QJsonObject displacements;
         for (int i : std::as_const(moving)) {
             QJsonObject p;
             p.insert(QStringLiteral("id"), pointId(i));
-            p.insert(QStringLiteral("x"), round(f.points[i].x(), 1e-3));
-            p.insert(QStringLiteral("y"), round(f.points[i].y(), 1e-3));
+            p.insert(QStringLiteral("x"), round(f.points[i].x(), 3));
+            p.insert(QStringLiteral("y"), round(f.points[i].y(), 3));
             points.append(p);
             const QPointF d = f.motion.displacementEs0[i];
-            displacements.insert(pointId(i), QJsonArray {round(d.x(), 1e-5), round(d.y(), 1e-5)});
+            displacements.insert(pointId(i), QJsonArray {round(d.x(), 5), round(d.y(), 5)});
         }
         o.insert(QStringLiteral("points"), points);
         o.insert(QStringLiteral("displacements"), displacements);
         QJsonObject eyes;
-        eyes.insert(QStringLiteral("left"), round(f.motion.leftEyeOpen, 1e-4));
-        eyes.insert(QStringLiteral("right"), round(f.motion.rightEyeOpen, 1e-4));
+        eyes.insert(QStringLiteral("left"), round(f.motion.leftEyeOpen, 4));
+        eyes.insert(QStringLiteral("right"), round(f.motion.rightEyeOpen, 4));
         o.insert(QStringLiteral("eyes"), eyes);
         QJsonObject head;
-        head.insert(QStringLiteral("rotation"), round(f.motion.rotationDeg, 1e-3));
-        head.insert(QStringLiteral("x"), round(f.motion.translationEs0.x(), 1e-5));
-        head.insert(QStringLiteral("y"), round(f.motion.translationEs0.y(), 1e-5));
-        head.insert(QStringLiteral("scale"), round(f.motion.scale, 1e-5));
+        head.insert(QStringLiteral("rotation"), round(f.motion.rotationDeg, 3));
+        head.insert(QStringLiteral("x"), round(f.motion.translationEs0.x(), 5));
+        head.insert(QStringLiteral("y"), round(f.motion.translationEs0.y(), 5));
+        head.insert(QStringLiteral("scale"), round(f.motion.scale, 5));
         o.insert(QStringLiteral("head"), head);
-        o.insert(
-            QStringLiteral("gaze"), QJsonArray {round(f.motion.gazeEs0.x(), 1e-5), round(f.motion.gazeEs0.y(), 1e-5)});
-        o.insert(QStringLiteral("mouthOpen"), round(f.motion.mouthOpenEs0, 1e-5));
+        o.insert(QStringLiteral("gaze"), QJsonArray {round(f.motion.gazeEs0.x(), 5), round(f.motion.gazeEs0.y(), 5)});
+        o.insert(QStringLiteral("mouthOpen"), round(f.motion.mouthOpenEs0, 5));
         if (f.mouthShape)
             o.insert(QStringLiteral("mouthShape"), mouthShapeName(*f.mouthShape));
         frames.append(o);

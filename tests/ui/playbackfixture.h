@@ -49,6 +49,10 @@ public:
     int quantumMs = 0;
     double startupMs = 0;
     double fileSeconds = 1e9;
+    // The sound stands still for stallMs when it reaches stallAt seconds of the file (a device
+    // that stops taking data for a while); 0: never.
+    double stallAt = 0;
+    double stallMs = 0;
     QVector<double> plays; // where each play() started
     int pauses = 0;
     QString opened;
@@ -79,7 +83,14 @@ public:
         return quantumMs > 0 ? std::floor(p * 1000.0 / quantumMs) * quantumMs / 1000.0 : p;
     }
     // Seconds of the file the listener hears now (exact), whether or not it is still playing.
-    double heard() const { return m_from + std::max(0.0, sinceStart() - startupMs / 1000.0) * rate; }
+    double heard() const
+    {
+        const double flowing = std::max(0.0, sinceStart() - startupMs / 1000.0);
+        const double reachStall = (stallAt - m_from) / rate; // flowing seconds to the stall
+        if (stallMs <= 0 || m_from >= stallAt || flowing <= reachStall)
+            return m_from + flowing * rate;
+        return stallAt + std::max(0.0, flowing - reachStall - stallMs / 1000.0) * rate;
+    }
 
 private:
     double sinceStart() const { return double(m_wall() - m_since) * 1e-9; }

@@ -181,6 +181,58 @@ private Q_SLOTS:
         QVERIFY(m_controller->soundProblem().isEmpty()); // no clip: nothing missing
     }
 
+    // An output that takes long to start (0.8 s) and then stands still for 1.2 s in the middle
+    // (as a PulseAudio null sink or a Bluetooth headset can): the picture waits for the sound
+    // instead of running ahead silently and jumping back when the sound comes, and it never
+    // steps back.
+    void pictureWaitsForASoundThatIsLateOrStalls()
+    {
+        useSimulatedClock();
+        fixture::FakeAudioTrack *track = useFakeTrack();
+        track->quantumMs = 128;
+        track->startupMs = 800;
+        track->stallAt = 2.5;
+        track->stallMs = 1200;
+        setAudio(soundFile(), 0.0, 10.0, 10.0);
+        m_playhead->setTime(1.0);
+        m_controller->play();
+        const double fps = m_doc->timeline().frameRate();
+        int shown = frame();
+        double worstAhead = 0;
+        while (m_now < 6000 * kMs) {
+            advance(10);
+            QVERIFY2(frame() >= shown,
+                qPrintable(QStringLiteral("stepped back from frame %1 to %2 at %3 s")
+                               .arg(shown)
+                               .arg(frame())
+                               .arg(m_now / 1e9)));
+            shown = frame();
+            worstAhead = std::max(worstAhead, m_playhead->time() - track->heard());
+        }
+        qInfo("the picture ran at most %.0f ms ahead of the sound", worstAhead * 1000);
+        // Ahead at most the hold (0.5 s) beyond the sound's last told position (one step late).
+        QVERIFY2(worstAhead <= 0.5 + 0.128 + 1 / fps, qPrintable(QString::number(worstAhead)));
+        // At the start the picture waited: still on its first frame when the sound began.
+        // And afterwards: within a frame of the sound again.
+        QVERIFY2(std::abs(m_playhead->time() - track->heard()) <= 1.5 / fps + 0.128,
+            qPrintable(QStringLiteral("%1 vs %2").arg(m_playhead->time()).arg(track->heard())));
+    }
+
+    // A sound that never starts (a broken output) holds the picture only for the grace: then
+    // the animation plays on.
+    void soundThatNeverStartsHoldsOnlyForAWhile()
+    {
+        useSimulatedClock();
+        fixture::FakeAudioTrack *track = useFakeTrack();
+        track->startupMs = 1e9;
+        setAudio(soundFile(), 0.0, 10.0, 10.0);
+        m_controller->play();
+        advance(1000);
+        QCOMPARE(frame(), 0); // waiting for the sound
+        advance(3000);
+        QVERIFY2(m_playhead->time() > 1.5, qPrintable(QString::number(m_playhead->time())));
+    }
+
     void endStopsAtTheLastFrame()
     {
         useSimulatedClock();

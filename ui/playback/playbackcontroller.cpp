@@ -295,6 +295,8 @@ void PlaybackController::startSound(double time)
         m_sound = Sound::Playing;
         m_soundFlowed = false;
         m_lastAudioPosition.reset();
+        m_soundHoldTime = time;
+        m_soundNewsNs = now();
     } else {
         m_sound = Sound::Done;
     }
@@ -339,20 +341,24 @@ void PlaybackController::tick()
         // instead of waiting at a stale one.
         const std::optional<double> position = m_track->position();
         if (position && position != m_lastAudioPosition) {
-            // The first position tells how late the sound started: the clock locks on to it, but
-            // the picture waits for the sound rather than stepping back.
+            // The first position tells how late the sound started: the clock locks on to it.
             const bool lockIn = !m_soundFlowed;
             m_soundFlowed = true;
             m_lastAudioPosition = position;
-            jumped = m_clock.syncToAudio(m_document->timeline().audio()->offset + *position, wall);
-            if (jumped)
-                ++m_resyncs;
-            else
+            const double heard = m_document->timeline().audio()->offset + *position;
+            m_soundHoldTime = heard + kMaxAheadOfSound;
+            m_soundNewsNs = wall;
+            // A re-sync moves the clock, never the picture back: a picture ahead of the sound
+            // holds until the sound catches up (below), one behind it jumps forward.
+            if (m_clock.syncToAudio(heard, wall)) {
+                if (!lockIn)
+                    ++m_resyncs;
+            } else {
                 m_maxAudioError = std::max(m_maxAudioError, std::abs(m_clock.lastError()));
-            if (lockIn)
-                jumped = false;
+            }
         }
     }
+    holdForSound(wall);
     double time = m_clock.time(wall);
     const double end = m_document->timeline().duration();
     if (time >= end) {
@@ -367,9 +373,20 @@ void PlaybackController::tick()
     }
     updateSound(time);
     const int frame = frameAt(time);
-    // Small corrections toward the audio clock never step the picture back a frame.
+    // Only a loop's wrap steps the picture back: corrections toward the sound never do.
     if (frame > m_frame || (jumped && frame != m_frame))
         setPlayheadFrame(frame);
+}
+
+void PlaybackController::holdForSound(qint64 wall)
+{
+    if (m_sound != Sound::Playing || double(wall - m_soundNewsNs) * 1e-9 > kSoundGrace)
+        return;
+    // Not started yet: the clock waits where the sound starts; standing still: it runs at most
+    // kMaxAheadOfSound past the sound's last position. A sound held up for longer than the
+    // grace no longer holds it: the clock goes on from there.
+    if (m_clock.time(wall) > m_soundHoldTime)
+        m_clock.start(m_soundHoldTime, wall);
 }
 
 void PlaybackController::setPlayheadFrame(int frame)

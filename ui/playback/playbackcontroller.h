@@ -25,7 +25,12 @@ class Playhead;
 //
 // The picture follows the audio clock: while the sound plays, every tick reads its position and
 // re-syncs the PlaybackClock to it (see there), so picture and sound stay within a frame of each
-// other however long it plays. Without sound (no clip, its file missing, no audio output device:
+// other however long it plays. The picture never runs away from the sound and never steps back
+// for it: until the sound starts flowing (an output can take a second to start) and while it
+// stalls (its position stands still) the picture waits, at most kMaxAheadOfSound ahead of the
+// sound's last position (up to kSoundGrace seconds; a sound silent for longer no longer holds
+// the picture); when the sound turns out behind the picture, the picture holds until the
+// sound catches up. Without sound (no clip, its file missing, no audio output device:
 // QMediaDevices::audioOutputs() empty) it runs on the wall clock (QElapsedTimer).
 //
 // The clip's sound starts `offset` seconds into the animation (silence before it: a lead-in) and
@@ -99,6 +104,12 @@ Q_SIGNALS:
 private:
     enum class Sound { Off, Waiting, Playing, Done };
 
+    // How far the picture may run ahead of the sound's last told position: more than the steps
+    // sound systems tell the position in (PulseAudio: 128-256 ms).
+    static constexpr double kMaxAheadOfSound = 0.5;
+    // How long a sound that has not started, or stands still, holds the picture.
+    static constexpr double kSoundGrace = 2.0;
+
     void createActions();
     void updateActions();
     void onDocumentChanged(ChangeFlags what);
@@ -110,6 +121,8 @@ private:
     void startSound(double time);
     void stopSound();
     void updateSound(double time);
+    // Holds the clock back to where the sound is, while the sound is late or stands still.
+    void holdForSound(qint64 wall);
     void setPlayheadFrame(int frame);
     int frameAt(double time) const;
     qint64 now() const;
@@ -129,6 +142,8 @@ private:
     Sound m_sound = Sound::Off;
     bool m_soundFlowed = false; // the track has told a position since it was started
     std::optional<double> m_lastAudioPosition; // the track's position as last told, since it was started
+    double m_soundHoldTime = 0; // animation time the clock may not pass while the sound is held up
+    qint64 m_soundNewsNs = 0; // when the sound last moved (or started)
     std::optional<AudioClip> m_clip; // the clip as last seen, to notice edits of it
     QString m_soundPath; // the file m_track has open
     bool m_soundOpen = false;
