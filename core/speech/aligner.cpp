@@ -256,12 +256,11 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     opt.band = 3000; // frames: ±30 s
     opt.maxFullCells = 6000000;
     // The coarsest level of a long recording averages 40-80 ms into a frame: where a pause the
-    // script does not mark lies, it may put the pause one or two syllables off. The finer
-    // levels may move the path by up to 30 of their frames from the coarser one's (at full
-    // resolution, 300 ms: a syllable or two) to put it right. The wider corridor costs ~4% of
-    // a 10-minute alignment's CPU time and ~7 MB (20 frames still left a sentence of the
-    // joined real recordings 1.9 s late, 6 left many).
-    opt.radius = 30;
+    // script does not mark lies, it may put the pause one or two syllables off. The next level
+    // may move the path by up to 30 of its frames (a syllable or two) to put it right; the
+    // finer ones keep the default radius. (With the default at every level, sentences of
+    // joined real recordings landed up to 1.9 s late; 20 at every level still left one.)
+    opt.coarseRadius = 30;
     // Silence for the warp: quiet by the whole band's energy, or a pause by the mid band's
     // loudness. Steady noise (hum, a fan, a noisy line) can keep a pause's whole-band energy
     // near that of speech; counted as speech, the noise before the first word draws the first

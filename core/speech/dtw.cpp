@@ -241,7 +241,9 @@ std::vector<std::pair<int, int>> dtwPath(
         monotoneCorridor(lo, hi, cb.frames);
     }
     Path path = corridorDtw(ca, cb, lo, hi, options, dim, cancel);
+    const int coarsest = level;
     while (level > 0 && !path.empty()) {
+        const int radius = level == coarsest ? std::max(options.radius, options.coarseRadius) : options.radius;
         --level;
         const Level &fa = as[size_t(level)];
         const Level &fb = bs[size_t(level)];
@@ -256,13 +258,13 @@ std::vector<std::pair<int, int>> dtwPath(
             }
         }
         for (int r = 0; r < fa.frames; ++r) {
-            flo[size_t(r)] = std::max(0, flo[size_t(r)] - options.radius);
-            fhi[size_t(r)] = std::min(fb.frames - 1, fhi[size_t(r)] + options.radius);
+            flo[size_t(r)] = std::max(0, flo[size_t(r)] - radius);
+            fhi[size_t(r)] = std::min(fb.frames - 1, fhi[size_t(r)] + radius);
         }
         // Also widen along rows: rows within the radius share their corridors.
         std::vector<int> wlo = flo, whi = fhi;
         for (int r = 0; r < fa.frames; ++r) {
-            const int r0 = std::max(0, r - options.radius), r1 = std::min(fa.frames - 1, r + options.radius);
+            const int r0 = std::max(0, r - radius), r1 = std::min(fa.frames - 1, r + radius);
             wlo[size_t(r)] = flo[size_t(r0)];
             whi[size_t(r)] = fhi[size_t(r1)];
         }

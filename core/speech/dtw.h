@@ -37,6 +37,10 @@ struct DtwOptions
     float pauseCost = 0.25f; // per frame held at a `pauseAt` frame (times silenceCost)
     long maxFullCells = 4'000'000; // the coarsest level is a full DTW of at most this many cells
     int radius = 6; // corridor half-width, in frames of the finer level
+    // The half-width of the first refinement, of the coarsest level's path (when larger than
+    // radius): the coarsest level averages most and errs most (a pause put a syllable off);
+    // once the next level has put its path right, the finer ones need only `radius`.
+    int coarseRadius = 0;
     // When > 0: the path keeps within `band` frames (of the full resolution) of the line on
     // which both sequences have spoken the same share of their speech (frames with silence
     // < 0.5). A full DTW at the coarsest level a long recording allows averages a third of a
