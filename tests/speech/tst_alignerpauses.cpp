@@ -146,6 +146,63 @@ private Q_SLOTS:
                            .arg((pauseStart + pause - paused.syllables[at].start) * 1000, 0, 'f', 0)));
     }
 
+    void unmarkedPauseInARealRecording_data()
+    {
+        QTest::addColumn<double>("pause");
+        QTest::addColumn<int>("at");
+        for (const double pause : {0.3, 0.6, 1.2})
+            for (const int at : {5, 8, 11})
+                QTest::addRow("%.1fs before %d", pause, at) << pause << at;
+    }
+    void unmarkedPauseInARealRecording()
+    {
+        // The AISHELL-3 sentence with silence inserted at a syllable onset (from its
+        // TextGrid): every onset where it is without the pause, moved by the pause after it.
+        const QString speech = sharedData() + QStringLiteral("/speech/");
+        const AudioResult loaded = loadAudio(speech + QStringLiteral("SSB00050015_16k.wav"));
+        if (!loaded.ok())
+            QSKIP("the shared speech recordings are not here");
+        QFETCH(double, pause);
+        QFETCH(int, at);
+        QString text;
+        std::vector<double> onsets;
+        for (const TextGridInterval &w :
+            readTextGridTier(speech + QStringLiteral("SSB00050015.TextGrid"), QStringLiteral("words"))) {
+            if (w.text.isEmpty() || w.text.startsWith(QLatin1Char('[')))
+                continue;
+            text += w.text;
+            onsets.push_back(w.start);
+        }
+        const Script script = parseScript(text, Language::Mandarin).script;
+        QCOMPARE(size_t(script.syllables.size()), onsets.size());
+        const Audio plain = resampled(loaded.audio, kSpeechSampleRate);
+        const qsizetype cut = qsizetype(onsets[size_t(at)] * kSpeechSampleRate);
+        Audio paused;
+        paused.samples = plain.samples.mid(0, cut);
+        // The recording's own quiet before the speech stands for the pause (its room).
+        while (paused.samples.size() < cut + qsizetype(pause * kSpeechSampleRate))
+            paused.samples += plain.samples.mid(0,
+                std::min<qsizetype>(qsizetype(0.1 * kSpeechSampleRate),
+                    cut + qsizetype(pause * kSpeechSampleRate) - paused.samples.size()));
+        paused.samples += plain.samples.mid(cut);
+        const AlignResult without = alignScript(plain, script);
+        const AlignResult with = alignScript(paused, script);
+        QVERIFY2(without.ok() && with.ok(), qPrintable(without.error + with.error));
+        for (int k = 0; k < script.syllables.size(); ++k) {
+            const double expected = without.syllables[k].start + (k >= at ? pause : 0.0);
+            // The syllable after the pause may move by up to a stop's closure, which the pause
+            // swallows (the cut is at its onset).
+            QVERIFY2(std::abs(with.syllables[k].start - expected) <= (k == at ? 0.05 : 0.03),
+                qPrintable(QStringLiteral("%1 (%2) is %3 ms from its place without the pause")
+                               .arg(k)
+                               .arg(script.syllables[k].text)
+                               .arg((with.syllables[k].start - expected) * 1000, 0, 'f', 0)));
+        }
+        QVERIFY2(with.syllables[at - 1].end <= onsets[size_t(at)] + 0.03,
+            qPrintable(QStringLiteral("the syllable before runs %1 ms into the pause")
+                           .arg((with.syllables[at - 1].end - onsets[size_t(at)]) * 1000, 0, 'f', 0)));
+    }
+
     void realFilesJoinedWithoutPunctuation()
     {
         // Real recordings of one sentence each, joined round after round to minutes, their
