@@ -17,6 +17,7 @@ extern "C" {
 #include <cmath>
 #include <cstring>
 #include <thread>
+#include <utility>
 
 namespace toonface {
 
@@ -49,6 +50,8 @@ struct VideoFileSource::Private
     double duration = 0;
     bool audio = false;
     std::optional<int64_t> firstPts;
+    std::optional<VideoFrame> pending; // read by seek(), delivered by the next next()
+    bool resync = false; // after a seek: the next frame's index comes from its timestamp
     int decoded = 0;
     int dropped = 0;
     int damaged = 0;
@@ -137,9 +140,11 @@ struct VideoFileSource::Private
         for (int y = 0; y < image.height(); ++y)
             std::memcpy(image.scanLine(y), rgb->data[0] + qsizetype(y) * rgb->linesize[0], size_t(image.width()) * 4);
 
+        const int64_t pts = frame->best_effort_timestamp;
+        if (std::exchange(resync, false) && firstPts && pts != AV_NOPTS_VALUE)
+            decoded = int(std::llround(double(pts - *firstPts) * timeBase * fps));
         VideoFrame out;
         out.index = decoded;
-        const int64_t pts = frame->best_effort_timestamp;
         if (pts != AV_NOPTS_VALUE && timeBase > 0) {
             if (!firstPts)
                 firstPts = pts;
@@ -151,6 +156,59 @@ struct VideoFileSource::Private
         ++decoded;
         av_frame_unref(frame);
         return out;
+    }
+
+    // Seeks to the key frame at or before `seconds` after the first frame (to the file's first
+    // byte when `fromStart`) and reads its first picture into `pending`; false when FFmpeg cannot
+    // or the picture has no timestamp.
+    bool seekAndRead(double seconds, bool fromStart = false)
+    {
+        const int64_t target = *firstPts + std::llround(std::max(0.0, seconds) / timeBase);
+        const int r = fromStart ? av_seek_frame(input, -1, 0, AVSEEK_FLAG_BYTE)
+                                : av_seek_frame(input, stream, target, AVSEEK_FLAG_BACKWARD);
+        if (r < 0)
+            return false;
+        avcodec_flush_buffers(codec);
+        flushing = false;
+        finished = false;
+        pending.reset();
+        if (!decodeNext() || frame->best_effort_timestamp == AV_NOPTS_VALUE) {
+            av_frame_unref(frame);
+            return false;
+        }
+        resync = true;
+        pending = convert();
+        return pending.has_value();
+    }
+
+    bool seek(int index)
+    {
+        if (!codec || options.paced || fps <= 0 || timeBase <= 0 || index < 0
+            || (headerFrames > 0 && index >= headerFrames))
+            return false;
+        if (!firstPts) {
+            // Frame 0's timestamp anchors every index: read it first.
+            if (pending || decoded > 0 || !decodeNext() || frame->best_effort_timestamp == AV_NOPTS_VALUE)
+                return false;
+            firstPts = frame->best_effort_timestamp;
+            av_frame_unref(frame);
+        }
+        // Some containers (MPEG program streams) seek by byte position and may land a little
+        // after the time asked for: step further back until the picture read is not past it,
+        // and near the start go to the first byte, where reading from the start begins.
+        const double at = index / fps;
+        for (const double back : {0.0, 1.0, 4.0, 16.0}) {
+            if (at - back <= 0)
+                break;
+            if (!seekAndRead(at - back))
+                return false;
+            if (pending->index <= index)
+                return true;
+        }
+        if ((seekAndRead(0) && pending->index <= index) || (seekAndRead(0, true) && pending->index <= index))
+            return true;
+        pending.reset();
+        return false;
     }
 };
 
@@ -210,6 +268,8 @@ std::optional<VideoFrame> VideoFileSource::next()
 {
     if (!d->codec || d->finished)
         return std::nullopt;
+    if (d->pending)
+        return std::exchange(d->pending, std::nullopt);
     for (;;) {
         if (d->stopped.load() || !d->decodeNext()) {
             d->finished = true;
@@ -241,6 +301,11 @@ std::optional<VideoFrame> VideoFileSource::next()
         }
         return f;
     }
+}
+
+bool VideoFileSource::seek(int index)
+{
+    return d->seek(index);
 }
 
 double VideoFileSource::frameRate() const

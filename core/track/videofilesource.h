@@ -37,6 +37,13 @@ public:
     bool open(const QString &path, QString *error) { return open(path, Options {}, error); }
 
     std::optional<VideoFrame> next() override;
+    // Positions an unpaced source for a jump: next() then delivers a frame at or before frame
+    // `index` (a key frame's, found through the file's index), so reading on reaches `index`
+    // without decoding the clip from its start. Frames keep the indices and times they have
+    // when read from the start (for files of a constant frame rate). False when the file cannot
+    // be positioned (no timestamps, no seeking, a paced source, a frame past the end): the source
+    // is then at an unknown place and must be reopened.
+    bool seek(int index);
     double frameRate() const override;
     QSize frameSize() const override;
     // From the container's header (frame count, else duration x rate); -1 when it says neither.

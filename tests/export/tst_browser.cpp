@@ -1,4 +1,5 @@
 #include "animationfixture.h"
+#include "imagedifference.h"
 
 #include "anim/timeline.h"
 #include "export/framerenderer.h"
@@ -22,29 +23,12 @@
 #include <optional>
 
 using namespace toonface;
+using testing::meanDifference;
 
 namespace {
 
 // Chromium renders each frame at this size, as does Toonface's own renderer.
 constexpr int kCell = 256;
-
-// Mean absolute difference per colour channel (0..255) between two images inside `box`.
-double meanDifference(const QImage &a, const QImage &b, const QRect &box)
-{
-    const QImage x = a.convertToFormat(QImage::Format_RGB32);
-    const QImage y = b.convertToFormat(QImage::Format_RGB32);
-    const QRect r = box.intersected(x.rect()).intersected(y.rect());
-    double sum = 0;
-    for (int j = r.top(); j <= r.bottom(); ++j) {
-        const QRgb *p = reinterpret_cast<const QRgb *>(x.constScanLine(j));
-        const QRgb *q = reinterpret_cast<const QRgb *>(y.constScanLine(j));
-        for (int i = r.left(); i <= r.right(); ++i) {
-            sum += std::abs(qRed(p[i]) - qRed(q[i])) + std::abs(qGreen(p[i]) - qGreen(q[i]))
-                + std::abs(qBlue(p[i]) - qBlue(q[i]));
-        }
-    }
-    return r.isEmpty() ? 0 : sum / (3.0 * r.width() * r.height());
-}
 
 // The exported SVG as an element of a page, its ids prefixed so several copies can share
 // the page (clip paths refer to ids).

@@ -1,4 +1,5 @@
 #include "export/videoencoder.h"
+#include "imagedifference.h"
 #include "media/mediareader.h"
 
 #include <QDataStream>
@@ -16,6 +17,7 @@
 #endif
 
 using namespace toonface;
+using testing::meanDifference;
 
 Q_DECLARE_METATYPE(toonface::VideoFormat)
 
@@ -66,23 +68,6 @@ bool writeWav(const QString &path, const QVector<float> &mono, int rate, int cha
         for (int c = 0; c < channels; ++c)
             out << qint16(std::lround(v * 32767));
     return out.status() == QDataStream::Ok;
-}
-
-// Mean absolute difference per channel (0..255) over a rectangle.
-double meanDifference(const QImage &a, const QImage &b, QRect rect = {})
-{
-    if (rect.isNull())
-        rect = QRect(QPoint(0, 0), a.size().boundedTo(b.size()));
-    const QImage x = a.convertToFormat(QImage::Format_RGB32);
-    const QImage y = b.convertToFormat(QImage::Format_RGB32);
-    double sum = 0;
-    for (int j = rect.top(); j <= rect.bottom(); ++j)
-        for (int i = rect.left(); i <= rect.right(); ++i) {
-            const QRgb p = x.pixel(i, j);
-            const QRgb q = y.pixel(i, j);
-            sum += std::abs(qRed(p) - qRed(q)) + std::abs(qGreen(p) - qGreen(q)) + std::abs(qBlue(p) - qBlue(q));
-        }
-    return sum / (3.0 * rect.width() * rect.height());
 }
 
 QStringList allEntries(const QString &dir)

@@ -1,4 +1,6 @@
 #include "export/videoencoder.h"
+#include "imagedifference.h"
+#include "numberedclip.h"
 #include "track/videofilesource.h"
 
 #include <QElapsedTimer>
@@ -7,6 +9,7 @@
 #include <QTest>
 
 using namespace toonface;
+using testing::meanDifference;
 
 namespace {
 
@@ -117,6 +120,85 @@ private Q_SLOTS:
         while (source.next())
             ++n;
         QVERIFY2(n > 10 && n < 75, qPrintable(QString::number(n))); // the frames before the cut
+    }
+
+    // A jump back or far ahead in a long clip lands on the key frame before the frame asked
+    // for, with the indices and times reading from the start gives, so reading on reaches the
+    // frame after at most a key-frame interval (2 s here), not the whole clip.
+    void seeksBackAndFarAhead()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("numbered.mp4"));
+        const int frames = 1500; // a minute at 25 fps
+        const QString written = numberedclip::write(path, frames, 25);
+        QVERIFY2(written.isEmpty(), qPrintable(written));
+        VideoFileSource source;
+        QString error;
+        QVERIFY2(source.open(path, &error), qPrintable(error));
+        for (int i = 0; i < 5; ++i)
+            QVERIFY(source.next());
+        for (const int target : {1200, 300, frames - 1, 0, 760, 761, 20}) {
+            QVERIFY2(source.seek(target), qPrintable(QString::number(target)));
+            int readBefore = 0;
+            std::optional<VideoFrame> f;
+            while ((f = source.next()) && f->index < target) {
+                QCOMPARE(numberedclip::indexOf(f->image), f->index);
+                ++readBefore;
+            }
+            QVERIFY(f);
+            QCOMPARE(f->index, target);
+            QCOMPARE(numberedclip::indexOf(f->image), target);
+            QVERIFY(std::abs(f->time - target / 25.0) < 1e-6);
+            QVERIFY2(readBefore < 50, qPrintable(QStringLiteral("%1: %2 read").arg(target).arg(readBefore)));
+            // Reading on after a seek goes frame by frame.
+            if (target + 1 < frames) {
+                const std::optional<VideoFrame> after = source.next();
+                QVERIFY(after);
+                QCOMPARE(after->index, target + 1);
+                QCOMPARE(numberedclip::indexOf(after->image), target + 1);
+            }
+        }
+        QVERIFY(!source.seek(frames)); // past the end
+        QVERIFY(!source.seek(-1));
+
+        // A fresh source seeks before reading anything; a paced one does not seek.
+        VideoFileSource fresh;
+        QVERIFY2(fresh.open(path, &error), qPrintable(error));
+        QVERIFY(fresh.seek(999));
+        std::optional<VideoFrame> f;
+        while ((f = fresh.next()) && f->index < 999) { }
+        QVERIFY(f && numberedclip::indexOf(f->image) == 999);
+        VideoFileSource paced;
+        VideoFileSource::Options options;
+        options.paced = true;
+        QVERIFY2(paced.open(path, options, &error), qPrintable(error));
+        QVERIFY(!paced.seek(100));
+    }
+
+    // An MPEG program stream (the GRID clips) seeks by byte position: the frame reached after a
+    // jump is the one reading from the start gives.
+    void seeksInAProgramStream()
+    {
+        const QString grid = QStringLiteral(TOONFACE_SHARED_DATA "/video/bbaf2n.mpg");
+        if (!QFile::exists(grid))
+            QSKIP("the GRID clips of shared/data/video are absent");
+        VideoFileSource source;
+        QString error;
+        QVERIFY2(source.open(grid, &error), qPrintable(error));
+        std::vector<QImage> all;
+        while (std::optional<VideoFrame> f = source.next())
+            all.push_back(f->image);
+        QVERIFY(all.size() >= 70);
+        QVERIFY2(source.open(grid, &error), qPrintable(error));
+        for (const int target : {60, 12, 70, 0, 45}) {
+            QVERIFY2(source.seek(target), qPrintable(QString::number(target)));
+            std::optional<VideoFrame> f;
+            while ((f = source.next()) && f->index < target) { }
+            QVERIFY(f);
+            QCOMPARE(f->index, target);
+            QVERIFY(std::abs(f->time - target / 25.0) < 1e-3);
+            QVERIFY2(meanDifference(f->image, all[size_t(target)]) < 2.0, qPrintable(QString::number(target)));
+        }
     }
 
     void pacedSourceKeepsTimeAndStops()

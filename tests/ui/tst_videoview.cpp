@@ -1,3 +1,4 @@
+#include "numberedclip.h"
 #include "uifixture.h"
 #include "videofixture.h"
 
@@ -135,6 +136,46 @@ private Q_SLOTS:
         QCOMPARE(shown.size(), kFrames - 1);
         for (int i = 0; i < shown.size(); ++i)
             QCOMPARE(shown[i][0].toInt(), i + 1);
+    }
+
+    // In a long clip a jump back or far ahead costs at most a key-frame interval of decoding
+    // (it seeks), not the clip from its start; playing on still costs a frame a frame.
+    void jumpsInALongClipSeek()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("numbered.mp4"));
+        const int frames = 3000; // two minutes at 25 fps
+        QCOMPARE(numberedclip::write(path, frames, kFps), QString());
+        FrameDecoder decoder;
+        QString error;
+        QVERIFY2(decoder.open(path, &error), qPrintable(error));
+        QSignalSpy ready(&decoder, &FrameDecoder::frameReady);
+        QSignalSpy failed(&decoder, &FrameDecoder::failed);
+        int decodedBefore = 0;
+        const auto show = [&](int index, int mostDecoded) {
+            ready.clear();
+            decodedBefore = decoder.framesDecoded();
+            decoder.request(index);
+            if (!QTest::qWaitFor([&] { return !ready.isEmpty() || !failed.isEmpty(); }, 20000) || !failed.isEmpty())
+                return QStringLiteral("frame %1 not shown").arg(index);
+            const int shown = numberedclip::indexOf(ready.first().at(1).value<QImage>());
+            const int cost = decoder.framesDecoded() - decodedBefore;
+            if (ready.first().at(0).toInt() != index || shown != index || cost > mostDecoded)
+                return QStringLiteral("asked %1, got %2 showing %3, %4 frames decoded")
+                    .arg(index)
+                    .arg(ready.first().at(0).toInt())
+                    .arg(shown)
+                    .arg(cost);
+            return QString();
+        };
+        const int keyInterval = int(2 * kFps);
+        QCOMPARE(show(10, 11), QString());
+        QCOMPARE(show(11, 1), QString()); // playing on
+        QCOMPARE(show(2800, keyInterval + 1), QString()); // far ahead
+        QCOMPARE(show(2801, 1), QString());
+        QCOMPARE(show(150, keyInterval + 1), QString()); // back
+        QCOMPARE(show(frames - 1, keyInterval + 1), QString()); // the last
+        QCOMPARE(show(0, 1), QString()); // the first
+        QCOMPARE(show(40, 41), QString()); // a little ahead: read on
     }
 
     void unreadableClipSaysSo()

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "export/videoencoder.h"
+#include "imagedifference.h"
 #include "talkingface.h"
 
 #include <QFileInfo>
@@ -75,23 +76,6 @@ inline QString writeGreyClip(const QString &path, int frames)
     });
 }
 
-// The mean absolute difference of two images of one size, per channel (0..255); 255 when the
-// sizes differ.
-inline double meanDifference(const QImage &a, const QImage &b)
-{
-    if (a.size() != b.size() || a.isNull())
-        return 255;
-    const QImage x = a.convertToFormat(QImage::Format_RGB32);
-    const QImage y = b.convertToFormat(QImage::Format_RGB32);
-    double sum = 0;
-    for (int r = 0; r < x.height(); ++r) {
-        const QRgb *p = reinterpret_cast<const QRgb *>(x.constScanLine(r));
-        const QRgb *q = reinterpret_cast<const QRgb *>(y.constScanLine(r));
-        for (int c = 0; c < x.width(); ++c)
-            sum += std::abs(qRed(p[c]) - qRed(q[c])) + std::abs(qGreen(p[c]) - qGreen(q[c]))
-                + std::abs(qBlue(p[c]) - qBlue(q[c]));
-    }
-    return sum / (3.0 * x.width() * x.height());
-}
+using testing::meanDifference;
 
 } // namespace toonface::videofixture

@@ -6,6 +6,8 @@
 #include <QFutureWatcher>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <atomic>
+#include <cmath>
 #include <deque>
 #include <utility>
 
@@ -16,6 +18,8 @@ namespace {
 // Frames kept for going back a little (a step back, a repaint) without reopening the file.
 constexpr qsizetype kCacheBytes = 48 * 1024 * 1024;
 constexpr int kCacheFramesMax = 32;
+// Further ahead than this, a jump seeks (through the file's index) rather than reading on.
+constexpr double kReadOnSeconds = 3.0;
 
 } // namespace
 
@@ -27,6 +31,7 @@ struct FrameDecoder::Reader
     std::unique_ptr<VideoFileSource> source;
     int next = 0; // the index the source delivers next
     std::deque<std::pair<int, QImage>> cache; // most recent last
+    std::atomic_int decoded {0}; // frames decoded, for the tests and the bench
 
     bool reopen(QString *error)
     {
@@ -56,9 +61,16 @@ struct FrameDecoder::Reader
             if (kept.first == index)
                 return kept.second;
         }
-        if ((!source || index < next) && !reopen(error))
+        if (!source && !reopen(error))
             return {};
+        const int readOn = int(std::lround(kReadOnSeconds * (source->frameRate() > 0 ? source->frameRate() : 25.0)));
+        if (index < next || index > next + readOn) {
+            // A jump: back, or far ahead. A file that cannot seek is read from its start.
+            if (!source->seek(index) && !reopen(error))
+                return {};
+        }
         while (std::optional<VideoFrame> f = source->next()) {
+            ++decoded;
             next = f->index + 1;
             if (f->index == index) {
                 keep(index, f->image);
@@ -123,6 +135,11 @@ void FrameDecoder::close()
     m_running = -1;
     m_pending = -1;
     m_shown = -1;
+}
+
+int FrameDecoder::framesDecoded() const
+{
+    return m_reader ? m_reader->decoded.load() : 0;
 }
 
 void FrameDecoder::request(int index)

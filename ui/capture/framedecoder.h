@@ -13,9 +13,10 @@ namespace toonface {
 // index i" (the neutral-frame picker, the video dock). Latest request wins: while a frame is
 // being decoded, newer requests replace the waiting one, so a scrub or playback never queues
 // frames up; the ones passed over are dropped. Decoding is sequential (core's VideoFileSource):
-// a request at or after the last decoded frame reads on from there, so playback costs one frame
-// a frame; going back reopens the file. The last few frames are kept, so stepping around a
-// frame and repainting cost nothing.
+// a request a little after the last decoded frame reads on from there, so playback costs one
+// frame a frame; a jump back or far ahead seeks to the key frame before it and reads on from
+// there (a file that cannot seek is read from its start). The last few frames are kept, so
+// stepping around a frame and repainting cost nothing.
 //
 // Lives on the GUI thread; its signals arrive there.
 class FrameDecoder : public QObject
@@ -50,6 +51,8 @@ public:
     bool isBusy() const { return m_running >= 0; }
     // How many requests were passed over for newer ones (dropped, never decoded).
     int droppedRequests() const { return m_dropped; }
+    // How many frames the file's decoder delivered since open() (what requests cost).
+    int framesDecoded() const;
 
 Q_SIGNALS:
     void frameReady(int index, const QImage &image);

@@ -5,14 +5,22 @@
 #include <QAudioDevice>
 #include <QAudioSource>
 #include <QMediaDevices>
+#include <QTimer>
 
+#include <algorithm>
 #include <cstring>
 
 namespace toonface {
 
 Microphone::Microphone(QObject *parent)
     : QObject(parent)
-{ }
+    , m_devices(new QMediaDevices(this))
+    , m_watch(new QTimer(this))
+{
+    connect(m_devices, &QMediaDevices::audioInputsChanged, this, &Microphone::checkStillThere);
+    m_watch->setInterval(500);
+    connect(m_watch, &QTimer::timeout, this, &Microphone::checkStillThere);
+}
 
 Microphone::~Microphone()
 {
@@ -45,6 +53,7 @@ bool Microphone::start(QString *error)
     if (!device.isFormatSupported(format))
         format = device.preferredFormat();
     m_format = format;
+    m_input = device;
     m_source = new QAudioSource(device, format, this);
     m_device = m_source->start();
     if (!m_device || m_source->error() != QAudio::NoError) {
@@ -54,26 +63,51 @@ bool Microphone::start(QString *error)
         return false;
     }
     connect(m_device, &QIODevice::readyRead, this, &Microphone::read);
+    m_sinceData.start();
+    m_watch->start();
     connect(m_source, &QAudioSource::stateChanged, this, [this, name = device.description()](QAudio::State state) {
-        if (state == QAudio::StoppedState && m_source && m_source->error() != QAudio::NoError) {
-            stop();
-            Q_EMIT failed(tr("The microphone “%1” stopped.").arg(name));
-        }
+        // Not from inside the source's own signal: stop() deletes the source.
+        if (state == QAudio::StoppedState && m_source && m_source->error() != QAudio::NoError)
+            QMetaObject::invokeMethod(
+                this,
+                [this, name, source = m_source] {
+                    if (m_source == source)
+                        fail(name);
+                },
+                Qt::QueuedConnection);
     });
     return true;
 }
 
 void Microphone::stop()
 {
+    m_watch->stop();
     if (!m_source)
         return;
     m_source->disconnect(this);
     if (m_device)
         m_device->disconnect(this);
     m_source->stop();
-    m_source->deleteLater();
+    // At once: Qt 6.4's PulseAudio source crashes when deleted later, after its device went away.
+    delete m_source;
     m_source = nullptr;
     m_device = nullptr;
+}
+
+void Microphone::fail(const QString &description)
+{
+    stop();
+    Q_EMIT failed(tr("The microphone “%1” stopped.").arg(description));
+}
+
+void Microphone::checkStillThere()
+{
+    if (!m_source)
+        return;
+    const QList<QAudioDevice> inputs = QMediaDevices::audioInputs();
+    if (std::none_of(inputs.begin(), inputs.end(), [&](const QAudioDevice &d) { return d.id() == m_input.id(); })
+        || m_sinceData.elapsed() > 3000)
+        fail(m_input.description());
 }
 
 void Microphone::read()
@@ -83,6 +117,7 @@ void Microphone::read()
     const QByteArray data = m_device->readAll();
     if (data.isEmpty())
         return;
+    m_sinceData.start();
     const QVector<float> mono = toMono(data, m_format);
     if (!mono.isEmpty())
         Q_EMIT samples(mono, m_format.sampleRate());

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <QAudioDevice>
 #include <QAudioFormat>
+#include <QElapsedTimer>
 #include <QObject>
 #include <QString>
 #include <QVector>
@@ -8,13 +10,16 @@
 class QAudioSource;
 class QIODevice;
 class QMediaDevices;
+class QTimer;
 
 namespace toonface {
 
 // The default microphone through QAudioSource, delivering mono float samples. No microphone
 // (QMediaDevices::audioInputs() empty, as on a machine without sound input) is a clear message,
 // never an exception or a silent failure; a microphone that stops (unplugged, an error) says
-// so in failed().
+// so in failed(). (Qt 6.4's PulseAudio backend neither reports a source that goes away nor
+// signals the changed list of inputs: the list is checked twice a second, and a microphone that
+// has delivered nothing for 3 s has stopped.)
 //
 // GUI thread: samples() is emitted there.
 class Microphone : public QObject
@@ -44,7 +49,13 @@ Q_SIGNALS:
 
 private:
     void read();
+    void fail(const QString &description);
+    void checkStillThere();
 
+    QMediaDevices *m_devices = nullptr; // tells when the microphone in use goes away
+    QTimer *m_watch = nullptr; // checks that it is still there and delivering
+    QElapsedTimer m_sinceData;
+    QAudioDevice m_input; // the microphone in use
     QAudioSource *m_source = nullptr;
     QIODevice *m_device = nullptr;
     QAudioFormat m_format;
