@@ -658,15 +658,23 @@ QJsonObject lipsyncLongReal()
                 = QJsonDocument::fromJson(result.readAll())[QStringLiteral("syllables")].toArray();
             Errors e;
             double shortest = 1e9;
+            // Rounds in which some scored onset is more than 0.3 s off: a sentence placed
+            // across a pause between the files.
+            std::vector<bool> badRound(size_t(rounds), false);
             for (int k = 0; k < syllables.size() && size_t(k) < truth.size(); ++k) {
                 const QJsonObject s = syllables[k].toObject();
                 const double start = s[QStringLiteral("start")].toDouble();
                 shortest = std::min(shortest, (s[QStringLiteral("end")].toDouble() - start) * 1000.0);
-                if (!std::isnan(truth[size_t(k)]))
+                if (!std::isnan(truth[size_t(k)])) {
                     e.add(start, truth[size_t(k)]);
+                    if (std::abs(start - truth[size_t(k)]) > 0.3)
+                        badRound[size_t(k) / roundTruth.size()] = true;
+                }
             }
             QJsonObject accuracy = e.json();
             accuracy.insert(QStringLiteral("shortestSyllableMs"), std::round(shortest));
+            accuracy.insert(
+                QStringLiteral("roundsOffBy300Ms"), int(std::count(badRound.begin(), badRound.end(), true)));
             o.insert(QStringLiteral("onsetErrors"), accuracy);
         }
         runs.insert(QStringLiteral("%1s").arg(int(std::lround(audio.duration()))), o);

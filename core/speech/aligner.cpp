@@ -53,7 +53,7 @@ struct Warp
 // in `evidence`.
 std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int> &prior,
     const std::vector<double> &expected, const std::vector<int> &minFrames, const std::vector<OnsetKind> &kinds,
-    int speechEnd, std::vector<double> *evidence)
+    const std::vector<double> &priorWeight, int speechEnd, std::vector<double> *evidence)
 {
     // Weights of the terms, in units of "one clear onset": a clear onset (evidence ~0.7) or a
     // clear nucleus are worth about as much as a syllable 1.5 times longer than expected costs.
@@ -87,7 +87,8 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
         hi[size_t(k)] = std::min(hi[size_t(k)], hi[size_t(k) + 1] - minFrames[size_t(k)]);
     auto node = [&](int k, int b) {
         const double d = (b - prior[size_t(k)]) / kPriorSigma;
-        return kOnset * sig.onsetEvidence(b, kinds[size_t(k)], k == 0) - kPrior * std::min(0.5 * d * d, kPriorCap);
+        return kOnset * sig.onsetEvidence(b, kinds[size_t(k)], k == 0)
+            - kPrior * priorWeight[size_t(k)] * std::min(0.5 * d * d, kPriorCap);
     };
     // A pause may follow a syllable's nucleus, never come between its onset and its nucleus.
     // Its nucleus is a rise after the dip that follows the onset (the first frames after an
@@ -254,6 +255,12 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     // from its share of the speech by seconds, not by minutes.
     opt.band = 3000; // frames: ±30 s
     opt.maxFullCells = 6000000;
+    // The coarsest level of a long recording averages 40-80 ms into a frame: where a pause the
+    // script does not mark lies, it may put the pause one or two syllables off. The next level
+    // may move the path by up to 30 of its frames (a syllable or two) to put it right; the
+    // finer ones keep the default radius. (With the default at every level, sentences of
+    // joined real recordings landed up to 1.9 s late; 20 at every level still left one.)
+    opt.coarseRadius = 30;
     // Silence for the warp: quiet by the whole band's energy, or a pause by the mid band's
     // loudness. Steady noise (hum, a fan, a noisy line) can keep a pause's whole-band energy
     // near that of speech; counted as speech, the noise before the first word draws the first
@@ -261,22 +268,33 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     // (The signals are built again after the warp rather than held through it: on a long
     // recording they weigh as much as the warp.)
     std::vector<float> quietA = a.silence, quietB = b.silence;
+    std::vector<float> longA(size_t(a.frames), 0.0f), longB(size_t(b.frames), 0.0f); // pauses, not closures
     double refSpeech = 0;
     {
         const OnsetSignals refSig(b);
         for (int t = 0; t < b.frames; ++t)
             if (refSig.isPause(t))
-                quietB[size_t(t)] = 1.0f;
+                quietB[size_t(t)] = longB[size_t(t)] = 1.0f;
         refSpeech = b.frames - refSig.pauseFrames(0, b.frames);
     }
     {
         const OnsetSignals pauses(a);
         for (int t = 0; t < a.frames; ++t)
             if (pauses.isPause(t))
-                quietA[size_t(t)] = 1.0f;
+                quietA[size_t(t)] = longA[size_t(t)] = 1.0f;
     }
-    const auto path = dtwPath(
-        {a.vectors.data(), quietA.data(), a.frames}, {b.vectors.data(), quietB.data(), b.frames}, opt, cancel);
+    // The speaker may pause between any two syllables, not only where the script marks a
+    // break: the warp may hold the last frame of each of the reference's syllables over a
+    // pause of the recording at a small cost (dtw.h). A stop's closure inside a syllable is
+    // too short to be a pause (onsetsignals.h) and is not absorbed this way.
+    std::vector<float> pauseB(size_t(b.frames), 0.0f);
+    for (int k = 1; k < n; ++k) {
+        const int j = b.frameAt(reference.units[k].start + kReferencePad) - 1;
+        if (j >= 0 && j < b.frames)
+            pauseB[size_t(j)] = 1.0f;
+    }
+    const auto path = dtwPath({a.vectors.data(), quietA.data(), a.frames, longA.data()},
+        {b.vectors.data(), quietB.data(), b.frames, longB.data(), pauseB.data()}, opt, cancel);
     const OnsetSignals sig(a);
     if (isCancelled(cancel))
         return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
@@ -374,12 +392,24 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         minSeconds[size_t(k)] = minimumSyllableSeconds(syl.pinyin, syl.tone, meanSyllable / kOrdinarySyllable);
         minFrames[size_t(k)] = std::max(3, int(std::ceil(minSeconds[size_t(k)] / SpeechFeatures::kHop - 1e-9)));
     }
+    // Where the speaker pauses and the script marks no break, the warp decides at which
+    // boundary the pause goes from the sounds alone, and a vowel or glide after a like vowel
+    // (wu wo) leaves that open: the syllables either side of such a pause are placed by
+    // the signal (the rise out of the pause, their lengths) more than by the warp.
+    std::vector<double> priorWeight(static_cast<size_t>(n), 1.0);
+    for (int k = 0; k < n; ++k) {
+        const int from = prior[size_t(std::max(k - 1, 0))], to = prior[size_t(std::min(k + 1, n - 1))];
+        const bool marked = (k > 0 && script.syllables[k - 1].phraseBreakAfter) || script.syllables[k].phraseBreakAfter;
+        if (!marked && sig.pauseFrames(from, to) >= 15)
+            priorWeight[size_t(k)] = 0.25;
+    }
     std::vector<double> evidence;
-    std::vector<int> onsets = segmentSyllables(sig, prior, expectedFrames, minFrames, kinds, last + 1, &evidence);
+    std::vector<int> onsets
+        = segmentSyllables(sig, prior, expectedFrames, minFrames, kinds, priorWeight, last + 1, &evidence);
     if (evidence.empty()) {
         // Too little speech for every syllable's minimum: the shortest the search allows.
-        onsets
-            = segmentSyllables(sig, prior, expectedFrames, std::vector<int>(size_t(n), 3), kinds, last + 1, &evidence);
+        onsets = segmentSyllables(
+            sig, prior, expectedFrames, std::vector<int>(size_t(n), 3), kinds, priorWeight, last + 1, &evidence);
         std::fill(minSeconds.begin(), minSeconds.end(), 0.03);
     }
     if (evidence.empty()) {
@@ -487,6 +517,13 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         const double next = k + 1 < n ? r.syllables[k + 1].start : a.time(last + 1) - 0.5 * SpeechFeatures::kHop;
         int endFrame = a.frameAt(next + 0.5 * SpeechFeatures::kHop);
         const int startFrame = a.frameAt(s.start + 0.5 * SpeechFeatures::kHop);
+        // The next onset may lie a few frames past the pause's end (the first sound of its
+        // initial): the pause before it is still this syllable's end.
+        for (int e = endFrame, back = 0; e - 1 > startFrame && back <= 5; --e, ++back)
+            if (sig.isPause(e - 1)) {
+                endFrame = e;
+                break;
+            }
         while (endFrame - 1 > startFrame && sig.isPause(endFrame - 1)
             && a.time(endFrame - 1) - 0.5 * SpeechFeatures::kHop >= s.start + minSeconds[size_t(k)])
             --endFrame;

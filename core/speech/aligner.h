@@ -46,9 +46,10 @@ struct AlignResult
 // Method: MFCC, energy and voicing features of the recording are warped by multi-resolution
 // dynamic time warping onto those of an espeak-ng rendering of the same script whose syllable
 // times are known exactly from the library's events; pauses either side makes alone are
-// absorbed as silence. Each onset is then moved to the acoustic boundary nearby (the end of
-// a pause, or the energy valley or voicing change between two syllable nuclei) that best fits
-// its initial.
+// absorbed as silence, a pause of the speaker where the script marks none at a syllable
+// boundary (never at a stop's closure inside a syllable). Each onset is then moved to the
+// acoustic boundary nearby (the end of a pause, or the energy valley or voicing change between
+// two syllable nuclei) that best fits its initial.
 // Fails with CannotAlign when the audio holds no speech, or far too little speech for the
 // script (or far too much). Thread-safe (the espeak-ng rendering is serialised).
 AlignResult alignScript(const Audio &audio, const Script &script, const AlignOptions &options = {},

@@ -13,6 +13,8 @@ struct Level
 {
     std::vector<float> vectors;
     std::vector<float> silence;
+    std::vector<float> pause;
+    std::vector<float> pauseAt;
     int frames = 0;
 };
 
@@ -29,6 +31,14 @@ Level fromSequence(const DtwSequence &s, int dim, const std::vector<int> &channe
         l.silence.assign(s.silence, s.silence + s.frames);
     else
         l.silence.assign(size_t(s.frames), 0.0f);
+    auto copy = [&](const float *v, std::vector<float> &to) {
+        if (v)
+            to.assign(v, v + s.frames);
+        else
+            to.assign(size_t(s.frames), 0.0f);
+    };
+    copy(s.pause, l.pause);
+    copy(s.pauseAt, l.pauseAt);
     return l;
 }
 
@@ -38,12 +48,17 @@ Level halve(const Level &l, int dim)
     h.frames = (l.frames + 1) / 2;
     h.vectors.assign(size_t(h.frames) * size_t(dim), 0.0f);
     h.silence.assign(size_t(h.frames), 0.0f);
+    h.pause.assign(size_t(h.frames), 0.0f);
+    h.pauseAt.assign(size_t(h.frames), 0.0f);
     for (int i = 0; i < h.frames; ++i) {
         const int a = 2 * i, b = std::min(2 * i + 1, l.frames - 1);
         for (int d = 0; d < dim; ++d)
             h.vectors[size_t(i) * size_t(dim) + size_t(d)] = 0.5f
                 * (l.vectors[size_t(a) * size_t(dim) + size_t(d)] + l.vectors[size_t(b) * size_t(dim) + size_t(d)]);
         h.silence[size_t(i)] = 0.5f * (l.silence[size_t(a)] + l.silence[size_t(b)]);
+        h.pause[size_t(i)] = 0.5f * (l.pause[size_t(a)] + l.pause[size_t(b)]);
+        // A boundary in either half is a boundary of the coarser frame.
+        h.pauseAt[size_t(i)] = std::max(l.pauseAt[size_t(a)], l.pauseAt[size_t(b)]);
     }
     return h;
 }
@@ -106,17 +121,23 @@ Path corridorDtw(const Level &a, const Level &b, const std::vector<int> &lo, con
         auto above = [&](int j) { return j < prevLo || j > prevHi ? inf : prev[size_t(j - prevLo)]; };
         cur.assign(size_t(rowHi - rowLo + 1), inf);
         const float *va = a.vectors.data() + size_t(i) * size_t(dim);
-        const float sa = a.silence[size_t(i)];
+        const float sa = a.silence[size_t(i)], la = a.pause[size_t(i)];
+        const float openA = std::max(a.pauseAt[size_t(i)], la);
         for (int j = rowLo; j <= rowHi; ++j) {
             const float *vb = b.vectors.data() + size_t(j) * size_t(dim);
             const float acc = squaredDistance(va, vb, dim);
-            const float sb = b.silence[size_t(j)];
+            const float sb = b.silence[size_t(j)], lb = b.pause[size_t(j)];
+            const float openB = std::max(b.pauseAt[size_t(j)], lb);
             // Two silences match whatever their noise spectra.
             const float both = sa * sb;
             const float dist = (1 - both) * std::sqrt(acc) * norm + both * 0.1f * o.silenceCost;
             // Holding b while a advances over a's silence (a pause b does not make), and back.
-            const float holdB = (1 - sa) * dist + sa * std::min(dist, o.silenceCost);
-            const float holdA = (1 - sb) * dist + sb * std::min(dist, o.silenceCost);
+            // A long pause held where the other may pause costs pauseCost, elsewhere
+            // silenceCost (a closure there is silent too, but no place for a pause).
+            const float pauseB = o.silenceCost * (1 - openB * (1 - o.pauseCost));
+            const float pauseA = o.silenceCost * (1 - openA * (1 - o.pauseCost));
+            const float holdB = (1 - sa) * dist + sa * ((1 - la) * std::min(dist, o.silenceCost) + la * pauseB);
+            const float holdA = (1 - sb) * dist + sb * ((1 - lb) * std::min(dist, o.silenceCost) + lb * pauseA);
             float best;
             uint8_t s;
             if (i == 0 && j == 0) {
@@ -220,7 +241,9 @@ std::vector<std::pair<int, int>> dtwPath(
         monotoneCorridor(lo, hi, cb.frames);
     }
     Path path = corridorDtw(ca, cb, lo, hi, options, dim, cancel);
+    const int coarsest = level;
     while (level > 0 && !path.empty()) {
+        const int radius = level == coarsest ? std::max(options.radius, options.coarseRadius) : options.radius;
         --level;
         const Level &fa = as[size_t(level)];
         const Level &fb = bs[size_t(level)];
@@ -235,13 +258,13 @@ std::vector<std::pair<int, int>> dtwPath(
             }
         }
         for (int r = 0; r < fa.frames; ++r) {
-            flo[size_t(r)] = std::max(0, flo[size_t(r)] - options.radius);
-            fhi[size_t(r)] = std::min(fb.frames - 1, fhi[size_t(r)] + options.radius);
+            flo[size_t(r)] = std::max(0, flo[size_t(r)] - radius);
+            fhi[size_t(r)] = std::min(fb.frames - 1, fhi[size_t(r)] + radius);
         }
         // Also widen along rows: rows within the radius share their corridors.
         std::vector<int> wlo = flo, whi = fhi;
         for (int r = 0; r < fa.frames; ++r) {
-            const int r0 = std::max(0, r - options.radius), r1 = std::min(fa.frames - 1, r + options.radius);
+            const int r0 = std::max(0, r - radius), r1 = std::min(fa.frames - 1, r + radius);
             wlo[size_t(r)] = flo[size_t(r0)];
             whi[size_t(r)] = fhi[size_t(r1)];
         }

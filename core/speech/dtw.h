@@ -14,20 +14,33 @@ namespace toonface {
 // Steps are symmetric (diagonal counts the local cost twice). A frame that is silence in one
 // sequence may be held against any frame of the other for `silenceCost` instead of its
 // distance: pauses one speaker makes and the other does not are absorbed without bending the
-// path elsewhere.
+// path elsewhere. A frame in a long pause (`pause`: a pause, not a stop's closure) is held so
+// cheaply only where the other sequence may pause: at its own pauses and at its `pauseAt`
+// frames (the last frame of each syllable of a reference rendered without pauses there),
+// for `pauseCost`; anywhere else it costs `silenceCost` whatever it faces. A pause the speaker
+// makes between two syllables where the script marks none is absorbed there, at the
+// boundary, rather than at a closure of the other sequence (silent too) or by a pause the
+// other makes a few syllables away.
 struct DtwSequence
 {
     const float *vectors = nullptr; // frames × dim
     const float *silence = nullptr; // frames, 0..1 (may be null)
     int frames = 0;
+    const float *pause = nullptr; // frames, 0..1 (may be null): part of a long pause
+    const float *pauseAt = nullptr; // frames, 0..1 (may be null): where a pause of the other may be held
 };
 
 struct DtwOptions
 {
     int dim = 0;
     float silenceCost = 1.0f;
+    float pauseCost = 0.25f; // per frame held at a `pauseAt` frame (times silenceCost)
     long maxFullCells = 4'000'000; // the coarsest level is a full DTW of at most this many cells
     int radius = 6; // corridor half-width, in frames of the finer level
+    // The half-width of the first refinement, of the coarsest level's path (when larger than
+    // radius): the coarsest level averages most and errs most (a pause put a syllable off);
+    // once the next level has put its path right, the finer ones need only `radius`.
+    int coarseRadius = 0;
     // When > 0: the path keeps within `band` frames (of the full resolution) of the line on
     // which both sequences have spoken the same share of their speech (frames with silence
     // < 0.5). A full DTW at the coarsest level a long recording allows averages a third of a

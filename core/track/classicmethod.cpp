@@ -9,14 +9,100 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace toonface {
 
 namespace {
 
-// Thesis chapter 6. What the neutral face reserved (TrackingSeed) is carried from frame to
-// frame: the eyeball regions, their distance d, the mouth region; t1 and the edge thresholds
-// stay the neutral's.
+// The intensity of a part of a frame, addressed in the frame's pixels.
+struct Window
+{
+    QRect rect; // frame pixels
+    Plane I;
+
+    float at(int x, int y) const { return I.at(x - rect.left(), y - rect.top()); }
+};
+
+Window intensityWindow(const QImage &frame, const QRectF &area)
+{
+    Window w;
+    w.rect = area.toAlignedRect().intersected(frame.rect());
+    if (!w.rect.isEmpty())
+        w.I = intensityPlane(frame.copy(w.rect));
+    return w;
+}
+
+// The eye's window for its aperture: 0.44 d wide, 0.36 d high around the eyeball, below the
+// brow (about 0.35 d above the eyeball) and above the cheek.
+QRectF apertureBox(QPointF eyeball, double d)
+{
+    return {eyeball.x() - 0.22 * d, eyeball.y() - 0.18 * d, 0.44 * d, 0.36 * d};
+}
+
+double quantile(std::vector<float> values, double q)
+{
+    if (values.empty())
+        return 0;
+    const size_t i = std::min(values.size() - 1, size_t(q * double(values.size())));
+    std::nth_element(values.begin(), values.begin() + i, values.end());
+    return values[i];
+}
+
+double median(std::vector<float> values)
+{
+    return quantile(std::move(values), 0.5);
+}
+
+// The thickness of the dark across the window's middle: over the columns within `half` of its
+// middle column, how many pixels each holds darker than `level`, mean over the columns. Between
+// the lids: the iris and pupil, the lashes' line alone when they are shut; between the lips: the
+// mouth's inside. With `ramp` > 0 a pixel counts in part
+// within ramp / 2 of the level, so that sensor noise on pixels near it does not make the count
+// jump.
+double darkThickness(const Window &w, double level, int half, double ramp = 0)
+{
+    const int mid = w.I.size.width() / 2;
+    double sum = 0;
+    int columns = 0;
+    for (int x = std::max(0, mid - half); x <= std::min(w.I.size.width() - 1, mid + half); ++x, ++columns) {
+        for (int y = 0; y < w.I.size.height(); ++y) {
+            const double below = level - w.I.at(x, y);
+            sum += ramp > 0 ? std::clamp(below / ramp + 0.5, 0.0, 1.0) : below > 0 ? 1.0 : 0.0;
+        }
+    }
+    return columns > 0 ? sum / columns : 0.0;
+}
+
+// The mouth's height in the middle of the mouth: over the central third of `seedBox`'s
+// columns, the span from the first to the last edge pixel of `grown` (the edge regions grown
+// from the seed), median over the columns; 0 when no column has an edge.
+double centralHeight(const Mask &grown, const QRect &seedBox)
+{
+    std::vector<float> spans;
+    const int x0 = std::max(0, seedBox.left() + seedBox.width() / 3);
+    const int x1 = std::min(grown.size.width() - 1, seedBox.left() + 2 * seedBox.width() / 3);
+    for (int x = x0; x <= x1; ++x) {
+        int top = -1, bottom = -1;
+        for (int y = 0; y < grown.size.height(); ++y) {
+            if (grown.at(x, y)) {
+                top = top < 0 ? y : top;
+                bottom = y;
+            }
+        }
+        if (top >= 0)
+            spans.push_back(float(bottom - top + 1));
+    }
+    return median(std::move(spans));
+}
+
+// How far the mouth's relative edges wander on a still mouth (sensor noise).
+constexpr double kMouthNoise = 0.1;
+
+// Thesis chapter 6 on what the neutral face reserved (TrackingSeed): t1, the eyeball regions
+// and their distance d, the edge thresholds and the mouth region R_Mouth. The first frame
+// measured is the neutral one: its eyeballs, the dark between its lids and its mouth's edges
+// are what later frames are compared with.
 class ClassicMethod : public TrackingMethod
 {
 public:
@@ -24,14 +110,12 @@ public:
         : m_seed(neutral.tracking)
         , m_neutralPoints(neutral.face.points())
     {
-        for (int k = 0; k < 2; ++k)
-            m_eyes[k] = m_seed.eyeballs[k];
-        m_mouth = m_seed.mouth;
-        m_d = m_seed.d > 0 ? m_seed.d : QLineF(m_eyes[0], m_eyes[1]).length();
+        m_d = m_seed.d > 0 ? m_seed.d : QLineF(m_seed.eyeballs[0], m_seed.eyeballs[1]).length();
         for (int k = 0; k < 2; ++k) {
-            const double r = std::max(2.0, m_seed.eyeballRadius[k]);
-            m_eyeBoxes[k] = QRectF(m_eyes[k] - QPointF(1.6 * r, r), QSizeF(3.2 * r, 2 * r));
+            m_radius[k] = std::clamp(m_seed.eyeballRadius[k], 0.04 * m_d, 0.12 * m_d);
+            m_neutralEyes[k] = m_seed.eyeballs[k];
         }
+        forget();
         m_stable = {pt::idx("3.6"), pt::idx("3.5")};
     }
 
@@ -40,47 +124,114 @@ public:
     void forget() override
     {
         for (int k = 0; k < 2; ++k)
-            m_eyes[k] = m_seed.eyeballs[k];
-        m_mouth = m_seed.mouth;
+            m_eyes[k] = m_neutralEyes[k];
     }
 
     FaceMeasurement measure(const QImage &frame) override
     {
         FaceMeasurement m;
         m.stable = m_stable;
-        const double d = m_d;
-        const QPointF mid = (m_eyes[0] + m_eyes[1]) / 2;
-        // The working crop: the face around the eyes and the mouth.
-        const QRect crop
-            = QRectF(mid.x() - 1.5 * d, mid.y() - d, 3 * d, 3.2 * d).toAlignedRect().intersected(frame.rect());
-        if (crop.width() < 8 || crop.height() < 8)
+        if (frame.isNull())
             return m;
-        const Plane I = intensityPlane(frame.copy(crop));
-        const QPointF origin = crop.topLeft();
+        trackEyePair(frame);
+        if (!m_haveReference)
+            trackEyePair(frame); // from where the neutral's eyeballs were found: the place later frames settle on
 
-        // 6.2 steps 2-5: B1' (dark: I <= t1) around each old eyeball, the region grown from it.
-        struct EyeFound
-        {
-            bool ok = false;
-            QRectF box;
-            QPointF centre;
-        } eyes[2];
+        // The head's motion since the neutral frame, from the eyeballs (thesis 6.4: the face
+        // moves with them); the reserved regions are carried along.
+        std::array<QPointF, kPointCount> now = m_neutralPoints;
+        now[pt::idx("3.6")] = m_eyes[0];
+        now[pt::idx("3.5")] = m_eyes[1];
+        std::array<QPointF, kPointCount> eyesAt = m_neutralPoints;
+        eyesAt[pt::idx("3.6")] = m_neutralEyes[0];
+        eyesAt[pt::idx("3.5")] = m_neutralEyes[1];
+        const HeadMotion head = fitHeadMotion(eyesAt, now, m_stable);
+        const double scale = head.scale();
+
+        double openness[2] = {1.0, 1.0};
         for (int k = 0; k < 2; ++k) {
-            const QPointF c = m_eyes[k] - origin;
-            const QRect window = QRectF(c.x() - 0.4 * d, c.y() - 0.3 * d, 0.8 * d, 0.6 * d)
-                                     .toAlignedRect()
-                                     .intersected(QRect(QPoint(0, 0), I.size));
-            if (window.isEmpty())
+            const Window w = intensityWindow(frame, apertureBox(m_eyes[k], m_d * scale));
+            if (w.rect.isEmpty())
                 continue;
-            Mask dark {window.size(), std::vector<std::uint8_t>(size_t(window.width()) * window.height(), 0)};
-            for (int y = 0; y < window.height(); ++y)
-                for (int x = 0; x < window.width(); ++x)
-                    dark.at(x, y) = I.at(window.left() + x, window.top() + y) <= m_seed.t1 ? 1 : 0;
+            if (!m_haveReference) {
+                m_eyeLevel[k] = (median(w.I.values) + quantile(w.I.values, 0.03)) / 2;
+                m_eyeDarkness[k] = darkThickness(w, m_eyeLevel[k], int(m_radius[k] * scale));
+            }
+            const double dark = darkThickness(w, m_eyeLevel[k], int(m_radius[k] * scale));
+            openness[k] = m_eyeDarkness[k] > 0 ? std::clamp(dark / m_eyeDarkness[k], 0.0, 2.0) : 1.0;
+        }
+
+        if (!m_haveReference)
+            placeMouth(frame);
+        const MouthFound mouth = trackMouth(frame, head);
+        if (!m_haveReference) {
+            m_mouthEdges = mouth.edges;
+            m_mouthWidth = mouth.width;
+            m_haveReference = true;
+        }
+        // The opening: the dark between the lips in the mouth's middle (the gap's thickness,
+        // 0 when shut), plus the growth of the middle's Sobel edges (the inner lips, the teeth:
+        // they also see a gap the teeth fill) relative to the neutral's, above the least seen
+        // so far (the neutral frame may show the mouth parted). A mouth opened wide about
+        // doubles its edges; its lips' gap is then about 0.15 d.
+        double opening = mouth.gap;
+        if (m_mouthEdges > 0) {
+            const double v = mouth.edges / m_mouthEdges;
+            // Sensor noise moves v by a few hundredths from frame to frame: the floor follows
+            // only drops beyond it, or it would sink with the noise and lift a still mouth.
+            m_mouthShut = std::min(m_mouthShut, v + kMouthNoise);
+            // Capped: a mouth shut on the neutral frame has few edges to grow from.
+            opening += 0.15 * m_d * scale * std::clamp(v - m_mouthShut, 0.0, 2.0);
+        }
+        const double widening = mouth.found ? mouth.width - m_mouthWidth : 0.0;
+
+        // 6.4: the points. The head carries the neutral face; the lids and the mouth move by
+        // what was measured.
+        for (int i = 0; i < kPointCount; ++i)
+            m.points[i] = head.map(m_neutralPoints[i]);
+        auto at = [&](const char *id) -> QPointF & { return m.points[pt::idx(id)]; };
+        at("3.6") = m_eyes[0];
+        at("3.5") = m_eyes[1];
+        const char *lids[2][2] = {{"3.2", "3.4"}, {"3.1", "3.3"}};
+        for (int k = 0; k < 2; ++k) {
+            QPointF &upper = at(lids[k][0]);
+            QPointF &lower = at(lids[k][1]);
+            const QPointF shut = (lower - upper) * ((1.0 - openness[k]) / 2.0);
+            upper += shut;
+            lower -= shut;
+        }
+        at("2.3") = at("2.2") + QPointF(0, opening);
+        at("8.2") += QPointF(0, opening);
+        at("8.4") -= QPointF(widening / 2, 0);
+        at("8.3") += QPointF(widening / 2, 0);
+        m.found = true;
+        // The old pair standing in (a blink, a lash line taken for an eyeball) is still the face.
+        m.confidence = 0.5 * (m_pairFound ? 1.0 : 0.8) * (mouth.found ? 1.0 : 0.6) + 0.2;
+        return m;
+    }
+
+private:
+    // 6.2 steps 2-5: B1' (dark: I <= t1) around each old eyeball, the regions grown from it, the
+    // eyeballs in them; step 4: the pair must still look like the eye pair (distance, tilt, a
+    // small step from the pair before), else the old pair stands in.
+    void trackEyePair(const QImage &frame)
+    {
+        QPointF found[2];
+        bool ok[2] = {false, false};
+        const double d = m_d;
+        for (int k = 0; k < 2; ++k) {
+            const Window w
+                = intensityWindow(frame, QRectF(m_eyes[k].x() - 0.3 * d, m_eyes[k].y() - 0.2 * d, 0.6 * d, 0.4 * d));
+            if (w.rect.width() < 3 || w.rect.height() < 3)
+                continue;
+            Mask dark {w.I.size, std::vector<std::uint8_t>(w.I.values.size(), 0)};
+            for (size_t i = 0; i < dark.values.size(); ++i)
+                dark.values[i] = w.I.values[i] <= m_seed.t1 ? 1 : 0;
             std::vector<int> labels;
             const std::vector<Region> regions = growRegions(dark, 1, &labels);
-            const QPointF seed = c - QPointF(window.topLeft());
+            const QPointF seed = m_eyes[k] - QPointF(w.rect.topLeft());
             int best = -1;
-            double bestDistance = 0.3 * d;
+            double bestDistance = 0.15 * d;
             for (int i = 0; i < int(regions.size()); ++i) {
                 const double dist = QLineF(regions[i].centroid, seed).length();
                 if (regions[i].area >= 3 && dist < bestDistance) {
@@ -93,132 +244,172 @@ public:
             Mask region {dark.size, std::vector<std::uint8_t>(dark.values.size(), 0)};
             for (size_t i = 0; i < labels.size(); ++i)
                 region.values[i] = labels[i] == best + 1 ? 1 : 0;
-            const Eyeball ball = detectEyeball(region, regions[best].box, 0.8);
-            eyes[k].ok = true;
-            eyes[k].box = QRectF(regions[best].box).translated(window.topLeft() + origin);
-            eyes[k].centre = ball.centre + QPointF(window.topLeft()) + origin;
+            // The eyeball is searched for near the old one only: a region merged with a brow or
+            // a rim would otherwise cost a search over all of it.
+            const double r = m_radius[k];
+            const QRect near = QRectF(seed.x() - 1.5 * r, seed.y() - 1.5 * r, 3 * r, 3 * r).toAlignedRect();
+            const Eyeball ball = detectEyeball(region, regions[best].box.intersected(near), 0.8);
+            // A shut eye leaves the lashes' line: no eyeball in it.
+            if (ball.radius < 0.5 * r)
+                continue;
+            found[k] = ball.centre + QPointF(w.rect.topLeft()) + QPointF(0.5, 0.5);
+            ok[k] = true;
         }
-        // Step 4: the pair must still look like an eye pair (distance and tilt); else the old
-        // pair stands in.
-        bool pair = eyes[0].ok && eyes[1].ok;
-        if (pair) {
-            const QLineF line(eyes[0].centre, eyes[1].centre);
+        m_pairFound = false;
+        if (ok[0] && ok[1]) {
+            const QLineF line(found[0], found[1]);
+            const QLineF old(m_eyes[0], m_eyes[1]);
             const double tilt = std::abs(std::atan2(line.dy(), line.dx())) * 180.0 / std::numbers::pi;
-            pair = line.length() > 0.7 * d && line.length() < 1.3 * d && tilt < 20.0 && line.dx() > 0;
+            // The eyes move together: a head turns, nods and leans a little between frames. One
+            // eye stepping alone has lost its eyeball to a lash line, a brow or a rim.
+            const QPointF step0 = found[0] - m_eyes[0], step1 = found[1] - m_eyes[1];
+            m_pairFound = line.dx() > 0 && tilt < 20.0 && std::abs(line.length() - old.length()) < 0.1 * d
+                && QLineF(step0, QPointF()).length() < 0.15 * d && QLineF(step1, QPointF()).length() < 0.15 * d
+                && QLineF(step0, step1).length() < 0.06 * d;
         }
-        if (pair) {
+        if (!m_haveReference) {
+            // The neutral frame: the eyeballs found on it are where later frames start from
+            // (the detection's may lie a pixel or more off on the pixels found here).
             for (int k = 0; k < 2; ++k) {
-                m_eyes[k] = eyes[k].centre;
-                m_eyeBoxes[k] = eyes[k].box;
+                if (ok[k])
+                    m_eyes[k] = m_neutralEyes[k] = found[k];
             }
+            m_pairFound = ok[0] && ok[1];
+        } else if (m_pairFound) {
+            m_eyes[0] = found[0];
+            m_eyes[1] = found[1];
         }
-
-        // 6.3: the Sobel image thresholded by the part below Div_NM, grown from the old mouth region.
-        const QRectF old = m_mouth.translated(-origin);
-        const QRect mouthWindow
-            = old.adjusted(-0.35 * old.width(), -0.6 * old.height(), 0.35 * old.width(), 0.9 * old.height())
-                  .toAlignedRect()
-                  .intersected(QRect(QPoint(0, 0), I.size));
-        bool mouthFound = false;
-        if (mouthWindow.width() > 4 && mouthWindow.height() > 4) {
-            Plane sub {mouthWindow.size(), std::vector<float>(size_t(mouthWindow.width()) * mouthWindow.height())};
-            for (int y = 0; y < sub.size.height(); ++y)
-                for (int x = 0; x < sub.size.width(); ++x)
-                    sub.at(x, y) = I.at(mouthWindow.left() + x, mouthWindow.top() + y);
-            const Plane strength = sobelEdges(sub);
-            double threshold = m_seed.edgeThresholds[3];
-            if (!(threshold > 0)) {
-                double sum = 0, sq = 0;
-                for (float v : strength.values) {
-                    sum += v;
-                    sq += double(v) * v;
-                }
-                const double n = double(strength.values.size());
-                threshold = sum / n + std::sqrt(std::max(0.0, sq / n - (sum / n) * (sum / n)));
-            }
-            Mask edges {sub.size, std::vector<std::uint8_t>(sub.values.size(), 0)};
-            for (size_t i = 0; i < edges.values.size(); ++i)
-                edges.values[i] = strength.values[i] > threshold ? 1 : 0;
-            std::vector<int> labels;
-            const std::vector<Region> regions = growRegions(edges, 1, &labels);
-            // Seeds: the old region's central half.
-            const QRectF seedBox
-                = old.translated(-QPointF(mouthWindow.topLeft()))
-                      .adjusted(0.2 * old.width(), 0.25 * old.height(), -0.2 * old.width(), -0.25 * old.height());
-            QRect grown;
-            for (const Region &r : regions) {
-                if (r.area >= 4 && QRectF(r.box).intersects(seedBox))
-                    grown = grown.united(r.box);
-            }
-            if (!grown.isEmpty() && grown.width() > 0.3 * old.width() && grown.width() < 2.0 * old.width()) {
-                m_mouth = QRectF(grown).translated(QPointF(mouthWindow.topLeft()) + origin);
-                mouthFound = true;
-            }
-        }
-
-        // 6.4: the points. The head moves with the eyeballs; the rest of the face follows it.
-        std::array<QPointF, kPointCount> neutralAtEyes = m_neutralPoints;
-        const HeadMotion head = fitHeadMotion(neutralEyes(), eyesNow(), QVector<int> {pt::idx("3.6"), pt::idx("3.5")});
-        for (int i = 0; i < kPointCount; ++i)
-            neutralAtEyes[i] = head.map(m_neutralPoints[i]);
-        m.points = neutralAtEyes;
-        auto set = [&](const char *id, QPointF p) { m.points[pt::idx(id)] = p; };
-        const char *ids[2][5] = {{"3.6", "3.12", "3.8", "3.2", "3.4"}, {"3.5", "3.11", "3.7", "3.1", "3.3"}};
-        for (int k = 0; k < 2; ++k) {
-            const QRectF &b = m_eyeBoxes[k];
-            set(ids[k][0], m_eyes[k]);
-            set(ids[k][1], QPointF(k == 0 ? b.left() : b.right(), m_eyes[k].y()));
-            set(ids[k][2], QPointF(k == 0 ? b.right() : b.left(), m_eyes[k].y()));
-            set(ids[k][3], QPointF(m_eyes[k].x(), b.top()));
-            set(ids[k][4], QPointF(m_eyes[k].x(), b.bottom() + 1));
-        }
-        const QRectF &mb = m_mouth;
-        const double cy = mb.center().y();
-        set("8.4", QPointF(mb.left(), cy));
-        set("8.3", QPointF(mb.right() + 1, cy));
-        set("8.9", QPointF(mb.center().x() - mb.width() / 6, mb.top()));
-        set("8.10", QPointF(mb.center().x() + mb.width() / 6, mb.top()));
-        set("8.1", QPointF(mb.center().x(), mb.top()));
-        set("8.2", QPointF(mb.center().x(), mb.bottom() + 1));
-        // The inner lips: the dark rows (I <= t1) across the mouth's middle third.
-        double gapTop = cy, gapBottom = cy;
-        bool gap = false;
-        const QRect inner = mb.translated(-origin).toAlignedRect().intersected(QRect(QPoint(0, 0), I.size));
-        for (int y = inner.top(); y <= inner.bottom(); ++y) {
-            double sum = 0;
-            int n = 0;
-            for (int x = inner.left() + inner.width() / 3; x < inner.left() + 2 * inner.width() / 3; ++x, ++n)
-                sum += I.at(x, y);
-            if (n > 0 && sum / n <= m_seed.t1) {
-                gapTop = gap ? gapTop : y + origin.y();
-                gapBottom = y + 1 + origin.y();
-                gap = true;
-            }
-        }
-        set("2.2", QPointF(mb.center().x(), gapTop));
-        set("2.3", QPointF(mb.center().x(), gapBottom));
-        m.found = true;
-        m.confidence = 0.5 * (pair ? 1.0 : 0.5) * (mouthFound ? 1.0 : 0.6) + 0.2;
-        return m;
     }
 
-private:
-    std::array<QPointF, kPointCount> neutralEyes() const { return m_neutralPoints; }
-    std::array<QPointF, kPointCount> eyesNow() const
+    struct MouthFound
     {
-        std::array<QPointF, kPointCount> p = m_neutralPoints;
-        p[pt::idx("3.6")] = m_eyes[0];
-        p[pt::idx("3.5")] = m_eyes[1];
-        return p;
+        bool found = false;
+        double height = 0; // in the mouth's middle, frame pixels
+        double width = 0;
+        double edges = 0; // Sobel strength in the mouth's middle, per pixel
+        double gap = 0; // the dark between the lips, frame pixels
+    };
+
+    // The neutral frame's mouth: R_Mouth where it holds the lip line (the darkest row below the
+    // eye pair, mouthRowContrast()), else a box of a mouth's size on that line.
+    void placeMouth(const QImage &frame)
+    {
+        m_mouthBox = m_seed.mouth;
+        const QPointF mid = (m_eyes[0] + m_eyes[1]) / 2;
+        const double d = QLineF(m_eyes[0], m_eyes[1]).length();
+        const Window w = intensityWindow(frame, QRectF(mid.x() - 0.6 * d, mid.y() - 0.1 * d, 1.2 * d, 1.8 * d));
+        if (w.rect.isEmpty())
+            return;
+        double row = 0;
+        const QPointF o(w.rect.topLeft());
+        if (mouthRowContrast(w.I, m_eyes[0] - o, m_eyes[1] - o, &row) < 0.5 * kMinMouthRowContrast)
+            return;
+        const QPointF lip = mid + QPointF(0, row);
+        if (m_mouthBox.adjusted(0, -0.1 * m_mouthBox.height(), 0, 0.1 * m_mouthBox.height()).contains(lip)
+            && std::abs(m_mouthBox.center().x() - mid.x()) < 0.1 * d)
+            return;
+        m_mouthBox = QRectF(lip.x() - 0.3 * d, lip.y() - 0.12 * d, 0.6 * d, 0.24 * d);
+    }
+
+    // 6.3: the Sobel image thresholded by the reserved edge threshold of the part below Div_NM,
+    // the regions grown from the reserved R_Mouth (carried by the head), their extent.
+    MouthFound trackMouth(const QImage &frame, const HeadMotion &head)
+    {
+        MouthFound out;
+        const QRectF reserved = m_mouthBox;
+        const double s = head.scale();
+        const QPointF centre = head.map(reserved.center());
+        const QSizeF size = reserved.size() * s;
+        const QRectF mapped(centre - QPointF(size.width(), size.height()) / 2, size);
+        const QRectF area = mapped.adjusted(
+            -0.3 * size.width(), -0.6 * size.height(), 0.3 * size.width(), 1.2 * size.height() + 0.25 * m_d * s);
+        const Window w = intensityWindow(frame, area);
+        if (w.rect.width() < 5 || w.rect.height() < 5)
+            return out;
+        const Plane strength = sobelEdges(w.I);
+        double threshold = m_seed.edgeThresholds[3];
+        if (!(threshold > 0)) {
+            double sum = 0, sq = 0;
+            for (float v : strength.values) {
+                sum += v;
+                sq += double(v) * v;
+            }
+            const double n = double(strength.values.size());
+            threshold = sum / n + std::sqrt(std::max(0.0, sq / n - (sum / n) * (sum / n)));
+        }
+        Mask edges {strength.size, std::vector<std::uint8_t>(strength.values.size(), 0)};
+        for (size_t i = 0; i < edges.values.size(); ++i)
+            edges.values[i] = strength.values[i] > threshold ? 1 : 0;
+        std::vector<int> labels;
+        const std::vector<Region> regions = growRegions(edges, 1, &labels);
+        // Seeds: the reserved region's central part.
+        const QRect seedBox
+            = mapped.translated(-QPointF(w.rect.topLeft()))
+                  .adjusted(0.2 * size.width(), 0.2 * size.height(), -0.2 * size.width(), -0.2 * size.height())
+                  .toAlignedRect();
+        std::vector<bool> keep(regions.size() + 1, false);
+        QRect grownBox;
+        for (const Region &r : regions) {
+            if (r.area >= 4 && r.box.intersects(seedBox)) {
+                keep[size_t(r.label)] = true;
+                grownBox = grownBox.united(r.box);
+            }
+        }
+        Mask grown {edges.size, std::vector<std::uint8_t>(edges.values.size(), 0)};
+        for (size_t i = 0; i < labels.size(); ++i)
+            grown.values[i] = labels[i] > 0 && keep[size_t(labels[i])] ? 1 : 0;
+        out.height = centralHeight(grown, seedBox.adjusted(-seedBox.width() / 2, 0, seedBox.width() / 2, 0));
+        out.width = grownBox.width();
+        out.found = out.height > 0;
+        // The mouth's middle: 0.4 d wide, from above the lip line down to where an open mouth's
+        // lower lip reaches. Opening darkens it (the gap) and adds edges (the inner lips, the teeth).
+        const double dd = m_d * s;
+        const QRect band = QRectF(centre.x() - 0.2 * dd, centre.y() - 0.12 * dd, 0.4 * dd, 0.45 * dd)
+                               .toAlignedRect()
+                               .translated(-w.rect.topLeft())
+                               .intersected(QRect(QPoint(1, 1), w.I.size - QSize(2, 2)));
+        if (band.isEmpty())
+            return out;
+        std::vector<float> values;
+        values.reserve(size_t(band.width()) * band.height());
+        double edgeSum = 0;
+        for (int y = band.top(); y <= band.bottom(); ++y) {
+            for (int x = band.left(); x <= band.right(); ++x) {
+                edgeSum += strength.at(x, y);
+                values.push_back(w.I.at(x, y));
+            }
+        }
+        if (!m_haveReference)
+            m_mouthLevel = median(values);
+        out.edges = edgeSum / double(values.size());
+        if (!m_haveReference)
+            m_gapLevel = (m_mouthLevel + quantile(values, 0.03)) / 2;
+        {
+            Window middle;
+            middle.I = Plane {band.size(), std::vector<float>(values.begin(), values.end())};
+            out.gap = darkThickness(middle, m_gapLevel, int(0.1 * dd), m_mouthLevel - m_gapLevel);
+        }
+        return out;
     }
 
     TrackingSeed m_seed;
     std::array<QPointF, kPointCount> m_neutralPoints;
     QPointF m_eyes[2];
-    QRectF m_eyeBoxes[2];
-    QRectF m_mouth;
+    QPointF m_neutralEyes[2]; // the eyeballs on the neutral frame
+    double m_radius[2] = {1, 1};
     double m_d = 0;
+    bool m_pairFound = false;
     QVector<int> m_stable;
+    // Measured on the neutral (first) frame.
+    bool m_haveReference = false;
+    double m_eyeLevel[2] = {0, 0};
+    double m_eyeDarkness[2] = {0, 0};
+    double m_mouthWidth = 0;
+    double m_mouthLevel = 0;
+    double m_mouthEdges = 0;
+    double m_gapLevel = 0;
+    double m_mouthShut = 1.0; // the least relative edges seen (plus kMouthNoise)
+    QRectF m_mouthBox;
 };
 
 } // namespace

@@ -30,8 +30,11 @@ std::unique_ptr<TrackingMethod> makeLandmarkMethod(const DetectionResult &neutra
 
 // Thesis chapter 6 on the neutral detection's TrackingSeed: eyes by region growing from the
 // reserved eyeballs on the t1-thresholded intensity, checked as an eye pair (the old pair stands
-// in when none is found); the mouth region grown from the reserved one on the Sobel image
-// thresholded by the reserved edge thresholds. nullptr with *error when the seed is not valid.
+// in when none is found), each eye's aperture from the dark between its lids; the mouth region
+// grown from the reserved one (carried by the head) on the Sobel image thresholded by the
+// reserved edge threshold, its opening from the dark between the lips and the growth of the
+// mouth's darkness and edges. The first frame measured must be the neutral one: later frames
+// are compared with it. nullptr with *error when the seed is not valid.
 std::unique_ptr<TrackingMethod> makeClassicMethod(const DetectionResult &neutral, QString *error);
 
 } // namespace toonface

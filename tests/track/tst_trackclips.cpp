@@ -69,17 +69,19 @@ private Q_SLOTS:
         QVERIFY2(a.mouthCorrelation >= 0.9, qPrintable(QString::number(a.mouthCorrelation)));
         QCOMPARE(a.blinksFound, a.referenceBlinks);
 
-        // The classic method, reported beside (thesis ch. 6: no accuracy promised).
+        // The classic method (thesis ch. 6): every clip's face is found by it, the blinks with no
+        // extra one, the mouth's opening follows the reference, less closely than the landmarks
+        // (0.76-0.83 on the four clips).
         options.tracker.method = DetectionMethod::Classic;
         const TrackResult classic = trackVideo(path, options);
-        if (classic.status == TrackStatus::Ok) {
-            const TrackAccuracy c = compareSignals(trackedSignals(classic), *reference, classic.fps);
-            qInfo("%s classic: mouth r = %.3f, eyes r = %.3f, blinks %d of %d (%d extra)", qPrintable(clip),
-                c.mouthCorrelation, c.eyeCorrelation, c.blinksFound, c.referenceBlinks, c.extraBlinks);
-            QCOMPARE(classic.frames.size(), track.frames.size());
-        } else {
-            qInfo("%s classic: %s", qPrintable(clip), qPrintable(classic.error));
-        }
+        QVERIFY2(classic.status == TrackStatus::Ok, qPrintable(classic.error));
+        const TrackAccuracy c = compareSignals(trackedSignals(classic), *reference, classic.fps);
+        qInfo("%s classic: mouth r = %.3f, eyes r = %.3f, blinks %d of %d (%d extra)", qPrintable(clip),
+            c.mouthCorrelation, c.eyeCorrelation, c.blinksFound, c.referenceBlinks, c.extraBlinks);
+        QCOMPARE(classic.frames.size(), track.frames.size());
+        QVERIFY2(c.mouthCorrelation >= 0.65, qPrintable(QString::number(c.mouthCorrelation)));
+        QCOMPARE(c.blinksFound, c.referenceBlinks);
+        QCOMPARE(c.extraBlinks, 0);
     }
 
     void trackJsonHasTheContract()
