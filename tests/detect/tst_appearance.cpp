@@ -6,6 +6,7 @@
 #include "face/fapu.h"
 #include "render/style.h"
 #include "render/svgface.h"
+#include "shareddata.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -23,11 +24,7 @@ namespace {
 
 const QString kGracePath = QStringLiteral("/usr/share/matplotlib/mpl-data/sample_data/grace_hopper.jpg");
 
-QString sharedFacesDir()
-{
-    const QString env = qEnvironmentVariable("TOONFACE_DATA_DIR");
-    return QDir(env.isEmpty() ? QStringLiteral(TOONFACE_SHARED_DATA) : env).filePath(QStringLiteral("faces"));
-}
+using testing::sharedFacesDir;
 
 AppearanceFindings find(const DrawnFaceOptions &o)
 {

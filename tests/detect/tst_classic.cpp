@@ -1,6 +1,7 @@
 #include "detect/classic.h"
 #include "detect/detector.h"
 #include "detect/landmarkmap.h"
+#include "shareddata.h"
 
 #include "testphotos.h"
 
@@ -89,11 +90,7 @@ DrawnFace drawFace(bool lightIrises = false)
 
 namespace {
 
-QString sharedFacesDir()
-{
-    const QString env = qEnvironmentVariable("TOONFACE_DATA_DIR");
-    return QDir(env.isEmpty() ? QStringLiteral(TOONFACE_SHARED_DATA) : env).filePath(QStringLiteral("faces"));
-}
+using testing::sharedFacesDir;
 
 } // namespace
 

@@ -1,6 +1,7 @@
 #include "detect/classic.h"
 #include "detect/detector.h"
 #include "detect/landmarkmap.h"
+#include "shareddata.h"
 
 #include <QDir>
 #include <QFile>
@@ -25,11 +26,7 @@ QImage grace()
     return QImage(kGracePath);
 }
 
-QString sharedFacesDir()
-{
-    const QString env = qEnvironmentVariable("TOONFACE_DATA_DIR");
-    return QDir(env.isEmpty() ? QStringLiteral(TOONFACE_SHARED_DATA) : env).filePath(QStringLiteral("faces"));
-}
+using testing::sharedFacesDir;
 
 // Restores an environment variable when the test ends, even when it fails.
 class EnvGuard

@@ -4,9 +4,6 @@
 
 using namespace toonface;
 using namespace toonface::smiltest;
-using test::findId;
-using test::Node;
-using test::parseXml;
 
 // The SMIL SVG export: what it draws and how it animates it, against the timeline evaluator.
 class TestSmilExport : public SmilExportFixture

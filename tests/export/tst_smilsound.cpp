@@ -4,9 +4,6 @@
 
 using namespace toonface;
 using namespace toonface::smiltest;
-using test::findId;
-using test::Node;
-using test::parseXml;
 
 // The SMIL SVG export's sound (embedded, compressed or referenced) and its HTML player.
 class TestSmilSound : public SmilExportFixture

@@ -25,9 +25,6 @@
 
 using namespace toonface;
 using namespace toonface::svgfacetest;
-using test::findId;
-using test::Node;
-using test::parseXml;
 
 Q_DECLARE_METATYPE(toonface::HeadPose)
 

@@ -1,4 +1,5 @@
 #include "io/textgrid.h"
+#include "shareddata.h"
 #include "speech/aligner.h"
 #include "speech/audio.h"
 #include "speech/script.h"
@@ -23,12 +24,6 @@ namespace {
 Script mandarin(const QString &text)
 {
     return parseScript(text, Language::Mandarin).script;
-}
-
-QString sharedData()
-{
-    const QString env = qEnvironmentVariable("TOONFACE_DATA_DIR");
-    return env.isEmpty() ? QStringLiteral(TOONFACE_SHARED_DATA) : env;
 }
 
 // Median and 90th percentile of absolute onset errors, in ms.
@@ -387,7 +382,7 @@ private Q_SLOTS:
         QFETCH(QString, tier);
         QFETCH(QString, script);
         QFETCH(int, firstTruth);
-        const QString dir = sharedData() + QStringLiteral("/speech/");
+        const QString dir = testing::sharedDataDir() + QStringLiteral("/speech/");
         if (!QFile::exists(dir + file))
             QSKIP(qPrintable(QStringLiteral("shared data (speech/%1) not present").arg(file)));
         QString text = script;
@@ -447,7 +442,7 @@ private Q_SLOTS:
         QFETCH(QStringList, effect);
         QFETCH(double, scale);
         QFETCH(double, offset);
-        const QString dir = sharedData() + QStringLiteral("/speech/");
+        const QString dir = testing::sharedDataDir() + QStringLiteral("/speech/");
         if (!QFile::exists(dir + QStringLiteral("SSB00050015_16k.wav")))
             QSKIP("shared data (speech/SSB00050015_16k.wav) not present");
         const QString sox = QStandardPaths::findExecutable(QStringLiteral("sox"));
@@ -524,7 +519,7 @@ private Q_SLOTS:
     {
         QFETCH(double, leadSnr);
         QFETCH(double, humShare);
-        const QString dir = sharedData() + QStringLiteral("/speech/");
+        const QString dir = testing::sharedDataDir() + QStringLiteral("/speech/");
         if (!QFile::exists(dir + QStringLiteral("SSB00050015_16k.wav")))
             QSKIP("shared data (speech/SSB00050015_16k.wav) not present");
         AudioResult audio = loadAudio(dir + QStringLiteral("SSB00050015_16k.wav"));

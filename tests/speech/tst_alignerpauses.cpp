@@ -1,4 +1,5 @@
 #include "io/textgrid.h"
+#include "shareddata.h"
 #include "speech/aligner.h"
 #include "speech/audio.h"
 #include "speech/script.h"
@@ -59,12 +60,6 @@ Audio clause(const TtsResult &spoken, int at, double pause, bool breath, double 
         s += float(sigma * std::sqrt(-2 * std::log(u1)) * std::cos(2 * M_PI * u2));
     }
     return out;
-}
-
-QString sharedData()
-{
-    const QString env = qEnvironmentVariable("TOONFACE_DATA_DIR");
-    return env.isEmpty() ? QStringLiteral(TOONFACE_SHARED_DATA) : env;
 }
 
 } // namespace
@@ -158,7 +153,7 @@ private Q_SLOTS:
     {
         // The AISHELL-3 sentence with silence inserted at a syllable onset (from its
         // TextGrid): every onset where it is without the pause, moved by the pause after it.
-        const QString speech = sharedData() + QStringLiteral("/speech/");
+        const QString speech = testing::sharedDataDir() + QStringLiteral("/speech/");
         const AudioResult loaded = loadAudio(speech + QStringLiteral("SSB00050015_16k.wav"));
         if (!loaded.ok())
             QSKIP("the shared speech recordings are not here");
@@ -210,7 +205,7 @@ private Q_SLOTS:
         // files' own silences) the script does not mark. The warp used to put such a pause at
         // a stop's closure a few syllables away, and a sentence's last syllables landed
         // 0.4-1.9 s late in many rounds.
-        const QString speech = sharedData() + QStringLiteral("/speech/");
+        const QString speech = testing::sharedDataDir() + QStringLiteral("/speech/");
         const QStringList names = {
             QStringLiteral("BAC009S0002W0122"), QStringLiteral("BAC009S0002W0123"), QStringLiteral("SSB00050015_16k")};
         QVector<float> round;

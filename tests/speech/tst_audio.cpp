@@ -1,3 +1,4 @@
+#include "shareddata.h"
 #include "speech/audio.h"
 
 #include <QDir>
@@ -74,12 +75,6 @@ double frequency(const Audio &a)
     for (qsizetype i = from + 1; i < to; ++i)
         ups += a.samples[i - 1] < 0 && a.samples[i] >= 0;
     return ups / (double(to - from) / a.sampleRate);
-}
-
-QString sharedData()
-{
-    const QString env = qEnvironmentVariable("TOONFACE_DATA_DIR");
-    return env.isEmpty() ? QStringLiteral(TOONFACE_SHARED_DATA) : env;
 }
 
 } // namespace
@@ -165,7 +160,7 @@ private Q_SLOTS:
 
     void videoSoundTrack()
     {
-        const QString clip = sharedData() + QStringLiteral("/video/id2_vcd_swwp2s.mpg");
+        const QString clip = testing::sharedDataDir() + QStringLiteral("/video/id2_vcd_swwp2s.mpg");
         if (!QFile::exists(clip))
             QSKIP("shared data (video/id2_vcd_swwp2s.mpg) not present");
         const AudioResult r = loadAudio(clip);
@@ -175,7 +170,7 @@ private Q_SLOTS:
 
     void realRecordingAt48k()
     {
-        const QString path = sharedData() + QStringLiteral("/speech/NST_ID001.wav");
+        const QString path = testing::sharedDataDir() + QStringLiteral("/speech/NST_ID001.wav");
         if (!QFile::exists(path))
             QSKIP("shared data (speech/NST_ID001.wav) not present");
         const AudioResult r = loadAudio(path);

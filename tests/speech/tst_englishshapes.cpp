@@ -1,3 +1,4 @@
+#include "shareddata.h"
 #include "speech/aligner.h"
 #include "speech/audio.h"
 #include "speech/englishshapes.h"
@@ -20,12 +21,6 @@ QString spelling(const QVector<ShapeKey> &keys)
     for (const ShapeKey &k : keys)
         shapes.append(k.shape);
     return shapeSpelling(shapes);
-}
-
-QString sharedData()
-{
-    const QString env = qEnvironmentVariable("TOONFACE_DATA_DIR");
-    return env.isEmpty() ? QStringLiteral(TOONFACE_SHARED_DATA) : env;
 }
 
 } // namespace
@@ -151,7 +146,7 @@ private Q_SLOTS:
     void gridSentenceIsAligned()
     {
         // GRID clip with hand-checked word intervals (units of 1/25000 s).
-        const QString dir = sharedData() + QStringLiteral("/video/");
+        const QString dir = testing::sharedDataDir() + QStringLiteral("/video/");
         if (!QFile::exists(dir + QStringLiteral("swwp2s.align")))
             QSKIP("shared data (video/swwp2s.align) not present");
         QFile f(dir + QStringLiteral("swwp2s.align"));

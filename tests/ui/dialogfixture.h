@@ -1,6 +1,7 @@
 #pragma once
 
 #include "document/document.h"
+#include "shareddata.h"
 #include "speech/audio.h"
 
 #include <QAbstractButton>
@@ -18,8 +19,7 @@ namespace toonface::dialogfixture {
 
 inline QString sharedData()
 {
-    const QString env = qEnvironmentVariable("TOONFACE_DATA_DIR");
-    return env.isEmpty() ? QStringLiteral(TOONFACE_SHARED_DATA) : env;
+    return testing::sharedDataDir();
 }
 
 // The Mandarin recording with its script, or empty when the research data is absent.
