@@ -98,6 +98,10 @@ double centralHeight(const Mask &grown, const QRect &seedBox)
 
 // How far the mouth's relative edges wander on a still mouth (sensor noise).
 constexpr double kMouthNoise = 0.1;
+// The face's look is sampled on a grid this fine; a look correlating less than kLostLikeness
+// with the neutral frame's is not the face.
+constexpr int kLookGrid = 24;
+constexpr double kLostLikeness = 0.5;
 
 // Thesis chapter 6 on what the neutral face reserved (TrackingSeed): t1, the eyeball regions
 // and their distance d, the edge thresholds and the mouth region R_Mouth. The first frame
@@ -167,7 +171,12 @@ public:
         if (!m_haveReference) {
             m_mouthEdges = mouth.edges;
             m_mouthWidth = mouth.width;
+            m_appearance = appearance(frame, HeadMotion {});
             m_haveReference = true;
+        } else if (likeness(appearance(frame, head), m_appearance) < kLostLikeness) {
+            // What the head's place shows is no longer the face: lost (the tracker holds the last
+            // pose); the eyes wait where they were for the face to come back.
+            return m;
         }
         // The opening: the dark between the lips in the mouth's middle (the gap's thickness,
         // 0 when shut), plus the growth of the middle's Sobel edges (the inner lips, the teeth:
@@ -279,6 +288,47 @@ private:
             m_eyes[0] = found[0];
             m_eyes[1] = found[1];
         }
+    }
+
+    // The face's look: the grey levels on a grid over the eyes and the mouth of the neutral
+    // face, carried by `head`.
+    std::vector<float> appearance(const QImage &frame, const HeadMotion &head) const
+    {
+        const QPointF mid = (m_neutralEyes[0] + m_neutralEyes[1]) / 2;
+        const QRectF box(mid.x() - 0.8 * m_d, mid.y() - 0.35 * m_d, 1.6 * m_d, 1.7 * m_d);
+        std::vector<float> out;
+        out.reserve(size_t(kLookGrid) * kLookGrid);
+        for (int v = 0; v < kLookGrid; ++v) {
+            for (int u = 0; u < kLookGrid; ++u) {
+                const QPointF at = head.map(
+                    box.topLeft() + QPointF((u + 0.5) * box.width() / kLookGrid, (v + 0.5) * box.height() / kLookGrid));
+                const QPoint p = at.toPoint();
+                out.push_back(frame.rect().contains(p) ? float(qGray(frame.pixel(p))) : 0.0f);
+            }
+        }
+        return out;
+    }
+
+    // Normalised cross-correlation of two looks: 1 the same up to brightness and contrast, 0 for
+    // nothing in common (or a flat picture).
+    static double likeness(const std::vector<float> &a, const std::vector<float> &b)
+    {
+        if (a.size() != b.size() || a.empty())
+            return 0;
+        double ma = 0, mb = 0;
+        for (size_t i = 0; i < a.size(); ++i) {
+            ma += a[i];
+            mb += b[i];
+        }
+        ma /= double(a.size());
+        mb /= double(b.size());
+        double ab = 0, aa = 0, bb = 0;
+        for (size_t i = 0; i < a.size(); ++i) {
+            ab += (a[i] - ma) * (b[i] - mb);
+            aa += (a[i] - ma) * (a[i] - ma);
+            bb += (b[i] - mb) * (b[i] - mb);
+        }
+        return aa > 0 && bb > 0 ? ab / std::sqrt(aa * bb) : 0.0;
     }
 
     struct MouthFound
@@ -402,6 +452,7 @@ private:
     QVector<int> m_stable;
     // Measured on the neutral (first) frame.
     bool m_haveReference = false;
+    std::vector<float> m_appearance; // the neutral frame's look (appearance())
     double m_eyeLevel[2] = {0, 0};
     double m_eyeDarkness[2] = {0, 0};
     double m_mouthWidth = 0;
