@@ -37,6 +37,11 @@ constexpr double kMaxSkinReach = 1.3;
 constexpr double kRimContrast = 2.0;
 constexpr double kRimEdgeShare = 0.6;
 constexpr double kLensReach = 0.85; // ES0 past the eyes' centres where a frame's outer edge may be
+// A frame's top rim is looked for between these heights above the eye's centre (ES0; and below
+// the brow), and is darker than this share of the skin's luma.
+constexpr double kRimAbove[2] = {0.4, 0.1};
+constexpr double kRimDark = 0.55;
+constexpr double kRimDrift = 0.12; // ES0 a top rim may rise or fall from over the eye's corner to its end
 
 double lumaOf(QRgb p)
 {
@@ -277,6 +282,78 @@ std::optional<double> rimAt(const std::vector<double> &edges, double from, int s
     return std::nullopt;
 }
 
+// Where a dark frame's top rim ends out from an eye, in the photo's x; empty when no rim clearly
+// darker than the skin runs above that eye. Found from the photo alone, not from the face's
+// sides (wide frames reach past the cheek points the landmarks give): seeded at the darkest row
+// above the eye's outer corner (below the brow, above the lashes), the rim is followed column by
+// column outward, within a little of the row it was last seen at, while a pixel darker than
+// halfway from the rim's to the skin's luma shows; it ends at a gap, or where the dark fills the
+// column far above and below the rim (hair or the room beside the face; a rim is thin).
+std::optional<double> topRimEnd(const Pixels &px, const FaceModel &face, bool left, double es0, double skinLuma)
+{
+    const QPointF o = face.point(left ? "3.12" : "3.7"), i = face.point(left ? "3.8" : "3.11");
+    const QPointF ball = face.point(left ? "3.6" : "3.5");
+    const int step = o.x() < i.x() ? -1 : 1;
+    const double brow = face.point(left ? "4.4" : "4.3").y();
+    const int y0 = int(std::ceil(std::max(brow + 0.04 * es0, ball.y() - kRimAbove[0] * es0)));
+    const int y1 = int(std::floor(ball.y() - kRimAbove[1] * es0));
+    if (y1 - y0 < 2)
+        return std::nullopt;
+    // The seed: the darkest row (by its mean over a few columns at the corner).
+    const int cx = int(std::lround(o.x())), width = std::max(2, int(0.05 * es0));
+    double seedLuma = 1e9;
+    int row = -1;
+    for (int y = y0; y <= y1; ++y) {
+        double sum = 0;
+        int n = 0;
+        for (int k = 0; k < width; ++k) {
+            const int x = cx - step * k;
+            if (px.inside(x, y)) {
+                sum += px.luma(x, y);
+                ++n;
+            }
+        }
+        if (n == width && sum / n < seedLuma) {
+            seedLuma = sum / n;
+            row = y;
+        }
+    }
+    if (row < 0 || seedLuma > kRimDark * skinLuma)
+        return std::nullopt;
+    const double dark = seedLuma + 0.5 * (skinLuma - seedLuma);
+    // A rim is smooth (its row moves by a pixel or two a column) and stays near the seed's row.
+    const int near = std::max(1, int(std::lround(0.02 * es0))), far = std::max(near + 2, int(std::lround(0.2 * es0)));
+    const int seedRow = row, drift = std::max(near, int(std::lround(kRimDrift * es0)));
+    const int gap = std::max(2, int(std::lround(0.04 * es0)));
+    const int last = int(std::lround(ball.x() + step * kLensReach * es0));
+    int end = cx, missed = 0;
+    for (int x = cx; step > 0 ? x <= last : x >= last; x += step) {
+        int best = -1;
+        double bestLuma = dark;
+        for (int y = std::max(row - near, seedRow - drift); y <= std::min(row + near, seedRow + drift); ++y) {
+            if (px.inside(x, y) && px.luma(x, y) < bestLuma) {
+                bestLuma = px.luma(x, y);
+                best = y;
+            }
+        }
+        if (best < 0) {
+            if (++missed > gap)
+                break;
+            continue;
+        }
+        // Dark all the way from far above the rim to far below it: not a rim.
+        bool filled = true;
+        for (int y = best - far; y <= best + far && filled; y += std::max(1, far / 4))
+            filled = px.inside(x, y) && px.luma(x, y) < dark;
+        if (filled)
+            break;
+        missed = 0;
+        row = best;
+        end = x;
+    }
+    return end + (step > 0 ? 1.0 : 0.0);
+}
+
 // The lenses' size and place (GlassesFit), from the rims about each eye: the outer rim, the
 // first strong vertical edge out from the eye's outer corner (or the end of a dark frame's top
 // rims, followed from the bridge within the face's sides); the inner rim, between the inner
@@ -302,8 +379,10 @@ GlassesFit measureLenses(const Pixels &px, const FaceModel &face, double es0, do
     for (bool left : {true, false}) {
         const QPointF o = p(left ? "3.12" : "3.7"), i = p(left ? "3.8" : "3.11");
         const QPointF mid = (o + i) / 2.0;
-        const double end = o.x() < i.x() ? double(bar.bounds.left()) : double(bar.bounds.right()) + 1;
+        double end = o.x() < i.x() ? double(bar.bounds.left()) : double(bar.bounds.right()) + 1;
         if (barred) {
+            if (const auto rim = topRimEnd(px, face, left, es0, skinLuma))
+                end = *rim;
             outer.push_back(std::abs(end - mid.x()) / es0);
             outerFromBar[left ? 0 : 1] = true;
         }

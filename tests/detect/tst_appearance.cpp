@@ -386,6 +386,50 @@ private Q_SLOTS:
             qPrintable(QStringLiteral("%1; drawn %2 high").arg(QString::fromUtf8(what)).arg(drawn.height() / es0)));
     }
 
+    // Wide frames reach past the cheek points the landmarks give beside the eyes (10.9 / 10.10
+    // fell inside grace_hopper's frames): the lenses are measured from the rims in the photo, as
+    // wide as they are drawn there, not cut at those points.
+    void wideFramesPastTheCheekPoints_data()
+    {
+        QTest::addColumn<bool>("upperRimsOnly");
+        QTest::newRow("full rims") << false;
+        QTest::newRow("browline") << true;
+    }
+    void wideFramesPastTheCheekPoints()
+    {
+        QFETCH(bool, upperRimsOnly);
+        DrawnFaceOptions o;
+        o.glasses = true;
+        o.upperRimsOnly = upperRimsOnly;
+        o.lensHalfWidth = 0.52;
+        o.lensHalfHeight = 0.28;
+        o.lensDrop = 0.06;
+        const QImage photo = testing::drawnFace(o);
+        FaceModel face = testing::drawnFaceModel();
+        const double es0 = face.fapu().es0;
+        // The cheek points 0.35 ES0 from the eyes' middles: well inside the lenses' outer rims.
+        for (const auto &[cheek, outerCorner, innerCorner] :
+            {std::tuple {"10.10", "3.12", "3.8"}, std::tuple {"10.9", "3.7", "3.11"}}) {
+            const QPointF mid = (face.point(outerCorner) + face.point(innerCorner)) / 2.0;
+            const double out = face.point(outerCorner).x() < face.point(innerCorner).x() ? -1.0 : 1.0;
+            face.setPoint(pt::idx(cheek), QPointF(mid.x() + out * 0.35 * es0, face.point(cheek).y()));
+        }
+        const AppearanceFindings f = findAppearance(photo, face, o.skin);
+        const GlassesFit &lens = f.appearance.lens;
+        const QByteArray what = QStringLiteral("%1: lens %2 x %3, out %4, down %5, bar %6")
+                                    .arg(describe(f))
+                                    .arg(lens.halfWidth, 0, 'f', 3)
+                                    .arg(lens.halfHeight, 0, 'f', 3)
+                                    .arg(lens.outward, 0, 'f', 3)
+                                    .arg(lens.down, 0, 'f', 3)
+                                    .arg(f.bridgedDark, 0, 'f', 2)
+                                    .toUtf8();
+        QVERIFY2(f.appearance.glasses != GlassesShape::None && lens.isSet(), what.constData());
+        // The outer rims where they are (0.52 ES0 out from the eyes' middles), within 0.05 ES0.
+        QVERIFY2(std::abs(lens.halfWidth + lens.outward - o.lensHalfWidth) <= 0.05, what.constData());
+        QVERIFY2(std::abs(lens.halfWidth - o.lensHalfWidth) <= 0.06, what.constData());
+    }
+
     // Brows are drawn as thick as they are: a heavy brow heavier than a fine one.
     void browThickness()
     {
