@@ -20,6 +20,7 @@ namespace {
 constexpr double kDarkRatio = 0.72; // a pixel this much darker than the skin is hair-dark
 constexpr double kSkinChroma = 0.035; // chromaticity distance within which a pixel is skin-coloured
 constexpr double kSkinShade[2] = {0.55, 1.6}; // ... and its luma within these multiples of the skin's
+constexpr double kShineToNeutral = 0.75; // how far toward neutral light a shine on skin may take its colour
 // Hair colours: hues from red through orange to yellow (kHairHues[0] .. 360 and 0 .. kHairHues[1]),
 // and any colour too dark or too grey to have a hue that shows.
 constexpr double kHairHues[2] = {345.0, 55.0};
@@ -57,6 +58,24 @@ bool skinLike(QRgb c, const QColor &skin)
     const double dr = qRed(c) / sum - skin.red() / skinSum, dg = qGreen(c) / sum - skin.green() / skinSum;
     const double shade = lumaOf(c) / std::max(1.0, lumaOf(skin.rgb()));
     return std::hypot(dr, dg) < kSkinChroma && shade > kSkinShade[0] && shade < kSkinShade[1];
+}
+
+// Skin under a shine: brighter than the skin, its chromaticity on the way from the skin's toward
+// neutral light's (a shine adds the light's own colour), at most kShineToNeutral of the way there
+// (white and grey hair lie at its end), and within kSkinChroma of that way.
+bool shineOnSkin(QRgb c, const QColor &skin)
+{
+    const double sum = std::max(1, qRed(c) + qGreen(c) + qBlue(c));
+    const double skinSum = std::max(1, skin.red() + skin.green() + skin.blue());
+    const QPointF s(skin.red() / skinSum, skin.green() / skinSum);
+    const QPointF v = QPointF(1.0 / 3.0, 1.0 / 3.0) - s;
+    const double vv = QPointF::dotProduct(v, v);
+    if (vv < kSkinChroma * kSkinChroma || lumaOf(c) <= lumaOf(skin.rgb()))
+        return false;
+    const QPointF d = QPointF(qRed(c) / sum, qGreen(c) / sum) - s;
+    const double t = QPointF::dotProduct(d, v) / vv;
+    const QPointF off = d - v * t;
+    return t >= 0 && t <= kShineToNeutral && std::hypot(off.x(), off.y()) < kSkinChroma;
 }
 
 class Pixels
@@ -693,7 +712,8 @@ void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor 
     const std::vector<QRgb> crown = band(8, 12, {"11.2", "11.1", "11.3"}, 0.15, 0.5);
     if (crown.empty())
         return;
-    const auto scalp = std::count_if(crown.begin(), crown.end(), [&](QRgb c) { return skinLike(c, skin); });
+    const auto scalp
+        = std::count_if(crown.begin(), crown.end(), [&](QRgb c) { return skinLike(c, skin) || shineOnSkin(c, skin); });
     out->baldScore = double(scalp) / double(crown.size());
     // How far up toward the head's top the forehead's skin reaches (11.1, where the skin up the
     // midline ends, over the hair outline's top h.10, from the brows): on a bald or shaved head
