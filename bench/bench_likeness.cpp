@@ -171,6 +171,60 @@ QJsonObject sheet()
     return result;
 }
 
+// likeness.emotions: each face's cartoon with the five emotions at full and at half intensity
+// (two rows a face), as a PNG to TOONFACE_SHEET (default emotion-sheet.png), for a person to
+// judge whether each reads; the JSON lists the faces drawn.
+QJsonObject emotions()
+{
+    const int cell = 200, label = 16;
+    const double intensities[] = {1.0, 0.5};
+    std::vector<std::pair<QString, std::vector<QImage>>> rows;
+    QJsonArray people;
+    for (const Subject &s : subjects()) {
+        const QImage photo(s.path);
+        if (photo.isNull())
+            continue;
+        DetectOptions options;
+        options.faceAt = s.faceAt;
+        const DetectionResult r = detectFace(photo, options);
+        if (r.status != DetectStatus::Ok)
+            continue;
+        Style style = Style::preset(QStringLiteral("normal"));
+        style.sampleColours(photo, r.face);
+        SvgFace cartoon(r.face, style);
+        cartoon.setFrame(headFrame(r.face));
+        for (double intensity : intensities) {
+            std::vector<QImage> cells;
+            for (Emotion e : kAllEmotions)
+                cells.push_back(rasterizeSvg(cartoon.svg(emotionPose(r.face, e, intensity)), QSize(cell, cell)));
+            rows.emplace_back(QStringLiteral("%1 at %2").arg(s.name).arg(intensity), std::move(cells));
+        }
+        people.append(s.name);
+    }
+    QImage out(
+        int(kAllEmotions.size()) * cell, std::max<int>(1, int(rows.size())) * (cell + label), QImage::Format_RGB32);
+    out.fill(Qt::white);
+    QPainter p(&out);
+    for (size_t i = 0; i < rows.size(); ++i) {
+        const int y = int(i) * (cell + label);
+        QStringList names;
+        for (Emotion e : kAllEmotions)
+            names << emotionName(e);
+        p.setPen(Qt::black);
+        p.drawText(QRect(4, y, out.width() - 8, label), Qt::AlignVCenter,
+            rows[i].first + QStringLiteral(": ") + names.join(QStringLiteral(", ")));
+        for (size_t k = 0; k < rows[i].second.size(); ++k)
+            p.drawImage(int(k) * cell, y + label, rows[i].second[k]);
+    }
+    p.end();
+    const QString path = qEnvironmentVariable("TOONFACE_SHEET", QStringLiteral("emotion-sheet.png"));
+    QJsonObject result;
+    result.insert(QStringLiteral("faces"), people);
+    result.insert(QStringLiteral("sheet"), out.save(path) ? path : QStringLiteral("not written: ") + path);
+    return result;
+}
+
 } // namespace
 
 TOONFACE_BENCHMARK("likeness.sheet", sheet);
+TOONFACE_BENCHMARK("likeness.emotions", emotions);

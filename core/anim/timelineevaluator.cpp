@@ -86,7 +86,8 @@ TimelineEvaluator::TimelineEvaluator(const Timeline &timeline, const FaceModel &
     buildMouth(timeline, face, shapes);
 
     for (Emotion e : kAllEmotions) {
-        // emotionPose is linear in its intensity: cache it once at full intensity.
+        // emotionPose is linear in its intensity's weight (emotionWeight): cache it once at full
+        // intensity.
         const Pose full = emotionPose(face, e, 1.0);
         EmotionCache &cache = m_emotionCache[int(e)];
         for (int i = 0; i < kPointCount; ++i) {
@@ -107,8 +108,10 @@ TimelineEvaluator::TimelineEvaluator(const Timeline &timeline, const FaceModel &
             fadeIn *= shrink;
             fadeOut *= shrink;
         }
-        m_clips.append(
-            {c.start, c.start + fadeIn, c.start + length - fadeOut, c.start + length, c.intensity, int(c.emotion)});
+        // Held at the weight emotionPose gives the clip's intensity; faded in and out from it
+        // along the ease the exports' key splines draw.
+        m_clips.append({c.start, c.start + fadeIn, c.start + length - fadeOut, c.start + length,
+            emotionWeight(c.intensity), int(c.emotion)});
         m_clipStarts.append(c.start);
         endsSoFar = std::max(endsSoFar, c.start + length);
         m_clipEndsSoFar.append(endsSoFar);

@@ -55,7 +55,8 @@ public:
     std::array<QPointF, 4> mouthAt(double t) const;
     // Lid opening from blinks alone: 1 open, 0 shut.
     double blinkOpenAt(double t) const;
-    // The envelope of emotion clip `index` of the timeline's emotionClips() at t (0..intensity).
+    // The envelope of emotion clip `index` of the timeline's emotionClips() at t: the share of the
+    // emotion's full pose drawn, 0..emotionWeight(intensity).
     double emotionEnvelopeAt(qsizetype index, double t) const;
 
     double duration() const { return m_duration; }
@@ -98,7 +99,7 @@ public:
 private:
     struct Envelope
     {
-        double start, fadeInEnd, fadeOutStart, end, intensity;
+        double start, fadeInEnd, fadeOutStart, end, intensity; // intensity: the held weight
         int emotion;
         double at(double t) const;
     };

@@ -47,7 +47,8 @@ const EmotionPreset &emotionPreset(Emotion emotion)
     // 8.4 left mouth corner, 8.9 upper lip, 8.2 lower lip (and with it the jaw).
     //
     // Drawn as a cartoonist draws them, past the small MPEG-4 ranges of a real face, so that
-    // each reads at a glance and still reads at half intensity (the moves are linear); SvgFace
+    // each reads at a glance and still reads at half intensity (which draws 3/4 of each move:
+    // emotionWeight); SvgFace
     // adds the drawn cues that follow these moves (creases, blush: render/svgexpression.h):
     // - smile: corners well up and back, the mouth open on the teeth, lower lids up (the cheeks
     //   push them: the eyes smile), brows lifted a little;
@@ -75,13 +76,21 @@ const EmotionPreset &emotionPreset(Emotion emotion)
     return presets[int(emotion)];
 }
 
+double emotionWeight(double intensity)
+{
+    const double i = std::abs(intensity);
+    const double w = i < 1.0 ? 1.0 - (1.0 - i) * (1.0 - i) : i;
+    return intensity < 0 ? -w : w;
+}
+
 Pose emotionPose(const FaceModel &face, Emotion emotion, double intensity)
 {
+    const double weight = emotionWeight(intensity);
     const double es0 = face.fapu().es0;
     const EmotionPreset &preset = emotionPreset(emotion);
     Pose pose;
     for (const auto &move : preset.moves) {
-        const QPointF d = move.offsetEs0 * es0 * intensity;
+        const QPointF d = move.offsetEs0 * es0 * weight;
         pose.offset[pt::idx(move.id)] += d;
         const char *mirror = mirrorPointId(move.id);
         // 8.9 and 8.2 lie on or follow the centre line; 8.10 follows 8.9 by rule.
@@ -96,15 +105,15 @@ Pose emotionPose(const FaceModel &face, Emotion emotion, double intensity)
         const double cornerY = (face.point("8.4").y() + face.point("8.3").y()) / 2.0;
         const double ownSmile = std::max(0.0, lipLine.y() - cornerY);
         for (const char *id : {"8.4", "8.3"})
-            pose.offset[pt::idx(id)] += QPointF(0, ownSmile * intensity);
+            pose.offset[pt::idx(id)] += QPointF(0, ownSmile * weight);
     }
     if (emotion == Emotion::Sad) {
         const std::array<QPointF, 4> shut = restingMouth(face);
         const char *ids[] = {"8.9", "8.2", "8.4", "8.3"};
         for (int k = 0; k < 4; ++k)
-            pose.offset[pt::idx(ids[k])] += shut[k] * intensity;
+            pose.offset[pt::idx(ids[k])] += shut[k] * weight;
     }
-    const double scale = 1.0 + (preset.eyeOpenScale - 1.0) * intensity;
+    const double scale = 1.0 + (preset.eyeOpenScale - 1.0) * weight;
     pose.leftEyeOpen = scale;
     pose.rightEyeOpen = scale;
     return pose;

@@ -36,7 +36,14 @@ struct EmotionPreset
 
 const EmotionPreset &emotionPreset(Emotion emotion);
 
-// The pose of `emotion` at `intensity` (0..1) on `face`: to be added to a speech pose.
+// How much of a preset's full displacement an intensity draws: 1 - (1 - i)^2 over 0..1, so half
+// intensity draws three quarters of it and a low-key emotion still reads (a cartoon keeps an
+// expression's shape and eases off late); 0 and 1 are unchanged, and past 1 it grows as i does.
+// Odd: a negative intensity draws the opposite.
+double emotionWeight(double intensity);
+
+// The pose of `emotion` at `intensity` (0..1) on `face`: to be added to a speech pose. Linear in
+// emotionWeight(intensity): the full pose times that weight.
 Pose emotionPose(const FaceModel &face, Emotion emotion, double intensity);
 
 // The image-right counterpart of an image-left point ID ("4.6" -> "4.5"), or the ID itself

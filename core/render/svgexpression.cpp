@@ -5,13 +5,15 @@ namespace toonface::svgparts {
 namespace {
 
 // Displacements (ES0) at which a cue is fully drawn, and below which it is not drawn at all, so
-// that the small corner and brow motions of speech draw no lines.
-constexpr double kFrownFull = 0.12; // inner brow ends lowered
-constexpr double kWorryFull = 0.2; // inner ends raised relative to the outer ends
+// that the small corner and brow motions of speech draw no lines. Fully drawn where the emotion's
+// preset (face/emotion.cpp) puts the points at full intensity, so that a cue keeps growing all
+// the way there (half intensity draws 3/4 of the moves: emotionWeight).
+constexpr double kFrownFull = 0.19; // inner brow ends lowered
+constexpr double kWorryFull = 0.34; // inner ends raised relative to the outer ends
 constexpr double kForeheadStart = 0.04; // whole brow raised
-constexpr double kForeheadFull = 0.14;
+constexpr double kForeheadFull = 0.26;
 constexpr double kSmileStart = 0.035; // mouth corners raised (speech's "i" lifts them 0.03)
-constexpr double kSmileFull = 0.14;
+constexpr double kSmileFull = 0.18;
 
 // Sizes in ES0.
 constexpr double kCreaseHalfWidth = 0.028; // a crease's half thickness at full strength

@@ -338,8 +338,13 @@ private Q_SLOTS:
         Timeline t;
         t.addEmotionClip({1.0, 5.0, Emotion::Surprise, 0.8, 1.0, 0.5});
         const TimelineEvaluator e(t, m_face, m_shapes);
-        QVERIFY(std::abs(e.emotionEnvelopeAt(0, time) - envelope) < 1e-12);
-        QVERIFY(distance(e.evaluate(time), emotionPose(m_face, Emotion::Surprise, envelope)) < 1e-9);
+        // Held at the weight the clip's intensity draws (emotionPose's), faded along the ease.
+        const double weight = envelope / 0.8 * emotionWeight(0.8);
+        QVERIFY(std::abs(e.emotionEnvelopeAt(0, time) - weight) < 1e-12);
+        const Pose full = emotionPose(m_face, Emotion::Surprise, 1.0);
+        QVERIFY(distance(e.evaluate(time), Pose::lerp(Pose(), full, weight)) < 1e-9);
+        if (time == 3.0)
+            QVERIFY(distance(e.evaluate(time), emotionPose(m_face, Emotion::Surprise, 0.8)) < 1e-9);
     }
 
     void shortClipsShrinkTheirFades()
@@ -351,8 +356,8 @@ private Q_SLOTS:
         QVERIFY(std::abs(e.emotionEnvelopeAt(0, 0.075) - 0.5) < 1e-12);
         QVERIFY(std::abs(e.emotionEnvelopeAt(0, 0.15) - 1.0) < 1e-12);
         QVERIFY(std::abs(e.emotionEnvelopeAt(0, 0.275) - 0.5) < 1e-12);
-        QCOMPARE(e.emotionEnvelopeAt(1, 1.0), 0.5); // no fade: a step
-        QCOMPARE(e.emotionEnvelopeAt(1, 1.999), 0.5);
+        QCOMPARE(e.emotionEnvelopeAt(1, 1.0), emotionWeight(0.5)); // no fade: a step
+        QCOMPARE(e.emotionEnvelopeAt(1, 1.999), emotionWeight(0.5));
     }
 
     void overlappingEmotionsAdd()

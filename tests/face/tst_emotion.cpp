@@ -72,7 +72,8 @@ private Q_SLOTS:
     }
 
     // Each preset moves its features in the stated directions, clearly at full intensity and
-    // the same way, half as far, at half intensity; both sides mirror each other.
+    // the same way, three quarters as far (emotionWeight), at half intensity; both sides mirror
+    // each other.
     void directions_data()
     {
         QTest::addColumn<double>("intensity");
@@ -84,7 +85,7 @@ private Q_SLOTS:
     {
         QFETCH(double, intensity);
         const FaceModel face = testFace();
-        const double clear = kClear * intensity;
+        const double clear = kClear * emotionWeight(intensity);
 
         // Smile: corners up and back, the mouth open on the teeth, lower lids up, brows a little up.
         {
@@ -102,7 +103,7 @@ private Q_SLOTS:
             const Posed s = posed(face, emotionPose(face, Emotion::Sad, intensity));
             for (bool left : {true, false}) {
                 QVERIFY(s.innerAboveOuter(left) - s.innerAboveOuter0(left) > clear);
-                QVERIFY(s.eyeOpening(left) < s.eyeOpening0(left) * (1 - 0.1 * intensity));
+                QVERIFY(s.eyeOpening(left) < s.eyeOpening0(left) * (1 - 0.1 * emotionWeight(intensity)));
             }
             QVERIFY(s.d("4.2").y() < -clear && s.d("4.1").y() < -clear);
             QVERIFY(s.d("4.6").y() > 0 && s.d("4.5").y() > 0);
@@ -130,8 +131,8 @@ private Q_SLOTS:
             const Posed s = posed(face, emotionPose(face, Emotion::Surprise, intensity));
             for (const char *id : {"4.6", "4.4a", "4.4", "4.2", "4.1", "4.3", "4.3a", "4.5"})
                 QVERIFY(s.d(id).y() < -clear);
-            QVERIFY(s.eyeOpening(true) > s.eyeOpening0(true) * (1 + 0.2 * intensity));
-            QVERIFY(s.eyeOpening(false) > s.eyeOpening0(false) * (1 + 0.2 * intensity));
+            QVERIFY(s.eyeOpening(true) > s.eyeOpening0(true) * (1 + 0.2 * emotionWeight(intensity)));
+            QVERIFY(s.eyeOpening(false) > s.eyeOpening0(false) * (1 + 0.2 * emotionWeight(intensity)));
             QVERIFY(s.d("8.2").y() > 3 * clear);
             QVERIFY(s.d("2.1").y() > 3 * clear); // the chin drops with the lower lip
             QVERIFY(s.mouthWidth() < s.mouthWidth0());
@@ -166,15 +167,27 @@ private Q_SLOTS:
         QVERIFY(smile.at("8.4").y() < face.point("8.4").y());
     }
 
-    void halfIsHalfOfFull()
+    // Half intensity still reads: every move is three quarters of the full one, the same way
+    // (the pose is the full one times emotionWeight); a quarter draws less, and the weight rises
+    // from 0 to 1 without a step or a turn back.
+    void halfStillReads()
     {
+        QCOMPARE(emotionWeight(0.0), 0.0);
+        QCOMPARE(emotionWeight(1.0), 1.0);
+        QCOMPARE(emotionWeight(0.5), 0.75);
+        QCOMPARE(emotionWeight(-0.5), -0.75);
+        for (double i = 0.0; i < 1.5; i += 0.05)
+            QVERIFY(emotionWeight(i + 0.05) > emotionWeight(i));
         const FaceModel face = testFace();
         for (Emotion e : kAllEmotions) {
-            const Pose full = emotionPose(face, e, 1.0), half = emotionPose(face, e, 0.5);
+            const Pose full = emotionPose(face, e, 1.0), half = emotionPose(face, e, 0.5),
+                       quarter = emotionPose(face, e, 0.25);
             for (int i = 0; i < kPointCount; ++i) {
-                QVERIFY(std::abs(half.offset[i].x() - full.offset[i].x() / 2) < 1e-9);
-                QVERIFY(std::abs(half.offset[i].y() - full.offset[i].y() / 2) < 1e-9);
+                QVERIFY(std::abs(half.offset[i].x() - 0.75 * full.offset[i].x()) < 1e-9);
+                QVERIFY(std::abs(half.offset[i].y() - 0.75 * full.offset[i].y()) < 1e-9);
+                QVERIFY(QLineF(QPointF(), quarter.offset[i]).length() <= QLineF(QPointF(), half.offset[i]).length());
             }
+            QVERIFY(std::abs((half.leftEyeOpen - 1.0) - 0.75 * (full.leftEyeOpen - 1.0)) < 1e-9);
         }
     }
 

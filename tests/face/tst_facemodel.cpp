@@ -264,7 +264,7 @@ private Q_SLOTS:
             const Pose none = emotionPose(f, e, 0.0);
             QCOMPARE(none, Pose {});
             for (int i = 0; i < kPointCount; ++i) {
-                QVERIFY(near(half.offset[i], full.offset[i] * 0.5, 1e-9));
+                QVERIFY(near(half.offset[i], full.offset[i] * emotionWeight(0.5), 1e-9));
                 // mirrored: left and right counterparts move with opposite x, same y
                 const char *mirror = mirrorPointId(pointTable()[i].id);
                 const int j = pt::idx(mirror);
