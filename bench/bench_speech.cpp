@@ -475,6 +475,29 @@ TOONFACE_BENCHMARK("speech.plots", [] {
         if (alignmentPlot(audio.audio, r.result, file.truth, title).save(png))
             written.append(png);
     }
+    // The English GRID clip with its word tier.
+    {
+        QFile f(dir + QStringLiteral("/video/swwp2s.align"));
+        const AudioResult audio = loadAudio(dir + QStringLiteral("/video/id2_vcd_swwp2s.mpg"));
+        if (f.open(QIODevice::ReadOnly) && audio.ok()) {
+            QStringList words;
+            std::vector<double> truth;
+            for (const QString &line : QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+                const QStringList cols = line.trimmed().split(QLatin1Char(' '), Qt::SkipEmptyParts);
+                if (cols.size() == 3 && cols[2] != QLatin1String("sil")) {
+                    words.append(cols[2]);
+                    truth.push_back(cols[0].toDouble() / 25000.0);
+                }
+            }
+            const Script s = parseScript(words.join(QLatin1Char(' '))).script;
+            const AlignResult r = alignScript(audio.audio, s);
+            const QString png = plotDir + QStringLiteral("/id2_vcd_swwp2s.png");
+            if (alignmentPlot(
+                    audio.audio, lipsyncResult(s, r, audio.audio.duration()), truth, words.join(QLatin1Char(' ')))
+                    .save(png))
+                written.append(png);
+        }
+    }
     // The synthetic set's recordings (truth from espeak-ng's events), for the voices that
     // slip most.
     quint32 seed = 1;
