@@ -1,9 +1,11 @@
 list(APPEND TOONFACE_CORE_SOURCES
   track/framesource.h
+  track/clocksource.h track/clocksource.cpp
   track/videofilesource.h track/videofilesource.cpp
   track/oneeuro.h
   track/facemeasure.h track/facemeasure.cpp
   track/trackingmethod.h track/landmarkmethod.cpp track/classicmethod.cpp
+  track/facesearch.h track/facesearch.cpp
   track/tracker.h track/tracker.cpp
   track/trackvideo.h track/trackvideo.cpp
   track/retarget.h track/retarget.cpp
