@@ -79,6 +79,17 @@ QImage photoPanel(const QImage &photo, const FaceModel &face, const QRectF &fram
     return panel;
 }
 
+// Saves a sheet to TOONFACE_SHEET (else `fallback` in the working directory); the result lists
+// the faces and where the sheet went.
+QJsonObject sheetResult(const QImage &sheet, const QJsonArray &faces, const QString &fallback)
+{
+    const QString path = qEnvironmentVariable("TOONFACE_SHEET", fallback);
+    QJsonObject result;
+    result.insert(QStringLiteral("faces"), faces);
+    result.insert(QStringLiteral("sheet"), sheet.save(path) ? path : QStringLiteral("not written: ") + path);
+    return result;
+}
+
 QJsonObject sheet()
 {
     const int cell = 260;
@@ -164,11 +175,7 @@ QJsonObject sheet()
         p.drawText(QRect(x + 4, y, 2 * cell - 8, label), Qt::AlignVCenter, labels[i]);
     }
     p.end();
-    const QString path = qEnvironmentVariable("TOONFACE_SHEET", QStringLiteral("likeness-sheet.png"));
-    QJsonObject result;
-    result.insert(QStringLiteral("faces"), people);
-    result.insert(QStringLiteral("sheet"), out.save(path) ? path : QStringLiteral("not written: ") + path);
-    return result;
+    return sheetResult(out, people, QStringLiteral("likeness-sheet.png"));
 }
 
 // likeness.emotions: each face's cartoon with the five emotions at full and at half intensity
@@ -217,11 +224,7 @@ QJsonObject emotions()
             p.drawImage(int(k) * cell, y + label, rows[i].second[k]);
     }
     p.end();
-    const QString path = qEnvironmentVariable("TOONFACE_SHEET", QStringLiteral("emotion-sheet.png"));
-    QJsonObject result;
-    result.insert(QStringLiteral("faces"), people);
-    result.insert(QStringLiteral("sheet"), out.save(path) ? path : QStringLiteral("not written: ") + path);
-    return result;
+    return sheetResult(out, people, QStringLiteral("emotion-sheet.png"));
 }
 
 } // namespace

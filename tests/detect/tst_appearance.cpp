@@ -46,6 +46,19 @@ QString describe(const AppearanceFindings &f)
         .arg(f.hatScore, 0, 'f', 1);
 }
 
+// describe() with the lenses as measured and the dark bar's span.
+QString describeLenses(const AppearanceFindings &f)
+{
+    const GlassesFit &lens = f.appearance.lens;
+    return QStringLiteral("%1: lens %2 x %3, out %4, down %5, bar %6")
+        .arg(describe(f))
+        .arg(lens.halfWidth, 0, 'f', 3)
+        .arg(lens.halfHeight, 0, 'f', 3)
+        .arg(lens.outward, 0, 'f', 3)
+        .arg(lens.down, 0, 'f', 3)
+        .arg(f.bridgedDark, 0, 'f', 2);
+}
+
 // The box of the first two subpaths of a path's data (the lenses of the glasses' layer; the
 // bridge and arms follow), from their points (an ellipse's handles lie within its box).
 QRectF lensBounds(const QString &d)
@@ -358,13 +371,7 @@ private Q_SLOTS:
         o.lensDrop = drop;
         const AppearanceFindings f = find(o);
         const GlassesFit &lens = f.appearance.lens;
-        const QByteArray what = QStringLiteral("%1: lens %2 x %3, out %4, down %5")
-                                    .arg(describe(f))
-                                    .arg(lens.halfWidth, 0, 'f', 3)
-                                    .arg(lens.halfHeight, 0, 'f', 3)
-                                    .arg(lens.outward, 0, 'f', 3)
-                                    .arg(lens.down, 0, 'f', 3)
-                                    .toUtf8();
+        const QByteArray what = describeLenses(f).toUtf8();
         QVERIFY2(f.appearance.glasses != GlassesShape::None && lens.isSet(), what.constData());
         constexpr double kWithin = 0.04;
         QVERIFY2(std::abs(lens.halfWidth - halfWidth) <= kWithin, what.constData());
@@ -416,14 +423,7 @@ private Q_SLOTS:
         }
         const AppearanceFindings f = findAppearance(photo, face, o.skin);
         const GlassesFit &lens = f.appearance.lens;
-        const QByteArray what = QStringLiteral("%1: lens %2 x %3, out %4, down %5, bar %6")
-                                    .arg(describe(f))
-                                    .arg(lens.halfWidth, 0, 'f', 3)
-                                    .arg(lens.halfHeight, 0, 'f', 3)
-                                    .arg(lens.outward, 0, 'f', 3)
-                                    .arg(lens.down, 0, 'f', 3)
-                                    .arg(f.bridgedDark, 0, 'f', 2)
-                                    .toUtf8();
+        const QByteArray what = describeLenses(f).toUtf8();
         QVERIFY2(f.appearance.glasses != GlassesShape::None && lens.isSet(), what.constData());
         // The outer rims where they are (0.52 ES0 out from the eyes' middles), within 0.05 ES0.
         QVERIFY2(std::abs(lens.halfWidth + lens.outward - o.lensHalfWidth) <= 0.05, what.constData());
