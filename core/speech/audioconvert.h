@@ -23,9 +23,7 @@ struct SwrDeleter
 };
 using SwrPtr = std::unique_ptr<SwrContext, SwrDeleter>;
 
-// Below this rate sound cannot carry speech (telephone speech is 8000 Hz); a header claiming
-// less is damaged, and resampling it up to kSpeechSampleRate would make hours from kilobytes.
-constexpr int kMinSampleRate = 4000;
+constexpr int kMinSampleRate = kMinSpeechSampleRate;
 
 // FFmpeg's own log would repeat each problem of a corrupt file on stderr; the errors of the
 // decoders say it once. TOONFACE_FFMPEG_LOG=1 keeps FFmpeg's log for debugging.

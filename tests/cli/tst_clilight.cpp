@@ -1,12 +1,14 @@
-// The light toonface-cli (app/toonface-cli-light.cpp): lipsync of a plain WAV recording runs
-// without loading FFmpeg's codecs, OpenCV, dlib or Qt Gui (their loading alone took ~50 ms of
-// every start), with the full program's output; every other command line is handed over to
-// toonface-cli-full unchanged; a missing toonface-cli-full is a clear error.
+// toonface-cli's launcher and light program (app/CMakeLists.txt): lipsync of a plain WAV
+// recording runs without loading FFmpeg's codecs, OpenCV, dlib or Qt Gui (their loading alone
+// took ~50 ms of every start), with the full program's output; every other command line is
+// handed over to toonface-cli-full unchanged; a missing program is a clear error.
 #include "speech/audio.h"
 #include "speech/script.h"
 #include "speech/tts.h"
 
+#include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QSet>
@@ -39,18 +41,17 @@ Run run(const QString &program, const QStringList &args, bool traceLoading = fal
         p.readAllStandardError(), {}};
     // The loader's lines: "  1234:\tfile=libQt6Core.so.6 [0];  needed by ./toonface-cli [0]".
     static const QRegularExpression file(QStringLiteral("^\\s*\\d+:\\s+file=(\\S+) \\["));
+    static const QRegularExpression loaderLine(QStringLiteral("^\\s*\\d+:"));
     QByteArrayList kept;
     for (const QByteArray &line : r.err.split('\n')) {
-        const QRegularExpressionMatch m = file.match(QString::fromLocal8Bit(line));
-        if (m.hasMatch())
+        const QString text = QString::fromLocal8Bit(line);
+        if (const QRegularExpressionMatch m = file.match(text); m.hasMatch())
             r.loaded.insert(m.captured(1).section(QLatin1Char('/'), -1));
-        else if (!line.contains(": "))
-            kept << line;
-        else if (!QRegularExpression(QStringLiteral("^\\s*\\d+:")).match(QString::fromLocal8Bit(line)).hasMatch())
+        else if (!loaderLine.match(text).hasMatch())
             kept << line;
     }
     if (traceLoading)
-        r.err = kept.join('\n').trimmed();
+        r.err = kept.join('\n');
     return r;
 }
 
@@ -125,6 +126,13 @@ private Q_SLOTS:
         QVERIFY(!heavyAmong(light.loaded).isEmpty());
         const Run full = run(QStringLiteral(TOONFACE_CLI_FULL_PATH), lipsyncArgs(m_flac));
         QCOMPARE(light.out, full.out);
+        // The light program checks the launcher's choice with the command's own parser.
+        const QString lightProgram
+            = QFileInfo(QStringLiteral(TOONFACE_CLI_FULL_PATH)).dir().filePath(QStringLiteral("toonface-cli-light"));
+        const Run direct = run(lightProgram, lipsyncArgs(m_flac), true);
+        QVERIFY2(direct.code == 0, direct.err.constData());
+        QVERIFY(!heavyAmong(direct.loaded).isEmpty());
+        QCOMPARE(direct.out, full.out);
     }
 
     // Every other command line, good or bad, gives what the full program gives.
@@ -153,21 +161,35 @@ private Q_SLOTS:
         QCOMPARE(light.err, full.err);
     }
 
-    // Without toonface-cli-full beside it or in its installed place, the light program still
-    // runs what it can and says which file is missing for the rest.
-    void missingFullProgramIsAClearError()
+    // The launcher (toonface-cli) loads no library but the C++ runtime; without the program
+    // it hands over to it says which file is missing. The light program runs without the full
+    // one, and says which file is missing for what it hands over.
+    void missingProgramsAreAClearError()
     {
-        const QString alone = m_dir.filePath(QStringLiteral("alone/bin/toonface-cli"));
-        QVERIFY(QDir().mkpath(QFileInfo(alone).path()));
-        QVERIFY(QFile::copy(QStringLiteral(TOONFACE_CLI_PATH), alone));
-        const Run version = run(alone, {QStringLiteral("--version")});
-        QCOMPARE(version.code, 1);
-        QVERIFY2(version.err.contains("toonface-cli-full") && version.err.contains("installation is incomplete"),
-            version.err.constData());
-        QVERIFY2(version.err.startsWith("toonface-cli: error: ") && version.err.count('\n') == 1, version.err.constData());
-        const Run lipsync = run(alone, lipsyncArgs(m_wav));
-        QVERIFY2(lipsync.code == 0, lipsync.err.constData());
-        QVERIFY(lipsync.out.contains("\"mouthCues\""));
+        const QString bin = m_dir.filePath(QStringLiteral("alone/bin"));
+        QVERIFY(QDir().mkpath(bin));
+        const QString launcher = bin + QStringLiteral("/toonface-cli");
+        QVERIFY(QFile::copy(QStringLiteral(TOONFACE_CLI_PATH), launcher));
+        auto isOneError = [](const Run &r, const char *missing) {
+            return r.code == 1 && r.out.isEmpty() && r.err.startsWith("toonface-cli: error: cannot find ")
+                && r.err.count('\n') == 1 && r.err.contains(missing) && r.err.contains("installation is incomplete");
+        };
+        const Run version = run(launcher, {QStringLiteral("--version")}, true);
+        QVERIFY2(isOneError(version, "/toonface-cli-full"), version.err.constData());
+        QVERIFY2(!version.loaded.contains(QStringLiteral("libQt6Core.so.6")), "the launcher loaded Qt");
+        QVERIFY2(version.loaded.contains(QStringLiteral("libc.so.6")), "the loader's trace was not read");
+        const Run lipsync = run(launcher, lipsyncArgs(m_wav));
+        QVERIFY2(isOneError(lipsync, "/toonface-cli-light"), lipsync.err.constData());
+
+        QVERIFY(QFile::copy(QFileInfo(QStringLiteral(TOONFACE_CLI_FULL_PATH)).dir().filePath(
+                                QStringLiteral("toonface-cli-light")),
+            bin + QStringLiteral("/toonface-cli-light")));
+        const Run light = run(launcher, lipsyncArgs(m_wav));
+        QVERIFY2(light.code == 0, light.err.constData());
+        QVERIFY(light.out.contains("\"mouthCues\""));
+        const Run help = run(launcher, {QStringLiteral("lipsync"), QStringLiteral("--audio"), m_flac,
+                                           QStringLiteral("--script"), m_script});
+        QVERIFY2(isOneError(help, "/toonface-cli-full"), help.err.constData());
     }
 };
 
