@@ -1,6 +1,5 @@
 #include "programs.h"
 
-
 #include <cerrno>
 #include <climits>
 #include <cstdio>
@@ -37,9 +36,8 @@ int execProgram(const char *name, char *argv[])
             return 1;
         }
     }
-    std::fprintf(
-        stderr, "toonface-cli: error: cannot find %s (nor %s): the installation is incomplete\n", installed.c_str(),
-        beside.c_str());
+    std::fprintf(stderr, "toonface-cli: error: cannot find %s (nor %s): the installation is incomplete\n",
+        installed.c_str(), beside.c_str());
     return 1;
 }
 

@@ -37,7 +37,9 @@ bool lipsyncRunsLight(int argc, char *argv[])
     }
     if (!audio)
         return true;
-    struct stat st {};
+    struct stat st
+    {
+    };
     if (stat(audio, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size == 0)
         return true;
     return toonface::probePlainWav(audio).has_value();

@@ -4,8 +4,8 @@
 // launcher's quick reading of the arguments differs from the command's parser) is handed to
 // toonface-cli-full.
 #include "cli/command.h"
-#include "programs.h"
 #include "i18n/translations.h"
+#include "programs.h"
 #include "speech/stagetimes.h"
 
 #include <QCoreApplication>

@@ -8,8 +8,8 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QHash>
-#include <QSet>
 #include <QJsonArray>
+#include <QSet>
 #include <QTemporaryDir>
 
 #include <algorithm>

@@ -36,7 +36,8 @@ AudioResult decodePlainWav(const QString &path, const PlainWav &wav, const Audio
     };
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly) || !f.seek(wav.dataOffset))
-        return fail(AudioStatus::Unreadable, SoundText::tr("not a readable sound or video file (%1)").arg(f.errorString()));
+        return fail(
+            AudioStatus::Unreadable, SoundText::tr("not a readable sound or video file (%1)").arg(f.errorString()));
     const std::int64_t fileSize = f.size();
     // The sample formats FFmpeg's PCM decoders give: unsigned 8-bit, signed 16-bit, 24-bit
     // samples widened to 32 bits, signed 32-bit, float.
@@ -72,8 +73,8 @@ AudioResult decodePlainWav(const QString &path, const PlainWav &wav, const Audio
             widened.resize(size_t(frames) * size_t(wav.channels));
             for (size_t i = 0; i < widened.size(); ++i) {
                 const char *p = packet.constData() + 3 * i;
-                widened[i] = qint32(quint32(quint8(p[0])) << 8 | quint32(quint8(p[1])) << 16
-                    | quint32(quint8(p[2])) << 24);
+                widened[i]
+                    = qint32(quint32(quint8(p[0])) << 8 | quint32(quint8(p[1])) << 16 | quint32(quint8(p[2])) << 24);
             }
             in = reinterpret_cast<const uint8_t *>(widened.data());
         }

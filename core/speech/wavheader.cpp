@@ -56,8 +56,7 @@ std::optional<PlainWav> probePlainWav(const char *localPath)
             w.bitsPerSample = le16(fmt + 14);
             w.floating = tag == 3;
             const bool integers = tag == 1
-                && (w.bitsPerSample == 8 || w.bitsPerSample == 16 || w.bitsPerSample == 24
-                    || w.bitsPerSample == 32);
+                && (w.bitsPerSample == 8 || w.bitsPerSample == 16 || w.bitsPerSample == 24 || w.bitsPerSample == 32);
             const bool floats = tag == 3 && w.bitsPerSample == 32;
             if (!(integers || floats) || w.channels < 1 || w.channels > 2 || w.sampleRate < kMinSpeechSampleRate
                 || w.sampleRate > 384000 || w.blockAlign != w.channels * w.bitsPerSample / 8)

@@ -145,8 +145,8 @@ private Q_SLOTS:
         QTest::newRow("unknown") << QStringList {QStringLiteral("frobnicate")};
         QTest::newRow("say help") << QStringList {QStringLiteral("say"), QStringLiteral("--help")};
         QTest::newRow("lipsync help") << QStringList {QStringLiteral("lipsync"), QStringLiteral("--help")};
-        QTest::newRow("lipsync no script") << QStringList {QStringLiteral("lipsync"), QStringLiteral("--audio"),
-            QStringLiteral("/nonexistent.wav")};
+        QTest::newRow("lipsync no script")
+            << QStringList {QStringLiteral("lipsync"), QStringLiteral("--audio"), QStringLiteral("/nonexistent.wav")};
         QTest::newRow("lipsync missing file") << QStringList {QStringLiteral("lipsync"), QStringLiteral("--audio"),
             QStringLiteral("/nonexistent.wav"), QStringLiteral("--script"), QStringLiteral("/nonexistent.txt")};
     }
@@ -181,14 +181,14 @@ private Q_SLOTS:
         const Run lipsync = run(launcher, lipsyncArgs(m_wav));
         QVERIFY2(isOneError(lipsync, "/toonface-cli-light"), lipsync.err.constData());
 
-        QVERIFY(QFile::copy(QFileInfo(QStringLiteral(TOONFACE_CLI_FULL_PATH)).dir().filePath(
-                                QStringLiteral("toonface-cli-light")),
+        QVERIFY(QFile::copy(
+            QFileInfo(QStringLiteral(TOONFACE_CLI_FULL_PATH)).dir().filePath(QStringLiteral("toonface-cli-light")),
             bin + QStringLiteral("/toonface-cli-light")));
         const Run light = run(launcher, lipsyncArgs(m_wav));
         QVERIFY2(light.code == 0, light.err.constData());
         QVERIFY(light.out.contains("\"mouthCues\""));
-        const Run help = run(launcher, {QStringLiteral("lipsync"), QStringLiteral("--audio"), m_flac,
-                                           QStringLiteral("--script"), m_script});
+        const Run help = run(launcher,
+            {QStringLiteral("lipsync"), QStringLiteral("--audio"), m_flac, QStringLiteral("--script"), m_script});
         QVERIFY2(isOneError(help, "/toonface-cli-full"), help.err.constData());
     }
 };

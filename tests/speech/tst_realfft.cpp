@@ -86,7 +86,8 @@ private Q_SLOTS:
         QVERIFY(std::abs(packed[0] - expected[0].real()) < tolerance);
         QVERIFY(std::abs(packed[1] - expected[size_t(size / 2)].real()) < tolerance);
         for (int k = 1; k < size / 2; ++k) {
-            QVERIFY2(std::abs(packed[size_t(2 * k)] - expected[size_t(k)].real()) < tolerance, qPrintable(QString::number(k)));
+            QVERIFY2(std::abs(packed[size_t(2 * k)] - expected[size_t(k)].real()) < tolerance,
+                qPrintable(QString::number(k)));
             QVERIFY2(std::abs(packed[size_t(2 * k + 1)] - expected[size_t(k)].imag()) < tolerance,
                 qPrintable(QString::number(k)));
         }
@@ -130,8 +131,8 @@ private Q_SLOTS:
             power(ours, powerOurs);
             power(theirs, powerTheirs);
             for (int k = 0; k <= kSize / 2; ++k)
-                worstPower = std::max(worstPower,
-                    std::abs(double(powerOurs[size_t(k)]) - powerTheirs[size_t(k)]) / (scale * scale));
+                worstPower = std::max(
+                    worstPower, std::abs(double(powerOurs[size_t(k)]) - powerTheirs[size_t(k)]) / (scale * scale));
             // The autocorrelation: the inverse of the power spectrum, relative to lag 0.
             auto pack = [](const std::vector<float> &p, std::vector<float> &z) {
                 z[0] = p[0];

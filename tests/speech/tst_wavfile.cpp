@@ -183,8 +183,8 @@ private Q_SLOTS:
         QVERIFY(own.samples.size() > rate / 2 * kSpeechSampleRate / rate);
         QCOMPARE(own.samples.size(), ffmpeg.samples.size());
         QCOMPARE(own.result.sampleCount, ffmpeg.result.sampleCount);
-        QVERIFY(std::memcmp(own.samples.constData(), ffmpeg.samples.constData(),
-                    size_t(own.samples.size()) * sizeof(float))
+        QVERIFY(
+            std::memcmp(own.samples.constData(), ffmpeg.samples.constData(), size_t(own.samples.size()) * sizeof(float))
             == 0);
         QCOMPARE(own.result.sourceDuration, ffmpeg.result.sourceDuration);
         // Progress by the position in the file (FFmpeg's moves by its read buffer, so more coarsely).
