@@ -1,11 +1,18 @@
 #include "benchmark.h"
 
+#include "detect/detector.h"
+#include "track/facesearch.h"
 #include "track/trackaccuracy.h"
 #include "track/trackvideo.h"
 
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonArray>
+#include <QLineF>
+#include <QPainter>
+
+#include <algorithm>
+#include <vector>
 
 using namespace toonface;
 
@@ -104,3 +111,50 @@ QJsonObject benchTrack()
 } // namespace
 
 TOONFACE_BENCHMARK("track", benchTrack);
+
+namespace {
+
+// While a face is lost the classic method searches every frame for it (FaceSearch): the time
+// of one search at the camera sizes the editor offers, median of 15 runs. The face is the
+// scikit-image astronaut's, put at a third of the frame.
+QJsonObject benchFaceSearch()
+{
+    QJsonObject out;
+    const QString portrait = QStringLiteral("/usr/lib/python3/dist-packages/skimage/data/astronaut.png");
+    const QImage photo(portrait);
+    DetectOptions options;
+    options.method = DetectionMethod::Landmarks;
+    const DetectionResult r = photo.isNull() ? DetectionResult {} : detectFace(photo, options);
+    if (r.status != DetectStatus::Ok) {
+        out.insert(QStringLiteral("skipped"), QStringLiteral("astronaut.png (python3-skimage) is absent"));
+        return out;
+    }
+    const QPointF l = r.face.point("3.6"), right = r.face.point("3.5");
+    const double d = QLineF(l, right).length();
+    const QPointF mid = (l + right) / 2;
+    const FaceSearch search(photo, QRectF(mid.x() - 0.8 * d, mid.y() - 0.35 * d, 1.6 * d, 1.7 * d));
+    for (const QSize size : {QSize(640, 480), QSize(1280, 720)}) {
+        QImage frame(size, QImage::Format_RGB32);
+        frame.fill(Qt::darkGray);
+        QPainter(&frame).drawImage(QPointF(size.width() / 3.0, 0), photo);
+        std::vector<double> ms;
+        double likeness = 0;
+        for (int run = 0; run < 15; ++run) {
+            QElapsedTimer t;
+            t.start();
+            likeness = search.find(frame).likeness;
+            ms.push_back(t.nsecsElapsed() / 1e6);
+        }
+        std::nth_element(ms.begin(), ms.begin() + 7, ms.end());
+        QJsonObject row;
+        row.insert(QStringLiteral("ms"), std::round(ms[7] * 100) / 100);
+        row.insert(QStringLiteral("likeness"), std::round(likeness * 1000) / 1000);
+        out.insert(QStringLiteral("%1x%2").arg(size.width()).arg(size.height()), row);
+    }
+    out.insert(QStringLiteral("faceEyeDistance"), std::round(d));
+    return out;
+}
+
+} // namespace
+
+TOONFACE_BENCHMARK("track.search", benchFaceSearch);

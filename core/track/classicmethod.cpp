@@ -2,6 +2,7 @@
 
 #include "detect/regions.h"
 #include "i18n/coretext.h"
+#include "track/facesearch.h"
 #include "track/trackingmethod.h"
 
 #include <QLineF>
@@ -102,6 +103,9 @@ constexpr double kMouthNoise = 0.1;
 // with the neutral frame's is not the face.
 constexpr int kLookGrid = 24;
 constexpr double kLostLikeness = 0.5;
+// A face searched for while lost is taken as found where its look correlates at least this well
+// at the search's coarse scale (the look on the full grid then decides, as on every frame).
+constexpr double kSearchLikeness = 0.6;
 
 // Thesis chapter 6 on what the neutral face reserved (TrackingSeed): t1, the eyeball regions
 // and their distance d, the edge thresholds and the mouth region R_Mouth. The first frame
@@ -137,6 +141,8 @@ public:
         m.stable = m_stable;
         if (frame.isNull())
             return m;
+        if (m_lost)
+            searchFace(frame);
         trackEyePair(frame);
         if (!m_haveReference)
             trackEyePair(frame); // from where the neutral's eyeballs were found: the place later frames settle on
@@ -172,12 +178,15 @@ public:
             m_mouthEdges = mouth.edges;
             m_mouthWidth = mouth.width;
             m_appearance = appearance(frame, HeadMotion {});
+            m_search = std::make_unique<FaceSearch>(frame, lookBox());
             m_haveReference = true;
         } else if (likeness(appearance(frame, head), m_appearance) < kLostLikeness) {
             // What the head's place shows is no longer the face: lost (the tracker holds the last
-            // pose); the eyes wait where they were for the face to come back.
+            // pose); the next frames search the whole frame for it.
+            m_lost = true;
             return m;
         }
+        m_lost = false;
         // The opening: the dark between the lips in the mouth's middle (the gap's thickness,
         // 0 when shut), plus the growth of the middle's Sobel edges (the inner lips, the teeth:
         // they also see a gap the teeth fill) relative to the neutral's, above the least seen
@@ -290,12 +299,33 @@ private:
         }
     }
 
+    // The neutral face's eyes, brows and mouth, frame pixels.
+    QRectF lookBox() const
+    {
+        const QPointF mid = (m_neutralEyes[0] + m_neutralEyes[1]) / 2;
+        return {mid.x() - 0.8 * m_d, mid.y() - 0.35 * m_d, 1.6 * m_d, 1.7 * m_d};
+    }
+
+    // A lost face may come back anywhere and at another size: where its look is found, the eyes
+    // are searched for next (they stay where they were when it is not).
+    void searchFace(const QImage &frame)
+    {
+        if (!m_search || !m_search->isValid())
+            return;
+        const FaceSearchHit hit = m_search->find(frame);
+        if (hit.likeness < kSearchLikeness)
+            return;
+        const QRectF neutral = lookBox();
+        const double s = hit.box.width() / neutral.width();
+        for (int k = 0; k < 2; ++k)
+            m_eyes[k] = hit.box.topLeft() + (m_neutralEyes[k] - neutral.topLeft()) * s;
+    }
+
     // The face's look: the grey levels on a grid over the eyes and the mouth of the neutral
     // face, carried by `head`.
     std::vector<float> appearance(const QImage &frame, const HeadMotion &head) const
     {
-        const QPointF mid = (m_neutralEyes[0] + m_neutralEyes[1]) / 2;
-        const QRectF box(mid.x() - 0.8 * m_d, mid.y() - 0.35 * m_d, 1.6 * m_d, 1.7 * m_d);
+        const QRectF box = lookBox();
         std::vector<float> out;
         out.reserve(size_t(kLookGrid) * kLookGrid);
         for (int v = 0; v < kLookGrid; ++v) {
@@ -453,6 +483,8 @@ private:
     // Measured on the neutral (first) frame.
     bool m_haveReference = false;
     std::vector<float> m_appearance; // the neutral frame's look (appearance())
+    std::unique_ptr<FaceSearch> m_search; // the same look, searched for over a frame
+    bool m_lost = false;
     double m_eyeLevel[2] = {0, 0};
     double m_eyeDarkness[2] = {0, 0};
     double m_mouthWidth = 0;

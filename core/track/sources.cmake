@@ -4,6 +4,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   track/oneeuro.h
   track/facemeasure.h track/facemeasure.cpp
   track/trackingmethod.h track/landmarkmethod.cpp track/classicmethod.cpp
+  track/facesearch.h track/facesearch.cpp
   track/tracker.h track/tracker.cpp
   track/trackvideo.h track/trackvideo.cpp
   track/retarget.h track/retarget.cpp

@@ -7,6 +7,7 @@
 
 #include <QFileInfo>
 #include <QLineF>
+#include <QPainter>
 #include <QRandomGenerator>
 #include <QTest>
 
@@ -215,27 +216,41 @@ private Q_SLOTS:
     void lostFaceHoldsAndIsFoundAgain_data()
     {
         QTest::addColumn<DetectionMethod>("method");
-        QTest::newRow("landmarks") << DetectionMethod::Landmarks;
-        QTest::newRow("classic") << DetectionMethod::Classic;
+        QTest::addColumn<double>("shift"); // where the face comes back, in face widths to the right
+        QTest::newRow("landmarks") << DetectionMethod::Landmarks << 0.0;
+        QTest::newRow("landmarks, back elsewhere") << DetectionMethod::Landmarks << 0.6;
+        QTest::newRow("classic") << DetectionMethod::Classic << 0.0;
+        QTest::newRow("classic, back elsewhere") << DetectionMethod::Classic << 0.6;
     }
 
     void lostFaceHoldsAndIsFoundAgain()
     {
         QFETCH(DetectionMethod, method);
+        QFETCH(double, shift);
         if (!QFileInfo::exists(kPortrait))
             QSKIP("astronaut.png is not installed (package python3-skimage)");
         const testing::TalkingFace talking {QImage(kPortrait)};
         QVERIFY(talking.isValid());
         // The classic method's frames cut to the face, as in drawnFaceEventsWithinAFrame.
         QRect cut = talking.frame(0, 1).rect();
+        const QRectF face = talking.face().bounds();
         if (method == DetectionMethod::Classic) {
-            const QRectF face = talking.face().bounds();
             cut = QRectF(face.center() - QPointF(0.8, 0.75) * face.width(), QSizeF(1.6, 1.5) * face.width())
                       .toAlignedRect()
                       .intersected(cut);
         }
-        QImage empty(cut.size(), QImage::Format_RGB32);
-        empty.fill(QColor(90, 110, 140));
+        // The frames are wider than the cut, so that the face can come back further right.
+        const int dx = int(shift * face.width());
+        const QSize size = cut.size() + QSize(int(0.6 * face.width()), 0);
+        const QColor backdrop(90, 110, 140);
+        auto placed = [&](double open, int x) {
+            QImage image(size, QImage::Format_RGB32);
+            image.fill(backdrop);
+            QPainter(&image).drawImage(x, 0, talking.frame(open, 1).copy(cut));
+            return image;
+        };
+        QImage empty(size, QImage::Format_RGB32);
+        empty.fill(backdrop);
         // A wall with a texture of its own (not the face) is no face either.
         QImage wall = empty.copy();
         for (int y = 0; y < wall.height(); ++y)
@@ -245,12 +260,15 @@ private Q_SLOTS:
         options.method = method;
         Tracker tracker(options);
         QString error;
-        QVERIFY2(tracker.setNeutral(talking.frame(0, 1).copy(cut), &error), qPrintable(error));
+        QVERIFY2(tracker.setNeutral(placed(0, 0), &error), qPrintable(error));
+        const int eye = pt::idx("3.5");
+        const double d = QLineF(tracker.neutralDetection().face.point("3.5"),
+            tracker.neutralDetection().face.point("3.6"))
+                             .length();
         TrackedFrame before;
         for (int i = 0; i < 30; ++i) {
             const bool away = i >= 10 && i < 20;
-            const QImage image
-                = away ? (i < 15 ? empty : wall) : talking.frame(i >= 8 && i < 25 ? 0.8 : 0.0, 1).copy(cut);
+            const QImage image = away ? (i < 15 ? empty : wall) : placed(i >= 8 && i < 25 ? 0.8 : 0.0, i < 10 ? 0 : dx);
             const TrackedFrame f = tracker.track(image, i / kFps, i);
             QVERIFY2(f.lost == away, qPrintable(QStringLiteral("frame %1").arg(i)));
             if (i == 9)
@@ -262,7 +280,16 @@ private Q_SLOTS:
             } else {
                 QVERIFY(f.confidence > 0.5);
             }
-            if (i == 22) // found again, mouth still open
+            if (i >= 20) { // found again where it is now, the mouth still open
+                const QPointF moved = f.points[eye] - before.points[eye];
+                QVERIFY2(std::abs(moved.x() - dx) < 0.1 * d && std::abs(moved.y()) < 0.1 * d,
+                    qPrintable(QStringLiteral("frame %1: the eye moved by (%2, %3), the face by %4")
+                            .arg(i)
+                            .arg(moved.x())
+                            .arg(moved.y())
+                            .arg(dx)));
+            }
+            if (i == 22)
                 QVERIFY(f.motion.mouthOpenEs0 > 0.1);
         }
     }
