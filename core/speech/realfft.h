@@ -26,15 +26,18 @@ public:
     void inverse(float *data);
 
 private:
-    // In-place complex transform of m_half points; `sign` -1 forward, +1 inverse (unscaled).
-    void complexTransform(int sign);
+    // In-place complex transform of the m_half points in m_re/m_im, forward (e^-) or inverse
+    // (e^+, unscaled).
+    void complexTransform(bool inverse);
 
     int m_size = 0;
     int m_half = 0;
     std::vector<int> m_reversed; // bit-reversed index of each of the m_half points
-    std::vector<std::complex<double>> m_twiddle; // e^(-2 pi i k / m_half), k < m_half / 2
+    // The butterflies' factors stage by stage (lengths 4, 8, ..., m_half): for a stage of
+    // length L, e^(-2 pi i j / L) for j < L / 2, one stage after the other.
+    std::vector<double> m_twiddleRe, m_twiddleIm;
     std::vector<std::complex<double>> m_split; // e^(-2 pi i k / m_size), k <= m_half
-    std::vector<std::complex<double>> m_work;
+    std::vector<double> m_re, m_im; // the work of the complex transform
 };
 
 } // namespace toonface
