@@ -275,6 +275,35 @@ LipsyncOutcome lipsyncRealFile(const QString &dir, const RealFile &file)
 
 } // namespace
 
+namespace {
+
+// The GRID clip's word tier (shared/data/video/swwp2s.align, units of 1/25000 s): its words and
+// their onsets in seconds, silences left out; empty when absent.
+struct GridWordTier
+{
+    QStringList words;
+    std::vector<double> onsets;
+};
+
+GridWordTier gridWordTier(const QString &dataDir)
+{
+    QStringList words;
+    std::vector<double> onsets;
+    QFile f(dataDir + QStringLiteral("/video/swwp2s.align"));
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    for (const QString &line : QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+        const QStringList cols = line.trimmed().split(QLatin1Char(' '), Qt::SkipEmptyParts);
+        if (cols.size() == 3 && cols[2] != QLatin1String("sil")) {
+            words.append(cols[2]);
+            onsets.push_back(cols[0].toDouble() / 25000.0);
+        }
+    }
+    return {words, onsets};
+}
+
+} // namespace
+
 TOONFACE_BENCHMARK("speech.alignReal", [] {
     QJsonObject out;
     const QString dir = bench::sharedDataDir();
@@ -316,18 +345,11 @@ TOONFACE_BENCHMARK("speech.alignReal", [] {
     }
     // GRID (English): word onsets, units of 1/25000 s.
     {
-        QFile f(dir + QStringLiteral("/video/swwp2s.align"));
         const AudioResult a = loadAudio(dir + QStringLiteral("/video/id2_vcd_swwp2s.mpg"));
-        if (f.open(QIODevice::ReadOnly) && a.ok()) {
-            QStringList words;
-            std::vector<double> truth;
-            for (const QString &line : QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
-                const QStringList cols = line.trimmed().split(QLatin1Char(' '), Qt::SkipEmptyParts);
-                if (cols.size() == 3 && cols[2] != QLatin1String("sil")) {
-                    words.append(cols[2]);
-                    truth.push_back(cols[0].toDouble() / 25000.0);
-                }
-            }
+        const GridWordTier tier = gridWordTier(dir);
+        const QStringList &words = tier.words;
+        const std::vector<double> &truth = tier.onsets;
+        if (!words.isEmpty() && a.ok()) {
             const AlignResult r = alignScript(a.audio, parseScript(words.join(QLatin1Char(' '))).script);
             Errors e;
             for (int k = 0; r.ok() && k < r.syllables.size(); ++k)
@@ -474,6 +496,22 @@ TOONFACE_BENCHMARK("speech.plots", [] {
             = plotDir + QLatin1Char('/') + QFileInfo(file.name).completeBaseName() + QStringLiteral(".png");
         if (alignmentPlot(audio.audio, r.result, file.truth, title).save(png))
             written.append(png);
+    }
+    // The English GRID clip with its word tier.
+    {
+        const AudioResult audio = loadAudio(dir + QStringLiteral("/video/id2_vcd_swwp2s.mpg"));
+        const GridWordTier tier = gridWordTier(dir);
+        const QStringList &words = tier.words;
+        const std::vector<double> &truth = tier.onsets;
+        if (!words.isEmpty() && audio.ok()) {
+            const Script s = parseScript(words.join(QLatin1Char(' '))).script;
+            const AlignResult r = alignScript(audio.audio, s);
+            const QString png = plotDir + QStringLiteral("/id2_vcd_swwp2s.png");
+            if (alignmentPlot(
+                    audio.audio, lipsyncResult(s, r, audio.audio.duration()), truth, words.join(QLatin1Char(' ')))
+                    .save(png))
+                written.append(png);
+        }
     }
     // The synthetic set's recordings (truth from espeak-ng's events), for the voices that
     // slip most.

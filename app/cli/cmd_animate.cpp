@@ -146,6 +146,8 @@ int runAnimate(const Command &self, const QStringList &args)
         if (sound.ok()) {
             speech.audioPath = workDir + QLatin1Char('/') + outputBase + QStringLiteral("-sound.wav");
             QString error;
+            if (!QDir().mkpath(workDir)) // a frame folder not made yet
+                return fail(ExitFailed, Cli::tr("cannot create the folder %1").arg(workDir));
             if (!writeAudio(speech.audioPath, sound.audio, &error))
                 return fail(ExitFailed, error);
             speech.duration = std::max(speech.duration, sound.audio.duration());

@@ -17,8 +17,8 @@ constexpr double kSizes[] = {0.8, 0.9, 1.0, 1.12, 1.25};
 cv::Mat greyOf(const QImage &image)
 {
     const QImage grey = image.convertToFormat(QImage::Format_Grayscale8);
-    return cv::Mat(grey.height(), grey.width(), CV_8UC1, const_cast<uchar *>(grey.constBits()),
-        size_t(grey.bytesPerLine()))
+    return cv::Mat(
+        grey.height(), grey.width(), CV_8UC1, const_cast<uchar *>(grey.constBits()), size_t(grey.bytesPerLine()))
         .clone();
 }
 

@@ -235,10 +235,12 @@ void addTakeToTimeline(const QVector<TrackedFrame> &recorded, double fps, double
                 k.offsetsEs0.remove(QString::fromLatin1(id));
         }
     }
-    timeline->setPoseKeys(spliced(timeline->poseKeys(), pose, at, end));
-    timeline->setGazeKeys(spliced(timeline->gazeKeys(), take.gazeKeys(), at, end));
-    timeline->setHeadKeys(spliced(timeline->headKeys(), take.headKeys(), at, end));
-    timeline->setBlinks(splicedBlinks(timeline->blinks(), take.blinks(), at, end));
+    if (!recorded.isEmpty()) {
+        timeline->setPoseKeys(spliced(timeline->poseKeys(), pose, at, end));
+        timeline->setGazeKeys(spliced(timeline->gazeKeys(), take.gazeKeys(), at, end));
+        timeline->setHeadKeys(spliced(timeline->headKeys(), take.headKeys(), at, end));
+        timeline->setBlinks(splicedBlinks(timeline->blinks(), take.blinks(), at, end));
+    }
 
     QVector<MouthKey> mouth;
     for (MouthKey k : soundMouth) {

@@ -56,6 +56,9 @@ namespace toonface {
 // last tracked pose holds with the mouth controls at rest, the sound's shape sounds from the
 // span's start, and a shut key hands the mouth back to the camera where the face is found
 // again; elsewhere the tracked mouth stays in the pose keys.
+//
+// A take with no frames (the performer was only heard) puts only its mouth keys in the span;
+// the pose, gaze, head and blinks there are kept.
 void addTakeToTimeline(const QVector<TrackedFrame> &frames, double fps, double duration,
     const QVector<MouthKey> &soundMouth, Timeline *timeline, double at, bool soundWhileLost = false);
 

@@ -1,5 +1,6 @@
 list(APPEND TOONFACE_CORE_SOURCES
   track/framesource.h
+  track/clocksource.h track/clocksource.cpp
   track/videofilesource.h track/videofilesource.cpp
   track/oneeuro.h
   track/facemeasure.h track/facemeasure.cpp

@@ -2037,6 +2037,18 @@
         <source>Recorded %1 s (%2 frames): motion only, no sound</source>
         <translation>已录制 %1 秒（%2 帧）：只有动作，没有声音</translation>
     </message>
+    <message>
+        <source>Nothing was recorded: the microphone heard nothing.</source>
+        <translation>没有录到任何内容：麦克风什么也没听到。</translation>
+    </message>
+    <message>
+        <source>Recorded %1 s of the microphone: the mouth, with its sound saved as %2</source>
+        <translation>已录制麦克风 %1 秒：嘴巴动作，声音保存为 %2</translation>
+    </message>
+    <message>
+        <source>Recorded %1 s of the microphone: the mouth, no sound</source>
+        <translation>已录制麦克风 %1 秒：嘴巴动作，没有声音</translation>
+    </message>
 </context>
 <context>
     <name>toonface::LiveWindow</name>
@@ -2101,14 +2113,6 @@
         <translation>没有摄像头</translation>
     </message>
     <message>
-        <source>Choose “Video file…” to perform from a clip.</source>
-        <translation>选择“视频文件…”以从片段表演。</translation>
-    </message>
-    <message>
-        <source>Choose a camera or a video file.</source>
-        <translation>选择摄像头或视频文件。</translation>
-    </message>
-    <message>
         <source>Camera: %1</source>
         <translation>摄像头：%1</translation>
     </message>
@@ -2145,10 +2149,6 @@
         <translation>嘴巴跟随摄像头。</translation>
     </message>
     <message>
-        <source>Start a camera or a clip, with a face open, before recording.</source>
-        <translation>录制前请先启动摄像头或片段，并打开一张人脸。</translation>
-    </message>
-    <message>
         <source>■ &amp;Stop</source>
         <translation>■ 停止(&amp;S)</translation>
     </message>
@@ -2177,6 +2177,30 @@ Face lost in %5 frames%6</source>
 ● Recording</source>
         <translation>
 ● 录制中</translation>
+    </message>
+    <message>
+        <source>Choose “Video file…” to perform from a clip, or “Microphone only” to speak for the cartoon.</source>
+        <translation>选择“视频文件…”用视频片段表演，或选择“仅麦克风”为卡通人物说话。</translation>
+    </message>
+    <message>
+        <source>Choose a camera, a video file, or the microphone only.</source>
+        <translation>请选择摄像头、视频文件或仅麦克风。</translation>
+    </message>
+    <message>
+        <source>Microphone only (no camera)</source>
+        <translation>仅麦克风（不用摄像头）</translation>
+    </message>
+    <message>
+        <source>Microphone “%1”</source>
+        <translation>麦克风“%1”</translation>
+    </message>
+    <message>
+        <source>Listening to “%1”: speak, and the cartoon speaks with you</source>
+        <translation>正在收听“%1”：说话时，卡通人物会跟着你说</translation>
+    </message>
+    <message>
+        <source>Start a camera, a clip or the microphone, with a face open, before recording.</source>
+        <translation>录制前请先打开一张有人脸的照片，并启动摄像头、视频片段或麦克风。</translation>
     </message>
 </context>
 <context>

@@ -2037,6 +2037,18 @@
         <source>Recorded %1 s (%2 frames): motion only, no sound</source>
         <translation>已錄製 %1 秒（%2 個影格）：只有動作，沒有聲音</translation>
     </message>
+    <message>
+        <source>Nothing was recorded: the microphone heard nothing.</source>
+        <translation>沒有錄到任何內容：麥克風什麼也沒聽到。</translation>
+    </message>
+    <message>
+        <source>Recorded %1 s of the microphone: the mouth, with its sound saved as %2</source>
+        <translation>已錄製麥克風 %1 秒：嘴巴動作，聲音儲存為 %2</translation>
+    </message>
+    <message>
+        <source>Recorded %1 s of the microphone: the mouth, no sound</source>
+        <translation>已錄製麥克風 %1 秒：嘴巴動作，沒有聲音</translation>
+    </message>
 </context>
 <context>
     <name>toonface::LiveWindow</name>
@@ -2101,14 +2113,6 @@
         <translation>沒有攝影機</translation>
     </message>
     <message>
-        <source>Choose “Video file…” to perform from a clip.</source>
-        <translation>選擇「影片檔案…」以從片段表演。</translation>
-    </message>
-    <message>
-        <source>Choose a camera or a video file.</source>
-        <translation>選擇攝影機或影片檔案。</translation>
-    </message>
-    <message>
         <source>Camera: %1</source>
         <translation>攝影機：%1</translation>
     </message>
@@ -2145,10 +2149,6 @@
         <translation>嘴巴跟隨攝影機。</translation>
     </message>
     <message>
-        <source>Start a camera or a clip, with a face open, before recording.</source>
-        <translation>錄製前請先啟動攝影機或片段，並開啟一張臉。</translation>
-    </message>
-    <message>
         <source>■ &amp;Stop</source>
         <translation>■ 停止(&amp;S)</translation>
     </message>
@@ -2177,6 +2177,30 @@ Face lost in %5 frames%6</source>
 ● Recording</source>
         <translation>
 ● 錄製中</translation>
+    </message>
+    <message>
+        <source>Choose “Video file…” to perform from a clip, or “Microphone only” to speak for the cartoon.</source>
+        <translation>選擇「影片檔案…」用影片片段表演，或選擇「僅麥克風」為卡通人物說話。</translation>
+    </message>
+    <message>
+        <source>Choose a camera, a video file, or the microphone only.</source>
+        <translation>請選擇攝影機、影片檔案或僅麥克風。</translation>
+    </message>
+    <message>
+        <source>Microphone only (no camera)</source>
+        <translation>僅麥克風（不用攝影機）</translation>
+    </message>
+    <message>
+        <source>Microphone “%1”</source>
+        <translation>麥克風「%1」</translation>
+    </message>
+    <message>
+        <source>Listening to “%1”: speak, and the cartoon speaks with you</source>
+        <translation>正在收聽「%1」：說話時，卡通人物會跟著你說</translation>
+    </message>
+    <message>
+        <source>Start a camera, a clip or the microphone, with a face open, before recording.</source>
+        <translation>錄製前請先開啟一張有臉的照片，並啟動攝影機、影片片段或麥克風。</translation>
     </message>
 </context>
 <context>

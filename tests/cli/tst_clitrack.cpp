@@ -1,6 +1,7 @@
 #include "export/videoencoder.h"
 #include "talkingface.h"
 
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -156,6 +157,19 @@ private Q_SLOTS:
         QVERIFY2(r.code == 0, r.err.constData());
         QVERIFY(QFileInfo(out).size() > 1000);
         QVERIFY(QFileInfo::exists(m_dir.filePath(QStringLiteral("driven-sound.wav"))));
+    }
+
+    // PNG frames into a folder that does not exist yet: made, with the clip's sound beside them.
+    void animateClipIntoANewFrameFolder()
+    {
+        if (!QFileInfo::exists(kGrid))
+            QSKIP("needs the GRID clips of shared/data/video");
+        const QString folder = m_dir.filePath(QStringLiteral("new/frames"));
+        const Run r = cli({QStringLiteral("animate"), kGrid, QStringLiteral("--fps"), QStringLiteral("5"),
+            QStringLiteral("-o"), folder + QLatin1Char('/')});
+        QVERIFY2(r.code == 0, r.err.constData());
+        QVERIFY(QFileInfo::exists(folder + QStringLiteral("/speech-sound.wav")));
+        QVERIFY(QDir(folder).entryList({QStringLiteral("*.png")}, QDir::Files).size() >= 10);
     }
 
     void badClipsAndUsage_data()

@@ -48,8 +48,8 @@ private Q_SLOTS:
         QVERIFY(search.isValid());
 
         // The head (twice the look's size around it) on a plain backdrop four looks wide.
-        const QRectF head = look.adjusted(-0.5 * look.width(), -0.5 * look.height(), 0.5 * look.width(),
-            0.5 * look.height());
+        const QRectF head
+            = look.adjusted(-0.5 * look.width(), -0.5 * look.height(), 0.5 * look.width(), 0.5 * look.height());
         QImage frame(QSize(int(4 * look.width()), int(3 * look.height())), QImage::Format_RGB32);
         frame.fill(QColor(120, 130, 110));
         const QPointF lookAt = at * look.width();
@@ -61,11 +61,12 @@ private Q_SLOTS:
         const QRectF expected(lookAt, look.size() * size);
         QVERIFY2(QLineF(hit.box.center(), expected.center()).length() < 0.1 * d * size,
             qPrintable(QStringLiteral("found at (%1, %2), put at (%3, %4)")
-                    .arg(hit.box.center().x())
-                    .arg(hit.box.center().y())
-                    .arg(expected.center().x())
-                    .arg(expected.center().y())));
-        QVERIFY2(std::abs(hit.box.width() / expected.width() - 1.0) < 0.1, qPrintable(QString::number(hit.box.width())));
+                           .arg(hit.box.center().x())
+                           .arg(hit.box.center().y())
+                           .arg(expected.center().x())
+                           .arg(expected.center().y())));
+        QVERIFY2(
+            std::abs(hit.box.width() / expected.width() - 1.0) < 0.1, qPrintable(QString::number(hit.box.width())));
     }
 
     void findsNoFaceInAWall()

@@ -54,6 +54,7 @@ private Q_SLOTS:
     void chooseMouthFollowsTheMode();
     void takeReplacesItsSpanOnly();
     void takeWithSoundMouth();
+    void heardOnlyTakeKeepsTheMotion();
     void importedTrackReplacesItsSpanOnly();
     void takeWithSoundWhileLost();
 };
@@ -184,6 +185,35 @@ void TestLivePose::takeWithSoundMouth()
             QVERIFY(!k.offsetsEs0.contains(QString::fromLatin1(id)));
         QVERIFY(k.offsetsEs0.contains(QStringLiteral("4.2")));
     }
+}
+
+// A take heard only (the microphone alone, no frames) puts its mouth in the span and leaves the
+// pose, head, gaze and blinks there as they were.
+void TestLivePose::heardOnlyTakeKeepsTheMotion()
+{
+    Timeline timeline;
+    for (const double t : {1.0, 2.5, 4.0}) {
+        timeline.addPoseKey(PoseKey {t, {{QStringLiteral("4.1"), QPointF(0, 0.1)}}});
+        timeline.addHeadKey({t, 5.0, {}, 1.0});
+        timeline.addGazeKey({t, QPointF(0.1, 0)});
+    }
+    timeline.setBlinks({{2.2, 0.18}});
+    timeline.setMouthKeys({{0.2, MouthShape::A, 1.0, 0.3}, {2.4, MouthShape::E, 1.0, 0.2}});
+    const Timeline before = timeline;
+    const QVector<MouthKey> sound
+        = {{0.0, MouthShape::M, 1.0, 0.1}, {0.3, MouthShape::O, 0.7, 0.2}, {0.9, MouthShape::M, 1.0, 0.1}};
+    addTakeToTimeline({}, 30, 1.2, sound, &timeline, 2.0);
+    QCOMPARE(timeline.poseKeys(), before.poseKeys());
+    QCOMPARE(timeline.headKeys(), before.headKeys());
+    QCOMPARE(timeline.gazeKeys(), before.gazeKeys());
+    QCOMPARE(timeline.blinks(), before.blinks());
+    // The mouth: the key before kept, the one inside replaced by the sound's.
+    QCOMPARE(timeline.mouthKeys().size(), 4);
+    QCOMPARE(timeline.mouthKeys()[0].shape, MouthShape::A);
+    QCOMPARE(timeline.mouthKeys()[1].time, 2.0);
+    QCOMPARE(timeline.mouthKeys()[2].time, 2.3);
+    QCOMPARE(timeline.mouthKeys()[2].shape, MouthShape::O);
+    QCOMPARE(timeline.mouthKeys()[2].weight, 0.7);
 }
 
 // An imported video's track lands on its own span of the timeline: what the animation held

@@ -262,9 +262,9 @@ private Q_SLOTS:
         QString error;
         QVERIFY2(tracker.setNeutral(placed(0, 0), &error), qPrintable(error));
         const int eye = pt::idx("3.5");
-        const double d = QLineF(tracker.neutralDetection().face.point("3.5"),
-            tracker.neutralDetection().face.point("3.6"))
-                             .length();
+        const double d
+            = QLineF(tracker.neutralDetection().face.point("3.5"), tracker.neutralDetection().face.point("3.6"))
+                  .length();
         TrackedFrame before;
         for (int i = 0; i < 30; ++i) {
             const bool away = i >= 10 && i < 20;
@@ -284,10 +284,10 @@ private Q_SLOTS:
                 const QPointF moved = f.points[eye] - before.points[eye];
                 QVERIFY2(std::abs(moved.x() - dx) < 0.1 * d && std::abs(moved.y()) < 0.1 * d,
                     qPrintable(QStringLiteral("frame %1: the eye moved by (%2, %3), the face by %4")
-                            .arg(i)
-                            .arg(moved.x())
-                            .arg(moved.y())
-                            .arg(dx)));
+                                   .arg(i)
+                                   .arg(moved.x())
+                                   .arg(moved.y())
+                                   .arg(dx)));
             }
             if (i == 22)
                 QVERIFY(f.motion.mouthOpenEs0 > 0.1);

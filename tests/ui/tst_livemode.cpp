@@ -1,25 +1,31 @@
 #include "capture/framepane.h"
 #include "capture/livesession.h"
+#include "capture/livetake.h"
 #include "capture/livewindow.h"
+#include "capture/microphone.h"
 #include "document/document.h"
 #include "face/fapu.h"
 #include "face/pointtable.h"
 #include "media/mediareader.h"
 #include "playback/playhead.h"
+#include "track/clocksource.h"
 #include "track/trackaccuracy.h"
 #include "track/videofilesource.h"
 #include "uifixture.h"
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QPainter>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include <QThread>
 #include <QUndoStack>
 #include <QtTest>
 
 #include <cmath>
+#include <thread>
 
 using namespace toonface;
 
@@ -63,6 +69,9 @@ private Q_SLOTS:
     void soundDrivesTheMouth();
     void recordPutsTheTakeOnTheTimelineAsOneStep();
     void restPoseAndNoFaceAreSaid();
+    void clockSourceKeepsTime();
+    void heardOnlyVoiceDrivesTheMouth();
+    void microphoneOnlyWithoutMicrophoneSaysSo();
 };
 
 void TestLiveMode::initTestCase()
@@ -292,6 +301,125 @@ void TestLiveMode::restPoseAndNoFaceAreSaid()
     QVERIFY(!session.current().hasTrack);
     QVERIFY(!session.current().cartoon.isNull());
     QCOMPARE(session.current().pose, Pose {});
+}
+
+// ClockSource: frames without pictures numbered by their time; a late reader skips to the frame
+// due; stop() ends a waiting next() at once.
+void TestLiveMode::clockSourceKeepsTime()
+{
+    ClockSource clock(50);
+    QCOMPARE(clock.frameRate(), 50.0);
+    std::optional<VideoFrame> f = clock.next();
+    QVERIFY(f && f->image.isNull());
+    QCOMPARE(f->index, 0);
+    QCOMPARE(f->time, 0.0);
+    f = clock.next();
+    QVERIFY(f);
+    QCOMPARE(f->index, 1);
+    QCOMPARE(f->time, 0.02);
+    QThread::msleep(200);
+    f = clock.next();
+    QVERIFY(f);
+    QVERIFY2(f->index >= 10, qPrintable(QString::number(f->index))); // at least 200 ms in
+    QCOMPARE(f->time, f->index / 50.0);
+
+    ClockSource slow(0.1); // a frame every 10 s: next() waits
+    QVERIFY(slow.next()); // the first at once
+    std::optional<VideoFrame> waited {VideoFrame {}};
+    std::thread reader([&] { waited = slow.next(); });
+    QThread::msleep(50);
+    slow.stop();
+    reader.join();
+    QVERIFY(!waited);
+    QVERIFY(!slow.next());
+}
+
+// Live mode with no camera: the voice alone drives the cartoon's mouth (the face at rest), and a
+// take of it puts mouth keys and the sound on the timeline, keeping the motion already there.
+void TestLiveMode::heardOnlyVoiceDrivesTheMouth()
+{
+    const Audio sound = clipSound();
+    if (sound.isEmpty())
+        QSKIP("the clip's sound cannot be read");
+    QTemporaryDir dir;
+    Document document;
+    fixture::fill(document, dir.filePath(QStringLiteral("portrait.png")));
+    {
+        Animation a = document.animation();
+        a.timeline.addHeadKey({0.5, 4.0, {}, 1.0});
+        a.timeline.addHeadKey({3.0, -4.0, {}, 1.0});
+        document.changeAnimation(a, QStringLiteral("head"));
+    }
+    const QVector<HeadKey> heads = document.timeline().headKeys();
+    LiveSession session(&document);
+    session.setImageSize(QSize(160, 160));
+    int open = 0, shut = 0, total = 0;
+    connect(&session, &LiveSession::frameReady, this, [&] {
+        const LiveFrame &f = session.current();
+        ++total;
+        QVERIFY(f.soundDrivesMouth);
+        QVERIFY(!f.hasTrack);
+        QVERIFY(!f.cartoon.isNull());
+        const std::array<QPointF, 4> d = document.mouthShapes().displacements(f.sound.shape, document.face());
+        QCOMPARE(f.pose.offset[pt::idx("8.2")], d[1] * f.sound.weight);
+        (f.sound.shape == MouthShape::M ? shut : open) += 1;
+    });
+    session.start(std::make_unique<ClockSource>(30));
+    session.startRecording();
+    // The voice as a microphone hears it: 20 ms at a time, in real time.
+    const int chunk = sound.sampleRate / 50;
+    QElapsedTimer clock;
+    clock.start();
+    for (qsizetype at = 0; at < sound.samples.size(); at += chunk) {
+        session.pushAudio(
+            sound.samples.constData() + at, std::min<qsizetype>(chunk, sound.samples.size() - at), sound.sampleRate);
+        while (clock.elapsed() < (at + chunk) * 1000 / sound.sampleRate)
+            QTest::qWait(5);
+    }
+    const LiveTake take = session.stopRecording();
+    session.stop();
+    qInfo("heard-only mouth: %d open, %d shut of %d frames", open, shut, total);
+    QVERIFY(open > total / 4);
+    QVERIFY(shut > 0);
+    QVERIFY(take.frames.isEmpty());
+    QCOMPARE(take.mouthMode, LiveMouth::Microphone);
+    QVERIFY2(std::abs(take.duration - sound.duration()) < 0.5, qPrintable(QString::number(take.duration)));
+    QVERIFY(std::abs(take.audio.duration() - sound.duration()) < 0.1);
+    QVERIFY(!take.mouth.isEmpty());
+
+    const int steps = document.undoStack()->count();
+    QString message;
+    QVERIFY2(commitTake(&document, take, 1.0, dir.filePath(QStringLiteral("take.wav")), &message), qPrintable(message));
+    QCOMPARE(document.undoStack()->count(), steps + 1);
+    QVERIFY2(message.startsWith(QStringLiteral("Recorded")) && message.contains(QStringLiteral("microphone")),
+        qPrintable(message));
+    const Timeline &t = document.timeline();
+    QCOMPARE(t.headKeys(), heads); // the motion there is kept
+    QVERIFY(t.poseKeys().isEmpty());
+    QVERIFY(t.mouthKeys().size() >= 4);
+    int opened = 0;
+    for (const MouthKey &k : t.mouthKeys()) {
+        QVERIFY(k.time >= 1.0 - 1e-9 && k.time <= 1.0 + take.duration + 1e-9);
+        opened += k.shape != MouthShape::M ? 1 : 0;
+    }
+    QVERIFY(opened >= 2);
+    QVERIFY(t.audio());
+    QCOMPARE(t.audio()->offset, 1.0);
+    QVERIFY(QFileInfo::exists(t.audio()->path));
+}
+
+// "Microphone only" on a machine with no microphone: the window says so and nothing starts.
+void TestLiveMode::microphoneOnlyWithoutMicrophoneSaysSo()
+{
+    if (Microphone::isPresent())
+        QSKIP("this machine has a microphone (tst_microphone covers the source with one)");
+    Document document;
+    fixture::fill(document);
+    Playhead playhead;
+    LiveWindow window(&document, &playhead);
+    QVERIFY(!window.startMicrophoneOnly());
+    QCOMPARE(window.statusText(), Microphone::noMicrophoneMessage());
+    QVERIFY(!window.session()->isRunning());
 }
 
 QTEST_MAIN(TestLiveMode)

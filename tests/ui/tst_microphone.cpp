@@ -3,19 +3,24 @@
 #include "videofixture.h"
 
 #include "capture/livesession.h"
+#include "capture/livewindow.h"
 #include "capture/microphone.h"
 #include "document/document.h"
+#include "playback/playhead.h"
 #include "speech/audio.h"
 #include "speech/script.h"
 #include "speech/tts.h"
 #include "track/videofilesource.h"
 
 #include <QAudioDevice>
+#include <QFileInfo>
 #include <QMediaDevices>
 #include <QProcess>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QUndoStack>
 
 #include <algorithm>
 #include <cmath>
@@ -200,6 +205,57 @@ private Q_SLOTS:
         QVERIFY(take.audio.duration() > m_played.duration() * 0.8);
         const QVector<double> level = loudness(take.audio.samples, take.audio.sampleRate);
         QVERIFY(*std::max_element(level.begin(), level.end()) > -30); // the speech, not silence
+    }
+
+    // Live mode with no camera, as here: "Microphone only" makes the voice the performer. The
+    // cartoon speaks while the speech plays, and Record puts the mouth and the sound on the
+    // timeline in one undo step.
+    void microphoneOnlyPerformance()
+    {
+        if (!m_skip.isEmpty())
+            QSKIP(qPrintable(m_skip));
+        QTemporaryDir dir;
+        Document document;
+        fixture::fill(document, dir.filePath(QStringLiteral("portrait.png")));
+        Playhead playhead;
+        playhead.setTime(2.0);
+        LiveWindow window(&document, &playhead);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY2(window.startMicrophoneOnly(), qPrintable(window.statusText()));
+        QVERIFY2(window.statusText().contains(QString::fromLatin1(testing::PulseServer::kMicrophoneDescription)),
+            qPrintable(window.statusText()));
+        QVERIFY(!window.restPoseButton()->isEnabled()); // no picture to take it from
+        int open = 0, frames = 0;
+        connect(window.session(), &LiveSession::frameReady, this, [&] {
+            ++frames;
+            open += window.session()->current().sound.shape != MouthShape::M ? 1 : 0;
+        });
+        const int steps = document.undoStack()->count();
+        QTest::mouseClick(window.recordButton(), Qt::LeftButton);
+        QVERIFY(window.session()->isRecording());
+        QProcess player;
+        testing::PulseServer::play(player, m_speech);
+        QVERIFY(player.waitForStarted(5000));
+        QTRY_VERIFY_WITH_TIMEOUT(player.state() == QProcess::NotRunning, 20000);
+        QTest::qWait(300);
+        QTest::mouseClick(window.recordButton(), Qt::LeftButton);
+        qInfo(
+            "microphone only: %d of %d frames with the mouth open; %s", open, frames, qPrintable(window.statusText()));
+        QVERIFY(frames > 30 * m_played.duration() / 2); // drawn at about the clock's 30 fps
+        QVERIFY(open >= frames / 5);
+        QCOMPARE(document.undoStack()->count(), steps + 1);
+        const Timeline &t = document.timeline();
+        QVERIFY(t.poseKeys().isEmpty());
+        int opened = 0;
+        for (const MouthKey &k : t.mouthKeys())
+            opened += k.shape != MouthShape::M && k.time >= 2.0 ? 1 : 0;
+        QVERIFY2(opened >= 5, qPrintable(QString::number(opened)));
+        QVERIFY(t.audio());
+        QCOMPARE(t.audio()->offset, 2.0);
+        QVERIFY(t.audio()->duration > 0.8 * m_played.duration());
+        QVERIFY(QFileInfo::exists(t.audio()->path));
+        window.close();
     }
 
     // The microphone taken away while it records: a message naming it, no crash; afterwards

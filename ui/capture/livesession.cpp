@@ -162,6 +162,7 @@ void LiveSession::startRecording()
         std::lock_guard lock(m_lock);
         m_recordedFrames.clear();
         m_recordStart.reset();
+        m_recordedSpan = 0;
     }
     {
         std::lock_guard lock(m_soundLock);
@@ -188,6 +189,9 @@ LiveTake LiveSession::stopRecording()
             take.fps = (take.frames.size() - 1) / std::max(1e-3, take.frames.last().time - take.frames.first().time);
         if (!take.frames.isEmpty())
             take.duration = take.frames.last().time + (take.fps > 0 ? 1.0 / take.fps : 0.0);
+        take.duration = std::max(take.duration, m_recordedSpan); // the frames heard only count too
+        if (take.frames.isEmpty() && take.duration > 0)
+            take.mouthMode = LiveMouth::Microphone; // heard only: the sound was the mouth
         if (!m_clipAudio.isEmpty() && m_recordStart) {
             // The clip's own sound over the take.
             const qsizetype from = std::clamp<qsizetype>(
@@ -273,12 +277,19 @@ void LiveSession::run(FrameSource *source, quint64 generation)
         if (soundCount > 0)
             feedSound(sound, soundCount);
 
+        // A frame with no picture (ClockSource: the performer is only heard) is the cartoon at
+        // rest with the sound's mouth.
+        const bool heardOnly = frame->image.isNull();
+        if (heardOnly)
+            mode = LiveMouth::Microphone;
+
         // The rest pose is detected beside the frames (a detection costs many frames), which
         // go on showing meanwhile; the tracker is swapped in when it is ready.
         if (restJob.valid() && restJob.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
             takeRestPose();
         const double t = now();
-        if (!restJob.valid() && (m_restRequested || (!m_tracker->hasNeutral() && t - lastRestTry > kRestPoseRetryS))) {
+        if (!heardOnly && !restJob.valid()
+            && (m_restRequested || (!m_tracker->hasNeutral() && t - lastRestTry > kRestPoseRetryS))) {
             lastRestTry = t;
             restJob = std::async(std::launch::async,
                 [options = m_tracker->options(), image = frame->image, asked = m_restRequested.exchange(false)] {
@@ -295,7 +306,7 @@ void LiveSession::run(FrameSource *source, quint64 generation)
         out.source = frame->image;
         out.index = frame->index;
         out.arrival = arrival;
-        if (m_tracker->hasNeutral()) {
+        if (!heardOnly && m_tracker->hasNeutral()) {
             out.tracked = m_tracker->track(*frame);
             out.hasTrack = true;
         }
@@ -316,12 +327,16 @@ void LiveSession::run(FrameSource *source, quint64 generation)
             std::lock_guard lock(m_lock);
             if (out.hasTrack && out.tracked.lost)
                 ++m_figures.lost;
-            if (m_recording && out.hasTrack) {
+            if (m_recording && (out.hasTrack || heardOnly)) {
                 if (!m_recordStart)
                     m_recordStart = frame->time;
-                TrackedFrame recorded = out.tracked;
-                recorded.time = frame->time - *m_recordStart;
-                m_recordedFrames.append(recorded);
+                const double at = frame->time - *m_recordStart;
+                m_recordedSpan = at + 1.0 / std::max(1.0, source->frameRate());
+                if (out.hasTrack) {
+                    TrackedFrame recorded = out.tracked;
+                    recorded.time = at;
+                    m_recordedFrames.append(recorded);
+                }
             }
         }
         publish(std::move(out));

@@ -74,8 +74,9 @@ struct LiveTake
 // The first frame with a face becomes the rest pose (the neutral); setRestPose() makes the
 // next frame the new one. The mouth follows the camera, the sound (pushAudio(): the
 // microphone; or the clip's own sound given to start(), fed in step with its frames) or both
-// (the sound while the face is lost). Recording keeps the tracked frames, the sound and the
-// sound's mouth until stopRecording().
+// (the sound while the face is lost). A source of frames without pictures (ClockSource) is a
+// performer only heard: the cartoon at rest with the sound's mouth. Recording keeps the tracked
+// frames, the sound and the sound's mouth until stopRecording().
 //
 // Lives on the GUI thread; pushAudio() may be called from any thread.
 class LiveSession : public QObject
@@ -160,6 +161,7 @@ private:
     std::atomic_bool m_recording {false};
     QVector<TrackedFrame> m_recordedFrames; // under m_lock
     std::optional<double> m_recordStart; // source time of the take's first frame, under m_lock
+    double m_recordedSpan = 0; // seconds from it to the end of the newest frame recorded, under m_lock
     double m_lastFrameTime = 0;
 
     LiveFrame m_current;

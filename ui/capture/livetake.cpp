@@ -24,12 +24,14 @@ bool commitTake(Document *document, const LiveTake &take, double at, const QStri
 {
     QString unused;
     QString &out = message ? *message : unused;
-    if (take.frames.isEmpty()) {
-        out = LiveTakeText::tr("Nothing was recorded: no frame with a face was tracked.");
-        return false;
-    }
     // The microphone's mouth throughout, or (Both) where the camera lost the face.
     const bool soundMouth = take.mouthMode != LiveMouth::Camera && !take.mouth.isEmpty();
+    const bool heardOnly = take.frames.isEmpty();
+    if (heardOnly && !soundMouth) {
+        out = take.duration > 0 ? LiveTakeText::tr("Nothing was recorded: the microphone heard nothing.")
+                                : LiveTakeText::tr("Nothing was recorded: no frame with a face was tracked.");
+        return false;
+    }
     Animation after = document->animation();
     addTakeToTimeline(take.frames, take.fps, take.duration,
         soundMouth ? audioMouthKeys(take.mouth) : QVector<MouthKey> {}, &after.timeline, at,
@@ -46,7 +48,11 @@ bool commitTake(Document *document, const LiveTake &take, double at, const QStri
     }
     document->changeAnimation(after, LiveTakeText::tr("Record Live Take"));
     const QString length = QString::number(take.duration, 'f', 1);
-    if (sound)
+    if (heardOnly)
+        out = sound ? LiveTakeText::tr("Recorded %1 s of the microphone: the mouth, with its sound saved as %2")
+                          .arg(length, QDir::toNativeSeparators(audioPath))
+                    : LiveTakeText::tr("Recorded %1 s of the microphone: the mouth, no sound").arg(length);
+    else if (sound)
         out = LiveTakeText::tr("Recorded %1 s (%2 frames) with its sound, saved as %3")
                   .arg(length)
                   .arg(take.frames.size())

@@ -11,6 +11,7 @@
 #include "i18n/coretext.h"
 #include "media/mediareader.h"
 #include "playback/playhead.h"
+#include "track/clocksource.h"
 #include "track/videofilesource.h"
 #include "window/settings.h"
 
@@ -33,6 +34,8 @@ namespace toonface {
 namespace {
 
 constexpr int kClipItem = -1; // the source box's "Video file…" entry
+constexpr int kMicrophoneItem = -2; // its "Microphone only" entry
+constexpr double kHeardOnlyFps = 30; // the cartoon's rate when the performer is only heard
 
 double percentile(QVector<double> values, double p)
 {
@@ -152,9 +155,9 @@ LiveWindow::LiveWindow(Document *document, Playhead *playhead, QWidget *parent)
         m_source->setCaption(tr("No camera"));
     m_restPose->setEnabled(false);
     m_record->setEnabled(false);
-    setStatus(CameraFeed::cameras().isEmpty()
-            ? joinSentences(CameraFeed::noCameraMessage(), tr("Choose “Video file…” to perform from a clip."))
-            : tr("Choose a camera or a video file."));
+    setStatus(CameraFeed::cameras().isEmpty() ? joinSentences(CameraFeed::noCameraMessage(),
+                  tr("Choose “Video file…” to perform from a clip, or “Microphone only” to speak for the cartoon."))
+                                              : tr("Choose a camera, a video file, or the microphone only."));
 }
 
 LiveWindow::~LiveWindow()
@@ -172,6 +175,7 @@ void LiveWindow::fillSources()
     for (const QString &camera : cameras)
         m_sources->addItem(tr("Camera: %1").arg(camera), camera);
     m_sources->addItem(tr("Video file…"), kClipItem);
+    m_sources->addItem(tr("Microphone only (no camera)"), kMicrophoneItem);
     const int again = m_sources->findText(current);
     if (again >= 0)
         m_sources->setCurrentIndex(again);
@@ -181,7 +185,12 @@ void LiveWindow::fillSources()
 
 void LiveWindow::onSourceChosen(int index)
 {
-    if (m_sources->itemData(index).toInt() == kClipItem && m_sources->itemData(index).typeId() == QMetaType::Int) {
+    const QVariant data = m_sources->itemData(index);
+    if (data.typeId() == QMetaType::Int && data.toInt() == kMicrophoneItem) {
+        startMicrophoneOnly();
+        return;
+    }
+    if (data.typeId() == QMetaType::Int && data.toInt() == kClipItem) {
         const QString path = QFileDialog::getOpenFileName(this, tr("Perform from a Video"), Settings().lastDirectory(),
             tr("Videos (*.mp4 *.mov *.mkv *.avi *.mpg *.mpeg *.webm);;All files (*)"));
         if (!path.isEmpty())
@@ -207,6 +216,7 @@ bool LiveWindow::startCamera(const QString &description)
     m_session->start(std::move(source));
     m_source->setCaption(QString());
     m_restPose->setEnabled(true);
+    m_mouth->show();
     m_record->setEnabled(m_document->hasFace());
     setStatus(tr("Camera “%1”: look straight at it with a relaxed face").arg(m_feed->description()));
     applyMouthMode();
@@ -236,6 +246,7 @@ bool LiveWindow::startClip(const QString &path)
     m_session->start(std::move(source), std::move(sound), same);
     m_source->setCaption(QString());
     m_restPose->setEnabled(true);
+    m_mouth->show();
     m_record->setEnabled(m_document->hasFace());
     const int item = m_sources->findData(kClipItem);
     m_sources->setItemText(item, tr("Video file: %1").arg(QFileInfo(path).fileName()));
@@ -243,6 +254,28 @@ bool LiveWindow::startClip(const QString &path)
     if (!same)
         setStatus(tr("Playing %1 as the performer").arg(QFileInfo(path).fileName()));
     applyMouthMode();
+    return true;
+}
+
+bool LiveWindow::startMicrophoneOnly()
+{
+    stopSource();
+    QString error;
+    if (!m_microphone->isActive() && !m_microphone->start(&error)) {
+        setStatus(error);
+        return false;
+    }
+    m_clip.clear();
+    // No picture: the cartoon rests and the voice moves its mouth, at a camera's rate.
+    m_session->start(std::make_unique<ClockSource>(kHeardOnlyFps));
+    m_source->setBox({});
+    m_source->setImage({});
+    m_source->setCaption(tr("Microphone “%1”").arg(m_microphone->description()));
+    m_restPose->setEnabled(false);
+    m_mouth->hide(); // the microphone is all there is
+    m_record->setEnabled(m_document->hasFace());
+    m_sources->setCurrentIndex(m_sources->findData(kMicrophoneItem));
+    setStatus(tr("Listening to “%1”: speak, and the cartoon speaks with you").arg(m_microphone->description()));
     return true;
 }
 
@@ -321,7 +354,7 @@ void LiveWindow::toggleRecording(bool on)
         if (!m_session->isRunning() || !m_document->hasFace()) {
             QSignalBlocker block(m_record);
             m_record->setChecked(false);
-            setStatus(tr("Start a camera or a clip, with a face open, before recording."));
+            setStatus(tr("Start a camera, a clip or the microphone, with a face open, before recording."));
             return;
         }
         if (m_clip.isEmpty() && !m_microphone->isActive()) {

@@ -27,7 +27,8 @@ class Playhead;
 // small beside it. Set Rest Pose takes the current frame as the neutral face; Record/Stop puts
 // the performance on the timeline at the playhead as one undo step (with the microphone's or
 // the clip's sound as a WAV beside the project, or motion only when there is none). The mouth
-// follows the camera, the microphone, or both (the microphone when the lips are lost).
+// follows the camera, the microphone, or both (the microphone when the lips are lost); with the
+// source "Microphone only" no camera is needed: the voice alone moves the mouth.
 class LiveWindow : public QWidget
 {
     Q_OBJECT
@@ -41,6 +42,9 @@ public:
     // Starts the camera described so (empty: the default); false, with the no-camera message
     // shown, when there is none.
     bool startCamera(const QString &description);
+    // The microphone alone drives the cartoon (its mouth; the face at rest): for a performer
+    // only heard. False, with the microphone's message shown, when there is none.
+    bool startMicrophoneOnly();
     // Stops the source (and a recording, committing it).
     void stopSource();
 

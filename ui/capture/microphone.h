@@ -38,6 +38,8 @@ public:
     bool start(QString *error);
     void stop();
     bool isActive() const { return m_source != nullptr; }
+    // The microphone in use (its description), empty when none is.
+    QString description() const { return isActive() ? m_input.description() : QString(); }
     int sampleRate() const { return m_format.sampleRate(); }
 
     // Interleaved samples of `format` -> mono floats in [-1, 1] (channels averaged).
