@@ -8,21 +8,11 @@
 #include <QThread>
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <memory>
 
 using namespace toonface::cli;
 
 namespace {
-
-// Qt's own diagnostics (platform plugins, runtime dirs, fonts) would break the contract that
-// stderr carries one error line; they are shown only with TOONFACE_DEBUG set.
-void qtMessages(QtMsgType type, const QMessageLogContext &, const QString &message)
-{
-    if (type == QtFatalMsg || type == QtCriticalMsg || qEnvironmentVariableIsSet("TOONFACE_DEBUG"))
-        QTextStream(stderr) << "toonface-cli: qt: " << message << Qt::endl;
-}
 
 void printHelp()
 {
@@ -41,15 +31,6 @@ void printHelp()
         << Cli::tr("Exit codes: 0 success, 2 usage, 3 unreadable or invalid input, 4 no face found,\n"
                    "5 the audio and the script could not be aligned, 1 other failures.")
         << "\n";
-}
-
-const Command *findCommand(const QString &name)
-{
-    for (const Command &c : commands()) {
-        if (c.name == name)
-            return &c;
-    }
-    return nullptr;
 }
 
 // Whether the arguments of a detecting command may lead to the landmark method: not for
@@ -71,25 +52,12 @@ bool mayUseLandmarks(const QStringList &args)
     return true;
 }
 
-// Ends the process once a command has run, without tearing the application down: everything
-// the command wrote is closed by then (files committed, streams flushed here), the warm-up's
-// threads have ended (the caches are written), and the teardown would only cost time:
-// QGuiApplication's destructor frees the font database, which starts fontconfig (60-70 ms)
-// just to free it when no text was drawn, and freeing the landmark model and the rest
-// page by page is slower than the kernel's ending of the whole process.
-[[noreturn]] void endNow(int code)
-{
-    std::fflush(stdout);
-    std::fflush(stderr);
-    std::_Exit(code);
-}
-
 } // namespace
 
 int main(int argc, char *argv[])
 {
     toonface::markStage("main");
-    qInstallMessageHandler(qtMessages);
+    installQtMessageFilter();
     // Read the arguments before QGuiApplication consumes the ones it knows (--style among them).
     QStringList args;
     for (int i = 1; i < argc; ++i)

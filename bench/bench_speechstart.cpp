@@ -9,6 +9,7 @@
 #include <QFile>
 #include <QHash>
 #include <QJsonArray>
+#include <QSet>
 #include <QTemporaryDir>
 
 #include <algorithm>
@@ -172,7 +173,99 @@ QJsonObject lipsyncCli()
     return out;
 }
 
+// The launch of toonface-cli: the ms from the process's start to main and to the point where
+// the work starts (lipsync: the script read, aligning begins; animate: main, the command
+// starts), medians of 9 runs, and the shared libraries the dynamic loader opened
+// (LD_DEBUG=files). lipsync of a WAV runs in the light toonface-cli; animate is handed over
+// to toonface-cli-full (its libraries include the light program's, loaded first).
+QJsonObject cliStart()
+{
+    QJsonObject out = loadAverage();
+    QTemporaryDir dir;
+    const QString sentence = QStringLiteral("今天天气很好，我们去公园散步吧。");
+    const Script script = parseScript(sentence, Language::Mandarin).script;
+    const Audio audio = resampled(synthesize(script).audio, kSpeechSampleRate);
+    const QString wav = dir.filePath(QStringLiteral("speech.wav"));
+    const QString txt = dir.filePath(QStringLiteral("speech.txt"));
+    QString error;
+    QFile f(txt);
+    if (!writeAudio(wav, audio, &error) || !f.open(QIODevice::WriteOnly)) {
+        out.insert(QStringLiteral("error"), error);
+        return out;
+    }
+    f.write(sentence.toUtf8());
+    f.close();
+    const QStringList env = {QStringLiteral("TOONFACE_CACHE_DIR=") + dir.filePath(QStringLiteral("cache"))};
+    const QString photo = QStringLiteral("/usr/share/matplotlib/mpl-data/sample_data/grace_hopper.jpg");
+    struct Case
+    {
+        const char *name;
+        QStringList args;
+        const char *workStarts; // the mark after which the command's own work runs
+    };
+    const Case cases[] = {
+        {"lipsync",
+            {QStringLiteral("lipsync"), QStringLiteral("--audio"), wav, QStringLiteral("--script"), txt,
+                QStringLiteral("-o"), dir.filePath(QStringLiteral("out.json"))},
+            "script"},
+        {"animate",
+            {QStringLiteral("animate"), photo, QStringLiteral("--audio"), wav, QStringLiteral("--script"), txt,
+                QStringLiteral("-o"), dir.filePath(QStringLiteral("out.svg"))},
+            "main"},
+    };
+    bench::runMeasured(QStringLiteral(TOONFACE_CLI_PATH), cases[0].args, env); // builds the dictionary cache
+    for (const Case &c : cases) {
+        QJsonObject o;
+        std::vector<double> toMain, toWork;
+        for (int run = 0; run < 9; ++run) {
+            const bench::ChildRun r = bench::runMeasured(QStringLiteral(TOONFACE_CLI_PATH), c.args,
+                env + QStringList {QStringLiteral("TOONFACE_TIMINGS=1")}, true);
+            QHash<QByteArray, double> marks;
+            for (const QByteArray &line : r.stderrText.split('\n')) {
+                const QList<QByteArray> parts = line.split(' ');
+                if (parts.size() == 4 && parts[1] == "timing:")
+                    marks.insert(parts[2], parts[3].toDouble());
+            }
+            if (!r.ok || !marks.contains("main") || !marks.contains(c.workStarts)) {
+                o.insert(QStringLiteral("error"), QString::fromLocal8Bit(r.stderrText).right(300));
+                break;
+            }
+            toMain.push_back(marks.value("main") - r.startedMs);
+            toWork.push_back(marks.value(c.workStarts) - r.startedMs);
+        }
+        const auto median = [](std::vector<double> v) {
+            std::sort(v.begin(), v.end());
+            return v.empty() ? 0.0 : std::round(v[v.size() / 2] * 10) / 10;
+        };
+        o.insert(QStringLiteral("startToMainMs"), median(toMain));
+        o.insert(QStringLiteral("startToWorkMs"), median(toWork));
+        o.insert(QStringLiteral("workStartsAt"), QLatin1String(c.workStarts));
+        const bench::ChildRun traced = bench::runMeasured(
+            QStringLiteral(TOONFACE_CLI_PATH), c.args, env + QStringList {QStringLiteral("LD_DEBUG=files")}, true);
+        QSet<QByteArray> libraries;
+        for (const QByteArray &line : traced.stderrText.split('\n')) {
+            const qsizetype at = line.indexOf("file=");
+            if (at >= 0 && line.indexOf(" [", at) > at && line.contains("needed by"))
+                libraries.insert(line.mid(at + 5, line.indexOf(" [", at) - at - 5));
+        }
+        o.insert(QStringLiteral("librariesLoaded"), libraries.size());
+        for (const char *heavy : {"libavcodec", "libopencv_core", "libdlib", "libQt6Gui"}) {
+            bool found = false;
+            for (const QByteArray &l : libraries)
+                found = found || l.startsWith(heavy);
+            o.insert(QLatin1String(heavy), found);
+        }
+        out.insert(QLatin1String(c.name), o);
+    }
+    out.insert(QStringLiteral("what"),
+        QStringLiteral("toonface-cli's launch: ms from process start to main and to the command's work (lipsync: "
+                       "the script read, aligning starts), medians of 9 runs, dictionary cache warm; shared "
+                       "libraries opened (LD_DEBUG=files) and whether the heavy ones are among them"));
+    return out;
+}
+
 } // namespace
 
+TOONFACE_BENCHMARK("speech.cliStart", cliStart);
 TOONFACE_BENCHMARK("speech.dictionaryStart", dictionaryStart);
 TOONFACE_BENCHMARK("speech.lipsyncCli", lipsyncCli);

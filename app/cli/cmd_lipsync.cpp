@@ -1,6 +1,7 @@
 #include "cli/command.h"
 #include "speech/lipsync.h"
 #include "speech/stagetimes.h"
+#include "speech/wavfile.h"
 
 #include <QFileInfo>
 #include <QJsonDocument>
@@ -10,20 +11,42 @@ namespace toonface::cli {
 
 namespace {
 
+struct LipsyncOptions
+{
+    QCommandLineOption audio {QStringLiteral("audio"),
+        Cli::tr("The speech recording (WAV, FLAC, MP3, OGG, M4A or a video's sound)."), QStringLiteral("AUDIO")};
+    QCommandLineOption script {QStringLiteral("script"),
+        Cli::tr("What is said, as UTF-8 text: Chinese characters, pinyin, zhuyin, or English."),
+        QStringLiteral("SCRIPT")};
+    QCommandLineOption lang {QStringLiteral("lang"),
+        Cli::tr("Language of the script: cmn, en, or auto (from the script)."), QStringLiteral("cmn|en|auto"),
+        QStringLiteral("auto")};
+    QCommandLineOption output {QStringList {QStringLiteral("o"), QStringLiteral("output")},
+        Cli::tr("Write the result here: .tsv for Rhubarb-style cues, JSON otherwise (default: JSON on stdout)."),
+        QStringLiteral("OUT.json|OUT.tsv")};
+};
+
+// The light toonface-cli runs lipsync unless the recording needs FFmpeg's decoders: a plain
+// PCM WAV file (speech/wavfile.h) is read there, and so are the errors of a missing or empty
+// file and of bad arguments (the same code prints them in either program).
+bool runsLight(const QStringList &args)
+{
+    QCommandLineParser parser;
+    const LipsyncOptions o;
+    parser.addOptions({o.audio, o.script, o.lang, o.output});
+    parser.addOption(QCommandLineOption(QStringList {QStringLiteral("h"), QStringLiteral("help")}));
+    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    if (!parser.parse(QStringList {QStringLiteral("toonface-cli lipsync")} + args) || !parser.isSet(o.audio))
+        return true;
+    const QFileInfo file(parser.value(o.audio));
+    return !file.isFile() || file.size() == 0 || probePlainWav(file.filePath()).has_value();
+}
+
 int runLipsync(const Command &self, const QStringList &args)
 {
     QCommandLineParser parser;
-    const QCommandLineOption audio(QStringLiteral("audio"),
-        Cli::tr("The speech recording (WAV, FLAC, MP3, OGG, M4A or a video's sound)."), QStringLiteral("AUDIO"));
-    const QCommandLineOption script(QStringLiteral("script"),
-        Cli::tr("What is said, as UTF-8 text: Chinese characters, pinyin, zhuyin, or English."),
-        QStringLiteral("SCRIPT"));
-    const QCommandLineOption lang(QStringLiteral("lang"),
-        Cli::tr("Language of the script: cmn, en, or auto (from the script)."), QStringLiteral("cmn|en|auto"),
-        QStringLiteral("auto"));
-    const QCommandLineOption output(QStringList {QStringLiteral("o"), QStringLiteral("output")},
-        Cli::tr("Write the result here: .tsv for Rhubarb-style cues, JSON otherwise (default: JSON on stdout)."),
-        QStringLiteral("OUT.json|OUT.tsv"));
+    const LipsyncOptions o;
+    const QCommandLineOption &audio = o.audio, &script = o.script, &lang = o.lang, &output = o.output;
     parser.addOptions({audio, script, lang, output});
     bool helped = false;
     if (!parseArguments(parser, self, args, &helped))
@@ -55,7 +78,7 @@ const CommandRegistrar registrar({QStringLiteral("lipsync"),
     QString::fromUtf8(QT_TRANSLATE_NOOP("toonface::cli::Cli",
         "Time a recording's syllables against its script and give the mouth shapes (toonface.lipsync/1).")),
     QStringLiteral("lipsync --audio AUDIO --script SCRIPT [--lang cmn|en] [-o OUT.json|OUT.tsv]"), runLipsync, false,
-    true});
+    true, runsLight});
 
 } // namespace
 

@@ -4,6 +4,7 @@
 #include <QTextStream>
 
 #include <cstdio>
+#include <cstdlib>
 #include <unistd.h>
 
 namespace toonface::cli {
@@ -12,6 +13,37 @@ std::vector<Command> &commands()
 {
     static std::vector<Command> list;
     return list;
+}
+
+const Command *findCommand(const QString &name)
+{
+    for (const Command &c : commands()) {
+        if (c.name == name)
+            return &c;
+    }
+    return nullptr;
+}
+
+namespace {
+
+void qtMessages(QtMsgType type, const QMessageLogContext &, const QString &message)
+{
+    if (type == QtFatalMsg || type == QtCriticalMsg || qEnvironmentVariableIsSet("TOONFACE_DEBUG"))
+        QTextStream(stderr) << "toonface-cli: qt: " << message << Qt::endl;
+}
+
+} // namespace
+
+void installQtMessageFilter()
+{
+    qInstallMessageHandler(qtMessages);
+}
+
+void endNow(int code)
+{
+    std::fflush(stdout);
+    std::fflush(stderr);
+    std::_Exit(code);
 }
 
 int fail(int code, const QString &message)

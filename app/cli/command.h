@@ -43,11 +43,28 @@ struct Command
     // The command never renders (text, SVG, images): it runs without a GUI application, whose
     // start-up (the platform plugin, the font database) would cost more than its work.
     bool coreOnly = false;
+    // Whether the command, with these arguments, runs in the light toonface-cli: without
+    // FFmpeg's formats and codecs, OpenCV, dlib or Qt Gui, whose loading alone costs more than
+    // a short job (app/CMakeLists.txt). Unset: always in the full program.
+    std::function<bool(const QStringList &args)> runsLight = {};
 
     QString translatedSummary() const { return Cli::tr(summary.toUtf8().constData()); }
 };
 
 std::vector<Command> &commands();
+const Command *findCommand(const QString &name);
+
+// Qt's own diagnostics (platform plugins, runtime dirs, fonts) would break the contract that
+// stderr carries one error line; they are shown only with TOONFACE_DEBUG set.
+void installQtMessageFilter();
+
+// Ends the process once a command has run, without tearing the application down: everything
+// the command wrote is closed by then (files committed, streams flushed here), the warm-up's
+// threads have ended (the caches are written), and the teardown would only cost time:
+// QGuiApplication's destructor frees the font database, which starts fontconfig (60-70 ms)
+// just to free it when no text was drawn, and freeing the landmark model and the rest
+// page by page is slower than the kernel's ending of the whole process.
+[[noreturn]] void endNow(int code);
 
 struct CommandRegistrar
 {

@@ -2,8 +2,9 @@
 
 #include "face/fapu.h"
 
-#include <QPolygonF>
+#include <QRectF>
 
+#include <algorithm>
 #include <cmath>
 
 namespace toonface {
@@ -33,22 +34,48 @@ void FaceModel::mergeDetection(const FaceModel &detected, bool keepHandPlaced)
     }
 }
 
+namespace {
+
+// The smallest rectangle holding the points (as QPolygonF::boundingRect, without linking Qt
+// Gui for it: the light toonface-cli uses the face model without loading Qt Gui).
+struct Bounds
+{
+    bool empty = true;
+    qreal left = 0, top = 0, right = 0, bottom = 0;
+    void add(const QPointF &p)
+    {
+        if (empty) {
+            left = right = p.x();
+            top = bottom = p.y();
+            empty = false;
+            return;
+        }
+        left = std::min(left, p.x());
+        right = std::max(right, p.x());
+        top = std::min(top, p.y());
+        bottom = std::max(bottom, p.y());
+    }
+    QRectF rect() const { return empty ? QRectF() : QRectF(left, top, right - left, bottom - top); }
+};
+
+} // namespace
+
 QRectF FaceModel::bounds() const
 {
-    QPolygonF poly;
+    Bounds b;
     for (const QPointF &p : m_points)
-        poly << p;
-    return poly.boundingRect();
+        b.add(p);
+    return b.rect();
 }
 
 QRectF FaceModel::bounds(PointGroup group) const
 {
-    QPolygonF poly;
+    Bounds b;
     for (int i = 0; i < kPointCount; ++i) {
         if (pointTable()[i].group == group)
-            poly << m_points[i];
+            b.add(m_points[i]);
     }
-    return poly.boundingRect();
+    return b.rect();
 }
 
 bool FaceModel::isValid() const

@@ -1,35 +1,24 @@
 #include "speech/audio.h"
 
 #include "i18n/coretext.h"
-#include "media/ffmpegutil.h"
+#include "speech/audioconvert.h"
+#include "speech/wavfile.h"
 
-#include <QFile>
 #include <QFileInfo>
 #include <QSaveFile>
 
 extern "C" {
-#include <libavcodec/avcodec.h>
-#include <libavformat/avformat.h>
-#include <libavutil/channel_layout.h>
 #include <libavutil/opt.h>
-#include <libswresample/swresample.h>
 }
 
 #include <cmath>
-#include <cstring>
-#include <limits>
-#include <memory>
 #include <mutex>
 #include <vector>
 
 namespace toonface {
 
-namespace {
+namespace detail {
 
-using av::avError;
-
-// FFmpeg's own log would repeat each problem of a corrupt file on stderr; the errors this
-// file returns say it once. TOONFACE_FFMPEG_LOG=1 keeps FFmpeg's log for debugging.
 void quietFfmpegLog()
 {
     static std::once_flag once;
@@ -38,39 +27,6 @@ void quietFfmpegLog()
             av_log_set_level(AV_LOG_FATAL);
     });
 }
-
-struct FormatInputDeleter
-{
-    void operator()(AVFormatContext *c) const { avformat_close_input(&c); }
-};
-struct CodecDeleter
-{
-    void operator()(AVCodecContext *c) const { avcodec_free_context(&c); }
-};
-struct SwrDeleter
-{
-    void operator()(SwrContext *c) const { swr_free(&c); }
-};
-struct FrameDeleter
-{
-    void operator()(AVFrame *f) const { av_frame_free(&f); }
-};
-struct PacketDeleter
-{
-    void operator()(AVPacket *p) const { av_packet_free(&p); }
-};
-
-using SwrPtr = std::unique_ptr<SwrContext, SwrDeleter>;
-
-// Below this rate sound cannot carry speech (telephone speech is 8000 Hz); a header claiming
-// less is damaged, and resampling it up to kSpeechSampleRate would make hours from kilobytes.
-constexpr int kMinSampleRate = 4000;
-// No speech codec a recording is made with spends fewer bytes on a second of sound (Opus's
-// lowest speech rate is 750 bytes a second, AMR's 600, PCM thousands): a file decoding to more
-// seconds than its size allows at this rate (plus a little for headers and silence) is damaged
-// or made to blow up, and is refused before it is decoded whole.
-constexpr double kMinBytesPerSecond = 100;
-constexpr double kFreeSeconds = 30;
 
 // Appends everything `swr` gives for `in` (null = flush) as mono floats.
 void convertInto(SwrContext *swr, const uint8_t **in, int inCount, int outRate, int inRate, QVector<float> &out)
@@ -81,13 +37,6 @@ void convertInto(SwrContext *swr, const uint8_t **in, int inCount, int outRate, 
     uint8_t *dst = reinterpret_cast<uint8_t *>(out.data() + at);
     const int got = swr_convert(swr, &dst, room, in, inCount);
     out.resize(at + std::max(got, 0));
-}
-
-void appendSamples(QVector<float> &to, const float *samples, qsizetype count)
-{
-    const qsizetype at = to.size();
-    to.resize(at + count);
-    std::copy(samples, samples + count, to.data() + at);
 }
 
 SwrPtr monoFloatResampler(AVChannelLayout *inLayout, AVSampleFormat inFormat, int inRate, int outRate)
@@ -112,6 +61,52 @@ SwrPtr monoFloatResampler(AVChannelLayout *inLayout, AVSampleFormat inFormat, in
     return p;
 }
 
+void DecodedSound::hand(QVector<float> &out)
+{
+    // A damaged float file can hold NaN or infinite samples (and the resampler spreads them
+    // to their neighbours): they are heard as nothing, so they become silence instead of
+    // poisoning every feature computed from them.
+    for (float &s : out) {
+        if (!std::isfinite(s))
+            s = 0;
+        peak = std::max(peak, std::abs(s));
+    }
+    result.sampleCount += out.size();
+    if (!out.isEmpty() && sink)
+        sink(out.constData(), out.size());
+    out.resize(0);
+}
+
+AudioResult DecodedSound::finish(const QString &path, const SpeechProgressFn &progress)
+{
+    AudioResult &r = result;
+    if (peak < 1e-3f) {
+        r.status = AudioStatus::Silent;
+        r.error = withProblem(path,
+            SoundText::tr("it is silent (peak %1 dBFS)").arg(peak > 0 ? 20 * std::log10(peak) : -999.0, 0, 'f', 0));
+        r.audio = {};
+        return r;
+    }
+    r.audio.sampleRate = kSpeechSampleRate;
+    r.status = AudioStatus::Ok;
+    if (progress)
+        progress(1.0, QStringLiteral("decoding"));
+    return r;
+}
+
+} // namespace detail
+
+namespace {
+
+using namespace detail;
+
+void appendSamples(QVector<float> &to, const float *samples, qsizetype count)
+{
+    const qsizetype at = to.size();
+    to.resize(at + count);
+    std::copy(samples, samples + count, to.data() + at);
+}
+
 } // namespace
 
 AudioResult streamAudio(
@@ -129,152 +124,10 @@ AudioResult streamAudio(
         return fail(AudioStatus::Unreadable, SoundText::tr("no such file"));
     if (QFileInfo(path).size() == 0)
         return fail(AudioStatus::Empty, SoundText::tr("the file is empty"));
-
-    AVFormatContext *rawFmt = nullptr;
-    const QByteArray local = QFile::encodeName(path);
-    int rc = avformat_open_input(&rawFmt, local.constData(), nullptr, nullptr);
-    if (rc < 0)
-        return fail(AudioStatus::Unreadable, SoundText::tr("not a readable sound or video file (%1)").arg(avError(rc)));
-    std::unique_ptr<AVFormatContext, FormatInputDeleter> fmt(rawFmt);
-    // A WAV file's PCM is probed for other codecs packed inside it, by default over its first
-    // 5 MB (a tenth of the work of aligning a minute of speech); its first 64 kB tell as much.
-    if (fmt->iformat && std::strcmp(fmt->iformat->name, "wav") == 0)
-        fmt->probesize = 1 << 16;
-    if ((rc = avformat_find_stream_info(fmt.get(), nullptr)) < 0)
-        return fail(AudioStatus::Unreadable, SoundText::tr("cannot read its streams (%1)").arg(avError(rc)));
-    const AVCodec *codec = nullptr;
-    const int stream = av_find_best_stream(fmt.get(), AVMEDIA_TYPE_AUDIO, -1, -1, &codec, 0);
-    if (stream < 0 || !codec)
-        return fail(AudioStatus::Unreadable,
-            stream == AVERROR_DECODER_NOT_FOUND ? SoundText::tr("no decoder for its sound track")
-                                                : SoundText::tr("it has no sound track"));
-    std::unique_ptr<AVCodecContext, CodecDeleter> dec(avcodec_alloc_context3(codec));
-    if (!dec || avcodec_parameters_to_context(dec.get(), fmt->streams[stream]->codecpar) < 0
-        || avcodec_open2(dec.get(), codec, nullptr) < 0)
-        return fail(
-            AudioStatus::Unreadable, SoundText::tr("cannot open the %1 decoder").arg(QString::fromUtf8(codec->name)));
-
-    if (dec->ch_layout.order == AV_CHANNEL_ORDER_UNSPEC) {
-        const int n = dec->ch_layout.nb_channels > 0 ? dec->ch_layout.nb_channels : 1;
-        av_channel_layout_uninit(&dec->ch_layout);
-        av_channel_layout_default(&dec->ch_layout, n);
-    }
-    SwrPtr swr;
-    int swrRate = 0;
-    AVSampleFormat swrFormat = AV_SAMPLE_FMT_NONE;
-
-    std::unique_ptr<AVPacket, PacketDeleter> packet(av_packet_alloc());
-    std::unique_ptr<AVFrame, FrameDeleter> frame(av_frame_alloc());
-    const int64_t fileSize = fmt->pb ? avio_size(fmt->pb) : -1;
-    // Each conversion lands here and goes on to the sink at once.
-    QVector<float> out;
-    float peak = 0;
-    auto hand = [&] {
-        // A damaged float file can hold NaN or infinite samples (and the resampler spreads them
-        // to their neighbours): they are heard as nothing, so they become silence instead of
-        // poisoning every feature computed from them.
-        for (float &s : out) {
-            if (!std::isfinite(s))
-                s = 0;
-            peak = std::max(peak, std::abs(s));
-        }
-        r.sampleCount += out.size();
-        if (!out.isEmpty() && sink)
-            sink(out.constData(), out.size());
-        out.resize(0);
-    };
-    int badPackets = 0;
-    int64_t decodedFrames = 0;
-    double lastReport = -1;
-
-    const double plausibleSeconds
-        = fileSize > 0 ? kFreeSeconds + double(fileSize) / kMinBytesPerSecond : std::numeric_limits<double>::infinity();
-    QString refusal; // why drain() stopped, when it did
-    auto drain = [&]() -> bool {
-        while (avcodec_receive_frame(dec.get(), frame.get()) >= 0) {
-            if (frame->sample_rate < kMinSampleRate) {
-                refusal = SoundText::tr("its sample rate (%1 Hz) is too low for speech (at least %2 Hz)")
-                              .arg(frame->sample_rate)
-                              .arg(kMinSampleRate);
-                return false;
-            }
-            if (!swr || frame->sample_rate != swrRate || frame->format != swrFormat) {
-                if (swr) {
-                    convertInto(swr.get(), nullptr, 0, kSpeechSampleRate, swrRate, out);
-                    hand();
-                }
-                AVChannelLayout layout;
-                if (frame->ch_layout.nb_channels > 0 && frame->ch_layout.order != AV_CHANNEL_ORDER_UNSPEC)
-                    av_channel_layout_copy(&layout, &frame->ch_layout);
-                else
-                    av_channel_layout_default(&layout, std::max(frame->ch_layout.nb_channels, 1));
-                swrRate = frame->sample_rate;
-                swrFormat = AVSampleFormat(frame->format);
-                swr = monoFloatResampler(&layout, swrFormat, swrRate, kSpeechSampleRate);
-                av_channel_layout_uninit(&layout);
-                if (!swr) {
-                    refusal = SoundText::tr("cannot convert its samples");
-                    return false;
-                }
-            }
-            convertInto(swr.get(), const_cast<const uint8_t **>(frame->extended_data), frame->nb_samples,
-                kSpeechSampleRate, swrRate, out);
-            hand();
-            r.sourceDuration += double(frame->nb_samples) / std::max(frame->sample_rate, 1);
-            ++decodedFrames;
-            av_frame_unref(frame.get());
-            if (r.sourceDuration > plausibleSeconds) {
-                refusal = SoundText::tr("it is damaged: it decodes to more than %1 s of sound, more than its %2 bytes "
-                                        "can hold")
-                              .arg(int(plausibleSeconds))
-                              .arg(fileSize);
-                return false;
-            }
-        }
-        return true;
-    };
-
-    while ((rc = av_read_frame(fmt.get(), packet.get())) >= 0) {
-        if (isCancelled(cancel))
-            return fail(AudioStatus::Cancelled, QStringLiteral("cancelled"));
-        if (packet->stream_index == stream) {
-            if (avcodec_send_packet(dec.get(), packet.get()) < 0)
-                ++badPackets;
-            if (!drain())
-                return fail(AudioStatus::Unreadable, refusal);
-        }
-        av_packet_unref(packet.get());
-        if (progress && fileSize > 0) {
-            const double f = double(avio_tell(fmt->pb)) / double(fileSize);
-            if (f - lastReport >= 0.05) {
-                progress(std::min(f, 1.0), QStringLiteral("decoding"));
-                lastReport = f;
-            }
-        }
-    }
-    avcodec_send_packet(dec.get(), nullptr);
-    if (!drain())
-        return fail(AudioStatus::Unreadable, refusal);
-    if (swr) {
-        convertInto(swr.get(), nullptr, 0, kSpeechSampleRate, swrRate, out);
-        hand();
-    }
-
-    if (r.sampleCount == 0) {
-        if (badPackets > 0 || decodedFrames == 0)
-            return fail(decodedFrames == 0 && badPackets == 0 ? AudioStatus::Empty : AudioStatus::Unreadable,
-                badPackets > 0 ? SoundText::tr("its sound track cannot be decoded (corrupt data)")
-                               : SoundText::tr("it holds no sound"));
-        return fail(AudioStatus::Empty, SoundText::tr("it holds no sound"));
-    }
-    if (peak < 1e-3f)
-        return fail(AudioStatus::Silent,
-            SoundText::tr("it is silent (peak %1 dBFS)").arg(peak > 0 ? 20 * std::log10(peak) : -999.0, 0, 'f', 0));
-    r.audio.sampleRate = kSpeechSampleRate;
-    r.status = AudioStatus::Ok;
-    if (progress)
-        progress(1.0, QStringLiteral("decoding"));
-    return r;
+    // Plain PCM WAV is read here; everything else by FFmpeg, which gives the same samples.
+    if (const std::optional<PlainWav> wav = probePlainWav(path))
+        return decodePlainWav(path, *wav, sink, progress, cancel);
+    return decodeWithFfmpeg(path, sink, progress, cancel);
 }
 
 AudioResult loadAudio(const QString &path, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
@@ -405,16 +258,6 @@ bool writeWav(const QString &path, const Audio &audio, QString *error)
     return true;
 }
 
-struct FormatOutputDeleter
-{
-    void operator()(AVFormatContext *c) const
-    {
-        if (c->pb && !(c->oformat->flags & AVFMT_NOFILE))
-            avio_closep(&c->pb);
-        avformat_free_context(c);
-    }
-};
-
 } // namespace
 
 bool writeAudio(const QString &path, const Audio &audio, QString *error)
@@ -422,124 +265,7 @@ bool writeAudio(const QString &path, const Audio &audio, QString *error)
     const QString suffix = QFileInfo(path).suffix().toLower();
     if (suffix == QLatin1String("wav"))
         return writeWav(path, audio, error);
-    quietFfmpegLog();
-    auto fail = [&](const QString &what) {
-        *error = SoundText::tr("cannot write %1: %2").arg(path, what);
-        return false;
-    };
-    const AVCodec *codec = nullptr;
-    if (suffix == QLatin1String("flac"))
-        codec = avcodec_find_encoder(AV_CODEC_ID_FLAC);
-    else if (suffix == QLatin1String("mp3"))
-        codec = avcodec_find_encoder(AV_CODEC_ID_MP3);
-    else if (suffix == QLatin1String("ogg"))
-        codec = avcodec_find_encoder_by_name("libvorbis");
-    else if (suffix == QLatin1String("opus"))
-        codec = avcodec_find_encoder_by_name("libopus");
-    else if (suffix == QLatin1String("m4a") || suffix == QLatin1String("aac"))
-        codec = avcodec_find_encoder(AV_CODEC_ID_AAC);
-    else
-        return fail(SoundText::tr("unknown sound format '.%1' (use wav, flac, mp3, ogg, opus or m4a)").arg(suffix));
-    if (!codec)
-        return fail(SoundText::tr("this FFmpeg has no encoder for .%1").arg(suffix));
-
-    const QByteArray local = QFile::encodeName(path);
-    AVFormatContext *rawOut = nullptr;
-    if (avformat_alloc_output_context2(&rawOut, nullptr, nullptr, local.constData()) < 0 || !rawOut)
-        return fail(SoundText::tr("no container for .%1").arg(suffix));
-    std::unique_ptr<AVFormatContext, FormatOutputDeleter> oc(rawOut);
-    std::unique_ptr<AVCodecContext, CodecDeleter> enc(avcodec_alloc_context3(codec));
-    enc->sample_fmt = codec->sample_fmts ? codec->sample_fmts[0] : AV_SAMPLE_FMT_FLTP;
-    int rate = audio.sampleRate;
-    if (codec->supported_samplerates) {
-        int best = 0;
-        for (const int *r = codec->supported_samplerates; *r; ++r) {
-            if (best == 0 || (std::abs(*r - rate) < std::abs(best - rate)) || (*r >= rate && best < rate))
-                best = *r;
-        }
-        rate = best;
-    }
-    enc->sample_rate = rate;
-    AVChannelLayout mono = AV_CHANNEL_LAYOUT_MONO;
-    av_channel_layout_copy(&enc->ch_layout, &mono);
-    enc->time_base = AVRational {1, rate};
-    if (suffix != QLatin1String("flac"))
-        enc->bit_rate = 64000;
-    if (oc->oformat->flags & AVFMT_GLOBALHEADER)
-        enc->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
-    int rc = avcodec_open2(enc.get(), codec, nullptr);
-    if (rc < 0)
-        return fail(SoundText::tr("cannot open the %1 encoder (%2)").arg(QString::fromUtf8(codec->name), avError(rc)));
-    AVStream *st = avformat_new_stream(oc.get(), nullptr);
-    if (!st || avcodec_parameters_from_context(st->codecpar, enc.get()) < 0)
-        return fail(SoundText::tr("cannot add a sound stream"));
-    st->time_base = enc->time_base;
-    if (!(oc->oformat->flags & AVFMT_NOFILE) && (rc = avio_open(&oc->pb, local.constData(), AVIO_FLAG_WRITE)) < 0)
-        return fail(avError(rc));
-    if ((rc = avformat_write_header(oc.get(), nullptr)) < 0)
-        return fail(avError(rc));
-
-    // All samples in the encoder's format and rate at once (mono: planar = packed).
-    SwrContext *rawSwr = nullptr;
-    if (swr_alloc_set_opts2(
-            &rawSwr, &mono, enc->sample_fmt, rate, &mono, AV_SAMPLE_FMT_FLT, audio.sampleRate, 0, nullptr)
-            < 0
-        || swr_init(rawSwr) < 0) {
-        swr_free(&rawSwr);
-        return fail(SoundText::tr("cannot convert the samples"));
-    }
-    SwrPtr swr(rawSwr);
-    const int bytesPerSample = av_get_bytes_per_sample(enc->sample_fmt);
-    const int capacity = int(av_rescale_rnd(audio.samples.size(), rate, audio.sampleRate, AV_ROUND_UP)) + 256;
-    QByteArray converted(qsizetype(capacity) * bytesPerSample, Qt::Uninitialized);
-    uint8_t *dst = reinterpret_cast<uint8_t *>(converted.data());
-    const uint8_t *src = reinterpret_cast<const uint8_t *>(audio.samples.constData());
-    int total = swr_convert(swr.get(), &dst, capacity, &src, int(audio.samples.size()));
-    if (total >= 0) {
-        uint8_t *tail = dst + qsizetype(total) * bytesPerSample;
-        const int more = swr_convert(swr.get(), &tail, capacity - total, nullptr, 0);
-        total += std::max(more, 0);
-    }
-    if (total < 0)
-        return fail(SoundText::tr("cannot convert the samples"));
-
-    std::unique_ptr<AVFrame, FrameDeleter> frame(av_frame_alloc());
-    std::unique_ptr<AVPacket, PacketDeleter> pkt(av_packet_alloc());
-    const int frameSize = enc->frame_size > 0 ? enc->frame_size : 1024;
-    auto writePackets = [&]() -> bool {
-        while (avcodec_receive_packet(enc.get(), pkt.get()) >= 0) {
-            av_packet_rescale_ts(pkt.get(), enc->time_base, st->time_base);
-            pkt->stream_index = st->index;
-            if (av_interleaved_write_frame(oc.get(), pkt.get()) < 0)
-                return false;
-        }
-        return true;
-    };
-    for (int at = 0; at < total; at += frameSize) {
-        const int n = std::min(frameSize, total - at);
-        av_frame_unref(frame.get());
-        // Encoders with a fixed frame size want full frames: the last one is padded with silence
-        // unless the encoder takes a short last frame (then the file keeps its exact length).
-        const int frameSamples
-            = (codec->capabilities & (AV_CODEC_CAP_VARIABLE_FRAME_SIZE | AV_CODEC_CAP_SMALL_LAST_FRAME)) ? n
-                                                                                                         : frameSize;
-        frame->nb_samples = frameSamples;
-        frame->format = enc->sample_fmt;
-        frame->sample_rate = rate;
-        av_channel_layout_copy(&frame->ch_layout, &mono);
-        if (av_frame_get_buffer(frame.get(), 0) < 0)
-            return fail(SoundText::tr("out of memory"));
-        memset(frame->data[0], 0, size_t(frameSamples) * size_t(bytesPerSample));
-        memcpy(
-            frame->data[0], converted.constData() + qsizetype(at) * bytesPerSample, size_t(n) * size_t(bytesPerSample));
-        frame->pts = at;
-        if (avcodec_send_frame(enc.get(), frame.get()) < 0 || !writePackets())
-            return fail(SoundText::tr("encoding failed"));
-    }
-    avcodec_send_frame(enc.get(), nullptr);
-    if (!writePackets() || av_write_trailer(oc.get()) < 0)
-        return fail(SoundText::tr("encoding failed"));
-    return true;
+    return encodeWithFfmpeg(path, audio, error);
 }
 
 } // namespace toonface

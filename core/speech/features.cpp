@@ -1,11 +1,7 @@
 #include "speech/features.h"
 
 #include "speech/localnorm.h"
-
-extern "C" {
-#include <libavcodec/avfft.h>
-#include <libavutil/mem.h>
-}
+#include "speech/realfft.h"
 
 #include <algorithm>
 #include <array>
@@ -129,27 +125,17 @@ const std::array<float, kWindow> &windowAutocorrelation()
 
 constexpr int kBlock = 256; // frames per call of frameBlock
 
-// FFmpeg's real FFT of kFft points, forward and inverse, with its aligned work buffer: one
-// per thread (a transform context is not safe to share), set up once.
-struct RealFft
+// The real FFT of kFft points with its work buffer: one per thread, set up once.
+struct FrameFft
 {
-    struct RdftEnd
-    {
-        void operator()(RDFTContext *c) const { av_rdft_end(c); }
-    };
-    struct Free
-    {
-        void operator()(float *p) const { av_free(p); }
-    };
-    std::unique_ptr<RDFTContext, RdftEnd> forward {av_rdft_init(kFftBits, DFT_R2C)};
-    std::unique_ptr<RDFTContext, RdftEnd> inverse {av_rdft_init(kFftBits, IDFT_C2R)};
-    std::unique_ptr<float, Free> buffer {static_cast<float *>(av_malloc(kFft * sizeof(float)))};
-    float *data = buffer.get();
+    RealFft fft {kFft};
+    std::array<float, kFft> buffer {};
+    float *data = buffer.data();
 };
 
-RealFft &realFft()
+FrameFft &realFft()
 {
-    thread_local RealFft fft;
+    thread_local FrameFft fft;
     return fft;
 }
 
@@ -221,7 +207,7 @@ void SpeechFeatureStream::frameBlock(const float *samples, int count, Rows &out)
     const int lagLo = kSpeechSampleRate / 400, lagHi = kSpeechSampleRate / 70;
     std::array<float, kBins> power;
     std::array<float, kMelBands> logMel;
-    RealFft &fft = realFft();
+    FrameFft &fft = realFft();
     float *z = fft.data;
     for (int r = 0; r < count; ++r) {
         const float *s = samples + size_t(r) * kHopSamples;
@@ -232,8 +218,8 @@ void SpeechFeatureStream::frameBlock(const float *samples, int count, Rows &out)
         for (int i = 0; i < kWindow; ++i)
             z[i] = (s[i] - mean) * hamming[size_t(i)];
         std::fill(z + kWindow, z + kFft, 0.0f);
-        // FFmpeg's packed real layout: Re0, Re(N/2), Re1, Im1, ..., Re(N/2-1), Im(N/2-1).
-        av_rdft_calc(fft.forward.get(), z);
+        // The packed real layout: Re0, Re(N/2), Re1, Im1, ..., Re(N/2-1), Im(N/2-1).
+        fft.fft.forward(z);
         power[0] = z[0] * z[0];
         for (int k = 1; k < kBins - 1; ++k)
             power[size_t(k)] = z[2 * k] * z[2 * k] + z[2 * k + 1] * z[2 * k + 1];
@@ -273,7 +259,7 @@ void SpeechFeatureStream::frameBlock(const float *samples, int count, Rows &out)
             z[2 * k] = power[size_t(k)];
             z[2 * k + 1] = 0;
         }
-        av_rdft_calc(fft.inverse.get(), z);
+        fft.fft.inverse(z);
         const float *ac = z;
         const float r0 = ac[0];
         float best = 0;

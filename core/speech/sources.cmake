@@ -2,12 +2,15 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/progress.h
   speech/stagetimes.h speech/stagetimes.cpp
   speech/audio.h speech/audio.cpp
+  speech/audioconvert.h speech/wavfile.h speech/wavfile.cpp
+  speech/audioffmpeg.cpp
   speech/pinyin.h speech/pinyin.cpp
   speech/pinyindictionary.h speech/pinyindictionary.cpp
   speech/zhuyin.h speech/zhuyin.cpp
   speech/script.h speech/script.cpp
   speech/tts.h speech/tts.cpp
   speech/ttsvoicefile.h speech/ttsvoicefile.cpp
+  speech/realfft.h speech/realfft.cpp
   speech/features.h speech/features.cpp
   speech/localnorm.h speech/localnorm.cpp
   speech/dtw.h speech/dtw.cpp
