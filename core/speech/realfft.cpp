@@ -79,10 +79,8 @@ void RealFft::complexTransform(bool inverse)
             float *ai = im + start;
             float *br = re + start + half;
             float *bi = im + start + half;
-            // The two halves never overlap: the loop may run four at a time.
-#if defined(__clang__)
-#pragma clang loop vectorize(enable)
-#elif defined(__GNUC__)
+            // The two halves never overlap: GCC may run the loop four at a time.
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC ivdep
 #endif
             for (int j = 0; j < half; ++j) {
