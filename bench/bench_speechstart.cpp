@@ -35,6 +35,20 @@ QJsonObject loadAverage()
     return o;
 }
 
+// A recording and its script for toonface-cli lipsync: `audio` as the WAV `wav`, `text` as
+// the UTF-8 file `txt`.
+bool writeRecording(const QString &wav, const Audio &audio, const QString &txt, const QString &text, QString *error)
+{
+    if (!writeAudio(wav, audio, error))
+        return false;
+    QFile f(txt);
+    if (!f.open(QIODevice::WriteOnly) || f.write(text.toUtf8()) < 0) {
+        *error = txt + QStringLiteral(": ") + f.errorString();
+        return false;
+    }
+    return true;
+}
+
 } // namespace
 
 // The character → pinyin dictionary's start: built from the sources into an empty cache (the
@@ -131,13 +145,10 @@ QJsonObject lipsyncCli()
         const QString wav = dir.filePath(QStringLiteral("speech%1.wav").arg(int(seconds)));
         const QString txt = dir.filePath(QStringLiteral("speech%1.txt").arg(int(seconds)));
         QString error;
-        QFile f(txt);
-        if (!writeAudio(wav, audio, &error) || !f.open(QIODevice::WriteOnly)) {
+        if (!writeRecording(wav, audio, txt, text, &error)) {
             out.insert(QStringLiteral("error"), error);
             return out;
         }
-        f.write(text.toUtf8());
-        f.close();
         const QStringList args = {QStringLiteral("lipsync"), QStringLiteral("--audio"), wav, QStringLiteral("--script"),
             txt, QStringLiteral("-o"), dir.filePath(QStringLiteral("out.json"))};
         QJsonObject o;
@@ -188,13 +199,10 @@ QJsonObject cliStart()
     const QString wav = dir.filePath(QStringLiteral("speech.wav"));
     const QString txt = dir.filePath(QStringLiteral("speech.txt"));
     QString error;
-    QFile f(txt);
-    if (!writeAudio(wav, audio, &error) || !f.open(QIODevice::WriteOnly)) {
+    if (!writeRecording(wav, audio, txt, sentence, &error)) {
         out.insert(QStringLiteral("error"), error);
         return out;
     }
-    f.write(sentence.toUtf8());
-    f.close();
     const QStringList env = {QStringLiteral("TOONFACE_CACHE_DIR=") + dir.filePath(QStringLiteral("cache"))};
     const QString photo = QStringLiteral("/usr/share/matplotlib/mpl-data/sample_data/grace_hopper.jpg");
     struct Case

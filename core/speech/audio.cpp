@@ -77,16 +77,20 @@ void DecodedSound::hand(QVector<float> &out)
     out.resize(0);
 }
 
+AudioResult failed(AudioResult &r, const QString &path, AudioStatus status, const QString &problem)
+{
+    r.status = status;
+    r.error = withProblem(path, problem);
+    r.audio = {};
+    return r;
+}
+
 AudioResult DecodedSound::finish(const QString &path, const SpeechProgressFn &progress)
 {
     AudioResult &r = result;
-    if (peak < 1e-3f) {
-        r.status = AudioStatus::Silent;
-        r.error = withProblem(path,
+    if (peak < 1e-3f)
+        return failed(r, path, AudioStatus::Silent,
             SoundText::tr("it is silent (peak %1 dBFS)").arg(peak > 0 ? 20 * std::log10(peak) : -999.0, 0, 'f', 0));
-        r.audio = {};
-        return r;
-    }
     r.audio.sampleRate = kSpeechSampleRate;
     r.status = AudioStatus::Ok;
     if (progress)
@@ -113,12 +117,7 @@ AudioResult streamAudio(
     const QString &path, const AudioSink &sink, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
     AudioResult r;
-    auto fail = [&](AudioStatus status, const QString &what) {
-        r.status = status;
-        r.error = withProblem(path, what);
-        r.audio = {};
-        return r;
-    };
+    auto fail = [&](AudioStatus status, const QString &what) { return failed(r, path, status, what); };
     quietFfmpegLog();
     if (!QFileInfo(path).isFile())
         return fail(AudioStatus::Unreadable, SoundText::tr("no such file"));

@@ -35,6 +35,10 @@ void convertInto(SwrContext *swr, const uint8_t **in, int inCount, int outRate, 
 // Averages the channels into mono float at `outRate` (SoX's resampler when FFmpeg has it).
 SwrPtr monoFloatResampler(AVChannelLayout *inLayout, AVSampleFormat inFormat, int inRate, int outRate);
 
+// Ends a decode of `path` in `r` with `status`: the error names the file and the problem, and
+// no sound is kept. Returns r.
+AudioResult failed(AudioResult &r, const QString &path, AudioStatus status, const QString &problem);
+
 // Where a decoder's converted samples go: non-finite samples become silence, the peak and
 // the count are kept, and the samples are handed to the sink.
 struct DecodedSound

@@ -27,23 +27,6 @@ namespace {
 
 using av::avError;
 
-struct FormatInputDeleter
-{
-    void operator()(AVFormatContext *c) const { avformat_close_input(&c); }
-};
-struct CodecDeleter
-{
-    void operator()(AVCodecContext *c) const { avcodec_free_context(&c); }
-};
-struct FrameDeleter
-{
-    void operator()(AVFrame *f) const { av_frame_free(&f); }
-};
-struct PacketDeleter
-{
-    void operator()(AVPacket *p) const { av_packet_free(&p); }
-};
-
 // No speech codec a recording is made with spends fewer bytes on a second of sound (Opus's
 // lowest speech rate is 750 bytes a second, AMR's 600, PCM thousands): a file decoding to more
 // seconds than its size allows at this rate (plus a little for headers and silence) is damaged
@@ -67,18 +50,13 @@ AudioResult decodeWithFfmpeg(
     const QString &path, const AudioSink &sink, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
     AudioResult r;
-    auto fail = [&](AudioStatus status, const QString &what) {
-        r.status = status;
-        r.error = withProblem(path, what);
-        r.audio = {};
-        return r;
-    };
+    auto fail = [&](AudioStatus status, const QString &what) { return failed(r, path, status, what); };
     AVFormatContext *rawFmt = nullptr;
     const QByteArray local = QFile::encodeName(path);
     int rc = avformat_open_input(&rawFmt, local.constData(), nullptr, nullptr);
     if (rc < 0)
         return fail(AudioStatus::Unreadable, SoundText::tr("not a readable sound or video file (%1)").arg(avError(rc)));
-    std::unique_ptr<AVFormatContext, FormatInputDeleter> fmt(rawFmt);
+    av::InputPtr fmt(rawFmt);
     // A WAV file's PCM is probed for other codecs packed inside it, by default over its first
     // 5 MB (a tenth of the work of aligning a minute of speech); its first 64 kB tell as much.
     if (fmt->iformat && std::strcmp(fmt->iformat->name, "wav") == 0)
@@ -91,7 +69,7 @@ AudioResult decodeWithFfmpeg(
         return fail(AudioStatus::Unreadable,
             stream == AVERROR_DECODER_NOT_FOUND ? SoundText::tr("no decoder for its sound track")
                                                 : SoundText::tr("it has no sound track"));
-    std::unique_ptr<AVCodecContext, CodecDeleter> dec(avcodec_alloc_context3(codec));
+    av::CodecPtr dec(avcodec_alloc_context3(codec));
     if (!dec || avcodec_parameters_to_context(dec.get(), fmt->streams[stream]->codecpar) < 0
         || avcodec_open2(dec.get(), codec, nullptr) < 0)
         return fail(
@@ -106,8 +84,8 @@ AudioResult decodeWithFfmpeg(
     int swrRate = 0;
     AVSampleFormat swrFormat = AV_SAMPLE_FMT_NONE;
 
-    std::unique_ptr<AVPacket, PacketDeleter> packet(av_packet_alloc());
-    std::unique_ptr<AVFrame, FrameDeleter> frame(av_frame_alloc());
+    av::PacketPtr packet(av_packet_alloc());
+    av::FramePtr frame(av_frame_alloc());
     const int64_t fileSize = fmt->pb ? avio_size(fmt->pb) : -1;
     // Each conversion lands here and goes on to the sink at once.
     QVector<float> out;
@@ -229,7 +207,7 @@ bool encodeWithFfmpeg(const QString &path, const Audio &audio, QString *error)
     if (avformat_alloc_output_context2(&rawOut, nullptr, nullptr, local.constData()) < 0 || !rawOut)
         return fail(SoundText::tr("no container for .%1").arg(suffix));
     std::unique_ptr<AVFormatContext, FormatOutputDeleter> oc(rawOut);
-    std::unique_ptr<AVCodecContext, CodecDeleter> enc(avcodec_alloc_context3(codec));
+    av::CodecPtr enc(avcodec_alloc_context3(codec));
     enc->sample_fmt = codec->sample_fmts ? codec->sample_fmts[0] : AV_SAMPLE_FMT_FLTP;
     int rate = audio.sampleRate;
     if (codec->supported_samplerates) {
@@ -284,8 +262,8 @@ bool encodeWithFfmpeg(const QString &path, const Audio &audio, QString *error)
     if (total < 0)
         return fail(SoundText::tr("cannot convert the samples"));
 
-    std::unique_ptr<AVFrame, FrameDeleter> frame(av_frame_alloc());
-    std::unique_ptr<AVPacket, PacketDeleter> pkt(av_packet_alloc());
+    av::FramePtr frame(av_frame_alloc());
+    av::PacketPtr pkt(av_packet_alloc());
     const int frameSize = enc->frame_size > 0 ? enc->frame_size : 1024;
     auto writePackets = [&]() -> bool {
         while (avcodec_receive_packet(enc.get(), pkt.get()) >= 0) {

@@ -28,12 +28,7 @@ AudioResult decodePlainWav(const QString &path, const PlainWav &wav, const Audio
     const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
     AudioResult r;
-    auto fail = [&](AudioStatus status, const QString &what) {
-        r.status = status;
-        r.error = withProblem(path, what);
-        r.audio = {};
-        return r;
-    };
+    auto fail = [&](AudioStatus status, const QString &what) { return failed(r, path, status, what); };
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly) || !f.seek(wav.dataOffset))
         return fail(
