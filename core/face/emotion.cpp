@@ -127,9 +127,10 @@ Pose emotionPose(const FaceModel &face, Emotion emotion, double intensity)
     // neutral is neutral and surprise an O, not a grin. (Lips photographed apart are shut by the
     // rest under speech, restingMouth, which stillEmotionPose adds where nothing is said.)
     if (emotion != Emotion::Smile) {
-        const QPointF lipLine = (face.point("2.2") + face.point("2.3")) / 2.0;
+        // Where the lips meet at rest: lips photographed apart shut there (restingMouth).
+        const double lipLineY = face.point("2.2").y() + restingMouth(face)[Up].y();
         const double cornerY = (face.point("8.4").y() + face.point("8.3").y()) / 2.0;
-        const double ownSmile = std::max(0.0, lipLine.y() - cornerY);
+        const double ownSmile = std::max(0.0, lipLineY - cornerY);
         for (const char *id : {"8.4", "8.3"})
             pose.offset[pt::idx(id)] += QPointF(0, ownSmile * weight);
     }
