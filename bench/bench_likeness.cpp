@@ -120,6 +120,7 @@ QJsonObject sheet()
         o.insert(QStringLiteral("glasses"), glassesShapeName(a.glasses));
         o.insert(QStringLiteral("moustache"), a.moustache);
         o.insert(QStringLiteral("beard"), a.beard);
+        o.insert(QStringLiteral("goatee"), a.goatee);
         o.insert(QStringLiteral("hat"), a.hat);
         o.insert(QStringLiteral("bald"), a.bald);
         o.insert(QStringLiteral("hair"), style.components.value(QStringLiteral("hair")).fill.name());
@@ -140,6 +141,8 @@ QJsonObject sheet()
                 QStringLiteral("lens"), QJsonArray {a.lens.halfWidth, a.lens.halfHeight, a.lens.outward, a.lens.down});
         scores.insert(QStringLiteral("moustache"), f.moustacheScore);
         scores.insert(QStringLiteral("beard"), f.beardScore);
+        scores.insert(QStringLiteral("goatee"), f.goateeScore);
+        scores.insert(QStringLiteral("jaw"), f.jawScore);
         scores.insert(QStringLiteral("bald"), f.baldScore);
         scores.insert(QStringLiteral("hat"), f.hatScore);
         o.insert(QStringLiteral("scores"), scores);
@@ -156,6 +159,8 @@ QJsonObject sheet()
             seen << QStringLiteral("moustache");
         if (a.beard)
             seen << QStringLiteral("beard");
+        if (a.goatee)
+            seen << QStringLiteral("goatee");
         if (a.hat)
             seen << QStringLiteral("hat");
         if (a.bald)

@@ -539,7 +539,7 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
     const double noseBottom = std::max({p("9.15").y(), p("9.4").y(), p("9.5").y()});
     const double lipTop = std::min({p("8.9").y(), p("8.1").y(), p("8.10").y()});
     const double gap = lipTop - noseBottom;
-    std::vector<QRgb> lipHair, chinHair;
+    std::vector<QRgb> lipHair, chinHair, jawHair;
     const double xl = p("8.4").x() + 0.2 * f.mw0, xr = p("8.3").x() - 0.2 * f.mw0;
     const QRectF lipBox(QPointF(xl, noseBottom + 0.35 * gap), QPointF(xr, lipTop - 0.1 * gap));
     if (gap > 2)
@@ -555,6 +555,7 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
             const QPointF s = p(side) + (mid - p(side)) * 0.12;
             const auto j = px.box(around(s, 0.05 * es0, 0.05 * es0));
             chinHair.insert(chinHair.end(), j.begin(), j.end());
+            jawHair.insert(jawHair.end(), j.begin(), j.end());
         }
     }
     // Texture, against the cheeks' under the eyes.
@@ -573,8 +574,14 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
         if (jawH > 2)
             out->beardTexture = px.texture(chinBox) / cheeks;
     }
+    // Goatee: the chin alone, from under the lower lip's shadow to above the chin's point.
+    std::vector<QRgb> goateeHair;
+    if (jawH > 2)
+        goateeHair = px.box(around(QPointF(p("2.1").x(), p("8.2").y() + 0.6 * jawH), 0.2 * f.mw0, 0.15 * jawH));
+    out->goateeScore = darkShare(goateeHair, skinLuma);
     out->moustacheScore = darkShare(lipHair, skinLuma);
     out->beardScore = darkShare(chinHair, skinLuma);
+    out->jawScore = darkShare(jawHair, skinLuma);
     // Hair, dark or not, is textured where skin is smooth: stubble and a sparse or grey beard are
     // a part darker than the skin with much more texture than the cheeks.
     auto stubble = [](double dark, double texture) {
@@ -582,13 +589,18 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
     };
     out->appearance.moustache = out->moustacheScore >= AppearanceFindings::kMoustacheThreshold
         || stubble(out->moustacheScore, out->moustacheTexture);
+    // A beard covers the jaw's sides too; hair on the chin alone is a goatee.
     out->appearance.beard
-        = out->beardScore >= AppearanceFindings::kBeardThreshold || stubble(out->beardScore, out->beardTexture);
+        = (out->beardScore >= AppearanceFindings::kBeardThreshold || stubble(out->beardScore, out->beardTexture))
+        && out->jawScore >= AppearanceFindings::kBeardSides;
+    out->appearance.goatee = !out->appearance.beard && out->goateeScore >= AppearanceFindings::kGoateeThreshold;
     std::vector<QRgb> hair;
     if (out->appearance.moustache)
         hair.insert(hair.end(), lipHair.begin(), lipHair.end());
     if (out->appearance.beard)
         hair.insert(hair.end(), chinHair.begin(), chinHair.end());
+    if (out->appearance.goatee)
+        hair.insert(hair.end(), goateeHair.begin(), goateeHair.end());
     if (!hair.empty())
         out->facialHair = darkest(hair, 0.5);
 }

@@ -33,6 +33,8 @@ struct AppearanceFindings
     double crownToHair = 0, crownToSkin = 0, brimSpread = 0;
     double moustacheScore = 0; // share of dark, hair-like pixels between the nose and the upper lip
     double beardScore = 0; // the same on the chin and along the jaw
+    double jawScore = 0; // the same along the jaw's sides alone
+    double goateeScore = 0; // the same on the chin alone, between the lower lip's shadow and the chin's point
     double baldScore = 0; // share of skin-coloured pixels in the hair's band over the crown
     double hatScore = 0; // the crown's hue outside hair's hues, in degrees, times its saturation
 
@@ -40,6 +42,11 @@ struct AppearanceFindings
     static constexpr double kBridgedThreshold = 0.9;
     static constexpr double kMoustacheThreshold = 0.5;
     static constexpr double kBeardThreshold = 0.5;
+    // A beard darkens the jaw's sides as well (shared photos: beards 0.59 to 0.99, a goatee 0).
+    static constexpr double kBeardSides = 0.3;
+    // A goatee darkens the chin where a bare chin shows at most a little of the lip's shadow
+    // (shared photos: bare chins 0 to 0.08, bearded ones 0.29 to 0.59).
+    static constexpr double kGoateeThreshold = 0.2;
     static constexpr double kBaldThreshold = 0.6;
     static constexpr double kSkinReachThreshold = 0.7;
     // Stubble: at least this share dark and this much more textured than the cheeks.

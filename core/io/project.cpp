@@ -140,6 +140,7 @@ QJsonObject styleToJson(const Style &style)
     look.insert(QStringLiteral("glasses"), glassesShapeName(style.appearance.glasses));
     look.insert(QStringLiteral("moustache"), style.appearance.moustache);
     look.insert(QStringLiteral("beard"), style.appearance.beard);
+    look.insert(QStringLiteral("goatee"), style.appearance.goatee);
     look.insert(QStringLiteral("hat"), style.appearance.hat);
     look.insert(QStringLiteral("bald"), style.appearance.bald);
     if (const GlassesFit &lens = style.appearance.lens; lens.isSet())
@@ -186,6 +187,9 @@ bool styleFromJson(const JsonField &field, Style *style, QString *error)
             || !enumFromJson(kGlassesShapes, &glassesShapeName, look.member("glasses"), &a.glasses, error)
             || !look.member("moustache").toBool(&a.moustache, error) || !look.member("beard").toBool(&a.beard, error)
             || !look.member("hat").toBool(&a.hat, error) || !look.member("bald").toBool(&a.bald, error))
+            return false;
+        // Added later: without it, no goatee.
+        if (const JsonField goatee = look.member("goatee"); !goatee.isMissing() && !goatee.toBool(&a.goatee, error))
             return false;
         // Added later: without it the lenses keep the shape's usual proportions.
         if (const JsonField lens = look.member("lens"); !lens.isMissing()) {

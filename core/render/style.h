@@ -35,7 +35,7 @@ enum class EyebrowVariant { Polyline, Bezier, Thick };
 enum class GlassesShape { None, Round, Rectangular, Rimless };
 
 // What a photo shows of the person beyond the 72 points: things worn and kinds of hair that the
-// drawing adds as layers of their own (SVG ids "glasses", "moustache", "beard", "hat"), each only
+// drawing adds as layers of their own (SVG ids "glasses", "moustache", "beard" (a beard or a goatee), "hat"), each only
 // when found. Their colours are the components "glasses" (stroke: frame; fill: lens tint, usually
 // transparent), "moustache", "beard" and "hat"; a component's `visible` switches its layer off.
 // The lenses as measured on the photo, in ES0 about each eye's middle (between its corners):
@@ -55,6 +55,7 @@ struct Appearance
     GlassesShape glasses = GlassesShape::None;
     bool moustache = false;
     bool beard = false; // on the chin and along the jaw; it opens with the jaw
+    bool goatee = false; // on the chin only, under the lower lip (drawn as the "beard" layer when there is no beard)
     bool hat = false; // the top of the head is a hat, not hair
     bool bald = false; // the head shows the skull: the hair outline is drawn as skin
     GlassesFit lens; // the lenses' size and place, when measured

@@ -516,6 +516,8 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
     const Appearance &look = style.appearance;
     if (look.beard)
         parts.push_back(makeBeard(P, g.es0));
+    else if (look.goatee)
+        parts.push_back(makeGoatee(P, g.es0));
     makeExpressionCues(P, Pt {g.neutral}, g.es0, &parts);
     makeMouth(P, &parts);
     if (look.moustache)

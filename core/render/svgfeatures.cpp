@@ -14,6 +14,7 @@ constexpr double kLensCornerRound = 0.45; // share of the half height rounded at
 constexpr double kLensDrop = 0.03; // lenses sit a little below the eye line
 constexpr double kBeardFullness = 0.05; // the beard stands out beyond the jaw
 constexpr double kBeardBelowLip = 0.10;
+constexpr double kGoateeReach = 0.3; // how far from a mouth corner toward the jaw a goatee's side starts
 constexpr double kMoustacheGap = 0.12; // share of nose-to-lip left bare under the nose
 constexpr double kMoustacheOverLip = 0.025;
 constexpr double kHatBrimReach = 0.06;
@@ -133,6 +134,27 @@ Part makeBeard(const Pt &P, double es0)
             {lerp(startR, cornerR, 0.5) + QPointF(0, 0.04 * es0), lerp(cornerR, belowLip, 0.5) + QPointF(0, 0.02 * es0),
                 lerp(belowLip, cornerL, 0.5) + QPointF(0, 0.02 * es0),
                 lerp(cornerL, startL, 0.5) + QPointF(0, 0.04 * es0)},
+            {}, kMovingFitTolerance))
+        .close();
+    return {"beard", true, "path", {{"d", d.data()}}, "beard"};
+}
+
+Part makeGoatee(const Pt &P, double es0)
+{
+    // Outer edge: round the chin from under each mouth corner, stood off as a beard is; inner
+    // edge: up under the lower lip.
+    const QPointF centre = (P("5.2") + P("5.1") + P("8.2")) / 3.0;
+    auto out = [&](QPointF p) { return p + unit(p - centre) * (kBeardFullness * es0); };
+    const QPointF startL = lerp(P("8.4"), P("2.12"), kGoateeReach);
+    const QPointF startR = lerp(P("8.3"), P("2.11"), kGoateeReach);
+    const QPointF belowLip = P("8.2") + QPointF(0, kBeardBelowLip * es0);
+    PathData d;
+    d.moveTo(startL)
+        .cubics(fitBezierChain({startL, out(P("2.1")), startR},
+            {out(lerp(startL, P("2.1"), 0.5)), out(lerp(startR, P("2.1"), 0.5))}, {}, kMovingFitTolerance))
+        .cubics(fitBezierChain({startR, belowLip, startL},
+            {lerp(startR, belowLip, 0.5) + QPointF(0, 0.02 * es0),
+                lerp(belowLip, startL, 0.5) + QPointF(0, 0.02 * es0)},
             {}, kMovingFitTolerance))
         .close();
     return {"beard", true, "path", {{"d", d.data()}}, "beard"};

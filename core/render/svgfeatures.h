@@ -12,6 +12,9 @@ namespace toonface::svgparts {
 Part makeHat(const Pt &P, double es0, int depth);
 // Dynamic: the beard follows the jaw (it opens with it) and the lower lip; drawn before the mouth.
 Part makeBeard(const Pt &P, double es0);
+// Dynamic: a goatee, the chin's part of a beard (under the lower lip, round the chin), with the
+// beard's id and colours; it follows the lower lip and the chin as they move.
+Part makeGoatee(const Pt &P, double es0);
 // Dynamic: the moustache follows the upper lip and its corners; drawn after the mouth.
 Part makeMoustache(const Pt &P, double es0);
 // Dynamic layer (above the eyes), but fixed to the eye corners: rims, bridge and arms; the lenses

@@ -435,6 +435,14 @@
         <source>Your layers</source>
         <translation>你的图层</translation>
     </message>
+    <message>
+        <source>Goatee</source>
+        <translation>山羊胡</translation>
+    </message>
+    <message>
+        <source>Hair on the chin only (drawn when there is no beard)</source>
+        <translation>只在下巴上的胡子（没有胡须时才画出）</translation>
+    </message>
 </context>
 <context>
     <name>toonface::ApplyDetection</name>

@@ -435,6 +435,14 @@
         <source>Your layers</source>
         <translation>你的圖層</translation>
     </message>
+    <message>
+        <source>Goatee</source>
+        <translation>山羊鬍</translation>
+    </message>
+    <message>
+        <source>Hair on the chin only (drawn when there is no beard)</source>
+        <translation>只在下巴上的鬍子（沒有鬍鬚時才畫出）</translation>
+    </message>
 </context>
 <context>
     <name>toonface::ApplyDetection</name>

@@ -28,6 +28,7 @@ struct DrawnFaceOptions
     double lensHalfWidth = 0.36, lensHalfHeight = 0, lensDrop = 0.03;
     bool moustache = false;
     bool beard = false;
+    bool goatee = false; // hair on the chin only, under the lower lip
     bool stubble = false; // the moustache and beard are short stubble: dark speckles on the skin
     bool hat = false;
     bool bald = false;
@@ -123,6 +124,12 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
         p.drawPolygon(QPolygonF {QLineF(P("5.2"), P("2.14")).pointAt(0.4), P("2.14"), P("2.12"), P("2.1"), P("2.11"),
             P("2.13"), QLineF(P("5.1"), P("2.13")).pointAt(0.4), P("8.3") + QPointF(0.04 * es0, 0.06 * es0),
             P("8.2") + QPointF(0, 0.06 * es0), P("8.4") + QPointF(-0.04 * es0, 0.06 * es0)});
+    }
+    if (o.goatee) {
+        p.setBrush(hairBrush);
+        const QPointF l = QLineF(P("8.4"), P("2.12")).pointAt(0.45), r = QLineF(P("8.3"), P("2.11")).pointAt(0.45);
+        p.drawPolygon(QPolygonF {l, QLineF(l, P("2.1")).pointAt(0.6) + QPointF(-0.03 * es0, 0), P("2.1"),
+            QLineF(r, P("2.1")).pointAt(0.6) + QPointF(0.03 * es0, 0), r, P("8.2") + QPointF(0, 0.08 * es0)});
     }
     if (o.glasses) {
         p.setBrush(Qt::NoBrush);

@@ -15,6 +15,8 @@
 #include <QRegularExpression>
 #include <QTest>
 
+#include <tuple>
+
 using namespace toonface;
 using testing::DrawnFaceOptions;
 
@@ -33,7 +35,8 @@ AppearanceFindings find(const DrawnFaceOptions &o)
 
 QString describe(const AppearanceFindings &f)
 {
-    return QStringLiteral("glasses %1 (%2), moustache %3 (%4), beard %5 (%6), bald %7 (%8), hat %9 (%10)")
+    return QStringLiteral(
+        "glasses %1 (%2), moustache %3 (%4), beard %5 (%6), bald %7 (%8), hat %9 (%10), goatee %11 (%12)")
         .arg(glassesShapeName(f.appearance.glasses))
         .arg(f.glassesScore, 0, 'f', 2)
         .arg(f.appearance.moustache)
@@ -43,7 +46,9 @@ QString describe(const AppearanceFindings &f)
         .arg(f.appearance.bald)
         .arg(f.baldScore, 0, 'f', 2)
         .arg(f.appearance.hat)
-        .arg(f.hatScore, 0, 'f', 1);
+        .arg(f.hatScore, 0, 'f', 1)
+        .arg(f.appearance.goatee)
+        .arg(f.goateeScore, 0, 'f', 2);
 }
 
 // describe() with the lenses as measured and the dark bar's span.
@@ -119,6 +124,11 @@ private Q_SLOTS:
             o.stubble = true;
             row("stubble", o);
             o = base;
+            o.goatee = true;
+            row("goatee", o);
+            o.moustache = true;
+            row("moustache and goatee", o);
+            o = base;
             o.hat = true;
             row("hat", o);
             o = base;
@@ -137,6 +147,7 @@ private Q_SLOTS:
         QVERIFY2((f.appearance.glasses != GlassesShape::None) == options.glasses, what.constData());
         QVERIFY2(f.appearance.moustache == options.moustache, what.constData());
         QVERIFY2(f.appearance.beard == options.beard, what.constData());
+        QVERIFY2(f.appearance.goatee == options.goatee, what.constData());
         QVERIFY2(f.appearance.hat == options.hat, what.constData());
         QVERIFY2(f.appearance.bald == options.bald, what.constData());
         if (options.glasses) {
@@ -144,7 +155,7 @@ private Q_SLOTS:
                 QCOMPARE(f.appearance.glasses, options.roundGlasses ? GlassesShape::Round : GlassesShape::Rectangular);
             QVERIFY(f.glassesFrame.isValid() && f.glassesFrame.value() < 80);
         }
-        if (options.moustache || options.beard)
+        if (options.moustache || options.beard || options.goatee)
             QVERIFY(f.facialHair.isValid() && f.facialHair.value() < options.skin.value());
         if (options.hat) // the hat's colour, not the hair's
             QVERIFY2(std::abs(f.hat.blue() - options.hatColour.blue()) < 30, qPrintable(f.hat.name()));
@@ -636,14 +647,15 @@ private Q_SLOTS:
         QVERIFY2(bald >= 7, qPrintable(QStringLiteral("%1 of %2 bald").arg(bald).arg(tried)));
     }
 
-    // The shared group photo: three men, the right one in glasses.
+    // The shared group photo: three men, the right one in glasses, the left one with a goatee.
     void groupWithGlasses()
     {
         const QImage photo(QDir(sharedFacesDir()).filePath(QStringLiteral("2008_002506.jpg")));
         if (photo.isNull())
             QSKIP("the shared research photos are not here (../shared/data/faces)");
-        const std::pair<QPointF, bool> people[] = {{{155, 120}, false}, {{268, 145}, false}, {{388, 120}, true}};
-        for (const auto &[at, glasses] : people) {
+        const std::tuple<QPointF, bool, bool> people[]
+            = {{{155, 120}, false, true}, {{268, 145}, false, false}, {{388, 120}, true, false}};
+        for (const auto &[at, glasses, goatee] : people) {
             DetectOptions options;
             options.faceAt = at;
             const DetectionResult r = detectFace(photo, options);
@@ -653,6 +665,7 @@ private Q_SLOTS:
             Style style;
             style.sampleColours(photo, r.face);
             QCOMPARE(style.appearance.glasses != GlassesShape::None, glasses);
+            QCOMPARE(style.appearance.goatee || style.appearance.beard, goatee);
             QVERIFY(!style.appearance.hat && !style.appearance.bald);
         }
     }

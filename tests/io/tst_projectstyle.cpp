@@ -47,7 +47,7 @@ private Q_SLOTS:
         QFETCH(bool, flags);
         Style style = Style::preset(QStringLiteral("bold"));
         style.caricature = caricature;
-        style.appearance = {GlassesShape(glasses), flags, flags, flags, flags, {}};
+        style.appearance = {GlassesShape(glasses), flags, flags, flags, flags, flags, {}};
         if (flags)
             style.appearance.lens = {0.46, 0.31, 0.04, 0.12};
         // A layer that follows the head (or not) keeps doing so.

@@ -621,9 +621,9 @@ private Q_SLOTS:
         const FaceModel face = testFace();
         Style drawing = Style::preset(style.section(QLatin1Char('+'), 0, 0));
         if (style.endsWith(QLatin1StringView("+worn")))
-            drawing.appearance = {GlassesShape::Round, true, true, true, false, {}};
+            drawing.appearance = {GlassesShape::Round, true, true, false, true, false, {}};
         if (style.endsWith(QLatin1StringView("+bald")))
-            drawing.appearance = {GlassesShape::Rectangular, false, false, false, true, {}};
+            drawing.appearance = {GlassesShape::Rectangular, false, false, false, false, true, {}};
         SvgFace svgFace(face, drawing);
         if (layer)
             svgFace.addLayer(kShirtLayer);

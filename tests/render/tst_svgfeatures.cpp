@@ -46,6 +46,23 @@ double lowest(const QString &geometry)
     return y;
 }
 
+// The box around a path's or polygon's numbers (x, y pairs).
+QRectF boundsOf(const QString &geometry)
+{
+    static const QRegularExpression number(QStringLiteral("-?\\d+(\\.\\d+)?"));
+    QPolygonF points;
+    double x = 0;
+    int k = 0;
+    for (auto it = number.globalMatch(geometry); it.hasNext(); ++k) {
+        const double v = it.next().captured().toDouble();
+        if (k % 2 == 0)
+            x = v;
+        else
+            points << QPointF(x, v);
+    }
+    return points.boundingRect();
+}
+
 // A face unlike the average: wide nose, wide mouth, eyes set low, a long chin.
 FaceModel distinctFace()
 {
@@ -103,13 +120,38 @@ private Q_SLOTS:
         QVERIFY(!SvgFace(face, style).svg().contains(QByteArray("id=\"") + id.toLatin1() + '"'));
     }
 
+    // A goatee is the "beard" layer on the chin alone: narrower than a beard, under the lower lip
+    // down round the chin; it opens with the jaw; a beard, when there is one, is drawn instead.
+    void goateeOnTheChin()
+    {
+        const FaceModel face = testFace();
+        const double es0 = face.fapu().es0;
+        Style style = Style::preset(QStringLiteral("normal"));
+        style.appearance.beard = true;
+        const QByteArray bearded = SvgFace(face, style).svg();
+        const QRectF full = boundsOf(geometryOf(SvgFace(face, style).parts(), "beard"));
+        style.appearance.goatee = true;
+        QCOMPARE(SvgFace(face, style).svg(), bearded); // a beard covers the goatee
+        style.appearance.beard = false;
+        const SvgFace svg(face, style);
+        QCOMPARE(svg.svg().count("id=\"beard\""), 1);
+        const QVector<FacePart> still = svg.parts();
+        const QRectF goatee = boundsOf(geometryOf(still, "beard"));
+        QVERIFY(goatee.width() < 0.7 * full.width());
+        QVERIFY(goatee.top() > face.point("8.2").y()); // under the lower lip
+        QVERIFY(goatee.left() > face.point("2.12").x() && goatee.right() < face.point("2.11").x()); // inside the jaw
+        QVERIFY(goatee.bottom() > face.point("2.1").y()); // round the chin
+        const QVector<FacePart> talking = svg.parts(mouthPose(face, MouthShapeSet(), MouthShape::A));
+        QVERIFY(lowest(geometryOf(talking, "beard")) > lowest(geometryOf(still, "beard")) + 0.1 * es0);
+    }
+
     // The beard opens with the jaw, the moustache follows the upper lip, the glasses and the hat
     // stay with the head.
     void layersMoveWithTheFace()
     {
         const FaceModel face = testFace();
         Style style = Style::preset(QStringLiteral("normal"));
-        style.appearance = {GlassesShape::Rectangular, true, true, true, false, {}};
+        style.appearance = {GlassesShape::Rectangular, true, true, false, true, false, {}};
         const SvgFace svg(face, style);
         const QVector<FacePart> still = svg.parts();
         const Pose open = mouthPose(face, MouthShapeSet(), MouthShape::A);

@@ -94,6 +94,28 @@ private Q_SLOTS:
         QVERIFY(!panel.findChild<QCheckBox *>(QStringLiteral("moustache"))->isChecked());
     }
 
+    // The goatee is its own switch, one undo step, and stands aside (disabled) while a beard,
+    // which covers the chin, is on.
+    void goateeSwitch()
+    {
+        Document doc;
+        fixture::fill(doc);
+        AppearancePanel panel(&doc);
+        auto *goatee = panel.findChild<QCheckBox *>(QStringLiteral("goatee"));
+        auto *beard = panel.findChild<QCheckBox *>(QStringLiteral("beard"));
+        QVERIFY(goatee && goatee->isEnabled() && !goatee->isChecked());
+        goatee->click();
+        QCOMPARE(doc.undoStack()->count(), 1);
+        QVERIFY(doc.style().appearance.goatee);
+        beard->click();
+        QCOMPARE(doc.undoStack()->count(), 2);
+        QVERIFY(!goatee->isEnabled() && goatee->isChecked());
+        doc.undoStack()->undo();
+        QVERIFY(goatee->isEnabled());
+        doc.undoStack()->undo();
+        QVERIFY(!goatee->isChecked() && !doc.style().appearance.goatee);
+    }
+
     void disabledWithoutAFace()
     {
         Document doc;

@@ -104,12 +104,15 @@ AppearancePanel::AppearancePanel(Document *document, QWidget *parent)
     m_moustache->setObjectName(QStringLiteral("moustache"));
     m_beard = new QCheckBox(tr("Beard"));
     m_beard->setObjectName(QStringLiteral("beard"));
+    m_goatee = new QCheckBox(tr("Goatee"));
+    m_goatee->setObjectName(QStringLiteral("goatee"));
+    m_goatee->setToolTip(tr("Hair on the chin only (drawn when there is no beard)"));
     m_hat = new QCheckBox(tr("Hat"));
     m_hat->setObjectName(QStringLiteral("hat"));
     m_bald = new QCheckBox(tr("Bald head"));
     m_bald->setObjectName(QStringLiteral("bald"));
     wornForm->addRow(tr("Glasses:"), m_glasses);
-    for (QCheckBox *box : {m_moustache, m_beard, m_hat, m_bald})
+    for (QCheckBox *box : {m_moustache, m_beard, m_goatee, m_hat, m_bald})
         wornForm->addRow(QString(), box);
     layout->addWidget(worn);
 
@@ -142,8 +145,9 @@ AppearancePanel::AppearancePanel(Document *document, QWidget *parent)
     connect(m_glasses, &QComboBox::activated, this, [this](int i) {
         change(tr("Glasses"), [&](Style &s) { s.appearance.glasses = GlassesShape(m_glasses->itemData(i).toInt()); });
     });
-    const std::pair<QCheckBox *, bool Appearance::*> flags[] = {{m_moustache, &Appearance::moustache},
-        {m_beard, &Appearance::beard}, {m_hat, &Appearance::hat}, {m_bald, &Appearance::bald}};
+    const std::pair<QCheckBox *, bool Appearance::*> flags[]
+        = {{m_moustache, &Appearance::moustache}, {m_beard, &Appearance::beard}, {m_goatee, &Appearance::goatee},
+            {m_hat, &Appearance::hat}, {m_bald, &Appearance::bald}};
     for (const auto &[box, member] : flags) {
         connect(box, &QCheckBox::clicked, this, [this, box = box, member = member](bool on) {
             change(box->text(), [&](Style &s) { s.appearance.*member = on; });
@@ -263,6 +267,8 @@ void AppearancePanel::sync()
     m_glasses->setCurrentIndex(m_glasses->findData(int(s.appearance.glasses)));
     m_moustache->setChecked(s.appearance.moustache);
     m_beard->setChecked(s.appearance.beard);
+    m_goatee->setChecked(s.appearance.goatee);
+    m_goatee->setEnabled(!s.appearance.beard);
     m_hat->setChecked(s.appearance.hat);
     m_bald->setChecked(s.appearance.bald);
     m_resample->setEnabled(!m_document->photo().isNull());

@@ -46,6 +46,7 @@ private:
     QComboBox *m_glasses;
     QCheckBox *m_moustache;
     QCheckBox *m_beard;
+    QCheckBox *m_goatee;
     QCheckBox *m_hat;
     QCheckBox *m_bald;
     QPushButton *m_resample;
