@@ -418,6 +418,9 @@ bool placeFace(const LandmarkPredictor &model, const QImage &image, const QImage
     return refineFace(image, withDebugImages, out, endStage);
 }
 
+// How far below the eye line, in eye distances, a chin is believed for the hair's estimate.
+constexpr double kMaxChinDrop = 2.3;
+
 // The thesis pipeline (classic.h): one face, found by its eye pair. Only a pair that passed the
 // face checks (ClassicResult::eyePairInFace) is a face: where none did, the thesis' own choice
 // by eq. (3.5) is a dark pair anywhere in the photo (a sleeve, a curtain's folds), and 72 points
@@ -437,10 +440,40 @@ DetectionResult detectWithClassic(
         result.error = c.ok ? DetectText::tr("The classic method found no face: %1.").arg(c.faceCheck) : c.error;
         return result;
     }
+    // Hair and forehead as landmark faces get them: the classic method's own 11.x lie at the top
+    // of F_final (the top of the hair where it is dark enough to join the face region), its
+    // outline on H_final, which misses the hair that is not dark. From its measured points (eyes,
+    // brows, nose, mouth, contour) the estimate of estimateForeheadAndHair(), then the photo
+    // search and the regions of refineFace(); its ears, measured on F_final, stay where the
+    // photo does not place them.
+    //
+    // The hair's size follows the chin's drop below the eyes (headGeometry(): the eyes lie halfway
+    // between chin and crown), and the classic chin is where F_final ends, often on the neck or a
+    // collar of the skin's hue: for the hair the chin is held within 2.3 eye distances of the eye
+    // line (an adult's chin lies about 1.9 below it), then the measured one is put back.
+    PlacedFace placed;
+    placed.geometric = c.face;
+    const QPointF measuredChin = c.face.point("2.1");
+    {
+        const QPointF eyeL = c.face.point("3.6"), eyeR = c.face.point("3.5"), mid = (eyeL + eyeR) / 2;
+        const double d = QLineF(eyeL, eyeR).length();
+        const QPointF down = d > 0 ? QPointF(eyeL.y() - eyeR.y(), eyeR.x() - eyeL.x()) / d : QPointF(0, 1);
+        const double drop = QPointF::dotProduct(measuredChin - mid, down);
+        if (drop > kMaxChinDrop * d)
+            placed.geometric.setPoint(pt::idx("2.1"), measuredChin - (drop - kMaxChinDrop * d) * down);
+    }
+    estimateForeheadAndHair(&placed.geometric);
+    awaitFaceRefinementWarmUp();
+    refineFace(image, wantsDebugImages(options), &placed, [](const QString &) { return true; });
+    placed.refined.setPoint(pt::idx("2.1"), measuredChin);
+    if (!placed.hair.regionMask.isNull())
+        result.debugImages.insert(QStringLiteral("detect-hair-region"), placed.hair.regionMask);
+    if (!placed.head.regionImage.isNull())
+        result.debugImages.insert(QStringLiteral("detect-head-regions"), placed.head.regionImage);
     result.status = DetectStatus::Ok;
-    result.face = c.face;
+    result.face = placed.refined;
     result.faceCount = 1;
-    result.faceBox = c.face.bounds().toAlignedRect().intersected(image.rect());
+    result.faceBox = result.face.bounds().toAlignedRect().intersected(image.rect());
     // The classic method has no score of its own: fixed figures ranking how directly each
     // group is measured (eyeballs and feature edges first, rule-placed points last).
     result.groupConfidence.insert(groupName(PointGroup::Eyes), 0.5);
@@ -454,11 +487,8 @@ DetectionResult detectWithClassic(
     result.regions.nose = c.noseRegion;
     result.regions.mouth = c.mouthRegion;
     // The classic method's own thresholds and regions where it keeps them; the hue and colour
-    // statistics, which it does not keep, are measured around the face it found.
-    {
-        FaceModel scratch = result.face;
-        result.tracking = refineFromRegions(&scratch, image).seed;
-    }
+    // statistics, which it does not keep, as refineFace() measured them around the face it found.
+    result.tracking = placed.seed;
     result.tracking.valid = true;
     result.tracking.t1 = c.t1;
     result.tracking.d = c.d;
