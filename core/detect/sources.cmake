@@ -21,4 +21,5 @@ set_source_files_properties(detect/detector.cpp detect/landmarkpredictor.cpp det
 list(APPEND TOONFACE_CORE_SOURCES
   detect/tsai.h detect/tsai.cpp
   detect/regions.h detect/regions.cpp
-  detect/classic.h detect/classic.cpp)
+  detect/classic.h detect/classic.cpp
+  detect/classicsteps.h detect/classiceyes.cpp detect/classicfeatures.cpp detect/classicpoints.cpp)
