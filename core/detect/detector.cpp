@@ -464,7 +464,15 @@ DetectionResult detectWithClassic(
     }
     estimateForeheadAndHair(&placed.geometric);
     awaitFaceRefinementWarmUp();
-    refineFace(image, wantsDebugImages(options), &placed, [](const QString &) { return true; });
+    QElapsedTimer stage;
+    stage.start();
+    refineFace(image, wantsDebugImages(options), &placed, [&](const QString &name) {
+        const double ms = stage.nsecsElapsed() / 1e6;
+        result.timingMs.insert(name, ms);
+        result.timingMs[QStringLiteral("total")] += ms;
+        stage.restart();
+        return true;
+    });
     placed.refined.setPoint(pt::idx("2.1"), measuredChin);
     if (!placed.hair.regionMask.isNull())
         result.debugImages.insert(QStringLiteral("detect-hair-region"), placed.hair.regionMask);

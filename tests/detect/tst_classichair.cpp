@@ -75,6 +75,12 @@ private Q_SLOTS:
             QVERIFY2(face.point(id).y() > face.point("11.1").y() && face.point(id).y() < face.point("4.4").y(), id);
         QVERIFY(!look.style.appearance.bald);
         QVERIFY(!look.style.appearance.hat);
+        // The photo's hair search and the regions are timed with the pipeline's stages.
+        for (const char *stage : {"hair", "regions", "total"})
+            QVERIFY2(look.result.timingMs.contains(QLatin1StringView(stage)), stage);
+        QVERIFY(
+            look.result.timingMs.value(QStringLiteral("total")) >= look.result.timingMs.value(QStringLiteral("hair"))
+                + look.result.timingMs.value(QStringLiteral("regions")));
     }
 
     // The same face over a neck of its skin's colour, joined to the jaw, and a dark shirt: the
