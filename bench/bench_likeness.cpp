@@ -124,6 +124,7 @@ QJsonObject sheet()
         o.insert(QStringLiteral("bald"), a.bald);
         o.insert(QStringLiteral("hair"), style.components.value(QStringLiteral("hair")).fill.name());
         o.insert(QStringLiteral("skin"), style.components.value(QStringLiteral("face")).fill.name());
+        o.insert(QStringLiteral("brows"), style.components.value(QStringLiteral("eyebrows")).fill.name());
         QJsonObject scores;
         scores.insert(QStringLiteral("glasses"), f.glassesScore);
         scores.insert(QStringLiteral("mTex"), f.moustacheTexture);

@@ -1,5 +1,6 @@
 #include "face/emotion.h"
 
+#include "face/averageface.h"
 #include "face/facemodel.h"
 #include "face/fapu.h"
 #include "face/mouthshape.h"
@@ -9,6 +10,28 @@
 #include <cstring>
 
 namespace toonface {
+
+namespace {
+
+// The lids' moves are drawn for the average face's eyes; on a face they move by the same share
+// of its own eyes' opening, so narrow eyes (a squint, a photo taken smiling) are lowered, not
+// shut or turned inside out, and wide eyes move as visibly. Both eyes take their mean, so the
+// sides stay mirror images.
+double lidScale(const Fapu &f)
+{
+    static const double average = [] {
+        const Fapu a = averageFace(QRectF(0, 0, 200, 240), QSize(400, 500)).fapu();
+        return (a.leftEyeH + a.rightEyeH) / 2.0 / a.es0;
+    }();
+    return f.es0 > 0 ? (f.leftEyeH + f.rightEyeH) / 2.0 / f.es0 / average : 1.0;
+}
+
+bool isLid(const char *id)
+{
+    return std::strcmp(id, "3.2") == 0 || std::strcmp(id, "3.4") == 0;
+}
+
+} // namespace
 
 QString emotionName(Emotion emotion)
 {
@@ -86,11 +109,13 @@ double emotionWeight(double intensity)
 Pose emotionPose(const FaceModel &face, Emotion emotion, double intensity)
 {
     const double weight = emotionWeight(intensity);
-    const double es0 = face.fapu().es0;
+    const Fapu fapu = face.fapu();
+    const double es0 = fapu.es0;
+    const double lids = lidScale(fapu);
     const EmotionPreset &preset = emotionPreset(emotion);
     Pose pose;
     for (const auto &move : preset.moves) {
-        const QPointF d = move.offsetEs0 * es0 * weight;
+        const QPointF d = move.offsetEs0 * es0 * weight * (isLid(move.id) ? lids : 1.0);
         pose.offset[pt::idx(move.id)] += d;
         const char *mirror = mirrorPointId(move.id);
         // 8.9 and 8.2 lie on or follow the centre line; 8.10 follows 8.9 by rule.

@@ -80,6 +80,10 @@ constexpr double kHairDepthReach = 1.2; // ES0: how deep into the hair its colou
 constexpr double kSameHair = 80.0; // RGB distance within which facial hair is of a kind with the head's
 constexpr double kNotHat = 60.0; // RGB distance from a hat's colour beyond which a pixel is not the hat
 constexpr double kHairUnderHat = 0.15; // share of the hair band that must be neither hat, room nor skin
+constexpr double kBrowSampleRadius = 0.04; // ES0: the discs sampled along a brow's line
+constexpr double kBrowDark = 0.8; // a brow's pixel is darker than this share of the skin's grey
+constexpr double kBrowShown = 0.2; // share of the brow's samples that must be dark for its colour to be read
+constexpr double kBrowContrast = 0.6; // a brow is drawn at most this share of the skin's grey
 
 double hueDistance(double a, double b)
 {
@@ -235,6 +239,36 @@ void sampleClothes(
     body->stroke = clothes.lightnessF() < 0.25 ? clothes.lighter(160) : clothes.darker(170);
 }
 
+// The brows' colour as the photo shows it: along each brow's line (and a little under it, where
+// the brow's body is when the points sit on its upper edge), the pixels clearly darker than the
+// skin; their darker half's median, which is the brow and not its thin edge blending into skin.
+// Invalid when too few of them are dark (brows too light or hidden to say).
+QColor browColour(const PixelSampler &sampler, const FaceModel &face, const QColor &skin, double es0)
+{
+    const double radius = std::max(1.0, kBrowSampleRadius * es0);
+    const int skinGrey = qGray(skin.rgb());
+    std::vector<QRgb> all, dark;
+    for (const auto &brow : {std::array {"4.6", "4.4a", "4.4", "4.2"}, std::array {"4.1", "4.3", "4.3a", "4.5"}}) {
+        for (size_t i = 0; i + 1 < brow.size(); ++i) {
+            const QPointF a = face.point(brow[i]), b = face.point(brow[i + 1]);
+            const int steps = std::max(1, int(QLineF(a, b).length() / radius));
+            for (int k = 0; k < steps; ++k) {
+                const QPointF at = a + (b - a) * (double(k) / steps) + QPointF(0, 0.5 * radius);
+                for (QRgb c : sampler.disc(at, radius)) {
+                    all.push_back(c);
+                    if (qGray(c) < kBrowDark * skinGrey)
+                        dark.push_back(c);
+                }
+            }
+        }
+    }
+    if (all.empty() || double(dark.size()) < kBrowShown * double(all.size()))
+        return {};
+    std::sort(dark.begin(), dark.end(), [](QRgb a, QRgb b) { return qGray(a) < qGray(b); });
+    dark.resize((dark.size() + 1) / 2);
+    return medianColour(dark);
+}
+
 } // namespace
 
 QStringList Style::presetNames()
@@ -361,6 +395,9 @@ void Style::sampleColours(const QImage &original, const FaceModel &face, Appeara
     if (hairOk)
         setHair(hair);
 
+    // Brow colour: the brows' own pixels where they show, so a bald head, a hat or a hair colour
+    // unlike the brows' does not decide it (the hair's colour stays for brows too light to show).
+    const QColor browSeen = skin.isValid() ? browColour(sampler, face, skin, es0) : QColor();
     // Brow thickness: the unbroken run of pixels clearly darker than the skin through each brow's
     // middle, up and down from it (a shadow or a lid apart from the brow does not count).
     if (skin.isValid()) {
@@ -413,6 +450,16 @@ void Style::sampleColours(const QImage &original, const FaceModel &face, Appeara
             hair = hairOk ? under : baseComponents().value(QStringLiteral("hair")).fill;
             setHair(hair);
         }
+    }
+    // Brows seen in a colour of their own (a bald or hatted head's, brows unlike the hair) are
+    // drawn in it, dark enough against the skin to read as brows.
+    if (browSeen.isValid() && !(hairOk && rgbDistance(browSeen, hair) < kSameHair)) {
+        QColor brow = monochrome ? hairFromGrey(qGray(browSeen.rgb())) : browSeen;
+        const double most = kBrowContrast * qGray(skinUsed.rgb());
+        if (qGray(brow.rgb()) > most)
+            brow = brow.darker(int(std::ceil(100.0 * qGray(brow.rgb()) / std::max(1.0, most))));
+        components[QStringLiteral("eyebrows")].fill = brow;
+        components[QStringLiteral("eyebrows")].stroke = brow;
     }
     if (found.glassesFrame.isValid()) {
         const QColor frame = monochrome

@@ -32,6 +32,7 @@ struct DrawnFaceOptions
     bool hat = false;
     bool bald = false;
     double browWidth = 0.07; // in ES0
+    QColor browColour; // invalid: the hair's, a little darker (a bald head's a dark brown)
 };
 
 inline FaceModel drawnFaceModel()
@@ -79,7 +80,8 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
     const double es0 = QLineF(P("3.6"), P("3.5")).length();
     // Brows, eyes, nose shadow, lips.
     p.setBrush(Qt::NoBrush);
-    p.setPen(QPen(o.bald ? QColor(90, 70, 60) : o.hair.darker(120), o.browWidth * es0, Qt::SolidLine, Qt::RoundCap));
+    const QColor brow = o.browColour.isValid() ? o.browColour : o.bald ? QColor(90, 70, 60) : o.hair.darker(120);
+    p.setPen(QPen(brow, o.browWidth * es0, Qt::SolidLine, Qt::RoundCap));
     p.drawPolyline(QPolygonF {P("4.6"), P("4.4a"), P("4.4"), P("4.2")});
     p.drawPolyline(QPolygonF {P("4.1"), P("4.3"), P("4.3a"), P("4.5")});
     p.setPen(Qt::NoPen);

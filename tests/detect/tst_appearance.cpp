@@ -446,6 +446,50 @@ private Q_SLOTS:
         QVERIFY(widths[1] > widths[0] + 2);
     }
 
+    // Brows are drawn in their own colour where it is not the hair's: a bald head's brows (whose
+    // "hair" band falls on scalp or the room), dark brows under blond hair. Brows of the hair's
+    // colour, and brows too light to show against the skin, keep the colour the hair gives them.
+    void browsInTheirOwnColour_data()
+    {
+        QTest::addColumn<bool>("bald");
+        QTest::addColumn<QColor>("hair");
+        QTest::addColumn<QColor>("brows");
+        QTest::addColumn<bool>("fromBrows");
+        QTest::newRow("bald, auburn brows") << true << QColor() << QColor(120, 60, 30) << true;
+        QTest::newRow("blond hair, dark brows") << false << QColor(215, 180, 110) << QColor(60, 40, 30) << true;
+        QTest::newRow("brown hair, brows of the hair") << false << QColor(90, 60, 35) << QColor(75, 50, 29) << false;
+        QTest::newRow("blond hair, light brows") << false << QColor(215, 180, 110) << QColor(205, 170, 120) << false;
+    }
+
+    void browsInTheirOwnColour()
+    {
+        QFETCH(bool, bald);
+        QFETCH(QColor, hair);
+        QFETCH(QColor, brows);
+        QFETCH(bool, fromBrows);
+        DrawnFaceOptions o;
+        o.bald = bald;
+        if (hair.isValid())
+            o.hair = hair;
+        o.browColour = brows;
+        Style style = Style::preset(QStringLiteral("normal"));
+        style.sampleColours(testing::drawnFace(o), testing::drawnFaceModel());
+        const QColor drawn = style.components.value(QStringLiteral("eyebrows")).fill;
+        const QColor hairDrawn = style.components.value(QStringLiteral("hair")).fill;
+        auto distance = [](const QColor &a, const QColor &b) {
+            return std::hypot(a.red() - b.red(), a.green() - b.green(), a.blue() - b.blue());
+        };
+        const QByteArray what = (drawn.name() + QStringLiteral(" hair ") + hairDrawn.name()).toLatin1();
+        if (fromBrows) {
+            // The darker half of the brow's pixels: the brow, a little deeper where its edge blends.
+            QVERIFY2(distance(drawn, brows) < 30, what.constData());
+        } else {
+            // The hair's colour, deepened: never lighter than the hair, and of its hue.
+            QVERIFY2(drawn.valueF() <= hairDrawn.valueF() + 1e-6, what.constData());
+            QVERIFY2(std::abs(drawn.hsvHue() - hairDrawn.hsvHue()) <= 12, what.constData());
+        }
+    }
+
     // A shaved scalp under a shine (bald_guys #4): brighter than the skin and paler, its colour
     // on the way from the skin's toward the light's, is scalp; white and grey hair, at the end of
     // that way or darker than the skin, are not.
@@ -576,6 +620,15 @@ private Q_SLOTS:
             ++tried;
             bald += style.appearance.bald;
             hats += style.appearance.hat;
+            // Their brows read against the skin (bald_guys #4's were drawn a pale grey-green,
+            // derived from a "hair" band on the yellow backdrop).
+            const QColor brows = style.components.value(QStringLiteral("eyebrows")).fill;
+            const QColor skin = style.components.value(QStringLiteral("face")).fill;
+            QVERIFY2(qGray(brows.rgb()) <= 0.65 * qGray(skin.rgb()),
+                qPrintable(QStringLiteral("face at %1,%2: brows %3 on skin %4")
+                               .arg(at.x())
+                               .arg(at.y())
+                               .arg(brows.name(), skin.name())));
         }
         qInfo("bald_guys: %d faces, %d bald, %d hats", tried, bald, hats);
         QCOMPARE(tried, 8);

@@ -7,6 +7,8 @@
 
 #include <QTest>
 
+#include <tuple>
+
 using namespace toonface;
 
 namespace {
@@ -219,6 +221,51 @@ private Q_SLOTS:
                 for (int i = 0; i < kPointCount; ++i)
                     far = std::max(far, QLineF(pa[i], pb[i]).length() / es0);
                 QVERIFY2(far > 0.15, qPrintable(emotionName(a) + QLatin1Char('/') + emotionName(b)));
+            }
+        }
+    }
+
+    // Lids move by the eye's own opening: narrow eyes (a smile in the photo, a squint, 0.07 ES0
+    // as in the shared group photo) keep an open eye through sad and angry, lowered by the same
+    // share of their opening as an average eye, and never turn inside out; the brows and mouth
+    // move as much as on any face.
+    void narrowEyesStayOpen_data()
+    {
+        QTest::addColumn<double>("opening");
+        QTest::newRow("narrow") << 0.07;
+        QTest::newRow("average") << 0.0;
+        QTest::newRow("wide") << 0.2;
+    }
+
+    void narrowEyesStayOpen()
+    {
+        QFETCH(double, opening);
+        const FaceModel average = testFace();
+        FaceModel face = average;
+        const double es0 = face.fapu().es0;
+        if (opening > 0) {
+            // Each lid moved toward the line between its eye's corners, keeping its side.
+            for (const auto &[lid, a, b] : {std::tuple {"3.2", "3.12", "3.8"}, std::tuple {"3.4", "3.12", "3.8"},
+                     std::tuple {"3.1", "3.11", "3.7"}, std::tuple {"3.3", "3.11", "3.7"}}) {
+                const double line = (face.point(a).y() + face.point(b).y()) / 2.0;
+                const double side = face.point(lid).y() < line ? -1.0 : 1.0;
+                face.setPoint(pt::idx(lid), QPointF(face.point(lid).x(), line + side * opening * es0 / 2.0),
+                    face.isHandPlaced(pt::idx(lid)));
+            }
+        }
+        for (Emotion e : kAllEmotions) {
+            for (double intensity : {0.5, 1.0}) {
+                const Posed p = posed(face, emotionPose(face, e, intensity));
+                const Posed a = posed(average, emotionPose(average, e, intensity));
+                const QByteArray what = (emotionName(e) + QStringLiteral(" at %1").arg(intensity)).toLatin1();
+                for (bool left : {true, false}) {
+                    const double share = p.eyeOpening(left) / p.eyeOpening0(left);
+                    const double averageShare = a.eyeOpening(left) / a.eyeOpening0(left);
+                    QVERIFY2(p.eyeOpening(left) > 0, what.constData());
+                    QVERIFY2(std::abs(share - averageShare) < 0.02, what.constData());
+                }
+                QVERIFY2(QLineF(p.d("4.2"), a.d("4.2")).length() < 1e-9, what.constData());
+                QVERIFY2(QLineF(p.d("8.4"), a.d("8.4")).length() < 1e-9, what.constData());
             }
         }
     }
