@@ -432,7 +432,18 @@ DetectionResult detectWithClassic(
     DetectionResult result;
     result.method = detectionMethodName(DetectionMethod::Classic);
     report(0.0, QStringLiteral("classic"));
-    const ClassicResult c = detectClassic(image, wantsDebugImages(options));
+    // The classic method assumes one large face in the middle of the picture. With a face asked
+    // for (faceAt), the face detector's box holding that point is its hint (Algorithm 4.1's
+    // central rectangle in that box, the eyes in its upper part); a point no face holds leaves
+    // the assumption.
+    QRect hint;
+    if (options.faceAt) {
+        double lastScale = 0;
+        const std::vector<FaceBox> faces = scanForFaces(toGray(image), options.faceAt, {}, &lastScale);
+        if (const int asked = faceHolding(faces, *options.faceAt); asked >= 0)
+            hint = faces[asked].box.toAlignedRect().intersected(image.rect());
+    }
+    const ClassicResult c = detectClassic(image, wantsDebugImages(options), hint);
     result.timingMs = c.timingMs;
     result.debugImages = c.debugImages;
     if (!c.ok || !c.eyePairInFace) {

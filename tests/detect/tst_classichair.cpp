@@ -134,6 +134,40 @@ private Q_SLOTS:
         QVERIFY(!look.style.appearance.hat);
     }
 
+    // Two drawn faces side by side, the left with hair, the right bald: the face asked for by a
+    // point is the one found (the classic method looks in the face detector's box that holds the
+    // point), with its own hair or scalp.
+    void faceAsked()
+    {
+        DrawnFaceOptions bald;
+        bald.bald = true;
+        const QImage left = testing::drawnFace(DrawnFaceOptions {}), right = testing::drawnFace(bald);
+        QImage both(2 * left.width(), left.height(), QImage::Format_RGB32);
+        {
+            QPainter p(&both);
+            p.drawImage(0, 0, left);
+            p.drawImage(left.width(), 0, right);
+        }
+        const FaceModel truth = testing::drawnFaceModel();
+        const double d = es0(truth);
+        for (const bool onRight : {false, true}) {
+            const QPointF shift(onRight ? left.width() : 0, 0);
+            DetectOptions options;
+            options.method = DetectionMethod::Classic;
+            options.faceAt = truth.point("9.15") + shift;
+            const DetectionResult r = detectFace(both, options);
+            QVERIFY2(r.status == DetectStatus::Ok, qPrintable(r.error));
+            Style style;
+            style.sampleColours(both, r.face);
+            qInfo("asked for the %s face: eyes at (%.0f, %.0f) and (%.0f, %.0f), bald %d", onRight ? "right" : "left",
+                r.face.point("3.6").x(), r.face.point("3.6").y(), r.face.point("3.5").x(), r.face.point("3.5").y(),
+                style.appearance.bald);
+            QVERIFY(QLineF(r.face.point("3.6"), truth.point("3.6") + shift).length() < 0.1 * d);
+            QVERIFY(QLineF(r.face.point("3.5"), truth.point("3.5") + shift).length() < 0.1 * d);
+            QCOMPARE(style.appearance.bald, onRight);
+        }
+    }
+
     // The first frame of the GRID clip bbaf2n (a man with short dark hair on a blue wall): the
     // classic method's hairline and hair outline agree with the landmark method's, within a
     // quarter and a third of the eye distance; his hair is hair.
