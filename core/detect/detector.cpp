@@ -475,9 +475,10 @@ DetectionResult detectWithClassic(
     }
     estimateForeheadAndHair(&placed.geometric);
     awaitFaceRefinementWarmUp();
+    // Without their figures: a classic run's steps are the thesis' (classic-*).
     QElapsedTimer stage;
     stage.start();
-    refineFace(image, wantsDebugImages(options), &placed, [&](const QString &name) {
+    refineFace(image, false, &placed, [&](const QString &name) {
         const double ms = stage.nsecsElapsed() / 1e6;
         result.timingMs.insert(name, ms);
         result.timingMs[QStringLiteral("total")] += ms;
@@ -485,10 +486,6 @@ DetectionResult detectWithClassic(
         return true;
     });
     placed.refined.setPoint(pt::idx("2.1"), measuredChin);
-    if (!placed.hair.regionMask.isNull())
-        result.debugImages.insert(QStringLiteral("detect-hair-region"), placed.hair.regionMask);
-    if (!placed.head.regionImage.isNull())
-        result.debugImages.insert(QStringLiteral("detect-head-regions"), placed.head.regionImage);
     result.status = DetectStatus::Ok;
     result.face = placed.refined;
     result.faceCount = 1;
