@@ -1,5 +1,6 @@
 list(APPEND TOONFACE_CORE_SOURCES
   detect/detector.h detect/detector.cpp
+  detect/landmarkfigures.h detect/landmarkfigures.cpp
   detect/faceregions.h detect/faceregions.cpp
   detect/appearance.h detect/appearance.cpp
   detect/hairsearch.h detect/hairsearch.cpp
