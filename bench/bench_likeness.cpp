@@ -204,7 +204,7 @@ QJsonObject emotions()
         for (double intensity : intensities) {
             std::vector<QImage> cells;
             for (Emotion e : kAllEmotions)
-                cells.push_back(rasterizeSvg(cartoon.svg(emotionPose(r.face, e, intensity)), QSize(cell, cell)));
+                cells.push_back(rasterizeSvg(cartoon.svg(stillEmotionPose(r.face, e, intensity)), QSize(cell, cell)));
             rows.emplace_back(QStringLiteral("%1 at %2").arg(s.name).arg(intensity), std::move(cells));
         }
         people.append(s.name);

@@ -23,8 +23,8 @@ int runCartoon(const Command &self, const QStringList &args)
     const QCommandLineOption style(QStringLiteral("style"),
         Cli::tr("Drawing style: %1.").arg(Style::presetNames().join(QStringLiteral(", "))), QStringLiteral("NAME"));
     const QCommandLineOption emotion(QStringLiteral("emotion"),
-        Cli::tr("Expression: neutral, smile, sad, angry or surprise."), QStringLiteral("NAME"),
-        QStringLiteral("neutral"));
+        Cli::tr("Expression: neutral, smile, sad, angry or surprise (default: the face as photographed)."),
+        QStringLiteral("NAME"), QStringLiteral("neutral"));
     const QCommandLineOption method(QStringLiteral("method"),
         Cli::tr("Detection method for a photo: auto, classic or landmarks."), QStringLiteral("auto|classic|landmarks"),
         QStringLiteral("auto"));
@@ -83,7 +83,9 @@ int runCartoon(const Command &self, const QStringList &args)
         if (!face.addLayerFile(layer, &error))
             return fail(ExitBadInput, error);
     }
-    const Pose pose = emotionPose(input.face, expression, 1.0);
+    // An emotion is drawn as the animation draws it where nothing is said (lips at rest); with
+    // none asked for, the face is as photographed.
+    const Pose pose = parser.isSet(emotion) ? stillEmotionPose(input.face, expression, 1.0) : Pose();
     const QByteArray svg = face.svg(pose);
     QString error;
     if (!writeFileAtomically(parser.value(output), svg, &error))

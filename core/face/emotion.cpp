@@ -122,25 +122,30 @@ Pose emotionPose(const FaceModel &face, Emotion emotion, double intensity)
         if (std::strcmp(mirror, move.id) != 0 && std::strcmp(move.id, "8.9") != 0)
             pose.offset[pt::idx(mirror)] += QPointF(-d.x(), d.y());
     }
-    // A photo taken smiling would smile through every emotion: sad and angry first take the
-    // photo's own smile out (its corners above the line where the lips meet come down to it), and
-    // sad shuts lips photographed apart (a pout, not a grin).
-    if (emotion == Emotion::Sad || emotion == Emotion::Angry) {
-        const QPointF lipLine = (face.point("2.2") + face.point("2.3")) / 2.0;
+    // A photo taken smiling would smile through every emotion: all but the smile first take the
+    // photo's own smile out (its corners above the line where the lips meet come down to it), so
+    // neutral is neutral and surprise an O, not a grin. (Lips photographed apart are shut by the
+    // rest under speech, restingMouth, which stillEmotionPose adds where nothing is said.)
+    if (emotion != Emotion::Smile) {
+        // Where the lips meet at rest: lips photographed apart shut there (restingMouth).
+        const double lipLineY = face.point("2.2").y() + restingMouth(face)[Up].y();
         const double cornerY = (face.point("8.4").y() + face.point("8.3").y()) / 2.0;
-        const double ownSmile = std::max(0.0, lipLine.y() - cornerY);
+        const double ownSmile = std::max(0.0, lipLineY - cornerY);
         for (const char *id : {"8.4", "8.3"})
             pose.offset[pt::idx(id)] += QPointF(0, ownSmile * weight);
-    }
-    if (emotion == Emotion::Sad) {
-        const std::array<QPointF, 4> shut = restingMouth(face);
-        const char *ids[] = {"8.9", "8.2", "8.4", "8.3"};
-        for (int k = 0; k < 4; ++k)
-            pose.offset[pt::idx(ids[k])] += shut[k] * weight;
     }
     const double scale = 1.0 + (preset.eyeOpenScale - 1.0) * weight;
     pose.leftEyeOpen = scale;
     pose.rightEyeOpen = scale;
+    return pose;
+}
+
+Pose stillEmotionPose(const FaceModel &face, Emotion emotion, double intensity)
+{
+    Pose pose = emotionPose(face, emotion, intensity);
+    const std::array<QPointF, 4> rest = restingMouth(face);
+    for (int k = 0; k < 4; ++k)
+        pose.offset[pt::idx(kMouthControlIds[k])] += rest[k];
     return pose;
 }
 

@@ -46,6 +46,11 @@ double emotionWeight(double intensity);
 // emotionWeight(intensity): the full pose times that weight.
 Pose emotionPose(const FaceModel &face, Emotion emotion, double intensity);
 
+// The still drawing of `emotion` at `intensity`: what the animation draws for a clip of it
+// where nothing is said (the mouth at rest, its lips shut: restingMouth, plus emotionPose). A
+// cartoon, a preview or a thumbnail of an emotion is this pose.
+Pose stillEmotionPose(const FaceModel &face, Emotion emotion, double intensity);
+
 // The image-right counterpart of an image-left point ID ("4.6" -> "4.5"), or the ID itself
 // for points on the centre line.
 const char *mirrorPointId(const char *id);

@@ -4286,8 +4286,8 @@ The points are unchanged.</source>
         <translation>PNG 的长边像素数（默认 512）。</translation>
     </message>
     <message>
-        <source>Expression: neutral, smile, sad, angry or surprise.</source>
-        <translation>表情：neutral、smile、sad、angry 或 surprise。</translation>
+        <source>Expression: neutral, smile, sad, angry or surprise (default: the face as photographed).</source>
+        <translation>表情：neutral、smile、sad、angry 或 surprise（默认：照片中的脸）。</translation>
     </message>
     <message>
         <source>Detection method for a photo: auto, classic or landmarks.</source>

@@ -316,6 +316,35 @@ private Q_SLOTS:
         QCOMPARE(speaking.leftEyeOpen, smile.leftEyeOpen);
     }
 
+    // A photo taken with the lips apart: the animation shuts them at rest, and a sad clip over
+    // the rest draws them as it draws a photo taken with the lips together (sad once shut them a
+    // second time, lifting the lower lip's outline into a sliver).
+    void sadOverRestShutsTheLipsOnce()
+    {
+        const double es0 = m_face.fapu().es0;
+        FaceModel apart = m_face;
+        for (const char *id : {"8.2", "2.3", "2.1"})
+            apart.setPoint(pt::idx(id), apart.point(id) + QPointF(0, 0.12 * es0), apart.isHandPlaced(pt::idx(id)));
+        Timeline t;
+        t.addEmotionClip({0.0, 4.0, Emotion::Sad, 1.0, 0.0, 0.0});
+        auto sadAtRest = [&](const FaceModel &face) {
+            return posedPoints(face, TimelineEvaluator(t, face, m_shapes).evaluate(2.0));
+        };
+        const auto together = sadAtRest(m_face), p = sadAtRest(apart);
+        auto lip = [](const auto &points, const char *outer, const char *inner) {
+            return points[pt::idx(outer)].y() - points[pt::idx(inner)].y();
+        };
+        QVERIFY(p[pt::idx("2.3")].y() - p[pt::idx("2.2")].y() < 0.02 * es0);
+        QVERIFY2(std::abs(lip(p, "8.2", "2.3") - lip(together, "8.2", "2.3")) < 0.01 * es0,
+            qPrintable(QStringLiteral("lower lip %1, with the lips photographed together %2")
+                           .arg(lip(p, "8.2", "2.3"))
+                           .arg(lip(together, "8.2", "2.3"))));
+        // The still drawing of sad is that frame.
+        const auto still = posedPoints(apart, stillEmotionPose(apart, Emotion::Sad, 1.0));
+        for (int i = 0; i < kPointCount; ++i)
+            QVERIFY(QLineF(still[i], p[i]).length() < 1e-6);
+    }
+
     void emotionFadesInAndOut_data()
     {
         QTest::addColumn<double>("time");

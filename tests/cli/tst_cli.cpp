@@ -1,4 +1,7 @@
 #include "face/averageface.h"
+#include "face/emotion.h"
+#include "face/fapu.h"
+#include "face/pose.h"
 #include "io/project.h"
 #include "media/mediareader.h"
 #include "render/svgface.h"
@@ -373,6 +376,41 @@ private Q_SLOTS:
                          QStringLiteral("cute")})
                      .code,
             0);
+    }
+
+    // An emotion's cartoon is the animation's frame of it where nothing is said (the lips at
+    // rest, shut); with none asked for, the face is drawn as photographed (here lips apart).
+    void cartoonEmotionIsItsRestFrame()
+    {
+        Project project;
+        project.face = averageFace(QRectF(60, 80, 200, 240), QSize(320, 400));
+        const double es0 = project.face.fapu().es0;
+        for (const char *id : {"8.2", "2.3", "2.1"})
+            project.face.setPoint(pt::idx(id), project.face.point(id) + QPointF(0, 0.12 * es0), false);
+        project.style.name = QStringLiteral("normal");
+        const QString projectPath = path(QStringLiteral("apart.toonface"));
+        QString error;
+        QVERIFY2(saveProject(project, projectPath, &error), qPrintable(error));
+        const std::optional<Project> loaded = loadProject(projectPath, &error);
+        QVERIFY2(loaded, qPrintable(error));
+        SvgFace drawn(loaded->face, loaded->style);
+        drawn.setFrame(headFrame(loaded->face));
+        auto read = [](const QString &file) {
+            QFile f(file);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        const QString plain = path(QStringLiteral("apart.svg"));
+        QCOMPARE(cli({QStringLiteral("cartoon"), projectPath, QStringLiteral("-o"), plain}).code, 0);
+        QCOMPARE(read(plain), drawn.svg(Pose()));
+        for (Emotion e : kAllEmotions) {
+            const QString out = path(emotionName(e) + QStringLiteral(".svg"));
+            QCOMPARE(cli({QStringLiteral("cartoon"), projectPath, QStringLiteral("-o"), out,
+                             QStringLiteral("--emotion"), emotionName(e)})
+                         .code,
+                0);
+            QCOMPARE(read(out), drawn.svg(stillEmotionPose(loaded->face, e, 1.0)));
+        }
+        QVERIFY(read(path(QStringLiteral("neutral.svg"))) != read(plain));
     }
 
     void cartoonFromProject()

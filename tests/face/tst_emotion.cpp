@@ -161,8 +161,18 @@ private Q_SLOTS:
             QVERIFY2(s.at("8.4").y() > lipLine + 0.05 * es0 && s.at("8.3").y() > lipLine + 0.05 * es0,
                 qPrintable(emotionName(e)));
         }
-        const Posed sad = posed(face, emotionPose(face, Emotion::Sad, 1.0));
+        const Posed sad = posed(face, stillEmotionPose(face, Emotion::Sad, 1.0));
         QVERIFY(sad.opening() < 0.02 * es0);
+        // Neutral is neutral and surprise an O: the photo's smile is taken out of both, and the
+        // still drawing of neutral shuts the lips photographed apart (as the rest does).
+        const Posed neutral = posed(face, stillEmotionPose(face, Emotion::Neutral, 1.0));
+        // Its corners on the line where the shut lips meet: a straight mouth, neither up nor down.
+        QVERIFY(neutral.opening() < 0.02 * es0);
+        QVERIFY(std::abs(neutral.at("8.4").y() - neutral.at("2.2").y()) < 0.01 * es0);
+        QVERIFY(std::abs(neutral.at("8.3").y() - neutral.at("2.2").y()) < 0.01 * es0);
+        const Posed surprise = posed(face, emotionPose(face, Emotion::Surprise, 1.0));
+        const double meet = neutral.at("2.2").y();
+        QVERIFY(surprise.at("8.4").y() > meet && surprise.at("8.3").y() > meet);
         const Posed half = posed(face, emotionPose(face, Emotion::Sad, 0.5));
         QVERIFY(half.at("8.4").y() > face.point("8.4").y() + 0.1 * es0);
         const Posed smile = posed(face, emotionPose(face, Emotion::Smile, 1.0));

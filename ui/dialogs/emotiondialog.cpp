@@ -72,7 +72,7 @@ EmotionDialog::EmotionDialog(Document *document, QWidget *parent)
     for (Emotion e : kAllEmotions) {
         QIcon icon;
         if (hasFace)
-            icon = QIcon(QPixmap::fromImage(renderPose(svgFace, emotionPose(m_document->face(), e, 1.0),
+            icon = QIcon(QPixmap::fromImage(renderPose(svgFace, stillEmotionPose(m_document->face(), e, 1.0),
                 faceFrame(m_document->face()), QSize(kThumbnailSize, kThumbnailSize))));
         m_emotion->addItem(icon, emotionTitle(e), int(e));
     }
@@ -182,7 +182,7 @@ bool EmotionDialog::replacesOthers() const
 void EmotionDialog::updatePreview()
 {
     if (m_document->hasFace())
-        m_preview->setPose(emotionPose(m_document->face(), clip().emotion, clip().intensity));
+        m_preview->setPose(stillEmotionPose(m_document->face(), clip().emotion, clip().intensity));
 }
 
 void EmotionDialog::accept()
