@@ -6,6 +6,7 @@
 #include "detect/grayview.h"
 #include "detect/hairsearch.h"
 #include "detect/headregions.h"
+#include "detect/landmarkfigures.h"
 #include "detect/landmarkfit.h"
 #include "detect/landmarkmap.h"
 #include "detect/landmarkpredictor.h"
@@ -16,8 +17,6 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFileInfo>
-#include <QGuiApplication>
-#include <QPainter>
 
 #include <dlib/image_processing.h>
 #include <dlib/image_transforms.h>
@@ -290,71 +289,6 @@ double logistic(double x)
     return 1.0 / (1.0 + std::exp(-x));
 }
 
-void addLandmarkDebugImages(QMap<QString, QImage> *out, const QImage &image, const std::vector<FaceBox> &faces,
-    int chosen, const std::array<QPointF, kIbugPointCount> &ibug, const FaceModel &geometric, const FaceModel &face,
-    const HairSearchReport &hair, const HeadRegionReport &regions)
-{
-    QImage canvas = image.convertToFormat(QImage::Format_RGB32);
-    QPainter p(&canvas);
-    p.setRenderHint(QPainter::Antialiasing);
-    const double unit = std::max(1.0, std::min(canvas.width(), canvas.height()) / 400.0);
-    for (int i = 0; i < int(faces.size()); ++i) {
-        p.setPen(QPen(i == chosen ? Qt::green : Qt::yellow, unit));
-        p.drawRect(faces[i].box);
-    }
-    p.setPen(Qt::NoPen);
-    p.setBrush(Qt::cyan);
-    for (const QPointF &q : ibug)
-        p.drawEllipse(q, unit, unit);
-    p.end();
-    out->insert(QStringLiteral("detect-landmarks"), canvas);
-
-    // The points on a crop around the head, enlarged to about 800 px, labelled with their IDs;
-    // the geometric estimates of hair and ears (before the photo search) in orange.
-    QRectF head = face.bounds().united(geometric.bounds());
-    head.adjust(-0.1 * head.width(), -0.1 * head.height(), 0.1 * head.width(), 0.1 * head.height());
-    const double zoom = 800.0 / std::max(head.width(), head.height());
-    QImage crop(QSize(std::lround(head.width() * zoom), std::lround(head.height() * zoom)), QImage::Format_RGB32);
-    crop.fill(Qt::black);
-    p.begin(&crop);
-    p.setRenderHint(QPainter::Antialiasing);
-    p.setRenderHint(QPainter::SmoothPixmapTransform);
-    p.scale(zoom, zoom);
-    p.translate(-head.topLeft());
-    p.drawImage(QPointF(0, 0), image);
-    p.setPen(QPen(QColor(255, 255, 255, 140), 1.0 / zoom));
-    for (const QLineF &ray : regions.hairUsable ? regions.rays : hair.rays)
-        p.drawLine(ray);
-    // Text needs fonts, which need a QGuiApplication; a command-line run gets unlabelled points.
-    const bool labels = qobject_cast<QGuiApplication *>(QCoreApplication::instance()) != nullptr;
-    if (labels) {
-        QFont font = p.font();
-        font.setPointSizeF(7.0 / zoom);
-        p.setFont(font);
-    }
-    const double r = 3.0 / zoom;
-    for (int i = 0; i < kPointCount; ++i) {
-        const PointGroup g = pointTable()[i].group;
-        p.setPen(Qt::NoPen);
-        if ((g == PointGroup::Hair || g == PointGroup::Ears) && geometric.point(i) != face.point(i)) {
-            p.setBrush(QColor(255, 140, 0));
-            p.drawEllipse(geometric.point(i), r, r);
-        }
-        p.setBrush(g == PointGroup::Hair ? Qt::magenta : g == PointGroup::Ears ? Qt::cyan : Qt::green);
-        p.drawEllipse(face.point(i), r, r);
-        if (labels) {
-            p.setPen(Qt::yellow);
-            p.drawText(face.point(i) + QPointF(r, -r), pointId(i));
-        }
-    }
-    p.end();
-    out->insert(QStringLiteral("detect-points-crop"), crop);
-    if (!hair.regionMask.isNull())
-        out->insert(QStringLiteral("detect-hair-region"), hair.regionMask);
-    if (!regions.regionImage.isNull())
-        out->insert(QStringLiteral("detect-head-regions"), regions.regionImage);
-}
-
 bool wantsDebugImages(const DetectOptions &options)
 {
     return options.keepDebugImages || !options.debugDir.isEmpty();
@@ -418,6 +352,9 @@ bool placeFace(const LandmarkPredictor &model, const QImage &image, const QImage
     return refineFace(image, withDebugImages, out, endStage);
 }
 
+// How far below the eye line, in eye distances, a chin is believed for the hair's estimate.
+constexpr double kMaxChinDrop = 2.3;
+
 // The thesis pipeline (classic.h): one face, found by its eye pair. Only a pair that passed the
 // face checks (ClassicResult::eyePairInFace) is a face: where none did, the thesis' own choice
 // by eq. (3.5) is a dark pair anywhere in the photo (a sleeve, a curtain's folds), and 72 points
@@ -429,7 +366,18 @@ DetectionResult detectWithClassic(
     DetectionResult result;
     result.method = detectionMethodName(DetectionMethod::Classic);
     report(0.0, QStringLiteral("classic"));
-    const ClassicResult c = detectClassic(image, wantsDebugImages(options));
+    // The classic method assumes one large face in the middle of the picture. With a face asked
+    // for (faceAt), the face detector's box holding that point is its hint (Algorithm 4.1's
+    // central rectangle in that box, the eyes in its upper part); a point no face holds leaves
+    // the assumption.
+    QRect hint;
+    if (options.faceAt) {
+        double lastScale = 0;
+        const std::vector<FaceBox> faces = scanForFaces(toGray(image), options.faceAt, {}, &lastScale);
+        if (const int asked = faceHolding(faces, *options.faceAt); asked >= 0)
+            hint = faces[asked].box.toAlignedRect().intersected(image.rect());
+    }
+    const ClassicResult c = detectClassic(image, wantsDebugImages(options), hint);
     result.timingMs = c.timingMs;
     result.debugImages = c.debugImages;
     if (!c.ok || !c.eyePairInFace) {
@@ -437,10 +385,45 @@ DetectionResult detectWithClassic(
         result.error = c.ok ? DetectText::tr("The classic method found no face: %1.").arg(c.faceCheck) : c.error;
         return result;
     }
+    // Hair and forehead as landmark faces get them: the classic method's own 11.x lie at the top
+    // of F_final (the top of the hair where it is dark enough to join the face region), its
+    // outline on H_final, which misses the hair that is not dark. From its measured points (eyes,
+    // brows, nose, mouth, contour) the estimate of estimateForeheadAndHair(), then the photo
+    // search and the regions of refineFace(); its ears, measured on F_final, stay where the
+    // photo does not place them.
+    //
+    // The hair's size follows the chin's drop below the eyes (headGeometry(): the eyes lie halfway
+    // between chin and crown), and the classic chin is where F_final ends, often on the neck or a
+    // collar of the skin's hue: for the hair the chin is held within 2.3 eye distances of the eye
+    // line (an adult's chin lies about 1.9 below it), then the measured one is put back.
+    PlacedFace placed;
+    placed.geometric = c.face;
+    const QPointF measuredChin = c.face.point("2.1");
+    {
+        const QPointF eyeL = c.face.point("3.6"), eyeR = c.face.point("3.5"), mid = (eyeL + eyeR) / 2;
+        const double d = QLineF(eyeL, eyeR).length();
+        const QPointF down = d > 0 ? QPointF(eyeL.y() - eyeR.y(), eyeR.x() - eyeL.x()) / d : QPointF(0, 1);
+        const double drop = QPointF::dotProduct(measuredChin - mid, down);
+        if (drop > kMaxChinDrop * d)
+            placed.geometric.setPoint(pt::idx("2.1"), measuredChin - (drop - kMaxChinDrop * d) * down);
+    }
+    estimateForeheadAndHair(&placed.geometric);
+    awaitFaceRefinementWarmUp();
+    // Without their figures: a classic run's steps are the thesis' (classic-*).
+    QElapsedTimer stage;
+    stage.start();
+    refineFace(image, false, &placed, [&](const QString &name) {
+        const double ms = stage.nsecsElapsed() / 1e6;
+        result.timingMs.insert(name, ms);
+        result.timingMs[QStringLiteral("total")] += ms;
+        stage.restart();
+        return true;
+    });
+    placed.refined.setPoint(pt::idx("2.1"), measuredChin);
     result.status = DetectStatus::Ok;
-    result.face = c.face;
+    result.face = placed.refined;
     result.faceCount = 1;
-    result.faceBox = c.face.bounds().toAlignedRect().intersected(image.rect());
+    result.faceBox = result.face.bounds().toAlignedRect().intersected(image.rect());
     // The classic method has no score of its own: fixed figures ranking how directly each
     // group is measured (eyeballs and feature edges first, rule-placed points last).
     result.groupConfidence.insert(groupName(PointGroup::Eyes), 0.5);
@@ -454,11 +437,8 @@ DetectionResult detectWithClassic(
     result.regions.nose = c.noseRegion;
     result.regions.mouth = c.mouthRegion;
     // The classic method's own thresholds and regions where it keeps them; the hue and colour
-    // statistics, which it does not keep, are measured around the face it found.
-    {
-        FaceModel scratch = result.face;
-        result.tracking = refineFromRegions(&scratch, image).seed;
-    }
+    // statistics, which it does not keep, as refineFace() measured them around the face it found.
+    result.tracking = placed.seed;
     result.tracking.valid = true;
     result.tracking.t1 = c.t1;
     result.tracking.d = c.d;

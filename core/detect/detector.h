@@ -27,6 +27,8 @@ struct DetectOptions
     bool keepDebugImages = false; // keep the intermediate images in DetectionResult::debugImages
     // With several faces: use the one whose box holds this point (photo pixels), looking for
     // smaller faces until one does; unset (or held by no face): the largest, most central one.
+    // The classic method looks for its eye pair in that face's box (unset or held by no face:
+    // in the middle of the picture, the thesis' assumption).
     std::optional<QPointF> faceAt;
 };
 

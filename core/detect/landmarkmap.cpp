@@ -212,18 +212,10 @@ FaceModel faceFromLandmarks68(const Ibug &p, QSize imageSize)
     set("2.12", jawL.atArcLength((jawL.arcLength(tL) + jawL.arcLength(8)) / 2));
     set("2.11", jawR.atArcLength((jawR.arcLength(tR) + jawR.arcLength(8)) / 2));
 
-    // Forehead: 11.1 on the hairline of headGeometry(), on the face's midline (the top of the
-    // nose bridge, iBUG 27); the temples 11.2/11.3 lie on the quarter-ellipse from the cheek at
-    // eye level to 11.1, at 50 degrees above the eye line (each side with its own half-width,
-    // so a turned head keeps its asymmetry).
-    const HeadGeometry g = headGeometry(face);
+    // Forehead and hair: estimateForeheadAndHair().
+    const HeadGeometry g = estimateForeheadAndHair(&face);
     const double cheekLX = g.toLocal(face.point("5.2")).x(), cheekRX = g.toLocal(face.point("5.1")).x();
     const double halfL = std::max(g.midX - cheekLX, 0.1 * es0), halfR = std::max(cheekRX - g.midX, 0.1 * es0);
-    const double templeAngle = 50.0 * std::numbers::pi / 180.0;
-    auto setG = [&](const char *id, QPointF local) { face.setPoint(pt::idx(id), g.toImage(local)); };
-    setG("11.1", {g.midX, g.hairlineY});
-    setG("11.2", {g.midX - halfL * std::cos(templeAngle), g.hairlineY * std::sin(templeAngle)});
-    setG("11.3", {g.midX + halfR * std::cos(templeAngle), g.hairlineY * std::sin(templeAngle)});
 
     // Ears, by the usual frontal proportions: the ear's top is at brow level and its lobe's
     // bottom at the nose base; it stands out of the head contour by up to a fifth of the
@@ -242,9 +234,6 @@ FaceModel faceFromLandmarks68(const Ibug &p, QSize imageSize)
     ear(jawL, halfL, -1.0, "10.2", "10.4", "10.6", "10.10");
     ear(jawR, halfR, 1.0, "10.1", "10.3", "10.5", "10.9");
 
-    for (int i = 0; i < 19; ++i)
-        face.setPoint(i, g.toImage(g.hairPoint(i)));
-
     if (imageSize.isValid()) {
         const QRectF box(0, 0, std::max(0, imageSize.width() - 1), std::max(0, imageSize.height() - 1));
         for (int i = 0; i < kPointCount; ++i) {
@@ -259,6 +248,32 @@ FaceModel faceFromLandmarks68(const Ibug &p, QSize imageSize)
         }
     }
     return face;
+}
+
+HeadGeometry estimateForeheadAndHair(FaceModel *face)
+{
+    // 11.1 on the hairline of headGeometry(), on the face's midline (between the inner brow
+    // ends); the temples 11.2/11.3 lie on the quarter-ellipse from the cheek at eye level to
+    // 11.1, at 50 degrees above the eye line (each side with its own half-width, so a turned head
+    // keeps its asymmetry); the hair points on the hair ellipse.
+    const HeadGeometry g = headGeometry(*face);
+    const double es0 = g.eyeDistance;
+    const double cheekLX = g.toLocal(face->point("5.2")).x(), cheekRX = g.toLocal(face->point("5.1")).x();
+    const double halfL = std::max(g.midX - cheekLX, 0.1 * es0), halfR = std::max(cheekRX - g.midX, 0.1 * es0);
+    const double templeAngle = 50.0 * std::numbers::pi / 180.0;
+    auto setG = [&](const char *id, QPointF local) { face->setPoint(pt::idx(id), g.toImage(local)); };
+    setG("11.1", {g.midX, g.hairlineY});
+    setG("11.2", {g.midX - halfL * std::cos(templeAngle), g.hairlineY * std::sin(templeAngle)});
+    setG("11.3", {g.midX + halfR * std::cos(templeAngle), g.hairlineY * std::sin(templeAngle)});
+    for (int i = 0; i < 19; ++i)
+        face->setPoint(pt::idx("h.1") + i, g.toImage(g.hairPoint(i)));
+    if (face->imageSize().isValid()) {
+        keepInPhoto(face, face->imageSize(), [](int i) {
+            return pointTable()[i].group == PointGroup::Hair || i == pt::idx("11.1") || i == pt::idx("11.2")
+                || i == pt::idx("11.3");
+        });
+    }
+    return g;
 }
 
 QPointF HeadGeometry::toLocal(QPointF image) const

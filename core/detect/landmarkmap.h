@@ -56,6 +56,14 @@ struct HeadGeometry
 // requires: the eyes, brows, nose tip, cheeks 5.2/5.1 and chin 2.1 of `face` are placed.
 HeadGeometry headGeometry(const FaceModel &face);
 
+// The estimated forehead and hair of `face` from its measured points (headGeometry()): 11.1 on
+// the hairline on the face's midline, the temples 11.2/11.3 beside it, the hair outline
+// h.1..h.19 on the hair ellipse; kept in the photo when the face's image size is valid.
+// faceFromLandmarks68() places them so; a face found otherwise (the classic method) gets them
+// the same way before the photo search refines them (refineFromPhoto(), hairsearch.h).
+// requires: as headGeometry(). Returns the geometry they were placed on.
+HeadGeometry estimateForeheadAndHair(FaceModel *face);
+
 // The ear beside a cheek from a profile of the skin's width beyond the cheek contour, one
 // width per row ys[i] (equal steps `step`, top to bottom): the longest run of rows whose width
 // lies in [minWidth, maxWidth] is the ear when its length is within [minLength, maxLength]. Its

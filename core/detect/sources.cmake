@@ -1,5 +1,6 @@
 list(APPEND TOONFACE_CORE_SOURCES
   detect/detector.h detect/detector.cpp
+  detect/landmarkfigures.h detect/landmarkfigures.cpp
   detect/faceregions.h detect/faceregions.cpp
   detect/appearance.h detect/appearance.cpp
   detect/hairsearch.h detect/hairsearch.cpp
@@ -21,4 +22,5 @@ set_source_files_properties(detect/detector.cpp detect/landmarkpredictor.cpp det
 list(APPEND TOONFACE_CORE_SOURCES
   detect/tsai.h detect/tsai.cpp
   detect/regions.h detect/regions.cpp
-  detect/classic.h detect/classic.cpp)
+  detect/classic.h detect/classic.cpp
+  detect/classicsteps.h detect/classiceyes.cpp detect/classicfeatures.cpp detect/classicpoints.cpp)
