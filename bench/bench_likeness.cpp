@@ -143,6 +143,7 @@ QJsonObject sheet()
         scores.insert(QStringLiteral("beard"), f.beardScore);
         scores.insert(QStringLiteral("goatee"), f.goateeScore);
         scores.insert(QStringLiteral("jaw"), f.jawScore);
+        scores.insert(QStringLiteral("facialHair"), f.facialHair.isValid() ? f.facialHair.name() : QString());
         scores.insert(QStringLiteral("bald"), f.baldScore);
         scores.insert(QStringLiteral("hat"), f.hatScore);
         o.insert(QStringLiteral("scores"), scores);
