@@ -385,12 +385,14 @@ void Style::sampleColours(const QImage &original, const FaceModel &face, Appeara
     if (hairOk && rgbDistance(hairSeen, skin) < 30.0)
         hairOk = false; // bald or the band fell on the forehead
     QColor hair = hairOk && monochrome ? hairFromGrey(qGray(hairSeen.rgb())) : hairSeen;
+    auto setBrows = [&](const QColor &brow) {
+        components[QStringLiteral("eyebrows")].fill = brow;
+        components[QStringLiteral("eyebrows")].stroke = brow;
+    };
     auto setHair = [&](const QColor &c) {
         components[QStringLiteral("hair")].fill = c;
         components[QStringLiteral("hair")].stroke = c.darker(170);
-        const QColor brow = c.valueF() > 0.45 ? c.darker(150) : c.darker(120);
-        components[QStringLiteral("eyebrows")].fill = brow;
-        components[QStringLiteral("eyebrows")].stroke = brow;
+        setBrows(c.valueF() > 0.45 ? c.darker(150) : c.darker(120));
     };
     if (hairOk)
         setHair(hair);
@@ -404,7 +406,7 @@ void Style::sampleColours(const QImage &original, const FaceModel &face, Appeara
         std::vector<int> runs;
         auto dark = [&](QPointF q) {
             const auto px = sampler.disc(q, 0.5);
-            return !px.empty() && qGray(px.front()) < 0.8 * qGray(skin.rgb());
+            return !px.empty() && qGray(px.front()) < kBrowDark * qGray(skin.rgb());
         };
         for (const auto &[a, b] : {std::pair {"4.4a", "4.4"}, std::pair {"4.3", "4.3a"}}) {
             const QPointF mid = (p(a) + p(b)) / 2.0;
@@ -458,8 +460,7 @@ void Style::sampleColours(const QImage &original, const FaceModel &face, Appeara
         const double most = kBrowContrast * qGray(skinUsed.rgb());
         if (qGray(brow.rgb()) > most)
             brow = brow.darker(int(std::ceil(100.0 * qGray(brow.rgb()) / std::max(1.0, most))));
-        components[QStringLiteral("eyebrows")].fill = brow;
-        components[QStringLiteral("eyebrows")].stroke = brow;
+        setBrows(brow);
     }
     if (found.glassesFrame.isValid()) {
         const QColor frame = monochrome

@@ -114,12 +114,22 @@ Part makeMoustache(const Pt &P, double es0)
     return {"moustache", true, "path", {{"d", d.data()}}, "moustache"};
 }
 
+namespace {
+
+// A beard's outer edge over a point of the jaw: stood off from the face's middle by its fullness.
+QPointF beardEdge(const Pt &P, double es0, QPointF p)
+{
+    const QPointF centre = (P("5.2") + P("5.1") + P("8.2")) / 3.0;
+    return p + unit(p - centre) * (kBeardFullness * es0);
+}
+
+} // namespace
+
 Part makeBeard(const Pt &P, double es0)
 {
     // Outer edge: the jaw from the cheeks down round the chin, stood off by the beard's fullness;
     // inner edge: up from the jaw's sides to beside the mouth corners and under the lower lip.
-    const QPointF centre = (P("5.2") + P("5.1") + P("8.2")) / 3.0;
-    auto out = [&](QPointF p) { return p + unit(p - centre) * (kBeardFullness * es0); };
+    auto out = [&](QPointF p) { return beardEdge(P, es0, p); };
     const QPointF startL = lerp(P("5.2"), P("2.14"), 0.45);
     const QPointF startR = lerp(P("5.1"), P("2.13"), 0.45);
     const QPointF belowLip = P("8.2") + QPointF(0, kBeardBelowLip * es0);
@@ -143,8 +153,7 @@ Part makeGoatee(const Pt &P, double es0)
 {
     // Outer edge: round the chin from under each mouth corner, stood off as a beard is; inner
     // edge: up under the lower lip.
-    const QPointF centre = (P("5.2") + P("5.1") + P("8.2")) / 3.0;
-    auto out = [&](QPointF p) { return p + unit(p - centre) * (kBeardFullness * es0); };
+    auto out = [&](QPointF p) { return beardEdge(P, es0, p); };
     const QPointF startL = lerp(P("8.4"), P("2.12"), kGoateeReach);
     const QPointF startR = lerp(P("8.3"), P("2.11"), kGoateeReach);
     const QPointF belowLip = P("8.2") + QPointF(0, kBeardBelowLip * es0);
