@@ -4,11 +4,15 @@
 #include "face/fapu.h"
 
 #include <QLineF>
+#include <QPainter>
+#include <QPolygonF>
+#include <QTransform>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <iterator>
+#include <numbers>
 #include <numeric>
 #include <optional>
 #include <vector>
@@ -43,6 +47,9 @@ constexpr double kLensReach = 0.85; // ES0 past the eyes' centres where a frame'
 constexpr double kRimAbove[2] = {0.4, 0.1};
 constexpr double kRimDark = 0.55;
 constexpr double kRimDrift = 0.12; // ES0 a top rim may rise or fall from over the eye's corner to its end
+// A face tilted further than this (degrees) is measured upright: across a box as wide as the
+// mouth, its tilt already moves a point a twentieth of the box's width up or down.
+constexpr double kUprightRoll = 3.0;
 
 double lumaOf(QRgb p)
 {
@@ -769,6 +776,50 @@ void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor 
     }
 }
 
+// The face's own parts (over the lip, under the eyes, around the lenses) are looked for in boxes
+// square to its eyes' line. On a face tilted in the picture's plane the photo's boxes would cut
+// across them (at 20 degrees, the lip's top corner rises past the nose's bottom), so the face is
+// measured upright: the photo around it turned until the eyes are level, the points with it.
+// Where the turned photo does not reach, it shows the skin (nothing there, as outside the photo).
+struct Upright
+{
+    QImage photo;
+    FaceModel face;
+};
+
+Upright upright(const QImage &photo, const FaceModel &face, const QColor &skin, double es0)
+{
+    QPointF l = face.point("3.6"), r = face.point("3.5");
+    if (l.x() > r.x())
+        std::swap(l, r);
+    const QLineF eyes(l, r);
+    const double roll = std::atan2(eyes.dy(), eyes.dx()) * 180.0 / std::numbers::pi; // y down: clockwise
+    if (std::abs(roll) < kUprightRoll)
+        return {photo, face};
+    const QPointF centre = eyes.center();
+    QTransform level;
+    level.translate(centre.x(), centre.y());
+    level.rotate(-roll);
+    level.translate(-centre.x(), -centre.y());
+    QPolygonF points;
+    for (const QPointF &p : face.points())
+        points << level.map(p);
+    const QRect area = points.boundingRect().adjusted(-es0, -es0, es0, es0).toAlignedRect();
+    level *= QTransform::fromTranslate(-area.left(), -area.top());
+    Upright out {QImage(area.size(), QImage::Format_RGB32), face};
+    out.photo.fill(skin);
+    {
+        QPainter painter(&out.photo);
+        painter.setRenderHint(QPainter::SmoothPixmapTransform);
+        painter.setTransform(level);
+        painter.drawImage(QPointF(0, 0), photo);
+    }
+    out.face.setImageSize(area.size());
+    for (int i = 0; i < kPointCount; ++i)
+        out.face.setPoint(i, level.map(face.point(i)), face.isHandPlaced(i));
+    return out;
+}
+
 } // namespace
 
 AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, const QColor &skin)
@@ -776,11 +827,15 @@ AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, co
     AppearanceFindings out;
     if (photo.isNull() || !face.isValid() || !skin.isValid())
         return out;
-    const Pixels px(photo);
     const double es0 = face.fapu().es0;
-    findGlasses(px, face, es0, std::max(1.0, lumaOf(skin.rgb())), &out);
-    findFacialHair(px, face, es0, std::max(1.0, lumaOf(skin.rgb())), &out);
-    findHead(px, face, es0, skin, &out);
+    const double skinLuma = std::max(1.0, lumaOf(skin.rgb()));
+    {
+        const Upright level = upright(photo, face, skin, es0);
+        const Pixels px(level.photo);
+        findGlasses(px, level.face, es0, skinLuma, &out);
+        findFacialHair(px, level.face, es0, skinLuma, &out);
+    }
+    findHead(Pixels(photo), face, es0, skin, &out);
     return out;
 }
 

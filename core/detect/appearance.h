@@ -45,8 +45,8 @@ struct AppearanceFindings
     // A beard darkens the jaw's sides as well (shared photos: beards 0.59 to 0.99, a goatee 0).
     static constexpr double kBeardSides = 0.3;
     // A goatee darkens the chin where a bare chin shows at most a little of the lip's shadow
-    // (shared photos: bare chins 0 to 0.08, bearded ones 0.29 to 0.59).
-    static constexpr double kGoateeThreshold = 0.2;
+    // (shared photos, measured upright: bare chins 0 to 0.08, bearded ones 0.20 to 0.59).
+    static constexpr double kGoateeThreshold = 0.15;
     static constexpr double kBaldThreshold = 0.6;
     static constexpr double kSkinReachThreshold = 0.7;
     // Stubble: at least this share dark and this much more textured than the cheeks.

@@ -14,6 +14,7 @@
 #include <QRandomGenerator>
 #include <QRegularExpression>
 #include <QTest>
+#include <QTransform>
 
 #include <tuple>
 
@@ -79,6 +80,28 @@ QRectF lensBounds(const QString &d)
             box = box.united(QRectF(v[k], v[k + 1], 1e-6, 1e-6));
     }
     return box;
+}
+
+// The photo and its face turned by `degrees` (clockwise, y down) about the eyes' middle, as a
+// head tilted in the picture's plane; what the turn uncovers is a wall's colour.
+std::pair<QImage, FaceModel> tilted(const QImage &photo, const FaceModel &face, double degrees)
+{
+    const QPointF centre = (face.point("3.5") + face.point("3.6")) / 2.0;
+    QTransform turn;
+    turn.translate(centre.x(), centre.y());
+    turn.rotate(degrees);
+    turn.translate(-centre.x(), -centre.y());
+    QImage out(photo.size(), QImage::Format_RGB32);
+    out.fill(QColor(200, 200, 190));
+    QPainter painter(&out);
+    painter.setRenderHint(QPainter::SmoothPixmapTransform);
+    painter.setTransform(turn);
+    painter.drawImage(QPointF(0, 0), photo);
+    painter.end();
+    FaceModel turned = face;
+    for (int i = 0; i < kPointCount; ++i)
+        turned.setPoint(i, turn.map(face.point(i)));
+    return {out, turned};
 }
 
 } // namespace
@@ -159,6 +182,50 @@ private Q_SLOTS:
             QVERIFY(f.facialHair.isValid() && f.facialHair.value() < options.skin.value());
         if (options.hat) // the hat's colour, not the hair's
             QVERIFY2(std::abs(f.hat.blue() - options.hatColour.blue()) < 30, qPrintable(f.hat.name()));
+    }
+
+    // A head tilted in the picture's plane shows the same glasses and facial hair as upright: the
+    // face's parts are looked for square to its eyes' line, not to the photo's edges.
+    void tiltedHead_data()
+    {
+        QTest::addColumn<DrawnFaceOptions>("options");
+        QTest::addColumn<double>("degrees");
+        DrawnFaceOptions o;
+        for (double degrees : {-20.0, 12.0, 20.0}) {
+            auto row = [&](const char *what, const DrawnFaceOptions &options) {
+                QTest::addRow("%s %+.0f", what, degrees) << options << degrees;
+            };
+            row("plain", DrawnFaceOptions());
+            o = DrawnFaceOptions();
+            o.glasses = true;
+            row("glasses", o);
+            o.roundGlasses = true;
+            row("round glasses", o);
+            o = DrawnFaceOptions();
+            o.moustache = true;
+            row("moustache", o);
+            o.goatee = true;
+            row("moustache and goatee", o);
+            o = DrawnFaceOptions();
+            o.beard = o.moustache = true;
+            row("full beard", o);
+        }
+    }
+
+    void tiltedHead()
+    {
+        QFETCH(DrawnFaceOptions, options);
+        QFETCH(double, degrees);
+        const auto [photo, face] = tilted(testing::drawnFace(options), testing::drawnFaceModel(), degrees);
+        const AppearanceFindings f = findAppearance(photo, face, options.skin);
+        const QByteArray what = describe(f).toUtf8();
+        QCOMPARE(f.appearance.glasses,
+            !options.glasses           ? GlassesShape::None
+                : options.roundGlasses ? GlassesShape::Round
+                                       : GlassesShape::Rectangular);
+        QVERIFY2(f.appearance.moustache == options.moustache, what.constData());
+        QVERIFY2(f.appearance.beard == options.beard, what.constData());
+        QVERIFY2(f.appearance.goatee == options.goatee, what.constData());
     }
 
     // Stubble is not dark enough over enough of the chin and lip to pass for a beard by darkness
