@@ -76,6 +76,10 @@ std::array<QPointF, kPointCount> caricatureOffsets(const FaceModel &face, double
             d *= limit / len;
         off[i] = d;
     }
+    // How far the lips are parted is the moment's, not the person's: the inner lips move as one,
+    // so lips the rest (or a closed mouth shape) brings together still meet.
+    const QPointF lips = (off[pt::idx("2.2")] + off[pt::idx("2.3")]) / 2.0;
+    off[pt::idx("2.2")] = off[pt::idx("2.3")] = lips;
     // The hair outline moves with the contour: each point by the contour's displacement,
     // weighted by closeness, so it keeps its distance from the face.
     const char *const contour[] = {"11.2", "11.1", "11.3", "5.2", "5.1", "2.14", "2.13"};

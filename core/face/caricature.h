@@ -15,7 +15,8 @@ class FaceModel;
 // brows, eyes, nose and mouth) is exaggerated by `factor` (0 = the points as they are, 0.35 = a
 // mild likeness, 1 = twice the difference). Eye size and shape, brow arch, nose width, mouth
 // width, lip fullness, face width and jaw shape all follow from the points. The hair outline
-// follows the contour near it and the ears follow the cheeks, so they stay attached.
+// follows the contour near it and the ears follow the cheeks, so they stay attached. How far the
+// lips are parted is the photo's moment, not the person's, and is not exaggerated.
 //
 // Returns the displacement of every point (pixels); each is at most kMaxCaricatureShift * ES0
 // * factor long, so a badly placed point cannot tear the drawing. Zero for an invalid face.

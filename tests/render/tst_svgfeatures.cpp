@@ -4,6 +4,7 @@
 #include "face/fapu.h"
 #include "face/mouthshape.h"
 #include "render/svgface.h"
+#include "svgfacefixture.h"
 
 #include <QRegularExpression>
 #include <QTest>
@@ -298,6 +299,30 @@ private Q_SLOTS:
         const double es0 = wild.fapu().es0;
         for (const QPointF &d : caricatureOffsets(wild, 1.0))
             QVERIFY(std::hypot(d.x(), d.y()) <= kMaxCaricatureShift * es0 + 1e-9);
+    }
+
+    // A photo with parted lips: the caricature exaggerates the person, not the moment, so the
+    // lips it draws at rest meet as they do uncaricatured (no dark slit, no teeth between them).
+    void caricatureKeepsRestingLipsShut()
+    {
+        FaceModel face = testFace();
+        const double mns0 = face.fapu().mns0;
+        for (const char *id : {"2.3", "8.2", "2.1"})
+            face.setPoint(pt::idx(id), face.point(id) + QPointF(0, 0.5 * mns0));
+        const auto off = caricatureOffsets(face, 0.7);
+        QCOMPARE(off[pt::idx("2.2")], off[pt::idx("2.3")]);
+        Style style = Style::preset(QStringLiteral("normal"));
+        const Pose rest = stillEmotionPose(face, Emotion::Neutral, 1.0);
+        for (double factor : {0.0, 0.35, 0.7}) {
+            style.caricature = factor;
+            const QVector<FacePart> parts = SvgFace(face, style).parts(rest);
+            const double inner = svgfacetest::area(svgfacetest::painterPath(geometryOf(parts, "mouth-inner")));
+            const double teeth = svgfacetest::area(svgfacetest::painterPath(geometryOf(parts, "mouth-teeth")));
+            const QByteArray what
+                = QStringLiteral("caricature %1: mouth %2, teeth %3 px^2").arg(factor).arg(inner).arg(teeth).toUtf8();
+            QVERIFY2(inner < 0.02 * mns0 * face.fapu().mw0, what.constData());
+            QVERIFY2(teeth < 0.01 * mns0 * face.fapu().mw0, what.constData());
+        }
     }
 
     // New styles start mildly caricatured.
