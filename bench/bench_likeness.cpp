@@ -129,6 +129,8 @@ QJsonObject sheet()
         QJsonObject scores;
         scores.insert(QStringLiteral("glasses"), f.glassesScore);
         scores.insert(QStringLiteral("mTex"), f.moustacheTexture);
+        scores.insert(QStringLiteral("mSpeckle"), f.moustacheSpeckle);
+        scores.insert(QStringLiteral("cheekSpeckle"), f.cheekSpeckle);
         scores.insert(QStringLiteral("bTex"), f.beardTexture);
         scores.insert(QStringLiteral("skinReach"), f.skinReach);
         scores.insert(QStringLiteral("temples"), f.templeHair.isValid() ? f.templeHair.name() : QString());

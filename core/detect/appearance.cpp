@@ -32,6 +32,8 @@ constexpr double kDarkest = 0.2;
 constexpr double kGreyest = 0.2;
 constexpr int kColourless = 4; // a skin whose channels differ by less has no colour (a greyscale photo)
 constexpr double kEdgeFloor = 2.0; // luma units: the texture floor of perfectly smooth skin
+// Luma units a hair's point stands out from its neighbours by (above rounding and a JPEG's faint noise).
+constexpr double kSpeckleContrast = 3.0;
 constexpr double kTempleHairShare = 0.2; // share of the temples' samples that must be other than skin
 constexpr double kBarDark = 0.8; // a frame's bar is darker than this share of the skin's luma
 constexpr double kBarAbove = 0.3; // ES0: how far above the eyes' centres a frame's bar is looked for
@@ -159,6 +161,32 @@ public:
                 sum += (std::abs(luma(x + 1, y) - luma(x - 1, y)) + std::abs(luma(x, y + 1) - luma(x, y - 1))) / 2.0;
         }
         return n > 0 ? sum / n : 0.0;
+    }
+
+    // The share of the box's pixels brighter, or darker, than all eight neighbours by more than
+    // `contrast` luma units: the fine light and dark points of hair strands finer than a pixel.
+    double speckle(QRectF r, double contrast) const
+    {
+        r = r.normalized();
+        const int x0 = std::max(1, int(std::floor(r.left()))), x1 = std::min(m_image.width() - 2, int(r.right()));
+        const int y0 = std::max(1, int(std::floor(r.top()))), y1 = std::min(m_image.height() - 2, int(r.bottom()));
+        int n = 0, points = 0;
+        for (int y = y0; y <= y1; ++y) {
+            for (int x = x0; x <= x1; ++x, ++n) {
+                const double c = luma(x, y);
+                double lo = 1e9, hi = -1e9;
+                for (int dy = -1; dy <= 1; ++dy) {
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        if (dx == 0 && dy == 0)
+                            continue;
+                        lo = std::min(lo, luma(x + dx, y + dy));
+                        hi = std::max(hi, luma(x + dx, y + dy));
+                    }
+                }
+                points += c > hi + contrast || c < lo - contrast;
+            }
+        }
+        return n > 0 ? double(points) / n : 0.0;
     }
 
     bool covers(QRectF r) const { return QRectF(m_image.rect()).contains(r.normalized()); }
@@ -565,19 +593,23 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
             jawHair.insert(jawHair.end(), j.begin(), j.end());
         }
     }
-    // Texture, against the cheeks' under the eyes.
+    // Texture and speckle, against the cheeks' under the eyes.
     {
-        double cheeks = 0;
+        double cheeks = 0, cheekSpeckle = 0;
         for (bool left : {true, false}) {
             const QPointF outer = p(left ? "3.12" : "3.7"), inner = p(left ? "3.8" : "3.11");
             const QPointF ball = p(left ? "3.6" : "3.5");
-            cheeks += px.texture(QRectF(QPointF(std::min(outer.x(), inner.x()), ball.y() + 0.5 * es0),
-                          QPointF(std::max(outer.x(), inner.x()), ball.y() + 0.62 * es0)))
-                / 2.0;
+            const QRectF cheek(QPointF(std::min(outer.x(), inner.x()), ball.y() + 0.5 * es0),
+                QPointF(std::max(outer.x(), inner.x()), ball.y() + 0.62 * es0));
+            cheeks += px.texture(cheek) / 2.0;
+            cheekSpeckle += px.speckle(cheek, kSpeckleContrast) / 2.0;
         }
         cheeks += kEdgeFloor;
-        if (gap > 2)
+        if (gap > 2) {
             out->moustacheTexture = px.texture(lipBox) / cheeks;
+            out->moustacheSpeckle = px.speckle(lipBox, kSpeckleContrast);
+            out->cheekSpeckle = cheekSpeckle;
+        }
         if (jawH > 2)
             out->beardTexture = px.texture(chinBox) / cheeks;
     }
@@ -594,8 +626,14 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
     auto stubble = [](double dark, double texture) {
         return dark >= AppearanceFindings::kStubbleDarkShare && texture >= AppearanceFindings::kStubbleTexture;
     };
-    out->appearance.moustache = out->moustacheScore >= AppearanceFindings::kMoustacheThreshold
+    // Grey and white hair, no darker than the skin, still shows its strands: finer than a pixel
+    // on a small face, many of the lip's pixels stand out from all their neighbours, where the
+    // cheeks' are smooth.
+    const bool speckled = out->moustacheSpeckle >= AppearanceFindings::kHairSpeckle
+        && out->moustacheSpeckle >= AppearanceFindings::kSpeckleOverCheeks * out->cheekSpeckle;
+    const bool darkMoustache = out->moustacheScore >= AppearanceFindings::kMoustacheThreshold
         || stubble(out->moustacheScore, out->moustacheTexture);
+    out->appearance.moustache = darkMoustache || speckled;
     // A beard covers the jaw's sides too; hair on the chin alone is a goatee.
     out->appearance.beard
         = (out->beardScore >= AppearanceFindings::kBeardThreshold || stubble(out->beardScore, out->beardTexture))
@@ -608,8 +646,12 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
         hair.insert(hair.end(), chinHair.begin(), chinHair.end());
     if (out->appearance.goatee)
         hair.insert(hair.end(), goateeHair.begin(), goateeHair.end());
+    // Grey or white hair seen by its strands alone is the colour of most of it, not of the
+    // shadows between the strands.
+    out->lightFacialHair
+        = out->appearance.moustache && !darkMoustache && !out->appearance.beard && !out->appearance.goatee;
     if (!hair.empty())
-        out->facialHair = darkest(hair, 0.5);
+        out->facialHair = out->lightFacialHair ? median(hair) : darkest(hair, 0.5);
 }
 
 // CIE Lab (D65) of an sRGB colour, L* in 0..100 (through labcolour.h's 8-bit tables).

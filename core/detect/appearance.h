@@ -16,6 +16,7 @@ struct AppearanceFindings
     QColor glassesFrame; // the rims' colour
     bool tintedLenses = false; // lenses clearly darker than the skin around them
     QColor facialHair;
+    bool lightFacialHair = false; // grey or white, found by its strands alone (a full growth, not stubble)
     QColor hat;
 
     // Measures, each compared with its threshold below.
@@ -25,6 +26,9 @@ struct AppearanceFindings
     double bridgedDark = 0;
     // The texture (luma gradient) between nose and lip, and on the chin, over the cheeks'.
     double moustacheTexture = 0, beardTexture = 0;
+    // The share of pixels standing out from all their neighbours (Pixels::speckle) between nose
+    // and lip, and on the cheeks under the eyes.
+    double moustacheSpeckle = 0, cheekSpeckle = 0;
     // How far up from the brows toward the hair outline's top the forehead's skin reaches (0..1).
     double skinReach = 0;
     QColor templeHair; // the hair seen beside the temples (the lighter half; invalid when none)
@@ -52,6 +56,10 @@ struct AppearanceFindings
     // Stubble: at least this share dark and this much more textured than the cheeks.
     static constexpr double kStubbleDarkShare = 0.25;
     static constexpr double kStubbleTexture = 1.25;
+    // Grey or white hair: at least this share of the lip speckled, and this many times the
+    // cheeks' share (shared photos: bare upper lips 0 to 0.026; einstein's white moustache 0.065).
+    static constexpr double kHairSpeckle = 0.04;
+    static constexpr double kSpeckleOverCheeks = 2.0;
     static constexpr double kHatThreshold = 10.0;
     static constexpr double kHatContrast = 35.0; // Lab units, from the temples' hair and the skin
     static constexpr double kBrimSpread = 0.1;

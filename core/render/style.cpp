@@ -470,13 +470,13 @@ void Style::sampleColours(const QImage &original, const FaceModel &face, Appeara
     }
     if (found.facialHair.isValid()) {
         // In the person's hair colour where the hair was seen; stubble (not much darker than the
-        // skin) is drawn see-through.
+        // skin) is drawn see-through, grey or white hair as full as it is.
         const QColor seen = monochrome ? hairFromGrey(qGray(found.facialHair.rgb())) : found.facialHair;
         // Evened out with the head's hair when it is of a kind with it; a hair colour far from
         // it is another person's hair (a grey beard under dark hair) or the room the hair
         // outline strayed into around a shaved head, and is left out.
         QColor fill = hairOk && rgbDistance(seen, hair) < kSameHair ? mix(seen, hair, 0.5) : seen;
-        const bool stubble = qGray(found.facialHair.rgb()) > 0.55 * qGray(skin.rgb());
+        const bool stubble = !found.lightFacialHair && qGray(found.facialHair.rgb()) > 0.55 * qGray(skin.rgb());
         const QColor stroke = fill.darker(140);
         if (stubble)
             fill.setAlpha(150);

@@ -89,26 +89,36 @@ Part makeGlasses(const Pt &P, GlassesShape shape, const GlassesFit &fit, double 
 Part makeMoustache(const Pt &P, double es0)
 {
     // Under the nose, down to the upper lip and out past its corners, drooping a little at the
-    // ends; its lower edge follows the upper lip's outline, so it moves with it.
-    const QPointF l = P("8.4"), r = P("8.3");
-    const double noseBottom = std::max({P("9.15").y(), P("9.4").y(), P("9.5").y()});
-    const double lipTop = std::min({P("8.9").y(), P("8.1").y(), P("8.10").y()});
+    // ends; its lower edge follows the upper lip's outline (through its peaks, as the lip's own
+    // outline does), so it moves with it. Laid out square to the eyes' line, so that it tilts with
+    // the face: (x, y) below are along that line and down from it.
+    const QPointF across = unit((P("3.11") + P("3.7")) / 2.0 - (P("3.12") + P("3.8")) / 2.0);
+    const QPointF down = perpendicular(across);
+    auto face = [&](const char *id) {
+        const QPointF p = P(id);
+        return QPointF(p.x() * across.x() + p.y() * across.y(), p.x() * down.x() + p.y() * down.y());
+    };
+    auto image = [&](QPointF f) { return across * f.x() + down * f.y(); };
+    const QPointF l = face("8.4"), r = face("8.3");
+    const double noseBottom = std::max({face("9.15").y(), face("9.4").y(), face("9.5").y()});
+    const double lipTop = std::min({face("8.9").y(), face("8.1").y(), face("8.10").y()});
     const double top = noseBottom + std::max(0.0, lipTop - noseBottom) * kMoustacheGap;
     const QPointF endL = l + QPointF(-0.05 * es0, 0.03 * es0);
     const QPointF endR = r + QPointF(0.05 * es0, 0.03 * es0);
-    const QPointF topL(lerp(P("9.2"), P("9.4"), 0.5).x(), top);
-    const QPointF topR(lerp(P("9.1"), P("9.5"), 0.5).x(), top);
-    const QPointF topMid(P("9.15").x(), top + 0.02 * es0);
+    const QPointF topL(lerp(face("9.2"), face("9.4"), 0.5).x(), top);
+    const QPointF topR(lerp(face("9.1"), face("9.5"), 0.5).x(), top);
+    const QPointF topMid(face("9.15").x(), top + 0.02 * es0);
     const QPointF lift(0, -kMoustacheOverLip * es0);
+    const QPointF peak(0, 0.01 * es0);
     PathData d;
-    d.moveTo(endL)
-        .cubics(fitBezierChain({endL, topL, topR, endR},
-            {lerp(endL, topL, 0.5) - QPointF(0.02 * es0, 0.02 * es0), topMid,
-                lerp(topR, endR, 0.5) + QPointF(0.02 * es0, -0.02 * es0)},
+    d.moveTo(image(endL))
+        .cubics(fitBezierChain({image(endL), image(topL), image(topR), image(endR)},
+            {image(lerp(endL, topL, 0.5) - QPointF(0.02 * es0, 0.02 * es0)), image(topMid),
+                image(lerp(topR, endR, 0.5) + QPointF(0.02 * es0, -0.02 * es0))},
             {}, kMovingFitTolerance))
-        .cubics(fitBezierChain({endR, r + lift, P("8.1") + lift, l + lift, endL},
-            {P("8.10") + lift + QPointF(0, 0.01 * es0), (P("8.10") + P("8.1")) / 2.0 + lift,
-                (P("8.9") + P("8.1")) / 2.0 + lift, P("8.9") + lift + QPointF(0, 0.01 * es0)},
+        .cubics(fitBezierChain({image(endR), image(r + lift), image(face("8.1") + lift), image(l + lift), image(endL)},
+            {image(lerp(endR, r + lift, 0.5)), image(face("8.10") + lift + peak), image(face("8.9") + lift + peak),
+                image(lerp(l + lift, endL, 0.5))},
             {}, kMovingFitTolerance))
         .close();
     return {"moustache", true, "path", {{"d", d.data()}}, "moustache"};

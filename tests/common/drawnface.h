@@ -30,6 +30,10 @@ struct DrawnFaceOptions
     bool beard = false;
     bool goatee = false; // hair on the chin only, under the lower lip
     bool stubble = false; // the moustache and beard are short stubble: dark speckles on the skin
+    // The moustache and beard are grey strands finer than a pixel: points lighter and darker than
+    // the skin, as light as it on average.
+    bool greyStrands = false;
+    int grain = 3; // the noise over the whole photo, in 8-bit levels either way
     bool hat = false;
     bool bald = false;
     double browWidth = 0.07; // in ES0
@@ -111,7 +115,24 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
                 if (dots.bounded(100) < 36)
                     speckle.setPixel(x, y, beardColour.rgb());
     }
-    const QBrush hairBrush = o.stubble ? QBrush(speckle) : QBrush(beardColour);
+    QImage strands(img.size(), QImage::Format_ARGB32_Premultiplied);
+    strands.fill(Qt::transparent);
+    if (o.greyStrands) {
+        QRandomGenerator points(13);
+        auto shifted = [&](int by) {
+            return qRgb(std::clamp(o.skin.red() + by, 0, 255), std::clamp(o.skin.green() + by, 0, 255),
+                std::clamp(o.skin.blue() + by, 0, 255));
+        };
+        for (int y = 0; y < strands.height(); ++y)
+            for (int x = 0; x < strands.width(); ++x) {
+                const int k = int(points.bounded(100));
+                if (k < 15)
+                    strands.setPixel(x, y, shifted(40));
+                else if (k < 30)
+                    strands.setPixel(x, y, shifted(-40));
+            }
+    }
+    const QBrush hairBrush = o.greyStrands ? QBrush(strands) : o.stubble ? QBrush(speckle) : QBrush(beardColour);
     if (o.moustache) {
         p.setBrush(hairBrush);
         const double top = std::max(P("9.4").y(), P("9.15").y()) + 0.03 * es0;
@@ -161,7 +182,7 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
     for (int y = 0; y < img.height(); ++y) {
         auto *line = reinterpret_cast<QRgb *>(img.scanLine(y));
         for (int x = 0; x < img.width(); ++x) {
-            const int n = int(rng.bounded(7)) - 3;
+            const int n = int(rng.bounded(2 * o.grain + 1)) - o.grain;
             const QRgb c = line[x];
             line[x] = qRgb(
                 std::clamp(qRed(c) + n, 0, 255), std::clamp(qGreen(c) + n, 0, 255), std::clamp(qBlue(c) + n, 0, 255));

@@ -3,11 +3,13 @@
 #include "face/emotion.h"
 #include "face/fapu.h"
 #include "face/mouthshape.h"
+#include "face/pose.h"
 #include "render/svgface.h"
 #include "svgfacefixture.h"
 
 #include <QRegularExpression>
 #include <QTest>
+#include <QTransform>
 
 using namespace toonface;
 
@@ -144,6 +146,54 @@ private Q_SLOTS:
         QVERIFY(goatee.bottom() > face.point("2.1").y()); // round the chin
         const QVector<FacePart> talking = svg.parts(mouthPose(face, MouthShapeSet(), MouthShape::A));
         QVERIFY(lowest(geometryOf(talking, "beard")) > lowest(geometryOf(still, "beard")) + 0.1 * es0);
+    }
+
+    // The moustache is one outline hugging the upper lip (no handle reaching far past its points,
+    // which would loop its stroke), at rest and speaking; on a face tilted in the picture's plane
+    // it is the upright face's moustache, turned with it.
+    void moustacheShape()
+    {
+        const FaceModel face = testFace();
+        const double es0 = face.fapu().es0;
+        Style style = Style::preset(QStringLiteral("normal"));
+        style.caricature = 0;
+        style.appearance.moustache = true;
+        const QList<double> upright = svgfacetest::numbers(geometryOf(SvgFace(face, style).parts(), "moustache"));
+        QVERIFY(upright.size() > 8);
+        for (const Pose &pose :
+            {Pose(), mouthPose(face, MouthShapeSet(), MouthShape::A), emotionPose(face, Emotion::Surprise, 1.0)}) {
+            const QList<double> v = svgfacetest::numbers(geometryOf(SvgFace(face, style).parts(pose), "moustache"));
+            const auto posed = posedPoints(face, pose);
+            const QRectF around = QRectF(posed[pt::idx("8.4")], posed[pt::idx("8.3")])
+                                      .normalized()
+                                      .united(QRectF(posed[pt::idx("9.15")], QSizeF(1e-6, 1e-6)))
+                                      .adjusted(-0.15 * es0, -0.1 * es0, 0.15 * es0, 0.1 * es0);
+            for (qsizetype k = 0; k + 1 < v.size(); k += 2)
+                QVERIFY2(around.contains(QPointF(v[k], v[k + 1])),
+                    qPrintable(QStringLiteral("(%1, %2) outside the moustache's place").arg(v[k]).arg(v[k + 1])));
+        }
+        const QPointF centre = (face.point("3.5") + face.point("3.6")) / 2.0;
+        for (double degrees : {-20.0, 15.0}) {
+            QTransform turn;
+            turn.translate(centre.x(), centre.y());
+            turn.rotate(degrees);
+            turn.translate(-centre.x(), -centre.y());
+            FaceModel tilted = face;
+            for (int i = 0; i < kPointCount; ++i)
+                tilted.setPoint(i, turn.map(face.point(i)));
+            const QList<double> v = svgfacetest::numbers(geometryOf(SvgFace(tilted, style).parts(), "moustache"));
+            QCOMPARE(v.size(), upright.size());
+            for (qsizetype k = 0; k + 1 < v.size(); k += 2) {
+                const QPointF want = turn.map(QPointF(upright[k], upright[k + 1]));
+                QVERIFY2(std::hypot(v[k] - want.x(), v[k + 1] - want.y()) < 0.05,
+                    qPrintable(QStringLiteral("tilted %1: (%2, %3), upright turned (%4, %5)")
+                                   .arg(degrees)
+                                   .arg(v[k])
+                                   .arg(v[k + 1])
+                                   .arg(want.x())
+                                   .arg(want.y())));
+            }
+        }
     }
 
     // The beard opens with the jaw, the moustache follows the upper lip, the glasses and the hat
