@@ -34,6 +34,9 @@ constexpr int kColourless = 4; // a skin whose channels differ by less has no co
 constexpr double kEdgeFloor = 2.0; // luma units: the texture floor of perfectly smooth skin
 // Luma units a hair's point stands out from its neighbours by (above rounding and a JPEG's faint noise).
 constexpr double kSpeckleContrast = 3.0;
+// ES0 above the brows: a forehead's skin reaching higher is scalp (hairlines lie 0.6 to 1.2 ES0
+// above the brows on the shared photos' haired heads).
+constexpr double kScalpAboveBrows = 1.4;
 constexpr double kTempleHairShare = 0.2; // share of the temples' samples that must be other than skin
 constexpr double kBarDark = 0.8; // a frame's bar is darker than this share of the skin's luma
 constexpr double kBarAbove = 0.3; // ES0: how far above the eyes' centres a frame's bar is looked for
@@ -753,6 +756,7 @@ void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor 
     // hairline 11.1 and the temples).
     // The inner part of that band is scalp on a bald head, hair or a hat otherwise, even when
     // the outline strayed into the background.
+    int sampled = 0, seen = 0; // boxes in the band, and those the photo shows whole
     auto band = [&](int first, int last, const std::vector<const char *> &contour, double t0, double t1) {
         std::vector<QRgb> pxs;
         for (int k = first; k <= last; ++k) {
@@ -766,13 +770,23 @@ void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor 
                 const QPointF q = base + (h - base) * (t0 + (t1 - t0) * i / 3.0);
                 const auto b = px.box(around(q, 0.025 * es0, 0.025 * es0));
                 pxs.insert(pxs.end(), b.begin(), b.end());
+                ++sampled;
+                seen += px.covers(around(q, 0.025 * es0, 0.025 * es0));
             }
         }
         return pxs;
     };
     const std::vector<QRgb> crown = band(8, 12, {"11.2", "11.1", "11.3"}, 0.15, 0.5);
-    if (crown.empty())
+    // A crown the photo cuts off (most of the band beyond its edge) is not seen: no hat, and bald
+    // only where the forehead's skin runs up the midline to the photo's edge higher above the
+    // brows than any hairline (that is scalp).
+    if (crown.empty() || 2 * seen < sampled) {
+        const QPointF top = face.point("11.1");
+        const double browY = (face.point("4.2").y() + face.point("4.1").y()) / 2.0;
+        const bool skinToTheEdge = !px.inside(int(top.x()), int(std::floor(top.y() - 0.05 * es0)));
+        out->appearance.bald = skinToTheEdge && browY - top.y() >= kScalpAboveBrows * es0;
         return;
+    }
     const auto scalp
         = std::count_if(crown.begin(), crown.end(), [&](QRgb c) { return skinLike(c, skin) || shineOnSkin(c, skin); });
     out->baldScore = double(scalp) / double(crown.size());
@@ -781,7 +795,9 @@ void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor 
     // all the way, whatever the outline strayed into above it.
     const double browY = (face.point("4.2").y() + face.point("4.1").y()) / 2.0;
     const double headTop = browY - face.point("h.10").y();
-    out->skinReach = headTop > 0.5 * es0 ? (browY - face.point("11.1").y()) / headTop : 0.0;
+    // (Seen only where the hairline is in the photo, not beyond an edge that cuts the head off.)
+    const bool hairlineSeen = px.inside(int(face.point("11.1").x()), int(face.point("11.1").y()) - 1);
+    out->skinReach = headTop > 0.5 * es0 && hairlineSeen ? (browY - face.point("11.1").y()) / headTop : 0.0;
     const bool skinToTheTop
         = out->skinReach >= AppearanceFindings::kSkinReachThreshold && out->skinReach <= kMaxSkinReach;
     // Without colour, a scalp and grey or white hair look alike: a greyscale photo is never bald.

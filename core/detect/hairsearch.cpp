@@ -327,6 +327,7 @@ void refineFromPhoto(FaceModel *face, const QImage &image, HairSearchReport *rep
         const QPointF centreImg = f.toImage(hairCentre);
         std::array<double, 19> ratio {};
         std::array<bool, 19> ok {};
+        std::array<double, 19> atLeast {}; // where the head goes on beyond the photo's edge
         for (int i = 0; i < 19; ++i) {
             const QPointF geo = f.toImage(f.hairPoint(i));
             const QPointF dir = geo - centreImg;
@@ -356,8 +357,12 @@ void refineFromPhoto(FaceModel *face, const QImage &image, HairSearchReport *rep
                     ++inHead;
                 }
             }
+            // The head goes on beyond the photo's edge: at least to there. How far is not seen,
+            // so the ray is not found; it takes its found neighbours' size, as missing rays do
+            // (the edge is where the photo stops, not the head: kept there, a cut-off head would
+            // be drawn with a flat top).
             if (boundary < 0 && leftImage && inHead >= run)
-                boundary = last; // the head goes on beyond the photo's edge
+                atLeast[i] = last / rGeo;
             rep.rays.emplace_back(
                 centreImg + dir * (r0 / rGeo), centreImg + dir * ((boundary > 0 ? boundary : last) / rGeo));
             if (boundary > 0) {
@@ -398,6 +403,7 @@ void refineFromPhoto(FaceModel *face, const QImage &image, HairSearchReport *rep
                 }
             }
             for (int i = 0; i < 19; ++i) {
+                smooth[i] = std::max(smooth[i], atLeast[i]);
                 const QPointF local = hairCentre + std::clamp(smooth[i], 0.75, 1.6) * (f.hairPoint(i) - hairCentre);
                 face->setPoint(i, f.toImage(local));
             }
@@ -452,12 +458,9 @@ void refineFromPhoto(FaceModel *face, const QImage &image, HairSearchReport *rep
     }
     rep.earFraction = earsFound / 2.0;
 
-    // Refined points stay in the photo, like the estimates.
-    keepInPhoto(face, image.size(), [](int i) {
-        const PointGroup g = pointTable()[i].group;
-        return g == PointGroup::Hair || g == PointGroup::Ears || i == pt::idx("11.1") || i == pt::idx("11.2")
-            || i == pt::idx("11.3");
-    });
+    // Ears stay in the photo (an ear beyond it is not seen); the hair outline and hairline go on
+    // beyond an edge that cuts the head off, like the estimates.
+    keepInPhoto(face, image.size(), [](int i) { return pointTable()[i].group == PointGroup::Ears; });
 
     if (withDebugImages) {
         QImage mask(ws.lab.cols, ws.lab.rows, QImage::Format_RGB32);

@@ -234,19 +234,10 @@ FaceModel faceFromLandmarks68(const Ibug &p, QSize imageSize)
     ear(jawL, halfL, -1.0, "10.2", "10.4", "10.6", "10.10");
     ear(jawR, halfR, 1.0, "10.1", "10.3", "10.5", "10.9");
 
-    if (imageSize.isValid()) {
-        const QRectF box(0, 0, std::max(0, imageSize.width() - 1), std::max(0, imageSize.height() - 1));
-        for (int i = 0; i < kPointCount; ++i) {
-            const PointGroup g = pointTable()[i].group;
-            const bool estimated = g == PointGroup::Hair || g == PointGroup::Ears || i == pt::idx("11.1")
-                || i == pt::idx("11.2") || i == pt::idx("11.3");
-            if (!estimated)
-                continue;
-            const QPointF q = face.point(i);
-            face.setPoint(
-                i, QPointF(std::clamp(q.x(), box.left(), box.right()), std::clamp(q.y(), box.top(), box.bottom())));
-        }
-    }
+    // Ears beyond the photo's edge are not seen: kept on it. The hair and hairline go on beyond an
+    // edge that cuts the head off (estimateForeheadAndHair).
+    if (imageSize.isValid())
+        keepInPhoto(&face, imageSize, [](int i) { return pointTable()[i].group == PointGroup::Ears; });
     return face;
 }
 
@@ -265,14 +256,10 @@ HeadGeometry estimateForeheadAndHair(FaceModel *face)
     setG("11.1", {g.midX, g.hairlineY});
     setG("11.2", {g.midX - halfL * std::cos(templeAngle), g.hairlineY * std::sin(templeAngle)});
     setG("11.3", {g.midX + halfR * std::cos(templeAngle), g.hairlineY * std::sin(templeAngle)});
+    // Where the photo cuts the head off, these lie beyond its edge, where the head goes on: kept
+    // on the edge they would draw a head with a flat top.
     for (int i = 0; i < 19; ++i)
         face->setPoint(pt::idx("h.1") + i, g.toImage(g.hairPoint(i)));
-    if (face->imageSize().isValid()) {
-        keepInPhoto(face, face->imageSize(), [](int i) {
-            return pointTable()[i].group == PointGroup::Hair || i == pt::idx("11.1") || i == pt::idx("11.2")
-                || i == pt::idx("11.3");
-        });
-    }
     return g;
 }
 

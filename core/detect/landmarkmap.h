@@ -25,8 +25,9 @@ inline constexpr int kIbugPointCount = 68;
 // refineFromPhoto() (hairsearch.h) improves when the photo allows.
 //
 // requires: the 68 points are finite and the two eyes are apart.
-// ensures: all 72 points are finite; when imageSize is valid, the estimated points (hair,
-// forehead, ears) are clamped into the image, the measured ones are left as given.
+// ensures: all 72 points are finite; when imageSize is valid, the estimated ears are clamped
+// into the image; the hair and forehead go on beyond an edge that cuts the head off (a head
+// kept inside would be drawn with a flat top); the measured points are left as given.
 FaceModel faceFromLandmarks68(const std::array<QPointF, kIbugPointCount> &ibug, QSize imageSize);
 
 // The head's layout that the estimated points are built on, from a face's measured points
@@ -58,7 +59,7 @@ HeadGeometry headGeometry(const FaceModel &face);
 
 // The estimated forehead and hair of `face` from its measured points (headGeometry()): 11.1 on
 // the hairline on the face's midline, the temples 11.2/11.3 beside it, the hair outline
-// h.1..h.19 on the hair ellipse; kept in the photo when the face's image size is valid.
+// h.1..h.19 on the hair ellipse, beyond the photo's edge where it cuts the head off.
 // faceFromLandmarks68() places them so; a face found otherwise (the classic method) gets them
 // the same way before the photo search refines them (refineFromPhoto(), hairsearch.h).
 // requires: as headGeometry(). Returns the geometry they were placed on.

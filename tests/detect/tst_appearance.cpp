@@ -753,6 +753,47 @@ private Q_SLOTS:
         QVERIFY2(bald >= 7, qPrintable(QStringLiteral("%1 of %2 bald").arg(bald).arg(tried)));
     }
 
+    // A photo that cuts the top of the head off (a close crop, as of a selfie): the hair outline goes
+    // on round beyond the edge, not flat along it, and the head is neither bald nor hatted where its
+    // crown is not seen and hair shows (lfpw 0002 cut through her fringe, 0003 at her brows).
+    void cutOffHead_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<double>("cutAboveBrows"); // ES0
+        QTest::newRow("fringe") << QStringLiteral("lfpw_trainset_image_0002") << 0.35;
+        QTest::newRow("brows") << QStringLiteral("lfpw_trainset_image_0003") << 0.1;
+    }
+
+    void cutOffHead()
+    {
+        QFETCH(QString, name);
+        QFETCH(double, cutAboveBrows);
+        const QImage photo(QDir(sharedFacesDir()).filePath(name + QStringLiteral(".png")));
+        if (photo.isNull())
+            QSKIP("the shared research photos are not here (../shared/data/faces)");
+        const DetectionResult whole = detectFace(photo, DetectOptions());
+        if (whole.status == DetectStatus::ModelMissing)
+            QSKIP("the landmark model is not installed");
+        QCOMPARE(whole.status, DetectStatus::Ok);
+        const double es0 = whole.face.fapu().es0;
+        const double browY = std::min(whole.face.point("4.2").y(), whole.face.point("4.1").y());
+        const int cut = int(browY - cutAboveBrows * es0);
+        const QImage cropped = photo.copy(0, cut, photo.width(), photo.height() - cut);
+        const DetectionResult r = detectFace(cropped, DetectOptions());
+        QCOMPARE(r.status, DetectStatus::Ok);
+        // Round beyond the edge: the top (h.10) well above it, and the outline rising to it on
+        // both sides, not running along the edge.
+        QVERIFY2(r.face.point("h.10").y() < -0.3 * es0, qPrintable(QString::number(r.face.point("h.10").y())));
+        for (int i = 5; i < 9; ++i) {
+            QVERIFY(r.face.point(pt::idx("h.1") + i).y() > r.face.point(pt::idx("h.1") + i + 1).y());
+            QVERIFY(r.face.point(pt::idx("h.19") - i).y() > r.face.point(pt::idx("h.19") - i - 1).y());
+        }
+        Style style;
+        style.sampleColours(cropped, r.face);
+        QVERIFY(!style.appearance.bald);
+        QVERIFY(!style.appearance.hat);
+    }
+
     // The shared group photo: three men, the right one in glasses, the left one with a goatee.
     void groupWithGlasses()
     {
