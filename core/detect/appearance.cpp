@@ -182,8 +182,9 @@ public:
                     for (int dx = -1; dx <= 1; ++dx) {
                         if (dx == 0 && dy == 0)
                             continue;
-                        lo = std::min(lo, luma(x + dx, y + dy));
-                        hi = std::max(hi, luma(x + dx, y + dy));
+                        const double v = luma(x + dx, y + dy);
+                        lo = std::min(lo, v);
+                        hi = std::max(hi, v);
                     }
                 }
                 points += c > hi + contrast || c < lo - contrast;
@@ -767,24 +768,24 @@ void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor 
                     base = face.point(id);
             }
             for (int i = 0; i < 4; ++i) {
-                const QPointF q = base + (h - base) * (t0 + (t1 - t0) * i / 3.0);
-                const auto b = px.box(around(q, 0.025 * es0, 0.025 * es0));
+                const QRectF r = around(base + (h - base) * (t0 + (t1 - t0) * i / 3.0), 0.025 * es0, 0.025 * es0);
+                const auto b = px.box(r);
                 pxs.insert(pxs.end(), b.begin(), b.end());
                 ++sampled;
-                seen += px.covers(around(q, 0.025 * es0, 0.025 * es0));
+                seen += px.covers(r);
             }
         }
         return pxs;
     };
     const std::vector<QRgb> crown = band(8, 12, {"11.2", "11.1", "11.3"}, 0.15, 0.5);
+    const QPointF hairline = face.point("11.1");
+    const double browY = (face.point("4.2").y() + face.point("4.1").y()) / 2.0;
     // A crown the photo cuts off (most of the band beyond its edge) is not seen: no hat, and bald
     // only where the forehead's skin runs up the midline to the photo's edge higher above the
     // brows than any hairline (that is scalp).
     if (crown.empty() || 2 * seen < sampled) {
-        const QPointF top = face.point("11.1");
-        const double browY = (face.point("4.2").y() + face.point("4.1").y()) / 2.0;
-        const bool skinToTheEdge = !px.inside(int(top.x()), int(std::floor(top.y() - 0.05 * es0)));
-        out->appearance.bald = skinToTheEdge && browY - top.y() >= kScalpAboveBrows * es0;
+        const bool skinToTheEdge = !px.inside(int(hairline.x()), int(std::floor(hairline.y() - 0.05 * es0)));
+        out->appearance.bald = skinToTheEdge && browY - hairline.y() >= kScalpAboveBrows * es0;
         return;
     }
     const auto scalp
@@ -793,11 +794,10 @@ void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor 
     // How far up toward the head's top the forehead's skin reaches (11.1, where the skin up the
     // midline ends, over the hair outline's top h.10, from the brows): on a bald or shaved head
     // all the way, whatever the outline strayed into above it.
-    const double browY = (face.point("4.2").y() + face.point("4.1").y()) / 2.0;
     const double headTop = browY - face.point("h.10").y();
     // (Seen only where the hairline is in the photo, not beyond an edge that cuts the head off.)
-    const bool hairlineSeen = px.inside(int(face.point("11.1").x()), int(face.point("11.1").y()) - 1);
-    out->skinReach = headTop > 0.5 * es0 && hairlineSeen ? (browY - face.point("11.1").y()) / headTop : 0.0;
+    const bool hairlineSeen = px.inside(int(hairline.x()), int(hairline.y()) - 1);
+    out->skinReach = headTop > 0.5 * es0 && hairlineSeen ? (browY - hairline.y()) / headTop : 0.0;
     const bool skinToTheTop
         = out->skinReach >= AppearanceFindings::kSkinReachThreshold && out->skinReach <= kMaxSkinReach;
     // Without colour, a scalp and grey or white hair look alike: a greyscale photo is never bald.
@@ -845,7 +845,8 @@ struct Upright
     FaceModel face;
 };
 
-Upright upright(const QImage &photo, const FaceModel &face, const QColor &skin, double es0)
+// Nothing for a face already upright (tilted less than kUprightRoll).
+std::optional<Upright> upright(const QImage &photo, const FaceModel &face, const QColor &skin, double es0)
 {
     QPointF l = face.point("3.6"), r = face.point("3.5");
     if (l.x() > r.x())
@@ -853,7 +854,7 @@ Upright upright(const QImage &photo, const FaceModel &face, const QColor &skin, 
     const QLineF eyes(l, r);
     const double roll = std::atan2(eyes.dy(), eyes.dx()) * 180.0 / std::numbers::pi; // y down: clockwise
     if (std::abs(roll) < kUprightRoll)
-        return {photo, face};
+        return std::nullopt;
     const QPointF centre = eyes.center();
     QTransform level;
     level.translate(centre.x(), centre.y());
@@ -863,8 +864,11 @@ Upright upright(const QImage &photo, const FaceModel &face, const QColor &skin, 
     for (const QPointF &p : face.points())
         points << level.map(p);
     const QRect area = points.boundingRect().adjusted(-es0, -es0, es0, es0).toAlignedRect();
-    level *= QTransform::fromTranslate(-area.left(), -area.top());
     Upright out {QImage(area.size(), QImage::Format_RGB32), face};
+    out.face.setImageSize(area.size());
+    for (int i = 0; i < kPointCount; ++i)
+        out.face.setPoint(i, points[i] - area.topLeft(), face.isHandPlaced(i));
+    level *= QTransform::fromTranslate(-area.left(), -area.top());
     out.photo.fill(skin);
     {
         QPainter painter(&out.photo);
@@ -872,9 +876,6 @@ Upright upright(const QImage &photo, const FaceModel &face, const QColor &skin, 
         painter.setTransform(level);
         painter.drawImage(QPointF(0, 0), photo);
     }
-    out.face.setImageSize(area.size());
-    for (int i = 0; i < kPointCount; ++i)
-        out.face.setPoint(i, level.map(face.point(i)), face.isHandPlaced(i));
     return out;
 }
 
@@ -887,13 +888,16 @@ AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, co
         return out;
     const double es0 = face.fapu().es0;
     const double skinLuma = std::max(1.0, lumaOf(skin.rgb()));
-    {
-        const Upright level = upright(photo, face, skin, es0);
-        const Pixels px(level.photo);
-        findGlasses(px, level.face, es0, skinLuma, &out);
-        findFacialHair(px, level.face, es0, skinLuma, &out);
+    const Pixels px(photo);
+    if (const std::optional<Upright> level = upright(photo, face, skin, es0)) {
+        const Pixels levelPx(level->photo);
+        findGlasses(levelPx, level->face, es0, skinLuma, &out);
+        findFacialHair(levelPx, level->face, es0, skinLuma, &out);
+    } else {
+        findGlasses(px, face, es0, skinLuma, &out);
+        findFacialHair(px, face, es0, skinLuma, &out);
     }
-    findHead(Pixels(photo), face, es0, skin, &out);
+    findHead(px, face, es0, skin, &out);
     return out;
 }
 

@@ -94,10 +94,8 @@ Part makeMoustache(const Pt &P, double es0)
     // the face: (x, y) below are along that line and down from it.
     const QPointF across = unit((P("3.11") + P("3.7")) / 2.0 - (P("3.12") + P("3.8")) / 2.0);
     const QPointF down = perpendicular(across);
-    auto face = [&](const char *id) {
-        const QPointF p = P(id);
-        return QPointF(p.x() * across.x() + p.y() * across.y(), p.x() * down.x() + p.y() * down.y());
-    };
+    auto face
+        = [&](const char *id) { return QPointF(QPointF::dotProduct(P(id), across), QPointF::dotProduct(P(id), down)); };
     auto image = [&](QPointF f) { return across * f.x() + down * f.y(); };
     const QPointF l = face("8.4"), r = face("8.3");
     const double noseBottom = std::max({face("9.15").y(), face("9.4").y(), face("9.5").y()});
