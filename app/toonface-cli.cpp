@@ -97,6 +97,7 @@ int main(int argc, char *argv[])
         return ExitOk;
     }
     if (const Command *command = findCommand(first)) {
+        installInterruptHandlers();
         const int code = command->run(*command, args);
         toonface::waitForDetectionWarmUp();
         endNow(code);

@@ -231,12 +231,17 @@ int runAnimate(const Command &self, const QStringList &args)
     exportRequest.layerFiles = input.layerPaths;
     exportRequest.audioPath = speech.audioPath;
     int lastTenth = 0;
-    const ExportResult result = exportAnimation(exportRequest, [&lastTenth](double fraction) {
-        const int tenth = int(fraction * 10);
-        if (tenth > lastTenth)
-            progress(Cli::tr("exporting: %1 %").arg(tenth * 10));
-        lastTenth = std::max(lastTenth, tenth);
-    });
+    const ExportResult result = exportAnimation(
+        exportRequest,
+        [&lastTenth](double fraction) {
+            const int tenth = int(fraction * 10);
+            if (tenth > lastTenth)
+                progress(Cli::tr("exporting: %1 %").arg(tenth * 10));
+            lastTenth = std::max(lastTenth, tenth);
+        },
+        interruption());
+    if (result.status == ExportStatus::Cancelled)
+        return fail(ExitInterrupted, Cli::tr("%1: interrupted; nothing was written").arg(out));
     if (!result.ok())
         return fail(result.status == ExportStatus::BadInput ? ExitBadInput : ExitFailed, result.error);
     return ExitOk;

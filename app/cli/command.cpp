@@ -3,6 +3,7 @@
 #include <QSaveFile>
 #include <QTextStream>
 
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <unistd.h>
@@ -46,15 +47,56 @@ void endNow(int code)
     std::_Exit(code);
 }
 
+namespace {
+
+std::atomic_bool interrupted = false;
+
+void onSignal(int)
+{
+    if (interrupted.exchange(true))
+        std::_Exit(ExitInterrupted); // asked twice: the job did not stop in time
+}
+
+// A message as one printable line: control characters (an escape sequence hidden in a file
+// name or a project's field) written as \xNN.
+QString printable(const QString &message)
+{
+    QString out;
+    out.reserve(message.size());
+    for (const QChar c : message) {
+        if (c.category() == QChar::Other_Control || c.category() == QChar::Other_Format)
+            out += QStringLiteral("\\x%1").arg(c.unicode(), 2, 16, QLatin1Char('0'));
+        else
+            out += c;
+    }
+    return out;
+}
+
+} // namespace
+
+void installInterruptHandlers()
+{
+    struct sigaction action = {};
+    action.sa_handler = onSignal;
+    sigemptyset(&action.sa_mask);
+    for (const int signal : {SIGINT, SIGHUP, SIGTERM})
+        sigaction(signal, &action, nullptr);
+}
+
+const std::atomic_bool *interruption()
+{
+    return &interrupted;
+}
+
 int fail(int code, const QString &message)
 {
-    QTextStream(stderr) << "toonface-cli: error: " << message << Qt::endl;
+    QTextStream(stderr) << "toonface-cli: error: " << printable(message) << Qt::endl;
     return code;
 }
 
 void warn(const QString &message)
 {
-    QTextStream(stderr) << "toonface-cli: warning: " << message << Qt::endl;
+    QTextStream(stderr) << "toonface-cli: warning: " << printable(message) << Qt::endl;
 }
 
 void progress(const QString &message)

@@ -5,6 +5,7 @@
 #include <QString>
 #include <QStringList>
 
+#include <atomic>
 #include <functional>
 #include <vector>
 
@@ -71,7 +72,16 @@ struct CommandRegistrar
     explicit CommandRegistrar(Command command) { commands().push_back(std::move(command)); }
 };
 
-// Prints "toonface-cli: error: <message>" on stderr and returns `code`.
+// Ctrl+C, a hang-up or a kill (SIGINT, SIGHUP, SIGTERM) asks the running job to stop: long jobs
+// take interruption() as their cancel flag, so an interrupted export removes its hidden
+// temporary files and writes nothing; a second signal ends the process at once.
+void installInterruptHandlers();
+const std::atomic_bool *interruption();
+// The exit code of a job stopped by a signal (the shell's 128 + SIGINT).
+constexpr int ExitInterrupted = 130;
+
+// Prints "toonface-cli: error: <message>" on stderr and returns `code`. Control characters in
+// the message (a crafted file name) are shown as escapes, never sent to the terminal.
 int fail(int code, const QString &message);
 // Prints "toonface-cli: warning: <message>" on stderr: the job goes on, differently from what was asked.
 void warn(const QString &message);

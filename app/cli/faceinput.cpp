@@ -56,6 +56,10 @@ int loadFaceInput(const QString &path, const DetectOptions &options, FaceInput *
         out->layerPaths = project->layerPaths;
         out->mouthShapes = project->mouthShapes;
         out->project = project;
+        // A shared project may name any file; the user sees which ones lie outside its folder.
+        if (const QStringList outside = filesOutsideFolder(*project, QFileInfo(path).absolutePath());
+            !outside.isEmpty())
+            warn(Cli::tr("%1 uses files outside its folder: %2").arg(path, outside.join(QStringLiteral("; "))));
         if (!out->photoPath.isEmpty() && QFileInfo::exists(out->photoPath))
             out->photo = loadPhoto(out->photoPath, &error);
         return ExitOk;

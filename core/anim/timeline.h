@@ -252,6 +252,9 @@ public:
     // path, e.g. "mouth[3].shape: unknown mouth shape 'x'". Unknown fields are ignored.
     static std::optional<Timeline> fromJson(const QJsonObject &json, QString *error);
     static constexpr int kJsonVersion = 1;
+    // The longest span a timeline keeps: four hours (an audio book's chapter fits many times);
+    // a time further from 0 in a file is refused by name.
+    static constexpr double kMaxSeconds = 4 * 3600.0;
 
     bool operator==(const Timeline &) const = default;
 

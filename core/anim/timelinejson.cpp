@@ -57,6 +57,19 @@ public:
         return m_ok;
     }
 
+    // A time in seconds: a number within the timeline's longest span either way
+    // (Timeline::kMaxSeconds), so a key at 1e308 s or ten hours away is named, not drawn.
+    bool seconds(const char *field, double *out, bool required, const std::function<QString(double)> &valid = {})
+    {
+        return number(field, out, required, [&valid](double v) {
+            if (std::abs(v) > Timeline::kMaxSeconds)
+                return ProjectText::tr("%1 s is beyond the longest timeline Toonface keeps (%2 hours)")
+                    .arg(v, 0, 'g', 6)
+                    .arg(Timeline::kMaxSeconds / 3600);
+            return valid ? valid(v) : QString();
+        });
+    }
+
     bool string(const char *field, QString *out, bool required)
     {
         const QJsonValue v = m_object.value(key(field));
@@ -261,7 +274,7 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
         FieldReader r(o, path, error);
         MouthKey k;
         QString shape;
-        if (!r.number("time", &k.time, true) || !r.string("shape", &shape, true))
+        if (!r.seconds("time", &k.time, true) || !r.string("shape", &shape, true))
             return false;
         const auto parsed = mouthShapeFromName(shape);
         if (!parsed)
@@ -269,7 +282,7 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
         k.shape = *parsed;
         double duration = 0;
         const bool hasDuration = o.contains(QStringLiteral("duration"));
-        if (!r.number("weight", &k.weight, false, nonNegative) || !r.number("duration", &duration, false, nonNegative))
+        if (!r.number("weight", &k.weight, false, nonNegative) || !r.seconds("duration", &duration, false, nonNegative))
             return false;
         if (hasDuration)
             k.duration = duration;
@@ -279,7 +292,7 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
         FieldReader r(o, path, error);
         EmotionClip c;
         QString name;
-        if (!r.number("start", &c.start, true) || !r.number("end", &c.end, true))
+        if (!r.seconds("start", &c.start, true) || !r.seconds("end", &c.end, true))
             return false;
         if (c.end < c.start)
             return r.fail("end", ProjectText::tr("must not be before start"));
@@ -298,7 +311,7 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
     }) && readArray(json, "blink", error, [&](const QJsonObject &o, const QString &path) {
         FieldReader r(o, path, error);
         BlinkEvent b;
-        if (!r.number("time", &b.time, true) || !r.number("duration", &b.duration, false, positive))
+        if (!r.seconds("time", &b.time, true) || !r.seconds("duration", &b.duration, false, positive))
             return false;
         timeline.m_blinks.append(b);
         return true;
@@ -306,7 +319,7 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
         FieldReader r(o, path, error);
         GazeKey g;
         double x = 0, y = 0;
-        if (!r.number("time", &g.time, true) || !r.number("x", &x, false) || !r.number("y", &y, false))
+        if (!r.seconds("time", &g.time, true) || !r.number("x", &x, false) || !r.number("y", &y, false))
             return false;
         g.offsetEs0 = {x, y};
         timeline.m_gaze.append(g);
@@ -315,7 +328,7 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
         FieldReader r(o, path, error);
         HeadKey h;
         double x = 0, y = 0;
-        if (!r.number("time", &h.time, true) || !r.number("rotation", &h.rotationDeg, false)
+        if (!r.seconds("time", &h.time, true) || !r.number("rotation", &h.rotationDeg, false)
             || !r.number("x", &x, false) || !r.number("y", &y, false) || !r.number("scale", &h.scale, false, positive))
             return false;
         h.translationEs0 = {x, y};
@@ -324,7 +337,7 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
     }) && readArray(json, "pose", error, [&](const QJsonObject &o, const QString &path) {
         FieldReader r(o, path, error);
         PoseKey k;
-        if (!r.number("time", &k.time, true))
+        if (!r.seconds("time", &k.time, true))
             return false;
         const QJsonValue offsets = o.value(QStringLiteral("offsets"));
         if (offsets.isUndefined()) {
@@ -364,8 +377,8 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
         }
         FieldReader r(audioValue.toObject(), QStringLiteral("audio"), error);
         AudioClip clip;
-        if (!r.string("path", &clip.path, true) || !r.number("offset", &clip.offset, false)
-            || !r.number("duration", &clip.duration, false, nonNegative))
+        if (!r.string("path", &clip.path, true) || !r.seconds("offset", &clip.offset, false)
+            || !r.seconds("duration", &clip.duration, false, nonNegative))
             return std::nullopt;
         timeline.m_audio = clip;
     }
@@ -379,8 +392,8 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
         }
         FieldReader r(videoValue.toObject(), QStringLiteral("video"), error);
         VideoClip clip;
-        if (!r.string("path", &clip.path, true) || !r.number("offset", &clip.offset, false)
-            || !r.number("duration", &clip.duration, false, nonNegative)
+        if (!r.string("path", &clip.path, true) || !r.seconds("offset", &clip.offset, false)
+            || !r.seconds("duration", &clip.duration, false, nonNegative)
             || !r.number("fps", &clip.fps, false, nonNegative))
             return std::nullopt;
         timeline.m_video = clip;

@@ -2,12 +2,15 @@
 
 #include "export/framerenderer.h"
 #include "export/htmlplayer.h"
+#include "export/partfiles.h"
 #include "export/smilexport.h"
 #include "export/videoencoder.h"
 #include "face/pose.h"
 #include "i18n/coretext.h"
 #include "io/project.h"
+#include "media/mediareader.h"
 #include "media/pngframes.h"
+#include "media/userfile.h"
 #include "render/svgface.h"
 #include "speech/progress.h"
 
@@ -103,8 +106,18 @@ std::optional<ExportResult> checkRequest(const ExportRequest &request, SvgFace *
     }
     const QString sound = soundPath(request);
     const bool silent = request.format == AnimationFormat::Gif || request.format == AnimationFormat::PngSequence;
-    if (!silent && !sound.isEmpty() && !QFileInfo(sound).isFile())
-        return result(ExportStatus::BadInput, sound, ExportText::tr("the sound file does not exist"));
+    if (!silent && !sound.isEmpty()) {
+        // The sound must be a regular file that decodes as sound: nothing else reaches a file
+        // the user hands on (a shared project may name any file as its sound).
+        if (const QString problem = irregularFileProblem(sound); !problem.isEmpty())
+            return result(ExportStatus::BadInput, sound, problem);
+        QString why;
+        const std::optional<MediaInfo> media = probeMedia(sound, &why);
+        if (!media)
+            return ExportResult {ExportStatus::BadInput, why};
+        if (!media->hasAudio)
+            return result(ExportStatus::BadInput, sound, SoundText::tr("holds no sound"));
+    }
     const QFileInfo target(QDir::cleanPath(out));
     if (!target.absoluteDir().exists())
         return result(ExportStatus::Failed, out,
@@ -371,6 +384,7 @@ ExportResult exportAnimation(
         return *invalid;
     if (isCancelled(cancel))
         return result(ExportStatus::Cancelled, request.outputPath, QStringLiteral("cancelled"));
+    removeStaleParts(request.outputPath);
     Progress progress(report);
     progress(0.0);
     const Timeline timeline = exportTimeline(request);

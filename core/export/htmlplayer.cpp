@@ -27,6 +27,11 @@ QByteArray exportHtmlPlayer(const FaceModel &face, const Style &style, const Tim
     QByteArray out
         = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
           "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+          // Nothing in the page loads from outside it: the drawing and the sound are inside (or,
+          // when the sound is referenced, beside it), whatever a user's layer held.
+          "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; "
+          "style-src 'unsafe-inline'; img-src data:; media-src 'self' data: blob: file:; base-uri 'none'; "
+          "form-action 'none'\">\n"
           "<title>Toonface animation</title>\n<style>\n"
           "body { margin: 0; background: #eee; font-family: sans-serif; }\n"
           "#tf-stage { display: flex; flex-direction: column; align-items: center; gap: 8px; padding: 8px; }\n"

@@ -6,13 +6,12 @@
 #include "export/svgxml.h"
 #include "i18n/coretext.h"
 #include "media/mediareader.h"
+#include "media/userfile.h"
 #include "speech/audio.h"
 
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QHash>
-#include <QMimeDatabase>
 #include <QTemporaryDir>
 #include <QUrl>
 
@@ -22,43 +21,45 @@ namespace toonface::smil {
 
 namespace {
 
-QByteArray audioMimeType(const QString &path)
+// The sound of `path` decoded and encoded anew, never the file's own bytes: whatever the file
+// holds besides its sound (or instead of it) stays out of the export. AAC in MP4 (at most
+// 32 kHz: speech keeps its sound below 16 kHz) when `compress`, 16-bit PCM WAV at the file's own
+// rate (at most 48 kHz) otherwise. False with *problem when the file is not a sound FFmpeg
+// decodes.
+bool decodedSound(const QString &path, bool compress, QByteArray *bytes, QByteArray *mime, QString *problem)
 {
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    static const QHash<QString, const char *> known = {{QStringLiteral("wav"), "audio/wav"},
-        {QStringLiteral("mp3"), "audio/mpeg"}, {QStringLiteral("ogg"), "audio/ogg"},
-        {QStringLiteral("oga"), "audio/ogg"}, {QStringLiteral("opus"), "audio/ogg"},
-        {QStringLiteral("m4a"), "audio/mp4"}, {QStringLiteral("aac"), "audio/aac"},
-        {QStringLiteral("flac"), "audio/flac"}, {QStringLiteral("webm"), "audio/webm"}};
-    if (const auto it = known.constFind(suffix); it != known.constEnd())
-        return *it;
-    return QMimeDatabase().mimeTypeForFile(path).name().toLatin1();
-}
-
-// The sound of `path` as AAC in MP4 when it is stored uncompressed or losslessly; false (and
-// the file is embedded as it is) for compressed sound or a file FFmpeg cannot read (the
-// browser may still play it).
-bool compressedAudio(const QString &path, QByteArray *bytes)
-{
-    QString why;
-    const std::optional<MediaInfo> info = probeMedia(path, &why);
-    if (!info || !info->hasAudio)
+    const std::optional<MediaInfo> info = probeMedia(path, problem);
+    if (!info)
         return false;
-    static const QStringList lossless = {QStringLiteral("flac"), QStringLiteral("alac"), QStringLiteral("wavpack"),
-        QStringLiteral("ape"), QStringLiteral("tta")};
-    if (!info->audioCodec.startsWith(QLatin1StringView("pcm_")) && !lossless.contains(info->audioCodec))
+    if (!info->hasAudio) {
+        *problem = withProblem(path, SoundText::tr("holds no sound"));
         return false;
-    // Speech keeps its sound below 16 kHz: 32 kHz sampling is enough, lower rates stay as they are.
-    const int rate = std::min(info->audioSampleRate > 0 ? info->audioSampleRate : 32000, 32000);
-    const std::optional<QVector<float>> samples = readAudio(path, rate, &why);
+    }
+    const int native = info->audioSampleRate > 0 ? info->audioSampleRate : 32000;
+    const int rate = std::min(native, compress ? 32000 : 48000);
+    const std::optional<QVector<float>> samples = readAudio(path, rate, problem);
+    if (!samples)
+        return false;
+    if (samples->isEmpty()) {
+        *problem = withProblem(path, SoundText::tr("holds no sound"));
+        return false;
+    }
     QTemporaryDir dir;
-    if (!samples || !dir.isValid())
+    if (!dir.isValid()) {
+        *problem
+            = withProblem(path, SoundText::tr("no room for a temporary copy of the sound: %1").arg(dir.errorString()));
         return false;
-    const QString m4a = dir.filePath(QStringLiteral("sound.m4a"));
-    QFile file(m4a);
-    if (!writeAudio(m4a, Audio {*samples, rate}, &why) || !file.open(QIODevice::ReadOnly))
+    }
+    const QString encoded = dir.filePath(compress ? QStringLiteral("sound.m4a") : QStringLiteral("sound.wav"));
+    if (!writeAudio(encoded, Audio {*samples, rate}, problem))
         return false;
+    QFile file(encoded);
+    if (!file.open(QIODevice::ReadOnly)) {
+        *problem = withProblem(encoded, file.errorString());
+        return false;
+    }
     *bytes = file.readAll();
+    *mime = compress ? "audio/mp4" : "audio/wav";
     return !bytes->isEmpty();
 }
 
@@ -79,24 +80,29 @@ bool resolveAudio(
     }
     if (path.isEmpty())
         return true;
-    const QFileInfo info(path);
-    if (options.audio == ExportAudio::Embed) {
-        QFile file(path);
-        if (!file.open(QIODevice::ReadOnly)) {
-            *error = SoundText::tr("cannot read the audio file %1: %2").arg(path, file.errorString());
-            return false;
-        }
-        QByteArray aac;
-        if (options.compressAudio && compressedAudio(path, &aac))
-            out->uri = "data:audio/mp4;base64," + aac.toBase64();
-        else
-            out->uri = "data:" + audioMimeType(path) + ";base64," + file.readAll().toBase64();
-        return true;
-    }
-    if (!info.isFile()) {
-        *error = SoundText::tr("the audio file %1 does not exist").arg(path);
+    // Only a regular file that decodes as sound reaches an export, embedded or referenced: a
+    // shared project naming ~/.ssh/id_rsa as its sound gets an error, not the key in its page.
+    if (const QString problem = irregularFileProblem(path); !problem.isEmpty()) {
+        *error = withProblem(path, problem);
         return false;
     }
+    QString problem;
+    if (options.audio == ExportAudio::Embed) {
+        QByteArray bytes, mime;
+        if (!decodedSound(path, options.compressAudio, &bytes, &mime, &problem)) {
+            *error = SoundText::tr("the sound cannot be used: %1").arg(problem);
+            return false;
+        }
+        out->uri = "data:" + mime + ";base64," + bytes.toBase64();
+        return true;
+    }
+    const std::optional<MediaInfo> media = probeMedia(path, &problem);
+    if (!media || !media->hasAudio) {
+        *error = SoundText::tr("the sound cannot be used: %1")
+                     .arg(media ? withProblem(path, SoundText::tr("holds no sound")) : problem);
+        return false;
+    }
+    const QFileInfo info(path);
     const QDir base(options.outputDir.isEmpty() ? QDir::currentPath() : options.outputDir);
     out->uri = QUrl::toPercentEncoding(base.relativeFilePath(info.absoluteFilePath()), "/");
     return true;

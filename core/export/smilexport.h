@@ -18,7 +18,7 @@ struct Style;
 
 // How an exported animation carries the sound of the timeline's audio clip.
 enum class ExportAudio {
-    Embed, // the file's bytes, as a data: URI inside the export
+    Embed, // the sound decoded and encoded anew, as a data: URI inside the export
     Reference, // a relative URI of the file, as seen from the export's folder
     None, // silent
 };
@@ -32,10 +32,10 @@ struct AnimationExportOptions
     Mode mode = Mode::Smil;
 
     ExportAudio audio = ExportAudio::Embed;
-    // With ExportAudio::Embed: an uncompressed or lossless sound (PCM WAV, AIFF, FLAC, ...) is
-    // embedded as AAC in MP4 (mono, 64 kbit/s, at most 32 kHz) — ten minutes of 16-bit 44.1 kHz
-    // stereo is 140 MB of base64, and 6.6 MB so — other files as they are. False embeds every
-    // file as it is.
+    // With ExportAudio::Embed the sound is decoded and encoded anew (never the file's own bytes:
+    // a file that does not decode as sound is an error): as AAC in MP4 (mono, 64 kbit/s, at most
+    // 32 kHz) — ten minutes of 16-bit 44.1 kHz stereo is 140 MB of base64, and 6.6 MB so; false:
+    // as 16-bit PCM WAV (mono, at most 48 kHz). Either way the file must be a regular file.
     bool compressAudio = true;
     // The sound file; empty means the path of the timeline's audio clip. Without either the
     // export is silent.

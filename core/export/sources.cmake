@@ -1,5 +1,6 @@
 list(APPEND TOONFACE_CORE_SOURCES
   export/animationexport.h export/animationexport.cpp
+  export/partfiles.h export/partfiles.cpp
   export/cartoonfile.h export/cartoonfile.cpp
   export/framerenderer.h export/framerenderer.cpp
   export/videoencoder.h export/videoencoder.cpp

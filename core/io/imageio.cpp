@@ -1,6 +1,7 @@
 #include "io/imageio.h"
 
 #include "i18n/coretext.h"
+#include "media/userfile.h"
 
 #include <QBuffer>
 #include <QColorSpace>
@@ -204,6 +205,10 @@ QImage loadPhoto(const QString &path, QString *error)
     }
     if (info.isDir()) {
         *error = withFile(path, ImageText::tr("is a folder, not an image"));
+        return {};
+    }
+    if (const QString problem = irregularFileProblem(path); !problem.isEmpty()) {
+        *error = withFile(path, problem); // a device or a pipe: never opened
         return {};
     }
     if (info.size() == 0) {

@@ -57,10 +57,10 @@ bool styleLayersFromJson(const JsonField &field, QVector<StyleLayer> *layers, QS
         if (!(layer.width > 0))
             return f.member("width").expected(ProjectText::tr("a width more than 0"), error);
         layer.offset = QPointF(x, y);
-        layer.svg = svg.toUtf8();
-        LayerDrawing drawing;
+        // A shared project's layer is cleaned on the way in: the project holds, and saves, only
+        // the inert copy (scripts and outside references are gone before anything draws it).
         QString why;
-        if (!readLayerSvg(layer.svg, QString(), &drawing, &why))
+        if (!cleanLayerSvg(svg.toUtf8(), &layer.svg, &why))
             return f.member("svg").fail(ProjectText::tr("not an SVG drawing: %1").arg(why), error);
         layers->append(layer);
     }

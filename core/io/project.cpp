@@ -451,6 +451,29 @@ std::optional<Project> projectFromJson(const QJsonObject &json, const QString &p
     return p;
 }
 
+QStringList filesOutsideFolder(const Project &project, const QString &projectDir)
+{
+    const QString folder = QDir::cleanPath(QDir(projectDir).absolutePath()) + QLatin1Char('/');
+    const QString realFolder = QFileInfo(projectDir).canonicalFilePath() + QLatin1Char('/');
+    QStringList out;
+    auto check = [&](const QString &what, const QString &path) {
+        if (path.isEmpty())
+            return;
+        const QString absolute = QDir::cleanPath(QDir(projectDir).absoluteFilePath(path));
+        // Links are followed: a link inside the folder to a file outside it is outside.
+        const QString real = QFileInfo(absolute).canonicalFilePath();
+        if (!absolute.startsWith(folder) || (!real.isEmpty() && !real.startsWith(realFolder)))
+            out << ProjectText::tr("%1: %2").arg(what, QDir::toNativeSeparators(real.isEmpty() ? absolute : real));
+    };
+    check(ProjectText::tr("photo"), project.photoPath);
+    check(ProjectText::tr("sound"), project.audioPath());
+    if (const std::optional<VideoClip> video = project.timeline.video())
+        check(ProjectText::tr("video"), video->path);
+    for (const QString &layer : project.layerPaths)
+        check(ProjectText::tr("layer"), layer);
+    return out;
+}
+
 bool saveProject(const Project &project, const QString &path, QString *error)
 {
     QString scratch;

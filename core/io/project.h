@@ -62,6 +62,12 @@ bool saveProject(const Project &project, const QString &path, QString *error);
 // e.g. "a.toonface: points[12].x: expected a number". A newer version is refused by name.
 std::optional<Project> loadProject(const QString &path, QString *error);
 
+// The files `project` names (photo, sound, video, layers) that lie outside `projectDir`, the
+// folder of its project file, each as "what: path" ("sound: /home/me/.ssh/id_rsa"). Such paths
+// are allowed (people keep their media elsewhere) but a project from someone else that names
+// them is shown to its user before anything reads them into an export.
+QStringList filesOutsideFolder(const Project &project, const QString &projectDir);
+
 QJsonObject projectToJson(const Project &project, const QString &projectDir);
 std::optional<Project> projectFromJson(const QJsonObject &json, const QString &projectDir, QString *error);
 

@@ -1,5 +1,6 @@
 #include "io/syllablesjson.h"
 
+#include "anim/timeline.h"
 #include "i18n/coretext.h"
 #include "io/jsonfield.h"
 
@@ -82,7 +83,8 @@ bool syllablesFromJson(const JsonField &field, QVector<LipsyncSyllable> *out, QS
         LipsyncSyllable s;
         if (!f.toObject(&unused, error) || !f.member("text").toString(&s.text, error)
             || !f.member("pinyin").toString(&s.pinyin, error) || !f.member("tone").toInt(0, 5, &s.tone, error)
-            || !f.member("start").toNumber(&s.start, error) || !f.member("end").toNumber(&s.end, error)
+            || !f.member("start").toBoundedNumber(Timeline::kMaxSeconds, &s.start, error)
+            || !f.member("end").toBoundedNumber(Timeline::kMaxSeconds, &s.end, error)
             || !f.member("confidence").toNumber(&s.confidence, error))
             return false;
         if (s.start < 0)

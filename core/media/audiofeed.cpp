@@ -1,6 +1,7 @@
 #include "media/audiofeed.h"
 
 #include "i18n/coretext.h"
+#include "media/userfile.h"
 
 #include <algorithm>
 
@@ -29,6 +30,9 @@ bool AudioFeed::open(const AudioSource &source, QString *error)
 {
     m_source = source;
     if (!source.path.isEmpty()) {
+        // Never handed to FFmpeg: a folder, a device or a pipe (a FIFO would block the open).
+        if (const QString problem = irregularFileProblem(source.path); !problem.isEmpty())
+            return fail(error, source.path, problem);
         AVFormatContext *raw = nullptr;
         int r = avformat_open_input(&raw, localPath(source.path).constData(), nullptr, nullptr);
         if (r < 0)

@@ -4,6 +4,7 @@
 #include "media/audiofeed.h"
 #include "media/ffmpegutil.h"
 #include "media/pngframes.h"
+#include "media/userfile.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -49,6 +50,10 @@ std::optional<MediaInfo> probeMedia(const QString &path, QString *error)
     quietFfmpegLogs();
     if (QFileInfo(path).isDir())
         return probePngSequence(path, error);
+    if (const QString problem = irregularFileProblem(path); !problem.isEmpty()) {
+        fail(error, path, problem);
+        return std::nullopt;
+    }
     AVFormatContext *raw = nullptr;
     int r = avformat_open_input(&raw, localPath(path).constData(), nullptr, nullptr);
     if (r < 0) {
@@ -137,6 +142,10 @@ std::optional<MediaInfo> probeMedia(const QString &path, QString *error)
 std::optional<QImage> readVideoFrame(const QString &path, int index, QString *error)
 {
     quietFfmpegLogs();
+    if (const QString problem = irregularFileProblem(path); !problem.isEmpty()) {
+        fail(error, path, problem);
+        return std::nullopt;
+    }
     AVFormatContext *raw = nullptr;
     int r = avformat_open_input(&raw, localPath(path).constData(), nullptr, nullptr);
     if (r < 0) {

@@ -3,4 +3,5 @@ list(APPEND TOONFACE_CORE_SOURCES
   media/audiosource.h
   media/audiofeed.h media/audiofeed.cpp
   media/pngframes.h
+  media/userfile.h media/userfile.cpp
   media/mediareader.h media/mediareader.cpp)

@@ -7,4 +7,5 @@ list(APPEND TOONFACE_CORE_SOURCES
   render/svgfeatures.h render/svgfeatures.cpp
   render/svgexpression.h render/svgexpression.cpp
   render/svgbody.h render/svgbody.cpp
+  render/svgallowlist.h render/svgallowlist.cpp
   render/svglayer.h render/svglayer.cpp)

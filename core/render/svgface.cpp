@@ -3,6 +3,7 @@
 #include "face/caricature.h"
 #include "face/fapu.h"
 #include "i18n/coretext.h"
+#include "media/userfile.h"
 #include "render/curves.h"
 #include "render/svgbody.h"
 #include "render/svgexpression.h"
@@ -608,15 +609,15 @@ SvgFace::SvgFace(const FaceModel &face, const Style &style)
 
 bool SvgFace::addLayerFile(const QString &svgPath, QString *error)
 {
-    QFile file(svgPath);
-    if (!file.open(QIODevice::ReadOnly)) {
+    QString why;
+    const std::optional<QByteArray> content = readUserFile(svgPath, kMaxLayerFileBytes, &why);
+    if (!content) {
         if (error)
-            *error = ImageText::tr("cannot read layer file %1: %2").arg(svgPath, file.errorString());
+            *error = ImageText::tr("cannot read layer file %1: %2").arg(svgPath, why);
         return false;
     }
     LayerDrawing drawing;
-    QString why;
-    if (!readLayerSvg(file.readAll(), QStringLiteral("layer-%1-").arg(m_layers.size() + 1), &drawing, &why)) {
+    if (!readLayerSvg(*content, QStringLiteral("layer-%1-").arg(m_layers.size() + 1), &drawing, &why)) {
         if (error)
             *error = ImageText::tr("layer file %1 is not a valid SVG file: %2").arg(svgPath, why);
         return false;

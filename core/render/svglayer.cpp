@@ -1,10 +1,13 @@
 #include "render/svglayer.h"
 
 #include "i18n/coretext.h"
+#include "media/userfile.h"
 #include "render/style.h"
+#include "render/svgallowlist.h"
 
 #include <QFile>
 #include <QFileInfo>
+#include <QHash>
 #include <QRegularExpression>
 #include <QXmlStreamReader>
 #include <QXmlStreamWriter>
@@ -16,69 +19,32 @@ namespace toonface {
 namespace {
 
 const QString kSvgNamespace = QStringLiteral("http://www.w3.org/2000/svg");
+const QString kXlinkNamespace = QStringLiteral("http://www.w3.org/1999/xlink");
+const QString kXmlNamespace = QStringLiteral("http://www.w3.org/XML/1998/namespace");
 
-// Elements that would run code or show other documents where the exported animation is
-// opened (a browser): a layer's drawing never needs them.
-bool isActiveElement(QStringView name)
-{
-    return name == QLatin1StringView("script") || name == QLatin1StringView("foreignObject")
-        || name == QLatin1StringView("iframe") || name == QLatin1StringView("handler")
-        || name == QLatin1StringView("object") || name == QLatin1StringView("embed");
-}
+// A layer is a drawing, not a data structure: deeper nesting or more elements than any drawing
+// needs is refused, so nothing that walks the tree later (the SMIL writer, the renderer) can
+// run out of stack or memory on it.
+constexpr int kMaxDepth = 64;
+constexpr int kMaxElements = 100000;
 
-// An attribute value as a browser reads a URL's scheme: lower case, with the white space and
-// control characters it skips inside "java\tscript:" left out.
-QString squeezed(QStringView value)
+// The named character references of HTML that drawings exported by editors use in text, written
+// out as their characters; a layer carrying an SVG 1.1 DOCTYPE uses them without declaring them.
+QString namedCharacter(QStringView name)
 {
-    QString out;
-    out.reserve(value.size());
-    for (const QChar c : value) {
-        if (c.unicode() > 0x20)
-            out.append(c.toLower());
-    }
-    return out;
-}
-
-// Whether an attribute value could run code or open another document: a javascript: or
-// vbscript: URL anywhere in it (an <animate> or <set> can put one into a link through its
-// values, to or from), or a data: document that is not an image.
-bool isActiveValue(QStringView value)
-{
-    const QString v = squeezed(value);
-    return v.contains(QLatin1StringView("javascript:")) || v.contains(QLatin1StringView("vbscript:"))
-        || v.contains(QLatin1StringView("data:text")) || v.contains(QLatin1StringView("data:application"));
-}
-
-// A link the layer may keep: to an element of its own, or an embedded picture.
-bool isInternalLink(QStringView value)
-{
-    const QString v = squeezed(value);
-    return v.startsWith(QLatin1Char('#')) || v.startsWith(QLatin1StringView("data:image/png"))
-        || v.startsWith(QLatin1StringView("data:image/jpeg")) || v.startsWith(QLatin1StringView("data:image/gif"))
-        || v.startsWith(QLatin1StringView("data:image/webp"));
-}
-
-// Whether a style or attribute text refers to something outside the file: url(...) to anything
-// but one of its own elements, or an @import.
-bool refersOutside(QStringView text)
-{
-    const QString v = squeezed(text);
-    if (v.contains(QLatin1StringView("@import")) || v.contains(QLatin1StringView("expression(")))
-        return true;
-    static const QRegularExpression url(QStringLiteral("url\\(['\"]?([^'\")]*)"));
-    for (auto it = url.globalMatch(v); it.hasNext();) {
-        const QString target = it.next().captured(1);
-        if (!target.startsWith(QLatin1Char('#')))
-            return true;
-    }
-    return false;
-}
-
-// An <animate> or <set> of a link (href) could point it anywhere at play time: a drawing never
-// needs one.
-bool animatesLink(const QXmlStreamAttributes &attributes)
-{
-    return squeezed(attributes.value(QLatin1StringView("attributeName"))).endsWith(QLatin1StringView("href"));
+    static const QHash<QString, QChar> known
+        = {{QStringLiteral("nbsp"), QChar(0x00a0)}, {QStringLiteral("ensp"), QChar(0x2002)},
+            {QStringLiteral("emsp"), QChar(0x2003)}, {QStringLiteral("thinsp"), QChar(0x2009)},
+            {QStringLiteral("copy"), QChar(0x00a9)}, {QStringLiteral("reg"), QChar(0x00ae)},
+            {QStringLiteral("trade"), QChar(0x2122)}, {QStringLiteral("hellip"), QChar(0x2026)},
+            {QStringLiteral("mdash"), QChar(0x2014)}, {QStringLiteral("ndash"), QChar(0x2013)},
+            {QStringLiteral("lsquo"), QChar(0x2018)}, {QStringLiteral("rsquo"), QChar(0x2019)},
+            {QStringLiteral("ldquo"), QChar(0x201c)}, {QStringLiteral("rdquo"), QChar(0x201d)},
+            {QStringLiteral("laquo"), QChar(0x00ab)}, {QStringLiteral("raquo"), QChar(0x00bb)},
+            {QStringLiteral("deg"), QChar(0x00b0)}, {QStringLiteral("middot"), QChar(0x00b7)},
+            {QStringLiteral("times"), QChar(0x00d7)}, {QStringLiteral("bull"), QChar(0x2022)}};
+    const auto it = known.constFind(name.toString());
+    return it == known.constEnd() ? QString() : QString(*it);
 }
 
 QString withPrefixedUrls(const QString &text, const QString &prefix)
@@ -88,33 +54,42 @@ QString withPrefixedUrls(const QString &text, const QString &prefix)
     return out.replace(url, QStringLiteral("url(\\1#") + prefix);
 }
 
-// Copies the reader's start element without what could run code or fetch anything, its ids
-// and references to them prefixed.
+// Copies the reader's start element with only the attributes of drawing, each inert, its ids
+// and references to them prefixed. A link (<a>) becomes a plain group: its drawing stays, the
+// way to another document does not.
 void writeInertStart(const QXmlStreamReader &reader, QXmlStreamWriter &writer, const QString &prefix)
 {
-    const QXmlStreamNamespaceDeclarations declarations = reader.namespaceDeclarations();
-    writer.writeStartElement(reader.namespaceUri().toString(), reader.name().toString());
-    for (const QXmlStreamNamespaceDeclaration &d : declarations)
-        writer.writeNamespace(d.namespaceUri().toString(), d.prefix().toString());
+    const bool link = reader.name() == QLatin1StringView("a");
+    writer.writeStartElement(kSvgNamespace, link ? QStringLiteral("g") : reader.name().toString());
+    const bool picture = reader.name() == QLatin1StringView("image") || reader.name() == QLatin1StringView("feImage");
     const QXmlStreamAttributes attributes = reader.attributes();
     for (const QXmlStreamAttribute &a : attributes) {
+        const QStringView ns = a.namespaceUri();
         const QStringView name = a.name();
-        if (name.startsWith(QLatin1StringView("on"), Qt::CaseInsensitive) || isActiveValue(a.value()))
+        if (ns == kXmlNamespace) {
+            if (name == QLatin1StringView("space") || name == QLatin1StringView("lang"))
+                writer.writeAttribute(kXmlNamespace, name.toString(), a.value().toString());
             continue;
-        QString value = a.value().toString();
-        if (name == QLatin1StringView("href") || name == QLatin1StringView("src")) {
-            if (!isInternalLink(value))
-                continue;
-            if (value.trimmed().startsWith(QLatin1Char('#')))
-                value = QLatin1Char('#') + prefix + value.trimmed().mid(1);
-        } else if (name == QLatin1StringView("id")) {
-            value = prefix + value;
-        } else if (refersOutside(value)) {
-            continue;
-        } else {
-            value = withPrefixedUrls(value, prefix);
         }
-        writer.writeAttribute(a.namespaceUri().toString(), name.toString(), value);
+        const bool href = name == QLatin1StringView("href") && (ns.isEmpty() || ns == kXlinkNamespace);
+        if (href) {
+            if (link || !svgallow::isInternalLink(a.value(), picture))
+                continue;
+            QString value = a.value().toString().trimmed();
+            if (value.startsWith(QLatin1Char('#')))
+                value = QLatin1Char('#') + prefix + value.mid(1);
+            writer.writeAttribute(kXlinkNamespace, QStringLiteral("href"), value);
+            continue;
+        }
+        if (!ns.isEmpty() || !svgallow::isDrawingAttribute(name))
+            continue;
+        if (name == QLatin1StringView("id")) {
+            writer.writeAttribute(name.toString(), prefix + a.value().toString());
+            continue;
+        }
+        if (!svgallow::isInertCss(a.value()))
+            continue;
+        writer.writeAttribute(name.toString(), withPrefixedUrls(a.value().toString(), prefix));
     }
 }
 
@@ -150,8 +125,14 @@ bool readLayerSvg(const QByteArray &content, const QString &idPrefix, LayerDrawi
     QByteArray written;
     QXmlStreamWriter writer(&written);
     int depth = 0;
-    int skipFrom = 0; // the depth of the active element being left out, or 0
+    int elements = 0;
+    int skipFrom = 0; // the depth of the element being left out with its content, or 0
     bool sawRoot = false;
+    bool svgDefault = false; // the root has no namespace: its elements are SVG's
+    auto failAt = [&](const QString &what) {
+        *error = ImageText::tr("line %1, column %2: %3").arg(reader.lineNumber()).arg(reader.columnNumber()).arg(what);
+        return false;
+    };
     while (!reader.atEnd()) {
         const auto token = reader.readNext();
         if (reader.hasError())
@@ -159,36 +140,41 @@ bool readLayerSvg(const QByteArray &content, const QString &idPrefix, LayerDrawi
         if (token == QXmlStreamReader::StartElement) {
             if (!sawRoot) {
                 sawRoot = true;
-                if (reader.name() != QLatin1StringView("svg")) {
-                    *error = ImageText::tr("the root element is <%1>, not <svg>").arg(reader.name());
+                if (reader.name() != QLatin1StringView("svg")
+                    || !(reader.namespaceUri().isEmpty() || reader.namespaceUri() == kSvgNamespace)) {
+                    *error = ImageText::tr("the root element is <%1>, not <svg>").arg(reader.qualifiedName());
                     return false;
                 }
+                svgDefault = reader.namespaceUri().isEmpty();
                 out->viewBox = rootBox(reader.attributes());
                 // Declared once on a wrapper so the copied elements need no prefixes.
-                writer.writeNamespace(QStringLiteral("http://www.w3.org/1999/xlink"), QStringLiteral("xlink"));
+                writer.writeNamespace(kXlinkNamespace, QStringLiteral("xlink"));
                 writer.writeDefaultNamespace(kSvgNamespace);
                 writer.writeStartElement(kSvgNamespace, QStringLiteral("g"));
                 continue;
             }
             ++depth;
-            if (skipFrom == 0 && (isActiveElement(reader.name()) || animatesLink(reader.attributes())))
-                skipFrom = depth; // a script or foreign content: left out with everything inside
+            if (depth > kMaxDepth)
+                return failAt(ImageText::tr("elements nested more than %1 deep").arg(kMaxDepth));
+            if (++elements > kMaxElements)
+                return failAt(ImageText::tr("more than %1 elements").arg(kMaxElements));
             if (skipFrom != 0)
                 continue;
+            const bool svg = reader.namespaceUri() == kSvgNamespace || (svgDefault && reader.namespaceUri().isEmpty());
+            const bool link = svg && reader.name() == QLatin1StringView("a");
+            if (!svg || (!link && !svgallow::isDrawingElement(reader.name()))) {
+                skipFrom = depth; // not drawing (script, animation, another namespace): left out with its content
+                continue;
+            }
             if (reader.name() == QLatin1StringView("style")) {
                 // A style sheet is kept only when it refers to nothing outside the file.
-                const QXmlStreamAttributes attributes = reader.attributes();
-                const QString sheet = reader.readElementText(QXmlStreamReader::IncludeChildElements);
+                const QString sheet = reader.readElementText(QXmlStreamReader::SkipChildElements);
                 --depth;
                 if (reader.hasError())
                     break;
-                if (refersOutside(sheet))
+                if (!svgallow::isInertCss(sheet))
                     continue;
                 writer.writeStartElement(kSvgNamespace, QStringLiteral("style"));
-                for (const QXmlStreamAttribute &a : attributes) {
-                    if (!a.name().startsWith(QLatin1StringView("on"), Qt::CaseInsensitive))
-                        writer.writeAttribute(a.name().toString(), a.value().toString());
-                }
                 writer.writeCharacters(withPrefixedUrls(sheet, idPrefix));
                 writer.writeEndElement();
                 continue;
@@ -202,19 +188,19 @@ bool readLayerSvg(const QByteArray &content, const QString &idPrefix, LayerDrawi
                 skipFrom = 0;
             --depth;
             if (!skipped)
-                writer.writeCurrentToken(reader);
-        } else if (sawRoot && depth > 0 && skipFrom == 0
-            && (token == QXmlStreamReader::Characters || token == QXmlStreamReader::EntityReference)) {
-            writer.writeCurrentToken(reader);
+                writer.writeEndElement();
+        } else if (sawRoot && depth > 0 && skipFrom == 0 && token == QXmlStreamReader::Characters) {
+            writer.writeCharacters(reader.text().toString());
+        } else if (sawRoot && depth > 0 && skipFrom == 0 && token == QXmlStreamReader::EntityReference) {
+            // An entity the document uses without declaring it (its DTD is not read).
+            const QString character = namedCharacter(reader.name());
+            if (character.isEmpty())
+                return failAt(ImageText::tr("the entity &%1; is not defined").arg(reader.name()));
+            writer.writeCharacters(character);
         }
     }
-    if (reader.hasError()) {
-        *error = ImageText::tr("line %1, column %2: %3")
-                     .arg(reader.lineNumber())
-                     .arg(reader.columnNumber())
-                     .arg(reader.errorString());
-        return false;
-    }
+    if (reader.hasError())
+        return failAt(reader.errorString());
     if (!sawRoot) {
         *error = ImageText::tr("no root element");
         return false;
@@ -230,28 +216,40 @@ bool readLayerSvg(const QByteArray &content, const QString &idPrefix, LayerDrawi
     return true;
 }
 
+QByteArray layerDocument(const LayerDrawing &drawing)
+{
+    QByteArray box;
+    for (const double v : {drawing.viewBox.x(), drawing.viewBox.y(), drawing.viewBox.width(), drawing.viewBox.height()})
+        box += (box.isEmpty() ? "" : " ") + QByteArray::number(v, 'g', 10);
+    return "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" viewBox=\"" + box
+        + "\">" + drawing.fragment + "</svg>\n";
+}
+
+bool cleanLayerSvg(const QByteArray &content, QByteArray *cleaned, QString *error)
+{
+    LayerDrawing drawing;
+    if (!readLayerSvg(content, QString(), &drawing, error))
+        return false;
+    *cleaned = layerDocument(drawing);
+    return true;
+}
+
 bool loadLayerFile(const QString &path, StyleLayer *out, QString *error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *error = ImageText::tr("cannot read layer file %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    constexpr qint64 kMaxLayerBytes = 16 << 20;
-    if (file.size() > kMaxLayerBytes) {
-        *error = ImageText::tr("layer file %1 is too large (more than 16 MB)").arg(path);
-        return false;
-    }
-    const QByteArray content = file.readAll();
-    LayerDrawing drawing;
     QString why;
-    if (!readLayerSvg(content, QString(), &drawing, &why)) {
+    const std::optional<QByteArray> content = readUserFile(path, kMaxLayerFileBytes, &why);
+    if (!content) {
+        *error = ImageText::tr("cannot read layer file %1: %2").arg(path, why);
+        return false;
+    }
+    QByteArray cleaned;
+    if (!cleanLayerSvg(*content, &cleaned, &why)) {
         *error = ImageText::tr("layer file %1 is not a valid SVG file: %2").arg(path, why);
         return false;
     }
     StyleLayer layer;
     layer.name = QFileInfo(path).fileName();
-    layer.svg = content;
+    layer.svg = cleaned;
     *out = layer;
     return true;
 }

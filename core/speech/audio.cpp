@@ -1,6 +1,7 @@
 #include "speech/audio.h"
 
 #include "i18n/coretext.h"
+#include "media/userfile.h"
 #include "speech/audioconvert.h"
 #include "speech/wavfile.h"
 
@@ -119,8 +120,8 @@ AudioResult streamAudio(
     AudioResult r;
     auto fail = [&](AudioStatus status, const QString &what) { return failed(r, path, status, what); };
     quietFfmpegLog();
-    if (!QFileInfo(path).isFile())
-        return fail(AudioStatus::Unreadable, SoundText::tr("no such file"));
+    if (const QString problem = irregularFileProblem(path); !problem.isEmpty())
+        return fail(AudioStatus::Unreadable, problem);
     if (QFileInfo(path).size() == 0)
         return fail(AudioStatus::Empty, SoundText::tr("the file is empty"));
     // Plain PCM WAV is read here; everything else by FFmpeg, which gives the same samples.

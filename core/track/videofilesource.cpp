@@ -1,6 +1,7 @@
 #include "track/videofilesource.h"
 
 #include "i18n/coretext.h"
+#include "media/userfile.h"
 
 #include <QElapsedTimer>
 #include <QFile>
@@ -224,8 +225,8 @@ bool VideoFileSource::open(const QString &path, const Options &options, QString 
     d->path = path;
     d->options = options;
     av_log_set_level(AV_LOG_QUIET);
-    if (!QFileInfo(path).isFile())
-        return d->fail(error, VideoText::tr("no such file"));
+    if (const QString problem = irregularFileProblem(path); !problem.isEmpty())
+        return d->fail(error, problem);
     int r = avformat_open_input(&d->input, QFile::encodeName(path).constData(), nullptr, nullptr);
     if (r < 0)
         return d->fail(error, VideoText::tr("not a video FFmpeg can read (%1)").arg(avError(r)));
