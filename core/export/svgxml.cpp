@@ -15,6 +15,11 @@ bool parseXml(const QByteArray &data, XmlNode *root, QString *error)
     while (!reader.atEnd()) {
         const auto token = reader.readNext();
         if (token == QXmlStreamReader::StartElement) {
+            // Every walk of the tree (writeXml, findById) recurses: its depth is bounded here.
+            if (stack.size() >= kMaxXmlDepth) {
+                *error = ExportText::tr("the drawing is nested more than %1 levels deep").arg(kMaxXmlDepth);
+                return false;
+            }
             XmlNode n;
             n.name = reader.qualifiedName().toUtf8();
             for (const auto &ns : reader.namespaceDeclarations()) {

@@ -30,6 +30,9 @@ struct XmlNode
     }
 };
 
+// Reads a drawing into a tree at most kMaxXmlDepth deep (the face's own are about ten deep, a
+// layer at most 64 below it); false with *error for invalid XML or a deeper tree.
+inline constexpr size_t kMaxXmlDepth = 256;
 bool parseXml(const QByteArray &data, XmlNode *root, QString *error);
 
 void appendEscaped(QByteArray &out, const QByteArray &s, bool attribute);
