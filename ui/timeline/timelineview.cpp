@@ -30,6 +30,11 @@ constexpr double kEmotionLength = 2.0; // seconds of a preset dropped with no ra
 // about half a second to show one): a preset dropped on it starts where it was dropped.
 constexpr double kShortestEmotionRange = 0.5;
 constexpr double kHeadMoveLength = 1.5;
+// The recording's loudness is drawn at this share of the row's half height.
+constexpr double kWaveformFill = 0.9;
+// Quieter than this (-40 dBFS) is drawn as if it were this loud: hiss or a silent file is not
+// blown up to fill the row.
+constexpr double kQuietestShown = 0.01;
 
 int nextMergeId()
 {
@@ -101,6 +106,7 @@ TimelineScene TimelineView::scene() const
     s.layout = &m_layout;
     s.selection = &m_selection;
     s.peaks = &m_waveform.peaks();
+    s.waveformGain = waveformGain();
     s.waveformStatus = m_waveform.isLoading() ? tr("Reading the sound…") : m_waveform.error();
     s.icons = &m_icons;
     s.playhead = m_playhead->time();
@@ -148,6 +154,19 @@ void TimelineView::setSelection(const Selection &selection)
 void TimelineView::setFocusRow(std::optional<RowKind> row)
 {
     m_focusRow = row;
+    viewport()->update();
+}
+
+double TimelineView::waveformGain() const
+{
+    if (m_waveform.peaks().isEmpty())
+        return m_waveformZoom;
+    return m_waveformZoom * kWaveformFill / std::max(kQuietestShown, m_waveform.loudness());
+}
+
+void TimelineView::setWaveformZoom(double zoom)
+{
+    m_waveformZoom = std::clamp(zoom, 1 / 16.0, 16.0);
     viewport()->update();
 }
 
@@ -282,7 +301,11 @@ void TimelineView::resizeEvent(QResizeEvent *event)
 void TimelineView::wheelEvent(QWheelEvent *event)
 {
     const QPoint delta = event->angleDelta();
-    if (event->modifiers() & Qt::ControlModifier) {
+    if (event->modifiers() & Qt::AltModifier) {
+        // Qt turns the wheel sideways while Alt is held.
+        const int d = delta.y() != 0 ? delta.y() : delta.x();
+        setWaveformZoom(m_waveformZoom * std::pow(kWaveformZoomStep, d / 120.0));
+    } else if (event->modifiers() & Qt::ControlModifier) {
         const double steps = delta.y() / 120.0;
         setPixelsPerSecond(m_layout.pixelsPerSecond() * std::pow(kZoomStep, steps), event->position().x());
     } else if (event->modifiers() & Qt::ShiftModifier) {
