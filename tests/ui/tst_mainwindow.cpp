@@ -342,9 +342,21 @@ private Q_SLOTS:
         openProject();
         m_window->document()->movePoint(0, QPointF(10, 10), true);
 
+        // The question names the project, not the photo (which is never written).
+        auto question = std::make_shared<QString>();
+        QTimer reader;
+        reader.setInterval(10);
+        connect(&reader, &QTimer::timeout, this, [question] {
+            if (auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget()))
+                *question = box->text();
+        });
+        reader.start();
         auto answered = answerNextMessageBox(QStringLiteral("Cancel"));
         QVERIFY(!m_window->close());
         QVERIFY(*answered);
+        reader.stop();
+        QVERIFY2(question->contains(QStringLiteral("project %1").arg(QFileInfo(m_projectPath).fileName())),
+            qPrintable(*question));
         QVERIFY(m_window->isVisible());
 
         answered = answerNextMessageBox(QStringLiteral("Discard"));

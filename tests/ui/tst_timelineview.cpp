@@ -392,6 +392,40 @@ private Q_SLOTS:
         QVERIFY(m_view->xOf(m_doc->timeline().duration()) <= viewport()->width());
     }
 
+    void playheadMovedByAKeyStaysInSight()
+    {
+        m_view->setPixelsPerSecond(2000, TimelineLayout::kLabelWidth); // about half a second in sight
+        QVERIFY(m_view->xOf(2.5) > viewport()->width());
+        m_playhead->setTime(2.5); // what End or the arrows do
+        QVERIFY2(m_view->xOf(2.5) >= TimelineLayout::kLabelWidth && m_view->xOf(2.5) <= viewport()->width(),
+            qPrintable(QString::number(m_view->xOf(2.5))));
+        m_playhead->setTime(0); // Home
+        QCOMPARE(m_view->timelineLayout().scrollTime(), 0.0);
+    }
+
+    void newSoundIsShownWhole()
+    {
+        m_view->setPixelsPerSecond(2000, TimelineLayout::kLabelWidth);
+        QTemporaryDir dir;
+        waveformHeight(0.5, dir);
+        QVERIFY2(m_view->xOf(3.0) <= viewport()->width(), qPrintable(QString::number(m_view->xOf(3.0))));
+        QCOMPARE(m_view->timelineLayout().scrollTime(), 0.0);
+    }
+
+    void emptyProjectShowsSecondsNotMinutes()
+    {
+        Document empty;
+        Playhead playhead;
+        TimelineWidget widget(&empty, &playhead);
+        widget.resize(60, 300); // laid out narrow first, as a dock is
+        widget.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&widget));
+        widget.resize(1200, 300);
+        QTest::qWait(20);
+        const double shown = widget.view()->timelineLayout().timeAt(widget.view()->viewport()->width());
+        QVERIFY2(shown < 10, qPrintable(QString::number(shown)));
+    }
+
     // The ink in the middle of the pinyin under syllable `index`: the tone-marked vowel of "hǎo".
     int pinyinMiddleInk(int index)
     {

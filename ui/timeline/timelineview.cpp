@@ -30,6 +30,8 @@ constexpr double kEmotionLength = 2.0; // seconds of a preset dropped with no ra
 // about half a second to show one): a preset dropped on it starts where it was dropped.
 constexpr double kShortestEmotionRange = 0.5;
 constexpr double kHeadMoveLength = 1.5;
+// Viewport widths (time area) narrower than this are a layout in progress, not one to fit to.
+constexpr int kNarrowestFit = 200;
 // The recording's loudness is drawn at this share of the row's half height.
 constexpr double kWaveformFill = 0.9;
 // Quieter than this (-40 dBFS) is drawn as if it were this loud: hiss or a silent file is not
@@ -127,6 +129,16 @@ void TimelineView::onDocumentChanged(ChangeFlags what)
         m_selection.clip([&](ItemKind kind) { return itemCount(a, kind); });
         const std::optional<AudioClip> &audio = m_document->timeline().audio();
         m_waveform.setPath(audio ? audio->path : QString());
+        // A new recording or clip (lip sync, Say Text, Import Video) is shown whole, not the
+        // first second of it.
+        const std::optional<VideoClip> &video = m_document->timeline().video();
+        const QString media = (audio ? audio->path : QString()) + QLatin1Char('|') + (video ? video->path : QString());
+        if (media != m_media) {
+            const bool first = m_media.isNull();
+            m_media = media;
+            if (!first && media != QLatin1String("|") && viewport()->width() > TimelineLayout::kLabelWidth)
+                zoomToFit();
+        }
         if (m_selection != before)
             Q_EMIT selectionChanged();
     }
@@ -246,7 +258,8 @@ void TimelineView::zoomToFit()
     const double duration = std::max(1.0, m_document->timeline().duration());
     m_layout.setScrollTime(0);
     m_layout.setPixelsPerSecond(std::min(kMaxPixelsPerSecond, width / duration));
-    m_fitted = true;
+    // A viewport not yet laid out fits a second into a pixel or two; the first real size fits again.
+    m_fitted = width >= kNarrowestFit;
     updateScrollBars();
     viewport()->update();
 }
@@ -280,7 +293,9 @@ void TimelineView::scrollContentsBy(int, int)
 
 void TimelineView::followPlayhead(double t)
 {
-    if (!m_playhead->isPlaying() || m_drag.mode == DragMode::Scrub)
+    // Playing, or moved by a key (Home, End, the arrows): the playhead stays in sight. A drag in
+    // the timeline moves it where the pointer is, in sight already.
+    if (m_drag.mode != DragMode::None)
         return;
     const double x = m_layout.xOf(t);
     if (x < TimelineLayout::kLabelWidth || x > viewport()->width() - 10) {

@@ -154,6 +154,8 @@ private:
     double m_waveformZoom = 1;
     bool m_snap = true;
     bool m_fitted = false;
+    QString m_media; // the sound's and the clip's paths last shown, null before the first
+
     bool m_syncingScroll = false;
     Drag m_drag;
     QRect m_rubberBand;

@@ -456,8 +456,11 @@ bool MainWindow::maybeSave()
 {
     if (!m_document->isModified())
         return true;
-    const QMessageBox::StandardButton answer = QMessageBox::warning(this, tr("Unsaved Changes"),
-        tr("%1 has unsaved changes. Save them?").arg(m_document->displayName()),
+    // Name the project, not the photo: the photo is never written.
+    const QString question = m_document->filePath().isEmpty()
+        ? tr("The cartoon made from %1 is not saved as a project yet. Save it?").arg(m_document->displayName())
+        : tr("The project %1 has unsaved changes. Save them?").arg(m_document->displayName());
+    const QMessageBox::StandardButton answer = QMessageBox::warning(this, tr("Unsaved Changes"), question,
         QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
     if (answer == QMessageBox::Save)
         return save();
