@@ -71,7 +71,11 @@ void Studio::install(PreviewView *preview, QAction *beforeMenu)
     m_sayText = new QAction(themedIcon("insert-text", "say-text.svg"), tr("&Say Text…"), this);
     m_sayText->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
     m_sayText->setStatusTip(tr("Speak a text with the built-in voice and lip-sync the face to it"));
-    connect(m_sayText, &QAction::triggered, this, [this] { SayTextDialog::run(m_window, m_document); });
+    connect(m_sayText, &QAction::triggered, this, [this] {
+        const std::optional<AudioClip> before = m_document->timeline().audio();
+        if (SayTextDialog::run(m_window, m_document))
+            Q_EMIT message(soundChange(before, tr("Say Text")));
+    });
     m_addBlinks = new QAction(QIcon(QStringLiteral(":/toonface/icons/timeline-blinks.svg")), tr("Add &Blinks…"), this);
     connect(m_addBlinks, &QAction::triggered, this, [this] { BlinksDialog::run(m_window, m_document); });
     m_addEmotion = new QAction(QIcon(QStringLiteral(":/toonface/icons/emotion-smile.svg")), tr("Add &Emotion…"), this);
@@ -139,10 +143,12 @@ void Studio::installVideo()
     m_importVideo->setStatusTip(tr("Track a clip of a person speaking and put the motion on the timeline"));
     connect(m_importVideo, &QAction::triggered, this, [this] {
         m_playback->pause();
+        const std::optional<AudioClip> before = m_document->timeline().audio();
         ImportVideoDialog dialog(m_document, m_playhead->time(), m_window);
         if (dialog.exec() != QDialog::Accepted)
             return;
-        const QString imported = tr("Imported %1").arg(QFileInfo(m_document->timeline().video()->path).fileName());
+        const QString imported
+            = soundChange(before, tr("Imported %1").arg(QFileInfo(m_document->timeline().video()->path).fileName()));
         Q_EMIT message(
             dialog.warnings().isEmpty() ? imported : imported + QStringLiteral(" — ") + dialog.warnings().join(u' '));
     });
@@ -171,6 +177,17 @@ void Studio::installVideo()
     m_transport->insertAction(m_exportAnimation, m_importVideo);
 }
 // --- end of Import Video ---------------------------------------------------------------------
+
+QString Studio::soundChange(const std::optional<AudioClip> &before, const QString &what) const
+{
+    const std::optional<AudioClip> &after = m_document->timeline().audio();
+    if (!after || (before && before->path == after->path))
+        return tr("%1: done; the project's sound is unchanged.").arg(what);
+    if (!before)
+        return tr("%1: the project's sound is now %2.").arg(what, QFileInfo(after->path).fileName());
+    return tr("%1 replaced the project's sound %2 with %3 (Edit ▸ Undo brings it back).")
+        .arg(what, QFileInfo(before->path).fileName(), QFileInfo(after->path).fileName());
+}
 
 QMenu *Studio::windowMenu(const char *title) const
 {
