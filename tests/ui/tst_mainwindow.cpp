@@ -922,6 +922,19 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(done.size() == 2, 120000);
         QCOMPARE(doc->undoStack()->count(), 3);
         QCOMPARE(doc->face().point(i), placed);
+
+        // Re-detect Points over a point moved by hand asks first: Cancel does nothing,
+        // Keep My Points keeps it.
+        auto answered = answerNextMessageBox(QStringLiteral("Cancel"));
+        action("actionRedetect")->trigger();
+        QVERIFY(*answered);
+        QVERIFY(!m_window->isBusy());
+        QCOMPARE(doc->undoStack()->count(), 3);
+        answered = answerNextMessageBox(QStringLiteral("Keep My Points"));
+        action("actionRedetect")->trigger();
+        QVERIFY(*answered);
+        QTRY_VERIFY_WITH_TIMEOUT(done.size() == 3, 120000);
+        QCOMPARE(doc->face().point(i), placed);
     }
 };
 

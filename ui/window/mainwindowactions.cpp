@@ -3,11 +3,13 @@
 #include "window/mainwindow.h"
 
 #include "dialogs/shortcutsdialog.h"
+#include "document/document.h"
 #include "render/style.h"
 #include "views/displaynames.h"
 #include "views/photoview.h"
 #include "views/themedicon.h"
 #include "window/detectionstepsui.h"
+#include "window/questions.h"
 #include "window/settings.h"
 
 #include <QAction>
@@ -62,7 +64,17 @@ void MainWindow::createActions()
         = make(QStringLiteral("actionRedetect"), tr("Re-&detect Points"), QKeySequence(Qt::CTRL | Qt::Key_D));
     m_redetectAction->setToolTip(tr("Detect the face again and replace every point"));
     m_redetectAction->setIcon(themedIcon("view-refresh", "redetect.svg"));
-    connect(m_redetectAction, &QAction::triggered, this, [this] { startDetection(false); });
+    connect(m_redetectAction, &QAction::triggered, this, [this] {
+        // Points moved by hand are the user's work: not thrown away without a word.
+        int handPlaced = 0;
+        if (m_document->hasFace())
+            for (int i = 0; i < kPointCount; ++i)
+                handPlaced += m_document->face().isHandPlaced(i) ? 1 : 0;
+        const RedetectChoice choice
+            = handPlaced > 0 ? askRedetectOverHandPlaced(this, handPlaced) : RedetectChoice::ReplaceAll;
+        if (choice != RedetectChoice::Cancel)
+            startDetection(choice == RedetectChoice::KeepMine);
+    });
     m_redetectKeepAction = make(QStringLiteral("actionRedetectKeep"), tr("Re-detect &Keeping My Points"),
         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
     m_redetectKeepAction->setToolTip(tr("Detect the face again but keep the points placed by hand"));

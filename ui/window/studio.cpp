@@ -1,5 +1,7 @@
 #include "window/studio.h"
 
+#include "playback/timereadout.h"
+
 #include "capture/capturedialog.h"
 #include "capture/importvideodialog.h"
 #include "capture/livewindow.h"
@@ -15,6 +17,7 @@
 #include "export/animationexport.h"
 #include "playback/playbackcontroller.h"
 #include "playback/playhead.h"
+#include "playback/timereadout.h"
 #include "timeline/timelineedits.h"
 #include "timeline/timelineview.h"
 #include "timeline/timelinewidget.h"
@@ -121,6 +124,7 @@ void Studio::install(PreviewView *preview, QAction *beforeMenu)
     m_transport = m_window->addToolBar(tr("Transport"));
     m_transport->setObjectName(QStringLiteral("transportToolBar"));
     m_transport->addActions(m_playback->actions());
+    m_transport->addWidget(new TimeReadout(m_document, m_playhead, m_transport));
     m_transport->addSeparator();
     m_transport->addAction(m_lipSync);
     m_transport->addAction(preview->editPoseAction());
