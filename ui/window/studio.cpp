@@ -42,7 +42,6 @@ namespace {
 
 constexpr double kEmotionFromPlayhead = 2.0; // seconds Add Emotion offers from the playhead
 constexpr double kShortestEmotion = 0.5; // less than this before the end: the whole animation
-constexpr int kVideoDockWidth = 320;
 
 } // namespace
 
@@ -161,17 +160,18 @@ void Studio::installVideo()
 
     m_videoDock = new VideoDock(m_document, m_playhead, m_window);
     m_window->addDockWidget(Qt::RightDockWidgetArea, m_videoDock);
-    // Beside the preview: a column of its own left of the docks already on the right.
+    // A tab beside the docks already on the right: a column of its own would leave the photo
+    // and the cartoon a sliver on a laptop's screen. It comes to the front when a clip arrives.
     for (QDockWidget *other : m_window->findChildren<QDockWidget *>()) {
         if (other != m_videoDock && other->parentWidget() == m_window
             && m_window->dockWidgetArea(other) == Qt::RightDockWidgetArea && !other->isFloating()) {
-            m_window->splitDockWidget(m_videoDock, other, Qt::Horizontal);
+            m_window->tabifyDockWidget(other, m_videoDock);
             break;
         }
     }
     connect(m_videoDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible)
-            m_window->resizeDocks({m_videoDock}, {kVideoDockWidth}, Qt::Horizontal);
+            m_videoDock->raise();
     });
     QAction *toggle = m_videoDock->toggleViewAction();
     toggle->setObjectName(QStringLiteral("showVideo"));
