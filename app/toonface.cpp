@@ -1,5 +1,6 @@
 #include "i18n/translations.h"
 #include "launchtimings.h"
+#include "views/tonemarkfont.h"
 #include "window/mainwindow.h"
 #include "window/settings.h"
 
@@ -60,6 +61,7 @@ int main(int argc, char *argv[])
     QApplication::setDesktopFileName(QStringLiteral("toonface"));
     // The interface's language: Preferences' choice, else the system's.
     toonface::installTranslations(&app, toonface::translationForSetting(toonface::Settings().language()));
+    toonface::ensureToneMarks();
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QApplication::translate("main", "Toonface: personal cartoon faces from photos."));

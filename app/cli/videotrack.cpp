@@ -1,6 +1,7 @@
 #include "cli/videotrack.h"
 
 #include "cli/command.h"
+#include "media/mediareader.h"
 
 #include <QFileInfo>
 
@@ -30,7 +31,11 @@ int trackClip(const QString &path, const TrackVideoOptions &options, TrackResult
     });
     switch (out->status) {
     case TrackStatus::Ok: break;
-    case TrackStatus::NoFace: return fail(ExitNoFace, out->error);
+    case TrackStatus::NoFace:
+        // A copy cut short decodes to a smear of grey, where no face can be found.
+        if (const QString damage = mediaDamage(path); !damage.isEmpty())
+            return fail(ExitBadInput, damage);
+        return fail(ExitNoFace, out->error);
     case TrackStatus::ModelMissing: return fail(ExitFailed, out->error);
     case TrackStatus::Cancelled: return fail(ExitFailed, out->error);
     case TrackStatus::BadVideo: return fail(ExitBadInput, out->error);

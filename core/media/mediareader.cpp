@@ -139,6 +139,42 @@ std::optional<MediaInfo> probeMedia(const QString &path, QString *error)
     return info;
 }
 
+QString mediaDamage(const QString &path)
+{
+    quietFfmpegLogs();
+    if (QFileInfo(path).isDir())
+        return {};
+    if (const QString problem = irregularFileProblem(path); !problem.isEmpty())
+        return withProblem(path, problem);
+    AVFormatContext *raw = avformat_alloc_context();
+    if (!raw)
+        return {};
+    // The demuxer's packets as the file holds them: a parser joining them into frames (as
+    // decoding does) drops the mark of a packet the file ends inside of.
+    raw->flags |= AVFMT_FLAG_NOPARSE | AVFMT_FLAG_NOFILLIN;
+    int r = avformat_open_input(&raw, localPath(path).constData(), nullptr, nullptr);
+    if (r < 0)
+        return withProblem(path, VideoText::tr("cannot open: %1").arg(avError(r)));
+    InputPtr input(raw);
+    PacketPtr packet(av_packet_alloc());
+    if (!packet)
+        return {};
+    while ((r = av_read_frame(raw, packet.get())) >= 0) {
+        // FFmpeg marks a packet the file ended inside of (or that failed its checks) corrupt.
+        const bool corrupt = packet->flags & AV_PKT_FLAG_CORRUPT;
+        const AVStream *stream = raw->streams[packet->stream_index];
+        const double at = packet->pts != AV_NOPTS_VALUE ? packet->pts * av_q2d(stream->time_base) : 0;
+        av_packet_unref(packet.get());
+        if (corrupt)
+            return withProblem(path,
+                VideoText::tr("the file is cut short or damaged: its data breaks off at %1 s")
+                    .arg(std::max(0.0, at), 0, 'f', 2));
+    }
+    if (r != AVERROR_EOF)
+        return withProblem(path, VideoText::tr("the file is cut short or damaged: %1").arg(avError(r)));
+    return {};
+}
+
 std::optional<QImage> readVideoFrame(const QString &path, int index, QString *error)
 {
     quietFfmpegLogs();

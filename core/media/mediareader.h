@@ -30,6 +30,11 @@ struct MediaInfo
 // On failure returns nullopt and sets *error to "<path>: <problem>".
 std::optional<MediaInfo> probeMedia(const QString &path, QString *error);
 
+// What is wrong with a media file whose packets run short of what its container says they
+// hold (a copy cut short, a download broken off): "<path>: <problem>", or empty when every
+// packet is whole. Reads the packets to the end without decoding them.
+QString mediaDamage(const QString &path);
+
 // Frame `index` (0-based, in display order) of a video file as an RGB32 image; nullopt with
 // *error "<path>: <problem>" when the file cannot be decoded or has fewer frames.
 std::optional<QImage> readVideoFrame(const QString &path, int index, QString *error);

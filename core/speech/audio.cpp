@@ -5,6 +5,7 @@
 #include "speech/audioconvert.h"
 #include "speech/wavfile.h"
 
+#include <QFile>
 #include <QFileInfo>
 #include <QSaveFile>
 
@@ -17,6 +18,13 @@ extern "C" {
 #include <vector>
 
 namespace toonface {
+
+namespace {
+
+// Less missing than this (10 ms) is a writer's rounding, not a lost part of the take.
+constexpr double kShortestCut = 0.01;
+
+} // namespace
 
 namespace detail {
 
@@ -124,6 +132,14 @@ AudioResult streamAudio(
         return fail(AudioStatus::Unreadable, problem);
     if (QFileInfo(path).size() == 0)
         return fail(AudioStatus::Empty, SoundText::tr("the file is empty"));
+    // A WAV file holding less than its header promises is damaged (copied or recorded only in
+    // part): its sound would be lip-synced as if it were the whole take.
+    if (const std::optional<WavExtent> extent = probeWavExtent(QFile::encodeName(path).constData());
+        extent && extent->promisedSeconds - extent->heldSeconds >= kShortestCut)
+        return fail(AudioStatus::Unreadable,
+            SoundText::tr("cut short (its header promises %1 s, it holds %2 s)")
+                .arg(extent->promisedSeconds, 0, 'f', 2)
+                .arg(extent->heldSeconds, 0, 'f', 2));
     // Plain PCM WAV is read here; everything else by FFmpeg, which gives the same samples.
     if (const std::optional<PlainWav> wav = probePlainWav(path))
         return decodePlainWav(path, *wav, sink, progress, cancel);

@@ -1,5 +1,6 @@
 #include "speech/wavheader.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -71,6 +72,39 @@ std::optional<PlainWav> probePlainWav(const char *localPath)
             w.dataOffset = body;
             w.dataBytes = length;
             return w;
+        }
+        at = body + length + (length & 1);
+    }
+    return std::nullopt;
+}
+
+std::optional<WavExtent> probeWavExtent(const char *localPath)
+{
+    std::unique_ptr<std::FILE, FileCloser> f(std::fopen(localPath, "rb"));
+    if (!f || std::fseek(f.get(), 0, SEEK_END) != 0)
+        return std::nullopt;
+    const std::int64_t size = std::ftell(f.get());
+    unsigned char riff[12];
+    if (size < 12 || std::fseek(f.get(), 0, SEEK_SET) != 0 || std::fread(riff, 1, 12, f.get()) != 12
+        || std::memcmp(riff, "RIFF", 4) != 0 || std::memcmp(riff + 8, "WAVE", 4) != 0)
+        return std::nullopt;
+    std::int64_t byteRate = 0;
+    for (std::int64_t at = 12; at + 8 <= size;) {
+        unsigned char head[8];
+        if (std::fseek(f.get(), long(at), SEEK_SET) != 0 || std::fread(head, 1, 8, f.get()) != 8)
+            return std::nullopt;
+        const std::int64_t length = le32(head + 4);
+        const std::int64_t body = at + 8;
+        if (std::memcmp(head, "fmt ", 4) == 0) {
+            unsigned char fmt[12];
+            if (length < 12 || std::fread(fmt, 1, 12, f.get()) != 12)
+                return std::nullopt;
+            byteRate = le32(fmt + 8);
+        } else if (std::memcmp(head, "data", 4) == 0) {
+            if (byteRate <= 0 || length == 0 || length == 0xffffffffLL)
+                return std::nullopt;
+            return WavExtent {
+                double(length) / double(byteRate), double(std::min(length, size - body)) / double(byteRate)};
         }
         at = body + length + (length & 1);
     }

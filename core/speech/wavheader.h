@@ -33,4 +33,17 @@ inline constexpr int kMinSpeechSampleRate = 4000;
 // path is in the file system's encoding.
 std::optional<PlainWav> probePlainWav(const char *localPath);
 
+// How long a WAV file's data chunk says its sound is, and how much of it the file holds: a
+// file copied or recorded only in part keeps the header of the whole.
+struct WavExtent
+{
+    double promisedSeconds = 0;
+    double heldSeconds = 0;
+};
+
+// The extent of any RIFF WAVE file whose header gives a data length and a byte rate (whatever
+// its codec); nullopt for anything else, or when the length is left open (0 or 0xffffffff, as
+// a stream writes it).
+std::optional<WavExtent> probeWavExtent(const char *localPath);
+
 } // namespace toonface

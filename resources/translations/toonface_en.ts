@@ -73,6 +73,16 @@
     </message>
 </context>
 <context>
+    <name>toonface::Questions</name>
+    <message numerus="yes">
+        <source>You moved %n point(s) by hand. Re-detecting replaces every point.</source>
+        <translation>
+            <numerusform>You moved %n point by hand. Re-detecting replaces every point.</numerusform>
+            <numerusform>You moved %n points by hand. Re-detecting replaces every point.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>toonface::Script</name>
     <message numerus="yes">
         <source>%1 (and %n more)</source>

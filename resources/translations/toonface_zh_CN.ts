@@ -195,6 +195,10 @@
         <source>No sound</source>
         <translation>无声音</translation>
     </message>
+    <message>
+        <source>%1 dB</source>
+        <translation>%1 dB</translation>
+    </message>
 </context>
 <context>
     <name>TimelineLayout</name>
@@ -940,10 +944,6 @@
         <translation>不支持的帧率 %1（应大于 0，最多 %2）</translation>
     </message>
     <message>
-        <source>the sound file does not exist</source>
-        <translation>声音文件不存在</translation>
-    </message>
-    <message>
         <source>cannot write: the folder %1 does not exist</source>
         <translation>无法写入：文件夹 %1 不存在</translation>
     </message>
@@ -1391,8 +1391,16 @@
         <translation>没有根元素</translation>
     </message>
     <message>
-        <source>layer file %1 is too large (more than 16 MB)</source>
-        <translation>图层文件 %1 太大（超过 16 MB）</translation>
+        <source>elements nested more than %1 deep</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>more than %1 elements</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the entity &amp;%1; is not defined</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1566,6 +1574,10 @@
     <message>
         <source>Import Video %1</source>
         <translation>导入视频 %1</translation>
+    </message>
+    <message>
+        <source>Use the clip&apos;s s&amp;ound, replacing the project&apos;s sound %1</source>
+        <translation>使用片段的声音，替换项目的声音 %1(&amp;O)</translation>
     </message>
 </context>
 <context>
@@ -2214,10 +2226,6 @@ Face lost in %5 frames%6</source>
 <context>
     <name>toonface::MainWindow</name>
     <message>
-        <source>Appearance</source>
-        <translation>外观</translation>
-    </message>
-    <message>
         <source>%1%</source>
         <translation>%1%</translation>
     </message>
@@ -2470,10 +2478,6 @@ The points are unchanged.</source>
         <translation>未保存的更改</translation>
     </message>
     <message>
-        <source>%1 has unsaved changes. Save them?</source>
-        <translation>%1 有未保存的更改。要保存吗？</translation>
-    </message>
-    <message>
         <source>&amp;Clear Menu</source>
         <translation>清除菜单(&amp;C)</translation>
     </message>
@@ -2508,6 +2512,18 @@ The points are unchanged.</source>
     <message>
         <source> · placed by hand</source>
         <translation> · 手动放置</translation>
+    </message>
+    <message>
+        <source>The cartoon made from %1 is not saved as a project yet. Save it?</source>
+        <translation>由 %1 制作的卡通尚未保存为项目。要保存吗？</translation>
+    </message>
+    <message>
+        <source>The project %1 has unsaved changes. Save them?</source>
+        <translation>项目 %1 有未保存的更改。要保存吗？</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>键盘快捷键(&amp;K)</translation>
     </message>
 </context>
 <context>
@@ -2838,6 +2854,10 @@ The points are unchanged.</source>
     <message>
         <source>Another face in the photo: click to use it instead</source>
         <translation>照片中的另一张脸：单击改用它</translation>
+    </message>
+    <message>
+        <source>Open a photo of a face (%1), or drop one here.</source>
+        <translation>打开一张人脸照片（%1），或将照片拖放到这里。</translation>
     </message>
 </context>
 <context>
@@ -3240,6 +3260,50 @@ The points are unchanged.</source>
         <source>&quot;cmn&quot;, &quot;en&quot; or &quot;&quot;</source>
         <translation>“cmn”、“en”或“”</translation>
     </message>
+    <message>
+        <source>%1 s is beyond the longest timeline Toonface keeps (%2 hours)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished">%1：%2</translation>
+    </message>
+    <message>
+        <source>photo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>sound</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>video</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>layer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>is a folder, not a file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>is a device, a pipe or a socket, not a file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>too large (more than %1 MB)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no space left on the disk (%1 KB free on %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the system gave no reason (is the disk full or removed?)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>toonface::Questions</name>
@@ -3290,6 +3354,56 @@ The points are unchanged.</source>
     <message>
         <source>Place average face</source>
         <translation>放置平均脸</translation>
+    </message>
+    <message>
+        <source>Files Outside the Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 uses files outside its folder. Its sound, photo, video and layers are read from there when you play or export it:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Project Changed on Disk</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 was changed by another program since you opened it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Overwriting it loses the other program&apos;s changes.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation type="unfinished">另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>&amp;Overwrite</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Re-detect Points</source>
+        <translation>重新检测特征点</translation>
+    </message>
+    <message numerus="yes">
+        <source>You moved %n point(s) by hand. Re-detecting replaces every point.</source>
+        <translation>
+            <numerusform>您手动移动了 %n 个特征点。重新检测会替换所有特征点。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Keep the points you moved, or replace them with the detected ones?</source>
+        <translation>保留您移动的特征点，还是用检测到的特征点替换？</translation>
+    </message>
+    <message>
+        <source>&amp;Keep My Points</source>
+        <translation>保留我的特征点(&amp;K)</translation>
+    </message>
+    <message>
+        <source>&amp;Replace Them</source>
+        <translation>替换它们(&amp;R)</translation>
     </message>
 </context>
 <context>
@@ -3377,6 +3491,14 @@ The points are unchanged.</source>
     <message>
         <source>%1: cannot create its folder</source>
         <translation>%1：无法创建其文件夹</translation>
+    </message>
+    <message>
+        <source>&amp;Replace the project&apos;s sound, %1 (%2 s)</source>
+        <translation>替换项目的声音 %1（%2 秒）(&amp;R)</translation>
+    </message>
+    <message>
+        <source>The timeline holds one sound: the syllables and mouth keys outside the new speech keep no sound under them. Undo brings the old sound back.</source>
+        <translation>时间轴只容纳一段声音：新语音以外的音节和口型关键帧将没有声音。撤销可找回原来的声音。</translation>
     </message>
 </context>
 <context>
@@ -3571,15 +3693,66 @@ The points are unchanged.</source>
     </message>
 </context>
 <context>
+    <name>toonface::ShortcutsDialog</name>
+    <message>
+        <source>Keyboard Shortcuts</source>
+        <translation>键盘快捷键</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>命令</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>按键</translation>
+    </message>
+    <message>
+        <source>Timeline (while it has focus)</source>
+        <translation>时间轴（获得焦点时）</translation>
+    </message>
+    <message>
+        <source>Set or insert a mouth shape</source>
+        <translation>设置或插入口型</translation>
+    </message>
+    <message>
+        <source>Zoom in, out, to fit</source>
+        <translation>放大、缩小、缩放至适合</translation>
+    </message>
+    <message>
+        <source>Zoom about the pointer</source>
+        <translation>以指针为中心缩放</translation>
+    </message>
+    <message>
+        <source>Ctrl+wheel</source>
+        <translation>Ctrl+滚轮</translation>
+    </message>
+    <message>
+        <source>Scroll the rows</source>
+        <translation>滚动各行</translation>
+    </message>
+    <message>
+        <source>Shift+wheel</source>
+        <translation>Shift+滚轮</translation>
+    </message>
+    <message>
+        <source>Waveform taller or shorter</source>
+        <translation>波形加高或降低</translation>
+    </message>
+    <message>
+        <source>Alt+wheel</source>
+        <translation>Alt+滚轮</translation>
+    </message>
+    <message>
+        <source>Edit a syllable&apos;s pinyin</source>
+        <translation>编辑音节的拼音</translation>
+    </message>
+    <message>
+        <source>Double-click</source>
+        <translation>双击</translation>
+    </message>
+</context>
+<context>
     <name>toonface::SoundFile</name>
-    <message>
-        <source>cannot read the audio file %1: %2</source>
-        <translation>无法读取音频文件 %1：%2</translation>
-    </message>
-    <message>
-        <source>the audio file %1 does not exist</source>
-        <translation>音频文件 %1 不存在</translation>
-    </message>
     <message>
         <source>cannot read the audio: %1</source>
         <translation>无法读取音频：%1</translation>
@@ -3607,10 +3780,6 @@ The points are unchanged.</source>
     <message>
         <source>cannot decode the audio: %1</source>
         <translation>无法解码音频：%1</translation>
-    </message>
-    <message>
-        <source>no such file</source>
-        <translation>文件不存在</translation>
     </message>
     <message>
         <source>the file is empty</source>
@@ -3699,6 +3868,22 @@ The points are unchanged.</source>
     <message>
         <source>cancelled</source>
         <translation>已取消</translation>
+    </message>
+    <message>
+        <source>holds no sound</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no room for a temporary copy of the sound: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the sound cannot be used: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cut short (its header promises %1 s, it holds %2 s)</source>
+        <translation>文件不完整（文件头记载 %1 秒，实际只有 %2 秒）</translation>
     </message>
 </context>
 <context>
@@ -3828,6 +4013,33 @@ The points are unchanged.</source>
     <message>
         <source>Camera photo saved as %1</source>
         <translation>摄像头照片已保存为 %1</translation>
+    </message>
+    <message>
+        <source>Say Text</source>
+        <translation>说出文字</translation>
+    </message>
+    <message>
+        <source>%1: done; the project&apos;s sound is unchanged.</source>
+        <translation>%1：完成；项目的声音没有更改。</translation>
+    </message>
+    <message>
+        <source>%1: the project&apos;s sound is now %2.</source>
+        <translation>%1：项目的声音现在是 %2。</translation>
+    </message>
+    <message>
+        <source>%1 replaced the project&apos;s sound %2 with %3 (Edit ▸ Undo brings it back).</source>
+        <translation>%1 用 %3 替换了项目的声音 %2（编辑 ▸ 撤销可找回）。</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::TimeReadout</name>
+    <message>
+        <source>The playhead&apos;s time and frame</source>
+        <translation>播放头的时间和帧</translation>
+    </message>
+    <message>
+        <source>%1:%2.%3  frame %4 / %5</source>
+        <translation>%1:%2.%3  第 %4 / %5 帧</translation>
     </message>
 </context>
 <context>
@@ -4009,6 +4221,18 @@ The points are unchanged.</source>
         <source>Edit Pinyin…</source>
         <translation>编辑拼音…</translation>
     </message>
+    <message>
+        <source>Taller Waveform</source>
+        <translation>加高波形</translation>
+    </message>
+    <message>
+        <source>Shorter Waveform</source>
+        <translation>降低波形</translation>
+    </message>
+    <message>
+        <source> (Alt+wheel)</source>
+        <translation>（Alt+滚轮）</translation>
+    </message>
 </context>
 <context>
     <name>toonface::VideoDock</name>
@@ -4116,10 +4340,6 @@ The points are unchanged.</source>
         <translation>%1：内存不足</translation>
     </message>
     <message>
-        <source>no such file</source>
-        <translation>文件不存在</translation>
-    </message>
-    <message>
         <source>not a video FFmpeg can read (%1)</source>
         <translation>不是 FFmpeg 能读取的视频（%1）</translation>
     </message>
@@ -4143,6 +4363,14 @@ The points are unchanged.</source>
         <source>out of memory</source>
         <translation>内存不足</translation>
     </message>
+    <message>
+        <source>the file is cut short or damaged: its data breaks off at %1 s</source>
+        <translation>文件不完整或已损坏：数据在 %1 秒处中断</translation>
+    </message>
+    <message>
+        <source>the file is cut short or damaged: %1</source>
+        <translation>文件不完整或已损坏：%1</translation>
+    </message>
 </context>
 <context>
     <name>toonface::VideoView</name>
@@ -4165,6 +4393,21 @@ The points are unchanged.</source>
     <message>
         <source>frame %1</source>
         <translation>第 %1 帧</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::WindowLayout</name>
+    <message>
+        <source>&amp;Reset Layout</source>
+        <translation>重置布局(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Put the panels back where they were at first and size them to the window</source>
+        <translation>将各面板放回最初的位置，并按窗口调整大小</translation>
+    </message>
+    <message>
+        <source>Appearance</source>
+        <translation>外观</translation>
     </message>
 </context>
 <context>
@@ -4548,6 +4791,14 @@ Every job of the editor, with no display.</source>
     <message>
         <source>unknown command &apos;%1&apos;; try &apos;toonface-cli --help&apos;</source>
         <translation>未知的命令“%1”；请尝试“toonface-cli --help”</translation>
+    </message>
+    <message>
+        <source>%1: interrupted; nothing was written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 uses files outside its folder: %2</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 </TS>

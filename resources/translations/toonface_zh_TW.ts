@@ -195,6 +195,10 @@
         <source>No sound</source>
         <translation>無聲音</translation>
     </message>
+    <message>
+        <source>%1 dB</source>
+        <translation>%1 dB</translation>
+    </message>
 </context>
 <context>
     <name>TimelineLayout</name>
@@ -940,10 +944,6 @@
         <translation>不支援的影格速率 %1（應大於 0，最多 %2）</translation>
     </message>
     <message>
-        <source>the sound file does not exist</source>
-        <translation>聲音檔案不存在</translation>
-    </message>
-    <message>
         <source>cannot write: the folder %1 does not exist</source>
         <translation>無法寫入：資料夾 %1 不存在</translation>
     </message>
@@ -1391,8 +1391,16 @@
         <translation>沒有根元素</translation>
     </message>
     <message>
-        <source>layer file %1 is too large (more than 16 MB)</source>
-        <translation>圖層檔案 %1 太大（超過 16 MB）</translation>
+        <source>elements nested more than %1 deep</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>more than %1 elements</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the entity &amp;%1; is not defined</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1566,6 +1574,10 @@
     <message>
         <source>Import Video %1</source>
         <translation>匯入影片 %1</translation>
+    </message>
+    <message>
+        <source>Use the clip&apos;s s&amp;ound, replacing the project&apos;s sound %1</source>
+        <translation>使用片段的聲音，取代專案的聲音 %1(&amp;O)</translation>
     </message>
 </context>
 <context>
@@ -2214,10 +2226,6 @@ Face lost in %5 frames%6</source>
 <context>
     <name>toonface::MainWindow</name>
     <message>
-        <source>Appearance</source>
-        <translation>外觀</translation>
-    </message>
-    <message>
         <source>%1%</source>
         <translation>%1%</translation>
     </message>
@@ -2470,10 +2478,6 @@ The points are unchanged.</source>
         <translation>未儲存的變更</translation>
     </message>
     <message>
-        <source>%1 has unsaved changes. Save them?</source>
-        <translation>%1 有未儲存的變更。要儲存嗎？</translation>
-    </message>
-    <message>
         <source>&amp;Clear Menu</source>
         <translation>清除選單(&amp;C)</translation>
     </message>
@@ -2508,6 +2512,18 @@ The points are unchanged.</source>
     <message>
         <source> · placed by hand</source>
         <translation> · 手動放置</translation>
+    </message>
+    <message>
+        <source>The cartoon made from %1 is not saved as a project yet. Save it?</source>
+        <translation>由 %1 製作的卡通尚未儲存為專案。要儲存嗎？</translation>
+    </message>
+    <message>
+        <source>The project %1 has unsaved changes. Save them?</source>
+        <translation>專案 %1 有尚未儲存的變更。要儲存嗎？</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>鍵盤快速鍵(&amp;K)</translation>
     </message>
 </context>
 <context>
@@ -2838,6 +2854,10 @@ The points are unchanged.</source>
     <message>
         <source>Another face in the photo: click to use it instead</source>
         <translation>照片中的另一張臉：按一下改用它</translation>
+    </message>
+    <message>
+        <source>Open a photo of a face (%1), or drop one here.</source>
+        <translation>開啟一張臉部相片（%1），或將相片拖放到這裡。</translation>
     </message>
 </context>
 <context>
@@ -3240,6 +3260,50 @@ The points are unchanged.</source>
         <source>&quot;cmn&quot;, &quot;en&quot; or &quot;&quot;</source>
         <translation>「cmn」、「en」或「」</translation>
     </message>
+    <message>
+        <source>%1 s is beyond the longest timeline Toonface keeps (%2 hours)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished">%1：%2</translation>
+    </message>
+    <message>
+        <source>photo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>sound</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>video</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>layer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>is a folder, not a file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>is a device, a pipe or a socket, not a file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>too large (more than %1 MB)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no space left on the disk (%1 KB free on %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the system gave no reason (is the disk full or removed?)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>toonface::Questions</name>
@@ -3290,6 +3354,56 @@ The points are unchanged.</source>
     <message>
         <source>Place average face</source>
         <translation>放置平均臉</translation>
+    </message>
+    <message>
+        <source>Files Outside the Project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 uses files outside its folder. Its sound, photo, video and layers are read from there when you play or export it:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Project Changed on Disk</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 was changed by another program since you opened it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Overwriting it loses the other program&apos;s changes.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation type="unfinished">另存新檔(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>&amp;Overwrite</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Re-detect Points</source>
+        <translation>重新偵測特徵點</translation>
+    </message>
+    <message numerus="yes">
+        <source>You moved %n point(s) by hand. Re-detecting replaces every point.</source>
+        <translation>
+            <numerusform>您手動移動了 %n 個特徵點。重新偵測會取代所有特徵點。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Keep the points you moved, or replace them with the detected ones?</source>
+        <translation>要保留您移動的特徵點，還是以偵測到的特徵點取代？</translation>
+    </message>
+    <message>
+        <source>&amp;Keep My Points</source>
+        <translation>保留我的特徵點(&amp;K)</translation>
+    </message>
+    <message>
+        <source>&amp;Replace Them</source>
+        <translation>取代它們(&amp;R)</translation>
     </message>
 </context>
 <context>
@@ -3377,6 +3491,14 @@ The points are unchanged.</source>
     <message>
         <source>%1: cannot create its folder</source>
         <translation>%1：無法建立其資料夾</translation>
+    </message>
+    <message>
+        <source>&amp;Replace the project&apos;s sound, %1 (%2 s)</source>
+        <translation>取代專案的聲音 %1（%2 秒）(&amp;R)</translation>
+    </message>
+    <message>
+        <source>The timeline holds one sound: the syllables and mouth keys outside the new speech keep no sound under them. Undo brings the old sound back.</source>
+        <translation>時間軸只容納一段聲音：新語音以外的音節與口型關鍵影格將沒有聲音。復原可找回原本的聲音。</translation>
     </message>
 </context>
 <context>
@@ -3571,15 +3693,66 @@ The points are unchanged.</source>
     </message>
 </context>
 <context>
+    <name>toonface::ShortcutsDialog</name>
+    <message>
+        <source>Keyboard Shortcuts</source>
+        <translation>鍵盤快速鍵</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>指令</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>按鍵</translation>
+    </message>
+    <message>
+        <source>Timeline (while it has focus)</source>
+        <translation>時間軸（取得焦點時）</translation>
+    </message>
+    <message>
+        <source>Set or insert a mouth shape</source>
+        <translation>設定或插入口型</translation>
+    </message>
+    <message>
+        <source>Zoom in, out, to fit</source>
+        <translation>放大、縮小、縮放至適合</translation>
+    </message>
+    <message>
+        <source>Zoom about the pointer</source>
+        <translation>以指標為中心縮放</translation>
+    </message>
+    <message>
+        <source>Ctrl+wheel</source>
+        <translation>Ctrl+滾輪</translation>
+    </message>
+    <message>
+        <source>Scroll the rows</source>
+        <translation>捲動各列</translation>
+    </message>
+    <message>
+        <source>Shift+wheel</source>
+        <translation>Shift+滾輪</translation>
+    </message>
+    <message>
+        <source>Waveform taller or shorter</source>
+        <translation>波形加高或減低</translation>
+    </message>
+    <message>
+        <source>Alt+wheel</source>
+        <translation>Alt+滾輪</translation>
+    </message>
+    <message>
+        <source>Edit a syllable&apos;s pinyin</source>
+        <translation>編輯音節的拼音</translation>
+    </message>
+    <message>
+        <source>Double-click</source>
+        <translation>按兩下</translation>
+    </message>
+</context>
+<context>
     <name>toonface::SoundFile</name>
-    <message>
-        <source>cannot read the audio file %1: %2</source>
-        <translation>無法讀取音訊檔案 %1：%2</translation>
-    </message>
-    <message>
-        <source>the audio file %1 does not exist</source>
-        <translation>音訊檔案 %1 不存在</translation>
-    </message>
     <message>
         <source>cannot read the audio: %1</source>
         <translation>無法讀取音訊：%1</translation>
@@ -3607,10 +3780,6 @@ The points are unchanged.</source>
     <message>
         <source>cannot decode the audio: %1</source>
         <translation>無法解碼音訊：%1</translation>
-    </message>
-    <message>
-        <source>no such file</source>
-        <translation>檔案不存在</translation>
     </message>
     <message>
         <source>the file is empty</source>
@@ -3699,6 +3868,22 @@ The points are unchanged.</source>
     <message>
         <source>cancelled</source>
         <translation>已取消</translation>
+    </message>
+    <message>
+        <source>holds no sound</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no room for a temporary copy of the sound: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the sound cannot be used: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cut short (its header promises %1 s, it holds %2 s)</source>
+        <translation>檔案不完整（標頭記載 %1 秒，實際只有 %2 秒）</translation>
     </message>
 </context>
 <context>
@@ -3828,6 +4013,33 @@ The points are unchanged.</source>
     <message>
         <source>Camera photo saved as %1</source>
         <translation>攝影機照片已儲存為 %1</translation>
+    </message>
+    <message>
+        <source>Say Text</source>
+        <translation>說出文字</translation>
+    </message>
+    <message>
+        <source>%1: done; the project&apos;s sound is unchanged.</source>
+        <translation>%1：完成；專案的聲音沒有變更。</translation>
+    </message>
+    <message>
+        <source>%1: the project&apos;s sound is now %2.</source>
+        <translation>%1：專案的聲音現在是 %2。</translation>
+    </message>
+    <message>
+        <source>%1 replaced the project&apos;s sound %2 with %3 (Edit ▸ Undo brings it back).</source>
+        <translation>%1 以 %3 取代了專案的聲音 %2（編輯 ▸ 復原可找回）。</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::TimeReadout</name>
+    <message>
+        <source>The playhead&apos;s time and frame</source>
+        <translation>播放頭的時間與影格</translation>
+    </message>
+    <message>
+        <source>%1:%2.%3  frame %4 / %5</source>
+        <translation>%1:%2.%3  影格 %4 / %5</translation>
     </message>
 </context>
 <context>
@@ -4009,6 +4221,18 @@ The points are unchanged.</source>
         <source>Edit Pinyin…</source>
         <translation>編輯拼音…</translation>
     </message>
+    <message>
+        <source>Taller Waveform</source>
+        <translation>加高波形</translation>
+    </message>
+    <message>
+        <source>Shorter Waveform</source>
+        <translation>減低波形</translation>
+    </message>
+    <message>
+        <source> (Alt+wheel)</source>
+        <translation>（Alt+滾輪）</translation>
+    </message>
 </context>
 <context>
     <name>toonface::VideoDock</name>
@@ -4116,10 +4340,6 @@ The points are unchanged.</source>
         <translation>%1：記憶體不足</translation>
     </message>
     <message>
-        <source>no such file</source>
-        <translation>檔案不存在</translation>
-    </message>
-    <message>
         <source>not a video FFmpeg can read (%1)</source>
         <translation>不是 FFmpeg 能讀取的影片（%1）</translation>
     </message>
@@ -4143,6 +4363,14 @@ The points are unchanged.</source>
         <source>out of memory</source>
         <translation>記憶體不足</translation>
     </message>
+    <message>
+        <source>the file is cut short or damaged: its data breaks off at %1 s</source>
+        <translation>檔案不完整或已損壞：資料在 %1 秒處中斷</translation>
+    </message>
+    <message>
+        <source>the file is cut short or damaged: %1</source>
+        <translation>檔案不完整或已損壞：%1</translation>
+    </message>
 </context>
 <context>
     <name>toonface::VideoView</name>
@@ -4165,6 +4393,21 @@ The points are unchanged.</source>
     <message>
         <source>frame %1</source>
         <translation>第 %1 個影格</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::WindowLayout</name>
+    <message>
+        <source>&amp;Reset Layout</source>
+        <translation>重設版面配置(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Put the panels back where they were at first and size them to the window</source>
+        <translation>將各面板放回最初的位置，並依視窗調整大小</translation>
+    </message>
+    <message>
+        <source>Appearance</source>
+        <translation>外觀</translation>
     </message>
 </context>
 <context>
@@ -4548,6 +4791,14 @@ Every job of the editor, with no display.</source>
     <message>
         <source>unknown command &apos;%1&apos;; try &apos;toonface-cli --help&apos;</source>
         <translation>不明的指令「%1」；請試試「toonface-cli --help」</translation>
+    </message>
+    <message>
+        <source>%1: interrupted; nothing was written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 uses files outside its folder: %2</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 </TS>

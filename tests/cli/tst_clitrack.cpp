@@ -1,4 +1,5 @@
 #include "export/videoencoder.h"
+#include "speech/audio.h"
 #include "talkingface.h"
 
 #include <QDir>
@@ -11,6 +12,8 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <cmath>
 
 using namespace toonface;
 
@@ -196,6 +199,18 @@ private Q_SLOTS:
             QStringLiteral("magic")}
                                 << 2 << QStringLiteral("magic");
         QTest::newRow("no video") << QStringList {QStringLiteral("track")} << 2 << QStringLiteral("VIDEO");
+        // A recording whose header promises 2 s and which holds 1.25 s.
+        const QString cutWav = m_dir.filePath(QStringLiteral("cut.wav"));
+        QTest::newRow("cut recording") << QStringList {QStringLiteral("lipsync"), QStringLiteral("--audio"), cutWav,
+            QStringLiteral("--script"), m_dir.filePath(QStringLiteral("hello.txt"))}
+                                       << 3
+                                       << cutWav
+                + QStringLiteral(": cut short (its header promises 2.00 s, it holds 1.25 s)");
+        if (QFileInfo::exists(kGrid)) {
+            const QString cut = m_dir.filePath(QStringLiteral("cut.mpg"));
+            QTest::newRow("cut clip") << QStringList {QStringLiteral("track"), cut} << 3
+                                      << cut + QStringLiteral(": the file is cut short or damaged");
+        }
     }
 
     void badClipsAndUsage()
@@ -216,6 +231,31 @@ private Q_SLOTS:
                 return image;
             });
             QVERIFY2(error.isEmpty(), qPrintable(error));
+        }
+        const QString cutWav = m_dir.filePath(QStringLiteral("cut.wav"));
+        if (!QFileInfo::exists(cutWav)) {
+            Audio tone;
+            tone.samples.resize(2 * tone.sampleRate);
+            for (qsizetype i = 0; i < tone.samples.size(); ++i)
+                tone.samples[i] = float(0.3 * std::sin(2 * M_PI * 300 * double(i) / tone.sampleRate));
+            QString error;
+            QVERIFY2(writeAudio(cutWav, tone, &error), qPrintable(error));
+            QFile wav(cutWav);
+            QVERIFY(wav.open(QIODevice::ReadWrite));
+            const qsizetype header = wav.readAll().indexOf("data") + 8;
+            QVERIFY(wav.resize(header + qsizetype(1.25 * tone.sampleRate) * 2));
+        }
+        QFile script(m_dir.filePath(QStringLiteral("hello.txt")));
+        QVERIFY(script.open(QIODevice::WriteOnly));
+        script.write("你好\n");
+        script.close();
+        const QString cutClip = m_dir.filePath(QStringLiteral("cut.mpg"));
+        if (QFileInfo::exists(kGrid) && !QFileInfo::exists(cutClip)) {
+            QFile grid(kGrid);
+            QVERIFY(grid.open(QIODevice::ReadOnly));
+            QFile cut(cutClip);
+            QVERIFY(cut.open(QIODevice::WriteOnly));
+            cut.write(grid.read(2000));
         }
         const Run r = cli(args);
         QCOMPARE(r.code, code);

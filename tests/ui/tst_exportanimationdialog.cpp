@@ -222,6 +222,9 @@ private Q_SLOTS:
         QVERIFY2(status.contains(QStringLiteral("out.gif")) && status.contains(QStringLiteral("does not exist")),
             qPrintable(status));
         QCOMPARE(entries(dir), QStringList());
+        // Another format: the message about the GIF goes.
+        choose(dialog.findChild<QComboBox *>(QStringLiteral("format")), AnimationFormat::Mp4);
+        QCOMPARE(dialog.findChild<QLabel *>(QStringLiteral("status"))->text(), QString());
     }
 
     // Closing the dialog while it exports cancels the export first.

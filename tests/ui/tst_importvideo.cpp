@@ -193,6 +193,24 @@ private Q_SLOTS:
         QCOMPARE(doc.animation(), imported);
     }
 
+    void projectSoundIsKeptUnlessAsked()
+    {
+        if (m_talking.isEmpty())
+            QSKIP("astronaut.png is not installed (package python3-skimage)");
+        Document doc;
+        fillBusy(doc);
+        Animation a = doc.animation();
+        a.timeline.setAudio(AudioClip {m_dir.filePath(QStringLiteral("recording.wav")), 0, 6.0});
+        doc.changeAnimation(a, QStringLiteral("sound"));
+        ImportVideoDialog dialog(&doc, 0.0);
+        dialog.show();
+        QVERIFY(dialog.openClip(m_talking));
+        auto *useSound = child<QCheckBox>(dialog, "useSound");
+        QVERIFY(useSound->isEnabled()); // the clip has sound
+        QVERIFY(!useSound->isChecked()); // but the project's is not replaced without a word
+        QVERIFY2(useSound->text().contains(QStringLiteral("recording.wav")), qPrintable(useSound->text()));
+    }
+
     void snappedMouthGivesMouthKeys()
     {
         if (m_talking.isEmpty())

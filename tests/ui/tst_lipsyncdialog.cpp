@@ -265,6 +265,43 @@ private Q_SLOTS:
         QCOMPARE(doc.undoStack()->count(), 0);
     }
 
+    void recordingCutShortIsNamed()
+    {
+        // A 6 s recording copied only in part: its header still promises 6 s.
+        const QString whole
+            = spokenRecording(QStringLiteral("我们明天早上八点在学校门口见面"), QStringLiteral("whole.wav"));
+        QVERIFY(!whole.isEmpty());
+        const QString cut = m_dir.filePath(QStringLiteral("cut.wav"));
+        QFile in(whole);
+        QVERIFY(in.open(QIODevice::ReadOnly));
+        const QByteArray bytes = in.readAll();
+        const qsizetype header = bytes.indexOf("data") + 8;
+        const double promised = double(bytes.size() - header) / (kSpeechSampleRate * 2);
+        const qsizetype kept = header + qsizetype(0.6 * double(bytes.size() - header)) / 2 * 2;
+        QFile out(cut);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(bytes.left(kept));
+        out.close();
+
+        Document doc;
+        fillBusy(doc);
+        const Animation before = doc.animation();
+        LipSyncDialog dialog(&doc);
+        dialog.show();
+        fillIn(dialog, cut, QStringLiteral("我们明天早上八点在学校门口见面"));
+        QSignalSpy failed(&dialog, &LipSyncDialog::failed);
+        QVERIFY(click(&dialog, "start"));
+        QVERIFY(failed.wait(kAlignTimeoutMs));
+        grab(&dialog, QStringLiteral("lipsync-cut-short"));
+        const QString expected = QStringLiteral("cut short (its header promises %1 s, it holds %2 s)")
+                                     .arg(promised, 0, 'f', 2)
+                                     .arg(double(kept - header) / (kSpeechSampleRate * 2), 0, 'f', 2);
+        QVERIFY2(dialog.message().contains(cut), qPrintable(dialog.message()));
+        QVERIFY2(dialog.message().contains(expected), qPrintable(dialog.message() + QStringLiteral(" / ") + expected));
+        QVERIFY(doc.animation() == before);
+        QCOMPARE(doc.undoStack()->count(), 0);
+    }
+
     void scriptIsCheckedAsItIsTyped()
     {
         Document doc;

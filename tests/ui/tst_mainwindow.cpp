@@ -342,9 +342,21 @@ private Q_SLOTS:
         openProject();
         m_window->document()->movePoint(0, QPointF(10, 10), true);
 
+        // The question names the project, not the photo (which is never written).
+        auto question = std::make_shared<QString>();
+        QTimer reader;
+        reader.setInterval(10);
+        connect(&reader, &QTimer::timeout, this, [question] {
+            if (auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget()))
+                *question = box->text();
+        });
+        reader.start();
         auto answered = answerNextMessageBox(QStringLiteral("Cancel"));
         QVERIFY(!m_window->close());
         QVERIFY(*answered);
+        reader.stop();
+        QVERIFY2(question->contains(QStringLiteral("project %1").arg(QFileInfo(m_projectPath).fileName())),
+            qPrintable(*question));
         QVERIFY(m_window->isVisible());
 
         answered = answerNextMessageBox(QStringLiteral("Discard"));
@@ -909,6 +921,19 @@ private Q_SLOTS:
         QVERIFY(m_window->isBusy());
         QTRY_VERIFY_WITH_TIMEOUT(done.size() == 2, 120000);
         QCOMPARE(doc->undoStack()->count(), 3);
+        QCOMPARE(doc->face().point(i), placed);
+
+        // Re-detect Points over a point moved by hand asks first: Cancel does nothing,
+        // Keep My Points keeps it.
+        auto answered = answerNextMessageBox(QStringLiteral("Cancel"));
+        action("actionRedetect")->trigger();
+        QVERIFY(*answered);
+        QVERIFY(!m_window->isBusy());
+        QCOMPARE(doc->undoStack()->count(), 3);
+        answered = answerNextMessageBox(QStringLiteral("Keep My Points"));
+        action("actionRedetect")->trigger();
+        QVERIFY(*answered);
+        QTRY_VERIFY_WITH_TIMEOUT(done.size() == 3, 120000);
         QCOMPARE(doc->face().point(i), placed);
     }
 };

@@ -130,6 +130,23 @@ private Q_SLOTS:
         delete m_doc;
     }
 
+    void emptyViewSaysHowToGetAPhoto()
+    {
+        // Ink across the middle of the empty view: the hint's text.
+        Document empty;
+        PhotoView view(&empty);
+        view.resize(600, 400);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        const QImage image = view.viewport()->grab().toImage();
+        const QRgb background = image.pixel(image.width() / 2, 60);
+        int ink = 0;
+        for (int y = image.height() / 2 - 8; y < image.height() / 2 + 8; ++y)
+            for (int x = 40; x < image.width() - 40; ++x)
+                ink += image.pixel(x, y) != background ? 1 : 0;
+        QVERIFY2(ink > 50, qPrintable(QString::number(ink)));
+    }
+
     void handlesSitOnThePoints()
     {
         for (int i = 0; i < kPointCount; ++i) {

@@ -5,6 +5,7 @@
 #include "playback/playbackclock.h"
 #include "playback/playbackcontroller.h"
 #include "playback/playhead.h"
+#include "playback/timereadout.h"
 #include "speech/audio.h"
 #include "views/previewview.h"
 
@@ -91,6 +92,22 @@ class TestPlayback : public QObject
     int frame() const { return m_playhead->frame(m_doc->timeline().frameRate()); }
 
 private Q_SLOTS:
+    void readoutShowsTimeAndFrame()
+    {
+        Document doc;
+        Animation a;
+        a.timeline.setFrameRate(25);
+        a.timeline.addMouthKey({6.0, MouthShape::M, 1.0, 0.0});
+        doc.changeAnimation(a, QStringLiteral("six seconds"));
+        Playhead playhead;
+        TimeReadout readout(&doc, &playhead);
+        QCOMPARE(readout.text(), QStringLiteral("0:00.00  frame 1 / 150"));
+        playhead.setTime(1.24); // what Home, End, the arrows and playing do
+        QCOMPARE(readout.text(), QStringLiteral("0:01.24  frame 32 / 150"));
+        playhead.setTime(65.5);
+        QVERIFY2(readout.text().startsWith(QStringLiteral("1:05.50  frame 1638")), qPrintable(readout.text()));
+    }
+
     void init()
     {
         m_doc = new Document;

@@ -1,10 +1,12 @@
 #include "dialogfixture.h"
 #include "uifixture.h"
 
+#include "dialogs/languagebox.h"
 #include "dialogs/saytextdialog.h"
 #include "document/document.h"
 #include "speech/tts.h"
 
+#include <QCheckBox>
 #include <QFileInfo>
 #include <QLabel>
 #include <QLineEdit>
@@ -98,6 +100,39 @@ private Q_SLOTS:
         QCOMPARE(doc.undoStack()->count(), 1);
         doc.undoStack()->undo();
         QVERIFY(doc.animation() == before);
+    }
+
+    void soundAlreadyThereIsReplacedOnlyWhenAsked()
+    {
+        Document doc;
+        fixture::fill(doc);
+        const QString recording = writeTone(m_dir.filePath(QStringLiteral("recording.wav")), 6.0);
+        QVERIFY(!recording.isEmpty());
+        Animation a = doc.animation();
+        a.timeline.setAudio(AudioClip {recording, 0, 6.0});
+        a.scriptLanguage = QStringLiteral("cmn");
+        doc.changeAnimation(a, QStringLiteral("setup"));
+        doc.undoStack()->clear();
+
+        SayTextDialog dialog(&doc);
+        dialog.show();
+        // The language is read from the new text, not taken from the last script's.
+        QCOMPARE(dialog.findChild<LanguageBox *>(QStringLiteral("language"))->language(), Language::Auto);
+        type(dialog, QStringLiteral("Hello there"));
+        auto *replace = dialog.findChild<QCheckBox *>(QStringLiteral("replaceSound"));
+        QVERIFY(replace);
+        QVERIFY(replace->text().contains(QStringLiteral("recording.wav")));
+        QVERIFY(!replace->isChecked());
+        QVERIFY(!click(&dialog, "start")); // not without the user's word
+        QTest::mouseClick(replace, Qt::LeftButton, {}, QPoint(8, replace->height() / 2));
+        QVERIFY(replace->isChecked());
+        QSignalSpy applied(&dialog, &SayTextDialog::applied);
+        QSignalSpy failed(&dialog, &SayTextDialog::failed);
+        QVERIFY(click(&dialog, "start"));
+        QVERIFY2(applied.wait(kSpeakTimeoutMs) || !failed.isEmpty(), qPrintable(dialog.message()));
+        QVERIFY2(failed.isEmpty(), qPrintable(dialog.message()));
+        QCOMPARE(doc.project().scriptLanguage, QStringLiteral("en"));
+        QVERIFY(doc.timeline().audio()->path != recording);
     }
 
     void unsavedProjectSpeaksBesideThePhoto()

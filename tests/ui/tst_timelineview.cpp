@@ -6,8 +6,10 @@
 #include "timeline/shapepalette.h"
 #include "timeline/timelineview.h"
 #include "timeline/timelinewidget.h"
+#include "views/tonemarkfont.h"
 
 #include <QApplication>
+#include <QFontDatabase>
 #include <QLineEdit>
 #include <QMimeData>
 #include <QTest>
@@ -390,29 +392,144 @@ private Q_SLOTS:
         QVERIFY(m_view->xOf(m_doc->timeline().duration()) <= viewport()->width());
     }
 
-    void waveformIsPainted()
+    void playheadMovedByAKeyStaysInSight()
     {
+        m_view->setPixelsPerSecond(2000, TimelineLayout::kLabelWidth); // about half a second in sight
+        QVERIFY(m_view->xOf(2.5) > viewport()->width());
+        m_playhead->setTime(2.5); // what End or the arrows do
+        QVERIFY2(m_view->xOf(2.5) >= TimelineLayout::kLabelWidth && m_view->xOf(2.5) <= viewport()->width(),
+            qPrintable(QString::number(m_view->xOf(2.5))));
+        m_playhead->setTime(0); // Home
+        QCOMPARE(m_view->timelineLayout().scrollTime(), 0.0);
+    }
+
+    void newSoundIsShownWhole()
+    {
+        m_view->setPixelsPerSecond(2000, TimelineLayout::kLabelWidth);
         QTemporaryDir dir;
-        const QString path = dir.filePath(QStringLiteral("tone.wav"));
+        waveformHeight(0.5, dir);
+        QVERIFY2(m_view->xOf(3.0) <= viewport()->width(), qPrintable(QString::number(m_view->xOf(3.0))));
+        QCOMPARE(m_view->timelineLayout().scrollTime(), 0.0);
+    }
+
+    void emptyProjectShowsSecondsNotMinutes()
+    {
+        Document empty;
+        Playhead playhead;
+        TimelineWidget widget(&empty, &playhead);
+        widget.resize(60, 300); // laid out narrow first, as a dock is
+        widget.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&widget));
+        widget.resize(1200, 300);
+        QTest::qWait(20);
+        const double shown = widget.view()->timelineLayout().timeAt(widget.view()->viewport()->width());
+        QVERIFY2(shown < 10, qPrintable(QString::number(shown)));
+    }
+
+    // The ink in the middle of the pinyin under syllable `index`: the tone-marked vowel of "hǎo".
+    int pinyinMiddleInk(int index)
+    {
+        const QImage image = viewport()->grab().toImage();
+        const QRectF inner = m_view->itemRect({ItemKind::Syllable, index}).adjusted(3, 1, -3, -1);
+        const int x = int(inner.center().x());
+        int ink = 0;
+        for (int y = int(inner.top() + inner.height() * 0.6); y < int(inner.bottom()); ++y)
+            for (int dx = -2; dx <= 2; ++dx)
+                ink += qGray(image.pixel(x + dx, y)) > 110 ? 1 : 0;
+        return ink;
+    }
+
+    void thirdToneIsDrawnInAChineseLocaleFont()
+    {
+        // The sans serif fontconfig gives zh_TW here claims ǎ ǒ ǐ ǔ and draws nothing for them.
+        const QString family = QStringLiteral("WenQuanYi Micro Hei");
+        if (!QFontDatabase::families().contains(family))
+            QSKIP("WenQuanYi Micro Hei is not installed");
+        const QFont before = QApplication::font();
+        QFont chinese(family);
+        chinese.setPointSizeF(before.pointSizeF());
+        QVERIFY(!drawsToneMarks(chinese));
+        QApplication::setFont(chinese);
+        ensureToneMarks();
+        QVERIFY(drawsToneMarks(QApplication::font()));
+        QCOMPARE(QApplication::font().families().value(1), family); // Chinese still drawn in it
+        init();
+        QCOMPARE(m_doc->animation().syllables[1].tone, 3);
+        const int ink = pinyinMiddleInk(1);
+        QApplication::setFont(before);
+        QVERIFY2(ink >= 3, qPrintable(QString::number(ink)));
+    }
+
+    // Sets a sine of `amplitude` (of full scale) as the project's sound and returns how many
+    // pixels of the waveform row are lit in the column at 1.5 s.
+    int waveformHeight(double amplitude, const QTemporaryDir &dir)
+    {
+        const QString path = dir.filePath(QStringLiteral("tone%1.wav").arg(amplitude));
         Audio audio;
         audio.samples.resize(3 * audio.sampleRate);
         for (qsizetype i = 0; i < audio.samples.size(); ++i)
-            audio.samples[i] = float(0.8 * std::sin(2 * M_PI * 220 * double(i) / audio.sampleRate));
+            audio.samples[i] = float(amplitude * std::sin(2 * M_PI * 220 * double(i) / audio.sampleRate));
         QString error;
-        QVERIFY2(writeAudio(path, audio, &error), qPrintable(error));
+        if (!writeAudio(path, audio, &error))
+            qFatal("%s", qPrintable(error));
         Animation a = m_doc->animation();
         a.timeline.setAudio(AudioClip {path, 0, 3});
         m_doc->changeAnimation(a, QStringLiteral("sound"));
         m_view->waveform()->waitForFinished();
-        QVERIFY2(!m_view->waveform()->peaks().isEmpty(), qPrintable(m_view->waveform()->error()));
+        if (m_view->waveform()->peaks().isEmpty())
+            qFatal("%s", qPrintable(m_view->waveform()->error()));
+        return litHeight();
+    }
+
+    int litHeight()
+    {
         const QImage image = viewport()->grab().toImage();
-        // The row is drawn from the peaks: near full height at 0.8 of full scale.
         const QRect row = m_view->timelineLayout().rowRect(RowKind::Waveform, viewport()->width());
         const int x = int(m_view->xOf(1.5));
         int lit = 0;
         for (int y = row.top(); y <= row.bottom(); ++y)
             lit += qGreen(image.pixel(x, y)) > 150 ? 1 : 0;
-        QVERIFY2(lit > row.height() / 2, qPrintable(QString::number(lit)));
+        return lit;
+    }
+
+    void waveformIsPainted()
+    {
+        QTemporaryDir dir;
+        const int lit = waveformHeight(0.8, dir);
+        // The row is drawn from the peaks: near full height at 0.8 of full scale.
+        const int rowHeight = m_view->timelineLayout().rowRect(RowKind::Waveform, viewport()->width()).height();
+        QVERIFY2(lit > rowHeight / 2, qPrintable(QString::number(lit)));
+    }
+
+    void quietRecordingIsDrawnAtItsLoudness()
+    {
+        // An ordinary speech recording peaking at -26.5 dBFS is drawn as tall as a loud one.
+        QTemporaryDir dir;
+        const int loud = waveformHeight(0.8, dir);
+        const int quiet = waveformHeight(std::pow(10.0, -26.5 / 20), dir);
+        const int rowHeight = m_view->timelineLayout().rowRect(RowKind::Waveform, viewport()->width()).height();
+        QVERIFY2(quiet > rowHeight / 2, qPrintable(QStringLiteral("%1 of %2 px").arg(quiet).arg(rowHeight)));
+        QVERIFY2(std::abs(quiet - loud) <= 2, qPrintable(QStringLiteral("%1 vs %2 px").arg(quiet).arg(loud)));
+        QVERIFY(m_view->waveformGain() > 15);
+    }
+
+    void waveformZoomsVertically()
+    {
+        QTemporaryDir dir;
+        const int normal = waveformHeight(std::pow(10.0, -26.5 / 20), dir);
+        m_widget->timelineActions().waveformShorter->trigger();
+        m_widget->timelineActions().waveformShorter->trigger();
+        const int shorter = litHeight();
+        QVERIFY2(shorter < normal * 0.6, qPrintable(QStringLiteral("%1 vs %2 px").arg(shorter).arg(normal)));
+        // Alt+wheel up over the row brings it back.
+        const QPoint pos = at(1.5, RowKind::Waveform);
+        for (int i = 0; i < 2; ++i) {
+            QWheelEvent wheel(pos, viewport()->mapToGlobal(pos), {}, QPoint(0, 120), Qt::NoButton, Qt::AltModifier,
+                Qt::NoScrollPhase, false);
+            QApplication::sendEvent(viewport(), &wheel);
+        }
+        QCOMPARE(m_view->waveformZoom(), 1.0);
+        QCOMPARE(litHeight(), normal);
     }
 };
 

@@ -11,6 +11,7 @@
 #include "window/studio.h"
 
 #include <QAction>
+#include <QDockWidget>
 #include <QMainWindow>
 #include <QMenu>
 #include <QMenuBar>
@@ -232,6 +233,8 @@ private Q_SLOTS:
         Studio studio(&doc, &window);
         PreviewView preview(&doc, studio.playhead());
         window.setCentralWidget(&preview);
+        auto *appearance = new QDockWidget(QStringLiteral("Appearance"), &window);
+        window.addDockWidget(Qt::RightDockWidgetArea, appearance);
         studio.install(&preview, nullptr);
         window.show();
         QVERIFY(studio.importVideoAction());
@@ -243,6 +246,8 @@ private Q_SLOTS:
         QVERIFY(dock->isHidden());
         setClip(doc, VideoClip {m_grey, 0.0, kFrames / kFps, kFps});
         QVERIFY(!dock->isHidden());
+        // A tab with the docks on the right, not a column that squeezes the photo and cartoon.
+        QVERIFY(window.tabifiedDockWidgets(dock).contains(appearance));
         // It follows the studio's playhead.
         studio.playhead()->setTime(timeOf(6) - kOffset);
         QVERIFY(waitShown(*dock->view(), 6));

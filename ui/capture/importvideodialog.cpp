@@ -242,7 +242,12 @@ bool ImportVideoDialog::openClip(const QString &path)
         }
     }
     m_useSound->setEnabled(ok && m_decoder->hasAudio());
-    m_useSound->setChecked(ok && m_decoder->hasAudio());
+    // The timeline holds one sound: one there already is replaced only when the user says so.
+    const std::optional<AudioClip> &sound = m_document->timeline().audio();
+    m_useSound->setText(sound
+            ? tr("Use the clip's s&ound, replacing the project's sound %1").arg(QFileInfo(sound->path).fileName())
+            : tr("Use the clip's s&ound as the project's sound"));
+    m_useSound->setChecked(ok && m_decoder->hasAudio() && !sound);
     updateNeutralLabel();
     updateButtons();
     return ok;

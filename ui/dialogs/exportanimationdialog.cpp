@@ -292,6 +292,12 @@ void ExportAnimationDialog::formatChanged()
     const QString renamed = pathForFormat(m_path->text(), format);
     if (renamed != m_path->text())
         m_path->setText(renamed);
+    // The last export's outcome was of another file: it would read as this one's.
+    if (!isRunning()) {
+        m_status->clear();
+        m_progress->setValue(0);
+        m_show->setVisible(false);
+    }
     m_size->setEnabled(isRasterFormat(format));
     updateSummary();
 }

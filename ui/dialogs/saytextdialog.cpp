@@ -9,6 +9,7 @@
 #include "document/companionfile.h"
 #include "document/document.h"
 
+#include <QCheckBox>
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
@@ -94,6 +95,20 @@ SayTextDialog::SayTextDialog(Document *document, QWidget *parent)
     soundBox->addLayout(soundRow);
     soundBox->addWidget(m_soundNote);
 
+    const std::optional<AudioClip> &sound = document->timeline().audio();
+    if (sound) {
+        m_replaceSound = new QCheckBox(tr("&Replace the project's sound, %1 (%2 s)")
+                                           .arg(QFileInfo(sound->path).fileName())
+                                           .arg(sound->duration, 0, 'f', 1),
+            this);
+        m_replaceSound->setObjectName(QStringLiteral("replaceSound"));
+        m_replaceSound->setChecked(false);
+        m_replaceSound->setToolTip(tr("The timeline holds one sound: the syllables and mouth keys outside the new "
+                                      "speech keep no sound under them. Undo brings the old sound back."));
+        soundBox->addWidget(m_replaceSound);
+        connect(m_replaceSound, &QCheckBox::toggled, this, &SayTextDialog::updateButtons);
+    }
+
     auto *form = new QFormLayout;
     form->addRow(tr("&Text:"), m_text);
     form->addRow(tr("&Language:"), m_language);
@@ -103,14 +118,19 @@ SayTextDialog::SayTextDialog(Document *document, QWidget *parent)
     static_cast<QLabel *>(form->labelForField(voiceRow))->setBuddy(m_rate);
     static_cast<QLabel *>(form->labelForField(soundBox))->setBuddy(m_soundPath);
 
-    setBody(intro, form, {m_text, m_language, m_rate, m_pitch, m_offset, m_soundPath, choose});
+    QList<QWidget *> inputs {m_text, m_language, m_rate, m_pitch, m_offset, m_soundPath, choose};
+    if (m_replaceSound)
+        inputs.append(m_replaceSound);
+    setBody(intro, form, inputs);
 
     connect(m_text, &QPlainTextEdit::textChanged, this, &SayTextDialog::updateButtons);
     connect(m_dictionary, &DictionaryWarmUp::loaded, this, &SayTextDialog::updateButtons);
     connect(m_soundPath, &QLineEdit::textChanged, this, &SayTextDialog::updateButtons);
     connect(choose, &QPushButton::clicked, this, &SayTextDialog::chooseSoundPath);
 
-    m_language->setLanguageCode(document->project().scriptLanguage);
+    // A new text, not the last script: its language is read from it (Chinese characters, pinyin,
+    // Zhuyin or English).
+    m_language->setLanguage(Language::Auto);
 }
 
 SayTextDialog::~SayTextDialog() = default;
@@ -131,7 +151,8 @@ void SayTextDialog::chooseSoundPath()
 bool SayTextDialog::canStart() const
 {
     // (The character dictionary started loading in the background when the dialog opened.)
-    return !m_text->toPlainText().trimmed().isEmpty() && !m_soundPath->text().trimmed().isEmpty();
+    return !m_text->toPlainText().trimmed().isEmpty() && !m_soundPath->text().trimmed().isEmpty()
+        && (!m_replaceSound || m_replaceSound->isChecked());
 }
 
 std::optional<SpeechTask::Job> SayTextDialog::prepare()

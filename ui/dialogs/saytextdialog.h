@@ -2,6 +2,7 @@
 
 #include "dialogs/speechdialog.h"
 
+class QCheckBox;
 class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
@@ -53,6 +54,9 @@ private:
     QLineEdit *m_soundPath;
     DictionaryWarmUp *m_dictionary;
     QLabel *m_soundNote;
+    // With a sound in the project already: the user's consent to replace it (the timeline holds
+    // one sound), unticked at first so that nothing is lost without a word.
+    QCheckBox *m_replaceSound = nullptr;
     // What the running job was started with.
     QString m_runPath;
     QString m_runText;

@@ -7,6 +7,7 @@
 #include <QPainter>
 #include <QPainterPath>
 
+#include <algorithm>
 #include <cmath>
 
 namespace toonface {
@@ -77,6 +78,12 @@ void paintLabels(QPainter &p, const TimelineScene &s)
         }
         p.setPen(s.focusRow == r.kind ? kText : kDimText);
         p.drawText(label.adjusted(10, 0, -4, 0), Qt::AlignVCenter | Qt::AlignLeft, rowTitle(r.kind));
+        if (r.kind == RowKind::Waveform && s.peaks && !s.peaks->isEmpty() && std::abs(s.waveformGain - 1) > 0.01) {
+            // How much the drawing is magnified, so a quiet recording is not taken for a loud one.
+            p.setPen(kDimText);
+            p.drawText(label.adjusted(10, 0, -4, -3), Qt::AlignBottom | Qt::AlignLeft,
+                QObject::tr("%1 dB").arg(QString::asprintf("%+.0f", 20 * std::log10(s.waveformGain))));
+        }
         p.setPen(kGrid);
         p.drawLine(label.bottomLeft(), label.bottomRight());
     }
@@ -165,7 +172,9 @@ void paintWaveform(QPainter &p, const TimelineScene &s)
     lines.reserve(std::max(0, x1 - x0 + 1));
     for (int x = x0; x <= x1; ++x) {
         const double a = l.timeAt(x) - audio->offset, b = l.timeAt(x + 1) - audio->offset;
-        const auto [lo, hi] = s.peaks->range(a, b);
+        const auto [rawLo, rawHi] = s.peaks->range(a, b);
+        const double lo = std::clamp(rawLo * s.waveformGain, -1.0, 1.0);
+        const double hi = std::clamp(rawHi * s.waveformGain, -1.0, 1.0);
         lines.append(QLineF(x + 0.5, mid - hi * half, x + 0.5, mid - lo * half + 0.01));
     }
     p.drawLines(lines);

@@ -26,6 +26,7 @@ struct TimelineScene
     const Selection *selection = nullptr;
     const WaveformPeaks *peaks = nullptr;
     QString waveformStatus; // shown in the waveform row when there are no peaks
+    double waveformGain = 1; // sample values are multiplied by this before drawing (clipped at full height)
     const MouthIcons *icons = nullptr;
     double playhead = 0;
     std::optional<RowKind> focusRow;

@@ -30,6 +30,13 @@ constexpr double kEmotionLength = 2.0; // seconds of a preset dropped with no ra
 // about half a second to show one): a preset dropped on it starts where it was dropped.
 constexpr double kShortestEmotionRange = 0.5;
 constexpr double kHeadMoveLength = 1.5;
+// Viewport widths (time area) narrower than this are a layout in progress, not one to fit to.
+constexpr int kNarrowestFit = 200;
+// The recording's loudness is drawn at this share of the row's half height.
+constexpr double kWaveformFill = 0.9;
+// Quieter than this (-40 dBFS) is drawn as if it were this loud: hiss or a silent file is not
+// blown up to fill the row.
+constexpr double kQuietestShown = 0.01;
 
 int nextMergeId()
 {
@@ -101,6 +108,7 @@ TimelineScene TimelineView::scene() const
     s.layout = &m_layout;
     s.selection = &m_selection;
     s.peaks = &m_waveform.peaks();
+    s.waveformGain = waveformGain();
     s.waveformStatus = m_waveform.isLoading() ? tr("Reading the sound…") : m_waveform.error();
     s.icons = &m_icons;
     s.playhead = m_playhead->time();
@@ -121,6 +129,16 @@ void TimelineView::onDocumentChanged(ChangeFlags what)
         m_selection.clip([&](ItemKind kind) { return itemCount(a, kind); });
         const std::optional<AudioClip> &audio = m_document->timeline().audio();
         m_waveform.setPath(audio ? audio->path : QString());
+        // A new recording or clip (lip sync, Say Text, Import Video) is shown whole, not the
+        // first second of it.
+        const std::optional<VideoClip> &video = m_document->timeline().video();
+        const QString media = (audio ? audio->path : QString()) + QLatin1Char('|') + (video ? video->path : QString());
+        if (media != m_media) {
+            const bool first = m_media.isNull();
+            m_media = media;
+            if (!first && media != QLatin1String("|") && viewport()->width() > TimelineLayout::kLabelWidth)
+                zoomToFit();
+        }
         if (m_selection != before)
             Q_EMIT selectionChanged();
     }
@@ -148,6 +166,19 @@ void TimelineView::setSelection(const Selection &selection)
 void TimelineView::setFocusRow(std::optional<RowKind> row)
 {
     m_focusRow = row;
+    viewport()->update();
+}
+
+double TimelineView::waveformGain() const
+{
+    if (m_waveform.peaks().isEmpty())
+        return m_waveformZoom;
+    return m_waveformZoom * kWaveformFill / std::max(kQuietestShown, m_waveform.loudness());
+}
+
+void TimelineView::setWaveformZoom(double zoom)
+{
+    m_waveformZoom = std::clamp(zoom, 1 / 16.0, 16.0);
     viewport()->update();
 }
 
@@ -227,7 +258,8 @@ void TimelineView::zoomToFit()
     const double duration = std::max(1.0, m_document->timeline().duration());
     m_layout.setScrollTime(0);
     m_layout.setPixelsPerSecond(std::min(kMaxPixelsPerSecond, width / duration));
-    m_fitted = true;
+    // A viewport not yet laid out fits a second into a pixel or two; the first real size fits again.
+    m_fitted = width >= kNarrowestFit;
     updateScrollBars();
     viewport()->update();
 }
@@ -261,7 +293,9 @@ void TimelineView::scrollContentsBy(int, int)
 
 void TimelineView::followPlayhead(double t)
 {
-    if (!m_playhead->isPlaying() || m_drag.mode == DragMode::Scrub)
+    // Playing, or moved by a key (Home, End, the arrows): the playhead stays in sight. A drag in
+    // the timeline moves it where the pointer is, in sight already.
+    if (m_drag.mode != DragMode::None)
         return;
     const double x = m_layout.xOf(t);
     if (x < TimelineLayout::kLabelWidth || x > viewport()->width() - 10) {
@@ -282,7 +316,11 @@ void TimelineView::resizeEvent(QResizeEvent *event)
 void TimelineView::wheelEvent(QWheelEvent *event)
 {
     const QPoint delta = event->angleDelta();
-    if (event->modifiers() & Qt::ControlModifier) {
+    if (event->modifiers() & Qt::AltModifier) {
+        // Qt turns the wheel sideways while Alt is held.
+        const int d = delta.y() != 0 ? delta.y() : delta.x();
+        setWaveformZoom(m_waveformZoom * std::pow(kWaveformZoomStep, d / 120.0));
+    } else if (event->modifiers() & Qt::ControlModifier) {
         const double steps = delta.y() / 120.0;
         setPixelsPerSecond(m_layout.pixelsPerSecond() * std::pow(kZoomStep, steps), event->position().x());
     } else if (event->modifiers() & Qt::ShiftModifier) {

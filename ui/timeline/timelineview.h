@@ -25,8 +25,8 @@ class Playhead;
 // rubber band select; dragging a body moves, an edge resizes (neighbours give way), an emotion
 // clip's handles set its fades and intensity, a mouth block's top its weight; double-click on a
 // syllable edits its pinyin. Wheel scrolls, Shift+wheel scrolls the rows, Ctrl+wheel zooms about
-// the cursor. Keys: m f h a i u e o n replace (or insert) a mouth shape while the mouth row has
-// focus, Delete removes, Ctrl+C/Ctrl+V copy and paste at the playhead.
+// the cursor, Alt+wheel zooms the waveform vertically. Keys: m f h a i u e o n replace (or insert) a mouth shape while
+// the mouth row has focus, Delete removes, Ctrl+C/Ctrl+V copy and paste at the playhead.
 class TimelineView : public QAbstractScrollArea
 {
     Q_OBJECT
@@ -43,6 +43,10 @@ public:
     bool snapEnabled() const { return m_snap; }
     WaveformSource *waveform() { return &m_waveform; }
     const MouthIcons &mouthIcons() const { return m_icons; }
+    // The waveform's vertical zoom over the recording's own loudness (1: its loud parts fill the
+    // row). The gain is what sample values are multiplied by on screen.
+    double waveformZoom() const { return m_waveformZoom; }
+    double waveformGain() const;
 
     // Where an item is drawn, in viewport coordinates (what a click on it takes hold of).
     QRectF itemRect(const ItemRef &item) const;
@@ -66,6 +70,9 @@ public Q_SLOTS:
     // Zooms to `pps` keeping the time under viewport x `anchorX` in place.
     void setPixelsPerSecond(double pps, double anchorX);
     void setSnapEnabled(bool on);
+    void setWaveformZoom(double zoom);
+    void waveformTaller() { setWaveformZoom(m_waveformZoom * kWaveformZoomStep); }
+    void waveformShorter() { setWaveformZoom(m_waveformZoom / kWaveformZoomStep); }
 
     void deleteSelection();
     void copySelection();
@@ -143,8 +150,12 @@ private:
     QVector<Span> m_mouthSpans;
     MouthIcons m_icons;
     WaveformSource m_waveform;
+    static constexpr double kWaveformZoomStep = 1.5;
+    double m_waveformZoom = 1;
     bool m_snap = true;
     bool m_fitted = false;
+    QString m_media; // the sound's and the clip's paths last shown, null before the first
+
     bool m_syncingScroll = false;
     Drag m_drag;
     QRect m_rubberBand;

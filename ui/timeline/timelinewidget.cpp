@@ -46,8 +46,8 @@ QWidget *separatorLabel(const QString &text, QWidget *parent)
 
 QList<QAction *> TimelineActions::all() const
 {
-    QList<QAction *> list {
-        zoomIn, zoomOut, zoomToFit, snap, deleteItems, copy, paste, selectAll, regenerateBlinks, addShake, addNod};
+    QList<QAction *> list {zoomIn, zoomOut, zoomToFit, waveformTaller, waveformShorter, snap, deleteItems, copy, paste,
+        selectAll, regenerateBlinks, addShake, addNod};
     for (QAction *a : applyEmotion)
         list.append(a);
     return list;
@@ -92,6 +92,8 @@ TimelineWidget::TimelineWidget(Document *document, Playhead *playhead, QWidget *
     layout->setSpacing(0);
     layout->addWidget(bar);
     layout->addWidget(m_view, 1);
+    // No taller than its rows: the room below the last would be empty.
+    m_view->setMaximumHeight(m_view->sizeHint().height() + 2 * m_view->frameWidth());
     addActions(m_actions.all());
 
     m_shapes->setIcons(m_view->mouthIcons());
@@ -117,10 +119,17 @@ void TimelineWidget::createActions()
         a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
         return a;
     };
-    m_actions.zoomIn = make(tr("Zoom In"), QStringLiteral("timeline-zoom-in"), QKeySequence::ZoomIn);
-    m_actions.zoomOut = make(tr("Zoom Out"), QStringLiteral("timeline-zoom-out"), QKeySequence::ZoomOut);
-    m_actions.zoomToFit
-        = make(tr("Zoom to Fit"), QStringLiteral("timeline-zoom-fit"), QKeySequence(Qt::CTRL | Qt::Key_0));
+    // Keys of their own (as video editors have them): the window's Ctrl++, Ctrl+- and Ctrl+0
+    // zoom the photo, and a key bound twice does nothing at all.
+    m_actions.zoomIn = make(tr("Zoom In"), QStringLiteral("timeline-zoom-in"), QKeySequence(Qt::Key_Equal));
+    m_actions.zoomOut = make(tr("Zoom Out"), QStringLiteral("timeline-zoom-out"), QKeySequence(Qt::Key_Minus));
+    m_actions.zoomToFit = make(tr("Zoom to Fit"), QStringLiteral("timeline-zoom-fit"), QKeySequence(Qt::Key_Backslash));
+    m_actions.waveformTaller = new QAction(tr("Taller Waveform"), this);
+    m_actions.waveformTaller->setObjectName(QStringLiteral("timeline-waveform-taller"));
+    m_actions.waveformShorter = new QAction(tr("Shorter Waveform"), this);
+    m_actions.waveformShorter->setObjectName(QStringLiteral("timeline-waveform-shorter"));
+    for (QAction *a : {m_actions.waveformTaller, m_actions.waveformShorter})
+        a->setToolTip(a->text() + tr(" (Alt+wheel)"));
     m_actions.snap = make(tr("Snap to Frames and Syllables"), QStringLiteral("timeline-snap"));
     m_actions.snap->setCheckable(true);
     m_actions.snap->setChecked(m_view->snapEnabled());
@@ -140,6 +149,8 @@ void TimelineWidget::createActions()
     connect(m_actions.zoomIn, &QAction::triggered, m_view, &TimelineView::zoomIn);
     connect(m_actions.zoomOut, &QAction::triggered, m_view, &TimelineView::zoomOut);
     connect(m_actions.zoomToFit, &QAction::triggered, m_view, &TimelineView::zoomToFit);
+    connect(m_actions.waveformTaller, &QAction::triggered, m_view, &TimelineView::waveformTaller);
+    connect(m_actions.waveformShorter, &QAction::triggered, m_view, &TimelineView::waveformShorter);
     connect(m_actions.snap, &QAction::toggled, m_view, &TimelineView::setSnapEnabled);
     connect(m_actions.deleteItems, &QAction::triggered, m_view, &TimelineView::deleteSelection);
     connect(m_actions.copy, &QAction::triggered, m_view, &TimelineView::copySelection);
@@ -181,6 +192,9 @@ void TimelineWidget::showContextMenu(const TimelineHit &hit, const QPoint &globa
     } else if (hit.row == RowKind::Script && kind) {
         const int index = hit.item->index;
         menu.addAction(tr("Edit Pinyin…"), m_view, [this, index]() { m_view->editSyllable(index); });
+    } else if (hit.row == RowKind::Waveform) {
+        menu.addAction(m_actions.waveformTaller);
+        menu.addAction(m_actions.waveformShorter);
     } else if (hit.row == RowKind::Blink) {
         menu.addAction(m_actions.regenerateBlinks);
     } else if (hit.row == RowKind::Head) {

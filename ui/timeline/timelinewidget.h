@@ -26,6 +26,8 @@ struct TimelineActions
     QAction *zoomIn = nullptr;
     QAction *zoomOut = nullptr;
     QAction *zoomToFit = nullptr;
+    QAction *waveformTaller = nullptr; // the waveform's vertical zoom
+    QAction *waveformShorter = nullptr;
     QAction *snap = nullptr; // checkable: snap to frames and syllable boundaries
     QAction *deleteItems = nullptr;
     QAction *copy = nullptr;

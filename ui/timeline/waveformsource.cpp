@@ -6,16 +6,38 @@
 #include <QMutex>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 namespace toonface {
 
 namespace {
 
 constexpr int kCacheEntries = 4;
+// The share of millisecond peaks allowed above the loudness: a few clicks or a cough in a
+// long quiet take must not shrink the speech back to a flat line.
+constexpr double kLoudnessQuantile = 0.999;
+
+double loudnessOf(const WaveformPeaks &peaks)
+{
+    if (peaks.isEmpty())
+        return 0;
+    const WaveformPeaks::Level &level = peaks.levels().first();
+    std::vector<float> magnitudes(size_t(level.max.size()));
+    for (qsizetype i = 0; i < level.max.size(); ++i)
+        magnitudes[size_t(i)] = std::max(std::abs(level.min[i]), std::abs(level.max[i]));
+    if (magnitudes.empty())
+        return 0;
+    const auto nth = magnitudes.begin() + qsizetype(double(magnitudes.size() - 1) * kLoudnessQuantile);
+    std::nth_element(magnitudes.begin(), nth, magnitudes.end());
+    return *nth;
+}
 
 struct PeakCache
 {
     QMutex mutex;
-    QHash<QString, std::shared_ptr<const WaveformPeaks>> entries;
+    QHash<QString, std::shared_ptr<const WaveformSource::Shown>> entries;
     QStringList order; // least recently used first
 };
 
@@ -34,7 +56,7 @@ QString cacheKey(const QString &path)
         .arg(info.lastModified().toMSecsSinceEpoch());
 }
 
-std::shared_ptr<const WaveformPeaks> cached(const QString &key)
+std::shared_ptr<const WaveformSource::Shown> cached(const QString &key)
 {
     PeakCache &c = cache();
     QMutexLocker lock(&c.mutex);
@@ -46,7 +68,7 @@ std::shared_ptr<const WaveformPeaks> cached(const QString &key)
     return *it;
 }
 
-void store(const QString &key, std::shared_ptr<const WaveformPeaks> peaks)
+void store(const QString &key, std::shared_ptr<const WaveformSource::Shown> peaks)
 {
     PeakCache &c = cache();
     QMutexLocker lock(&c.mutex);
@@ -57,9 +79,9 @@ void store(const QString &key, std::shared_ptr<const WaveformPeaks> peaks)
         c.entries.remove(c.order.takeFirst());
 }
 
-const std::shared_ptr<const WaveformPeaks> &noPeaks()
+const std::shared_ptr<const WaveformSource::Shown> &noPeaks()
 {
-    static const std::shared_ptr<const WaveformPeaks> none = std::make_shared<WaveformPeaks>();
+    static const std::shared_ptr<const WaveformSource::Shown> none = std::make_shared<WaveformSource::Shown>();
     return none;
 }
 
@@ -69,7 +91,8 @@ WaveformSource::WaveformSource(QObject *parent)
     : QObject(parent)
     , m_peaks(noPeaks())
 {
-    connect(&m_watcher, &QFutureWatcher<WaveformPeaksResult>::finished, this, &WaveformSource::onFinished);
+    connect(&m_watcher, &QFutureWatcher<std::pair<WaveformPeaksResult, double>>::finished, this,
+        &WaveformSource::onFinished);
 }
 
 WaveformSource::~WaveformSource()
@@ -89,7 +112,7 @@ void WaveformSource::clearCache()
 
 void WaveformSource::setPath(const QString &path)
 {
-    if (path == m_path && (isLoading() || !m_peaks->isEmpty() || !m_error.isEmpty()))
+    if (path == m_path && (isLoading() || !m_peaks->peaks.isEmpty() || !m_error.isEmpty()))
         return;
     m_path = path;
     m_error.clear();
@@ -112,7 +135,11 @@ void WaveformSource::setPath(const QString &path)
     m_cancel = std::make_shared<std::atomic_bool>(false);
     m_loadingKey = key;
     auto cancel = m_cancel;
-    m_watcher.setFuture(QtConcurrent::run([path, cancel]() { return loadWaveformPeaks(path, {}, cancel.get()); }));
+    m_watcher.setFuture(QtConcurrent::run([path, cancel]() {
+        WaveformPeaksResult result = loadWaveformPeaks(path, {}, cancel.get());
+        const double loudness = loudnessOf(result.peaks);
+        return std::pair(std::move(result), loudness);
+    }));
 }
 
 void WaveformSource::waitForFinished()
@@ -127,7 +154,7 @@ void WaveformSource::onFinished()
 {
     if (m_loadingKey.isEmpty() || !m_watcher.isFinished())
         return;
-    const WaveformPeaksResult result = m_watcher.result();
+    const auto [result, loudness] = m_watcher.result();
     const QString key = m_loadingKey;
     m_loadingKey.clear();
     if (result.status == AudioStatus::Cancelled)
@@ -135,7 +162,7 @@ void WaveformSource::onFinished()
     if (!result.ok()) {
         m_error = result.error;
     } else {
-        auto peaks = std::make_shared<const WaveformPeaks>(result.peaks);
+        auto peaks = std::make_shared<const Shown>(Shown {result.peaks, loudness});
         store(key, peaks);
         m_peaks = std::move(peaks);
     }

@@ -22,6 +22,13 @@ class WaveformSource : public QObject
     Q_OBJECT
 
 public:
+    // What is shown of one file (cached).
+    struct Shown
+    {
+        WaveformPeaks peaks;
+        double loudness = 0;
+    };
+
     explicit WaveformSource(QObject *parent = nullptr);
     // Cancels a load under way and waits for it.
     ~WaveformSource() override;
@@ -31,7 +38,11 @@ public:
     void setPath(const QString &path);
     QString path() const { return m_path; }
 
-    const WaveformPeaks &peaks() const { return *m_peaks; }
+    const WaveformPeaks &peaks() const { return m_peaks->peaks; }
+    // How loud the sound is for drawing: a high percentile of its millisecond peaks (0..1), so
+    // that a quiet recording can be drawn as tall as a loud one and one click does not set the
+    // scale. 0 when there is no sound or it is silent.
+    double loudness() const { return m_peaks->loudness; }
     // Why the sound cannot be shown (names the file), empty when it can or is loading.
     QString error() const { return m_error; }
     bool isLoading() const { return m_watcher.isRunning(); }
@@ -50,8 +61,8 @@ private:
 
     QString m_path;
     QString m_error;
-    std::shared_ptr<const WaveformPeaks> m_peaks;
-    QFutureWatcher<WaveformPeaksResult> m_watcher;
+    std::shared_ptr<const Shown> m_peaks;
+    QFutureWatcher<std::pair<WaveformPeaksResult, double>> m_watcher;
     std::shared_ptr<std::atomic_bool> m_cancel;
     QString m_loadingKey;
 };

@@ -7,6 +7,7 @@
 #include <QGraphicsRectItem>
 #include <QGraphicsScene>
 #include <QGraphicsSceneMouseEvent>
+#include <QPainter>
 #include <QPainterPath>
 #include <QWheelEvent>
 
@@ -293,6 +294,24 @@ void PhotoView::onDocumentChanged(ChangeFlags what)
         syncPoints();
 }
 
+void PhotoView::drawForeground(QPainter *painter, const QRectF &rect)
+{
+    QGraphicsView::drawForeground(painter, rect);
+    if (!m_document->photo().isNull() || m_document->hasFace())
+        return;
+    painter->save();
+    painter->resetTransform();
+    QPen pen(palette().color(QPalette::Mid), 2, Qt::DashLine);
+    painter->setPen(pen);
+    const QRect area = viewport()->rect().adjusted(24, 24, -24, -24);
+    painter->drawRoundedRect(area, 12, 12);
+    painter->setPen(palette().color(QPalette::PlaceholderText));
+    painter->drawText(area, Qt::AlignCenter | Qt::TextWordWrap,
+        tr("Open a photo of a face (%1), or drop one here.")
+            .arg(QKeySequence(QKeySequence::Open).toString(QKeySequence::NativeText)));
+    painter->restore();
+}
+
 void PhotoView::syncPhoto()
 {
     const QImage &photo = m_document->photo();
@@ -301,6 +320,7 @@ void PhotoView::syncPhoto()
     m_canvasItem->setRect(canvas);
     m_canvasItem->setVisible(photo.isNull() && !canvas.isEmpty());
     placeOverlay();
+    viewport()->update(); // the hint of an empty view comes or goes
 
     // Room around the photo for points outside it (hair, ears), fixed until the next face,
     // so that the scene does not shift under a drag.

@@ -79,6 +79,8 @@ Q_SIGNALS:
 protected:
     void wheelEvent(QWheelEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
+    // With no photo and no face: how to get one ("Open or drop a photo").
+    void drawForeground(QPainter *painter, const QRectF &rect) override;
 
 private:
     void onDocumentChanged(ChangeFlags what);

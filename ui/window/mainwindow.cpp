@@ -1,6 +1,5 @@
 #include "window/mainwindow.h"
 
-#include "appearance/appearancepanel.h"
 #include "document/autosaver.h"
 #include "export/cartoonfile.h"
 #include "render/svgface.h"
@@ -16,6 +15,7 @@
 #include "window/questions.h"
 #include "window/settings.h"
 #include "window/studio.h"
+#include "window/windowlayout.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -23,7 +23,6 @@
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDir>
-#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QImageReader>
@@ -33,8 +32,6 @@
 #include <QMimeData>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QScreen>
-#include <QScrollArea>
 #include <QSlider>
 #include <QSplitter>
 #include <QStatusBar>
@@ -106,15 +103,8 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
     m_splitter->setStretchFactor(1, 2);
     m_splitter->setChildrenCollapsible(false);
     setCentralWidget(m_splitter);
-    auto *appearanceDock = new QDockWidget(tr("Appearance"), this);
-    appearanceDock->setObjectName(QStringLiteral("appearanceDock"));
-    // Scrolled, so that its many controls never set the window's height.
-    auto *appearanceScroll = new QScrollArea;
-    appearanceScroll->setWidgetResizable(true);
-    appearanceScroll->setFrameShape(QFrame::NoFrame);
-    appearanceScroll->setWidget(new AppearancePanel(m_document));
-    appearanceDock->setWidget(appearanceScroll);
-    addDockWidget(Qt::RightDockWidgetArea, appearanceDock);
+    m_layout = new WindowLayout(this, m_splitter);
+    m_layout->addAppearanceDock(m_document);
 
     createActions();
     createMenus();
@@ -127,6 +117,8 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
         [this](const QString &text) { statusBar()->showMessage(text, kStatusTimeoutMs); });
     // A camera snapshot becomes the photo, as if opened.
     connect(m_studio, &Studio::photoCaptured, this, &MainWindow::openFile);
+    m_layout->addViewActions(m_viewMenu);
+    m_layout->captureDefault();
     restoreSettings();
 
     connect(m_document, &Document::changed, this, &MainWindow::onDocumentChanged);
@@ -159,207 +151,11 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
 
 MainWindow::~MainWindow() = default;
 
-void MainWindow::createActions()
-{
-    auto make = [this](const QString &objectName, const QString &text, const QKeySequence &shortcut = {}) {
-        auto *action = new QAction(text, this);
-        action->setObjectName(objectName);
-        if (!shortcut.isEmpty())
-            action->setShortcut(shortcut);
-        return action;
-    };
-
-    m_openAction = make(QStringLiteral("actionOpen"), tr("&Open Photo or Project…"), QKeySequence::Open);
-    m_openAction->setIcon(themedIcon("document-open", "document-open.svg"));
-    connect(m_openAction, &QAction::triggered, this, &MainWindow::openDialog);
-    m_saveAction = make(QStringLiteral("actionSave"), tr("&Save"), QKeySequence::Save);
-    m_saveAction->setIcon(themedIcon("document-save", "document-save.svg"));
-    connect(m_saveAction, &QAction::triggered, this, &MainWindow::save);
-    m_saveAsAction = make(QStringLiteral("actionSaveAs"), tr("Save &As…"), QKeySequence::SaveAs);
-    connect(m_saveAsAction, &QAction::triggered, this, &MainWindow::saveAs);
-    m_exportAction = make(QStringLiteral("actionExport"), tr("&Export Cartoon…"), QKeySequence(Qt::CTRL | Qt::Key_E));
-    m_exportAction->setIcon(themedIcon("image-x-generic", "toonface.svg"));
-    connect(m_exportAction, &QAction::triggered, this, &MainWindow::exportCartoon);
-    m_quitAction = make(QStringLiteral("actionQuit"), tr("&Quit"), QKeySequence::Quit);
-    m_quitAction->setMenuRole(QAction::QuitRole);
-    connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
-
-    m_undoAction = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
-    m_undoAction->setObjectName(QStringLiteral("actionUndo"));
-    m_undoAction->setShortcut(QKeySequence::Undo);
-    m_undoAction->setIcon(themedIcon("edit-undo", "edit-undo.svg"));
-    m_redoAction = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
-    m_redoAction->setObjectName(QStringLiteral("actionRedo"));
-    m_redoAction->setShortcut(QKeySequence::Redo);
-    m_redoAction->setIcon(themedIcon("edit-redo", "edit-redo.svg"));
-    m_redetectAction
-        = make(QStringLiteral("actionRedetect"), tr("Re-&detect Points"), QKeySequence(Qt::CTRL | Qt::Key_D));
-    m_redetectAction->setToolTip(tr("Detect the face again and replace every point"));
-    m_redetectAction->setIcon(themedIcon("view-refresh", "redetect.svg"));
-    connect(m_redetectAction, &QAction::triggered, this, [this] { startDetection(false); });
-    m_redetectKeepAction = make(QStringLiteral("actionRedetectKeep"), tr("Re-detect &Keeping My Points"),
-        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
-    m_redetectKeepAction->setToolTip(tr("Detect the face again but keep the points placed by hand"));
-    connect(m_redetectKeepAction, &QAction::triggered, this, [this] { startDetection(true); });
-
-    m_methodGroup = new QActionGroup(this);
-    m_methodGroup->setExclusive(true);
-    const struct
-    {
-        DetectionMethod method;
-        const char *objectName;
-        QString text;
-        QString toolTip;
-    } methods[] = {
-        {DetectionMethod::Auto, "actionMethodAuto", tr("&Automatic"),
-            tr("The landmark model where it is installed, the thesis pipeline where it is not")},
-        {DetectionMethod::Classic, "actionMethodClassic", tr("&Thesis Pipeline (Classic)"),
-            tr("The thesis' steps only: thresholds, eye pair, edges and feature regions; best on a plain "
-               "background with frontal light")},
-        {DetectionMethod::Landmarks, "actionMethodLandmarks", tr("&Landmarks"),
-            tr("The landmark model's 68 points mapped to the face model, hair and ears found around them")},
-    };
-    const QString current = Settings().detectionMethod();
-    for (const auto &m : methods) {
-        QAction *action = make(QLatin1StringView(m.objectName), m.text);
-        action->setCheckable(true);
-        action->setToolTip(m.toolTip);
-        action->setStatusTip(m.toolTip);
-        action->setData(detectionMethodName(m.method));
-        action->setChecked(detectionMethodName(m.method) == current);
-        m_methodGroup->addAction(action);
-    }
-    connect(m_methodGroup, &QActionGroup::triggered, this,
-        [](QAction *action) { Settings().setDetectionMethod(action->data().toString()); });
-
-    m_zoomInAction = make(QStringLiteral("actionZoomIn"), tr("Zoom &In"), QKeySequence::ZoomIn);
-    connect(m_zoomInAction, &QAction::triggered, m_photoView, &PhotoView::zoomIn);
-    m_zoomOutAction = make(QStringLiteral("actionZoomOut"), tr("Zoom &Out"), QKeySequence::ZoomOut);
-    connect(m_zoomOutAction, &QAction::triggered, m_photoView, &PhotoView::zoomOut);
-    m_actualSizeAction
-        = make(QStringLiteral("actionActualSize"), tr("&Actual Size"), QKeySequence(Qt::CTRL | Qt::Key_1));
-    connect(m_actualSizeAction, &QAction::triggered, m_photoView, &PhotoView::zoomToActualSize);
-    m_fitAction = make(QStringLiteral("actionFit"), tr("&Fit to Window"), QKeySequence(Qt::CTRL | Qt::Key_0));
-    m_fitAction->setIcon(themedIcon("zoom-fit-best", "zoom-fit.svg"));
-    connect(m_fitAction, &QAction::triggered, m_photoView, &PhotoView::fitToWindow);
-    m_zoomFaceAction = make(QStringLiteral("actionZoomFace"), tr("Zoom to F&ace"), QKeySequence(Qt::CTRL | Qt::Key_2));
-    m_zoomFaceAction->setIcon(themedIcon("zoom-in", "zoom-face.svg"));
-    connect(m_zoomFaceAction, &QAction::triggered, m_photoView, &PhotoView::zoomToFace);
-    m_showIdsAction = make(QStringLiteral("actionShowIds"), tr("Show Point &IDs"), QKeySequence(Qt::CTRL | Qt::Key_I));
-    m_showIdsAction->setCheckable(true);
-    connect(m_showIdsAction, &QAction::toggled, this, [this](bool show) {
-        m_photoView->setShowPointIds(show);
-        Settings().setShowPointIds(show);
-    });
-
-    m_aboutAction = make(QStringLiteral("actionAbout"), tr("&About Toonface"));
-    m_aboutAction->setMenuRole(QAction::AboutRole);
-    connect(m_aboutAction, &QAction::triggered, this, [this] {
-        QMessageBox::about(this, tr("About Toonface"),
-            tr("<h3>Toonface %1</h3><p>Personal talking cartoon faces from photos, drawn in SVG.</p>")
-                .arg(QStringLiteral(TOONFACE_VERSION)));
-    });
-}
-
-void MainWindow::createMenus()
-{
-    QMenu *file = menuBar()->addMenu(tr("&File"));
-    file->addAction(m_openAction);
-    m_recentMenu = file->addMenu(tr("Open &Recent"));
-    m_recentMenu->setObjectName(QStringLiteral("menuRecent"));
-    connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::fillRecentMenu);
-    fillRecentMenu();
-    file->addSeparator();
-    file->addAction(m_saveAction);
-    file->addAction(m_saveAsAction);
-    file->addAction(m_exportAction);
-    file->addSeparator();
-    file->addAction(m_quitAction);
-
-    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
-    edit->addAction(m_undoAction);
-    edit->addAction(m_redoAction);
-    edit->addSeparator();
-    edit->addAction(m_redetectAction);
-    edit->addAction(m_redetectKeepAction);
-    m_methodMenu = edit->addMenu(tr("Detection &Method"));
-    m_methodMenu->setObjectName(QStringLiteral("menuDetectionMethod"));
-    m_methodMenu->setToolTipsVisible(true);
-    m_methodMenu->addActions(m_methodGroup->actions());
-
-    QMenu *view = menuBar()->addMenu(tr("&View"));
-    view->addAction(m_zoomInAction);
-    view->addAction(m_zoomOutAction);
-    view->addAction(m_actualSizeAction);
-    view->addAction(m_fitAction);
-    view->addAction(m_zoomFaceAction);
-    view->addSeparator();
-    view->addAction(m_showIdsAction);
-    view->addSeparator();
-    m_stepsUi->install(view);
-
-    QMenu *help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(m_aboutAction);
-}
-
-void MainWindow::createToolBar()
-{
-    QToolBar *bar = addToolBar(tr("Main"));
-    bar->setObjectName(QStringLiteral("mainToolBar"));
-    // Icons only (each says what it does in its tool tip), so that the studio's transport fits beside
-    // it on a 1280-pixel screen.
-    bar->setToolButtonStyle(Qt::ToolButtonIconOnly);
-    bar->addAction(m_openAction);
-    bar->addAction(m_saveAction);
-    bar->addSeparator();
-    bar->addAction(m_undoAction);
-    bar->addAction(m_redoAction);
-    bar->addSeparator();
-    bar->addAction(m_redetectAction);
-    bar->addSeparator();
-    bar->addWidget(new QLabel(tr("Style:") + QLatin1Char(' ')));
-    m_styleCombo = new QComboBox;
-    m_styleCombo->setObjectName(QStringLiteral("styleCombo"));
-    m_styleCombo->setToolTip(tr("Drawing style of the cartoon"));
-    const QStringList presets = Style::presetNames();
-    for (const QString &name : presets) {
-        m_styleCombo->addItem(styleTitle(name), name);
-    }
-    connect(m_styleCombo, &QComboBox::activated, this, &MainWindow::onStyleActivated);
-    bar->addWidget(m_styleCombo);
-    bar->addSeparator();
-    bar->addAction(m_fitAction);
-    bar->addAction(m_zoomFaceAction);
-}
-
-void MainWindow::createStatusBar()
-{
-    m_busyLabel = new QLabel;
-    m_busyBar = new QProgressBar;
-    m_busyBar->setMaximumWidth(160);
-    m_busyBar->setTextVisible(false);
-    m_cancelButton = new QToolButton;
-    m_cancelButton->setObjectName(QStringLiteral("cancelButton"));
-    m_cancelButton->setText(tr("Cancel"));
-    connect(m_cancelButton, &QToolButton::clicked, this, &MainWindow::cancelJob);
-    m_zoomLabel = new QLabel;
-    m_zoomLabel->setMinimumWidth(48);
-    m_zoomLabel->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    statusBar()->addPermanentWidget(m_busyLabel);
-    statusBar()->addPermanentWidget(m_busyBar);
-    statusBar()->addPermanentWidget(m_cancelButton);
-    statusBar()->addPermanentWidget(m_zoomLabel);
-    setBusy(Job::None, {});
-}
-
 void MainWindow::restoreSettings()
 {
     Settings settings;
-    if (!restoreGeometry(settings.windowGeometry())) {
-        const QSize available = screen()->availableSize();
-        resize(std::min(1280, available.width() * 9 / 10), std::min(820, available.height() * 9 / 10));
-    }
-    restoreState(settings.windowState());
+    if (!restoreGeometry(settings.windowGeometry()) || !restoreState(settings.windowState()))
+        m_layout->firstRun();
     m_splitter->restoreState(settings.splitterState());
     m_showIdsAction->setChecked(settings.showPointIds());
 }
@@ -575,12 +371,9 @@ bool MainWindow::save()
         // Another editor (or program) wrote the file since it was opened here: never silently
         // overwrite its work.
         switch (askOverwriteChanged(this, m_document->filePath())) {
-        case DiskConflict::Overwrite:
-            break;
-        case DiskConflict::SaveAs:
-            return saveAs();
-        case DiskConflict::Cancel:
-            return false;
+        case DiskConflict::Overwrite: break;
+        case DiskConflict::SaveAs: return saveAs();
+        case DiskConflict::Cancel: return false;
         }
     }
     return saveTo(m_document->filePath());
@@ -663,8 +456,11 @@ bool MainWindow::maybeSave()
 {
     if (!m_document->isModified())
         return true;
-    const QMessageBox::StandardButton answer = QMessageBox::warning(this, tr("Unsaved Changes"),
-        tr("%1 has unsaved changes. Save them?").arg(m_document->displayName()),
+    // Name the project, not the photo: the photo is never written.
+    const QString question = m_document->filePath().isEmpty()
+        ? tr("The cartoon made from %1 is not saved as a project yet. Save it?").arg(m_document->displayName())
+        : tr("The project %1 has unsaved changes. Save them?").arg(m_document->displayName());
+    const QMessageBox::StandardButton answer = QMessageBox::warning(this, tr("Unsaved Changes"), question,
         QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
     if (answer == QMessageBox::Save)
         return save();

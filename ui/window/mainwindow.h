@@ -22,6 +22,8 @@ class QToolButton;
 
 namespace toonface {
 
+class WindowLayout;
+
 class DetectionSteps;
 class DetectionStepsUi;
 class DetectionTask;
@@ -145,6 +147,9 @@ private:
     QSplitter *m_splitter;
     DetectionSteps *m_steps;
     DetectionStepsUi *m_stepsUi = nullptr;
+    WindowLayout *m_layout = nullptr;
+    QMenu *m_viewMenu = nullptr;
+    QMenu *m_helpMenu = nullptr;
 
     QFutureWatcher<LoadedFile> *m_loadWatcher = nullptr;
     std::optional<RecoveryFile> m_recovering; // the leftover being restored, if any

@@ -94,4 +94,21 @@ DiskConflict askOverwriteChanged(QWidget *parent, const QString &project)
     return box.clickedButton() == overwrite ? DiskConflict::Overwrite : DiskConflict::Cancel;
 }
 
+RedetectChoice askRedetectOverHandPlaced(QWidget *parent, int handPlaced)
+{
+    QMessageBox box(QMessageBox::Question, Questions::tr("Re-detect Points"),
+        Questions::tr("You moved %n point(s) by hand. Re-detecting replaces every point.", nullptr, handPlaced),
+        QMessageBox::NoButton, parent);
+    box.setObjectName(QStringLiteral("redetectQuestion"));
+    box.setInformativeText(Questions::tr("Keep the points you moved, or replace them with the detected ones?"));
+    QPushButton *keep = box.addButton(Questions::tr("&Keep My Points"), QMessageBox::AcceptRole);
+    QPushButton *replace = box.addButton(Questions::tr("&Replace Them"), QMessageBox::DestructiveRole);
+    box.addButton(QMessageBox::Cancel);
+    box.setDefaultButton(keep);
+    box.exec();
+    if (box.clickedButton() == keep)
+        return RedetectChoice::KeepMine;
+    return box.clickedButton() == replace ? RedetectChoice::ReplaceAll : RedetectChoice::Cancel;
+}
+
 } // namespace toonface

@@ -30,4 +30,8 @@ DiskConflict askOverwriteChanged(QWidget *parent, const QString &project);
 // knows what its sound, photo, video and layers will read before playing or exporting it.
 void showOutsideFiles(QWidget *parent, const QString &project, const QStringList &files);
 
+// Re-detect Points over `handPlaced` points moved by hand: keep them, replace them too, or cancel.
+enum class RedetectChoice { KeepMine, ReplaceAll, Cancel };
+RedetectChoice askRedetectOverHandPlaced(QWidget *parent, int handPlaced);
+
 } // namespace toonface

@@ -1,5 +1,7 @@
 #include "window/studio.h"
 
+#include "playback/timereadout.h"
+
 #include "capture/capturedialog.h"
 #include "capture/importvideodialog.h"
 #include "capture/livewindow.h"
@@ -15,6 +17,7 @@
 #include "export/animationexport.h"
 #include "playback/playbackcontroller.h"
 #include "playback/playhead.h"
+#include "playback/timereadout.h"
 #include "timeline/timelineedits.h"
 #include "timeline/timelineview.h"
 #include "timeline/timelinewidget.h"
@@ -39,7 +42,6 @@ namespace {
 
 constexpr double kEmotionFromPlayhead = 2.0; // seconds Add Emotion offers from the playhead
 constexpr double kShortestEmotion = 0.5; // less than this before the end: the whole animation
-constexpr int kVideoDockWidth = 320;
 
 } // namespace
 
@@ -71,7 +73,11 @@ void Studio::install(PreviewView *preview, QAction *beforeMenu)
     m_sayText = new QAction(themedIcon("insert-text", "say-text.svg"), tr("&Say Text…"), this);
     m_sayText->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
     m_sayText->setStatusTip(tr("Speak a text with the built-in voice and lip-sync the face to it"));
-    connect(m_sayText, &QAction::triggered, this, [this] { SayTextDialog::run(m_window, m_document); });
+    connect(m_sayText, &QAction::triggered, this, [this] {
+        const std::optional<AudioClip> before = m_document->timeline().audio();
+        if (SayTextDialog::run(m_window, m_document))
+            Q_EMIT message(soundChange(before, tr("Say Text")));
+    });
     m_addBlinks = new QAction(QIcon(QStringLiteral(":/toonface/icons/timeline-blinks.svg")), tr("Add &Blinks…"), this);
     connect(m_addBlinks, &QAction::triggered, this, [this] { BlinksDialog::run(m_window, m_document); });
     m_addEmotion = new QAction(QIcon(QStringLiteral(":/toonface/icons/emotion-smile.svg")), tr("Add &Emotion…"), this);
@@ -117,6 +123,7 @@ void Studio::install(PreviewView *preview, QAction *beforeMenu)
     m_transport = m_window->addToolBar(tr("Transport"));
     m_transport->setObjectName(QStringLiteral("transportToolBar"));
     m_transport->addActions(m_playback->actions());
+    m_transport->addWidget(new TimeReadout(m_document, m_playhead, m_transport));
     m_transport->addSeparator();
     m_transport->addAction(m_lipSync);
     m_transport->addAction(preview->editPoseAction());
@@ -139,10 +146,12 @@ void Studio::installVideo()
     m_importVideo->setStatusTip(tr("Track a clip of a person speaking and put the motion on the timeline"));
     connect(m_importVideo, &QAction::triggered, this, [this] {
         m_playback->pause();
+        const std::optional<AudioClip> before = m_document->timeline().audio();
         ImportVideoDialog dialog(m_document, m_playhead->time(), m_window);
         if (dialog.exec() != QDialog::Accepted)
             return;
-        const QString imported = tr("Imported %1").arg(QFileInfo(m_document->timeline().video()->path).fileName());
+        const QString imported
+            = soundChange(before, tr("Imported %1").arg(QFileInfo(m_document->timeline().video()->path).fileName()));
         Q_EMIT message(
             dialog.warnings().isEmpty() ? imported : imported + QStringLiteral(" — ") + dialog.warnings().join(u' '));
     });
@@ -151,17 +160,18 @@ void Studio::installVideo()
 
     m_videoDock = new VideoDock(m_document, m_playhead, m_window);
     m_window->addDockWidget(Qt::RightDockWidgetArea, m_videoDock);
-    // Beside the preview: a column of its own left of the docks already on the right.
+    // A tab beside the docks already on the right: a column of its own would leave the photo
+    // and the cartoon a sliver on a laptop's screen. It comes to the front when a clip arrives.
     for (QDockWidget *other : m_window->findChildren<QDockWidget *>()) {
         if (other != m_videoDock && other->parentWidget() == m_window
             && m_window->dockWidgetArea(other) == Qt::RightDockWidgetArea && !other->isFloating()) {
-            m_window->splitDockWidget(m_videoDock, other, Qt::Horizontal);
+            m_window->tabifyDockWidget(other, m_videoDock);
             break;
         }
     }
     connect(m_videoDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible)
-            m_window->resizeDocks({m_videoDock}, {kVideoDockWidth}, Qt::Horizontal);
+            m_videoDock->raise();
     });
     QAction *toggle = m_videoDock->toggleViewAction();
     toggle->setObjectName(QStringLiteral("showVideo"));
@@ -171,6 +181,17 @@ void Studio::installVideo()
     m_transport->insertAction(m_exportAnimation, m_importVideo);
 }
 // --- end of Import Video ---------------------------------------------------------------------
+
+QString Studio::soundChange(const std::optional<AudioClip> &before, const QString &what) const
+{
+    const std::optional<AudioClip> &after = m_document->timeline().audio();
+    if (!after || (before && before->path == after->path))
+        return tr("%1: done; the project's sound is unchanged.").arg(what);
+    if (!before)
+        return tr("%1: the project's sound is now %2.").arg(what, QFileInfo(after->path).fileName());
+    return tr("%1 replaced the project's sound %2 with %3 (Edit ▸ Undo brings it back).")
+        .arg(what, QFileInfo(before->path).fileName(), QFileInfo(after->path).fileName());
+}
 
 QMenu *Studio::windowMenu(const char *title) const
 {

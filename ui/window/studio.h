@@ -1,6 +1,10 @@
 #pragma once
 
+#include "anim/timeline.h"
+
 #include <QObject>
+
+#include <optional>
 
 class QAction;
 class QMainWindow;
@@ -77,6 +81,8 @@ private:
     void installPreferences();
     // The main window's menu titled `title` (its source text, e.g. "&View"), or null.
     QMenu *windowMenu(const char *title) const;
+    // What `what` (Say Text, Import Video) did to the project's sound, which was `before`.
+    QString soundChange(const std::optional<AudioClip> &before, const QString &what) const;
 
     Document *m_document;
     QMainWindow *m_window;
