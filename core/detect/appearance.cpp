@@ -893,9 +893,11 @@ AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, co
         const Pixels levelPx(level->photo);
         findGlasses(levelPx, level->face, es0, skinLuma, &out);
         findFacialHair(levelPx, level->face, es0, skinLuma, &out);
+        out.evidence = measureEvidence(level->photo, level->face);
     } else {
         findGlasses(px, face, es0, skinLuma, &out);
         findFacialHair(px, face, es0, skinLuma, &out);
+        out.evidence = measureEvidence(photo, face);
     }
     findHead(px, face, es0, skin, &out);
     return out;

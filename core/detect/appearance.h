@@ -1,5 +1,6 @@
 #pragma once
 
+#include "detect/appearanceevidence.h"
 #include "face/facemodel.h"
 #include "render/style.h"
 
@@ -41,6 +42,7 @@ struct AppearanceFindings
     double goateeScore = 0; // the same on the chin alone, between the lower lip's shadow and the chin's point
     double baldScore = 0; // share of skin-coloured pixels in the hair's band over the crown
     double hatScore = 0; // the crown's hue outside hair's hues, in degrees, times its saturation
+    AppearanceEvidence evidence; // measured against the cheeks in L*a*b*
 
     static constexpr double kGlassesThreshold = 2.5;
     static constexpr double kBridgedThreshold = 0.9;
