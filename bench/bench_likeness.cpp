@@ -148,6 +148,10 @@ QJsonObject sheet()
         scores.insert(QStringLiteral("facialHair"), f.facialHair.isValid() ? f.facialHair.name() : QString());
         scores.insert(QStringLiteral("bald"), f.baldScore);
         scores.insert(QStringLiteral("hat"), f.hatScore);
+        const AppearanceEvidence &e = f.evidence;
+        scores.insert(QStringLiteral("evidence"),
+            QJsonArray {e.lipRedLoss, e.lipDL, e.chinRedLoss, e.chinDetail, e.chinDL, e.jawRedLoss, e.bridgeLine,
+                e.lowerRims, e.sideRims});
         o.insert(QStringLiteral("scores"), scores);
         people.append(o);
 

@@ -121,6 +121,12 @@ void measure(Labelled *row, const QImage &photo, const FaceModel &face)
     m["lipDetail"] = e.lipDetail;
     m["chinDetail"] = e.chinDetail;
     m["jawDetail"] = e.jawDetail;
+    m["lipDL"] = e.lipDL;
+    m["chinDL"] = e.chinDL;
+    m["jawDL"] = e.jawDL;
+    m["lipRedLoss"] = e.lipRedLoss;
+    m["chinRedLoss"] = e.chinRedLoss;
+    m["jawRedLoss"] = e.jawRedLoss;
     m["bridgeLine"] = e.bridgeLine;
     m["sideRims"] = e.sideRims;
     m["lowerRims"] = e.lowerRims;
@@ -198,6 +204,8 @@ struct Decision
 
 double objectiveOf(const QString &name, const Counts &c)
 {
+    if (name == QLatin1String("balanced accuracy"))
+        return (c.recall() + (c.tn + c.fp > 0 ? double(c.tn) / (c.tn + c.fp) : 1.0)) / 2.0;
     return name == QLatin1String("accuracy") ? c.accuracy() : c.fBeta(0.5);
 }
 
@@ -242,29 +250,51 @@ bool anyFacialHair(const Appearance &a)
     return a.moustache || a.beard || a.goatee;
 }
 
+// The rules as appearance.cpp decides, with their thresholds as parameters (in the order of
+// ruleMeasures' names) and the constants the code ships.
+bool lipRule(const Labelled &r, const std::vector<double> &t)
+{
+    const double lip = r.m.at("lipRedLoss"), chin = r.m.at("chinRedLoss");
+    return (lip >= t[0] && std::max(lip, chin) >= t[1]) || r.m.at("lipDL") <= -t[2];
+}
+
+bool chinRule(const Labelled &r, const std::vector<double> &t)
+{
+    return (r.m.at("chinRedLoss") >= t[0] && r.m.at("chinDetail") >= t[1]) || r.m.at("chinDL") <= -t[2];
+}
+
 std::vector<Decision> decisions()
 {
+    using A = AppearanceFindings;
     auto all = [](const Labelled &) { return true; };
     auto m = [](const Labelled &r, const char *k) { return r.m.at(k); };
     std::vector<Decision> d;
-    d.push_back({QStringLiteral("facial hair"), [](const Labelled &r) { return r.beard || r.moustache || r.goatee; },
-        all, [](const Labelled &r) { return anyFacialHair(r.shipped); }, {"lipHair", "chinHair"},
-        [m](const Labelled &r, const std::vector<double> &t) {
-            return m(r, "lipHair") >= t[0] || m(r, "chinHair") >= t[1];
-        },
-        QStringLiteral("f0.5")});
+    // Facial hair (any) is the moustache's or the beard's rule: its held-out figures are theirs.
     d.push_back({QStringLiteral("moustache"), [](const Labelled &r) { return r.moustache; }, all,
-        [](const Labelled &r) { return r.shipped.moustache; }, {"lipHair"},
-        [m](const Labelled &r, const std::vector<double> &t) { return m(r, "lipHair") >= t[0]; },
+        [](const Labelled &r) { return r.shipped.moustache; }, {"lipRedLoss", "redLossSure", "-lipDL"}, lipRule,
         QStringLiteral("f0.5")});
     d.push_back({QStringLiteral("beard (incl. goatee)"), [](const Labelled &r) { return r.beard; }, all,
-        [](const Labelled &r) { return r.shipped.beard || r.shipped.goatee; }, {"chinHair"},
-        [m](const Labelled &r, const std::vector<double> &t) { return m(r, "chinHair") >= t[0]; },
-        QStringLiteral("f0.5")});
+        [](const Labelled &r) { return r.shipped.beard || r.shipped.goatee; }, {"chinRedLoss", "chinDetail", "-chinDL"},
+        chinRule, QStringLiteral("f0.5")});
+    d.push_back({QStringLiteral("facial hair"), [](const Labelled &r) { return r.beard || r.moustache || r.goatee; },
+        all, [](const Labelled &r) { return anyFacialHair(r.shipped); }, {}, {}, QStringLiteral("f0.5")});
+    // Among the chins found hairy: a full beard (the jaw's sides too) or a goatee.
+    d.push_back(
+        {QStringLiteral("full beard, of the chins found hairy"), [](const Labelled &r) { return r.beard && !r.goatee; },
+            [](const Labelled &r) {
+                return chinRule(r, {A::kChinRedLoss, A::kChinDetail, A::kChinDarker});
+            },
+            [](const Labelled &r) { return r.shipped.beard; }, {"jawRedLoss"},
+            [m](const Labelled &r, const std::vector<double> &t) {
+                return m(r, "jawRedLoss") >= t[0] || m(r, "jawDL") <= -A::kChinDarker;
+            },
+            QStringLiteral("balanced accuracy")});
     d.push_back({QStringLiteral("glasses"), [](const Labelled &r) { return r.glasses; }, all,
-        [](const Labelled &r) { return r.shipped.glasses != GlassesShape::None; }, {"bridgeLine", "sideRims"},
+        [](const Labelled &r) { return r.shipped.glasses != GlassesShape::None; },
+        {"bridgeLine", "lowerRims", "sideRims"},
         [m](const Labelled &r, const std::vector<double> &t) {
-            return m(r, "bridgeLine") >= t[0] && m(r, "sideRims") >= t[1];
+            return (m(r, "bridgeLine") >= t[0] && (m(r, "lowerRims") >= t[1] || m(r, "sideRims") >= t[2]))
+                || m(r, "glassesScore") >= A::kGlassesThreshold;
         },
         QStringLiteral("f0.5")});
     d.push_back({QStringLiteral("headwear"), [](const Labelled &r) { return r.headwear; }, all,
@@ -292,10 +322,16 @@ std::pair<std::vector<bool>, std::vector<double>> crossValidate(
     const std::vector<int> fold = bench::stratifiedFolds(label, k);
     bench::Rule rule;
     for (const std::string &name : d.ruleMeasures) {
+        // A parameter that is no measure of its own (a second threshold on a measure) takes the
+        // candidates of the lip's redness loss.
+        // ("-name": the measure negated.)
+        const bool negated = name.front() == '-';
+        const std::string own = negated ? name.substr(1) : name;
+        const std::string measure = rows[scored.front()].m.count(own) ? own : std::string("lipRedLoss");
         std::vector<double> v;
         for (size_t i : scored)
-            v.push_back(rows[i].m.at(name));
-        rule.candidates.push_back(bench::thresholdsFrom(v));
+            v.push_back(negated ? -rows[i].m.at(measure) : rows[i].m.at(measure));
+        rule.candidates.push_back(bench::thresholdsFrom(v, 24));
     }
     rule.decide = [&](size_t r, const std::vector<double> &t) { return d.rule(rows[r], t); };
     auto objective = [&](const Counts &c) { return objectiveOf(d.objective, c); };
@@ -311,6 +347,64 @@ std::pair<std::vector<bool>, std::vector<double>> crossValidate(
     return {heldOut, bench::fitRule(rule, scored, truth, objective)};
 }
 
+int lengthClass(const QString &label)
+{
+    const QStringList names {QStringLiteral("short"), QStringLiteral("medium"), QStringLiteral("long")};
+    return int(names.indexOf(label));
+}
+
+// Hair length (short, medium, long) from how far down the hair outline reaches (hairDrop): two
+// thresholds, cross-validated for accuracy on the faces whose hair length is labelled and not none.
+QStringList hairLength(const std::vector<Labelled> &rows, const std::vector<size_t> &detected, int k)
+{
+    std::vector<size_t> scored;
+    std::vector<int> label;
+    for (size_t i : detected)
+        if (lengthClass(rows[i].hairLength) >= 0 && !rows[i].shipped.bald) {
+            scored.push_back(i);
+            label.push_back(lengthClass(rows[i].hairLength));
+        }
+    if (scored.empty())
+        return {};
+    auto classOf = [&](size_t r, const std::vector<double> &t) {
+        const double drop = rows[r].m.at("hairDrop");
+        return drop < t[0] ? 0 : drop < t[1] ? 1 : 2;
+    };
+    std::vector<double> v;
+    for (size_t i : scored)
+        v.push_back(rows[i].m.at("hairDrop"));
+    // Counted as "right or not" (every face a positive): recall is the share right.
+    bench::Rule rule {{bench::thresholdsFrom(v, 24), bench::thresholdsFrom(v, 24)},
+        [&](size_t r, const std::vector<double> &t) { return classOf(r, t) == lengthClass(rows[r].hairLength); }};
+    const std::vector<bool> truth(rows.size(), true);
+    auto objective = [](const Counts &c) { return c.recall(); };
+    const std::vector<int> fold = bench::stratifiedFolds(label, k);
+    int confusion[3][3] = {};
+    for (int f = 0; f < k; ++f) {
+        std::vector<size_t> train, test;
+        for (size_t i = 0; i < scored.size(); ++i)
+            (fold[i] == f ? test : train).push_back(scored[i]);
+        const std::vector<double> t = bench::fitRule(rule, train, truth, objective);
+        for (size_t r : test)
+            ++confusion[lengthClass(rows[r].hairLength)][classOf(r, t)];
+    }
+    const std::vector<double> all = bench::fitRule(rule, scored, truth, objective);
+    const int right = confusion[0][0] + confusion[1][1] + confusion[2][2];
+    QStringList out;
+    out << QStringLiteral(
+        "hair length — hairDrop, held-out folds (%1-fold, objective accuracy; fitted on all: %2, %3):")
+               .arg(k)
+               .arg(all[0], 0, 'g', 4)
+               .arg(all[1], 0, 'g', 4);
+    out << QStringLiteral("  right %1 of %2 (%3); rows labelled short/medium/long, columns decided:")
+               .arg(right)
+               .arg(scored.size())
+               .arg(double(right) / double(scored.size()), 0, 'f', 2);
+    for (int c = 0; c < 3; ++c)
+        out << QStringLiteral("  %1 %2 %3").arg(confusion[c][0], 4).arg(confusion[c][1], 4).arg(confusion[c][2], 4);
+    return out;
+}
+
 QJsonObject attributes()
 {
     QString error;
@@ -324,17 +418,27 @@ QJsonObject attributes()
     QStringList report;
     report << QStringLiteral("faces %1, detected %2").arg(rows.size()).arg(detected.size());
     const int k = 5;
+    std::map<QString, std::vector<bool>> heldOutOf; // the moustache's and the beard's
     for (const Decision &d : decisions()) {
         std::vector<size_t> scored;
         for (size_t i : detected)
             if (d.scored(rows[i]))
                 scored.push_back(i);
-        const bool accuracy = d.objective == QLatin1String("accuracy");
+        const bool accuracy = d.objective.endsWith(QLatin1String("accuracy"));
         report << d.name + QStringLiteral(" — as shipped:");
         report << splits(
             rows, scored, [&](size_t i) { return d.shipped(rows[i]); }, [&](size_t i) { return d.truth(rows[i]); },
             accuracy);
-        const auto [heldOut, fitted] = crossValidate(d, rows, scored, k);
+        auto [heldOut, fitted]
+            = d.rule ? crossValidate(d, rows, scored, k) : std::pair<std::vector<bool>, std::vector<double>> {};
+        if (!d.rule) {
+            heldOut.assign(rows.size(), false);
+            for (const auto &[name, decided] : heldOutOf)
+                for (size_t i = 0; i < rows.size(); ++i)
+                    heldOut[i] = heldOut[i] || decided[i];
+        } else if (d.name == QLatin1String("moustache") || d.name.startsWith(QLatin1String("beard"))) {
+            heldOutOf[d.name] = heldOut;
+        }
         QStringList names;
         for (size_t p = 0; p < fitted.size(); ++p)
             names << QStringLiteral("%1 %2").arg(QString::fromStdString(d.ruleMeasures[p])).arg(fitted[p], 0, 'g', 4);
@@ -345,7 +449,16 @@ QJsonObject attributes()
         report << splits(
             rows, scored, [&](size_t i) { return bool(heldOut[i]); }, [&](size_t i) { return d.truth(rows[i]); },
             accuracy);
+        if (d.name == QLatin1String("facial hair")) {
+            int women = 0, children = 0;
+            for (size_t i : scored) {
+                women += heldOut[i] && rows[i].sex == QLatin1String("f");
+                children += heldOut[i] && rows[i].age == QLatin1String("child");
+            }
+            report << QStringLiteral("  held out: drawn on women %1, on children %2").arg(women).arg(children);
+        }
     }
+    report << hairLength(rows, detected, k);
     // Facial hair drawn on women and children.
     int onWomen = 0, onChildren = 0;
     for (size_t i : detected) {

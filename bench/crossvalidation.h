@@ -87,7 +87,7 @@ inline std::vector<double> fitRule(const Rule &rule, const std::vector<size_t> &
 }
 
 // Candidate thresholds: the midpoints between consecutive distinct values (at most `most`,
-// evenly through them), and one below all.
+// evenly through them), one below all and one above all.
 inline std::vector<double> thresholdsFrom(std::vector<double> v, size_t most = 40)
 {
     std::sort(v.begin(), v.end());
@@ -95,14 +95,15 @@ inline std::vector<double> thresholdsFrom(std::vector<double> v, size_t most = 4
     std::vector<double> mids;
     if (v.empty())
         return {0.0};
-    mids.push_back(v.front() - 1e-9);
     for (size_t i = 0; i + 1 < v.size(); ++i)
         mids.push_back((v[i] + v[i + 1]) / 2.0);
+    std::vector<double> out {v.front() - 1e-9};
     if (mids.size() <= most)
-        return mids;
-    std::vector<double> out;
-    for (size_t i = 0; i < most; ++i)
-        out.push_back(mids[i * (mids.size() - 1) / (most - 1)]);
+        out.insert(out.end(), mids.begin(), mids.end());
+    else
+        for (size_t i = 0; i < most; ++i)
+            out.push_back(mids[i * (mids.size() - 1) / (most - 1)]);
+    out.push_back(v.back() + 1e-9);
     return out;
 }
 

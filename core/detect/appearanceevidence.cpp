@@ -33,13 +33,11 @@ double medianOf(std::vector<double> v)
 class LabView
 {
 public:
-    LabView(const QImage &photo, const QRect &area)
+    explicit LabView(const QImage &photo)
     {
-        m_origin = area.intersected(photo.rect()).topLeft();
-        const QRect r = area.intersected(photo.rect());
-        if (r.isEmpty())
+        if (photo.isNull())
             return;
-        const QImage rgb = photo.copy(r).convertToFormat(QImage::Format_RGB888);
+        const QImage rgb = photo.convertToFormat(QImage::Format_RGB888);
         const cv::Mat wrapped(
             rgb.height(), rgb.width(), CV_8UC3, const_cast<uchar *>(rgb.constBits()), size_t(rgb.bytesPerLine()));
         cv::Mat lab;
@@ -47,24 +45,29 @@ public:
         std::vector<cv::Mat> channels;
         cv::split(lab, channels);
         channels[0].convertTo(m_l, CV_32F, 100.0 / 255.0);
+        channels[1].convertTo(m_a, CV_32F, 1.0, -128.0);
+        channels[2].convertTo(m_b, CV_32F, 1.0, -128.0);
         cv::Mat mean;
         cv::blur(m_l, mean, cv::Size(3, 3), cv::Point(-1, -1), cv::BORDER_REPLICATE);
         cv::absdiff(m_l, mean, m_detail);
     }
 
-    // The L* and detail values inside `box` (photo pixels, clipped).
-    void values(QRectF box, std::vector<double> *l, std::vector<double> *detail) const
+    // The L*, a*, b* and detail values inside `box` (clipped).
+    void values(QRectF box, std::vector<double> *l, std::vector<double> *detail, std::vector<double> *a = nullptr,
+        std::vector<double> *b = nullptr) const
     {
         box = box.normalized();
-        const int x0 = std::max(0, int(std::floor(box.left())) - m_origin.x());
-        const int x1 = std::min(m_l.cols - 1, int(box.right()) - m_origin.x());
-        const int y0 = std::max(0, int(std::floor(box.top())) - m_origin.y());
-        const int y1 = std::min(m_l.rows - 1, int(box.bottom()) - m_origin.y());
+        const int x0 = std::max(0, int(std::floor(box.left()))), x1 = std::min(m_l.cols - 1, int(box.right()));
+        const int y0 = std::max(0, int(std::floor(box.top()))), y1 = std::min(m_l.rows - 1, int(box.bottom()));
         for (int y = y0; y <= y1; ++y) {
             for (int x = x0; x <= x1; ++x) {
                 l->push_back(m_l.at<float>(y, x));
                 if (detail)
                     detail->push_back(m_detail.at<float>(y, x));
+                if (a)
+                    a->push_back(m_a.at<float>(y, x));
+                if (b)
+                    b->push_back(m_b.at<float>(y, x));
             }
         }
     }
@@ -88,22 +91,25 @@ public:
     }
 
 private:
-    QPoint m_origin;
-    cv::Mat m_l, m_detail;
+    cv::Mat m_l, m_a, m_b, m_detail;
 };
 
 // The strongest thin line across a profile: a point darker than both its neighbours `d` away
-// (a dark rim), or lighter than both (a metal one catching the light), by how much, in L*. A
-// step (a shadow's edge, the hair's edge) is darker than one neighbour only and does not count.
+// (a dark rim), or lighter than both (a metal one catching the light), by how much, in L*, over
+// the profile's median such response (so that wrinkles or grain all along it, lines everywhere,
+// are no line). A step (a shadow's edge, the hair's edge) is darker than one neighbour only and
+// does not count.
 double lineStrength(const std::vector<double> &p, int d)
 {
-    double best = 0;
+    std::vector<double> responses;
     for (int i = d; i + d < int(p.size()); ++i) {
         const double lo = std::min(p[size_t(i - d)], p[size_t(i + d)]);
         const double hi = std::max(p[size_t(i - d)], p[size_t(i + d)]);
-        best = std::max({best, lo - p[size_t(i)], p[size_t(i)] - hi});
+        responses.push_back(std::max({0.0, lo - p[size_t(i)], p[size_t(i)] - hi}));
     }
-    return best;
+    if (responses.empty())
+        return 0;
+    return *std::max_element(responses.begin(), responses.end()) - medianOf(responses);
 }
 
 QRectF spanBox(QPointF a, QPointF b)
@@ -117,24 +123,31 @@ AppearanceEvidence measureEvidence(const QImage &photo, const FaceModel &face)
 {
     AppearanceEvidence out;
     const Fapu f = face.fapu();
-    const double es0 = f.es0;
-    if (photo.isNull() || !face.isValid() || es0 <= 1)
+    if (photo.isNull() || !face.isValid() || f.es0 <= 1)
         return out;
-    auto p = [&](const char *id) { return face.point(id); };
-    const QRect area = face.bounds().adjusted(-es0, -es0, es0, es0).toAlignedRect();
-    const LabView lab(photo, area);
+    // The face's surroundings scaled to kEvidenceEs0; points and sizes with it.
+    const double scale = kEvidenceEs0 / f.es0;
+    const QRect area = face.bounds().adjusted(-f.es0, -f.es0, f.es0, f.es0).toAlignedRect().intersected(photo.rect());
+    if (area.isEmpty())
+        return out;
+    const QImage crop = photo.copy(area).scaled(std::max(1, int(std::lround(area.width() * scale))),
+        std::max(1, int(std::lround(area.height() * scale))), Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
+    const LabView lab(crop);
+    auto p = [&](const char *id) { return (face.point(id) - QPointF(area.topLeft())) * scale; };
+    const double es0 = kEvidenceEs0, mw0 = f.mw0 * scale;
 
     // The cheeks under the eyes: the person's own skin, as lit, and its fine texture.
-    std::vector<double> cheekL, cheekDetail;
+    std::vector<double> cheekL, cheekDetail, cheekA;
     for (bool left : {true, false}) {
         const QPointF outer = p(left ? "3.12" : "3.7"), inner = p(left ? "3.8" : "3.11");
         const QPointF ball = p(left ? "3.6" : "3.5");
         lab.values(spanBox(QPointF(outer.x(), ball.y() + 0.45 * es0), QPointF(inner.x(), ball.y() + 0.65 * es0)),
-            &cheekL, &cheekDetail);
+            &cheekL, &cheekDetail, &cheekA);
     }
     if (cheekL.empty())
         return out;
     out.cheekL = medianOf(cheekL);
+    const double cheekRed = medianOf(cheekA);
     std::vector<double> deviation;
     for (double l : cheekL)
         deviation.push_back(std::abs(l - out.cheekL));
@@ -145,44 +158,59 @@ AppearanceEvidence measureEvidence(const QImage &photo, const FaceModel &face)
         cheekTexture += d;
     cheekTexture = cheekTexture / double(cheekDetail.size()) + 0.5; // + a floor for perfectly smooth skin
 
-    auto hairIn = [&](const QRectF &box, double *share, double *detail) {
-        std::vector<double> l, d;
-        lab.values(box, &l, &d);
+    struct Place
+    {
+        double share = 0, detail = 0, dl = 0, redLoss = 0;
+    };
+    auto hairIn = [&](const QRectF &box) {
+        Place place;
+        std::vector<double> l, d, a;
+        lab.values(box, &l, &d, &a);
         if (l.empty())
-            return;
+            return place;
         const auto dark = std::count_if(l.begin(), l.end(), [&](double v) { return v < out.cheekL - darker; });
         double sum = 0;
         for (double v : d)
             sum += v;
-        *detail = sum / double(d.size()) / cheekTexture;
-        *share = double(dark) / double(l.size());
+        place.detail = sum / double(d.size()) / cheekTexture;
+        place.share = double(dark) / double(l.size());
+        place.dl = medianOf(l) - out.cheekL;
+        place.redLoss = cheekRed - medianOf(a);
+        return place;
     };
     // Upper lip: between the nose's bottom and the lip, the lip's middle half wide.
     const double noseBottom = std::max({p("9.15").y(), p("9.4").y(), p("9.5").y()});
     const double lipTop = std::min({p("8.9").y(), p("8.1").y(), p("8.10").y()});
     const double gap = lipTop - noseBottom;
     if (gap > 2) {
-        const double xl = p("8.4").x() + 0.2 * f.mw0, xr = p("8.3").x() - 0.2 * f.mw0;
-        hairIn(spanBox(QPointF(xl, noseBottom + 0.35 * gap), QPointF(xr, lipTop - 0.1 * gap)), &out.lipHair,
-            &out.lipDetail);
+        const double xl = p("8.4").x() + 0.2 * mw0, xr = p("8.3").x() - 0.2 * mw0;
+        const Place lip = hairIn(spanBox(QPointF(xl, noseBottom + 0.35 * gap), QPointF(xr, lipTop - 0.1 * gap)));
+        out.lipHair = lip.share;
+        out.lipDetail = lip.detail;
+        out.lipDL = lip.dl;
+        out.lipRedLoss = lip.redLoss;
     }
     // Chin: below the lower lip's shadow, above the chin's point.
     const double jawH = p("2.1").y() - p("8.2").y();
     if (jawH > 2) {
         const QPointF c(p("2.1").x(), p("8.2").y() + 0.6 * jawH);
-        hairIn(
-            QRectF(c.x() - 0.2 * f.mw0, c.y() - 0.2 * jawH, 0.4 * f.mw0, 0.4 * jawH), &out.chinHair, &out.chinDetail);
+        const Place chin = hairIn(QRectF(c.x() - 0.2 * mw0, c.y() - 0.2 * jawH, 0.4 * mw0, 0.4 * jawH));
+        out.chinHair = chin.share;
+        out.chinDetail = chin.detail;
+        out.chinDL = chin.dl;
+        out.chinRedLoss = chin.redLoss;
         // The jaw's sides, inside the contour, at the mouth's height: the weaker side.
         const QPointF mid = (p("5.2") + p("5.1")) / 2.0;
-        double share[2] = {0, 0}, detail[2] = {0, 0};
+        Place sides[2];
         int k = 0;
         for (const char *side : {"2.12", "2.11"}) {
-            const QPointF s = p(side) + (mid - p(side)) * 0.15;
-            hairIn(QRectF(s.x() - 0.06 * es0, s.y() - 0.06 * es0, 0.12 * es0, 0.12 * es0), &share[k], &detail[k]);
-            ++k;
+            const QPointF s = p(side) + (mid - p(side)) * 0.25;
+            sides[k++] = hairIn(QRectF(s.x() - 0.06 * es0, s.y() - 0.06 * es0, 0.12 * es0, 0.12 * es0));
         }
-        out.jawHair = std::min(share[0], share[1]);
-        out.jawDetail = std::min(detail[0], detail[1]);
+        out.jawHair = std::min(sides[0].share, sides[1].share);
+        out.jawDetail = std::min(sides[0].detail, sides[1].detail);
+        out.jawDL = std::max(sides[0].dl, sides[1].dl);
+        out.jawRedLoss = std::min(sides[0].redLoss, sides[1].redLoss);
     }
 
     // Glasses: a frame's thin lines, where skin runs smooth: over the nose's middle between the

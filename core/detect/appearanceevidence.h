@@ -18,8 +18,13 @@ struct AppearanceEvidence
     // textured (fine detail above the cheeks'), the evidence shadows and a dark jaw line lack:
     // those are smooth.
     double lipHair = 0, chinHair = 0, jawHair = 0;
-    // The same places' fine texture (mean |L* - its 3x3 mean|) over the cheeks'.
+    // The same places' fine texture (mean |L* - its 3x3 mean|, the face scaled to kEvidenceEs0)
+    // over the cheeks'.
     double lipDetail = 0, chinDetail = 0, jawDetail = 0;
+    // The same places' median L* less the cheeks' (negative: darker), and how much less red
+    // (a*) they are than the cheeks: hair is less red than the skin it grows from, where a
+    // shadow on skin or a dark jaw line keeps the skin's redness (jaw: the side losing less).
+    double lipDL = 0, chinDL = 0, jawDL = 0, lipRedLoss = 0, chinRedLoss = 0, jawRedLoss = 0;
     // Glasses' bridge: over the nose's middle between the inner eye corners, the strongest thin
     // line (a dip or a ridge in L* across a few pixels) against the nose's own smooth run, in
     // L* units; and the same measured beside each eye's outer corner on vertical lines (a frame's
@@ -29,6 +34,10 @@ struct AppearanceEvidence
     double lowerRims = 0;
     double cheekL = 0; // the cheeks' median L*
 };
+
+// The face is measured scaled to this eye separation (pixels), so that fine texture means the
+// same on a small crop and on a large portrait.
+inline constexpr double kEvidenceEs0 = 48.0;
 
 AppearanceEvidence measureEvidence(const QImage &photo, const FaceModel &face);
 
