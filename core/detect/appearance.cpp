@@ -922,6 +922,7 @@ AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, co
         findFacialHair(px, face, es0, skinLuma, colourless(skin), &out);
     }
     findHead(px, face, es0, skin, &out);
+    rateAppearance(face, &out);
     return out;
 }
 
