@@ -299,6 +299,9 @@ std::vector<Decision> decisions()
         QStringLiteral("f0.5")});
     d.push_back({QStringLiteral("headwear"), [](const Labelled &r) { return r.headwear; }, all,
         [](const Labelled &r) { return r.shipped.hat; }, {"hatScore"},
+        // (18 of the 21 headwear faces are crops whose crown the photo cuts off, where no hat is
+        // decided; the colour of the photo's top rows over the forehead, against the skin's and
+        // the brows', was tried and did not tell headwear from hair or forehead.)
         [m](const Labelled &r, const std::vector<double> &t) { return m(r, "hatScore") >= t[0]; },
         QStringLiteral("accuracy")});
     d.push_back({QStringLiteral("bald"), [](const Labelled &r) { return r.bald; }, all,

@@ -341,8 +341,11 @@ void Style::sampleColours(const QImage &original, const FaceModel &face, Appeara
     // A photo without colour says nothing about hues: skin and hair take natural colours of the
     // photo's tones, lips follow the skin and the irises a dark brown.
     const bool monochrome = balance.greyscale || original.allGray();
-    const bool skinOk = skin.isValid() && (monochrome || plausibleSkin(skin));
-    const QColor skinDrawn = monochrome && skin.isValid() ? skinFromGrey(qGray(skin.rgb())) : skin;
+    // A skin sampled in a colour no skin has (a cast the balance left, a coloured light) still
+    // tells the person's lightness: it is drawn as a natural skin of that tone, never as the
+    // preset's pale skin (a dark-skinned face drawn pink).
+    const bool skinOk = skin.isValid();
+    const QColor skinDrawn = skinOk && (monochrome || !plausibleSkin(skin)) ? skinFromGrey(qGray(skin.rgb())) : skin;
     const QColor skinUsed = skinOk ? skinDrawn : components.value(QStringLiteral("face")).fill;
     if (skinOk) {
         for (const char *key : {"face", "jaw", "ears"})
