@@ -146,6 +146,22 @@ private Q_SLOTS:
         }
     }
 
+    // A skin the photo shows grey (or in a colour no skin has) is drawn as a natural, warm skin
+    // of its lightness, never the preset's pale pink nor grey.
+    void colourlessSkinDrawnWarmAtItsLightness()
+    {
+        for (const QColor &seen : {QColor(200, 200, 200), QColor(90, 90, 92), QColor(90, 160, 90)}) {
+            DrawnFaceOptions o;
+            o.skin = seen;
+            Style style = Style::preset(QStringLiteral("normal"));
+            style.sampleColours(testing::drawnFace(o), testing::drawnFaceModel());
+            const QColor drawn = style.components.value(QStringLiteral("face")).fill;
+            const QByteArray what = (seen.name() + QStringLiteral(" drawn ") + drawn.name()).toUtf8();
+            QVERIFY2(drawn.red() > drawn.green() && drawn.green() > drawn.blue(), what.constData());
+            QVERIFY2(std::abs(lStar(drawn) - lStar(seen)) <= 10.0, what.constData());
+        }
+    }
+
     // On the labelled faces (faces-attributes: research data, read only here), no facial hair is
     // drawn on a woman or a child, and what is drawn is mostly there. The thresholds were chosen
     // by cross-validation on this set, so these are its in-sample figures; the held-out ones are
