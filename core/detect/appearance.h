@@ -72,15 +72,17 @@ struct AppearanceFindings
     // L* below the cheeks' past which the lip's or the chin's median is hair, not a shadow.
     static constexpr double kLipDarker = 23;
     static constexpr double kChinDarker = 25;
-    static constexpr double kJawRedLoss = 2.5; // both jaw sides: a full beard, else a goatee (objective: accuracy)
+    // Both jaw sides: a full beard, else a goatee (objective: balanced accuracy, among the chins
+    // found hairy).
+    static constexpr double kJawRedLoss = 2.5;
     // Glasses: a thin line over the nose and rims under or beside the eyes, in L* units.
     static constexpr double kBridgeLine = 1.57;
     static constexpr double kLowerRims = 3.53;
     static constexpr double kSideRims = 6.47;
 
-    // Hair length by hairDrop: long past the first, medium past the second... see hairLengthOf().
-    // (Cross-validated for accuracy on the labelled lengths: held-out 0.62; the outline rarely
-    // stops at the jaw, so medium is seldom told from the others.)
+    // Hair length by hairDrop: medium from kHairMedium, long from kHairLong (cross-validated for
+    // accuracy on the labelled lengths: held-out 0.62; the outline rarely stops at the jaw, so
+    // medium is seldom told from the others).
     static constexpr double kHairMedium = 1.005;
     static constexpr double kHairLong = 1.072;
 
@@ -89,16 +91,14 @@ struct AppearanceFindings
     // nobody without them (precision 1.0, recall 0.13).
     static constexpr double kGlassesThreshold = 2.5;
     static constexpr double kBridgedThreshold = 0.9;
+    // The dark share a moustache (and beard) of the person's own dark hair shows: no longer a
+    // decision's threshold, only which colour facial hair found is drawn in (stubble, grey).
     static constexpr double kMoustacheThreshold = 0.5;
     static constexpr double kBeardThreshold = 0.5;
-    // A beard darkens the jaw's sides as well (shared photos: beards 0.59 to 0.99, a goatee 0).
-    static constexpr double kBeardSides = 0.3;
-    // A goatee darkens the chin where a bare chin shows at most a little of the lip's shadow
-    // (shared photos, measured upright: bare chins 0 to 0.08, bearded ones 0.20 to 0.59).
-    static constexpr double kGoateeThreshold = 0.15;
     static constexpr double kBaldThreshold = 0.6;
     static constexpr double kSkinReachThreshold = 0.7;
-    // Stubble: at least this share dark and this much more textured than the cheeks.
+    // Stubble: at least this share dark and this much more textured than the cheeks (measured;
+    // it no longer decides, see findFacialHair).
     static constexpr double kStubbleDarkShare = 0.25;
     static constexpr double kStubbleTexture = 1.25;
     // Grey or white hair: at least this share of the lip speckled, and this many times the
