@@ -12,12 +12,15 @@
 #include <QPainter>
 #include <QPainterPath>
 
+#include <algorithm>
 #include <optional>
+#include <random>
 
 // likeness.sheet: every shared face and the Debian portraits, as a user would cartoon them
 // (detect, sample the style, draw), with what the appearance detection found per face. Writes a
 // contact sheet (photo with the points | cartoon) as a PNG to TOONFACE_SHEET (default
 // likeness-sheet.png in the working directory) for a person to look at: it is not data to commit.
+// (TOONFACE_SHEET_FACES=attributes: 40 labelled faces instead, see attributeSubjects.)
 
 using namespace toonface;
 
@@ -30,10 +33,26 @@ struct Subject
     std::optional<QPointF> faceAt;
 };
 
+// TOONFACE_SHEET_FACES=attributes: 40 faces of faces-attributes (research data, looked at here,
+// never committed), drawn at random with a fixed seed, instead of the shared photos.
+std::vector<Subject> attributeSubjects(const QString &data)
+{
+    std::vector<Subject> out;
+    const QDir images(QDir(data).filePath(QStringLiteral("faces-attributes/images")));
+    QStringList files = images.entryList({QStringLiteral("*.jpg")}, QDir::Files, QDir::Name);
+    std::mt19937 rng(25);
+    std::shuffle(files.begin(), files.end(), rng);
+    for (const QString &f : files.mid(0, 40))
+        out.push_back({f.section(QLatin1Char('.'), 0, 0), images.filePath(f), std::nullopt});
+    return out;
+}
+
 std::vector<Subject> subjects()
 {
     std::vector<Subject> out;
     const QString data = bench::sharedDataDir();
+    if (qEnvironmentVariable("TOONFACE_SHEET_FACES") == QLatin1String("attributes"))
+        return data.isEmpty() ? out : attributeSubjects(data);
     if (!data.isEmpty()) {
         const QDir faces(QDir(data).filePath(QStringLiteral("faces")));
         for (const char *name : {"lfpw_trainset_image_0001.png", "lfpw_trainset_image_0002.png",
@@ -148,6 +167,10 @@ QJsonObject sheet()
         scores.insert(QStringLiteral("facialHair"), f.facialHair.isValid() ? f.facialHair.name() : QString());
         scores.insert(QStringLiteral("bald"), f.baldScore);
         scores.insert(QStringLiteral("hat"), f.hatScore);
+        const AppearanceEvidence &e = f.evidence;
+        scores.insert(QStringLiteral("evidence"),
+            QJsonArray {e.lipRedLoss, e.lipDL, e.chinRedLoss, e.chinDetail, e.chinDL, e.jawRedLoss, e.bridgeLine,
+                e.lowerRims, e.sideRims});
         o.insert(QStringLiteral("scores"), scores);
         people.append(o);
 

@@ -1,6 +1,9 @@
 #include "cli/command.h"
 #include "cli/faceinput.h"
+#include "detect/appearance.h"
+#include "io/appearancejson.h"
 #include "io/facejson.h"
+#include "render/style.h"
 
 #include <QDir>
 #include <QJsonDocument>
@@ -57,8 +60,15 @@ int runDetect(const Command &self, const QStringList &args)
     FaceInput input;
     if (const int code = loadFaceInput(image, options, &input); code != ExitOk)
         return code;
-    const QByteArray json
-        = QJsonDocument(faceToJson(input.face, input.photoPath, &input.detection)).toJson(QJsonDocument::Indented);
+    QJsonObject face = faceToJson(input.face, input.photoPath, &input.detection);
+    // What the person looks like and wears, as the cartoon will draw it.
+    if (!input.photo.isNull()) {
+        Style style = Style::preset(QStringLiteral("normal"));
+        AppearanceFindings findings;
+        style.sampleColours(input.photo, input.face, &findings);
+        face.insert(QStringLiteral("appearance"), appearanceToJson(style, findings));
+    }
+    const QByteArray json = QJsonDocument(face).toJson(QJsonDocument::Indented);
     return writeOutput(parser, output, json);
 }
 

@@ -56,6 +56,13 @@ constexpr double kRimDrift = 0.12; // ES0 a top rim may rise or fall from over t
 // mouth, its tilt already moves a point a twentieth of the box's width up or down.
 constexpr double kUprightRoll = 3.0;
 
+// A skin without colour: a greyscale photo.
+bool colourless(const QColor &skin)
+{
+    return std::max({skin.red(), skin.green(), skin.blue()}) - std::min({skin.red(), skin.green(), skin.blue()})
+        < kColourless;
+}
+
 double lumaOf(QRgb p)
 {
     return 0.299 * qRed(p) + 0.587 * qGreen(p) + 0.114 * qBlue(p);
@@ -559,18 +566,24 @@ void findGlasses(const Pixels &px, const FaceModel &face, double es0, double ski
     const double texture = percentile(reference, 0.9) + kEdgeFloor;
     // Both must show: a rim alone may be a lid's crease or a bag, a bridge alone a brow or a fold.
     out->glassesScore = std::sqrt(std::max(0.0, rimScore) * std::max(0.0, bridgeEdge)) / texture;
-    // Either frames all round (rims under the eyes and a bridge), or a dark bar from one eye to
-    // the other over the nose (top rims and bridge; the lower rims may be clear or absent).
-    const bool rims = out->glassesScore >= AppearanceFindings::kGlassesThreshold;
-    const bool bridged = out->bridgedDark >= AppearanceFindings::kBridgedThreshold;
-    if (!rims && !bridged)
+    // A frame: a thin line over the nose's middle (its bridge) and rims, under the eyes or
+    // beside them. Dark lids, a brow or a shadow are no thin line across the nose; a crease at
+    // the nose's root has no rims.
+    // (Or strong rim and bridge edges over smooth skin.) A dark bar across the eyes alone is
+    // what dark lids and brows show too: it is no evidence.
+    const AppearanceEvidence &e = out->evidence;
+    const bool frameLines = e.bridgeLine >= AppearanceFindings::kBridgeLine
+        && (e.lowerRims >= AppearanceFindings::kLowerRims || e.sideRims >= AppearanceFindings::kSideRims);
+    if (!frameLines && out->glassesScore < AppearanceFindings::kGlassesThreshold)
         return;
+    const bool bridged = out->bridgedDark >= AppearanceFindings::kBridgedThreshold;
     out->appearance.glasses = rimCurve > 0.035 ? GlassesShape::Round : GlassesShape::Rectangular;
     out->appearance.lens = measureLenses(px, face, es0, skinLuma);
     out->glassesFrame = bridged ? median(bar.pixels) : darkest(rimPixels, 0.3);
 }
 
-void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double skinLuma, AppearanceFindings *out)
+void findFacialHair(
+    const Pixels &px, const FaceModel &face, double es0, double skinLuma, bool colourless, AppearanceFindings *out)
 {
     auto p = [&](const char *id) { return face.point(id); };
     const Fapu f = face.fapu();
@@ -637,12 +650,24 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
         && out->moustacheSpeckle >= AppearanceFindings::kSpeckleOverCheeks * out->cheekSpeckle;
     const bool darkMoustache = out->moustacheScore >= AppearanceFindings::kMoustacheThreshold
         || stubble(out->moustacheScore, out->moustacheTexture);
-    out->appearance.moustache = darkMoustache || speckled;
+    // Hair is less red than the skin it grows from; a shadow under the nose or the lip, or a dark
+    // jaw line, keeps the skin's redness. (Stubble seen only as a share of dark, textured pixels
+    // is left out: on the labelled faces that rule drew stubble on clean-shaven men.) A faint loss on the lip counts
+    // only where the lip or the chin shows it clearly. On the chin the hair is also textured. Without colour, the
+    // strands (speckle) are the only evidence.
+    const AppearanceEvidence &e = out->evidence;
+    // Hair far darker than any shadow on the face is hair, whatever its colour.
+    const bool hairyLip = (e.lipRedLoss >= AppearanceFindings::kLipRedLoss
+                              && std::max(e.lipRedLoss, e.chinRedLoss) >= AppearanceFindings::kRedLossSure)
+        || e.lipDL <= -AppearanceFindings::kLipDarker;
+    const bool hairyChin
+        = (e.chinRedLoss >= AppearanceFindings::kChinRedLoss && e.chinDetail >= AppearanceFindings::kChinDetail)
+        || e.chinDL <= -AppearanceFindings::kChinDarker;
+    out->appearance.moustache = hairyLip || (colourless && speckled);
     // A beard covers the jaw's sides too; hair on the chin alone is a goatee.
     out->appearance.beard
-        = (out->beardScore >= AppearanceFindings::kBeardThreshold || stubble(out->beardScore, out->beardTexture))
-        && out->jawScore >= AppearanceFindings::kBeardSides;
-    out->appearance.goatee = !out->appearance.beard && out->goateeScore >= AppearanceFindings::kGoateeThreshold;
+        = hairyChin && (e.jawRedLoss >= AppearanceFindings::kJawRedLoss || e.jawDL <= -AppearanceFindings::kChinDarker);
+    out->appearance.goatee = hairyChin && !out->appearance.beard;
     std::vector<QRgb> hair;
     if (out->appearance.moustache)
         hair.insert(hair.end(), lipHair.begin(), lipHair.end());
@@ -801,10 +826,7 @@ void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor 
     const bool skinToTheTop
         = out->skinReach >= AppearanceFindings::kSkinReachThreshold && out->skinReach <= kMaxSkinReach;
     // Without colour, a scalp and grey or white hair look alike: a greyscale photo is never bald.
-    const bool colourless
-        = std::max({skin.red(), skin.green(), skin.blue()}) - std::min({skin.red(), skin.green(), skin.blue()})
-        < kColourless;
-    out->appearance.bald = !colourless && (out->baldScore >= AppearanceFindings::kBaldThreshold || skinToTheTop);
+    out->appearance.bald = !colourless(skin) && (out->baldScore >= AppearanceFindings::kBaldThreshold || skinToTheTop);
     if (out->appearance.bald)
         return;
     // A hat by its colour: none that hair grows in (black, browns, blondes, reds, greys and white);
@@ -891,13 +913,16 @@ AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, co
     const Pixels px(photo);
     if (const std::optional<Upright> level = upright(photo, face, skin, es0)) {
         const Pixels levelPx(level->photo);
+        out.evidence = measureEvidence(level->photo, level->face);
         findGlasses(levelPx, level->face, es0, skinLuma, &out);
-        findFacialHair(levelPx, level->face, es0, skinLuma, &out);
+        findFacialHair(levelPx, level->face, es0, skinLuma, colourless(skin), &out);
     } else {
+        out.evidence = measureEvidence(photo, face);
         findGlasses(px, face, es0, skinLuma, &out);
-        findFacialHair(px, face, es0, skinLuma, &out);
+        findFacialHair(px, face, es0, skinLuma, colourless(skin), &out);
     }
     findHead(px, face, es0, skin, &out);
+    rateAppearance(face, &out);
     return out;
 }
 

@@ -3,6 +3,8 @@ list(APPEND TOONFACE_CORE_SOURCES
   detect/landmarkfigures.h detect/landmarkfigures.cpp
   detect/faceregions.h detect/faceregions.cpp
   detect/appearance.h detect/appearance.cpp
+  detect/appearanceevidence.h detect/appearanceevidence.cpp
+  detect/appearancerating.cpp
   detect/hairsearch.h detect/hairsearch.cpp
   detect/labcolour.h detect/labcolour.cpp
   detect/headregions.h detect/headregions.cpp

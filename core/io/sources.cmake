@@ -2,6 +2,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   io/jsonfield.h io/jsonfield.cpp
   io/pointsjson.h io/pointsjson.cpp
   io/facejson.h io/facejson.cpp
+  io/appearancejson.h io/appearancejson.cpp
   io/project.h io/project.cpp
   io/layersjson.h io/layersjson.cpp
   io/syllablesjson.h io/syllablesjson.cpp

@@ -180,6 +180,10 @@ QColor mix(QColor a, QColor b, double t)
         float(a.greenF() + (b.greenF() - a.greenF()) * t), float(a.blueF() + (b.blueF() - a.blueF()) * t));
 }
 
+// A skin less saturated than this in a colour photo has lost its colour to the balance (HSV
+// saturation).
+constexpr double kGreySkin = 0.08;
+
 bool plausibleSkin(QColor c)
 {
     if (!c.isValid())
@@ -341,8 +345,14 @@ void Style::sampleColours(const QImage &original, const FaceModel &face, Appeara
     // A photo without colour says nothing about hues: skin and hair take natural colours of the
     // photo's tones, lips follow the skin and the irises a dark brown.
     const bool monochrome = balance.greyscale || original.allGray();
-    const bool skinOk = skin.isValid() && (monochrome || plausibleSkin(skin));
-    const QColor skinDrawn = monochrome && skin.isValid() ? skinFromGrey(qGray(skin.rgb())) : skin;
+    // A skin sampled in a colour no skin has (a cast the balance left, a coloured light) still
+    // tells the person's lightness: it is drawn as a natural skin of that tone, never as the
+    // preset's pale skin (a dark-skinned face drawn pink).
+    // So is a grey one in a colour photo (a balance that took a pale person's warmth for a cast).
+    const bool skinOk = skin.isValid();
+    const bool greyInColour = !monochrome && skinOk && skin.hsvSaturationF() < kGreySkin;
+    const QColor skinDrawn
+        = skinOk && (monochrome || greyInColour || !plausibleSkin(skin)) ? skinFromGrey(qGray(skin.rgb())) : skin;
     const QColor skinUsed = skinOk ? skinDrawn : components.value(QStringLiteral("face")).fill;
     if (skinOk) {
         for (const char *key : {"face", "jaw", "ears"})

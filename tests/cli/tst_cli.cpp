@@ -293,6 +293,10 @@ private Q_SLOTS:
         QCOMPARE(points.size(), 72);
         QCOMPARE(points.first().toObject().value(QLatin1StringView("id")).toString(), QStringLiteral("h.1"));
         QCOMPARE(points.last().toObject().value(QLatin1StringView("id")).toString(), QStringLiteral("2.3"));
+        // What the person looks like (tst_appearancejson checks the object's schema).
+        const QJsonObject look = json.value(QLatin1StringView("appearance")).toObject();
+        QVERIFY(look.value(QLatin1StringView("skin")).toString().startsWith(QLatin1Char('#')));
+        QVERIFY(look.value(QLatin1StringView("confidence")).isObject());
         for (const auto &v : points) {
             const QJsonObject o = v.toObject();
             for (const char *key : {"id", "x", "y", "group", "control"})

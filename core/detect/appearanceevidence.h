@@ -1,0 +1,44 @@
+#pragma once
+
+#include "face/facemodel.h"
+
+#include <QImage>
+
+namespace toonface {
+
+// Measures of what a face wears or grows, each against the person's own skin in the same photo
+// (CIE L*a*b*, the cheeks under the eyes as the reference), so that a dark or a light skin, a
+// colour cast or a dim photo do not change what they say. Measured on a face whose eyes are
+// level (appearance.cpp turns a tilted one first). Each is a share or a ratio; the decisions'
+// thresholds are in appearance.h.
+struct AppearanceEvidence
+{
+    // Facial hair, per place (upper lip; chin; jaw's sides, the weaker of the two): the share of
+    // pixels that are hair, i.e. darker than the cheeks by more than their own spread and
+    // textured (fine detail above the cheeks'), the evidence shadows and a dark jaw line lack:
+    // those are smooth.
+    double lipHair = 0, chinHair = 0, jawHair = 0;
+    // The same places' fine texture (mean |L* - its 3x3 mean|, the face scaled to kEvidenceEs0)
+    // over the cheeks'.
+    double lipDetail = 0, chinDetail = 0, jawDetail = 0;
+    // The same places' median L* less the cheeks' (negative: darker), and how much less red
+    // (a*) they are than the cheeks: hair is less red than the skin it grows from, where a
+    // shadow on skin or a dark jaw line keeps the skin's redness (jaw: the side losing less).
+    double lipDL = 0, chinDL = 0, jawDL = 0, lipRedLoss = 0, chinRedLoss = 0, jawRedLoss = 0;
+    // Glasses' bridge: over the nose's middle between the inner eye corners, the strongest thin
+    // line (a dip or a ridge in L* across a few pixels) against the nose's own smooth run, in
+    // L* units; and the same measured beside each eye's outer corner on vertical lines (a frame's
+    // side rims; the weaker side).
+    double bridgeLine = 0, sideRims = 0;
+    // Rims under both eyes: a thin horizontal line below the lower lid (the weaker eye), L*.
+    double lowerRims = 0;
+    double cheekL = 0; // the cheeks' median L*
+};
+
+// The face is measured scaled to this eye separation (pixels), so that fine texture means the
+// same on a small crop and on a large portrait.
+inline constexpr double kEvidenceEs0 = 48.0;
+
+AppearanceEvidence measureEvidence(const QImage &photo, const FaceModel &face);
+
+} // namespace toonface

@@ -1,0 +1,40 @@
+#include "io/appearancejson.h"
+
+#include "detect/appearance.h"
+#include "render/style.h"
+
+#include <algorithm>
+
+namespace toonface {
+
+QJsonObject appearanceToJson(const Style &style, const AppearanceFindings &findings)
+{
+    const Appearance &a = style.appearance;
+    QJsonObject out;
+    out.insert(QStringLiteral("skin"), style.components.value(QStringLiteral("face")).fill.name());
+    const bool hairless = a.bald || findings.hairLength == HairLength::None;
+    out.insert(QStringLiteral("hair"),
+        hairless ? QJsonValue(QJsonValue::Null)
+                 : QJsonValue(style.components.value(QStringLiteral("hair")).fill.name()));
+    out.insert(QStringLiteral("hairLength"), hairLengthName(a.bald ? HairLength::None : findings.hairLength));
+    out.insert(QStringLiteral("bald"), a.bald);
+    out.insert(QStringLiteral("headwear"), a.hat);
+    out.insert(QStringLiteral("moustache"), a.moustache);
+    out.insert(QStringLiteral("beard"), a.beard);
+    out.insert(QStringLiteral("goatee"), a.goatee);
+    out.insert(QStringLiteral("glasses"), glassesShapeName(a.glasses));
+    const AppearanceConfidence &c = findings.confidence;
+    auto unit = [](double v) { return std::clamp(v, 0.0, 1.0); };
+    QJsonObject confidence;
+    confidence.insert(QStringLiteral("hairLength"), unit(c.hairLength));
+    confidence.insert(QStringLiteral("bald"), unit(c.bald));
+    confidence.insert(QStringLiteral("headwear"), unit(c.headwear));
+    confidence.insert(QStringLiteral("moustache"), unit(c.moustache));
+    confidence.insert(QStringLiteral("beard"), unit(c.beard));
+    confidence.insert(QStringLiteral("goatee"), unit(c.goatee));
+    confidence.insert(QStringLiteral("glasses"), unit(c.glasses));
+    out.insert(QStringLiteral("confidence"), confidence);
+    return out;
+}
+
+} // namespace toonface
