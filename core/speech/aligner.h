@@ -19,6 +19,9 @@ struct AlignOptions
     TtsOptions reference {0, 50, 50, {}};
     // The second pass that moves each onset to the acoustic landmark nearby (boundaryrefine.h).
     bool refineBoundaries = true;
+    // Re-alignment against the reference adapted to the recording's voice (speakeradapt.h),
+    // for scripts of kAdaptMinSyllables or more.
+    bool adaptToSpeaker = true;
 };
 
 enum class AlignStatus { Ok, CannotAlign, BadInput, Cancelled };
@@ -29,13 +32,22 @@ struct AlignedSyllable
     double end = 0; // seconds; <= the next syllable's start
     double confidence = 0; // 0..1: how well the recording matched the reference here
     QVector<TtsPhoneme> phonemes; // the reference's phonemes, their starts mapped into the audio
+    // The recording's speech the warp gave the syllable over the length the reference and the
+    // speaker's pace expect: about 1; near 0 for a syllable the speaker did not say.
+    double heard = 1;
 };
+
+// Below this share of its expected length a syllable counts as not spoken (AlignResult::unspoken).
+inline constexpr double kUnspokenShare = 0.3;
 
 struct AlignResult
 {
     AlignStatus status = AlignStatus::BadInput;
     QString error; // why, when status != Ok
     QVector<AlignedSyllable> syllables; // one per script syllable when Ok
+    // Syllables of the script the recording seems not to hold (a dropped word): their
+    // confidence is 0 and their times where the warp ran through them.
+    QVector<int> unspoken;
     double speechStart = 0; // first and last moment of speech found in the audio
     double speechEnd = 0;
     bool ok() const { return status == AlignStatus::Ok; }

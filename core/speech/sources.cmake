@@ -8,6 +8,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/pinyindictionary.h speech/pinyindictionary.cpp
   speech/zhuyin.h speech/zhuyin.cpp
   speech/script.h speech/script.cpp
+  speech/tonesandhi.h speech/tonesandhi.cpp
   speech/tts.h speech/tts.cpp
   speech/ttsvoicefile.h speech/ttsvoicefile.cpp
   speech/realfft.h speech/realfft.cpp
@@ -19,6 +20,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/referencefeatures.h speech/referencefeatures.cpp
   speech/boundaryrefine.h speech/boundaryrefine.cpp
   speech/paceprobe.h speech/paceprobe.cpp
+  speech/speakeradapt.h speech/speakeradapt.cpp
   speech/aligner.h speech/aligner.cpp
   speech/englishshapes.h speech/englishshapes.cpp
   speech/lipsync.h speech/lipsync.cpp

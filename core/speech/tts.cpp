@@ -2,6 +2,7 @@
 
 #include "i18n/coretext.h"
 #include "speech/pinyin.h"
+#include "speech/tonesandhi.h"
 #include "speech/ttsvoicefile.h"
 
 #include <QCoreApplication>
@@ -181,13 +182,15 @@ QString ttsInputText(const Script &script, QVector<int> *offsets)
     // where the script leaves a space between words if it can.
     constexpr int kClauseSoft = 300, kClauseHard = 500; // bytes (the text is ASCII but for English accents)
     int clauseStart = 0;
+    // The tones as a speaker says them (一, 不, 3rd before 3rd), not as the dictionary lists them.
+    const QVector<int> tones = spokenTones(script);
     for (qsizetype k = 0; k < script.syllables.size(); ++k) {
         const ScriptSyllable &s = script.syllables[k];
         if (!text.isEmpty())
             text += QLatin1Char(' ');
         if (offsets)
             offsets->append(int(text.size()));
-        text += script.language == Language::English ? s.text : toneNumberSpelling({s.pinyin, s.tone});
+        text += script.language == Language::English ? s.text : toneNumberSpelling({s.pinyin, tones[k]});
         const bool wordEnds
             = k + 1 < script.syllables.size() && script.syllables[k + 1].position > s.position + s.length;
         const int clause = int(text.size()) - clauseStart;

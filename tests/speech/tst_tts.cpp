@@ -57,7 +57,8 @@ private Q_SLOTS:
     void inputText()
     {
         QVector<int> offsets;
-        QCOMPARE(ttsInputText(script(QStringLiteral("你好，绿色")), &offsets), QStringLiteral("ni3 hao3, lv4 se4."));
+        // The reference says the tones as spoken: 你 rises before 好.
+        QCOMPARE(ttsInputText(script(QStringLiteral("你好，绿色")), &offsets), QStringLiteral("ni2 hao3, lv4 se4."));
         QCOMPARE(offsets, (QVector<int> {0, 4, 10, 14}));
         QCOMPARE(ttsInputText(script(QStringLiteral("Hello there, world"))), QStringLiteral("Hello there, world."));
     }
