@@ -77,8 +77,13 @@ QByteArray pageXhtml(const PageDocument &page)
     if (first < page.sentences.size()) {
         out += "<p>";
         for (qsizetype i = first; i < page.sentences.size(); ++i) {
-            if (i > first)
-                out += ' ';
+            // Sentences of a language written with spaces are spaced; Chinese ones are not.
+            if (i > first) {
+                const PageSentence &before = page.sentences[i - 1];
+                const QString last = before.pieces.isEmpty() ? QString() : before.pieces.last().text;
+                if (!last.isEmpty() && last.back().unicode() < 0x2e80)
+                    out += ' ';
+            }
             appendSentence(out, page.sentences[i]);
         }
         out += "</p>\n";
