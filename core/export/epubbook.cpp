@@ -534,7 +534,8 @@ BookResult exportBook(const BookRequest &request, const BookProgressFn &progress
         zip.addFile(kPackageDir + QStringLiteral("audio/book.m4a"), recordingFile);
     if (!zip.isOpen())
         return failed(BookStatus::Failed, zip.errorString());
-    QFile::remove(recordingFile);
+    if (!recordingFile.isEmpty())
+        QFile::remove(recordingFile);
 
     BookWriter writer(meta, book, zip, result);
     writer.manifest = {
