@@ -66,7 +66,7 @@ struct BookSentenceTiming
 {
     QString page; // "text/p00001.xhtml", relative to the package document
     QString id; // the sentence's element id
-    QString audio; // "audio/book.m4a", relative to the package document
+    QString audio; // "audio/book.mp3", relative to the package document
     int firstSyllable = -1; // index in BookResult::syllables; -1 for a sentence without any
     qint64 beginMs = 0;
     qint64 endMs = 0;
@@ -93,7 +93,7 @@ using BookProgressFn = std::function<void(double fraction, const QString &stage)
 // Makes the EPUB 3 book of `request`: a cover (the cartoon), a navigation document with a
 // chapter per heading, and a page per paragraph with the talking face (a SMIL-animated SVG
 // inline, timed from the page's first sentence) beside the text, whose sentences a Media
-// Overlay ties to the sound (AAC in MP4: the recording re-encoded, or the voice's chapters).
+// Overlay ties to the sound (MP3: the recording re-encoded, or the voice's chapters).
 // Long texts stream: each chapter is spoken, drawn and written into the archive before the next
 // one. The book appears only when it is whole: it is written beside the target under a hidden
 // name and renamed at the end; a failed or cancelled export leaves nothing.

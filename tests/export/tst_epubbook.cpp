@@ -452,9 +452,9 @@ private Q_SLOTS:
         for (const auto &[audio, end] : audioEnd)
             read += end;
         QCOMPARE(read, total);
-        // Each audio file decodes to the length its overlays give it (AAC's frames round it up).
+        // Each audio file decodes to the length its overlays give it (the encoder's frames round it up).
         for (const auto &[audio, end] : audioEnd) {
-            const QString copy = dir.filePath(QStringLiteral("sound.m4a"));
+            const QString copy = dir.filePath(QStringLiteral("sound.mp3"));
             QFile f(copy);
             QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
             f.write(b.entry(base + audio));
