@@ -66,7 +66,9 @@ QString bookText(bool chinese, double minutes)
     double spoken = 0; // seconds
     const double target = minutes * 60;
     for (int chapter = 1; spoken < target; ++chapter) {
-        text += chinese ? QStringLiteral("# 第%1章\n\n").arg(chapter) : QStringLiteral("# Chapter %1\n\n").arg(chapter);
+        // Chinese chapter numbers in characters: digits are not read aloud.
+        const QString number = QStringView(u"一二三四五六七八九十").mid((chapter - 1) % 10, 1).toString();
+        text += chinese ? QStringLiteral("# 第%1章\n\n").arg(number) : QStringLiteral("# Chapter %1\n\n").arg(chapter);
         for (int p = 0; p < 10 && spoken < target; ++p) {
             const int sentences = 3 + int(rng.bounded(3));
             for (int s = 0; s < sentences; ++s) {
