@@ -1,11 +1,13 @@
 // A project file (.toonface) as loadProject reads it. A project it accepts must save, load back
-// equal (project.h promises lossless round trips), draw, and play at any time.
+// equal (project.h promises lossless round trips), draw, and play at any time; the layers it
+// holds are the cleaned copies (a cleaned layer cleans to itself).
 
 #include "fuzzinput.h"
 
 #include "anim/timelineevaluator.h"
 #include "io/project.h"
 #include "render/svgface.h"
+#include "render/svglayer.h"
 
 using namespace toonface;
 
@@ -17,6 +19,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (!project) {
         TOONFACE_FUZZ_CHECK(!error.isEmpty());
         return 0;
+    }
+    for (const StyleLayer &layer : project->style.layers) {
+        QByteArray cleaned;
+        TOONFACE_FUZZ_CHECK(cleanLayerSvg(layer.svg, &cleaned, &error) && cleaned == layer.svg);
     }
     const QString again = path + QStringLiteral(".saved.toonface");
     TOONFACE_FUZZ_CHECK(saveProject(*project, again, &error));

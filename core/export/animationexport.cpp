@@ -155,13 +155,13 @@ ExportResult exportDocument(const ExportRequest &request, const SvgFace &face, c
     // when it is not committed.
     QSaveFile file(out);
     if (!file.open(QIODevice::WriteOnly) || file.write(data) != data.size())
-        return result(ExportStatus::Failed, out, ExportText::tr("cannot write: %1").arg(file.errorString()));
+        return result(ExportStatus::Failed, out, ExportText::tr("cannot write: %1").arg(writeProblem(file)));
     if (isCancelled(cancel)) {
         file.cancelWriting();
         return result(ExportStatus::Cancelled, out, QStringLiteral("cancelled"));
     }
     if (!file.commit())
-        return result(ExportStatus::Failed, out, ExportText::tr("cannot write: %1").arg(file.errorString()));
+        return result(ExportStatus::Failed, out, ExportText::tr("cannot write: %1").arg(writeProblem(file)));
     progress.finish();
     return {ExportStatus::Done, {}};
 }

@@ -5,6 +5,7 @@
 #include "io/layersjson.h"
 #include "io/pointsjson.h"
 #include "io/syllablesjson.h"
+#include "media/userfile.h"
 
 #include <QDir>
 #include <QFile>
@@ -498,7 +499,7 @@ bool saveProject(const Project &project, const QString &path, QString *error)
     if (written != bytes.size()) {
         // A short write without an error code is what a full disk or a file size limit gives.
         const QString why = file.error() != QFileDevice::NoError
-            ? file.errorString()
+            ? writeProblem(file)
             : ProjectText::tr("only %1 of %2 bytes could be written (is the disk full?)")
                   .arg(qMax<qint64>(written, 0))
                   .arg(bytes.size());
@@ -508,7 +509,7 @@ bool saveProject(const Project &project, const QString &path, QString *error)
     }
     if (!file.commit()) {
         const QString why = file.error() != QFileDevice::NoError
-            ? file.errorString()
+            ? writeProblem(file)
             : ProjectText::tr("the file could not be completed (is the disk full?)");
         *error = withFile(path, ProjectText::tr("cannot save: %1").arg(why));
         return false;

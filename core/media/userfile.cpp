@@ -4,6 +4,7 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QStorageInfo>
 
 namespace toonface {
 
@@ -41,6 +42,21 @@ std::optional<QByteArray> readUserFile(const QString &path, qint64 maxBytes, QSt
         return std::nullopt;
     }
     return content;
+}
+
+QString writeProblem(const QFileDevice &file)
+{
+    const QFileInfo info(file.fileName());
+    const QStorageInfo disk(info.absolutePath());
+    // Less than a block free is a full disk, whatever the error says.
+    if (disk.isValid() && disk.bytesAvailable() < 64 * 1024)
+        return ProjectText::tr("no space left on the disk (%1 KB free on %2)")
+            .arg(disk.bytesAvailable() / 1024)
+            .arg(disk.rootPath());
+    const QString said = file.errorString();
+    if (said.isEmpty() || said == QLatin1StringView("Unknown error"))
+        return ProjectText::tr("the system gave no reason (is the disk full or removed?)");
+    return said;
 }
 
 } // namespace toonface

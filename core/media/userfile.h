@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QByteArray>
+#include <QFileDevice>
 #include <QString>
 
 #include <optional>
@@ -19,5 +20,10 @@ QString irregularFileProblem(const QString &path);
 // bytes read from the open file, not on the size the file system reports. nullopt with *problem
 // (without the file's name) when the file is not regular, cannot be read or is larger.
 std::optional<QByteArray> readUserFile(const QString &path, qint64 maxBytes, QString *problem);
+
+// Why writing `file` failed, in words a user can act on: "no space left on the disk" when its
+// disk is full (Qt reports that as "Unknown error" when the flush at commit fails), otherwise
+// the file's own error.
+QString writeProblem(const QFileDevice &file);
 
 } // namespace toonface

@@ -252,7 +252,7 @@ bool writeWav(const QString &path, const Audio &audio, QString *error)
     f.write(h);
     f.write(pcm);
     if (!f.commit()) {
-        *error = SoundText::tr("cannot write %1: %2").arg(path, f.errorString());
+        *error = SoundText::tr("cannot write %1: %2").arg(path, writeProblem(f));
         return false;
     }
     return true;

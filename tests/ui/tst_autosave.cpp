@@ -157,6 +157,45 @@ private Q_SLOTS:
         QVERIFY(restored.isModified());
     }
 
+    // Editors killed before their first autosave leave only a lock each: once their owners are
+    // gone the next look for leftovers removes them (they piled up crash after crash); a
+    // running editor's lock stays.
+    void locksOfDeadEditorsDoNotPileUp()
+    {
+        QTemporaryDir dir;
+        for (int i = 0; i < 3; ++i) {
+            int ready[2];
+            QCOMPARE(pipe(ready), 0);
+            const pid_t child = fork();
+            QVERIFY(child >= 0);
+            if (child == 0) {
+                close(ready[0]);
+                Document doc;
+                Autosaver saver(&doc, dir.path());
+                if (write(ready[1], "x", 1) != 1)
+                    _exit(4);
+                for (;;)
+                    pause();
+            }
+            close(ready[1]);
+            char byte = 0;
+            const ssize_t got = read(ready[0], &byte, 1);
+            close(ready[0]);
+            QCOMPARE(kill(child, SIGKILL), 0);
+            int status = 0;
+            QCOMPARE(waitpid(child, &status, 0), child);
+            QCOMPARE(got, ssize_t(1));
+        }
+        const QStringList lockPattern = {QStringLiteral("recovery-*.lock")};
+        QCOMPARE(QDir(dir.path()).entryList(lockPattern, QDir::Files).size(), 3);
+        Document doc;
+        Autosaver running(&doc, dir.path());
+        QVERIFY(Autosaver::leftovers(dir.path()).isEmpty());
+        const QStringList left = QDir(dir.path()).entryList(lockPattern, QDir::Files);
+        QCOMPARE(left.size(), 1); // the running editor's
+        QVERIFY(running.recoveryPath().startsWith(dir.filePath(left.first().chopped(5))));
+    }
+
     void savingRemovesTheRecoveryFile()
     {
         QTemporaryDir dir;

@@ -91,6 +91,28 @@ private Q_SLOTS:
         QVERIFY(doc.face().isHandPlaced(i));
     }
 
+    // Another editor writing the project file is noticed before this one overwrites it; this
+    // document's own saves are not.
+    void changedOnDiskIsNoticed()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("shared.toonface"));
+        Document doc;
+        fixture::fill(doc);
+        QString error;
+        QVERIFY2(doc.save(path, &error), qPrintable(error));
+        QVERIFY(!doc.changedOnDisk());
+        Document other;
+        QVERIFY2(other.load(path, &error), qPrintable(error));
+        other.movePoint(0, QPointF(51, 61), true);
+        QTest::qWait(20); // a later modification time on file systems that keep milliseconds
+        QVERIFY2(other.save(path, &error), qPrintable(error));
+        QVERIFY(!other.changedOnDisk());
+        QVERIFY(doc.changedOnDisk());
+        QVERIFY2(doc.save(path, &error), qPrintable(error)); // the user chose to overwrite
+        QVERIFY(!doc.changedOnDisk());
+    }
+
     void changeFlagsNameWhatChanged()
     {
         Document doc;

@@ -117,6 +117,22 @@ QList<RecoveryFile> Autosaver::leftovers(const QString &directory)
 {
     QList<RecoveryFile> result;
     const QDir dir(directory);
+    // An editor that crashed before its first autosave left only its lock (and perhaps the
+    // info beside it): nothing to restore, so they go once their owner is gone, instead of
+    // piling up crash after crash.
+    const QStringList locks = dir.entryList({kRecoveryPrefix + QLatin1Char('*') + kLockSuffix}, QDir::Files);
+    for (const QString &name : locks) {
+        QString stem = dir.filePath(name);
+        stem.chop(kLockSuffix.size());
+        if (QFileInfo::exists(stem + kProjectSuffix))
+            continue;
+        QLockFile lock(stem + kLockSuffix);
+        lock.setStaleLockTime(0);
+        if (!lock.tryLock(0))
+            continue; // a running editor's
+        lock.unlock(); // removes the lock file
+        QFile::remove(stem + kInfoSuffix);
+    }
     const QStringList names = dir.entryList({kRecoveryPrefix + QLatin1Char('*') + kProjectSuffix}, QDir::Files);
     for (const QString &name : names) {
         const QString path = dir.filePath(name);

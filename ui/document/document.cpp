@@ -27,6 +27,7 @@ void Document::reset(const Project &project, const QImage &photo, const QString 
     m_photo = photo;
     m_hasFace = hasFace;
     m_filePath = filePath;
+    stampDisk();
     m_undoStack->setClean();
     emitChanged(Change::Photo | Change::Face | Change::Points | Change::Style | Change::FileState | Change::Animation
         | Change::MouthShapes);
@@ -57,11 +58,27 @@ bool Document::save(const QString &path, QString *error)
     if (!saveProject(m_project, path, error))
         return false;
     m_filePath = QFileInfo(path).absoluteFilePath();
+    stampDisk();
     const bool wasClean = m_undoStack->isClean();
     m_undoStack->setClean();
     if (wasClean)
         emitChanged(Change::FileState); // the path may have changed although cleanChanged did not fire
     return true;
+}
+
+void Document::stampDisk()
+{
+    const QFileInfo info(m_filePath);
+    m_diskTime = m_filePath.isEmpty() ? QDateTime() : info.lastModified();
+    m_diskSize = m_filePath.isEmpty() ? -1 : info.size();
+}
+
+bool Document::changedOnDisk() const
+{
+    if (m_filePath.isEmpty())
+        return false;
+    const QFileInfo info(m_filePath);
+    return info.exists() && (info.lastModified() != m_diskTime || info.size() != m_diskSize);
 }
 
 QSize Document::canvasSize() const

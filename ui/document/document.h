@@ -5,6 +5,7 @@
 
 #include <QFlags>
 #include <QImage>
+#include <QDateTime>
 #include <QObject>
 #include <QString>
 
@@ -70,6 +71,10 @@ public:
     QSize canvasSize() const;
 
     QString filePath() const { return m_filePath; }
+    // Whether the project file was written by someone else (another editor, a sync tool) since
+    // this document opened or last saved it: its time or size on disk differ from then. The
+    // window asks before overwriting such a file.
+    bool changedOnDisk() const;
     // The name for the title bar: the project file's name, else the photo's, else "Untitled".
     QString displayName() const;
     bool isModified() const;
@@ -113,6 +118,9 @@ private:
     QImage m_photo;
     bool m_hasFace = false;
     QString m_filePath;
+    QDateTime m_diskTime; // the project file's modification time when opened or saved
+    qint64 m_diskSize = -1;
+    void stampDisk();
     QUndoStack *m_undoStack;
     quint64 m_revision = 0;
 };

@@ -25,6 +25,7 @@ LoadedFile loadFile(const QString &path)
             return result;
         }
         result.project = *project;
+        result.outsideFiles = filesOutsideFolder(result.project, QFileInfo(result.path).absolutePath());
         if (!result.project.photoPath.isEmpty())
             result.photo = loadPhoto(result.project.photoPath, &result.photoWarning);
         return result;

@@ -18,6 +18,7 @@ struct LoadedFile
     QImage photo;
     QString error; // non-empty: the file could not be opened, and why (names the file)
     QString photoWarning; // a project whose photo could not be read: why
+    QStringList outsideFiles; // the files a project names outside its folder (filesOutsideFolder)
 
     bool ok() const { return error.isEmpty(); }
 };

@@ -433,6 +433,9 @@ void MainWindow::onLoaded()
     setBusy(Job::None, {});
     const LoadedFile file = watcher->result();
     const std::optional<RecoveryFile> recovery = std::exchange(m_recovering, std::nullopt);
+    // A project from someone else (not one this user has opened before) that names files
+    // outside its folder says which, before the user plays or exports them.
+    const bool fromElsewhere = !recovery && !Settings().recentFiles().contains(file.path);
 
     if (!file.ok()) {
         if (!recovery)
@@ -454,6 +457,8 @@ void MainWindow::onLoaded()
     if (!file.photoWarning.isEmpty())
         QMessageBox::warning(this, tr("Photo Missing"),
             tr("The project opened, but its photo could not be read:\n%1").arg(file.photoWarning));
+    if (fromElsewhere && !file.outsideFiles.isEmpty())
+        showOutsideFiles(this, file.path, file.outsideFiles);
     Q_EMIT fileOpened(file.path);
     if (!m_document->hasFace() && !m_document->photo().isNull())
         startDetection(false);
@@ -569,6 +574,18 @@ bool MainWindow::save()
 {
     if (m_document->filePath().isEmpty())
         return saveAs();
+    if (m_document->changedOnDisk()) {
+        // Another editor (or program) wrote the file since it was opened here: never silently
+        // overwrite its work.
+        switch (askOverwriteChanged(this, m_document->filePath())) {
+        case DiskConflict::Overwrite:
+            break;
+        case DiskConflict::SaveAs:
+            return saveAs();
+        case DiskConflict::Cancel:
+            return false;
+        }
+    }
     return saveTo(m_document->filePath());
 }
 

@@ -65,4 +65,33 @@ void offerAverageFace(QWidget *parent, Document *document, const QString &reason
     document->replaceFace(averageFace(faceBox, document->canvasSize()), false, Questions::tr("Place average face"));
 }
 
+void showOutsideFiles(QWidget *parent, const QString &project, const QStringList &files)
+{
+    auto *box = new QMessageBox(QMessageBox::Information, Questions::tr("Files Outside the Project"),
+        Questions::tr("%1 uses files outside its folder. Its sound, photo, video and layers are read from there "
+                      "when you play or export it:")
+            .arg(QFileInfo(project).fileName()),
+        QMessageBox::Ok, parent);
+    box->setObjectName(QStringLiteral("outsideFiles"));
+    box->setInformativeText(files.join(QLatin1Char('\n')));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+DiskConflict askOverwriteChanged(QWidget *parent, const QString &project)
+{
+    QMessageBox box(QMessageBox::Warning, Questions::tr("Project Changed on Disk"),
+        Questions::tr("%1 was changed by another program since you opened it.").arg(QFileInfo(project).fileName()),
+        QMessageBox::NoButton, parent);
+    box.setInformativeText(Questions::tr("Overwriting it loses the other program's changes."));
+    QPushButton *saveAs = box.addButton(Questions::tr("Save &As…"), QMessageBox::AcceptRole);
+    QPushButton *overwrite = box.addButton(Questions::tr("&Overwrite"), QMessageBox::DestructiveRole);
+    box.addButton(QMessageBox::Cancel);
+    box.setDefaultButton(saveAs);
+    box.exec();
+    if (box.clickedButton() == saveAs)
+        return DiskConflict::SaveAs;
+    return box.clickedButton() == overwrite ? DiskConflict::Overwrite : DiskConflict::Cancel;
+}
+
 } // namespace toonface
