@@ -393,7 +393,9 @@ private Q_SLOTS:
         for (const auto &[id, ms] : durations)
             sum += ms;
         QCOMPARE(total, sum);
-        QCOMPARE(total, qint64(std::llround(r.duration * 1000)));
+        // The sound's length, each audio file's rounded to the millisecond.
+        QVERIFY2(std::abs(double(total) - r.duration * 1000) <= 0.5 * r.chapters,
+            qPrintable(QStringLiteral("%1 ms of overlays, %2 s of sound").arg(total).arg(r.duration)));
 
         // The spine's pages: each with its overlay, whose clips tile its stretch of the sound.
         const QList<const Node *> spine = all(opf, QStringLiteral("itemref"));
