@@ -573,6 +573,19 @@ private Q_SLOTS:
         QTest::addColumn<bool>("bySyllable");
         QTest::newRow("english") << kEnglish << false;
         QTest::newRow("chinese by character") << kChinese << true;
+        // About ten minutes at the voice's 175 words a minute, in chapters of ten paragraphs.
+        const QStringList words = QStringLiteral(
+            "the little fox sees an old dog by the river and the garden keeps a story for every morning light")
+                                      .split(QLatin1Char(' '));
+        QString ten;
+        for (int n = 0; n < 1750; ++n) {
+            if (n % 300 == 0)
+                ten += QStringLiteral("\n\n# Chapter %1\n\n").arg(n / 300 + 1);
+            else if (n % 30 == 0)
+                ten += QStringLiteral("\n\n");
+            ten += words[(n * 7 + n / 19) % words.size()] + (n % 10 == 9 ? QStringLiteral(". ") : QStringLiteral(" "));
+        }
+        QTest::newRow("ten minutes") << ten + QStringLiteral("The end.") << false;
     }
 
     void epubcheckPasses()
