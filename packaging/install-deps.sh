@@ -17,4 +17,5 @@ apt-get install -y -q --no-install-recommends \
   libavcodec-dev libavformat-dev libavutil-dev libswresample-dev libswscale-dev \
   gstreamer1.0-plugins-good gstreamer1.0-libav \
   python-matplotlib-data python3-skimage fonts-wqy-microhei fonts-dejavu-core \
-  xvfb xauth chromium sox pulseaudio pulseaudio-utils
+  xvfb xauth chromium sox pulseaudio pulseaudio-utils \
+  zlib1g-dev epubcheck

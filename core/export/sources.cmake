@@ -11,4 +11,6 @@ list(APPEND TOONFACE_CORE_SOURCES
   export/smilaudio.h export/smilaudio.cpp
   export/svgnumbers.h export/svgnumbers.cpp
   export/svgxml.h export/svgxml.cpp
-  export/htmlplayer.h export/htmlplayer.cpp)
+  export/htmlplayer.h export/htmlplayer.cpp
+  export/epubbook.h export/epubbook.cpp export/epubdocs.h export/epubdocs.cpp
+  export/epubtext.h export/epubtext.cpp export/epubzip.h export/epubzip.cpp)

@@ -36,6 +36,16 @@
     </message>
 </context>
 <context>
+    <name>toonface::BookDialog</name>
+    <message numerus="yes">
+        <source>Wrote %1: %n page(s)</source>
+        <translation>
+            <numerusform>Wrote %1: %n page</numerusform>
+            <numerusform>Wrote %1: %n pages</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>toonface::ExportAnimationDialog</name>
     <message numerus="yes">
         <source>%n frame(s)</source>

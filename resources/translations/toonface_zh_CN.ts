@@ -554,6 +554,127 @@
     </message>
 </context>
 <context>
+    <name>toonface::BookDialog</name>
+    <message>
+        <source>Export Read-aloud Book</source>
+        <translation>导出有声书</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <source>&amp;Text:</source>
+        <translation>文字(&amp;T)：</translation>
+    </message>
+    <message>
+        <source>Text (*.txt *.md *.markdown)</source>
+        <translation>文字 (*.txt *.md *.markdown)</translation>
+    </message>
+    <message>
+        <source>A recording of the text</source>
+        <translation>这段文字的录音</translation>
+    </message>
+    <message>
+        <source>The built-in voice</source>
+        <translation>内置语音</translation>
+    </message>
+    <message>
+        <source>&amp;Read by:</source>
+        <translation>朗读者(&amp;R)：</translation>
+    </message>
+    <message>
+        <source>&amp;Recording:</source>
+        <translation>录音(&amp;R)：</translation>
+    </message>
+    <message>
+        <source>Sound (*.wav *.flac *.mp3 *.ogg *.opus *.m4a)</source>
+        <translation>声音 (*.wav *.flac *.mp3 *.ogg *.opus *.m4a)</translation>
+    </message>
+    <message>
+        <source>As the text reads</source>
+        <translation>依文字判断</translation>
+    </message>
+    <message>
+        <source>Chinese (Traditional)</source>
+        <translation>中文（繁体）</translation>
+    </message>
+    <message>
+        <source>Chinese (Simplified)</source>
+        <translation>中文（简体）</translation>
+    </message>
+    <message>
+        <source>English</source>
+        <translation>英文</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>语言(&amp;L)：</translation>
+    </message>
+    <message>
+        <source>The first heading, or the text&apos;s file name</source>
+        <translation>第一个标题，或文字的文件名</translation>
+    </message>
+    <message>
+        <source>T&amp;itle:</source>
+        <translation>书名(&amp;I)：</translation>
+    </message>
+    <message>
+        <source>&amp;Author:</source>
+        <translation>作者(&amp;A)：</translation>
+    </message>
+    <message>
+        <source>Each sentence</source>
+        <translation>每一句</translation>
+    </message>
+    <message>
+        <source>Each character or word</source>
+        <translation>每个字或单词</translation>
+    </message>
+    <message>
+        <source>&amp;Highlight:</source>
+        <translation>标示(&amp;H)：</translation>
+    </message>
+    <message>
+        <source>&amp;Book:</source>
+        <translation>书(&amp;B)：</translation>
+    </message>
+    <message>
+        <source>EPUB book (*.epub)</source>
+        <translation>EPUB 书 (*.epub)</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>导出(&amp;E)</translation>
+    </message>
+    <message>
+        <source>Export Read-aloud &amp;Book…</source>
+        <translation>导出有声书(&amp;B)…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>Starting…</source>
+        <translation>正在开始…</translation>
+    </message>
+    <message numerus="yes">
+        <source>Wrote %1: %n page(s)</source>
+        <translation>
+            <numerusform>已写入 %1：%n 页</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cancelled; nothing was written.</source>
+        <translation>已取消；没有写入任何文件。</translation>
+    </message>
+</context>
+<context>
     <name>toonface::CameraFeed</name>
     <message>
         <source>No camera was found on this computer. Connect a camera and try again, or open a photo (File ▸ Open) or a video instead.</source>
@@ -1098,6 +1219,90 @@
     <message>
         <source>cancelled</source>
         <translation>已取消</translation>
+    </message>
+    <message>
+        <source>is not UTF-8 text</source>
+        <translation>不是 UTF-8 文字</translation>
+    </message>
+    <message>
+        <source>unknown book language &apos;%1&apos; (%2)</source>
+        <translation>未知的书籍语言“%1”（%2）</translation>
+    </message>
+    <message>
+        <source>%1, line %2</source>
+        <translation>%1，第 %2 行</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; cannot be read aloud: %2</source>
+        <translation>“%1”无法朗读：%2</translation>
+    </message>
+    <message>
+        <source>no room for temporary files: %1</source>
+        <translation>没有空间存放临时文件：%1</translation>
+    </message>
+    <message>
+        <source>reading the recording</source>
+        <translation>正在读取录音</translation>
+    </message>
+    <message>
+        <source>the recording (%1 s) is shorter than the text: its %2 words need at least %3 s even read fast (%4 a second)</source>
+        <translation>录音（%1 秒）比文字短：文字的 %2 个单词即使读得很快（每秒 %4 个）也至少需要 %3 秒</translation>
+    </message>
+    <message>
+        <source>the recording (%1 s) is shorter than the text: its %2 syllables need at least %3 s even read fast (%4 a second)</source>
+        <translation>录音（%1 秒）比文字短：文字的 %2 个音节即使读得很快（每秒 %4 个）也至少需要 %3 秒</translation>
+    </message>
+    <message>
+        <source>aligning the recording with the text</source>
+        <translation>正在将录音与文字对齐</translation>
+    </message>
+    <message>
+        <source>%1 and %2 could not be aligned: syllables were lost</source>
+        <translation>%1 与 %2 无法对齐：丢失了音节</translation>
+    </message>
+    <message>
+        <source>cannot write beside it</source>
+        <translation>无法在其旁边写入</translation>
+    </message>
+    <message>
+        <source>cannot draw the cover</source>
+        <translation>无法绘制封面</translation>
+    </message>
+    <message>
+        <source>drawing the pages</source>
+        <translation>正在绘制页面</translation>
+    </message>
+    <message>
+        <source>reading chapter %1 of %2 aloud</source>
+        <translation>正在朗读第 %1 章（共 %2 章）</translation>
+    </message>
+    <message>
+        <source>the voice lost syllables of chapter %1</source>
+        <translation>语音丢失了第 %1 章的音节</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>完成</translation>
+    </message>
+    <message>
+        <source>the text is empty: there is nothing to read</source>
+        <translation>文字是空的：没有可朗读的内容</translation>
+    </message>
+    <message>
+        <source>no sentence ends anywhere in the text: end its sentences with . ! ? or 。！？ so that the book can highlight them as they are read</source>
+        <translation>文字中没有任何句子结尾：请以 . ! ? 或 。！？ 结束句子，书才能在朗读时标示它们</translation>
+    </message>
+    <message>
+        <source>the book is too large for a ZIP archive (4 GiB, 65535 files)</source>
+        <translation>书太大，无法放进 ZIP 压缩包（4 GiB、65535 个文件）</translation>
+    </message>
+    <message>
+        <source>cannot compress %1</source>
+        <translation>无法压缩 %1</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
     </message>
 </context>
 <context>
@@ -4795,6 +5000,82 @@ Every job of the editor, with no display.</source>
     <message>
         <source>%1: interrupted; nothing was written</source>
         <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The recording of the whole text, headings included, in reading order.</source>
+        <translation>整段文字的录音，包括标题，按阅读顺序。</translation>
+    </message>
+    <message>
+        <source>Read the text with the built-in voice.</source>
+        <translation>以内置语音朗读文字。</translation>
+    </message>
+    <message>
+        <source>The face that reads: a photo or a project (default: an average face).</source>
+        <translation>朗读的脸：照片或项目（默认：平均脸）。</translation>
+    </message>
+    <message>
+        <source>The book&apos;s language: %1 (default: Chinese or English, as the text reads).</source>
+        <translation>书的语言：%1（默认：依文字判断为中文或英文）。</translation>
+    </message>
+    <message>
+        <source>The book&apos;s title (default: its first heading or the file&apos;s name).</source>
+        <translation>书名（默认：第一个标题或文件名）。</translation>
+    </message>
+    <message>
+        <source>The book&apos;s author.</source>
+        <translation>书的作者。</translation>
+    </message>
+    <message>
+        <source>What reading systems highlight as it is read: sentence or syllable (a character or word).</source>
+        <translation>阅读器在朗读时标示的单位：sentence（句子）或 syllable（一个字或单词）。</translation>
+    </message>
+    <message>
+        <source>With --say: words per minute (80-450).</source>
+        <translation>配合 --say：每分钟字数（80-450）。</translation>
+    </message>
+    <message>
+        <source>The book.</source>
+        <translation>书。</translation>
+    </message>
+    <message>
+        <source>The text: plain UTF-8 (.txt) or Markdown (.md), whose headings make chapters.</source>
+        <translation>文字：纯 UTF-8（.txt）或 Markdown（.md），其标题成为章节。</translation>
+    </message>
+    <message>
+        <source>book takes one text file (usage: toonface-cli %1)</source>
+        <translation>book 只接受一个文本文件（用法：toonface-cli %1）</translation>
+    </message>
+    <message>
+        <source>book needs either --audio A (a recording of the text) or --say</source>
+        <translation>book 需要 --audio A（文字的录音）或 --say 其中之一</translation>
+    </message>
+    <message>
+        <source>book needs -o BOOK.epub</source>
+        <translation>book 需要 -o BOOK.epub</translation>
+    </message>
+    <message>
+        <source>unknown --lang &apos;%1&apos; (%2)</source>
+        <translation>未知的 --lang“%1”（%2）</translation>
+    </message>
+    <message>
+        <source>--highlight takes sentence or syllable, not &apos;%1&apos;</source>
+        <translation>--highlight 需要 sentence 或 syllable，而不是“%1”</translation>
+    </message>
+    <message>
+        <source>--rate takes a whole number from 80 to 450, not &apos;%1&apos;</source>
+        <translation>--rate 需要 80 到 450 的整数，而不是“%1”</translation>
+    </message>
+    <message>
+        <source>%1: %2 %</source>
+        <translation>%1：%2 %</translation>
+    </message>
+    <message>
+        <source>%1: %2 chapters, %3 pages, %4 s read aloud</source>
+        <translation>%1：%2 章，%3 页，朗读 %4 秒</translation>
+    </message>
+    <message>
+        <source>Make a read-aloud EPUB 3 book of a text: each page a paragraph beside the talking face, its sentences highlighted as the recording or the built-in voice reads them.</source>
+        <translation>把文字做成有声的 EPUB 3 书：每页一个段落，旁边是说话的脸，录音或内置语音朗读时逐句标示。</translation>
     </message>
     <message>
         <source>%1 uses files outside its folder: %2</source>

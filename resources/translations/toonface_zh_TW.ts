@@ -554,6 +554,127 @@
     </message>
 </context>
 <context>
+    <name>toonface::BookDialog</name>
+    <message>
+        <source>Export Read-aloud Book</source>
+        <translation>匯出有聲書</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>瀏覽…</translation>
+    </message>
+    <message>
+        <source>&amp;Text:</source>
+        <translation>文字(&amp;T)：</translation>
+    </message>
+    <message>
+        <source>Text (*.txt *.md *.markdown)</source>
+        <translation>文字 (*.txt *.md *.markdown)</translation>
+    </message>
+    <message>
+        <source>A recording of the text</source>
+        <translation>這段文字的錄音</translation>
+    </message>
+    <message>
+        <source>The built-in voice</source>
+        <translation>內建語音</translation>
+    </message>
+    <message>
+        <source>&amp;Read by:</source>
+        <translation>朗讀者(&amp;R)：</translation>
+    </message>
+    <message>
+        <source>&amp;Recording:</source>
+        <translation>錄音(&amp;R)：</translation>
+    </message>
+    <message>
+        <source>Sound (*.wav *.flac *.mp3 *.ogg *.opus *.m4a)</source>
+        <translation>聲音 (*.wav *.flac *.mp3 *.ogg *.opus *.m4a)</translation>
+    </message>
+    <message>
+        <source>As the text reads</source>
+        <translation>依文字判斷</translation>
+    </message>
+    <message>
+        <source>Chinese (Traditional)</source>
+        <translation>中文（繁體）</translation>
+    </message>
+    <message>
+        <source>Chinese (Simplified)</source>
+        <translation>中文（簡體）</translation>
+    </message>
+    <message>
+        <source>English</source>
+        <translation>英文</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>語言(&amp;L)：</translation>
+    </message>
+    <message>
+        <source>The first heading, or the text&apos;s file name</source>
+        <translation>第一個標題，或文字的檔名</translation>
+    </message>
+    <message>
+        <source>T&amp;itle:</source>
+        <translation>書名(&amp;I)：</translation>
+    </message>
+    <message>
+        <source>&amp;Author:</source>
+        <translation>作者(&amp;A)：</translation>
+    </message>
+    <message>
+        <source>Each sentence</source>
+        <translation>每一句</translation>
+    </message>
+    <message>
+        <source>Each character or word</source>
+        <translation>每個字或單字</translation>
+    </message>
+    <message>
+        <source>&amp;Highlight:</source>
+        <translation>標示(&amp;H)：</translation>
+    </message>
+    <message>
+        <source>&amp;Book:</source>
+        <translation>書(&amp;B)：</translation>
+    </message>
+    <message>
+        <source>EPUB book (*.epub)</source>
+        <translation>EPUB 書 (*.epub)</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>匯出(&amp;E)</translation>
+    </message>
+    <message>
+        <source>Export Read-aloud &amp;Book…</source>
+        <translation>匯出有聲書(&amp;B)…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>關閉</translation>
+    </message>
+    <message>
+        <source>Starting…</source>
+        <translation>正在開始…</translation>
+    </message>
+    <message numerus="yes">
+        <source>Wrote %1: %n page(s)</source>
+        <translation>
+            <numerusform>已寫入 %1：%n 頁</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cancelled; nothing was written.</source>
+        <translation>已取消；沒有寫入任何檔案。</translation>
+    </message>
+</context>
+<context>
     <name>toonface::CameraFeed</name>
     <message>
         <source>No camera was found on this computer. Connect a camera and try again, or open a photo (File ▸ Open) or a video instead.</source>
@@ -1098,6 +1219,90 @@
     <message>
         <source>cancelled</source>
         <translation>已取消</translation>
+    </message>
+    <message>
+        <source>is not UTF-8 text</source>
+        <translation>不是 UTF-8 文字</translation>
+    </message>
+    <message>
+        <source>unknown book language &apos;%1&apos; (%2)</source>
+        <translation>不明的書籍語言「%1」（%2）</translation>
+    </message>
+    <message>
+        <source>%1, line %2</source>
+        <translation>%1，第 %2 行</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; cannot be read aloud: %2</source>
+        <translation>「%1」無法朗讀：%2</translation>
+    </message>
+    <message>
+        <source>no room for temporary files: %1</source>
+        <translation>沒有空間存放暫存檔：%1</translation>
+    </message>
+    <message>
+        <source>reading the recording</source>
+        <translation>正在讀取錄音</translation>
+    </message>
+    <message>
+        <source>the recording (%1 s) is shorter than the text: its %2 words need at least %3 s even read fast (%4 a second)</source>
+        <translation>錄音（%1 秒）比文字短：文字的 %2 個單字即使讀得很快（每秒 %4 個）也至少需要 %3 秒</translation>
+    </message>
+    <message>
+        <source>the recording (%1 s) is shorter than the text: its %2 syllables need at least %3 s even read fast (%4 a second)</source>
+        <translation>錄音（%1 秒）比文字短：文字的 %2 個音節即使讀得很快（每秒 %4 個）也至少需要 %3 秒</translation>
+    </message>
+    <message>
+        <source>aligning the recording with the text</source>
+        <translation>正在將錄音與文字對齊</translation>
+    </message>
+    <message>
+        <source>%1 and %2 could not be aligned: syllables were lost</source>
+        <translation>%1 與 %2 無法對齊：遺失了音節</translation>
+    </message>
+    <message>
+        <source>cannot write beside it</source>
+        <translation>無法在其旁邊寫入</translation>
+    </message>
+    <message>
+        <source>cannot draw the cover</source>
+        <translation>無法繪製封面</translation>
+    </message>
+    <message>
+        <source>drawing the pages</source>
+        <translation>正在繪製頁面</translation>
+    </message>
+    <message>
+        <source>reading chapter %1 of %2 aloud</source>
+        <translation>正在朗讀第 %1 章（共 %2 章）</translation>
+    </message>
+    <message>
+        <source>the voice lost syllables of chapter %1</source>
+        <translation>語音遺失了第 %1 章的音節</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>完成</translation>
+    </message>
+    <message>
+        <source>the text is empty: there is nothing to read</source>
+        <translation>文字是空的：沒有可朗讀的內容</translation>
+    </message>
+    <message>
+        <source>no sentence ends anywhere in the text: end its sentences with . ! ? or 。！？ so that the book can highlight them as they are read</source>
+        <translation>文字中沒有任何句子結尾：請以 . ! ? 或 。！？ 結束句子，書才能在朗讀時標示它們</translation>
+    </message>
+    <message>
+        <source>the book is too large for a ZIP archive (4 GiB, 65535 files)</source>
+        <translation>書太大，無法放進 ZIP 封存檔（4 GiB、65535 個檔案）</translation>
+    </message>
+    <message>
+        <source>cannot compress %1</source>
+        <translation>無法壓縮 %1</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>無法讀取 %1：%2</translation>
     </message>
 </context>
 <context>
@@ -4795,6 +5000,82 @@ Every job of the editor, with no display.</source>
     <message>
         <source>%1: interrupted; nothing was written</source>
         <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The recording of the whole text, headings included, in reading order.</source>
+        <translation>整段文字的錄音，包括標題，依閱讀順序。</translation>
+    </message>
+    <message>
+        <source>Read the text with the built-in voice.</source>
+        <translation>以內建語音朗讀文字。</translation>
+    </message>
+    <message>
+        <source>The face that reads: a photo or a project (default: an average face).</source>
+        <translation>朗讀的臉：照片或專案（預設：平均臉）。</translation>
+    </message>
+    <message>
+        <source>The book&apos;s language: %1 (default: Chinese or English, as the text reads).</source>
+        <translation>書的語言：%1（預設：依文字判斷為中文或英文）。</translation>
+    </message>
+    <message>
+        <source>The book&apos;s title (default: its first heading or the file&apos;s name).</source>
+        <translation>書名（預設：第一個標題或檔名）。</translation>
+    </message>
+    <message>
+        <source>The book&apos;s author.</source>
+        <translation>書的作者。</translation>
+    </message>
+    <message>
+        <source>What reading systems highlight as it is read: sentence or syllable (a character or word).</source>
+        <translation>閱讀器在朗讀時標示的單位：sentence（句子）或 syllable（一個字或單字）。</translation>
+    </message>
+    <message>
+        <source>With --say: words per minute (80-450).</source>
+        <translation>搭配 --say：每分鐘字數（80-450）。</translation>
+    </message>
+    <message>
+        <source>The book.</source>
+        <translation>書。</translation>
+    </message>
+    <message>
+        <source>The text: plain UTF-8 (.txt) or Markdown (.md), whose headings make chapters.</source>
+        <translation>文字：純 UTF-8（.txt）或 Markdown（.md），其標題成為章節。</translation>
+    </message>
+    <message>
+        <source>book takes one text file (usage: toonface-cli %1)</source>
+        <translation>book 只接受一個文字檔（用法：toonface-cli %1）</translation>
+    </message>
+    <message>
+        <source>book needs either --audio A (a recording of the text) or --say</source>
+        <translation>book 需要 --audio A（文字的錄音）或 --say 其中之一</translation>
+    </message>
+    <message>
+        <source>book needs -o BOOK.epub</source>
+        <translation>book 需要 -o BOOK.epub</translation>
+    </message>
+    <message>
+        <source>unknown --lang &apos;%1&apos; (%2)</source>
+        <translation>不明的 --lang「%1」（%2）</translation>
+    </message>
+    <message>
+        <source>--highlight takes sentence or syllable, not &apos;%1&apos;</source>
+        <translation>--highlight 需要 sentence 或 syllable，而不是「%1」</translation>
+    </message>
+    <message>
+        <source>--rate takes a whole number from 80 to 450, not &apos;%1&apos;</source>
+        <translation>--rate 需要 80 到 450 的整數，而不是「%1」</translation>
+    </message>
+    <message>
+        <source>%1: %2 %</source>
+        <translation>%1：%2 %</translation>
+    </message>
+    <message>
+        <source>%1: %2 chapters, %3 pages, %4 s read aloud</source>
+        <translation>%1：%2 章，%3 頁，朗讀 %4 秒</translation>
+    </message>
+    <message>
+        <source>Make a read-aloud EPUB 3 book of a text: each page a paragraph beside the talking face, its sentences highlighted as the recording or the built-in voice reads them.</source>
+        <translation>把文字做成有聲的 EPUB 3 書：每頁一個段落，旁邊是說話的臉，錄音或內建語音朗讀時逐句標示。</translation>
     </message>
     <message>
         <source>%1 uses files outside its folder: %2</source>

@@ -1,5 +1,6 @@
 #include "window/mainwindow.h"
 
+#include "dialogs/bookdialog.h"
 #include "document/autosaver.h"
 #include "export/cartoonfile.h"
 #include "render/svgface.h"
@@ -113,6 +114,8 @@ MainWindow::MainWindow(const Options &options, QWidget *parent)
     m_studio->install(m_previewView, menuBar()->actions().constLast());
     if (QMenu *file = menuBar()->actions().constFirst()->menu())
         file->insertAction(m_exportAction, m_studio->exportAnimationAction());
+    if (QMenu *file = menuBar()->actions().constFirst()->menu())
+        file->insertAction(m_exportAction, BookDialog::createAction(this, m_document));
     connect(m_studio, &Studio::message, this,
         [this](const QString &text) { statusBar()->showMessage(text, kStatusTimeoutMs); });
     // A camera snapshot becomes the photo, as if opened.
