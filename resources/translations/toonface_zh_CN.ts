@@ -1304,6 +1304,10 @@
         <source>cannot read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
+    <message>
+        <source>the drawing is nested more than %1 levels deep</source>
+        <translation>绘图的嵌套层级超过 %1 层</translation>
+    </message>
 </context>
 <context>
     <name>toonface::ExportAnimationDialog</name>
@@ -1597,15 +1601,15 @@
     </message>
     <message>
         <source>elements nested more than %1 deep</source>
-        <translation type="unfinished"></translation>
+        <translation>元素嵌套超过 %1 层</translation>
     </message>
     <message>
         <source>more than %1 elements</source>
-        <translation type="unfinished"></translation>
+        <translation>超过 %1 个元素</translation>
     </message>
     <message>
         <source>the entity &amp;%1; is not defined</source>
-        <translation type="unfinished"></translation>
+        <translation>实体 &amp;%1; 未定义</translation>
     </message>
 </context>
 <context>
@@ -3467,47 +3471,47 @@ The points are unchanged.</source>
     </message>
     <message>
         <source>%1 s is beyond the longest timeline Toonface keeps (%2 hours)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 秒超出 Toonface 时间轴的最长长度（%2 小时）</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished">%1：%2</translation>
+        <translation>%1：%2</translation>
     </message>
     <message>
         <source>photo</source>
-        <translation type="unfinished"></translation>
+        <translation>照片</translation>
     </message>
     <message>
         <source>sound</source>
-        <translation type="unfinished"></translation>
+        <translation>声音</translation>
     </message>
     <message>
         <source>video</source>
-        <translation type="unfinished"></translation>
+        <translation>视频</translation>
     </message>
     <message>
         <source>layer</source>
-        <translation type="unfinished"></translation>
+        <translation>图层</translation>
     </message>
     <message>
         <source>is a folder, not a file</source>
-        <translation type="unfinished"></translation>
+        <translation>是文件夹，不是文件</translation>
     </message>
     <message>
         <source>is a device, a pipe or a socket, not a file</source>
-        <translation type="unfinished"></translation>
+        <translation>是设备、管道或套接字，不是文件</translation>
     </message>
     <message>
         <source>too large (more than %1 MB)</source>
-        <translation type="unfinished"></translation>
+        <translation>太大（超过 %1 MB）</translation>
     </message>
     <message>
         <source>no space left on the disk (%1 KB free on %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>磁盘已无空间（%2 上只剩 %1 KB）</translation>
     </message>
     <message>
         <source>the system gave no reason (is the disk full or removed?)</source>
-        <translation type="unfinished"></translation>
+        <translation>系统未说明原因（磁盘是否已满或已移除？）</translation>
     </message>
 </context>
 <context>
@@ -3562,31 +3566,31 @@ The points are unchanged.</source>
     </message>
     <message>
         <source>Files Outside the Project</source>
-        <translation type="unfinished"></translation>
+        <translation>项目文件夹以外的文件</translation>
     </message>
     <message>
         <source>%1 uses files outside its folder. Its sound, photo, video and layers are read from there when you play or export it:</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 使用了其文件夹以外的文件。播放或导出时，会从这些位置读取它的声音、照片、视频和图层：</translation>
     </message>
     <message>
         <source>Project Changed on Disk</source>
-        <translation type="unfinished"></translation>
+        <translation>项目已在磁盘上更改</translation>
     </message>
     <message>
         <source>%1 was changed by another program since you opened it.</source>
-        <translation type="unfinished"></translation>
+        <translation>自您打开后，%1 已被其他程序更改。</translation>
     </message>
     <message>
         <source>Overwriting it loses the other program&apos;s changes.</source>
-        <translation type="unfinished"></translation>
+        <translation>覆盖会丢失其他程序所做的更改。</translation>
     </message>
     <message>
         <source>Save &amp;As…</source>
-        <translation type="unfinished">另存为(&amp;A)…</translation>
+        <translation>另存为(&amp;A)…</translation>
     </message>
     <message>
         <source>&amp;Overwrite</source>
-        <translation type="unfinished"></translation>
+        <translation>覆盖(&amp;O)</translation>
     </message>
     <message>
         <source>Re-detect Points</source>
@@ -4076,15 +4080,15 @@ The points are unchanged.</source>
     </message>
     <message>
         <source>holds no sound</source>
-        <translation type="unfinished"></translation>
+        <translation>没有声音</translation>
     </message>
     <message>
         <source>no room for a temporary copy of the sound: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>没有空间存放声音的临时副本：%1</translation>
     </message>
     <message>
         <source>the sound cannot be used: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法使用这个声音：%1</translation>
     </message>
     <message>
         <source>cut short (its header promises %1 s, it holds %2 s)</source>
@@ -4999,7 +5003,7 @@ Every job of the editor, with no display.</source>
     </message>
     <message>
         <source>%1: interrupted; nothing was written</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：已中断；未写入任何内容</translation>
     </message>
     <message>
         <source>The recording of the whole text, headings included, in reading order.</source>
@@ -5079,7 +5083,7 @@ Every job of the editor, with no display.</source>
     </message>
     <message>
         <source>%1 uses files outside its folder: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 使用了其文件夹以外的文件：%2</translation>
     </message>
 </context>
 </TS>

@@ -1304,6 +1304,10 @@
         <source>cannot read %1: %2</source>
         <translation>無法讀取 %1：%2</translation>
     </message>
+    <message>
+        <source>the drawing is nested more than %1 levels deep</source>
+        <translation>繪圖的巢狀層級超過 %1 層</translation>
+    </message>
 </context>
 <context>
     <name>toonface::ExportAnimationDialog</name>
@@ -1597,15 +1601,15 @@
     </message>
     <message>
         <source>elements nested more than %1 deep</source>
-        <translation type="unfinished"></translation>
+        <translation>元素巢狀超過 %1 層</translation>
     </message>
     <message>
         <source>more than %1 elements</source>
-        <translation type="unfinished"></translation>
+        <translation>超過 %1 個元素</translation>
     </message>
     <message>
         <source>the entity &amp;%1; is not defined</source>
-        <translation type="unfinished"></translation>
+        <translation>實體 &amp;%1; 未定義</translation>
     </message>
 </context>
 <context>
@@ -3467,47 +3471,47 @@ The points are unchanged.</source>
     </message>
     <message>
         <source>%1 s is beyond the longest timeline Toonface keeps (%2 hours)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 秒超出 Toonface 時間軸的最長長度（%2 小時）</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished">%1：%2</translation>
+        <translation>%1：%2</translation>
     </message>
     <message>
         <source>photo</source>
-        <translation type="unfinished"></translation>
+        <translation>照片</translation>
     </message>
     <message>
         <source>sound</source>
-        <translation type="unfinished"></translation>
+        <translation>聲音</translation>
     </message>
     <message>
         <source>video</source>
-        <translation type="unfinished"></translation>
+        <translation>影片</translation>
     </message>
     <message>
         <source>layer</source>
-        <translation type="unfinished"></translation>
+        <translation>圖層</translation>
     </message>
     <message>
         <source>is a folder, not a file</source>
-        <translation type="unfinished"></translation>
+        <translation>是資料夾，不是檔案</translation>
     </message>
     <message>
         <source>is a device, a pipe or a socket, not a file</source>
-        <translation type="unfinished"></translation>
+        <translation>是裝置、管道或通訊端，不是檔案</translation>
     </message>
     <message>
         <source>too large (more than %1 MB)</source>
-        <translation type="unfinished"></translation>
+        <translation>太大（超過 %1 MB）</translation>
     </message>
     <message>
         <source>no space left on the disk (%1 KB free on %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>磁碟已無空間（%2 上只剩 %1 KB）</translation>
     </message>
     <message>
         <source>the system gave no reason (is the disk full or removed?)</source>
-        <translation type="unfinished"></translation>
+        <translation>系統未說明原因（磁碟是否已滿或已移除？）</translation>
     </message>
 </context>
 <context>
@@ -3562,31 +3566,31 @@ The points are unchanged.</source>
     </message>
     <message>
         <source>Files Outside the Project</source>
-        <translation type="unfinished"></translation>
+        <translation>專案資料夾以外的檔案</translation>
     </message>
     <message>
         <source>%1 uses files outside its folder. Its sound, photo, video and layers are read from there when you play or export it:</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 使用了其資料夾以外的檔案。播放或匯出時，會從這些位置讀取它的聲音、照片、影片和圖層：</translation>
     </message>
     <message>
         <source>Project Changed on Disk</source>
-        <translation type="unfinished"></translation>
+        <translation>專案已在磁碟上變更</translation>
     </message>
     <message>
         <source>%1 was changed by another program since you opened it.</source>
-        <translation type="unfinished"></translation>
+        <translation>自您開啟後，%1 已被其他程式變更。</translation>
     </message>
     <message>
         <source>Overwriting it loses the other program&apos;s changes.</source>
-        <translation type="unfinished"></translation>
+        <translation>覆寫會遺失其他程式所做的變更。</translation>
     </message>
     <message>
         <source>Save &amp;As…</source>
-        <translation type="unfinished">另存新檔(&amp;A)…</translation>
+        <translation>另存新檔(&amp;A)…</translation>
     </message>
     <message>
         <source>&amp;Overwrite</source>
-        <translation type="unfinished"></translation>
+        <translation>覆寫(&amp;O)</translation>
     </message>
     <message>
         <source>Re-detect Points</source>
@@ -4076,15 +4080,15 @@ The points are unchanged.</source>
     </message>
     <message>
         <source>holds no sound</source>
-        <translation type="unfinished"></translation>
+        <translation>沒有聲音</translation>
     </message>
     <message>
         <source>no room for a temporary copy of the sound: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>沒有空間存放聲音的暫存副本：%1</translation>
     </message>
     <message>
         <source>the sound cannot be used: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>無法使用這個聲音：%1</translation>
     </message>
     <message>
         <source>cut short (its header promises %1 s, it holds %2 s)</source>
@@ -4999,7 +5003,7 @@ Every job of the editor, with no display.</source>
     </message>
     <message>
         <source>%1: interrupted; nothing was written</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：已中斷；未寫入任何內容</translation>
     </message>
     <message>
         <source>The recording of the whole text, headings included, in reading order.</source>
@@ -5079,7 +5083,7 @@ Every job of the editor, with no display.</source>
     </message>
     <message>
         <source>%1 uses files outside its folder: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 使用了其資料夾以外的檔案：%2</translation>
     </message>
 </context>
 </TS>
