@@ -1,4 +1,5 @@
 #include "benchmark.h"
+#include "speechdata.h"
 
 #include "io/textgrid.h"
 #include "speech/aligner.h"
@@ -34,98 +35,7 @@
 
 using namespace toonface;
 
-namespace {
-
-using Interval = TextGridInterval;
-
-struct Errors
-{
-    std::vector<double> ms;
-    void add(double a, double b) { ms.push_back(std::abs(a - b) * 1000.0); }
-    double quantile(double q) const
-    {
-        if (ms.empty())
-            return 0;
-        std::vector<double> v = ms;
-        std::sort(v.begin(), v.end());
-        return v[std::min(v.size() - 1, size_t(q * double(v.size() - 1) + 0.5))];
-    }
-    QJsonObject json() const
-    {
-        QJsonObject o;
-        o.insert(QStringLiteral("onsets"), int(ms.size()));
-        o.insert(QStringLiteral("medianMs"), std::round(quantile(0.5) * 10) / 10);
-        o.insert(QStringLiteral("p90Ms"), std::round(quantile(0.9) * 10) / 10);
-        o.insert(QStringLiteral("maxMs"), std::round(quantile(1.0) * 10) / 10);
-        return o;
-    }
-};
-
-const QStringList &sentences()
-{
-    static const QStringList s = {
-        QStringLiteral("今天天气很好，我们去公园散步吧。"),
-        QStringLiteral("我爱北京天安门，天安门上太阳升。"),
-        QStringLiteral("这个问题很难回答，请你再说一遍。"),
-        QStringLiteral("小明每天早上六点起床，然后去学校上课。"),
-        QStringLiteral("春眠不觉晓，处处闻啼鸟。夜来风雨声，花落知多少。"),
-        QStringLiteral("银行的工作人员说，明天下午三点以后可以来取钱。"),
-    };
-    return s;
-}
-
-struct Voice
-{
-    const char *voice;
-    int rate, pitch;
-};
-const Voice kVoices[] = {{"cmn-latn-pinyin+f2", 140, 70}, {"cmn-latn-pinyin+m3", 230, 35},
-    {"cmn-latn-pinyin+f4", 180, 85}, {"cmn-latn-pinyin+klatt", 120, 45}};
-
-// A synthetic recording: the script spoken in `v`, with leading and trailing silence, a pause
-// the script does not mark, and white noise at 20 dB SNR; `truth` gets its syllable onsets.
-Audio syntheticRecording(const Script &script, const Voice &v, quint32 seed, std::vector<double> *truth)
-{
-    TtsOptions o;
-    o.voice = QString::fromLatin1(v.voice);
-    o.rate = v.rate;
-    o.pitch = v.pitch;
-    const TtsResult r = synthesize(script, o);
-    Audio spoken = resampled(r.audio, kSpeechSampleRate);
-    QRandomGenerator rng(seed);
-    const double lead = 0.3 + 0.6 * rng.generateDouble(), trail = 0.2 + 0.5 * rng.generateDouble();
-    const int pauseAfter = 1 + int(rng.bounded(std::max(1, int(script.syllables.size()) - 2)));
-    const double pause = 0.25 + 0.3 * rng.generateDouble();
-    const double cut = r.units[pauseAfter].start;
-    Audio out;
-    out.samples.fill(0.0f, qsizetype(lead * kSpeechSampleRate));
-    const qsizetype cutAt = qsizetype(cut * kSpeechSampleRate);
-    out.samples += spoken.samples.mid(0, cutAt);
-    out.samples += QVector<float>(qsizetype(pause * kSpeechSampleRate), 0.0f);
-    out.samples += spoken.samples.mid(cutAt);
-    out.samples += QVector<float>(qsizetype(trail * kSpeechSampleRate), 0.0f);
-    double power = 0;
-    for (float s : spoken.samples)
-        power += double(s) * s;
-    power /= std::max<qsizetype>(spoken.samples.size(), 1);
-    const double sigma = std::sqrt(power / 100.0); // 20 dB
-    for (float &s : out.samples) {
-        // Box-Muller
-        const double u1 = std::max(rng.generateDouble(), 1e-12), u2 = rng.generateDouble();
-        s += float(sigma * std::sqrt(-2 * std::log(u1)) * std::cos(2 * M_PI * u2));
-    }
-    truth->clear();
-    for (int k = 0; k < r.units.size(); ++k)
-        truth->push_back(lead + r.units[k].start + (k >= pauseAfter ? pause : 0.0));
-    return out;
-}
-
-Script mandarin(const QString &text)
-{
-    return parseScript(text, Language::Mandarin).script;
-}
-
-} // namespace
+using namespace toonface::speechbench;
 
 TOONFACE_BENCHMARK("speech.alignSynthetic", [] {
     Errors all;
@@ -166,205 +76,6 @@ TOONFACE_BENCHMARK("speech.alignSynthetic", [] {
         QStringLiteral("espeak-ng voices other than the reference's, 20 dB white noise, "
                        "leading/trailing silence and one unmarked pause"));
     out.insert(QStringLiteral("voices"), perVoice);
-    return out;
-});
-
-namespace {
-
-// One real recording of the shared data with the script it is aligned with and, when known,
-// its reference syllable onsets.
-struct RealFile
-{
-    QString name; // file name under speech/
-    QString script;
-    std::vector<double> truth; // seconds per syllable (NaN: not known); empty: only the transcript is known
-    QString note; // how the script and the truth were chosen
-    bool heldOut = false; // measured apart, never tuned on
-};
-
-QVector<RealFile> realFiles(const QString &dir)
-{
-    QVector<RealFile> files;
-    const QString speech = dir + QStringLiteral("/speech/");
-    // AISHELL-3 sentence: character onsets from the words tier.
-    {
-        RealFile f {QStringLiteral("SSB00050015_16k.wav"), {}, {}, QStringLiteral("TextGrid words tier")};
-        for (const Interval &w :
-            readTextGridTier(speech + QStringLiteral("SSB00050015.TextGrid"), QStringLiteral("words"))) {
-            if (w.text.startsWith(QLatin1Char('[')) || w.text.isEmpty())
-                continue;
-            f.script += w.text;
-            f.truth.push_back(w.start);
-        }
-        files.append(f);
-    }
-    // Beijing disyllables: a hand-cut two-syllable word (C1 V1 C2 V2) inside a carrier
-    // phrase. Neither the word nor the phrase is given: the waveform plot shows six syllables
-    // (two, the word, two), so a neutral script of six "da1" stands for them; the truth is the
-    // start of C1 and of C2 (syllables 3 and 4), the others have none (NaN).
-    for (const char *name : {"beijing_f3_50_a", "beijing_m5_17_c"}) {
-        RealFile f {QString::fromLatin1(name) + QStringLiteral(".wav"), QStringLiteral("da1 da1 da1 da1 da1 da1"), {},
-            QStringLiteral("words not given: 6 syllables counted on the plot, neutral script 'da1' x6; truth = "
-                           "starts of C1 and C2 for syllables 3 and 4")};
-        f.truth.assign(6, std::nan(""));
-        int k = 2;
-        for (const Interval &w : readTextGridTier(
-                 speech + QString::fromLatin1(name) + QStringLiteral(".TextGrid"), QStringLiteral("syll"))) {
-            if (w.text.startsWith(QLatin1Char('C')) && k < 4)
-                f.truth[size_t(k++)] = w.start;
-        }
-        files.append(f);
-    }
-    // Penn forced aligner's word tier: word onsets are the onsets of each word's first
-    // syllable; the other syllables have none (NaN). Held out: measured, never tuned on.
-    {
-        RealFile f {QStringLiteral("p2fa_test1.wav"), {}, {},
-            QStringLiteral("HELD OUT: TextGrid word tier (Penn forced aligner), word onsets scored")};
-        for (const Interval &w :
-            readTextGridTier(speech + QStringLiteral("p2fa_test1.TextGrid"), QStringLiteral("word"))) {
-            if (w.text.isEmpty() || w.text == QLatin1String("sp") || w.text == QLatin1String("sil"))
-                continue;
-            f.script += w.text;
-            f.truth.push_back(w.start);
-            f.heldOut = true;
-            for (size_t k = 1; k < w.text.toStdU32String().size(); ++k)
-                f.truth.push_back(std::nan(""));
-        }
-        files.append(f);
-    }
-    for (const char *name : {"NST_ID001", "BAC009S0002W0122", "BAC009S0002W0123"}) {
-        QFile t(speech + QString::fromLatin1(name) + QStringLiteral(".txt"));
-        RealFile f {QString::fromLatin1(name) + QStringLiteral(".wav"), {}, {},
-            QStringLiteral("transcript only: checked on a plot")};
-        if (t.open(QIODevice::ReadOnly))
-            f.script = QString::fromUtf8(t.readAll()).trimmed();
-        files.append(f);
-    }
-    return files;
-}
-
-double shortestMs(const QVector<LipsyncSyllable> &syllables)
-{
-    double shortest = syllables.isEmpty() ? 0.0 : 1e9;
-    for (const LipsyncSyllable &s : syllables)
-        shortest = std::min(shortest, (s.end - s.start) * 1000.0);
-    return shortest;
-}
-
-double lowestConfidence(const QVector<LipsyncSyllable> &syllables)
-{
-    double lowest = syllables.isEmpty() ? 0.0 : 1.0;
-    for (const LipsyncSyllable &s : syllables)
-        lowest = std::min(lowest, s.confidence);
-    return lowest;
-}
-
-// Aligns `file` exactly as `toonface-cli lipsync` does (lipsyncFiles on the audio file and a
-// script file).
-LipsyncOutcome lipsyncRealFile(const QString &dir, const RealFile &file)
-{
-    QTemporaryDir tmp;
-    const QString scriptPath = tmp.filePath(QStringLiteral("script.txt"));
-    QFile s(scriptPath);
-    if (!s.open(QIODevice::WriteOnly))
-        return {};
-    s.write(file.script.toUtf8());
-    s.close();
-    return lipsyncFiles(dir + QStringLiteral("/speech/") + file.name, scriptPath);
-}
-
-} // namespace
-
-namespace {
-
-// The GRID clip's word tier (shared/data/video/swwp2s.align, units of 1/25000 s): its words and
-// their onsets in seconds, silences left out; empty when absent.
-struct GridWordTier
-{
-    QStringList words;
-    std::vector<double> onsets;
-};
-
-GridWordTier gridWordTier(const QString &dataDir)
-{
-    QStringList words;
-    std::vector<double> onsets;
-    QFile f(dataDir + QStringLiteral("/video/swwp2s.align"));
-    if (!f.open(QIODevice::ReadOnly))
-        return {};
-    for (const QString &line : QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
-        const QStringList cols = line.trimmed().split(QLatin1Char(' '), Qt::SkipEmptyParts);
-        if (cols.size() == 3 && cols[2] != QLatin1String("sil")) {
-            words.append(cols[2]);
-            onsets.push_back(cols[0].toDouble() / 25000.0);
-        }
-    }
-    return {words, onsets};
-}
-
-} // namespace
-
-TOONFACE_BENCHMARK("speech.alignReal", [] {
-    QJsonObject out;
-    const QString dir = bench::sharedDataDir();
-    if (dir.isEmpty()) {
-        out.insert(QStringLiteral("skipped"), QStringLiteral("no shared data"));
-        return out;
-    }
-    Errors all;
-    Errors heldOut;
-    QJsonArray files;
-    for (const RealFile &file : realFiles(dir)) {
-        if (!QFile::exists(dir + QStringLiteral("/speech/") + file.name))
-            continue;
-        const LipsyncOutcome r = lipsyncRealFile(dir, file);
-        Errors e;
-        QJsonArray onsets;
-        QJsonArray signedErrors;
-        for (int k = 0; r.ok() && k < r.result.syllables.size(); ++k) {
-            const double start = r.result.syllables[k].start;
-            onsets.append(std::round(start * 1000));
-            if (size_t(k) < file.truth.size() && std::isnan(file.truth[size_t(k)]))
-                signedErrors.append(QJsonValue::Null);
-            if (size_t(k) < file.truth.size() && !std::isnan(file.truth[size_t(k)])) {
-                e.add(start, file.truth[size_t(k)]);
-                (file.heldOut ? heldOut : all).add(start, file.truth[size_t(k)]);
-                signedErrors.append(std::round((start - file.truth[size_t(k)]) * 1000));
-            }
-        }
-        QJsonObject o = file.truth.empty() ? QJsonObject {} : e.json();
-        o.insert(QStringLiteral("file"), file.name);
-        o.insert(QStringLiteral("shortestSyllableMs"), std::round(shortestMs(r.result.syllables)));
-        o.insert(QStringLiteral("lowestConfidence"), std::round(lowestConfidence(r.result.syllables) * 100) / 100);
-        o.insert(QStringLiteral("truth"), file.note);
-        o.insert(QStringLiteral("onsetsMs"), onsets);
-        if (!file.truth.empty())
-            o.insert(QStringLiteral("signedErrorsMs"), signedErrors);
-        o.insert(QStringLiteral("status"), r.ok() ? QStringLiteral("ok") : r.error);
-        files.append(o);
-    }
-    // GRID (English): word onsets, units of 1/25000 s.
-    {
-        const AudioResult a = loadAudio(dir + QStringLiteral("/video/id2_vcd_swwp2s.mpg"));
-        const GridWordTier tier = gridWordTier(dir);
-        const QStringList &words = tier.words;
-        const std::vector<double> &truth = tier.onsets;
-        if (!words.isEmpty() && a.ok()) {
-            const AlignResult r = alignScript(a.audio, parseScript(words.join(QLatin1Char(' '))).script);
-            Errors e;
-            for (int k = 0; r.ok() && k < r.syllables.size(); ++k)
-                e.add(r.syllables[k].start, truth[size_t(k)]);
-            QJsonObject o = e.json();
-            o.insert(QStringLiteral("file"),
-                QStringLiteral("id2_vcd_swwp2s.mpg (English words, not in the Mandarin figures)"));
-            files.append(o);
-        }
-    }
-    out = all.json();
-    out.insert(QStringLiteral("what"),
-        QStringLiteral("Mandarin onsets with a reference, pooled over the files developed on (held-out files apart)"));
-    out.insert(QStringLiteral("heldOut"), heldOut.json());
-    out.insert(QStringLiteral("files"), files);
     return out;
 });
 
@@ -611,17 +322,10 @@ QJsonObject alignSpeed()
 
 TOONFACE_BENCHMARK("speech.alignSpeed", alignSpeed);
 
-namespace {
-
 using bench::ChildRun;
 using bench::runMeasured;
 
-// `toonface-cli lipsync` end to end on long real recordings: the shared recordings of one
-// sentence each (two AISHELL-1 sentences, the P2FA test and SSB00050015) joined, round after
-// round, to about a minute and to ten minutes, with their scripts joined alike. The reference
-// onsets of the P2FA words and the SSB characters, moved by each file's place, score the
-// alignment of the long recording. Built here, never committed.
-QJsonObject lipsyncLongReal()
+QJsonObject toonface::speechbench::lipsyncLongReal(const std::vector<int> &roundCounts)
 {
     QJsonObject out;
     const QString dir = bench::sharedDataDir();
@@ -651,7 +355,7 @@ QJsonObject lipsyncLongReal()
     }
     QTemporaryDir tmp;
     QJsonObject runs;
-    for (const int rounds : {3, 30}) {
+    for (const int rounds : roundCounts) {
         Audio audio;
         QString script;
         std::vector<double> truth;
@@ -740,6 +444,4 @@ QJsonObject lipsyncLongReal()
     return out;
 }
 
-} // namespace
-
-TOONFACE_BENCHMARK("speech.lipsyncLongReal", lipsyncLongReal);
+TOONFACE_BENCHMARK("speech.lipsyncLongReal", [] { return lipsyncLongReal({3, 30}); });

@@ -1,0 +1,192 @@
+#include "benchmark.h"
+#include "speechdata.h"
+
+#include "speech/aligner.h"
+#include "speech/audio.h"
+#include "speech/lipsync.h"
+#include "speech/script.h"
+
+#include <QFile>
+#include <QJsonArray>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace toonface;
+using namespace toonface::speechbench;
+
+namespace {
+
+// Speakers no constant of the aligner was chosen on: espeak-ng variants, rates and pitches
+// unlike kVoices (which speech.alignSynthetic reports) and the reference's default voice.
+const Voice kHeldOutVoices[]
+    = {{"cmn-latn-pinyin+m1", 170, 40}, {"cmn-latn-pinyin+f5", 210, 75}, {"cmn-latn-pinyin+m7", 110, 30},
+        {"cmn-latn-pinyin+klatt3", 260, 60}, {"cmn-latn-pinyin+croak", 150, 50}, {"cmn-latn-pinyin+f1", 125, 90}};
+
+// The shared sentences and some whose tones change in context (一, 不, 3rd before 3rd).
+QStringList heldOutSentences()
+{
+    return sentences()
+        + QStringList {QStringLiteral("我们一起去买一本书，好不好？"), QStringLiteral("你不要一天到晚想这个问题。"),
+            QStringLiteral("老李很少给小马打电话。"), QStringLiteral("一个人不是一座孤岛。")};
+}
+
+QJsonArray rounded(const std::vector<double> &v)
+{
+    QJsonArray a;
+    for (const double x : v)
+        a.append(std::isnan(x) ? QJsonValue(QJsonValue::Null) : QJsonValue(std::round(x)));
+    return a;
+}
+
+// The shared data's Mandarin files, each against its reference onsets.
+QJsonArray realFileFigures(const QString &dir, Errors *developed, Errors *heldOut)
+{
+    QJsonArray files;
+    for (const RealFile &file : realFiles(dir)) {
+        if (!QFile::exists(dir + QStringLiteral("/speech/") + file.name))
+            continue;
+        const LipsyncOutcome r = lipsyncRealFile(dir, file);
+        Errors e;
+        QJsonArray onsets;
+        std::vector<double> signedErrors;
+        for (int k = 0; r.ok() && k < r.result.syllables.size(); ++k) {
+            const LipsyncSyllable &s = r.result.syllables[k];
+            onsets.append(std::round(s.start * 1000));
+            if (size_t(k) >= file.truth.size())
+                continue;
+            const double truth = file.truth[size_t(k)];
+            signedErrors.push_back(std::isnan(truth) ? truth : (s.start - truth) * 1000);
+            if (!std::isnan(truth))
+                e.add(s.start, truth, s.confidence);
+        }
+        (file.heldOut ? heldOut : developed)->add(e);
+        QJsonObject o = file.truth.empty() ? QJsonObject {} : e.json();
+        o.insert(QStringLiteral("file"), file.name);
+        o.insert(QStringLiteral("heldOut"), file.heldOut);
+        o.insert(QStringLiteral("shortestSyllableMs"), std::round(shortestMs(r.result.syllables)));
+        o.insert(QStringLiteral("lowestConfidence"), std::round(lowestConfidence(r.result.syllables) * 100) / 100);
+        o.insert(QStringLiteral("truth"), file.note);
+        o.insert(QStringLiteral("onsetsMs"), onsets);
+        if (!file.truth.empty())
+            o.insert(QStringLiteral("signedErrorsMs"), rounded(signedErrors));
+        o.insert(QStringLiteral("status"), r.ok() ? QStringLiteral("ok") : r.error);
+        files.append(o);
+    }
+    return files;
+}
+
+// Adds an alignment of synthetic speech to `e`; the shortest syllable to `shortest`.
+void scoreSynthetic(const Script &s, const Audio &rec, const std::vector<double> &truth, Errors *e, double *shortest,
+    const AlignOptions &options = {})
+{
+    const LipsyncResult r = lipsyncResult(s, alignScript(rec, s, options), rec.duration());
+    for (int k = 0; k < r.syllables.size() && size_t(k) < truth.size(); ++k) {
+        e->add(r.syllables[k].start, truth[size_t(k)], r.syllables[k].confidence);
+        *shortest = std::min(*shortest, (r.syllables[k].end - r.syllables[k].start) * 1000);
+    }
+}
+
+// The held-out voices, sentence by sentence, and one of them reading them all for a minute.
+QJsonObject heldOutSynthetic()
+{
+    Errors pooled, unadapted;
+    AlignOptions noAdaptation;
+    noAdaptation.adaptToSpeaker = false;
+    QJsonArray perVoice;
+    quint32 seed = 1000;
+    double shortestAll = 1e9;
+    const QStringList texts = heldOutSentences();
+    for (const Voice &v : kHeldOutVoices) {
+        Errors e;
+        double shortest = 1e9;
+        for (const QString &text : texts) {
+            const Script s = mandarin(text);
+            std::vector<double> truth;
+            const Audio rec = syntheticRecording(s, v, seed++, &truth);
+            scoreSynthetic(s, rec, truth, &e, &shortest);
+            double ignored = 0;
+            scoreSynthetic(s, rec, truth, &unadapted, &ignored, noAdaptation);
+        }
+        pooled.add(e);
+        shortestAll = std::min(shortestAll, shortest);
+        QJsonObject o = e.json();
+        o.insert(QStringLiteral("voice"), QString::fromLatin1(v.voice));
+        o.insert(QStringLiteral("rate"), v.rate);
+        o.insert(QStringLiteral("pitch"), v.pitch);
+        o.insert(QStringLiteral("shortestSyllableMs"), std::round(shortest));
+        perVoice.append(o);
+    }
+    QJsonObject out = pooled.json();
+    out.insert(QStringLiteral("shortestSyllableMs"), std::round(shortestAll));
+    out.insert(QStringLiteral("voices"), perVoice);
+    out.insert(QStringLiteral("withoutAdaptation"), unadapted.json());
+    // One speaker for about a minute: the sentences over and over in one recording.
+    {
+        QString text;
+        for (int k = 0; k < 3; ++k)
+            text += texts.join(QString());
+        const Script s = mandarin(text);
+        std::vector<double> truth;
+        const Audio rec = syntheticRecording(s, kHeldOutVoices[0], 7, &truth);
+        Errors e;
+        double shortest = 1e9;
+        scoreSynthetic(s, rec, truth, &e, &shortest);
+        Errors plain;
+        double ignored = 0;
+        scoreSynthetic(s, rec, truth, &plain, &ignored, noAdaptation);
+        QJsonObject o = e.json();
+        o.insert(QStringLiteral("withoutAdaptation"), plain.json());
+        o.insert(QStringLiteral("audioSeconds"), std::round(rec.duration()));
+        o.insert(QStringLiteral("voice"), QString::fromLatin1(kHeldOutVoices[0].voice));
+        o.insert(QStringLiteral("shortestSyllableMs"), std::round(shortest));
+        out.insert(QStringLiteral("oneSpeakerMinute"), o);
+    }
+    return out;
+}
+
+QJsonObject alignReal()
+{
+    QJsonObject out;
+    out.insert(QStringLiteral("heldOutSynthetic"), heldOutSynthetic());
+    const QString dir = bench::sharedDataDir();
+    if (dir.isEmpty()) {
+        out.insert(QStringLiteral("skipped"), QStringLiteral("no shared data"));
+        return out;
+    }
+    Errors developed, heldOut;
+    QJsonArray files = realFileFigures(dir, &developed, &heldOut);
+    // GRID (English): word onsets, units of 1/25000 s.
+    {
+        const AudioResult a = loadAudio(dir + QStringLiteral("/video/id2_vcd_swwp2s.mpg"));
+        const GridWordTier tier = gridWordTier(dir);
+        if (!tier.words.isEmpty() && a.ok()) {
+            const AlignResult r = alignScript(a.audio, parseScript(tier.words.join(QLatin1Char(' '))).script);
+            Errors e;
+            for (int k = 0; r.ok() && k < r.syllables.size(); ++k)
+                e.add(r.syllables[k].start, tier.onsets[size_t(k)], r.syllables[k].confidence);
+            QJsonObject o = e.json();
+            o.insert(QStringLiteral("file"),
+                QStringLiteral("id2_vcd_swwp2s.mpg (English words, not in the Mandarin figures)"));
+            files.append(o);
+        }
+    }
+    Errors all = developed;
+    all.add(heldOut);
+    out.insert(QStringLiteral("real"), all.json());
+    out.insert(QStringLiteral("realDevelopedOn"), developed.json());
+    out.insert(QStringLiteral("realHeldOut"), heldOut.json());
+    out.insert(QStringLiteral("files"), files);
+    // A minute of the shared recordings joined, through toonface-cli as a whole process.
+    out.insert(QStringLiteral("minuteWholeProcess"), lipsyncLongReal({3}));
+    out.insert(QStringLiteral("what"),
+        QStringLiteral("Mandarin onsets against references: real files (developed on / held out) and espeak-ng "
+                       "voices and tempi no constant was chosen on (20 dB noise, an unmarked pause); signed = "
+                       "aligned - reference (positive: mouth late); offBy80MsFlagged: of the onsets > 80 ms off, "
+                       "how many had confidence < 0.5"));
+    return out;
+}
+
+} // namespace
+
+TOONFACE_BENCHMARK("speech.alignReal", alignReal);
