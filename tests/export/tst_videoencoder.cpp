@@ -695,7 +695,7 @@ void TestVideoEncoder::unreadableAudio()
     VideoWriter writer;
     QVERIFY(!writer.open(
         dir.filePath(u"a.mp4"_qs), VideoFormat::Mp4, QSize(32, 32), 25, AudioSource::fromFile(missing), &error));
-    QVERIFY2(error.startsWith(missing + u": cannot read the audio"_qs), qPrintable(error));
+    QVERIFY2(error == missing + u": no such file"_qs, qPrintable(error)); // never handed to FFmpeg
 
     const QString text = dir.filePath(u"notes.wav"_qs);
     QFile f(text);

@@ -1,5 +1,6 @@
 #include "face/averageface.h"
 #include "io/project.h"
+#include "render/svglayer.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -55,6 +56,9 @@ private Q_SLOTS:
         layer.name = QStringLiteral("hat.svg");
         layer.svg
             = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 10 10\"><rect width=\"10\" height=\"4\"/></svg>";
+        // The project holds a layer's cleaned copy (issue 24): one already clean round-trips.
+        QString cleaning;
+        QVERIFY2(cleanLayerSvg(QByteArray(layer.svg), &layer.svg, &cleaning), qPrintable(cleaning));
         layer.followsHead = flags;
         style.layers = {layer};
         style.components[QStringLiteral("glasses")].stroke = QColor(0x80, 0x20, 0x20);
