@@ -150,6 +150,8 @@ void Studio::installVideo()
         ImportVideoDialog dialog(m_document, m_playhead->time(), m_window);
         if (dialog.exec() != QDialog::Accepted)
             return;
+        m_videoDock->show();
+        m_videoDock->raise(); // its tab in front: the clip just imported
         const QString imported
             = soundChange(before, tr("Imported %1").arg(QFileInfo(m_document->timeline().video()->path).fileName()));
         Q_EMIT message(
