@@ -6,10 +6,10 @@
 #include <QDir>
 #include <QDirIterator>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QFile>
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTcpServer>
@@ -162,7 +162,8 @@ private Q_SLOTS:
         QFETCH(QString, sound);
         QFETCH(QString, layer);
         QFETCH(QString, named);
-        const QString proj = project(QStringLiteral("device"), sound, layer.isEmpty() ? QStringList() : QStringList {layer});
+        const QString proj
+            = project(QStringLiteral("device"), sound, layer.isEmpty() ? QStringList() : QStringList {layer});
         const QString out = m_home.filePath(QStringLiteral("device.html"));
         const Run r = cli({QStringLiteral("animate"), proj, QStringLiteral("-o"), out});
         QCOMPARE(r.code, 3);
@@ -194,8 +195,8 @@ private Q_SLOTS:
             "\"http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd\">\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
             "viewBox=\"0 0 10 10\"><text>a&nbsp;b</text><rect width=\"4\" height=\"4\" fill=\"#0a0\"/></svg>"));
         const QString out = m_home.filePath(QStringLiteral("svg11.svg"));
-        r = cli({QStringLiteral("animate"), project(QStringLiteral("svg11"), QString(), {svg11}),
-            QStringLiteral("-o"), out});
+        r = cli({QStringLiteral("animate"), project(QStringLiteral("svg11"), QString(), {svg11}), QStringLiteral("-o"),
+            out});
         QVERIFY2(r.code == 0, r.err.constData());
         QFile f(out);
         QVERIFY(f.open(QIODevice::ReadOnly));
@@ -229,14 +230,29 @@ private Q_SLOTS:
         const QByteArray at = "http://127.0.0.1:" + QByteArray::number(server.serverPort());
         const QByteArray hostile = "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:h=\"http://www.w3.org/1999/xhtml\" "
                                    "viewBox=\"0 0 10 10\">"
-                                   "<style>@\\69mport '" + at + "/a.css'; rect{fill:\\75 rl(" + at + "/b)}</style>"
-                                   "<rect width=\"5\" height=\"5\" style=\"fill:image-set('" + at + "/c.png' 1x)\"/>"
-                                   "<p/><img srcset=\"" + at + "/d.png 1x\"/><video poster=\"" + at + "/e.png\"/>"
-                                   "<link rel=\"preload\" as=\"image\" imagesrcset=\"" + at + "/f.png 1x\"/>"
-                                   "<meta http-equiv=\"refresh\" content=\"0;url=" + at + "/g\"/>"
-                                   "<h:img srcset=\"" + at + "/h.png 1x\"/>"
-                                   "<h:meta http-equiv=\"refresh\" content=\"0;url=" + at + "/i\"/>"
-                                   "<image href=\"" + at + "/j.png\" width=\"1\" height=\"1\"/></svg>";
+                                   "<style>@\\69mport '"
+            + at + "/a.css'; rect{fill:\\75 rl(" + at
+            + "/b)}</style>"
+              "<rect width=\"5\" height=\"5\" style=\"fill:image-set('"
+            + at
+            + "/c.png' 1x)\"/>"
+              "<p/><img srcset=\""
+            + at + "/d.png 1x\"/><video poster=\"" + at
+            + "/e.png\"/>"
+              "<link rel=\"preload\" as=\"image\" imagesrcset=\""
+            + at
+            + "/f.png 1x\"/>"
+              "<meta http-equiv=\"refresh\" content=\"0;url="
+            + at
+            + "/g\"/>"
+              "<h:img srcset=\""
+            + at
+            + "/h.png 1x\"/>"
+              "<h:meta http-equiv=\"refresh\" content=\"0;url="
+            + at
+            + "/i\"/>"
+              "<image href=\""
+            + at + "/j.png\" width=\"1\" height=\"1\"/></svg>";
         StyleLayer layer;
         layer.name = QStringLiteral("hostile.svg");
         layer.svg = hostile;

@@ -3,9 +3,9 @@
 #include "document/animation.h"
 #include "io/project.h"
 
+#include <QDateTime>
 #include <QFlags>
 #include <QImage>
-#include <QDateTime>
 #include <QObject>
 #include <QString>
 
