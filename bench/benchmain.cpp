@@ -98,7 +98,8 @@ ChildRun runMeasured(const QString &program, const QStringList &args, const QStr
     r.cpuMs = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) * 1e3
         + double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e3;
     r.peakMb = double(usage.ru_maxrss) / 1024.0;
-    r.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.ok = r.exitCode == 0;
     if (keepStderr) {
         errors.seek(0);
         r.stderrText = errors.readAll();

@@ -56,6 +56,7 @@ struct ChildRun
 {
     double wallMs = 0, cpuMs = 0, peakMb = 0;
     bool ok = false; // exited with 0
+    int exitCode = -1; // its exit code, or -1 when a signal ended it
     double startedMs = 0; // CLOCK_MONOTONIC in ms just before the process was started
     QByteArray stderrText; // when keepStderr
 };

@@ -359,6 +359,9 @@ private Q_SLOTS:
         row("layer-empty.toonface", "layers[1]: expected a file path");
         row("timeline-array.toonface", "timeline: expected an object, found an array");
         row("timeline-mouth-shape.toonface", "timeline.mouth[1].shape");
+        // Times are capped at the longest timeline kept (Timeline::kMaxSeconds, four hours).
+        row("timeline-key-1e308.toonface", "timeline.mouth[1].time: 1e+308 s is beyond the longest timeline");
+        row("timeline-clip-10h.toonface", "timeline.emotion[0].end: 36001 s is beyond the longest timeline");
         row("syllable-end-before-start.toonface", "script.syllables[0].end: expected a time after the start");
         row("audio-offset-string.toonface", "audio.offset: expected a number");
         row("script-language.toonface", "script.language: expected \"cmn\", \"en\" or \"\"");
