@@ -1,5 +1,6 @@
 #include "animationfixture.h"
 
+#include "face/mouthshape.h"
 #include "io/project.h"
 #include "render/style.h"
 
@@ -18,6 +19,8 @@
 #include <QTest>
 #include <QUrl>
 #include <QXmlStreamReader>
+
+#include <csignal>
 
 #include <sys/stat.h>
 
@@ -170,6 +173,59 @@ private Q_SLOTS:
         QVERIFY2(r.err.contains(named.toUtf8()) && !r.err.contains("does not exist"), r.err.constData());
         QVERIFY(!QFileInfo::exists(out));
         qInfo("refused in %lld ms", r.ms);
+    }
+
+    // A control character in a path the project names (an escape sequence that would redraw
+    // the terminal) is printed as \xNN, never raw.
+    void controlCharactersPrintedEscaped()
+    {
+        const QString proj = project(QStringLiteral("escape"),
+            QStringLiteral("a\x1b[2J\x07"
+                           "b.wav"));
+        const Run r
+            = cli({QStringLiteral("animate"), proj, QStringLiteral("-o"), m_home.filePath(QStringLiteral("e.svg"))});
+        QCOMPARE(r.code, 3);
+        QVERIFY2(!r.err.contains('\x1b') && !r.err.contains('\x07'), r.err.toPercentEncoding().constData());
+        QVERIFY2(r.err.contains("a\\x1b[2J\\x07b.wav"), r.err.constData());
+    }
+
+    // An export stopped with Ctrl+C (SIGINT) or by the system (SIGTERM) says so (exit 130) and
+    // leaves neither the output nor a hidden part file behind.
+    void interruptedExportLeavesNothing_data()
+    {
+        QTest::addColumn<int>("signal");
+        QTest::newRow("SIGINT") << int(SIGINT);
+        QTest::newRow("SIGTERM") << int(SIGTERM);
+    }
+    void interruptedExportLeavesNothing()
+    {
+        QFETCH(int, signal);
+        const QString dir = m_home.filePath(QStringLiteral("interrupted"));
+        QDir().mkpath(dir);
+        Project p;
+        p.face = test::animationFace();
+        QVector<MouthKey> keys;
+        for (int i = 0; i < 600; ++i)
+            keys.append(MouthKey {i * 0.1, kAllMouthShapes[size_t(i) % kAllMouthShapes.size()], 1.0, std::nullopt});
+        p.timeline.setMouthKeys(keys);
+        const QString proj = QDir(dir).filePath(QStringLiteral("long.toonface"));
+        QVERIFY(saveProject(p, proj, nullptr));
+        const QString out = QDir(dir).filePath(QStringLiteral("long.mp4"));
+        QProcess process;
+        process.start(QStringLiteral(TOONFACE_CLI_PATH), {QStringLiteral("animate"), proj, QStringLiteral("-o"), out});
+        QVERIFY(process.waitForStarted());
+        // Once frames are being written.
+        auto partFiles = [&] { return QDir(dir).entryList({QStringLiteral("*.part")}, QDir::Files | QDir::Hidden); };
+        QTRY_VERIFY_WITH_TIMEOUT(!partFiles().isEmpty() || process.state() == QProcess::NotRunning, 60000);
+        QVERIFY2(process.state() != QProcess::NotRunning, process.readAllStandardError().constData());
+        QCOMPARE(::kill(pid_t(process.processId()), signal), 0);
+        QVERIFY(process.waitForFinished(30000));
+        QCOMPARE(process.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(process.exitCode(), 130);
+        const QByteArray err = process.readAllStandardError();
+        QVERIFY2(err.contains("interrupted"), err.constData());
+        QVERIFY(!QFileInfo::exists(out));
+        QCOMPARE(partFiles(), QStringList());
     }
 
     // A layer file of 100,000 nested groups is refused by name (it crashed the SMIL writer); a

@@ -533,6 +533,9 @@ private Q_SLOTS:
 
         QVERIFY(!saved);
         QVERIFY2(error.startsWith(file + QStringLiteral(": cannot save: ")), qPrintable(error));
+        // A reason the user can act on, never Qt's "Unknown error".
+        QVERIFY2(!error.contains(QStringLiteral("Unknown error")), qPrintable(error));
+        QVERIFY2(error.size() > file.size() + QStringLiteral(": cannot save: ").size() + 4, qPrintable(error));
         QCOMPARE(readAll(file), before);
         QCOMPARE(entries(dir), filesBefore);
 #endif
