@@ -5,11 +5,14 @@
 #include "export/smilexport.h"
 #include "face/averageface.h"
 #include "face/mouthshape.h"
+#include "io/project.h"
 #include "render/svgface.h"
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QRegularExpression>
+#include <QTemporaryDir>
 
 #include <random>
 
@@ -43,9 +46,8 @@ constexpr Syllable kSyllables[] = {{"de", "e"}, {"shi", "ih"}, {"yi", "i"}, {"bu
 // fractions of the syllable (ch. 5.3); phrases of 6-14 syllables with 0.3-0.9 s pauses and a
 // longer breath every fifth phrase. A smile and a surprise, random blinks, a few gaze moves,
 // head shakes and nods.
-Timeline tenMinutesOfSpeech(double shortest, double longest)
+Timeline tenMinutesOfSpeech(double shortest, double longest, double length = 600.0)
 {
-    constexpr double length = 600.0;
     static const double fractions[4][4] = {{0}, {0, 0.8095}, {0, 0.4337, 0.8312}, {0, 0.245, 0.4565, 0.7153}};
     std::mt19937 rng(5);
     auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
@@ -78,15 +80,17 @@ Timeline tenMinutesOfSpeech(double shortest, double longest)
     }
     Timeline timeline;
     timeline.addMouthCues(cues);
-    timeline.addEmotionClip({60.0, 180.0, Emotion::Smile, 0.8, 0.5, 0.5});
-    timeline.addEmotionClip({300.0, 320.0, Emotion::Surprise, 0.7, 0.3, 0.5});
+    // Placed for ten minutes, scaled to a shorter length.
+    const double k = length / 600.0;
+    timeline.addEmotionClip({60.0 * k, 180.0 * k, Emotion::Smile, 0.8, 0.5, 0.5});
+    timeline.addEmotionClip({300.0 * k, 320.0 * k, Emotion::Surprise, 0.7, 0.3, 0.5});
     timeline.generateBlinks(7, length);
     for (double s = 0; s < length; s += 40.0)
         timeline.addGazeKey({s, {uniform(-0.05, 0.05), uniform(-0.02, 0.02)}});
     for (double s : {30.0, 150.0, 400.0})
-        timeline.addShake(s, s + 1.0);
+        timeline.addShake(s * k, s * k + 1.0);
     for (double s : {90.0, 250.0, 500.0})
-        timeline.addNod(s, s + 1.0);
+        timeline.addNod(s * k, s * k + 1.0);
     timeline.setAudio(AudioClip {QStringLiteral("speech.wav"), 0.0, length});
     return timeline;
 }
@@ -185,8 +189,62 @@ QJsonObject benchFrames()
     return r;
 }
 
+// The whole process a user runs: toonface-cli animate of a project holding a minute of speech
+// (the normal style, 512x512, 25 fps, no sound) to MP4 and to GIF; wall and CPU time as
+// multiples of real time, and peak memory.
+QJsonObject benchVideoFromProject()
+{
+    QTemporaryDir dir;
+    Project project;
+    project.face = averageFace(QRectF(100, 100, 300, 360), QSize(512, 512));
+    project.style = Style::preset(QStringLiteral("normal"));
+    // A real person's drawing (hair, clothes, her colours) when the Debian package's portrait
+    // is here: the CLI makes her project, whose timeline is then replaced.
+    const QString portrait = QStringLiteral("/usr/share/matplotlib/mpl-data/sample_data/grace_hopper.jpg");
+    const QString made = dir.filePath(QStringLiteral("grace.toonface"));
+    QString drawing = QStringLiteral("the average face");
+    if (QFileInfo::exists(portrait)
+        && bench::runMeasured(QStringLiteral(TOONFACE_CLI_PATH),
+            {QStringLiteral("animate"), portrait, QStringLiteral("--say"), QStringLiteral("ni3 hao3"),
+                QStringLiteral("--project"), made, QStringLiteral("-o"), dir.filePath(QStringLiteral("grace.svg"))},
+            {QStringLiteral("QT_QPA_PLATFORM=offscreen")})
+               .ok) {
+        QString error;
+        if (const auto loaded = loadProject(made, &error)) {
+            project = *loaded;
+            drawing = QFileInfo(portrait).fileName();
+        }
+    }
+    project.timeline = tenMinutesOfSpeech(0.14, 0.30, 60.0);
+    project.timeline.setAudio(std::nullopt);
+    const QString path = dir.filePath(QStringLiteral("minute.toonface"));
+    QString error;
+    if (!saveProject(project, path, &error))
+        return {{QStringLiteral("error"), error}};
+    const double seconds = project.timeline.frameCount() / project.timeline.frameRate();
+    QJsonObject r;
+    for (const char *suffix : {"mp4", "gif"}) {
+        const QString out = dir.filePath(QStringLiteral("minute.") + QLatin1StringView(suffix));
+        const bench::ChildRun run = bench::runMeasured(QStringLiteral(TOONFACE_CLI_PATH),
+            {QStringLiteral("animate"), path, QStringLiteral("-o"), out}, {QStringLiteral("QT_QPA_PLATFORM=offscreen")},
+            true);
+        if (!run.ok)
+            return {{QStringLiteral("error"), QString::fromUtf8(run.stderrText)}};
+        r.insert(QLatin1StringView(suffix),
+            QJsonObject {{QStringLiteral("seconds"), seconds}, {QStringLiteral("wallMs"), qRound(run.wallMs)},
+                {QStringLiteral("timesRealTime"), seconds * 1000.0 / run.wallMs},
+                {QStringLiteral("cpuSecondsPerMinute"), run.cpuMs / 1000.0 * 60.0 / seconds},
+                {QStringLiteral("peakMb"), qRound(run.peakMb)}, {QStringLiteral("bytes"), QFileInfo(out).size()}});
+    }
+    r.insert(QStringLiteral("drawing"), drawing);
+    r.insert(QStringLiteral("targetMp4TimesRealTime"), 10);
+    r.insert(QStringLiteral("targetGifTimesRealTime"), 5);
+    return r;
+}
+
 } // namespace
 
+TOONFACE_BENCHMARK("export.videoFromProject", benchVideoFromProject);
 TOONFACE_BENCHMARK("export.tenMinutes", [] { return benchExport(false); });
 TOONFACE_BENCHMARK("export.tenMinutesFast", [] { return benchExport(true); });
 TOONFACE_BENCHMARK("export.frames512", benchFrames);
