@@ -4442,6 +4442,18 @@ The points are unchanged.</source>
         <source> (Alt+wheel)</source>
         <translation>（Alt+滾輪）</translation>
     </message>
+    <message>
+        <source>Emotion Intensity</source>
+        <translation>表情強度</translation>
+    </message>
+    <message>
+        <source>Intensity of %1 (%):</source>
+        <translation>%1的強度（%）：</translation>
+    </message>
+    <message>
+        <source>Intensity…</source>
+        <translation>強度…</translation>
+    </message>
 </context>
 <context>
     <name>toonface::VideoDock</name>

@@ -10,9 +10,11 @@
 
 #include <QApplication>
 #include <QFontDatabase>
+#include <QInputDialog>
 #include <QLineEdit>
 #include <QMimeData>
 #include <QTest>
+#include <QTimer>
 #include <QToolButton>
 #include <QUndoStack>
 
@@ -295,6 +297,63 @@ private Q_SLOTS:
         QCOMPARE(m_view->selection().indices(ItemKind::Syllable), QVector<int>({0, 1, 2}));
         QCOMPARE(m_view->selection().size(), 3);
         QCOMPARE(m_doc->undoStack()->count(), 0); // selecting is no edit
+    }
+
+    // Clicking a mouth key puts the playhead inside it, so the cartoon shows the shape chosen;
+    // a wider selection or playback leaves the playhead alone.
+    void selectedMouthKeyIsShown()
+    {
+        const QVector<MouthKey> keys = m_doc->timeline().mouthKeys();
+        QVERIFY(keys.size() >= 4);
+        m_playhead->setTime(0);
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, centre({ItemKind::Mouth, 2}));
+        QCOMPARE(m_view->selection(), Selection({{ItemKind::Mouth, 2}}));
+        const double t = m_playhead->time();
+        QVERIFY2(t > keys[2].time && t < keys[3].time, qPrintable(QString::number(t)));
+        QCOMPARE(fixture::mouthShapeAt(m_doc->animation(), t), std::optional<MouthShape>(keys[2].shape));
+
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::ShiftModifier, centre({ItemKind::Mouth, 3}));
+        QCOMPARE(m_view->selection().size(), 2);
+        QCOMPARE(m_playhead->time(), t);
+        m_playhead->setPlaying(true);
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, centre({ItemKind::Mouth, 1}));
+        QCOMPARE(m_view->selection(), Selection({{ItemKind::Mouth, 1}}));
+        QCOMPARE(m_playhead->time(), t);
+        m_playhead->setPlaying(false);
+        QCOMPARE(m_doc->undoStack()->count(), 0);
+    }
+
+    // An emotion's intensity as a number: double-click the clip (or its menu's Intensity…),
+    // type the percentage; one undo step.
+    void emotionIntensityByNumber()
+    {
+        QCOMPARE(m_doc->timeline().emotionClips().first().intensity, 0.8);
+        bool answered = false;
+        QTimer::singleShot(50, this, [&answered] {
+            auto *dialog = qobject_cast<QInputDialog *>(QApplication::activeModalWidget());
+            QVERIFY(dialog);
+            QCOMPARE(dialog->objectName(), QStringLiteral("emotionIntensityDialog"));
+            QCOMPARE(dialog->intValue(), 80);
+            QVERIFY2(dialog->labelText().contains(QStringLiteral("Smile")), qPrintable(dialog->labelText()));
+            dialog->setIntValue(35);
+            dialog->accept();
+            answered = true;
+        });
+        QTest::mouseDClick(viewport(), Qt::LeftButton, Qt::NoModifier, centre({ItemKind::Emotion, 0}));
+        QVERIFY(answered);
+        QCOMPARE(m_doc->timeline().emotionClips().first().intensity, 0.35);
+        QCOMPARE(m_doc->undoStack()->count(), 1);
+        m_doc->undoStack()->undo();
+        QCOMPARE(m_doc->timeline().emotionClips().first().intensity, 0.8);
+
+        // Cancelled: nothing changes.
+        QTimer::singleShot(50, this, [] {
+            if (auto *dialog = qobject_cast<QInputDialog *>(QApplication::activeModalWidget()))
+                dialog->reject();
+        });
+        m_widget->editEmotionIntensity(0);
+        QCOMPARE(m_doc->timeline().emotionClips().first().intensity, 0.8);
+        QCOMPARE(m_doc->undoStack()->index(), 0);
     }
 
     void copyAndPaste()

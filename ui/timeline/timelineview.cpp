@@ -540,7 +540,7 @@ void TimelineView::dragTo(QPoint pos, bool commit)
     case DragMode::Intensity: {
         const QRectF r = itemRect(m_drag.item);
         const double top = r.top() + 12;
-        after = setEmotionIntensity(
+        after = toonface::setEmotionIntensity(
             m_drag.start, m_drag.item.index, (r.bottom() - pos.y()) / std::max(1.0, r.bottom() - top));
         break;
     }
@@ -566,6 +566,8 @@ void TimelineView::mouseDoubleClickEvent(QMouseEvent *event)
     const TimelineHit hit = hitAt(event->position().toPoint());
     if (hit.item && hit.item->kind == ItemKind::Syllable)
         editSyllable(hit.item->index);
+    else if (hit.item && hit.item->kind == ItemKind::Emotion)
+        Q_EMIT emotionIntensityRequested(hit.item->index);
 }
 
 // --- keys ---
@@ -675,6 +677,11 @@ void TimelineView::setMouthWeight(double weight)
     const QVector<int> keys = m_selection.indices(ItemKind::Mouth);
     if (!keys.isEmpty())
         apply(toonface::setMouthWeight(m_document->animation(), keys, weight), tr("Change Mouth Weight"));
+}
+
+void TimelineView::setEmotionIntensity(int clip, double intensity)
+{
+    apply(toonface::setEmotionIntensity(m_document->animation(), clip, intensity), tr("Change Emotion Intensity"));
 }
 
 void TimelineView::applyEmotion(Emotion emotion)

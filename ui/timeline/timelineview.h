@@ -24,9 +24,9 @@ class Playhead;
 // Mouse: click/drag on the ruler or waveform scrubs the playhead; click, Shift/Ctrl+click and a
 // rubber band select; dragging a body moves, an edge resizes (neighbours give way), an emotion
 // clip's handles set its fades and intensity, a mouth block's top its weight; double-click on a
-// syllable edits its pinyin. Wheel scrolls, Shift+wheel scrolls the rows, Ctrl+wheel zooms about
-// the cursor, Alt+wheel zooms the waveform vertically. Keys: m f h a i u e o n replace (or insert) a mouth shape while
-// the mouth row has focus, Delete removes, Ctrl+C/Ctrl+V copy and paste at the playhead.
+// syllable edits its pinyin, on an emotion clip its intensity. Wheel scrolls, Shift+wheel scrolls the rows, Ctrl+wheel
+// zooms about the cursor, Alt+wheel zooms the waveform vertically. Keys: m f h a i u e o n replace (or insert) a mouth
+// shape while the mouth row has focus, Delete removes, Ctrl+C/Ctrl+V copy and paste at the playhead.
 class TimelineView : public QAbstractScrollArea
 {
     Q_OBJECT
@@ -81,6 +81,7 @@ public Q_SLOTS:
     // Replaces the shapes of the selected mouth keys, or inserts a key at the playhead.
     void setMouthShape(MouthShape shape);
     void setMouthWeight(double weight);
+    void setEmotionIntensity(int clip, double intensity);
     void applyEmotion(Emotion emotion);
     void regenerateBlinks();
     void addShake();
@@ -96,6 +97,8 @@ Q_SIGNALS:
     // A message for the status bar (an edit that could not be made says why).
     void message(const QString &text);
     void contextMenuRequested(const TimelineHit &hit, const QPoint &globalPos);
+    // An emotion clip was double-clicked: its intensity is to be asked for.
+    void emotionIntensityRequested(int clip);
 
 protected:
     bool event(QEvent *event) override;

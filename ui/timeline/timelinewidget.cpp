@@ -1,5 +1,7 @@
 #include "timeline/timelinewidget.h"
 
+#include "playback/playhead.h"
+
 #include "document/document.h"
 #include "timeline/emotionpalette.h"
 #include "timeline/shapepalette.h"
@@ -8,10 +10,13 @@
 #include "views/displaynames.h"
 
 #include <QAction>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenu>
 #include <QToolBar>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace toonface {
 
@@ -56,6 +61,7 @@ QList<QAction *> TimelineActions::all() const
 TimelineWidget::TimelineWidget(Document *document, Playhead *playhead, QWidget *parent)
     : QWidget(parent)
     , m_document(document)
+    , m_playhead(playhead)
     , m_view(new TimelineView(document, playhead, this))
     , m_shapes(new ShapePalette(this))
     , m_emotions(new EmotionPalette(this))
@@ -104,9 +110,45 @@ TimelineWidget::TimelineWidget(Document *document, Playhead *playhead, QWidget *
     });
     connect(m_emotions, &EmotionPalette::applied, m_view, &TimelineView::applyEmotion);
     connect(m_view, &TimelineView::contextMenuRequested, this, &TimelineWidget::showContextMenu);
+    connect(m_view, &TimelineView::emotionIntensityRequested, this, &TimelineWidget::editEmotionIntensity);
     connect(m_view, &TimelineView::selectionChanged, this, &TimelineWidget::updateActions);
+    connect(m_view, &TimelineView::selectionChanged, this, &TimelineWidget::showSelectedMouthKey);
     connect(m_view, &TimelineView::snapChanged, m_actions.snap, &QAction::setChecked);
     updateActions();
+}
+
+void TimelineWidget::showSelectedMouthKey()
+{
+    const Selection &selection = m_view->selection();
+    if (selection.size() != 1 || !selection.hasKind(ItemKind::Mouth) || m_playhead->isPlaying())
+        return;
+    const QVector<MouthKey> &keys = m_document->timeline().mouthKeys();
+    const int i = selection.items().first().index;
+    if (i < 0 || i >= keys.size())
+        return;
+    // The middle of the key's sound, where its shape is held (not the start, where it is still
+    // coming from the shape before).
+    double end = keys[i].duration ? keys[i].time + *keys[i].duration : keys[i].time + 0.2;
+    if (i + 1 < keys.size())
+        end = std::min(end, keys[i + 1].time);
+    m_playhead->setTime(keys[i].time + std::max(0.0, end - keys[i].time) / 2);
+}
+
+void TimelineWidget::editEmotionIntensity(int clip)
+{
+    const QVector<EmotionClip> clips = m_document->timeline().emotionClips();
+    if (clip < 0 || clip >= clips.size())
+        return;
+    QInputDialog dialog(this);
+    dialog.setObjectName(QStringLiteral("emotionIntensityDialog"));
+    dialog.setWindowTitle(tr("Emotion Intensity"));
+    dialog.setLabelText(tr("Intensity of %1 (%):").arg(emotionTitle(clips[clip].emotion)));
+    dialog.setInputMode(QInputDialog::IntInput);
+    dialog.setIntRange(0, 100);
+    dialog.setIntStep(5);
+    dialog.setIntValue(qRound(clips[clip].intensity * 100));
+    if (dialog.exec() == QDialog::Accepted && dialog.intValue() != qRound(clips[clip].intensity * 100))
+        m_view->setEmotionIntensity(clip, dialog.intValue() / 100.0);
 }
 
 void TimelineWidget::createActions()
@@ -186,6 +228,10 @@ void TimelineWidget::showContextMenu(const TimelineHit &hit, const QPoint &globa
                     [this, percent]() { m_view->setMouthWeight(percent / 100.0); });
         }
     } else if (hit.row == RowKind::Emotion) {
+        if (kind) {
+            const int index = hit.item->index;
+            menu.addAction(tr("Intensity…"), this, [this, index]() { editEmotionIntensity(index); });
+        }
         QMenu *emotions = menu.addMenu(tr("Add Emotion"));
         for (QAction *a : m_actions.applyEmotion)
             emotions->addAction(a);

@@ -52,14 +52,21 @@ public:
     TimelineWidget(Document *document, Playhead *playhead, QWidget *parent = nullptr);
 
     TimelineView *view() const { return m_view; }
+    // Asks for an emotion clip's intensity in percent (dialog "emotionIntensityDialog") and
+    // sets it as one undo step.
+    void editEmotionIntensity(int clip);
     const TimelineActions &timelineActions() const { return m_actions; }
 
 private:
     void createActions();
     void updateActions();
+    // One mouth key selected (and not playing): the playhead goes into it, so the cartoon shows
+    // that shape.
+    void showSelectedMouthKey();
     void showContextMenu(const TimelineHit &hit, const QPoint &globalPos);
 
     Document *m_document;
+    Playhead *m_playhead;
     TimelineView *m_view;
     ShapePalette *m_shapes;
     EmotionPalette *m_emotions;
