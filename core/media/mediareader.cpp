@@ -57,7 +57,7 @@ std::optional<MediaInfo> probeMedia(const QString &path, QString *error)
     AVFormatContext *raw = nullptr;
     int r = avformat_open_input(&raw, localPath(path).constData(), nullptr, nullptr);
     if (r < 0) {
-        fail(error, path, VideoText::tr("cannot open: %1").arg(avError(r)));
+        fail(error, path, VideoText::tr("not a readable sound or video file (%1)").arg(avError(r)));
         return std::nullopt;
     }
     InputPtr input(raw);
@@ -154,7 +154,7 @@ QString mediaDamage(const QString &path)
     raw->flags |= AVFMT_FLAG_NOPARSE | AVFMT_FLAG_NOFILLIN;
     int r = avformat_open_input(&raw, localPath(path).constData(), nullptr, nullptr);
     if (r < 0)
-        return withProblem(path, VideoText::tr("cannot open: %1").arg(avError(r)));
+        return withProblem(path, VideoText::tr("not a readable sound or video file (%1)").arg(avError(r)));
     InputPtr input(raw);
     PacketPtr packet(av_packet_alloc());
     if (!packet)
@@ -185,7 +185,7 @@ std::optional<QImage> readVideoFrame(const QString &path, int index, QString *er
     AVFormatContext *raw = nullptr;
     int r = avformat_open_input(&raw, localPath(path).constData(), nullptr, nullptr);
     if (r < 0) {
-        fail(error, path, VideoText::tr("cannot open: %1").arg(avError(r)));
+        fail(error, path, VideoText::tr("not a readable sound or video file (%1)").arg(avError(r)));
         return std::nullopt;
     }
     InputPtr input(raw);

@@ -4477,10 +4477,6 @@ The points are unchanged.</source>
         <translation>文件夹中没有 frame_NNNNN.png 文件</translation>
     </message>
     <message>
-        <source>cannot open: %1</source>
-        <translation>无法打开：%1</translation>
-    </message>
-    <message>
         <source>cannot read the streams: %1</source>
         <translation>无法读取流：%1</translation>
     </message>
@@ -4591,6 +4587,10 @@ The points are unchanged.</source>
     <message>
         <source>the file is cut short or damaged: %1</source>
         <translation>文件不完整或已损坏：%1</translation>
+    </message>
+    <message>
+        <source>not a readable sound or video file (%1)</source>
+        <translation>不是可读取的声音或视频文件（%1）</translation>
     </message>
 </context>
 <context>

@@ -4477,10 +4477,6 @@ The points are unchanged.</source>
         <translation>資料夾中沒有 frame_NNNNN.png 檔案</translation>
     </message>
     <message>
-        <source>cannot open: %1</source>
-        <translation>無法開啟：%1</translation>
-    </message>
-    <message>
         <source>cannot read the streams: %1</source>
         <translation>無法讀取串流：%1</translation>
     </message>
@@ -4591,6 +4587,10 @@ The points are unchanged.</source>
     <message>
         <source>the file is cut short or damaged: %1</source>
         <translation>檔案不完整或已損壞：%1</translation>
+    </message>
+    <message>
+        <source>not a readable sound or video file (%1)</source>
+        <translation>不是可讀取的聲音或影片檔案（%1）</translation>
     </message>
 </context>
 <context>

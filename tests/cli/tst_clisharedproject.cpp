@@ -138,6 +138,7 @@ private Q_SLOTS:
         const Run r = cli({QStringLiteral("animate"), proj, QStringLiteral("-o"), out});
         QCOMPARE(r.code, 3);
         QVERIFY2(r.err.contains("id_rsa") && r.err.contains("toonface-cli: error: "), r.err.constData());
+        QVERIFY2(r.err.contains("not a readable sound or video file"), r.err.constData());
         // The receiver is told the project reaches outside its folder.
         QVERIFY2(r.err.contains("outside its folder") && r.err.contains("id_rsa"), r.err.constData());
         QVERIFY(!QFileInfo::exists(out));
