@@ -1,3 +1,5 @@
+#include "shareddata.h"
+
 #include "speech/audio.h"
 #include "speech/lipsync.h"
 #include "speech/script.h"
@@ -266,6 +268,48 @@ private Q_SLOTS:
         QVERIFY(loadAudio(path("en.mp3")).ok());
         QCOMPARE(cli({QStringLiteral("say"), QStringLiteral("你好☃"), QStringLiteral("-o"), path("x.wav")}).code, 3);
         QCOMPARE(cli({QStringLiteral("say"), QStringLiteral("你好")}).code, 2);
+    }
+
+    // The same recording and script give the same timing every time within one process (the
+    // editor lip-syncs again and again), also after other recordings were aligned between.
+    void sameInputSameTimingInOneProcess()
+    {
+        const QDir speech(QDir(testing::sharedDataDir()).filePath(QStringLiteral("speech")));
+        const QStringList names = {QStringLiteral("BAC009S0002W0122"), QStringLiteral("p2fa_test1")};
+        for (const QString &name : names) {
+            if (!speech.exists(name + QStringLiteral(".wav")) || !speech.exists(name + QStringLiteral(".txt")))
+                QSKIP("the shared speech recordings are absent (../shared/data/speech)");
+        }
+        auto run = [&](const QString &name) {
+            return lipsyncFiles(
+                speech.filePath(name + QStringLiteral(".wav")), speech.filePath(name + QStringLiteral(".txt")));
+        };
+        QVector<LipsyncOutcome> first;
+        for (const QString &name : names) {
+            first.append(run(name));
+            QVERIFY2(first.last().ok(), qPrintable(first.last().error));
+        }
+        for (int round = 0; round < 2; ++round) {
+            for (int i = 0; i < names.size(); ++i) {
+                const LipsyncOutcome again = run(names[i]);
+                QVERIFY2(again.ok(), qPrintable(again.error));
+                QCOMPARE(again.result.syllables.size(), first[i].result.syllables.size());
+                for (int k = 0; k < again.result.syllables.size(); ++k) {
+                    const LipsyncSyllable &a = first[i].result.syllables[k];
+                    const LipsyncSyllable &b = again.result.syllables[k];
+                    QVERIFY2(a == b,
+                        qPrintable(QStringLiteral("%1 syllable %2 (%3): %4-%5 s, then %6-%7 s")
+                                       .arg(names[i])
+                                       .arg(k)
+                                       .arg(a.text)
+                                       .arg(a.start, 0, 'f', 4)
+                                       .arg(a.end, 0, 'f', 4)
+                                       .arg(b.start, 0, 'f', 4)
+                                       .arg(b.end, 0, 'f', 4)));
+                }
+                QCOMPARE(again.result.mouthCues.size(), first[i].result.mouthCues.size());
+            }
+        }
     }
 };
 
