@@ -2298,20 +2298,8 @@
         <translation>实时模式 — Toonface</translation>
     </message>
     <message>
-        <source>Mouth from camera</source>
-        <translation>嘴巴跟随摄像头</translation>
-    </message>
-    <message>
         <source>Mouth from microphone</source>
         <translation>嘴巴跟随麦克风</translation>
-    </message>
-    <message>
-        <source>Camera, microphone when lips are lost</source>
-        <translation>摄像头，嘴唇跟丢时用麦克风</translation>
-    </message>
-    <message>
-        <source>What drives the cartoon&apos;s mouth: the lips the camera sees, the loudness and colour of the voice, or both</source>
-        <translation>驱动卡通嘴巴的来源：摄像头看到的嘴唇、声音的大小与音色，或两者并用</translation>
     </message>
     <message>
         <source>Take the current frame as the performer&apos;s neutral face</source>
@@ -2430,6 +2418,18 @@ Face lost in %5 frames%6</source>
     <message>
         <source>Start a camera, a clip or the microphone, with a face open, before recording.</source>
         <translation>录制前请先打开一张有人脸的照片，并启动摄像头、视频片段或麦克风。</translation>
+    </message>
+    <message>
+        <source>Mouth from the lips in the picture</source>
+        <translation>嘴巴跟随画面中的嘴唇</translation>
+    </message>
+    <message>
+        <source>Lips in the picture, microphone when they are lost</source>
+        <translation>画面中的嘴唇，跟丢时用麦克风</translation>
+    </message>
+    <message>
+        <source>What drives the cartoon&apos;s mouth: the lips the source shows, the loudness and colour of the voice, or both</source>
+        <translation>驱动卡通嘴巴的来源：画面中的嘴唇、声音的大小与音色，或两者并用</translation>
     </message>
 </context>
 <context>

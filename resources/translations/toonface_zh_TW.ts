@@ -2298,20 +2298,8 @@
         <translation>即時模式 — Toonface</translation>
     </message>
     <message>
-        <source>Mouth from camera</source>
-        <translation>嘴巴跟隨攝影機</translation>
-    </message>
-    <message>
         <source>Mouth from microphone</source>
         <translation>嘴巴跟隨麥克風</translation>
-    </message>
-    <message>
-        <source>Camera, microphone when lips are lost</source>
-        <translation>攝影機，嘴唇跟丟時用麥克風</translation>
-    </message>
-    <message>
-        <source>What drives the cartoon&apos;s mouth: the lips the camera sees, the loudness and colour of the voice, or both</source>
-        <translation>驅動卡通嘴巴的來源：攝影機看到的嘴唇、聲音的大小與音色，或兩者並用</translation>
     </message>
     <message>
         <source>Take the current frame as the performer&apos;s neutral face</source>
@@ -2430,6 +2418,18 @@ Face lost in %5 frames%6</source>
     <message>
         <source>Start a camera, a clip or the microphone, with a face open, before recording.</source>
         <translation>錄製前請先開啟一張有臉的照片，並啟動攝影機、影片片段或麥克風。</translation>
+    </message>
+    <message>
+        <source>Mouth from the lips in the picture</source>
+        <translation>嘴巴跟隨畫面中的嘴唇</translation>
+    </message>
+    <message>
+        <source>Lips in the picture, microphone when they are lost</source>
+        <translation>畫面中的嘴唇，跟丟時用麥克風</translation>
+    </message>
+    <message>
+        <source>What drives the cartoon&apos;s mouth: the lips the source shows, the loudness and colour of the voice, or both</source>
+        <translation>驅動卡通嘴巴的來源：畫面中的嘴唇、聲音的大小與音色，或兩者並用</translation>
     </message>
 </context>
 <context>

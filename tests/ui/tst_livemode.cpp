@@ -13,6 +13,7 @@
 #include "track/videofilesource.h"
 #include "uifixture.h"
 
+#include <QComboBox>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFileInfo>
@@ -72,6 +73,7 @@ private Q_SLOTS:
     void clockSourceKeepsTime();
     void heardOnlyVoiceDrivesTheMouth();
     void microphoneOnlyWithoutMicrophoneSaysSo();
+    void mouthChoicesDoNotSayCamera();
 };
 
 void TestLiveMode::initTestCase()
@@ -420,6 +422,22 @@ void TestLiveMode::microphoneOnlyWithoutMicrophoneSaysSo()
     QVERIFY(!window.startMicrophoneOnly());
     QCOMPARE(window.statusText(), Microphone::noMicrophoneMessage());
     QVERIFY(!window.session()->isRunning());
+}
+
+// The mouth's choices speak of the picture, not of a camera: the source is as often a video file.
+void TestLiveMode::mouthChoicesDoNotSayCamera()
+{
+    Document document;
+    fixture::fill(document);
+    Playhead playhead;
+    LiveWindow window(&document, &playhead);
+    auto *mouth = window.findChild<QComboBox *>(QStringLiteral("liveMouth"));
+    QVERIFY(mouth);
+    QCOMPARE(mouth->count(), 3);
+    for (int i = 0; i < mouth->count(); ++i)
+        QVERIFY2(!mouth->itemText(i).contains(QStringLiteral("camera"), Qt::CaseInsensitive),
+            qPrintable(mouth->itemText(i)));
+    QVERIFY(!mouth->toolTip().contains(QStringLiteral("camera"), Qt::CaseInsensitive));
 }
 
 QTEST_MAIN(TestLiveMode)

@@ -81,10 +81,12 @@ LiveWindow::LiveWindow(Document *document, Playhead *playhead, QWidget *parent)
     setWindowTitle(tr("Live Mode — Toonface"));
     setObjectName(QStringLiteral("liveWindow"));
 
-    m_mouth->addItem(tr("Mouth from camera"), int(LiveMouth::Camera));
+    // Said of the picture, whatever shows it (a camera, a video file, a clock): not "camera".
+    m_mouth->setObjectName(QStringLiteral("liveMouth"));
+    m_mouth->addItem(tr("Mouth from the lips in the picture"), int(LiveMouth::Camera));
     m_mouth->addItem(tr("Mouth from microphone"), int(LiveMouth::Microphone));
-    m_mouth->addItem(tr("Camera, microphone when lips are lost"), int(LiveMouth::Both));
-    m_mouth->setToolTip(tr("What drives the cartoon's mouth: the lips the camera sees, the loudness and colour of the "
+    m_mouth->addItem(tr("Lips in the picture, microphone when they are lost"), int(LiveMouth::Both));
+    m_mouth->setToolTip(tr("What drives the cartoon's mouth: the lips the source shows, the loudness and colour of the "
                            "voice, or both"));
     m_loop->setChecked(true);
     m_restPose->setToolTip(tr("Take the current frame as the performer's neutral face"));
