@@ -19,6 +19,7 @@
 #include <QFileInfo>
 #include <QPainter>
 #include <QPushButton>
+#include <QSet>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QThread>
@@ -74,6 +75,7 @@ private Q_SLOTS:
     void heardOnlyVoiceDrivesTheMouth();
     void microphoneOnlyWithoutMicrophoneSaysSo();
     void mouthChoicesDoNotSayCamera();
+    void cartoonWaitsAtRestBeforeASource();
 };
 
 void TestLiveMode::initTestCase()
@@ -438,6 +440,32 @@ void TestLiveMode::mouthChoicesDoNotSayCamera()
         QVERIFY2(!mouth->itemText(i).contains(QStringLiteral("camera"), Qt::CaseInsensitive),
             qPrintable(mouth->itemText(i)));
     QVERIFY(!mouth->toolTip().contains(QStringLiteral("camera"), Qt::CaseInsensitive));
+}
+
+// Before any source runs, the cartoon is there at rest (it was a blank card), and without a face
+// the card says what to do.
+void TestLiveMode::cartoonWaitsAtRestBeforeASource()
+{
+    Document document;
+    fixture::fill(document);
+    Playhead playhead;
+    LiveWindow window(&document, &playhead);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(!window.session()->isRunning());
+    const QImage rest = window.cartoonPane()->image();
+    QVERIFY(!rest.isNull());
+    // A drawing, not an empty card: more than one colour.
+    QSet<QRgb> colours;
+    for (int y = 0; y < rest.height(); y += 7)
+        for (int x = 0; x < rest.width(); x += 7)
+            colours.insert(rest.pixel(x, y));
+    QVERIFY2(colours.size() > 8, qPrintable(QString::number(colours.size())));
+
+    Document empty;
+    LiveWindow nothing(&empty, &playhead);
+    QVERIFY(nothing.cartoonPane()->image().isNull());
+    QVERIFY(!nothing.cartoonPane()->caption().isEmpty());
 }
 
 QTEST_MAIN(TestLiveMode)

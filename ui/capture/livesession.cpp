@@ -111,6 +111,21 @@ void LiveSession::setImageSize(QSize size)
     m_imageSize = size.expandedTo(QSize(16, 16));
 }
 
+QImage LiveSession::restCartoon() const
+{
+    std::shared_ptr<const Scene> scene;
+    QSize size;
+    {
+        std::lock_guard lock(m_lock);
+        scene = m_scene;
+        size = m_imageSize;
+    }
+    if (!scene)
+        return {};
+    return PreviewRenderer::renderPose(
+        *scene->face, scene->frame, size, livePose(TrackedFrame {}, scene->model, scene->shapes, std::nullopt));
+}
+
 QSize LiveSession::imageSize() const
 {
     std::lock_guard lock(m_lock);

@@ -97,6 +97,9 @@ public:
 
     void setImageSize(QSize size);
     QSize imageSize() const;
+    // The cartoon at rest (no track, closed mouth) at the image size, for before a source runs;
+    // null without a face.
+    QImage restCartoon() const;
     void setMouthMode(LiveMouth mode);
     LiveMouth mouthMode() const;
     // The next frame with a face becomes the rest pose.

@@ -150,6 +150,8 @@ LiveWindow::LiveWindow(Document *document, Playhead *playhead, QWidget *parent)
     m_figuresTimer->start(500);
     m_session->setImageSize(m_cartoon->size() * devicePixelRatioF());
 
+    // The cartoon waits at rest until a source drives it.
+    m_cartoon->setImage(m_session->restCartoon());
     m_cartoon->setCaption(m_document->hasFace() ? QString()
                                                 : tr("Open a photo with a face first: the cartoon of that face "
                                                      "follows the performer."));
@@ -432,6 +434,8 @@ void LiveWindow::resizeEvent(QResizeEvent *event)
 {
     QWidget::resizeEvent(event);
     m_session->setImageSize(m_cartoon->size() * devicePixelRatioF());
+    if (!m_session->isRunning())
+        m_cartoon->setImage(m_session->restCartoon());
 }
 
 } // namespace toonface
