@@ -19,6 +19,12 @@ using namespace av;
 
 namespace {
 
+// Why FFmpeg could not open a file (avformat_open_input's error `r`), as the sound loader words it.
+QString unopenable(int r)
+{
+    return VideoText::tr("not a readable sound or video file (%1)").arg(avError(r));
+}
+
 std::optional<MediaInfo> probePngSequence(const QString &folder, QString *error)
 {
     const QDir dir(folder);
@@ -57,7 +63,7 @@ std::optional<MediaInfo> probeMedia(const QString &path, QString *error)
     AVFormatContext *raw = nullptr;
     int r = avformat_open_input(&raw, localPath(path).constData(), nullptr, nullptr);
     if (r < 0) {
-        fail(error, path, VideoText::tr("not a readable sound or video file (%1)").arg(avError(r)));
+        fail(error, path, unopenable(r));
         return std::nullopt;
     }
     InputPtr input(raw);
@@ -154,7 +160,7 @@ QString mediaDamage(const QString &path)
     raw->flags |= AVFMT_FLAG_NOPARSE | AVFMT_FLAG_NOFILLIN;
     int r = avformat_open_input(&raw, localPath(path).constData(), nullptr, nullptr);
     if (r < 0)
-        return withProblem(path, VideoText::tr("not a readable sound or video file (%1)").arg(avError(r)));
+        return withProblem(path, unopenable(r));
     InputPtr input(raw);
     PacketPtr packet(av_packet_alloc());
     if (!packet)
@@ -185,7 +191,7 @@ std::optional<QImage> readVideoFrame(const QString &path, int index, QString *er
     AVFormatContext *raw = nullptr;
     int r = avformat_open_input(&raw, localPath(path).constData(), nullptr, nullptr);
     if (r < 0) {
-        fail(error, path, VideoText::tr("not a readable sound or video file (%1)").arg(avError(r)));
+        fail(error, path, unopenable(r));
         return std::nullopt;
     }
     InputPtr input(raw);

@@ -150,8 +150,6 @@ LiveWindow::LiveWindow(Document *document, Playhead *playhead, QWidget *parent)
     m_figuresTimer->start(500);
     m_session->setImageSize(m_cartoon->size() * devicePixelRatioF());
 
-    // The cartoon waits at rest until a source drives it.
-    m_cartoon->setImage(m_session->restCartoon());
     m_cartoon->setCaption(m_document->hasFace() ? QString()
                                                 : tr("Open a photo with a face first: the cartoon of that face "
                                                      "follows the performer."));
@@ -434,6 +432,7 @@ void LiveWindow::resizeEvent(QResizeEvent *event)
 {
     QWidget::resizeEvent(event);
     m_session->setImageSize(m_cartoon->size() * devicePixelRatioF());
+    // Until a source drives it, the cartoon waits at rest (drawn once the window has its size).
     if (!m_session->isRunning())
         m_cartoon->setImage(m_session->restCartoon());
 }
