@@ -110,6 +110,9 @@ void measure(Labelled *row, const QImage &photo, const FaceModel &face)
     m["goateeScore"] = f.goateeScore;
     m["baldScore"] = f.baldScore;
     m["skinReach"] = f.skinReach;
+    m["crownSeen"] = !f.crownCut && !(f.topCut && f.headHeight < AppearanceFindings::kMinHeadHeight) ? 1.0 : 0.0;
+    m["headHeight"] = f.headHeight;
+    m["scalpReach"] = f.scalpReach;
     m["hatScore"] = f.hatScore;
     m["crownToHair"] = f.crownToHair;
     m["crownToSkin"] = f.crownToSkin;
@@ -305,11 +308,15 @@ std::vector<Decision> decisions()
         [m](const Labelled &r, const std::vector<double> &t) { return m(r, "hatScore") >= t[0]; },
         QStringLiteral("accuracy")});
     d.push_back({QStringLiteral("bald"), [](const Labelled &r) { return r.bald; }, all,
-        [](const Labelled &r) { return r.shipped.bald; }, {"baldScore", "skinReach"},
+        [](const Labelled &r) { return r.shipped.bald; }, {"scalpReach", "headHeight", "baldScore", "skinReach"},
         [m](const Labelled &r, const std::vector<double> &t) {
-            // (A crown the photo cuts off keeps its own rule; its measures are 0 here. All nine bald
-            // faces of faces-attributes are such crops: this set cannot fit the rule for a crown seen.)
-            return m(r, "baldScore") >= t[0] || (m(r, "skinReach") >= t[1] && m(r, "skinReach") <= 1.3);
+            // A crown the parse sees decides by its skin; otherwise the outline's measures (a crown
+            // the photo cuts off keeps its own rule; its measures are 0 here). All nine bald faces of
+            // faces-attributes are such crops: for a crown seen this set holds no bald head, and the
+            // fit can only say how high the haired crowns' skin share reaches.
+            if (m(r, "crownSeen") == 1.0)
+                return m(r, "scalpReach") >= t[0] && m(r, "headHeight") >= t[1];
+            return m(r, "baldScore") >= t[2] || (m(r, "skinReach") >= t[3] && m(r, "skinReach") <= 1.3);
         },
         QStringLiteral("accuracy")});
     return d;

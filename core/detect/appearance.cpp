@@ -1,6 +1,8 @@
 #include "detect/appearance.h"
 
+#include "detect/headparse.h"
 #include "detect/labcolour.h"
+#include "detect/skintone.h"
 #include "face/fapu.h"
 
 #include <QLineF>
@@ -22,9 +24,6 @@ namespace toonface {
 namespace {
 
 constexpr double kDarkRatio = 0.72; // a pixel this much darker than the skin is hair-dark
-constexpr double kSkinChroma = 0.035; // chromaticity distance within which a pixel is skin-coloured
-constexpr double kSkinShade[2] = {0.55, 1.6}; // ... and its luma within these multiples of the skin's
-constexpr double kShineToNeutral = 0.75; // how far toward neutral light a shine on skin may take its colour
 // Hair colours: hues from red through orange to yellow (kHairHues[0] .. 360 and 0 .. kHairHues[1]),
 // and any colour too dark or too grey to have a hue that shows.
 constexpr double kHairHues[2] = {345.0, 55.0};
@@ -61,40 +60,6 @@ bool colourless(const QColor &skin)
 {
     return std::max({skin.red(), skin.green(), skin.blue()}) - std::min({skin.red(), skin.green(), skin.blue()})
         < kColourless;
-}
-
-double lumaOf(QRgb p)
-{
-    return 0.299 * qRed(p) + 0.587 * qGreen(p) + 0.114 * qBlue(p);
-}
-
-// Skin under the same light: the same chromaticity, lit more or less (a scalp shines, a jaw is
-// in shadow).
-bool skinLike(QRgb c, const QColor &skin)
-{
-    const double sum = std::max(1, qRed(c) + qGreen(c) + qBlue(c));
-    const double skinSum = std::max(1, skin.red() + skin.green() + skin.blue());
-    const double dr = qRed(c) / sum - skin.red() / skinSum, dg = qGreen(c) / sum - skin.green() / skinSum;
-    const double shade = lumaOf(c) / std::max(1.0, lumaOf(skin.rgb()));
-    return std::hypot(dr, dg) < kSkinChroma && shade > kSkinShade[0] && shade < kSkinShade[1];
-}
-
-// Skin under a shine: brighter than the skin, its chromaticity on the way from the skin's toward
-// neutral light's (a shine adds the light's own colour), at most kShineToNeutral of the way there
-// (white and grey hair lie at its end), and within kSkinChroma of that way.
-bool shineOnSkin(QRgb c, const QColor &skin)
-{
-    const double sum = std::max(1, qRed(c) + qGreen(c) + qBlue(c));
-    const double skinSum = std::max(1, skin.red() + skin.green() + skin.blue());
-    const QPointF s(skin.red() / skinSum, skin.green() / skinSum);
-    const QPointF v = QPointF(1.0 / 3.0, 1.0 / 3.0) - s;
-    const double vv = QPointF::dotProduct(v, v);
-    if (vv < kSkinChroma * kSkinChroma || lumaOf(c) <= lumaOf(skin.rgb()))
-        return false;
-    const QPointF d = QPointF(qRed(c) / sum, qGreen(c) / sum) - s;
-    const double t = QPointF::dotProduct(d, v) / vv;
-    const QPointF off = d - v * t;
-    return t >= 0 && t <= kShineToNeutral && std::hypot(off.x(), off.y()) < kSkinChroma;
 }
 
 class Pixels
@@ -808,7 +773,16 @@ void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor 
     // A crown the photo cuts off (most of the band beyond its edge) is not seen: no hat, and bald
     // only where the forehead's skin runs up the midline to the photo's edge higher above the
     // brows than any hairline (that is scalp).
+    // The crown the parse of the head sees decides bald (a greyscale photo is never bald: without
+    // colour a scalp and grey or white hair look alike).
+    const bool parsedCrown = !out->crownCut && !(out->topCut && out->headHeight < AppearanceFindings::kMinHeadHeight);
+    const bool parsedBald = parsedCrown && !colourless(skin) && out->scalpReach >= AppearanceFindings::kScalpReach
+        && out->headHeight >= AppearanceFindings::kMinHeadHeight;
     if (crown.empty() || 2 * seen < sampled) {
+        if (parsedCrown) {
+            out->appearance.bald = parsedBald;
+            return;
+        }
         const bool skinToTheEdge = !px.inside(int(hairline.x()), int(std::floor(hairline.y() - 0.05 * es0)));
         out->appearance.bald = skinToTheEdge && browY - hairline.y() >= kScalpAboveBrows * es0;
         return;
@@ -826,7 +800,9 @@ void findHead(const Pixels &px, const FaceModel &face, double es0, const QColor 
     const bool skinToTheTop
         = out->skinReach >= AppearanceFindings::kSkinReachThreshold && out->skinReach <= kMaxSkinReach;
     // Without colour, a scalp and grey or white hair look alike: a greyscale photo is never bald.
-    out->appearance.bald = !colourless(skin) && (out->baldScore >= AppearanceFindings::kBaldThreshold || skinToTheTop);
+    out->appearance.bald = parsedCrown
+        ? parsedBald
+        : !colourless(skin) && (out->baldScore >= AppearanceFindings::kBaldThreshold || skinToTheTop);
     if (out->appearance.bald)
         return;
     // A hat by its colour: none that hair grows in (black, browns, blondes, reds, greys and white);
@@ -920,6 +896,13 @@ AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, co
         out.evidence = measureEvidence(photo, face);
         findGlasses(px, face, es0, skinLuma, &out);
         findFacialHair(px, face, es0, skinLuma, colourless(skin), &out);
+    }
+    const HeadParse parse = parseHead(photo, face);
+    if (parse.valid) {
+        out.crownCut = parse.crownCut;
+        out.topCut = parse.topCut;
+        out.headHeight = parse.headHeight; // eye distances, as ES0
+        out.scalpReach = parse.scalpReach;
     }
     findHead(px, face, es0, skin, &out);
     rateAppearance(face, &out);

@@ -34,7 +34,8 @@ void judgeConfidence(AppearanceFindings *out)
     out->confidence.beard = sureness(std::min(chin, jaw), 1.0);
     out->confidence.goatee = sureness(std::min(chin, -jaw), 1.0);
     out->confidence.glasses = sureness(frame, 1.0);
-    out->confidence.bald = sureness(out->baldScore - A::kBaldThreshold, 0.2);
+    out->confidence.bald = !out->crownCut ? sureness(out->scalpReach - A::kScalpReach, 0.1)
+                                          : sureness(out->baldScore - A::kBaldThreshold, 0.2);
     out->confidence.headwear = sureness(std::min(out->crownToHair, out->crownToSkin) - A::kHatContrast, 15.0);
     out->confidence.hairLength = out->appearance.bald
         ? out->confidence.bald

@@ -3,6 +3,8 @@ list(APPEND TOONFACE_CORE_SOURCES
   detect/landmarkfigures.h detect/landmarkfigures.cpp
   detect/faceregions.h detect/faceregions.cpp
   detect/appearance.h detect/appearance.cpp
+  detect/headparse.h detect/headparse.cpp
+  detect/skintone.h detect/skintone.cpp
   detect/appearanceevidence.h detect/appearanceevidence.cpp
   detect/appearancerating.cpp
   detect/hairsearch.h detect/hairsearch.cpp

@@ -1,0 +1,349 @@
+#include "detect/headparse.h"
+
+#include "detect/labcolour.h"
+#include "detect/skintone.h"
+
+#include <QLineF>
+#include <QPolygonF>
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace toonface {
+
+namespace {
+
+// The work frame, in eye distances d: 3.5 d either side of the eyes' midpoint, from 3.5 d above
+// it to 5 d below (the shoulders of a portrait).
+constexpr double kHalfWidth = 3.5, kAbove = 3.5, kBelow = 5.0;
+// The seeds. Probably the person: an ellipse over the head (its centre kHeadLift d above the
+// eyes; half-axes kHeadRx, kHeadRy), and a column kNeckHalf d either side of the midline from
+// kNeckTop d below the eyes. Surely not: pixels farther than kFar d from the eyes' midpoint,
+// above kFarBelow d under the eyes (lower, clothes may run to the photo's edge).
+constexpr double kHeadLift = 0.3, kHeadRx = 1.7, kHeadRy = 2.2;
+constexpr double kNeckHalf = 0.8, kNeckTop = 1.0;
+constexpr double kFar = 3.3, kFarBelow = 1.0;
+constexpr int kGrabCutRounds = 2;
+// Skin: a pixel whose hue (in the a*b* plane), chroma and L* stay near the cheeks' — light and
+// shade change a skin's L* and chroma together and leave its hue (a shine takes both toward white).
+// Within kSkinHue degrees of the cheeks' hue, chroma and L* within a factor kSkinRatio of theirs
+// (each tolerance widened to kSpreadTimes the cheeks' own spread when that is larger); where the
+// skin has too little chroma for a hue (kGreyChroma), a greyscale photo, L* alone decides.
+constexpr double kSkinHue = 12.0;
+constexpr double kSkinRatio = 1.6;
+constexpr double kSpreadTimes = 2.5;
+constexpr double kGreyChroma = 4.0;
+// The forehead's sample: kForeheadHalf d either side of the midline, from kForeheadLow to
+// kForeheadHigh d above the brows' top.
+constexpr double kForeheadHalf = 0.45, kForeheadLow = 0.08, kForeheadHigh = 0.3;
+// The walk up the forehead: columns kWalkHalf d either side of the midline, from kWalkStart d
+// above the brows' top; a run of skin (or of the person) goes on across gaps up to kWalkGap d (a
+// wrinkle, a shine, a strand of hair).
+constexpr double kWalkHalf = 0.5, kWalkStart = 0.1, kWalkGap = 0.12;
+// ... where the skin is no darker than the forehead's L* over kScalpDarker.
+constexpr double kScalpDarker = 1.3;
+
+struct Lab
+{
+    double l, a, b;
+};
+
+Lab labAt(const cv::Mat &lab8, int x, int y)
+{
+    const cv::Vec3b v = lab8.at<cv::Vec3b>(y, x);
+    return {v[0] * 100.0 / 255.0, v[1] - 128.0, v[2] - 128.0};
+}
+
+double hueOf(const Lab &c)
+{
+    return std::atan2(c.b, c.a) * 180.0 / std::numbers::pi;
+}
+
+double chromaOf(const Lab &c)
+{
+    return std::hypot(c.a, c.b);
+}
+
+// The skin model: the cheeks' median hue, chroma and L*, and how far each may stray.
+struct SkinModel
+{
+    double hue = 0, chroma = 0, l = 0;
+    double hueTolerance = kSkinHue, chromaRatio = kSkinRatio, lRatio = kSkinRatio;
+    bool valid = false;
+
+    Lab centre() const
+    {
+        const double h = hue * std::numbers::pi / 180.0;
+        return {l, chroma * std::cos(h), chroma * std::sin(h)};
+    }
+
+    bool isSkin(const Lab &c) const
+    {
+        auto within = [](double v, double ref, double ratio) { return v >= ref / ratio && v <= ref * ratio; };
+        if (!within(std::max(c.l, 1.0), l, lRatio))
+            return false;
+        if (chroma < kGreyChroma)
+            return chromaOf(c) < kGreyChroma * chromaRatio;
+        const double dh = std::abs(std::remainder(hueOf(c) - hue, 360.0));
+        return dh <= hueTolerance && within(std::max(chromaOf(c), 0.1), chroma, chromaRatio);
+    }
+};
+
+double medianOf(std::vector<double> v)
+{
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+}
+
+// Half the spread between the 10th and 90th percentiles.
+double spreadOf(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    return 0.5 * (v[v.size() * 9 / 10] - v[v.size() / 10]);
+}
+
+SkinModel cheekModel(const cv::Mat &lab8, const cv::Mat &inside, const std::vector<QRect> &cheeks)
+{
+    std::vector<double> hues, chromas, ls;
+    for (const QRect &r : cheeks)
+        for (int y = std::max(0, r.top()); y <= std::min(lab8.rows - 1, r.bottom()); ++y)
+            for (int x = std::max(0, r.left()); x <= std::min(lab8.cols - 1, r.right()); ++x)
+                if (inside.at<std::uint8_t>(y, x)) {
+                    const Lab c = labAt(lab8, x, y);
+                    hues.push_back(hueOf(c));
+                    chromas.push_back(chromaOf(c));
+                    ls.push_back(c.l);
+                }
+    SkinModel m;
+    if (ls.size() < 20)
+        return m;
+    // Medians resist a mole, a shadow or a strand across the cheek. (Skin hues lie far from the
+    // a*b* plane's seam at 180 degrees, so they are averaged as plain numbers.)
+    m.hue = medianOf(hues);
+    m.chroma = std::max(0.1, medianOf(chromas));
+    m.l = std::max(1.0, medianOf(ls));
+    m.hueTolerance = std::max(kSkinHue, kSpreadTimes * spreadOf(hues));
+    m.chromaRatio = std::max(kSkinRatio, 1.0 + kSpreadTimes * spreadOf(chromas) / m.chroma);
+    m.lRatio = std::max(kSkinRatio, 1.0 + kSpreadTimes * spreadOf(ls) / m.l);
+    m.valid = true;
+    return m;
+}
+
+// The median of each channel over the rectangles' pixels inside the photo (`rgb`: red first).
+QColor medianColour(const cv::Mat &rgb, const cv::Mat &inside, const std::vector<QRect> &rects)
+{
+    std::array<std::vector<double>, 3> channels;
+    for (const QRect &r : rects)
+        for (int y = std::max(0, r.top()); y <= std::min(rgb.rows - 1, r.bottom()); ++y)
+            for (int x = std::max(0, r.left()); x <= std::min(rgb.cols - 1, r.right()); ++x)
+                if (inside.at<std::uint8_t>(y, x))
+                    for (int c = 0; c < 3; ++c)
+                        channels[size_t(c)].push_back(rgb.at<cv::Vec3b>(y, x)[c]);
+    if (channels[0].empty())
+        return {};
+    return QColor(int(medianOf(channels[0])), int(medianOf(channels[1])), int(medianOf(channels[2])));
+}
+
+} // namespace
+
+QImage HeadParse::toImage() const
+{
+    QImage out(size, QImage::Format_RGB32);
+    static constexpr QRgb kColours[] = {qRgb(255, 0, 255), qRgb(30, 120, 30), qRgb(250, 200, 160), qRgb(170, 20, 20)};
+    for (int y = 0; y < size.height(); ++y)
+        for (int x = 0; x < size.width(); ++x)
+            out.setPixel(x, y, kColours[at(x, y)]);
+    return out;
+}
+
+HeadParse parseHead(const QImage &photo, const FaceModel &face)
+{
+    HeadParse out;
+    if (photo.isNull() || !face.isValid())
+        return out;
+    QPointF l = face.point("3.6"), r = face.point("3.5");
+    if (l.x() > r.x())
+        std::swap(l, r);
+    const QLineF eyes(l, r);
+    if (eyes.length() < 1.0)
+        return out;
+    const double d = kParseEyeDistance;
+    const double roll = std::atan2(eyes.dy(), eyes.dx()) * 180.0 / std::numbers::pi;
+    const QPointF centre(kHalfWidth * d, kAbove * d);
+    out.size = QSize(int(2 * kHalfWidth * d), int((kAbove + kBelow) * d));
+    out.toWork.translate(centre.x(), centre.y());
+    out.toWork.scale(d / eyes.length(), d / eyes.length());
+    out.toWork.rotate(-roll);
+    out.toWork.translate(-eyes.center().x(), -eyes.center().y());
+
+    const QImage rgb = photo.convertToFormat(QImage::Format_RGB888);
+    const cv::Mat src(
+        rgb.height(), rgb.width(), CV_8UC3, const_cast<uchar *>(rgb.constBits()), size_t(rgb.bytesPerLine()));
+    const QTransform &t = out.toWork;
+    const cv::Matx23d affine(t.m11(), t.m21(), t.dx(), t.m12(), t.m22(), t.dy());
+    const cv::Size workSize(out.size.width(), out.size.height());
+    cv::Mat work, inside;
+    // Beyond the photo's edge the nearest edge pixels are repeated (no colour of its own to
+    // seed the models with); those pixels are labelled Outside afterwards.
+    cv::warpAffine(src, work, affine, workSize, cv::INTER_AREA, cv::BORDER_REPLICATE);
+    cv::warpAffine(cv::Mat(src.size(), CV_8UC1, cv::Scalar(255)), inside, affine, workSize, cv::INTER_NEAREST,
+        cv::BORDER_CONSTANT, cv::Scalar(0));
+
+    auto w = [&](const char *id) { return t.map(face.point(id)); };
+    // Seeds.
+    cv::Mat mask(workSize, CV_8UC1, cv::Scalar(cv::GC_PR_BGD));
+    for (int y = 0; y < mask.rows; ++y) {
+        for (int x = 0; x < mask.cols; ++x) {
+            const double dx = (x - centre.x()) / d, dy = (y - centre.y()) / d;
+            const bool head = std::pow(dx / kHeadRx, 2) + std::pow((dy + kHeadLift) / kHeadRy, 2) <= 1.0;
+            const bool neck = std::abs(dx) < kNeckHalf && dy > kNeckTop;
+            if (head || neck)
+                mask.at<std::uint8_t>(y, x) = cv::GC_PR_FGD;
+            else if (std::hypot(dx, dy) > kFar && dy < kFarBelow && inside.at<std::uint8_t>(y, x))
+                mask.at<std::uint8_t>(y, x) = cv::GC_BGD;
+        }
+    }
+    static constexpr const char *kContour[] = {"5.2", "2.14", "2.12", "2.1", "2.11", "2.13", "5.1"};
+    static constexpr const char *kBrows[] = {"4.5", "4.3a", "4.3", "4.1", "4.2", "4.4", "4.4a", "4.6"};
+    std::vector<cv::Point> facePolygon;
+    for (const char *id : kContour)
+        facePolygon.emplace_back(int(std::lround(w(id).x())), int(std::lround(w(id).y())));
+    for (const char *id : kBrows)
+        facePolygon.emplace_back(int(std::lround(w(id).x())), int(std::lround(w(id).y() + 0.1 * d)));
+    cv::Mat faceMask(workSize, CV_8UC1, cv::Scalar(0));
+    cv::fillPoly(faceMask, std::vector<std::vector<cv::Point>> {facePolygon}, cv::Scalar(1));
+    const int erode = std::max(1, int(std::lround(0.06 * d)));
+    cv::erode(faceMask, faceMask, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * erode + 1, 2 * erode + 1)));
+    mask.setTo(cv::Scalar(cv::GC_FGD), faceMask);
+
+    cv::Mat bgModel, fgModel;
+    // GrabCut starts its colour models by k-means from the thread's random generator: a fixed
+    // seed gives the same parse of the same photo every time.
+    const cv::RNG saved = cv::theRNG();
+    cv::theRNG() = cv::RNG(0x70f);
+    // Only the part the photo covers takes part: the repeated edge pixels beyond it would teach
+    // the background model the colours of hair or clothes the photo's edge cuts through.
+    // (It needs pixels of both kinds to start from: a photo much smaller than the face's points
+    // say has none.)
+    const cv::Rect covered = cv::boundingRect(inside);
+    bool grabbed = false;
+    if (covered.area() > 0) {
+        cv::Mat roiMask = mask(covered);
+        cv::Mat person = (roiMask == cv::GC_FGD) | (roiMask == cv::GC_PR_FGD);
+        const int people = cv::countNonZero(person);
+        if (people > 0 && people < int(roiMask.total())) {
+            cv::grabCut(work(covered), roiMask, cv::Rect(), bgModel, fgModel, kGrabCutRounds, cv::GC_INIT_WITH_MASK);
+            grabbed = true;
+        }
+    }
+    cv::theRNG() = saved;
+    if (!grabbed)
+        return out;
+
+    cv::Mat lab;
+    rgbToLab8(work, lab);
+    // The cheeks: below the lower lids, above the mouth's corners, from the outer eye corners to
+    // beside the nostrils.
+    const double cheekTop = std::max(w("3.4").y(), w("3.3").y()) + 0.25 * d;
+    const double cheekBottom = std::min(w("8.4").y(), w("8.3").y()) - 0.05 * d;
+    auto span = [&](double x0, double x1) {
+        return QRect(QPoint(int(std::ceil(x0)), int(std::ceil(cheekTop))),
+            QPoint(int(std::floor(x1)), int(std::floor(cheekBottom))));
+    };
+    const std::vector<QRect> cheeks {
+        span(w("3.12").x(), w("9.14").x() - 0.1 * d), span(w("9.13").x() + 0.1 * d, w("3.7").x())};
+    const SkinModel skin = cheekModel(lab, inside, cheeks);
+    if (!skin.valid)
+        return out;
+    const QColor cheekColour = medianColour(work, inside, cheeks);
+    double browTop = w(kBrows[0]).y();
+    for (const char *id : kBrows)
+        browTop = std::min(browTop, w(id).y());
+    // The forehead over the brows, lit more like the crown than the cheeks are: a second model of
+    // the skin where its colour is the cheeks' skin (not a fringe of hair, a hat's brim).
+    const QRect foreheadBox(
+        QPoint(int(std::ceil(centre.x() - kForeheadHalf * d)), int(std::ceil(browTop - kForeheadHigh * d))),
+        QPoint(int(std::floor(centre.x() + kForeheadHalf * d)), int(std::floor(browTop - kForeheadLow * d))));
+    const SkinModel forehead = cheekModel(lab, inside, {foreheadBox});
+    const bool foreheadIsSkin = forehead.valid && skin.isSkin(forehead.centre());
+    const double foreheadL = foreheadIsSkin ? forehead.l : skin.l;
+    // (Skin also where a shine lights it toward white.)
+    auto isSkin = [&](int x, int y) {
+        const Lab c = labAt(lab, x, y);
+        const cv::Vec3b p = work.at<cv::Vec3b>(y, x);
+        return skin.isSkin(c) || (foreheadIsSkin && forehead.isSkin(c))
+            || shineOnSkin(qRgb(p[0], p[1], p[2]), cheekColour);
+    };
+
+    out.labels.resize(size_t(out.size.width()) * size_t(out.size.height()));
+    for (int y = 0; y < mask.rows; ++y) {
+        for (int x = 0; x < mask.cols; ++x) {
+            const std::uint8_t m = mask.at<std::uint8_t>(y, x);
+            HeadParse::Label label = HeadParse::Background;
+            if (!inside.at<std::uint8_t>(y, x))
+                label = HeadParse::Outside;
+            else if (m == cv::GC_FGD || m == cv::GC_PR_FGD)
+                label = isSkin(x, y) ? HeadParse::Skin : HeadParse::Other;
+            out.labels[size_t(y) * size_t(out.size.width()) + size_t(x)] = label;
+        }
+    }
+
+    // Up each column from the brows: where the skin's run ends, and where the person's does (the
+    // head's top), or the photo's edge.
+    const int gap = std::max(1, int(std::lround(kWalkGap * d)));
+    std::vector<double> reaches, heights;
+    int cut = 0, tops = 0, columns = 0;
+    for (int x = int(std::ceil(centre.x() - kWalkHalf * d)); x <= int(std::floor(centre.x() + kWalkHalf * d)); ++x) {
+        ++columns;
+        const int start = int(std::floor(browTop - kWalkStart * d));
+        auto runEnd = [&](int from, auto belongs) {
+            int last = from, misses = 0;
+            for (int y = from; y >= 0; --y) {
+                const HeadParse::Label label = out.at(x, y);
+                if (label == HeadParse::Outside)
+                    return std::pair(last, true);
+                if (belongs(label, y)) {
+                    last = y;
+                    misses = 0;
+                } else if (++misses > gap) {
+                    break;
+                }
+            }
+            return std::pair(last, last - gap <= 0);
+        };
+        if (start < 0 || start >= out.size.height() || out.at(x, start) == HeadParse::Outside) {
+            ++cut;
+            continue;
+        }
+        // A scalp is lit as the forehead or more (from above); hair as dark as the skin lies
+        // darker than the forehead's own shading goes.
+        const auto [skinTop, skinCut] = runEnd(start, [&](HeadParse::Label l, int y) {
+            return l == HeadParse::Skin && labAt(lab, x, y).l >= foreheadL / kScalpDarker;
+        });
+        const auto [headTop, headCut]
+            = runEnd(skinTop, [](HeadParse::Label l, int) { return l == HeadParse::Skin || l == HeadParse::Other; });
+        if (skinCut) {
+            ++cut;
+            continue;
+        }
+        // (Hair or a hat running to the photo's edge still lies over the forehead's skin.)
+        tops += headCut;
+        const double height = browTop - headTop;
+        heights.push_back(height / d);
+        reaches.push_back(height > 0 ? (browTop - skinTop) / height : 0.0);
+    }
+    out.crownCut = columns == 0 || 2 * cut >= columns;
+    out.topCut = !heights.empty() && 2 * tops >= int(heights.size());
+    if (!heights.empty()) {
+        out.headHeight = medianOf(heights);
+        out.scalpReach = medianOf(reaches);
+    }
+    out.valid = true;
+    return out;
+}
+
+} // namespace toonface

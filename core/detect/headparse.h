@@ -1,0 +1,53 @@
+#pragma once
+
+#include "face/facemodel.h"
+
+#include <QImage>
+#include <QSize>
+#include <QTransform>
+
+#include <cstdint>
+#include <vector>
+
+namespace toonface {
+
+// A parse of the head around a detected face: which pixels near it belong to the person and,
+// of those, which are skin. The person is cut from the background as a whole (GrabCut, seeded
+// from the landmarks: the face inside its contour is the person for sure, an ellipse over the
+// crown and a column under the chin probably, the far corners above the mouth not); the skin is
+// the person's own, modelled on the cheeks in CIE L*a*b* (so a dark or a pale skin, a colour
+// cast or a dim photo do not change what is skin). Every length is a multiple of the eyes'
+// distance d: the parse is made in a frame where the eyes are level and kParseEyeDistance
+// pixels apart, so its cost does not grow with the photo.
+struct HeadParse
+{
+    enum Label : std::uint8_t {
+        Outside, // beyond the photo's edge
+        Background,
+        Skin, // the person, coloured as the cheeks
+        Other, // the person, not skin: hair, headwear, brows, eyes, lips, clothes
+    };
+
+    bool valid = false;
+    QSize size; // of the work frame
+    QTransform toWork; // photo to work frame
+    std::vector<std::uint8_t> labels; // row-major, one Label per work pixel
+
+    // Up the forehead's middle columns from the brows: the head's top (where the person ends) in
+    // eye distances above the brows' top, and how far up toward it the skin reaches (0..1; a bald
+    // head's skin reaches its top; a scalp's shine is its skin, hair as dark as the skin is not:
+    // the scalp is no darker than the forehead over kScalpDarker). crownCut: the photo's edge
+    // stops most columns' skin; topCut: it stops most columns' head (hair or a hat may go on).
+    bool crownCut = true, topCut = false;
+    double headHeight = 0, scalpReach = 0;
+
+    Label at(int x, int y) const { return Label(labels[size_t(y) * size.width() + x]); }
+    QImage toImage() const; // a colour per label, for the editor's detection steps and debugging
+};
+
+inline constexpr double kParseEyeDistance = 24.0;
+
+// Nothing (valid false) for an invalid face or a null photo.
+HeadParse parseHead(const QImage &photo, const FaceModel &face);
+
+} // namespace toonface

@@ -1,0 +1,188 @@
+#include "detect/appearance.h"
+#include "detect/detector.h"
+#include "detect/headparse.h"
+#include "drawnface.h"
+#include "render/style.h"
+#include "shareddata.h"
+
+#include <QDir>
+#include <QFile>
+#include <QPainter>
+#include <QRadialGradient>
+#include <QTest>
+#include <QTextStream>
+
+using namespace toonface;
+using testing::DrawnFaceOptions;
+
+namespace {
+
+const QColor kSkins[] = {QColor(240, 205, 185), QColor(196, 140, 105), QColor(105, 70, 50)};
+
+// The label at a photo point.
+HeadParse::Label labelAt(const HeadParse &parse, QPointF photoPoint)
+{
+    const QPointF w = parse.toWork.map(photoPoint);
+    return parse.at(int(w.x()), int(w.y()));
+}
+
+QString describe(const HeadParse &p)
+{
+    return QStringLiteral("crown cut %1, top cut %2, head %3, reach %4")
+        .arg(p.crownCut)
+        .arg(p.topCut)
+        .arg(p.headHeight, 0, 'f', 2)
+        .arg(p.scalpReach, 0, 'f', 2);
+}
+
+// A shine on a bald crown: a soft light spot, the skin lit toward white.
+void shine(QImage *photo, QPointF at, double r, const QColor &skin)
+{
+    QPainter p(photo);
+    p.setRenderHint(QPainter::Antialiasing);
+    QColor light = QColor::fromRgbF(0.5 * (skin.redF() + 1.0), 0.5 * (skin.greenF() + 1.0), 0.5 * (skin.blueF() + 1.0));
+    QRadialGradient g(at, r);
+    g.setColorAt(0, light);
+    light.setAlpha(0);
+    g.setColorAt(1, light);
+    p.setPen(Qt::NoPen);
+    p.setBrush(g);
+    p.drawEllipse(at, r, r);
+}
+
+} // namespace
+
+class TestHeadParse : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void skins_data()
+    {
+        QTest::addColumn<QColor>("skin");
+        QTest::newRow("light") << kSkins[0];
+        QTest::newRow("medium") << kSkins[1];
+        QTest::newRow("dark") << kSkins[2];
+    }
+
+    // A haired head: the face is skin, the crown hair (the person, not skin), the photo's far
+    // corners background; the crown is seen, covered by hair over the forehead's skin.
+    void hairedHead_data() { skins_data(); }
+    void hairedHead()
+    {
+        QFETCH(QColor, skin);
+        DrawnFaceOptions o;
+        o.skin = skin;
+        const FaceModel face = testing::drawnFaceModel();
+        const HeadParse p = parseHead(testing::drawnFace(o, face), face);
+        QVERIFY(p.valid);
+        QCOMPARE(labelAt(p, (face.point("9.15") + face.point("3.5")) / 2.0), HeadParse::Skin);
+        // (The drawn hair is brown: on the dark skin it is as dark as the skin and of its hue, and
+        // the label map calls it skin; the walk up the forehead still tells it from a scalp.)
+        if (skin != kSkins[2])
+            QCOMPARE(labelAt(p, face.point("h.10") + QPointF(0, 10)), HeadParse::Other);
+        QCOMPARE(labelAt(p, QPointF(4, 4)), HeadParse::Background);
+        QCOMPARE(labelAt(p, QPointF(face.imageSize().width() - 5, 4)), HeadParse::Background);
+        QVERIFY2(!p.crownCut, qPrintable(describe(p)));
+        QVERIFY2(p.scalpReach < AppearanceFindings::kScalpReach, qPrintable(describe(p)));
+        QVERIFY(!findAppearance(testing::drawnFace(o, face), face, skin).appearance.bald);
+    }
+
+    // A bald head is skin over the crown, also with a shine on it; it is decided bald.
+    void baldHead_data() { skins_data(); }
+    void baldHead()
+    {
+        QFETCH(QColor, skin);
+        DrawnFaceOptions o;
+        o.skin = skin;
+        o.bald = true;
+        const FaceModel face = testing::drawnFaceModel();
+        for (const bool shiny : {false, true}) {
+            QImage photo = testing::drawnFace(o, face);
+            if (shiny) {
+                const double es0 = QLineF(face.point("3.6"), face.point("3.5")).length();
+                shine(&photo, face.point("h.10") + QPointF(0.2 * es0, 0.45 * es0), 0.35 * es0, skin);
+            }
+            const HeadParse p = parseHead(photo, face);
+            QVERIFY2(!p.crownCut && p.scalpReach >= AppearanceFindings::kScalpReach
+                    && p.headHeight >= AppearanceFindings::kMinHeadHeight,
+                qPrintable(describe(p)));
+            const AppearanceFindings f = findAppearance(photo, face, skin);
+            QVERIFY2(f.appearance.bald, qPrintable(describe(p)));
+            QCOMPARE(f.scalpReach, p.scalpReach);
+        }
+    }
+
+    // A crown the photo cuts off is not seen: the parse decides nothing about it.
+    void crownCutOff()
+    {
+        DrawnFaceOptions o;
+        o.bald = true;
+        const FaceModel face = testing::drawnFaceModel();
+        const QImage whole = testing::drawnFace(o, face);
+        const int top = int(face.point("4.1").y() - 0.1 * QLineF(face.point("3.6"), face.point("3.5")).length());
+        const QImage cropped = whole.copy(0, top, whole.width(), whole.height() - top);
+        FaceModel moved = face;
+        moved.setImageSize(cropped.size());
+        for (int i = 0; i < kPointCount; ++i)
+            moved.setPoint(i, face.point(i) - QPointF(0, top), false);
+        const HeadParse p = parseHead(cropped, moved);
+        QVERIFY(p.valid);
+        QVERIFY2(p.crownCut, qPrintable(describe(p)));
+        QCOMPARE(p.at(p.size.width() / 2, 0), HeadParse::Outside);
+    }
+
+    void invalidInput()
+    {
+        QVERIFY(!parseHead(QImage(), testing::drawnFaceModel()).valid);
+        QVERIFY(!parseHead(testing::drawnFace({}), FaceModel()).valid);
+    }
+
+    // Shared photos (research data, read only here): the bald man of bald_guys.jpg is drawn bald;
+    // of the labelled faces whose forehead and crown the photo shows, nobody with hair is.
+    void sharedPhotos()
+    {
+        const QString dir = testing::sharedDataDir();
+        const QImage guys(QDir(dir).filePath(QStringLiteral("faces/bald_guys.jpg")));
+        if (guys.isNull())
+            QSKIP("the shared photos are not here (../shared/data/faces)");
+        const DetectionResult r = detectFace(guys);
+        if (r.status == DetectStatus::ModelMissing)
+            QSKIP("the landmark model is not installed");
+        QCOMPARE(r.status, DetectStatus::Ok);
+        Style style = Style::preset(QStringLiteral("normal"));
+        AppearanceFindings f;
+        style.sampleColours(guys, r.face, &f);
+        QVERIFY2(style.appearance.bald, qPrintable(describe(parseHead(guys, r.face))));
+        QVERIFY(!f.crownCut);
+
+        const QDir labelled(QDir(dir).filePath(QStringLiteral("faces-attributes")));
+        QFile tsv(labelled.filePath(QStringLiteral("labels.tsv")));
+        if (!tsv.open(QIODevice::ReadOnly | QIODevice::Text))
+            QSKIP("the labelled faces are not here (../shared/data/faces-attributes)");
+        QTextStream in(&tsv);
+        const QStringList header = in.readLine().split(QLatin1Char('\t'));
+        int seen = 0;
+        while (!in.atEnd()) {
+            const QStringList c = in.readLine().split(QLatin1Char('\t'));
+            if (c.size() < header.size() || c[header.indexOf(QLatin1String("bald"))] != QLatin1String("0"))
+                continue;
+            const QString file = c[header.indexOf(QLatin1String("file"))];
+            const QImage photo(labelled.filePath(file));
+            const DetectionResult d = detectFace(photo);
+            if (d.status != DetectStatus::Ok)
+                continue;
+            Style s = Style::preset(QStringLiteral("normal"));
+            AppearanceFindings found;
+            s.sampleColours(photo, d.face, &found);
+            if (found.crownCut)
+                continue;
+            ++seen;
+            QVERIFY2(!s.appearance.bald, qPrintable(file + QLatin1String(": ") + describe(parseHead(photo, d.face))));
+        }
+        QVERIFY2(seen >= 30, qPrintable(QString::number(seen)));
+    }
+};
+
+QTEST_MAIN(TestHeadParse)
+#include "tst_headparse.moc"
