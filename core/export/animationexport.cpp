@@ -469,7 +469,8 @@ int exportFrameCount(const ExportRequest &request)
         return all;
     const double fps = timeline.frameRate() > 0 ? timeline.frameRate() : 25.0;
     const int first = std::clamp(int(std::lround(request.start * fps)), 0, all - 1);
-    const int wanted = request.duration > 0 ? std::max(1, int(std::lround(request.duration * fps))) : all;
+    // Never longer than asked (a preset's limit is a maximum).
+    const int wanted = request.duration > 0 ? std::max(1, int(std::floor(request.duration * fps + 1e-6))) : all;
     return std::min(wanted, all - first);
 }
 

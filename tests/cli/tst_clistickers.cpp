@@ -158,7 +158,7 @@ private Q_SLOTS:
                 QVERIFY(entries(dir).isEmpty());
                 continue;
             }
-            QVERIFY2(run.code == 0, qPrintable(name + u": " + QString::fromUtf8(run.err)));
+            QVERIFY2(run.code == 0, qPrintable(name + QStringLiteral(": ") + QString::fromUtf8(run.err)));
             checkSticker(out, 512, 256 * 1024);
             if (QTest::currentTestFailed())
                 return;
