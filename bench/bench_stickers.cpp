@@ -6,6 +6,10 @@
 #include <QJsonArray>
 #include <QTemporaryDir>
 
+#include <cmath>
+
+using namespace toonface;
+
 namespace {
 
 const QString kPortrait = QStringLiteral("/usr/share/matplotlib/mpl-data/sample_data/grace_hopper.jpg");
