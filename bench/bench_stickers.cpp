@@ -1,5 +1,7 @@
 #include "benchmark.h"
 
+#include "media/mediareader.h"
+
 #include <QDir>
 #include <QDirIterator>
 #include <QFileInfo>
@@ -77,10 +79,13 @@ QJsonObject benchStickers()
                 QLatin1StringView(c.name), QJsonObject {{QStringLiteral("error"), QString::fromUtf8(run.stderrText)}});
             continue;
         }
+        QString side;
+        if (const std::optional<MediaInfo> info = probeMedia(out, nullptr); info && info->width > 0)
+            side = QStringLiteral("%1x%2").arg(info->width).arg(info->height);
         r.insert(QLatin1StringView(c.name),
             QJsonObject {{QStringLiteral("kb"), std::round(bytesOf(out) / 102.4) / 10.0},
-                {QStringLiteral("wallMs"), qRound(run.wallMs)}, {QStringLiteral("cpuMs"), qRound(run.cpuMs)},
-                {QStringLiteral("peakMb"), qRound(run.peakMb)}});
+                {QStringLiteral("frameSize"), side}, {QStringLiteral("wallMs"), qRound(run.wallMs)},
+                {QStringLiteral("cpuMs"), qRound(run.cpuMs)}, {QStringLiteral("peakMb"), qRound(run.peakMb)}});
     }
     r.insert(QStringLiteral("clip"),
         QStringLiteral("3 s of Grace Hopper talking, 25 fps, the automatic frame size (presets: their own)"));
