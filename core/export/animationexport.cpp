@@ -298,7 +298,9 @@ ExportResult exportFrames(const ExportRequest &request, const SvgFace &face, con
             - first / renderer.frameRate();
     }
     VideoOptions options;
-    options.background = drawnBackground.alpha() == 0 ? QColor(Qt::transparent) : QColor(Qt::white);
+    // A GIF is transparent only when asked; under a photo its frames are opaque.
+    options.background
+        = background.kind == ExportBackground::Kind::Transparent ? QColor(Qt::transparent) : QColor(Qt::white);
     if (request.vp9Crf >= 0)
         options.vp9Crf = request.vp9Crf;
     if (format == VideoFormat::Gif) {

@@ -444,6 +444,28 @@ private Q_SLOTS:
         QCOMPARE(QFileInfo(out).size(), 3);
     }
 
+    // Over the limit at the first quality: encoded again at lower quality until it fits.
+    void presetLowersTheQualityToFit()
+    {
+        const QString dir = newFolder(QStringLiteral("fit"));
+        ExportPreset preset = *exportPresetNamed(QStringLiteral("telegram-sticker"));
+        ExportRequest first
+            = withPreset(request(AnimationFormat::WebM, QDir(dir).filePath(QStringLiteral("first.webm"))), preset);
+        first.vp9Crf = 30; // the preset's first try
+        const ExportResult firstResult = exportAnimation(first);
+        QVERIFY2(firstResult.ok(), qPrintable(firstResult.error));
+        const qint64 firstBytes = QFileInfo(first.outputPath).size();
+        QVERIFY(QFile::remove(first.outputPath));
+        preset.maxBytes = firstBytes * 6 / 10;
+        ExportRequest r = request(AnimationFormat::WebM, QDir(dir).filePath(QStringLiteral("fits.webm")));
+        const ExportResult result = exportWithPreset(r, preset);
+        QVERIFY2(result.ok(), qPrintable(result.error));
+        const qint64 bytes = QFileInfo(r.outputPath).size();
+        QVERIFY2(bytes <= preset.maxBytes && bytes > 0,
+            qPrintable(QStringLiteral("%1 of %2 (first try %3)").arg(bytes).arg(preset.maxBytes).arg(firstBytes)));
+        QCOMPARE(entries(dir), QStringList {u"fits.webm"_qs});
+    }
+
     // A size no quality reaches: the quality is lowered first, then the export gives up
     // saying by how much the smallest file is over.
     void presetGivesUpOnSize()
