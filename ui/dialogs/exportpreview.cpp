@@ -8,7 +8,8 @@ ExportPreview::ExportPreview(QWidget *parent)
     : QWidget(parent)
 {
     setObjectName(QStringLiteral("exportPreview"));
-    setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
+    setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
+    setMinimumSize(sizeHint());
 }
 
 void ExportPreview::setFrame(const QImage &frame)
