@@ -48,6 +48,9 @@ public:
         const VideoOptions &options, QString *error)
     {
         m_format = alphaFormat(format);
+        const bool alpha = format != VideoFormat::WebM || options.keepAlpha;
+        if (!alpha)
+            m_format.pixelFormat = AV_PIX_FMT_YUV420P;
         const QString name = QString::fromLatin1(m_format.name);
         const AVCodec *codec = avcodec_find_encoder_by_name(m_format.videoEncoder);
         if (!codec)
@@ -120,7 +123,7 @@ public:
             return false;
         }
         // Matroska keeps VP9's alpha as block additions; this tag tells players to read them.
-        if (format == VideoFormat::WebM)
+        if (format == VideoFormat::WebM && alpha)
             av_dict_set(&m_videoStream->metadata, "alpha_mode", "1", 0);
 
         if (!audio.isEmpty() && m_format.audioEncoder) {

@@ -301,6 +301,7 @@ ExportResult exportFrames(const ExportRequest &request, const SvgFace &face, con
     // A GIF is transparent only when asked; under a photo its frames are opaque.
     options.background
         = background.kind == ExportBackground::Kind::Transparent ? QColor(Qt::transparent) : QColor(Qt::white);
+    options.keepAlpha = background.kind == ExportBackground::Kind::Transparent;
     if (request.vp9Crf >= 0)
         options.vp9Crf = request.vp9Crf;
     if (format == VideoFormat::Gif) {

@@ -52,6 +52,9 @@ struct VideoOptions
     // unless the colour is transparent (alpha 0): then pixels less than half opaque become its
     // transparent colour and each frame replaces the last whole. The formats with alpha keep it.
     QColor background = Qt::white;
+    // WebM keeps its alpha unless this is false (frames known to be opaque: a colour or photo
+    // behind the face), when it is plain yuv420p, smaller and read by every player.
+    bool keepAlpha = true;
     // A GIF keeps every k-th frame, k the smallest integer with fps / k <= gifMaxFps (GIF
     // delays are whole hundredths and browsers slow down delays under 0.02 s).
     double gifMaxFps = 25;

@@ -293,6 +293,11 @@ private Q_SLOTS:
         QVERIFY2(frame, qPrintable(error));
         QCOMPARE(qAlpha(frame->pixel(0, 0)), 255);
         QVERIFY(qGreen(frame->pixel(0, 0)) > 140 && qRed(frame->pixel(0, 0)) < 20);
+        // Opaque frames: a plain VP9 stream, no alpha to decode.
+        const std::optional<MediaInfo> opaque = probeMedia(r.outputPath, &error);
+        QVERIFY2(opaque, qPrintable(error));
+        QVERIFY(!opaque->hasAlpha);
+        QCOMPARE(opaque->pixelFormat, u"yuv420p"_qs);
 
         // A photo of a red left half and a blue right half covers the frame.
         QImage photo(300, 200, QImage::Format_RGB32);
