@@ -18,4 +18,4 @@ apt-get install -y -q --no-install-recommends \
   gstreamer1.0-plugins-good gstreamer1.0-libav \
   python-matplotlib-data python3-skimage fonts-wqy-microhei fonts-dejavu-core \
   xvfb xauth chromium sox pulseaudio pulseaudio-utils \
-  zlib1g-dev epubcheck
+  zlib1g-dev epubcheck libwebp-dev

@@ -4,6 +4,7 @@
 #include "cli/speechinput.h"
 #include "cli/videotrack.h"
 #include "export/animationexport.h"
+#include "export/exportpreset.h"
 #include "export/framerenderer.h"
 #include "export/htmlplayer.h"
 #include "export/smilexport.h"
@@ -48,9 +49,23 @@ int runAnimate(const Command &self, const QStringList &args)
     const QCommandLineOption projectOut(
         QStringLiteral("project"), Cli::tr("Also save the result as a project."), QStringLiteral("OUT.toonface"));
     const QCommandLineOption output(QStringList {QStringLiteral("o"), QStringLiteral("output")},
-        Cli::tr("OUT.svg, OUT.html, OUT.mp4, OUT.gif, or DIR/ for PNG frames."), QStringLiteral("OUT"));
+        Cli::tr("OUT.svg, OUT.html, OUT.mp4, OUT.gif, OUT.webm, OUT.mov, OUT.apng, OUT.webp, or DIR/ for PNG "
+                "frames."),
+        QStringLiteral("OUT"));
+    const QCommandLineOption background(QStringLiteral("background"),
+        Cli::tr("What is behind the face in a video or picture: a colour (white, #rrggbb), transparent, or a "
+                "photo (default: transparent for WebM, MOV, APNG, WebP and PNG frames, white for MP4 and GIF)."),
+        QStringLiteral("COLOUR|transparent|PHOTO"));
+    const QCommandLineOption preset(QStringLiteral("preset"),
+        Cli::tr("Export for a place with limits: %1.").arg(exportPresetNames().join(QStringLiteral(", "))),
+        QStringLiteral("NAME"));
+    const QCommandLineOption start(QStringLiteral("start"),
+        Cli::tr("Video and pictures: begin this many seconds into the animation."), QStringLiteral("S"));
+    const QCommandLineOption duration(QStringLiteral("duration"),
+        Cli::tr("Video and pictures: export this many seconds (default: to the end)."), QStringLiteral("S"));
     const QCommandLineOption frame = frameOption();
-    parser.addOptions({audio, script, say, video, lang, emotion, noBlink, fps, style, frame, projectOut, output});
+    parser.addOptions({audio, script, say, video, lang, emotion, noBlink, fps, style, frame, projectOut, output,
+        background, preset, start, duration});
     const VideoTrackOptions trackOptions;
     trackOptions.addTo(parser);
     parser.addPositionalArgument(QStringLiteral("INPUT"),
@@ -63,12 +78,52 @@ int runAnimate(const Command &self, const QStringList &args)
     if (parser.positionalArguments().size() != 1)
         return fail(ExitUsage, Cli::tr("animate takes one photo or project (usage: toonface-cli %1)").arg(self.usage));
     if (!parser.isSet(output))
-        return fail(ExitUsage, Cli::tr("animate needs -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"));
+        return fail(ExitUsage, Cli::tr("animate needs -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|OUT.webm|DIR/ ..."));
     const std::optional<AnimationFormat> format = animationFormatForPath(parser.value(output));
     if (!format)
         return fail(ExitUsage,
-            Cli::tr("cannot tell the output type of '%1': use .svg, .html, .mp4, .gif or a folder ending in /")
+            Cli::tr("cannot tell the output type of '%1': use .svg, .html, .mp4, .gif, .webm, .mov, .apng, .webp "
+                    "or a folder ending in /")
                 .arg(parser.value(output)));
+    std::optional<ExportPreset> chosenPreset;
+    if (parser.isSet(preset)) {
+        chosenPreset = exportPresetNamed(parser.value(preset));
+        if (!chosenPreset)
+            return fail(ExitUsage,
+                Cli::tr("unknown --preset '%1' (%2)")
+                    .arg(parser.value(preset), exportPresetNames().join(QStringLiteral(", "))));
+        if (*format != chosenPreset->format)
+            return fail(ExitUsage,
+                Cli::tr("the %1 preset writes %2: name the output .%3, not '%4'")
+                    .arg(chosenPreset->name, animationFormatSuffix(chosenPreset->format).toUpper(),
+                        animationFormatSuffix(chosenPreset->format), parser.value(output)));
+    }
+    ExportBackground backdrop;
+    if (parser.isSet(background)) {
+        QString why;
+        const std::optional<ExportBackground> parsed = parseExportBackground(parser.value(background), &why);
+        if (!parsed)
+            return fail(ExitUsage, QStringLiteral("--background: ") + why);
+        backdrop = *parsed;
+        if (const QString problem = backgroundProblem(*format, backdrop); !problem.isEmpty())
+            return fail(ExitUsage, QStringLiteral("%1: %2").arg(parser.value(output), problem));
+    }
+    double startS = 0;
+    double durationS = 0;
+    for (const auto &[option, value] : {std::pair {&start, &startS}, std::pair {&duration, &durationS}}) {
+        if (!parser.isSet(*option))
+            continue;
+        bool ok = false;
+        *value = parser.value(*option).toDouble(&ok);
+        if (!ok || !std::isfinite(*value) || *value < 0 || (option == &duration && *value == 0))
+            return fail(ExitUsage,
+                Cli::tr("--%1 takes a number of seconds (more than 0 for --duration), not '%2'")
+                    .arg(option->names().constFirst(), parser.value(*option)));
+        if (!isRasterFormat(*format))
+            return fail(ExitUsage,
+                Cli::tr("--%1 needs a video or picture output; SVG and HTML play the whole animation")
+                    .arg(option->names().constFirst()));
+    }
     const QString inputPath = parser.positionalArguments().constFirst();
     const bool clipInput = looksLikeVideo(inputPath);
     const int sources
@@ -230,18 +285,23 @@ int runAnimate(const Command &self, const QStringList &args)
     exportRequest.mouthShapes = shapes;
     exportRequest.layerFiles = input.layerPaths;
     exportRequest.audioPath = speech.audioPath;
+    exportRequest.background = backdrop;
+    exportRequest.start = startS;
+    exportRequest.duration = durationS;
     int lastTenth = 0;
-    const ExportResult result = exportAnimation(
-        exportRequest,
-        [&lastTenth](double fraction) {
-            const int tenth = int(fraction * 10);
-            if (tenth > lastTenth)
-                progress(Cli::tr("exporting: %1 %").arg(tenth * 10));
-            lastTenth = std::max(lastTenth, tenth);
-        },
-        interruption());
+    const auto report = [&lastTenth](double fraction) {
+        const int tenth = int(fraction * 10);
+        if (tenth > lastTenth)
+            progress(Cli::tr("exporting: %1 %").arg(tenth * 10));
+        lastTenth = std::max(lastTenth, tenth);
+    };
+    const ExportResult result = chosenPreset ? exportWithPreset(exportRequest, *chosenPreset, report, interruption())
+                                             : exportAnimation(exportRequest, report, interruption());
     if (result.status == ExportStatus::Cancelled)
         return fail(ExitInterrupted, Cli::tr("%1: interrupted; nothing was written").arg(out));
+    if (result.status == ExportStatus::OverLimit)
+        return fail(ExitBadInput,
+            Cli::tr("%1; nothing was written (--start and --duration choose a stretch)").arg(result.error));
     if (!result.ok())
         return fail(result.status == ExportStatus::BadInput ? ExitBadInput : ExitFailed, result.error);
     return ExitOk;
@@ -249,11 +309,14 @@ int runAnimate(const Command &self, const QStringList &args)
 
 const CommandRegistrar registrar({QStringLiteral("animate"),
     QString::fromUtf8(QT_TRANSLATE_NOOP("toonface::cli::Cli",
-        "Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF or PNG frames).")),
+        "Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF, WebM, MOV, "
+        "APNG, WebP or PNG frames).")),
     QStringLiteral(
         "animate IMAGE|PROJECT|CLIP [--audio A --script S | --say TEXT | --video CLIP] [--method "
         "auto|classic|landmarks] [--neutral-frame N] [--snap-mouth] [--emotion NAME] [--no-blink] [--fps N] "
-        "[--style NAME] [--frame head|photo] [--project OUT.toonface] -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/"),
+        "[--style NAME] [--frame head|photo] [--background COLOUR|transparent|PHOTO] [--preset NAME] [--start S] "
+        "[--duration S] [--project OUT.toonface] -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|OUT.webm|OUT.mov|OUT.apng|"
+        "OUT.webp|DIR/"),
     runAnimate, true});
 
 } // namespace

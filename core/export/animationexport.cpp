@@ -31,6 +31,22 @@ constexpr int kMinSize = 16;
 constexpr int kMaxSize = 4096;
 constexpr double kMaxFps = 120;
 
+VideoFormat videoFormatOf(AnimationFormat format)
+{
+    switch (format) {
+    case AnimationFormat::Mp4: return VideoFormat::Mp4;
+    case AnimationFormat::Gif: return VideoFormat::Gif;
+    case AnimationFormat::WebM: return VideoFormat::WebM;
+    case AnimationFormat::Mov: return VideoFormat::Mov;
+    case AnimationFormat::Apng: return VideoFormat::Apng;
+    case AnimationFormat::WebP: return VideoFormat::WebP;
+    case AnimationFormat::SmilSvg:
+    case AnimationFormat::HtmlPlayer:
+    case AnimationFormat::PngSequence: break;
+    }
+    return VideoFormat::PngSequence;
+}
+
 ExportResult result(ExportStatus status, const QString &file, const QString &problem)
 {
     return {status, withProblem(QDir::toNativeSeparators(file), problem)};
@@ -99,13 +115,31 @@ std::optional<ExportResult> checkRequest(const ExportRequest &request, SvgFace *
     if (!std::isfinite(request.fps) || request.fps < 0 || request.fps > kMaxFps)
         return result(ExportStatus::BadInput, out,
             ExportText::tr("unsupported frame rate %1 (more than 0, up to %2)").arg(request.fps).arg(kMaxFps));
+    if (const QString problem = backgroundProblem(request.format, request.background); !problem.isEmpty())
+        return result(ExportStatus::BadInput, out, problem);
+    if (!std::isfinite(request.start) || !std::isfinite(request.duration) || request.start < 0 || request.duration < 0)
+        return result(ExportStatus::BadInput, out,
+            ExportText::tr("the start (%1 s) and duration (%2 s) must be 0 or more")
+                .arg(request.start)
+                .arg(request.duration));
+    if ((request.start > 0 || request.duration > 0) && !isRasterFormat(request.format))
+        return result(ExportStatus::BadInput, out,
+            ExportText::tr("SVG and HTML play the whole animation; a start or duration needs a video or picture "
+                           "format"));
+    const Timeline whole = exportTimeline(request);
+    const double length = std::max(1, whole.frameCount()) / (whole.frameRate() > 0 ? whole.frameRate() : 25.0);
+    if (request.start > 0 && request.start >= length)
+        return result(ExportStatus::BadInput, out,
+            ExportText::tr("the start (%1 s) is past the end of the animation (%2 s)")
+                .arg(request.start, 0, 'f', 2)
+                .arg(length, 0, 'f', 2));
     for (const QString &layer : request.layerFiles) {
         QString error;
         if (!face->addLayerFile(layer, &error))
             return ExportResult {ExportStatus::BadInput, error};
     }
     const QString sound = soundPath(request);
-    const bool silent = request.format == AnimationFormat::Gif || request.format == AnimationFormat::PngSequence;
+    const bool silent = request.silent || !animationFormatHasSound(request.format);
     if (!silent && !sound.isEmpty()) {
         // The sound must be a regular file that decodes as sound: nothing else reaches a file
         // the user hands on (a shared project may name any file as its sound).
@@ -241,24 +275,40 @@ ExportResult exportFrames(const ExportRequest &request, const SvgFace &face, con
 {
     const QString out = request.outputPath;
     const QSize size = exportFrameSize(request);
-    const FrameRenderer renderer(face, timeline, request.mouthShapes, size);
-    VideoFormat format = VideoFormat::PngSequence;
-    if (request.format == AnimationFormat::Mp4)
-        format = VideoFormat::Mp4;
-    else if (request.format == AnimationFormat::Gif)
-        format = VideoFormat::Gif;
+    const VideoFormat format = videoFormatOf(request.format);
+    const ExportBackground background = effectiveBackground(request);
+    QColor drawnBackground = Qt::transparent;
+    QImage backdrop;
+    if (background.kind == ExportBackground::Kind::Colour)
+        drawnBackground = background.colour;
+    if (background.kind == ExportBackground::Kind::Photo) {
+        QString error;
+        backdrop = backgroundPicture(background.photoPath, size, &error);
+        if (backdrop.isNull())
+            return {ExportStatus::BadInput, error};
+    }
+    const FrameRenderer renderer(face, timeline, request.mouthShapes, size, drawnBackground, backdrop);
+    const int first = std::min(renderer.frameCount() - 1, int(std::lround(request.start * renderer.frameRate())));
+    const int count = exportFrameCount(request);
 
     AudioSource audio;
-    if (format == VideoFormat::Mp4) {
+    if (videoFormatHasSound(format) && !request.silent) {
         audio.path = soundPath(request);
-        audio.offset = audio.path.isEmpty() || !timeline.audio() ? 0.0 : timeline.audio()->offset;
+        audio.offset = (audio.path.isEmpty() || !timeline.audio() ? 0.0 : timeline.audio()->offset)
+            - first / renderer.frameRate();
     }
     VideoOptions options;
+    // A GIF is transparent only when asked; under a photo its frames are opaque.
+    options.background
+        = background.kind == ExportBackground::Kind::Transparent ? QColor(Qt::transparent) : QColor(Qt::white);
+    options.keepAlpha = background.kind == ExportBackground::Kind::Transparent;
+    if (request.vp9Crf >= 0)
+        options.vp9Crf = request.vp9Crf;
     if (format == VideoFormat::Gif) {
         // The palette must know the open mouth and shut eyes, which frame 0 may not show.
         Pose open = mouthPose(face.face(), request.mouthShapes, MouthShape::A);
         open.leftEyeOpen = open.rightEyeOpen = 0;
-        options.paletteSamples << rasterizeSvg(face.svg(open), size);
+        options.paletteSamples << rasterizeSvg(face.svg(open), size, drawnBackground);
     }
     std::optional<TemporaryFolder> folder;
     QString path = out;
@@ -282,6 +332,8 @@ ExportResult exportFrames(const ExportRequest &request, const SvgFace &face, con
         return {ExportStatus::Failed, named(error)};
     progress.stage(0, 0.98);
     FrameRenderOptions frameOptions;
+    frameOptions.first = first;
+    frameOptions.count = count;
     frameOptions.cancel = cancel;
     frameOptions.progress = [&](int delivered, int total) { progress(total > 0 ? double(delivered) / total : 1.0); };
     const bool rendered = renderFrames(
@@ -315,6 +367,10 @@ QString animationFormatSuffix(AnimationFormat format)
     case AnimationFormat::HtmlPlayer: return QStringLiteral("html");
     case AnimationFormat::Mp4: return QStringLiteral("mp4");
     case AnimationFormat::Gif: return QStringLiteral("gif");
+    case AnimationFormat::WebM: return QStringLiteral("webm");
+    case AnimationFormat::Mov: return QStringLiteral("mov");
+    case AnimationFormat::Apng: return QStringLiteral("apng");
+    case AnimationFormat::WebP: return QStringLiteral("webp");
     case AnimationFormat::PngSequence: break;
     }
     return {};
@@ -336,7 +392,45 @@ std::optional<AnimationFormat> animationFormatForPath(const QString &path)
 
 bool isRasterFormat(AnimationFormat format)
 {
-    return format == AnimationFormat::Mp4 || format == AnimationFormat::Gif || format == AnimationFormat::PngSequence;
+    return format != AnimationFormat::SmilSvg && format != AnimationFormat::HtmlPlayer;
+}
+
+bool animationFormatHasAlpha(AnimationFormat format)
+{
+    return isRasterFormat(format) && videoFormatHasAlpha(videoFormatOf(format));
+}
+
+bool animationFormatCanBeTransparent(AnimationFormat format)
+{
+    return format != AnimationFormat::Mp4;
+}
+
+bool animationFormatHasSound(AnimationFormat format)
+{
+    return !isRasterFormat(format) || videoFormatHasSound(videoFormatOf(format));
+}
+
+QString backgroundProblem(AnimationFormat format, const ExportBackground &background)
+{
+    const ExportBackground::Kind kind = background.kind;
+    if (kind == ExportBackground::Kind::Transparent && !animationFormatCanBeTransparent(format))
+        return ExportText::tr("MP4 cannot be transparent: choose WebM, MOV, WebP, APNG, GIF or PNG frames, or a "
+                              "background colour or photo");
+    if (!isRasterFormat(format) && (kind == ExportBackground::Kind::Colour || kind == ExportBackground::Kind::Photo))
+        return ExportText::tr("SVG and HTML are drawn without a background; a background colour or photo needs a "
+                              "video or picture format");
+    if (kind == ExportBackground::Kind::Colour && !background.colour.isValid())
+        return ExportText::tr("the background colour is not valid");
+    return {};
+}
+
+ExportBackground effectiveBackground(const ExportRequest &request)
+{
+    if (request.background.kind != ExportBackground::Kind::Automatic)
+        return request.background;
+    if (!isRasterFormat(request.format) || animationFormatHasAlpha(request.format))
+        return ExportBackground::transparent();
+    return ExportBackground::ofColour(Qt::white);
 }
 
 ExportRequest exportRequestFor(const Project &project)
@@ -372,7 +466,21 @@ QSize exportFrameSize(const ExportRequest &request)
 
 int exportFrameCount(const ExportRequest &request)
 {
-    return std::max(1, exportTimeline(request).frameCount());
+    const Timeline timeline = exportTimeline(request);
+    const int all = std::max(1, timeline.frameCount());
+    if (!isRasterFormat(request.format))
+        return all;
+    const double fps = timeline.frameRate() > 0 ? timeline.frameRate() : 25.0;
+    const int first = std::clamp(int(std::lround(request.start * fps)), 0, all - 1);
+    // Never longer than asked (a preset's limit is a maximum).
+    const int wanted = request.duration > 0 ? std::max(1, int(std::floor(request.duration * fps + 1e-6))) : all;
+    return std::min(wanted, all - first);
+}
+
+double exportDuration(const ExportRequest &request)
+{
+    const Timeline timeline = exportTimeline(request);
+    return exportFrameCount(request) / (timeline.frameRate() > 0 ? timeline.frameRate() : 25.0);
 }
 
 ExportResult exportAnimation(

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "anim/timeline.h"
+#include "export/exportbackground.h"
 #include "face/facemodel.h"
 #include "face/mouthshape.h"
 #include "render/style.h"
@@ -25,19 +26,34 @@ enum class AnimationFormat {
     HtmlPlayer, // a web page playing the SVG with its sound (exportHtmlPlayer)
     Mp4, // H.264 + AAC
     Gif, // animated GIF, silent
-    PngSequence, // a folder of frame_00001.png, ..., silent
+    PngSequence, // a folder of frame_00001.png, ..., with alpha, silent
+    WebM, // VP9 with alpha + Opus
+    Mov, // ProRes 4444 with alpha + PCM, for video editors
+    Apng, // animated PNG with alpha, silent
+    WebP, // animated WebP with alpha, silent
 };
 
 inline constexpr AnimationFormat kAllAnimationFormats[] = {AnimationFormat::SmilSvg, AnimationFormat::HtmlPlayer,
-    AnimationFormat::Mp4, AnimationFormat::Gif, AnimationFormat::PngSequence};
+    AnimationFormat::Mp4, AnimationFormat::Gif, AnimationFormat::PngSequence, AnimationFormat::WebM,
+    AnimationFormat::Mov, AnimationFormat::Apng, AnimationFormat::WebP};
 
-// "svg", "html", "mp4", "gif"; empty for a PNG sequence (a folder).
+// "svg", "html", "mp4", "gif", "webm", "mov", "apng", "webp"; empty for a PNG sequence (a folder).
 QString animationFormatSuffix(AnimationFormat format);
-// The format a path asks for by its suffix (.svg, .html/.htm, .mp4, .gif, any case) or, ending
-// in '/', a PNG sequence; nullopt otherwise.
+// The format a path asks for by its suffix (.svg, .html/.htm, .mp4, .gif, .webm, .mov, .apng,
+// .webp, any case) or, ending in '/', a PNG sequence; nullopt otherwise.
 std::optional<AnimationFormat> animationFormatForPath(const QString &path);
-// Whether the format is a picture sequence (MP4, GIF, PNG) drawn at ExportRequest::size.
+// Whether the format is a picture sequence drawn at ExportRequest::size (all but SVG and HTML).
 bool isRasterFormat(AnimationFormat format);
+// Whether the format keeps alpha (PNG frames, WebM, MOV, APNG, WebP): its automatic background
+// is transparent. GIF can be transparent when asked (one transparent colour, hard edges); MP4
+// cannot; SVG and HTML draw no background.
+bool animationFormatHasAlpha(AnimationFormat format);
+bool animationFormatCanBeTransparent(AnimationFormat format);
+// Whether the format carries the sound (SVG, HTML, MP4, WebM, MOV).
+bool animationFormatHasSound(AnimationFormat format);
+// Why `format` cannot be drawn over `background` (MP4 transparent; SVG or HTML over a colour or
+// photo), or empty.
+QString backgroundProblem(AnimationFormat format, const ExportBackground &background);
 
 // Which part of the photo the animation shows.
 enum class ExportFraming {
@@ -59,6 +75,16 @@ struct ExportRequest
     // Frames per second (up to 120); 0: the timeline's.
     double fps = 0;
     ExportFraming framing = ExportFraming::Head;
+    // Raster formats: what is behind the face (Automatic: transparent where the format keeps
+    // alpha, white otherwise). SVG and HTML draw none and take only Automatic or Transparent.
+    ExportBackground background;
+    // Raster formats: the stretch of the timeline exported, in seconds (duration 0: to the end).
+    double start = 0;
+    double duration = 0;
+    // No sound even where the format carries it.
+    bool silent = false;
+    // WebM: VP9's constant quality, 0 (best) .. 63; -1: the encoder's default for stickers.
+    int vp9Crf = -1;
 
     FaceModel face;
     Style style;
@@ -78,14 +104,19 @@ ExportRequest exportRequestFor(const Project &project);
 QRectF exportFrame(const ExportRequest &request);
 // The size of the frames MP4, GIF and PNG exports of `request` have.
 QSize exportFrameSize(const ExportRequest &request);
-// Frames of the export (at its frame rate), for all formats.
+// Frames of the export (at its frame rate, within its start and duration), for all formats.
 int exportFrameCount(const ExportRequest &request);
+// The export's length in seconds: its frames at its frame rate.
+double exportDuration(const ExportRequest &request);
+// The background `request` is drawn over: Automatic resolved for its format.
+ExportBackground effectiveBackground(const ExportRequest &request);
 
 enum class ExportStatus {
     Done,
     Cancelled, // the cancel flag was set; nothing was written
     BadInput, // a layer or sound file cannot be read, or the request is invalid
     Failed, // the output cannot be written or encoded
+    OverLimit, // an export preset's limit (length, file size) cannot be met; nothing was written
 };
 
 struct ExportResult

@@ -3,6 +3,7 @@
 #include "anim/timeline.h"
 
 #include <QFuture>
+#include <QPainter>
 #include <QThread>
 #include <QtConcurrent/QtConcurrentMap>
 
@@ -11,12 +12,13 @@
 
 namespace toonface {
 
-FrameRenderer::FrameRenderer(
-    const SvgFace &face, const Timeline &timeline, const MouthShapeSet &shapes, QSize size, QColor background)
+FrameRenderer::FrameRenderer(const SvgFace &face, const Timeline &timeline, const MouthShapeSet &shapes, QSize size,
+    QColor background, const QImage &backdrop)
     : m_face(face)
     , m_evaluator(timeline, face.face(), shapes)
     , m_size(size)
     , m_background(background)
+    , m_backdrop(backdrop)
     , m_frameRate(timeline.frameRate() > 0 ? timeline.frameRate() : 25.0)
     , m_frameCount(std::max(1, timeline.frameCount()))
 { }
@@ -28,7 +30,13 @@ QByteArray FrameRenderer::svgAt(double t) const
 
 QImage FrameRenderer::renderAt(double t) const
 {
-    return rasterizeSvg(svgAt(t), m_size, m_background);
+    if (m_backdrop.isNull())
+        return rasterizeSvg(svgAt(t), m_size, m_background);
+    QImage image = m_backdrop.convertToFormat(QImage::Format_ARGB32_Premultiplied);
+    QPainter painter(&image);
+    painter.drawImage(0, 0, rasterizeSvg(svgAt(t), m_size, Qt::transparent));
+    painter.end();
+    return image;
 }
 
 bool renderFrames(const FrameRenderer &renderer, const std::function<bool(int, const QImage &)> &sink,

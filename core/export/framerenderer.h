@@ -18,14 +18,16 @@ class Timeline;
 
 // The frames of a timeline as images, for video export and previews: frame i shows time
 // i / frameRate(), drawn by SvgFace::svg() (extra layers included) and rasterized by
-// QSvgRenderer (rasterizeSvg(): aspect kept, centred, `background` inside the drawing).
+// QSvgRenderer (rasterizeSvg(): aspect kept, centred, `background` inside the drawing; a
+// transparent background leaves alpha 0 around the face) over `backdrop` when one is given (a
+// picture of `size`, such as backgroundPicture()).
 // Immutable after construction; render() may run on several threads at once.
 class FrameRenderer
 {
 public:
-    // requires: size not empty
+    // requires: size not empty; backdrop null or of `size`
     FrameRenderer(const SvgFace &face, const Timeline &timeline, const MouthShapeSet &shapes, QSize size,
-        QColor background = Qt::white);
+        QColor background = Qt::white, const QImage &backdrop = {});
 
     QSize size() const { return m_size; }
     double frameRate() const { return m_frameRate; }
@@ -44,6 +46,7 @@ private:
     TimelineEvaluator m_evaluator;
     QSize m_size;
     QColor m_background;
+    QImage m_backdrop;
     double m_frameRate;
     int m_frameCount;
 };

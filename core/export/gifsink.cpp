@@ -2,6 +2,8 @@
 
 #include "i18n/coretext.h"
 
+#include <QFile>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -25,7 +27,7 @@ public:
     static constexpr int kAdaptive = 228;
     static constexpr int kTransparent = 255;
 
-    // requires: the images are RGB32
+    // requires: the images are RGB32, or ARGB32 whose pixels less than half opaque are left out
     void build(const QVector<QImage> &images)
     {
         struct Bin
@@ -39,6 +41,8 @@ public:
                 const auto *line = reinterpret_cast<const QRgb *>(rgb32.constScanLine(y));
                 for (int x = 0; x < rgb32.width(); ++x) {
                     const QRgb c = line[x];
+                    if (qAlpha(c) < 128)
+                        continue;
                     Bin &bin = bins[((qRed(c) >> 3) << 10) | ((qGreen(c) >> 3) << 5) | (qBlue(c) >> 3)];
                     ++bin.count;
                     bin.r += qRed(c);
@@ -137,7 +141,8 @@ public:
 
     const std::array<quint32, 256> &colours() const { return m_colours; }
 
-    // Writes the palette index of each pixel of an RGB32 image.
+    // Writes the palette index of each pixel of an RGB32 image, or of an ARGB32 one whose
+    // pixels less than half opaque take the transparent entry.
     void map(const QImage &rgb32, uint8_t *out, int stride)
     {
         for (int y = 0; y < rgb32.height(); ++y) {
@@ -145,6 +150,10 @@ public:
             uint8_t *o = out + qsizetype(y) * stride;
             for (int x = 0; x < rgb32.width(); ++x) {
                 const QRgb c = line[x];
+                if (qAlpha(c) < 128) {
+                    o[x] = kTransparent;
+                    continue;
+                }
                 const int key = ((qRed(c) >> 2) << 12) | ((qGreen(c) >> 2) << 6) | (qBlue(c) >> 2);
                 int16_t &idx = m_lookup[size_t(key)];
                 if (idx < 0)
@@ -178,6 +187,42 @@ private:
     std::vector<int16_t> m_lookup;
 };
 
+// Sets the disposal method of every graphic control extension of the GIF in `data`, walking
+// its blocks; false when it is not a GIF as the encoder writes them.
+bool setGifDisposal(QByteArray *data, int disposal)
+{
+    const auto at = [data](qsizetype i) { return i < data->size() ? uint8_t(data->at(i)) : uint8_t(0); };
+    if (!data->startsWith("GIF89a") || data->size() < 13)
+        return false;
+    qsizetype i = 13;
+    if (at(10) & 0x80) // global colour table
+        i += 3 * (qsizetype(1) << ((at(10) & 7) + 1));
+    // Skips data sub-blocks from i to just past their terminator.
+    const auto skipSubBlocks = [&](qsizetype j) {
+        while (j < data->size() && at(j) != 0)
+            j += at(j) + 1;
+        return j + 1;
+    };
+    while (i < data->size()) {
+        const uint8_t kind = at(i);
+        if (kind == 0x3b) // trailer
+            return true;
+        if (kind == 0x21) { // extension
+            if (at(i + 1) == 0xf9 && at(i + 2) == 4)
+                (*data)[i + 3] = char((at(i + 3) & ~0x1c) | (disposal << 2));
+            i = skipSubBlocks(i + 2);
+        } else if (kind == 0x2c) { // image: descriptor, local colour table, LZW size, data
+            qsizetype j = i + 10;
+            if (at(i + 9) & 0x80)
+                j += 3 * (qsizetype(1) << ((at(i + 9) & 7) + 1));
+            i = skipSubBlocks(j + 1);
+        } else {
+            return false;
+        }
+    }
+    return false;
+}
+
 class GifSink : public MuxedSink
 {
 public:
@@ -194,6 +239,7 @@ public:
         m_step = std::max(1, int(std::ceil(fps / std::max(1.0, options.gifMaxFps) - 1e-9)));
         m_outFps = fps / m_step;
         m_background = options.background;
+        m_transparent = options.background.alpha() == 0;
         m_paletteSamples = options.paletteSamples;
         m_trailerOnCancel = true;
         if (!openOutput(path, "gif", error))
@@ -205,7 +251,13 @@ public:
         v->pix_fmt = AV_PIX_FMT_PAL8;
         v->time_base = {1, 100}; // GIF delays are in hundredths of a second
         v->framerate = av_d2q(m_outFps, 100000);
-        int r = avcodec_open2(v, gif, nullptr);
+        AVDictionary *codecOptions = nullptr;
+        // Transparent frames are written whole: the encoder's cropping and its marking of
+        // unchanged pixels as transparent assume each frame is drawn over the last one.
+        if (m_transparent)
+            av_dict_set(&codecOptions, "gifflags", "0", 0);
+        int r = avcodec_open2(v, gif, &codecOptions);
+        av_dict_free(&codecOptions);
         if (r < 0) {
             cancel();
             return fail(error, path, ExportText::tr("cannot start the GIF encoder: %1").arg(avError(r)));
@@ -241,11 +293,11 @@ protected:
         const int index = m_input++;
         if (index % m_step != 0)
             return true;
-        const QImage rgb = opaqueRgb32(frame, m_background);
+        const QImage rgb = pixelsOf(frame);
         if (m_written == 0) {
             QVector<QImage> images = {rgb};
             for (const QImage &sample : m_paletteSamples)
-                images.append(opaqueRgb32(sample, m_background));
+                images.append(pixelsOf(sample));
             m_palette.build(images);
         }
         if (av_frame_make_writable(m_frame.get()) < 0)
@@ -260,9 +312,34 @@ protected:
         return drain(m_video.get(), m_videoStream, m_frame.get(), error);
     }
 
+    // FFmpeg's GIF muxer leaves each frame in place under the next ("do not dispose"), so
+    // pixels that turn transparent would keep showing the last frame: a transparent GIF's frames
+    // are disposed of ("restore to background", clearing to transparent) instead.
+    bool finishFile(const QString &temp, QString *error) override
+    {
+        if (!m_transparent)
+            return true;
+        QFile file(temp);
+        if (!file.open(QIODevice::ReadWrite))
+            return fail(error, m_path, ExportText::tr("cannot write: %1").arg(file.errorString()));
+        QByteArray data = file.readAll();
+        if (!setGifDisposal(&data, 2))
+            return fail(error, m_path, ExportText::tr("cannot write: the GIF encoder wrote an unexpected file"));
+        if (!file.seek(0) || file.write(data) != data.size() || !file.flush())
+            return fail(error, m_path, ExportText::tr("cannot write: %1").arg(file.errorString()));
+        return true;
+    }
+
 private:
+    // RGB32 over the background, or straight ARGB32 for a transparent GIF.
+    QImage pixelsOf(const QImage &frame) const
+    {
+        return m_transparent ? frame.convertToFormat(QImage::Format_ARGB32) : opaqueRgb32(frame, m_background);
+    }
+
     int m_step = 1;
     double m_outFps = 25;
+    bool m_transparent = false;
     QColor m_background;
     GifPalette m_palette;
     QVector<QImage> m_paletteSamples;

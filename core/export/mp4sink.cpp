@@ -1,7 +1,6 @@
 #include "export/videosink.h"
 
 #include "i18n/coretext.h"
-#include "media/audiofeed.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,13 +9,6 @@
 namespace toonface::av {
 
 namespace {
-
-AVRational frameRateOf(double fps)
-{
-    if (std::abs(fps - std::round(fps)) < 1e-9)
-        return {int(std::lround(fps)), 1};
-    return av_d2q(fps, 100000);
-}
 
 class Mp4Sink : public MuxedSink
 {
@@ -71,9 +63,17 @@ public:
             return false;
         }
 
-        if (!audio.isEmpty() && !openAudio(path, audio, options, error)) {
-            cancel();
-            return false;
+        if (!audio.isEmpty()) {
+            const AVCodec *aac = avcodec_find_encoder(AV_CODEC_ID_AAC);
+            if (!aac) {
+                cancel();
+                return fail(error, path, ExportText::tr("cannot write MP4: FFmpeg has no AAC encoder"));
+            }
+            // The 44.1 kHz family stays in it; everything else becomes 48 kHz.
+            if (!openAudio(audio, aac, AV_SAMPLE_FMT_FLTP, {48000, 44100}, options.audioBitRate, error)) {
+                cancel();
+                return false;
+            }
         }
 
         m_frame.reset(av_frame_alloc());
@@ -127,101 +127,21 @@ protected:
             std::memcpy(
                 m_rgb->data[0] + qsizetype(y) * m_rgb->linesize[0], rgb.constScanLine(y), size_t(rgb.width()) * 4);
         sws_scale(m_sws.get(), m_rgb->data, m_rgb->linesize, 0, rgb.height(), m_frame->data, m_frame->linesize);
-        m_frame->pts = m_frames;
+        m_frame->pts = m_videoFrames;
         if (!drain(m_video.get(), m_videoStream, m_frame.get(), error))
             return false;
-        ++m_frames;
+        ++m_videoFrames;
         // Keep the sound level with the pictures so the muxer can interleave them.
-        return encodeAudioUntil(audioSamplesAt(m_frames), false, error);
-    }
-
-    bool finishStreams(QString *error) override
-    {
-        if (!encodeAudioUntil(audioSamplesAt(m_frames), true, error))
-            return false;
-        return !m_audio || drain(m_audio.get(), m_audioStream, nullptr, error);
+        return encodeAudioUntilFrame(m_videoFrames, m_fps, false, error);
     }
 
 private:
-    bool openAudio(const QString &path, const AudioSource &audio, const VideoOptions &options, QString *error)
-    {
-        const AVCodec *aac = avcodec_find_encoder(AV_CODEC_ID_AAC);
-        if (!aac)
-            return fail(error, path, ExportText::tr("cannot write MP4: FFmpeg has no AAC encoder"));
-        m_feed = std::make_unique<AudioFeed>();
-        if (!m_feed->open(audio, error))
-            return false;
-        // The 44.1 kHz family stays in it; everything else becomes 48 kHz.
-        const int rate = m_feed->sourceRate() % 11025 == 0 ? 44100 : 48000;
-        if (!m_feed->start(rate, error))
-            return false;
-        m_audio.reset(avcodec_alloc_context3(aac));
-        AVCodecContext *a = m_audio.get();
-        a->sample_fmt = AV_SAMPLE_FMT_FLTP;
-        a->sample_rate = rate;
-        av_channel_layout_default(&a->ch_layout, 1);
-        a->bit_rate = options.audioBitRate;
-        a->time_base = {1, rate};
-        if (m_fmt->oformat->flags & AVFMT_GLOBALHEADER)
-            a->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
-        const int r = avcodec_open2(a, aac, nullptr);
-        if (r < 0)
-            return fail(error, path, ExportText::tr("cannot start the AAC encoder: %1").arg(avError(r)));
-        m_audioStream = addStream(a, error);
-        if (!m_audioStream)
-            return false;
-        m_audioFrame.reset(av_frame_alloc());
-        m_audioFrame->format = AV_SAMPLE_FMT_FLTP;
-        m_audioFrame->sample_rate = rate;
-        av_channel_layout_default(&m_audioFrame->ch_layout, 1);
-        m_audioFrame->nb_samples = a->frame_size;
-        if (av_frame_get_buffer(m_audioFrame.get(), 0) < 0)
-            return fail(error, path, ExportText::tr("out of memory"));
-        return true;
-    }
-
-    int64_t audioSamplesAt(int frames) const
-    {
-        if (!m_audio)
-            return 0;
-        return av_rescale_q(frames, av_inv_q(frameRateOf(m_fps)), {1, m_audio->sample_rate});
-    }
-
-    // Encodes sound up to sample `until`: whole encoder frames, and at the end a last short one.
-    bool encodeAudioUntil(int64_t until, bool last, QString *error)
-    {
-        if (!m_audio)
-            return true;
-        const int frameSize = m_audio->frame_size;
-        while (m_audioSamples < until) {
-            const int64_t left = until - m_audioSamples;
-            if (left < frameSize && !last)
-                return true;
-            const int n = int(std::min<int64_t>(frameSize, left));
-            if (av_frame_make_writable(m_audioFrame.get()) < 0)
-                return fail(error, m_path, ExportText::tr("out of memory"));
-            m_audioFrame->nb_samples = n;
-            if (!m_feed->read(reinterpret_cast<float *>(m_audioFrame->data[0]), n, error))
-                return false;
-            m_audioFrame->pts = m_audioSamples;
-            if (!drain(m_audio.get(), m_audioStream, m_audioFrame.get(), error))
-                return false;
-            m_audioSamples += n;
-        }
-        return true;
-    }
-
     QSize m_size;
     QSize m_encoded;
-    double m_fps = 25;
     QColor m_background;
     FramePtr m_frame;
     FramePtr m_rgb;
     SwsPtr m_sws;
-    int64_t m_frames = 0;
-    std::unique_ptr<AudioFeed> m_feed;
-    FramePtr m_audioFrame;
-    int64_t m_audioSamples = 0;
 };
 
 } // namespace

@@ -1,6 +1,7 @@
 #include "export/videosink.h"
 
 #include "i18n/coretext.h"
+#include "media/audiofeed.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -10,9 +11,17 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <filesystem>
 
 namespace toonface::av {
+
+AVRational frameRateOf(double fps)
+{
+    if (std::abs(fps - std::round(fps)) < 1e-9)
+        return {int(std::lround(fps)), 1};
+    return av_d2q(fps, 100000);
+}
 
 QImage opaqueRgb32(const QImage &frame, const QColor &background)
 {
@@ -41,6 +50,13 @@ QImage padded(const QImage &rgb32, QSize size)
     return out;
 }
 
+MuxedSink::MuxedSink() = default;
+
+MuxedSink::~MuxedSink()
+{
+    cancel();
+}
+
 bool MuxedSink::addFrame(const QImage &frame, QString *error)
 {
     if (!m_fmt)
@@ -65,6 +81,10 @@ bool MuxedSink::finish(QString *error)
         return fail(error, m_path, ExportText::tr("cannot write: %1").arg(avError(r)));
     }
     closeAll();
+    if (!finishFile(m_temp, error)) {
+        cancel();
+        return false;
+    }
     if (QFileInfo::exists(m_path)) // a replaced file keeps its permissions, as with QSaveFile
         QFile::setPermissions(m_temp, QFile::permissions(m_path));
     std::error_code ec;
@@ -174,6 +194,88 @@ bool MuxedSink::drain(AVCodecContext *ctx, AVStream *stream, AVFrame *frame, QSt
         if (r < 0)
             return fail(error, m_path, ExportText::tr("cannot write: %1").arg(avError(r)));
     }
+}
+
+bool MuxedSink::finishStreams(QString *error)
+{
+    if (!encodeAudioUntilFrame(m_videoFrames, m_fps, true, error))
+        return false;
+    return !m_audio || drain(m_audio.get(), m_audioStream, nullptr, error);
+}
+
+bool MuxedSink::openAudio(const AudioSource &audio, const AVCodec *codec, AVSampleFormat sampleFormat,
+    std::initializer_list<int> rates, int bitRate, QString *error)
+{
+    m_feed = std::make_unique<AudioFeed>();
+    if (!m_feed->open(audio, error))
+        return false;
+    int rate = *rates.begin();
+    if (m_feed->sourceRate() % 11025 == 0 && std::find(rates.begin(), rates.end(), 44100) != rates.end())
+        rate = 44100;
+    if (!m_feed->start(rate, error))
+        return false;
+    m_audio.reset(avcodec_alloc_context3(codec));
+    AVCodecContext *a = m_audio.get();
+    a->sample_fmt = sampleFormat;
+    a->sample_rate = rate;
+    av_channel_layout_default(&a->ch_layout, 1);
+    a->bit_rate = bitRate;
+    a->time_base = {1, rate};
+    if (m_fmt->oformat->flags & AVFMT_GLOBALHEADER)
+        a->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+    const int r = avcodec_open2(a, codec, nullptr);
+    if (r < 0)
+        return fail(error, m_path,
+            ExportText::tr("cannot start the %1 encoder: %2").arg(QString::fromLatin1(codec->name), avError(r)));
+    m_audioStream = addStream(a, error);
+    if (!m_audioStream)
+        return false;
+    m_audioFrame.reset(av_frame_alloc());
+    m_audioFrame->format = sampleFormat;
+    m_audioFrame->sample_rate = rate;
+    av_channel_layout_default(&m_audioFrame->ch_layout, 1);
+    // PCM takes frames of any length.
+    m_audioFrame->nb_samples = a->frame_size > 0 ? a->frame_size : 1024;
+    if (av_frame_get_buffer(m_audioFrame.get(), 0) < 0)
+        return fail(error, m_path, ExportText::tr("out of memory"));
+    return true;
+}
+
+bool MuxedSink::encodeAudioUntilFrame(int64_t frames, double fps, bool last, QString *error)
+{
+    if (!m_audio)
+        return true;
+    const int64_t until = av_rescale_q(frames, av_inv_q(frameRateOf(fps)), {1, m_audio->sample_rate});
+    const int frameSize = m_audio->frame_size > 0 ? m_audio->frame_size : 1024;
+    const bool fixedSize
+        = m_audio->frame_size > 0 && !(m_audio->codec->capabilities & AV_CODEC_CAP_VARIABLE_FRAME_SIZE);
+    while (m_audioSamples < until) {
+        const int64_t left = until - m_audioSamples;
+        if (left < frameSize && !last)
+            return true;
+        const int n = int(std::min<int64_t>(frameSize, left));
+        if (av_frame_make_writable(m_audioFrame.get()) < 0)
+            return fail(error, m_path, ExportText::tr("out of memory"));
+        // An encoder of fixed frames (Opus) takes the last one padded with silence.
+        m_audioFrame->nb_samples
+            = fixedSize && !(m_audio->codec->capabilities & AV_CODEC_CAP_SMALL_LAST_FRAME) ? frameSize : n;
+        m_audioBuffer.fill(0.0f, m_audioFrame->nb_samples);
+        if (!m_feed->read(m_audioBuffer.data(), n, error))
+            return false;
+        if (m_audio->sample_fmt == AV_SAMPLE_FMT_S16) {
+            auto *out = reinterpret_cast<int16_t *>(m_audioFrame->data[0]);
+            for (int i = 0; i < m_audioFrame->nb_samples; ++i)
+                out[i] = int16_t(std::lround(std::clamp(m_audioBuffer[i], -1.0f, 1.0f) * 32767.0f));
+        } else { // mono float, planar or not, is one plane
+            std::copy_n(
+                m_audioBuffer.constData(), m_audioFrame->nb_samples, reinterpret_cast<float *>(m_audioFrame->data[0]));
+        }
+        m_audioFrame->pts = m_audioSamples;
+        if (!drain(m_audio.get(), m_audioStream, m_audioFrame.get(), error))
+            return false;
+        m_audioSamples += n;
+    }
+    return true;
 }
 
 void MuxedSink::closeAll()

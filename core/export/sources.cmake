@@ -5,6 +5,9 @@ list(APPEND TOONFACE_CORE_SOURCES
   export/framerenderer.h export/framerenderer.cpp
   export/videoencoder.h export/videoencoder.cpp
   export/videosink.h export/muxedsink.cpp export/mp4sink.cpp export/gifsink.cpp export/pngsink.cpp
+  export/alphasink.cpp
+  export/exportbackground.h export/exportbackground.cpp
+  export/exportpreset.h export/exportpreset.cpp
   export/smilexport.h export/smilexport.cpp export/smilutil.h
   export/smilchannels.h export/smilchannels.cpp
   export/smilkeys.h export/smilkeys.cpp

@@ -21,7 +21,25 @@ std::optional<VideoFormat> videoFormatForPath(const QString &path)
         return VideoFormat::Mp4;
     if (ext == u"gif")
         return VideoFormat::Gif;
+    if (ext == u"webm")
+        return VideoFormat::WebM;
+    if (ext == u"mov")
+        return VideoFormat::Mov;
+    if (ext == u"apng")
+        return VideoFormat::Apng;
+    if (ext == u"webp")
+        return VideoFormat::WebP;
     return std::nullopt;
+}
+
+bool videoFormatHasAlpha(VideoFormat format)
+{
+    return format != VideoFormat::Mp4 && format != VideoFormat::Gif;
+}
+
+bool videoFormatHasSound(VideoFormat format)
+{
+    return format == VideoFormat::Mp4 || format == VideoFormat::WebM || format == VideoFormat::Mov;
 }
 
 struct VideoWriter::Private
@@ -67,6 +85,10 @@ bool VideoWriter::open(const QString &path, VideoFormat format, QSize size, doub
     case VideoFormat::Mp4: d->sink = openMp4Sink(path, size, fps, audio, options, &d->encoded, error); break;
     case VideoFormat::Gif: d->sink = openGifSink(path, size, fps, options, &d->outFps, error); break;
     case VideoFormat::PngSequence: d->sink = openPngSink(path, size, error); break;
+    case VideoFormat::WebM:
+    case VideoFormat::Mov:
+    case VideoFormat::Apng:
+    case VideoFormat::WebP: d->sink = openAlphaSink(path, format, size, fps, audio, options, &d->encoded, error); break;
     }
     return d->sink != nullptr;
 }

@@ -18,12 +18,22 @@ namespace toonface {
 enum class VideoFormat {
     Mp4, // H.264 (libx264, yuv420p) + AAC, moov atom first (+faststart)
     Gif, // animated GIF, one 255-colour palette for the whole file, looping
-    PngSequence, // a folder of frame_00001.png, frame_00002.png, ...
+    PngSequence, // a folder of frame_00001.png, frame_00002.png, ... with their alpha
+    WebM, // VP9 (libvpx-vp9, yuva420p: the alpha in Matroska's block additions) + Opus
+    Mov, // ProRes 4444 (prores_ks, yuva444p10le) with alpha + 16-bit PCM, for video editors
+    Apng, // animated PNG (RGBA), looping, silent
+    WebP, // animated WebP (libwebp, lossy colour with lossless alpha), looping, silent
 };
 
-// .mp4 -> Mp4, .gif -> Gif (any case); a path ending in '/' or naming an existing folder ->
-// PngSequence; nullopt otherwise.
+// .mp4 -> Mp4, .gif -> Gif, .webm -> WebM, .mov -> Mov, .apng -> Apng, .webp -> WebP (any
+// case); a path ending in '/' or naming an existing folder -> PngSequence; nullopt otherwise.
 std::optional<VideoFormat> videoFormatForPath(const QString &path);
+
+// Whether the format keeps each pixel's alpha (PNG, WebM, MOV, APNG, WebP); GIF keeps one
+// transparent colour (VideoOptions::background transparent); MP4 has none.
+bool videoFormatHasAlpha(VideoFormat format);
+// Whether the format carries sound (MP4, WebM, MOV).
+bool videoFormatHasSound(VideoFormat format);
 
 struct VideoOptions
 {
@@ -34,9 +44,17 @@ struct VideoOptions
     // Encoder threads; 0 lets the encoder use every core.
     int threads = 0;
     int audioBitRate = 96000;
-    // MP4 and GIF have no alpha: transparent pixels are composed over this colour. PNG frames
-    // keep their alpha.
+    // VP9's constant quality (WebM): 0 (best) .. 63; higher makes smaller files.
+    int vp9Crf = 32;
+    // WebP's quality: 0 .. 100 (best); lower makes smaller files.
+    int webpQuality = 80;
+    // MP4 has no alpha: transparent pixels are composed over this colour. A GIF does the same
+    // unless the colour is transparent (alpha 0): then pixels less than half opaque become its
+    // transparent colour and each frame replaces the last whole. The formats with alpha keep it.
     QColor background = Qt::white;
+    // WebM keeps its alpha unless this is false (frames known to be opaque: a colour or photo
+    // behind the face), when it is plain yuv420p, smaller and read by every player.
+    bool keepAlpha = true;
     // A GIF keeps every k-th frame, k the smallest integer with fps / k <= gifMaxFps (GIF
     // delays are whole hundredths and browsers slow down delays under 0.02 s).
     double gifMaxFps = 25;
@@ -47,7 +65,7 @@ struct VideoOptions
 };
 
 // Writes frames given as QImages at a fixed rate, with optional sound, as an MP4, an animated
-// GIF or a PNG sequence.
+// GIF, a PNG sequence, a WebM, a MOV, an animated PNG or an animated WebP.
 //
 // The output appears only on a successful finish(): MP4 and GIF are written to a hidden
 // temporary file next to the target and renamed over it at the end; PNG frames are written
@@ -67,7 +85,7 @@ public:
 
     // Starts a video of frames of `size` at `fps` frames a second. MP4 needs an even size:
     // an odd width or height is padded by one pixel (repeating the last column or row).
-    // The audio is encoded into MP4 only (GIF and PNG have no sound) and cut or padded with
+    // The audio is encoded into MP4, WebM and MOV only (the others have no sound) and cut or padded with
     // silence to the video's length (frames / fps). For a PNG sequence `path` is the folder,
     // created when missing.
     // On failure returns false and sets *error to "<path>: <problem>" (unwritable folder,
@@ -89,7 +107,7 @@ public:
 
     bool isOpen() const;
     int framesAdded() const;
-    // The size of the encoded pictures: MP4 rounds each side up to even.
+    // The size of the encoded pictures: MP4 and WebM round each side up to even.
     QSize encodedSize() const;
     // Frames per second of the output (a GIF may drop frames, see VideoOptions::gifMaxFps).
     double outputFps() const;

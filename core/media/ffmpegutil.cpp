@@ -8,6 +8,8 @@
 #include <cerrno>
 #include <mutex>
 
+#include <cstring>
+
 namespace toonface::av {
 
 QString avError(int code)
@@ -61,6 +63,13 @@ CodecPtr openDecoder(AVFormatContext *input, AVMediaType type, int *streamIndex,
         return {};
     const AVStream *stream = input->streams[index];
     const AVCodec *codec = avcodec_find_decoder(stream->codecpar->codec_id);
+    // FFmpeg's own VP9 decoder drops the alpha that WebM keeps beside the picture; libvpx's
+    // decodes it too.
+    const AVDictionaryEntry *alphaMode = av_dict_get(stream->metadata, "alpha_mode", nullptr, 0);
+    if (stream->codecpar->codec_id == AV_CODEC_ID_VP9 && alphaMode && std::strcmp(alphaMode->value, "0") != 0) {
+        if (const AVCodec *withAlpha = avcodec_find_decoder_by_name("libvpx-vp9"))
+            codec = withAlpha;
+    }
     if (!codec) {
         *problem = VideoText::tr("no decoder for its %1 codec '%2'")
                        .arg(QString::fromLatin1(av_get_media_type_string(type)),

@@ -107,9 +107,14 @@ std::optional<MediaInfo> probeMedia(const QString &path, QString *error)
     int64_t audioSamples = 0;
     auto receive = [&](AVCodecContext *ctx, bool isVideo) {
         while (avcodec_receive_frame(ctx, frame.get()) >= 0) {
-            if (isVideo)
-                ++info.frameCount;
-            else
+            if (isVideo) {
+                if (info.frameCount++ == 0) {
+                    const AVPixFmtDescriptor *desc = av_pix_fmt_desc_get(AVPixelFormat(frame->format));
+                    info.hasAlpha = desc && (desc->flags & AV_PIX_FMT_FLAG_ALPHA);
+                    if (desc)
+                        info.pixelFormat = QString::fromLatin1(desc->name);
+                }
+            } else
                 audioSamples += frame->nb_samples;
             av_frame_unref(frame.get());
         }
@@ -210,7 +215,9 @@ std::optional<QImage> readVideoFrame(const QString &path, int index, QString *er
     auto receive = [&] {
         while (!result && avcodec_receive_frame(video.get(), frame.get()) >= 0) {
             if (seen++ == index) {
-                QImage image(frame->width, frame->height, QImage::Format_RGB32);
+                const AVPixFmtDescriptor *desc = av_pix_fmt_desc_get(AVPixelFormat(frame->format));
+                const bool alpha = desc && (desc->flags & AV_PIX_FMT_FLAG_ALPHA);
+                QImage image(frame->width, frame->height, alpha ? QImage::Format_ARGB32 : QImage::Format_RGB32);
                 FramePtr rgb(av_frame_alloc());
                 rgb->format = AV_PIX_FMT_RGB32;
                 rgb->width = frame->width;

@@ -19,7 +19,8 @@ struct MediaInfo
     int height = 0;
     double videoDurationS = 0; // from the first frame's start to the last frame's end
     QString videoCodec; // "h264", "gif", "png"
-    QString pixelFormat; // "yuv420p", "pal8", ...
+    QString pixelFormat; // "yuv420p", "pal8", ... (of the decoded pictures when they differ)
+    bool hasAlpha = false; // the decoded pictures have an alpha channel (FFmpeg decodes GIF so)
     bool hasAudio = false;
     double audioDurationS = 0; // decoded samples / sample rate
     int audioSampleRate = 0;
@@ -35,8 +36,9 @@ std::optional<MediaInfo> probeMedia(const QString &path, QString *error);
 // packet is whole. Reads the packets to the end without decoding them.
 QString mediaDamage(const QString &path);
 
-// Frame `index` (0-based, in display order) of a video file as an RGB32 image; nullopt with
-// *error "<path>: <problem>" when the file cannot be decoded or has fewer frames.
+// Frame `index` (0-based, in display order) of a video file as an RGB32 image, or an ARGB32 one
+// when the pictures have alpha (WebM's VP9 alpha included); nullopt with *error "<path>:
+// <problem>" when the file cannot be decoded or has fewer frames.
 std::optional<QImage> readVideoFrame(const QString &path, int index, QString *error);
 
 // The sound of a file (audio, or a video's sound track) decoded, mixed down to mono and

@@ -1133,10 +1133,6 @@
         <translation>无法写入 MP4：FFmpeg 没有 AAC 编码器</translation>
     </message>
     <message>
-        <source>cannot start the AAC encoder: %1</source>
-        <translation>无法启动 AAC 编码器：%1</translation>
-    </message>
-    <message>
         <source>the writer is closed</source>
         <translation>写入器已关闭</translation>
     </message>
@@ -1307,6 +1303,70 @@
     <message>
         <source>the drawing is nested more than %1 levels deep</source>
         <translation>绘图的嵌套层级超过 %1 层</translation>
+    </message>
+    <message>
+        <source>cannot write %1: FFmpeg has no %2 encoder</source>
+        <translation>无法写入 %1：FFmpeg 没有 %2 编码器</translation>
+    </message>
+    <message>
+        <source>unsupported size %1x%2 (%3 takes 2 to 8192 pixels a side)</source>
+        <translation>不支持的尺寸 %1x%2（%3 每边需 2 到 8192 像素）</translation>
+    </message>
+    <message>
+        <source>cannot start the %1 encoder at %2x%3: %4</source>
+        <translation>无法以 %2x%3 启动 %1 编码器：%4</translation>
+    </message>
+    <message>
+        <source>cannot convert %1x%2 RGBA for %3</source>
+        <translation>无法为 %3 转换 %1x%2 的 RGBA</translation>
+    </message>
+    <message>
+        <source>the start (%1 s) and duration (%2 s) must be 0 or more</source>
+        <translation>开始（%1 秒）与长度（%2 秒）必须为 0 或以上</translation>
+    </message>
+    <message>
+        <source>SVG and HTML play the whole animation; a start or duration needs a video or picture format</source>
+        <translation>SVG 与 HTML 会播放整段动画；开始或长度需要视频或图片格式</translation>
+    </message>
+    <message>
+        <source>the start (%1 s) is past the end of the animation (%2 s)</source>
+        <translation>开始（%1 秒）已超过动画结尾（%2 秒）</translation>
+    </message>
+    <message>
+        <source>MP4 cannot be transparent: choose WebM, MOV, WebP, APNG, GIF or PNG frames, or a background colour or photo</source>
+        <translation>MP4 无法透明：请选择 WebM、MOV、WebP、APNG、GIF 或 PNG 帧，或选择背景颜色或照片</translation>
+    </message>
+    <message>
+        <source>SVG and HTML are drawn without a background; a background colour or photo needs a video or picture format</source>
+        <translation>SVG 与 HTML 不绘制背景；背景颜色或照片需要视频或图片格式</translation>
+    </message>
+    <message>
+        <source>the background colour is not valid</source>
+        <translation>背景颜色无效</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a background: give a colour (a name such as white, or #rrggbb), transparent, or an existing image file</source>
+        <translation>“%1”不是背景：请给颜色（例如 white 这样的名称，或 #rrggbb）、transparent，或现有的图像文件</translation>
+    </message>
+    <message>
+        <source>the %1 preset writes %2: name the output .%3</source>
+        <translation>%1 预设会写出 %2：请将输出命名为 .%3</translation>
+    </message>
+    <message>
+        <source>the clip is %1 s long, the %2 preset allows %3 s (%4 s too long): export a stretch of at most %3 s</source>
+        <translation>片段长 %1 秒，%2 预设最多 %3 秒（超出 %4 秒）：请导出最多 %3 秒的一段</translation>
+    </message>
+    <message>
+        <source>at the lowest quality the file is %1 KB, the %2 preset allows %3 KB (%4 KB over): export a shorter stretch or a lower frame rate</source>
+        <translation>即使最低画质，文件仍有 %1 KB，%2 预设最多 %3 KB（超出 %4 KB）：请导出较短的一段或较低的帧率</translation>
+    </message>
+    <message>
+        <source>cannot write: the GIF encoder wrote an unexpected file</source>
+        <translation>无法写入：GIF 编码器写出了非预期的文件</translation>
+    </message>
+    <message>
+        <source>cannot start the %1 encoder: %2</source>
+        <translation>无法启动 %1 编码器：%2</translation>
     </message>
 </context>
 <context>
@@ -1480,6 +1540,122 @@
     <message>
         <source>Close</source>
         <translation>关闭</translation>
+    </message>
+    <message>
+        <source>WebM video (with transparency)</source>
+        <translation>WebM 视频（含透明）</translation>
+    </message>
+    <message>
+        <source>MOV ProRes 4444 (with transparency, for video editors)</source>
+        <translation>MOV ProRes 4444（含透明，供视频剪辑软件使用）</translation>
+    </message>
+    <message>
+        <source>Animated PNG</source>
+        <translation>动态 PNG</translation>
+    </message>
+    <message>
+        <source>Animated WebP</source>
+        <translation>动态 WebP</translation>
+    </message>
+    <message>
+        <source>Telegram sticker (512 px, up to 3 s and 256 KB)</source>
+        <translation>Telegram 贴纸（512 像素，最多 3 秒与 256 KB）</translation>
+    </message>
+    <message>
+        <source>Emoji (100 px, up to 3 s and 64 KB)</source>
+        <translation>表情符号（100 像素，最多 3 秒与 64 KB）</translation>
+    </message>
+    <message>
+        <source>Slide overlay (1080 px, with sound)</source>
+        <translation>幻灯片叠加（1080 像素，含声音）</translation>
+    </message>
+    <message>
+        <source>WebM video (*.webm)</source>
+        <translation>WebM 视频 (*.webm)</translation>
+    </message>
+    <message>
+        <source>MOV video (*.mov)</source>
+        <translation>MOV 视频 (*.mov)</translation>
+    </message>
+    <message>
+        <source>Animated PNG (*.apng)</source>
+        <translation>动态 PNG (*.apng)</translation>
+    </message>
+    <message>
+        <source>Animated WebP (*.webp)</source>
+        <translation>动态 WebP (*.webp)</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Ready-made settings for a place where talking faces are shared; the export keeps to its limits or says why it cannot</source>
+        <translation>为分享说话脸的地方准备好的设置；导出会遵守其限制，或说明为何无法做到</translation>
+    </message>
+    <message>
+        <source>Transparent</source>
+        <translation>透明</translation>
+    </message>
+    <message>
+        <source>Colour…</source>
+        <translation>颜色…</translation>
+    </message>
+    <message>
+        <source>Photo…</source>
+        <translation>照片…</translation>
+    </message>
+    <message>
+        <source>Automatic: transparent for WebM, MOV, APNG, WebP and PNG frames, white for MP4 and GIF</source>
+        <translation>自动：WebM、MOV、APNG、WebP 与 PNG 帧为透明，MP4 与 GIF 为白色</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+    <message>
+        <source>To the end</source>
+        <translation>到结尾</translation>
+    </message>
+    <message>
+        <source>for</source>
+        <translation>长度</translation>
+    </message>
+    <message>
+        <source>&amp;Preset:</source>
+        <translation>预设(&amp;P)：</translation>
+    </message>
+    <message>
+        <source>&amp;Background:</source>
+        <translation>背景(&amp;B)：</translation>
+    </message>
+    <message>
+        <source>Fro&amp;m:</source>
+        <translation>从(&amp;M)：</translation>
+    </message>
+    <message>
+        <source>Colour: %1</source>
+        <translation>颜色：%1</translation>
+    </message>
+    <message>
+        <source>Photo: %1</source>
+        <translation>照片：%1</translation>
+    </message>
+    <message>
+        <source>Background Colour</source>
+        <translation>背景颜色</translation>
+    </message>
+    <message>
+        <source>Background Photo</source>
+        <translation>背景照片</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.webp *.bmp)</source>
+        <translation>图像 (*.png *.jpg *.jpeg *.webp *.bmp)</translation>
+    </message>
+    <message>
+        <source>cannot export: %1</source>
+        <translation>无法导出：%1</translation>
     </message>
 </context>
 <context>
@@ -4674,24 +4850,12 @@ The points are unchanged.</source>
         <translation>同时将结果保存为项目。</translation>
     </message>
     <message>
-        <source>OUT.svg, OUT.html, OUT.mp4, OUT.gif, or DIR/ for PNG frames.</source>
-        <translation>OUT.svg、OUT.html、OUT.mp4、OUT.gif，或存放 PNG 帧的 DIR/。</translation>
-    </message>
-    <message>
         <source>A photo or a project; or a video clip, whose neutral frame&apos;s face it animates.</source>
         <translation>照片或项目；或视频片段，以其中性帧的人脸制作动画。</translation>
     </message>
     <message>
         <source>animate takes one photo or project (usage: toonface-cli %1)</source>
         <translation>animate 只接受一张照片或一个项目（用法：toonface-cli %1）</translation>
-    </message>
-    <message>
-        <source>animate needs -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/</source>
-        <translation>animate 需要 -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/</translation>
-    </message>
-    <message>
-        <source>cannot tell the output type of &apos;%1&apos;: use .svg, .html, .mp4, .gif or a folder ending in /</source>
-        <translation>无法判断“%1”的输出类型：请使用 .svg、.html、.mp4、.gif 或以 / 结尾的文件夹</translation>
     </message>
     <message>
         <source>animate needs exactly one of --audio with --script, --say TEXT or --video CLIP (a project without them plays its own timeline)</source>
@@ -4740,10 +4904,6 @@ The points are unchanged.</source>
     <message>
         <source>exporting: %1 %</source>
         <translation>正在导出：%1 %</translation>
-    </message>
-    <message>
-        <source>Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF or PNG frames).</source>
-        <translation>让照片或项目中的人脸说话，并导出动画（SVG、HTML、MP4、GIF 或 PNG 帧）。</translation>
     </message>
     <message>
         <source>The cartoon SVG to write.</source>
@@ -5096,6 +5256,58 @@ Every job of the editor, with no display.</source>
     <message>
         <source>%1 uses files outside its folder: %2</source>
         <translation>%1 使用了其文件夹以外的文件：%2</translation>
+    </message>
+    <message>
+        <source>OUT.svg, OUT.html, OUT.mp4, OUT.gif, OUT.webm, OUT.mov, OUT.apng, OUT.webp, or DIR/ for PNG frames.</source>
+        <translation>OUT.svg、OUT.html、OUT.mp4、OUT.gif、OUT.webm、OUT.mov、OUT.apng、OUT.webp，或 PNG 帧的 DIR/。</translation>
+    </message>
+    <message>
+        <source>What is behind the face in a video or picture: a colour (white, #rrggbb), transparent, or a photo (default: transparent for WebM, MOV, APNG, WebP and PNG frames, white for MP4 and GIF).</source>
+        <translation>视频或图片中脸后面的东西：颜色（white、#rrggbb）、transparent（透明）或照片（默认：WebM、MOV、APNG、WebP 与 PNG 帧为透明，MP4 与 GIF 为白色）。</translation>
+    </message>
+    <message>
+        <source>Export for a place with limits: %1.</source>
+        <translation>为有限制的地方导出：%1。</translation>
+    </message>
+    <message>
+        <source>Video and pictures: begin this many seconds into the animation.</source>
+        <translation>视频与图片：从动画的这个秒数开始。</translation>
+    </message>
+    <message>
+        <source>Video and pictures: export this many seconds (default: to the end).</source>
+        <translation>视频与图片：导出这么多秒（默认：到结尾）。</translation>
+    </message>
+    <message>
+        <source>animate needs -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|OUT.webm|DIR/ ...</source>
+        <translation>animate 需要 -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|OUT.webm|DIR/ ...</translation>
+    </message>
+    <message>
+        <source>cannot tell the output type of &apos;%1&apos;: use .svg, .html, .mp4, .gif, .webm, .mov, .apng, .webp or a folder ending in /</source>
+        <translation>无法判断“%1”的输出类型：请使用 .svg、.html、.mp4、.gif、.webm、.mov、.apng、.webp 或以 / 结尾的文件夹</translation>
+    </message>
+    <message>
+        <source>unknown --preset &apos;%1&apos; (%2)</source>
+        <translation>未知的 --preset“%1”（%2）</translation>
+    </message>
+    <message>
+        <source>the %1 preset writes %2: name the output .%3, not &apos;%4&apos;</source>
+        <translation>%1 预设会写出 %2：请将输出命名为 .%3，而不是“%4”</translation>
+    </message>
+    <message>
+        <source>--%1 takes a number of seconds (more than 0 for --duration), not &apos;%2&apos;</source>
+        <translation>--%1 需要秒数（--duration 需大于 0），而不是“%2”</translation>
+    </message>
+    <message>
+        <source>--%1 needs a video or picture output; SVG and HTML play the whole animation</source>
+        <translation>--%1 需要视频或图片输出；SVG 与 HTML 会播放整段动画</translation>
+    </message>
+    <message>
+        <source>%1; nothing was written (--start and --duration choose a stretch)</source>
+        <translation>%1；未写入任何内容（--start 与 --duration 可选取一段）</translation>
+    </message>
+    <message>
+        <source>Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF, WebM, MOV, APNG, WebP or PNG frames).</source>
+        <translation>让照片或项目中的脸说话，并导出动画（SVG、HTML、MP4、GIF、WebM、MOV、APNG、WebP 或 PNG 帧）。</translation>
     </message>
 </context>
 </TS>

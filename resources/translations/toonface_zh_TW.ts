@@ -1133,10 +1133,6 @@
         <translation>無法寫入 MP4：FFmpeg 沒有 AAC 編碼器</translation>
     </message>
     <message>
-        <source>cannot start the AAC encoder: %1</source>
-        <translation>無法啟動 AAC 編碼器：%1</translation>
-    </message>
-    <message>
         <source>the writer is closed</source>
         <translation>寫入器已關閉</translation>
     </message>
@@ -1307,6 +1303,70 @@
     <message>
         <source>the drawing is nested more than %1 levels deep</source>
         <translation>繪圖的巢狀層級超過 %1 層</translation>
+    </message>
+    <message>
+        <source>cannot write %1: FFmpeg has no %2 encoder</source>
+        <translation>無法寫入 %1：FFmpeg 沒有 %2 編碼器</translation>
+    </message>
+    <message>
+        <source>unsupported size %1x%2 (%3 takes 2 to 8192 pixels a side)</source>
+        <translation>不支援的尺寸 %1x%2（%3 每邊需 2 到 8192 像素）</translation>
+    </message>
+    <message>
+        <source>cannot start the %1 encoder at %2x%3: %4</source>
+        <translation>無法以 %2x%3 啟動 %1 編碼器：%4</translation>
+    </message>
+    <message>
+        <source>cannot convert %1x%2 RGBA for %3</source>
+        <translation>無法為 %3 轉換 %1x%2 的 RGBA</translation>
+    </message>
+    <message>
+        <source>the start (%1 s) and duration (%2 s) must be 0 or more</source>
+        <translation>開始（%1 秒）與長度（%2 秒）必須為 0 或以上</translation>
+    </message>
+    <message>
+        <source>SVG and HTML play the whole animation; a start or duration needs a video or picture format</source>
+        <translation>SVG 與 HTML 會播放整段動畫；開始或長度需要影片或圖片格式</translation>
+    </message>
+    <message>
+        <source>the start (%1 s) is past the end of the animation (%2 s)</source>
+        <translation>開始（%1 秒）已超過動畫結尾（%2 秒）</translation>
+    </message>
+    <message>
+        <source>MP4 cannot be transparent: choose WebM, MOV, WebP, APNG, GIF or PNG frames, or a background colour or photo</source>
+        <translation>MP4 無法透明：請選擇 WebM、MOV、WebP、APNG、GIF 或 PNG 影格，或選擇背景顏色或照片</translation>
+    </message>
+    <message>
+        <source>SVG and HTML are drawn without a background; a background colour or photo needs a video or picture format</source>
+        <translation>SVG 與 HTML 不繪製背景；背景顏色或照片需要影片或圖片格式</translation>
+    </message>
+    <message>
+        <source>the background colour is not valid</source>
+        <translation>背景顏色無效</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a background: give a colour (a name such as white, or #rrggbb), transparent, or an existing image file</source>
+        <translation>「%1」不是背景：請給顏色（例如 white 這樣的名稱，或 #rrggbb）、transparent，或現有的影像檔</translation>
+    </message>
+    <message>
+        <source>the %1 preset writes %2: name the output .%3</source>
+        <translation>%1 預設會寫出 %2：請將輸出命名為 .%3</translation>
+    </message>
+    <message>
+        <source>the clip is %1 s long, the %2 preset allows %3 s (%4 s too long): export a stretch of at most %3 s</source>
+        <translation>片段長 %1 秒，%2 預設最多 %3 秒（超出 %4 秒）：請匯出最多 %3 秒的一段</translation>
+    </message>
+    <message>
+        <source>at the lowest quality the file is %1 KB, the %2 preset allows %3 KB (%4 KB over): export a shorter stretch or a lower frame rate</source>
+        <translation>即使最低畫質，檔案仍有 %1 KB，%2 預設最多 %3 KB（超出 %4 KB）：請匯出較短的一段或較低的影格率</translation>
+    </message>
+    <message>
+        <source>cannot write: the GIF encoder wrote an unexpected file</source>
+        <translation>無法寫入：GIF 編碼器寫出了非預期的檔案</translation>
+    </message>
+    <message>
+        <source>cannot start the %1 encoder: %2</source>
+        <translation>無法啟動 %1 編碼器：%2</translation>
     </message>
 </context>
 <context>
@@ -1480,6 +1540,122 @@
     <message>
         <source>Close</source>
         <translation>關閉</translation>
+    </message>
+    <message>
+        <source>WebM video (with transparency)</source>
+        <translation>WebM 影片（含透明）</translation>
+    </message>
+    <message>
+        <source>MOV ProRes 4444 (with transparency, for video editors)</source>
+        <translation>MOV ProRes 4444（含透明，供影片剪輯軟體使用）</translation>
+    </message>
+    <message>
+        <source>Animated PNG</source>
+        <translation>動態 PNG</translation>
+    </message>
+    <message>
+        <source>Animated WebP</source>
+        <translation>動態 WebP</translation>
+    </message>
+    <message>
+        <source>Telegram sticker (512 px, up to 3 s and 256 KB)</source>
+        <translation>Telegram 貼圖（512 像素，最多 3 秒與 256 KB）</translation>
+    </message>
+    <message>
+        <source>Emoji (100 px, up to 3 s and 64 KB)</source>
+        <translation>表情符號（100 像素，最多 3 秒與 64 KB）</translation>
+    </message>
+    <message>
+        <source>Slide overlay (1080 px, with sound)</source>
+        <translation>簡報疊加（1080 像素，含聲音）</translation>
+    </message>
+    <message>
+        <source>WebM video (*.webm)</source>
+        <translation>WebM 影片 (*.webm)</translation>
+    </message>
+    <message>
+        <source>MOV video (*.mov)</source>
+        <translation>MOV 影片 (*.mov)</translation>
+    </message>
+    <message>
+        <source>Animated PNG (*.apng)</source>
+        <translation>動態 PNG (*.apng)</translation>
+    </message>
+    <message>
+        <source>Animated WebP (*.webp)</source>
+        <translation>動態 WebP (*.webp)</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>無</translation>
+    </message>
+    <message>
+        <source>Ready-made settings for a place where talking faces are shared; the export keeps to its limits or says why it cannot</source>
+        <translation>為分享說話臉的地方準備好的設定；匯出會遵守其限制，或說明為何無法做到</translation>
+    </message>
+    <message>
+        <source>Transparent</source>
+        <translation>透明</translation>
+    </message>
+    <message>
+        <source>Colour…</source>
+        <translation>顏色…</translation>
+    </message>
+    <message>
+        <source>Photo…</source>
+        <translation>照片…</translation>
+    </message>
+    <message>
+        <source>Automatic: transparent for WebM, MOV, APNG, WebP and PNG frames, white for MP4 and GIF</source>
+        <translation>自動：WebM、MOV、APNG、WebP 與 PNG 影格為透明，MP4 與 GIF 為白色</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+    <message>
+        <source>To the end</source>
+        <translation>到結尾</translation>
+    </message>
+    <message>
+        <source>for</source>
+        <translation>長度</translation>
+    </message>
+    <message>
+        <source>&amp;Preset:</source>
+        <translation>預設(&amp;P)：</translation>
+    </message>
+    <message>
+        <source>&amp;Background:</source>
+        <translation>背景(&amp;B)：</translation>
+    </message>
+    <message>
+        <source>Fro&amp;m:</source>
+        <translation>從(&amp;M)：</translation>
+    </message>
+    <message>
+        <source>Colour: %1</source>
+        <translation>顏色：%1</translation>
+    </message>
+    <message>
+        <source>Photo: %1</source>
+        <translation>照片：%1</translation>
+    </message>
+    <message>
+        <source>Background Colour</source>
+        <translation>背景顏色</translation>
+    </message>
+    <message>
+        <source>Background Photo</source>
+        <translation>背景照片</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.webp *.bmp)</source>
+        <translation>影像 (*.png *.jpg *.jpeg *.webp *.bmp)</translation>
+    </message>
+    <message>
+        <source>cannot export: %1</source>
+        <translation>無法匯出：%1</translation>
     </message>
 </context>
 <context>
@@ -4674,24 +4850,12 @@ The points are unchanged.</source>
         <translation>同時將結果儲存為專案。</translation>
     </message>
     <message>
-        <source>OUT.svg, OUT.html, OUT.mp4, OUT.gif, or DIR/ for PNG frames.</source>
-        <translation>OUT.svg、OUT.html、OUT.mp4、OUT.gif，或 PNG 影格用的 DIR/。</translation>
-    </message>
-    <message>
         <source>A photo or a project; or a video clip, whose neutral frame&apos;s face it animates.</source>
         <translation>照片或專案；或影片片段，以其中性影格的臉製作動畫。</translation>
     </message>
     <message>
         <source>animate takes one photo or project (usage: toonface-cli %1)</source>
         <translation>animate 只接受一張照片或一個專案（用法：toonface-cli %1）</translation>
-    </message>
-    <message>
-        <source>animate needs -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/</source>
-        <translation>animate 需要 -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|DIR/</translation>
-    </message>
-    <message>
-        <source>cannot tell the output type of &apos;%1&apos;: use .svg, .html, .mp4, .gif or a folder ending in /</source>
-        <translation>無法判斷「%1」的輸出類型：請使用 .svg、.html、.mp4、.gif 或以 / 結尾的資料夾</translation>
     </message>
     <message>
         <source>animate needs exactly one of --audio with --script, --say TEXT or --video CLIP (a project without them plays its own timeline)</source>
@@ -4740,10 +4904,6 @@ The points are unchanged.</source>
     <message>
         <source>exporting: %1 %</source>
         <translation>正在匯出：%1 %</translation>
-    </message>
-    <message>
-        <source>Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF or PNG frames).</source>
-        <translation>讓照片或專案中的臉說話，並匯出動畫（SVG、HTML、MP4、GIF 或 PNG 影格）。</translation>
     </message>
     <message>
         <source>The cartoon SVG to write.</source>
@@ -5096,6 +5256,58 @@ Every job of the editor, with no display.</source>
     <message>
         <source>%1 uses files outside its folder: %2</source>
         <translation>%1 使用了其資料夾以外的檔案：%2</translation>
+    </message>
+    <message>
+        <source>OUT.svg, OUT.html, OUT.mp4, OUT.gif, OUT.webm, OUT.mov, OUT.apng, OUT.webp, or DIR/ for PNG frames.</source>
+        <translation>OUT.svg、OUT.html、OUT.mp4、OUT.gif、OUT.webm、OUT.mov、OUT.apng、OUT.webp，或 PNG 影格的 DIR/。</translation>
+    </message>
+    <message>
+        <source>What is behind the face in a video or picture: a colour (white, #rrggbb), transparent, or a photo (default: transparent for WebM, MOV, APNG, WebP and PNG frames, white for MP4 and GIF).</source>
+        <translation>影片或圖片中臉後面的東西：顏色（white、#rrggbb）、transparent（透明）或照片（預設：WebM、MOV、APNG、WebP 與 PNG 影格為透明，MP4 與 GIF 為白色）。</translation>
+    </message>
+    <message>
+        <source>Export for a place with limits: %1.</source>
+        <translation>為有限制的地方匯出：%1。</translation>
+    </message>
+    <message>
+        <source>Video and pictures: begin this many seconds into the animation.</source>
+        <translation>影片與圖片：從動畫的這個秒數開始。</translation>
+    </message>
+    <message>
+        <source>Video and pictures: export this many seconds (default: to the end).</source>
+        <translation>影片與圖片：匯出這麼多秒（預設：到結尾）。</translation>
+    </message>
+    <message>
+        <source>animate needs -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|OUT.webm|DIR/ ...</source>
+        <translation>animate 需要 -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|OUT.webm|DIR/ ...</translation>
+    </message>
+    <message>
+        <source>cannot tell the output type of &apos;%1&apos;: use .svg, .html, .mp4, .gif, .webm, .mov, .apng, .webp or a folder ending in /</source>
+        <translation>無法判斷「%1」的輸出類型：請使用 .svg、.html、.mp4、.gif、.webm、.mov、.apng、.webp 或以 / 結尾的資料夾</translation>
+    </message>
+    <message>
+        <source>unknown --preset &apos;%1&apos; (%2)</source>
+        <translation>不明的 --preset「%1」（%2）</translation>
+    </message>
+    <message>
+        <source>the %1 preset writes %2: name the output .%3, not &apos;%4&apos;</source>
+        <translation>%1 預設會寫出 %2：請將輸出命名為 .%3，而不是「%4」</translation>
+    </message>
+    <message>
+        <source>--%1 takes a number of seconds (more than 0 for --duration), not &apos;%2&apos;</source>
+        <translation>--%1 需要秒數（--duration 需大於 0），而不是「%2」</translation>
+    </message>
+    <message>
+        <source>--%1 needs a video or picture output; SVG and HTML play the whole animation</source>
+        <translation>--%1 需要影片或圖片輸出；SVG 與 HTML 會播放整段動畫</translation>
+    </message>
+    <message>
+        <source>%1; nothing was written (--start and --duration choose a stretch)</source>
+        <translation>%1；未寫入任何內容（--start 與 --duration 可選取一段）</translation>
+    </message>
+    <message>
+        <source>Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF, WebM, MOV, APNG, WebP or PNG frames).</source>
+        <translation>讓照片或專案中的臉說話，並匯出動畫（SVG、HTML、MP4、GIF、WebM、MOV、APNG、WebP 或 PNG 影格）。</translation>
     </message>
 </context>
 </TS>

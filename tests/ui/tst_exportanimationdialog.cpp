@@ -1,12 +1,14 @@
 #include "animationfixture.h"
 
 #include "dialogs/exportanimationdialog.h"
+#include "dialogs/exportpreview.h"
 #include "i18n/translations.h"
 #include "media/mediareader.h"
 #include "render/style.h"
 
 #include <QComboBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QProcess>
@@ -239,6 +241,99 @@ private Q_SLOTS:
             QVERIFY(dialog.start());
         } // destroyed while running: it waits for the cancelled export
         QCOMPARE(entries(dir), QStringList());
+    }
+
+    // The still beside the controls: the checkerboard shows through where the export is
+    // transparent, the chosen colour where it is not.
+    void previewShowsTransparency()
+    {
+        ExportAnimationDialog dialog(base(m_dir.filePath(QStringLiteral("still.webm"))));
+        auto *format = dialog.findChild<QComboBox *>(QStringLiteral("format"));
+        auto *preview = dialog.findChild<ExportPreview *>(QStringLiteral("exportPreview"));
+        QVERIFY(format && preview);
+        choose(format, AnimationFormat::WebM);
+        QCOMPARE(dialog.request().background.kind, ExportBackground::Kind::Automatic);
+        QCOMPARE(effectiveBackground(dialog.request()).kind, ExportBackground::Kind::Transparent);
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        QVERIFY(!preview->frame().isNull());
+        QCOMPARE(qAlpha(preview->frame().pixel(0, 0)), 0);
+        QCOMPARE(qAlpha(preview->frame().pixel(preview->frame().width() / 2, preview->frame().height() / 2)), 255);
+        // On screen the corner is the checkerboard: two greys in neighbouring cells.
+        QImage shown = preview->grab().toImage();
+        const QSize fitted = preview->frame().size().scaled(preview->size(), Qt::KeepAspectRatio);
+        const QPoint origin((preview->width() - fitted.width()) / 2, (preview->height() - fitted.height()) / 2);
+        const qreal dpr = shown.devicePixelRatio();
+        const auto at = [&](int x, int y) { return QColor(shown.pixel(QPoint(origin.x() + x, origin.y() + y) * dpr)); };
+        QCOMPARE(at(2, 2), QColor(255, 255, 255));
+        QCOMPARE(at(10, 2), QColor(204, 204, 204));
+
+        dialog.setBackground(ExportBackground::ofColour(QColor(200, 30, 30)));
+        QCOMPARE(dialog.request().background, ExportBackground::ofColour(QColor(200, 30, 30)));
+        QCOMPARE(QColor(preview->frame().pixel(0, 0)), QColor(200, 30, 30));
+        shown = preview->grab().toImage();
+        QCOMPARE(at(10, 2), QColor(200, 30, 30));
+
+        // MP4 asked to be transparent: the dialog says why and will not start.
+        dialog.setBackground(ExportBackground::transparent());
+        choose(format, AnimationFormat::Mp4);
+        auto *summary = dialog.findChild<QLabel *>(QStringLiteral("summary"));
+        auto *exportButton = dialog.findChild<QPushButton *>(QStringLiteral("export"));
+        QVERIFY(summary->text().contains(u"MP4"));
+        QVERIFY(!exportButton->isEnabled());
+        QVERIFY(!dialog.start());
+    }
+
+    // A preset fixes the format and size, shortens the stretch to its limit, and exports a
+    // sticker within it.
+    void presetMakesASticker()
+    {
+        const QString dir = newFolder(QStringLiteral("sticker"));
+        ExportRequest r = base(QDir(dir).filePath(QStringLiteral("hello.svg")));
+        r.timeline = test::animationTimeline(m_tone); // 10 s
+        ExportAnimationDialog dialog(r);
+        auto *preset = dialog.findChild<QComboBox *>(QStringLiteral("preset"));
+        auto *format = dialog.findChild<QComboBox *>(QStringLiteral("format"));
+        auto *size = dialog.findChild<QComboBox *>(QStringLiteral("size"));
+        auto *length = dialog.findChild<QDoubleSpinBox *>(QStringLiteral("length"));
+        auto *path = dialog.findChild<QLineEdit *>(QStringLiteral("path"));
+        auto *summary = dialog.findChild<QLabel *>(QStringLiteral("summary"));
+        auto *exportButton = dialog.findChild<QPushButton *>(QStringLiteral("export"));
+        QVERIFY(preset && format && size && length && path && summary && exportButton);
+        QCOMPARE(preset->itemData(0).toString(), QString());
+        preset->setCurrentIndex(preset->findData(QStringLiteral("emoji")));
+        QCOMPARE(dialog.preset()->name, u"emoji"_qs);
+        QCOMPARE(dialog.request().format, AnimationFormat::WebM);
+        QVERIFY(path->text().endsWith(u"hello.webm"));
+        QVERIFY(!format->isEnabled());
+        QVERIFY(!size->isEnabled());
+        QCOMPARE(exportFrameSize(dialog.request()), QSize(100, 100));
+        QCOMPARE(length->value(), 3.0);
+        QVERIFY(dialog.problem().isEmpty());
+        // Longer than the preset allows: said, and not started.
+        length->setValue(4.4);
+        QVERIFY2(dialog.problem().contains(u"4.4 s") && dialog.problem().contains(u"allows 3 s"),
+            qPrintable(dialog.problem()));
+        QVERIFY(summary->text().contains(dialog.problem()));
+        QVERIFY(!exportButton->isEnabled());
+        length->setValue(2.0);
+        QVERIFY(exportButton->isEnabled());
+        QSignalSpy finished(&dialog, &ExportAnimationDialog::finished);
+        QVERIFY(dialog.start());
+        QVERIFY(finished.wait(120000));
+        QVERIFY2(dialog.lastResult().ok(), qPrintable(dialog.lastResult().error));
+        const QString out = QDir(dir).filePath(QStringLiteral("hello.webm"));
+        QVERIFY(QFileInfo(out).size() <= 64 * 1024);
+        QString error;
+        const std::optional<MediaInfo> info = probeMedia(out, &error);
+        QVERIFY2(info, qPrintable(error));
+        QCOMPARE(QSize(info->width, info->height), QSize(100, 100));
+        QVERIFY(info->hasAlpha);
+        QVERIFY(!info->hasAudio);
+        QCOMPARE(entries(dir), QStringList {u"hello.webm"_qs});
+        // None again: the format is the user's to choose.
+        preset->setCurrentIndex(0);
+        QVERIFY(format->isEnabled());
     }
 };
 

@@ -1,9 +1,15 @@
 #include "dialogs/exportanimationdialog.h"
 
+#include "dialogs/exportpreview.h"
+#include "export/framerenderer.h"
+#include "render/svgface.h"
+
+#include <QColorDialog>
 #include <QComboBox>
 #include <QDesktopServices>
 #include <QDialogButtonBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -39,9 +45,31 @@ QString formatName(AnimationFormat format)
     case AnimationFormat::Mp4: return ExportAnimationDialog::tr("MP4 video");
     case AnimationFormat::Gif: return ExportAnimationDialog::tr("Animated GIF");
     case AnimationFormat::PngSequence: return ExportAnimationDialog::tr("PNG sequence (a folder of frames)");
+    case AnimationFormat::WebM: return ExportAnimationDialog::tr("WebM video (with transparency)");
+    case AnimationFormat::Mov:
+        return ExportAnimationDialog::tr("MOV ProRes 4444 (with transparency, for video editors)");
+    case AnimationFormat::Apng: return ExportAnimationDialog::tr("Animated PNG");
+    case AnimationFormat::WebP: return ExportAnimationDialog::tr("Animated WebP");
     }
     return {};
 }
+
+QString presetName(const QString &name)
+{
+    if (name == u"telegram-sticker")
+        return ExportAnimationDialog::tr("Telegram sticker (512 px, up to 3 s and 256 KB)");
+    if (name == u"emoji")
+        return ExportAnimationDialog::tr("Emoji (100 px, up to 3 s and 64 KB)");
+    if (name == u"slide-overlay")
+        return ExportAnimationDialog::tr("Slide overlay (1080 px, with sound)");
+    return name;
+}
+
+// The Background box's choices.
+const QString kAutomatic = QStringLiteral("auto");
+const QString kTransparent = QStringLiteral("transparent");
+const QString kColour = QStringLiteral("colour");
+const QString kPhoto = QStringLiteral("photo");
 
 QString fileFilter(AnimationFormat format)
 {
@@ -50,6 +78,10 @@ QString fileFilter(AnimationFormat format)
     case AnimationFormat::HtmlPlayer: return ExportAnimationDialog::tr("HTML page (*.html *.htm)");
     case AnimationFormat::Mp4: return ExportAnimationDialog::tr("MP4 video (*.mp4)");
     case AnimationFormat::Gif: return ExportAnimationDialog::tr("Animated GIF (*.gif)");
+    case AnimationFormat::WebM: return ExportAnimationDialog::tr("WebM video (*.webm)");
+    case AnimationFormat::Mov: return ExportAnimationDialog::tr("MOV video (*.mov)");
+    case AnimationFormat::Apng: return ExportAnimationDialog::tr("Animated PNG (*.apng)");
+    case AnimationFormat::WebP: return ExportAnimationDialog::tr("Animated WebP (*.webp)");
     case AnimationFormat::PngSequence: break;
     }
     return ExportAnimationDialog::tr("Folder for the frames (*)");
@@ -97,6 +129,11 @@ ExportAnimationDialog::ExportAnimationDialog(const ExportRequest &base, QWidget 
     , m_size(new QComboBox)
     , m_fps(new QSpinBox)
     , m_framing(new QComboBox)
+    , m_preset(new QComboBox)
+    , m_background(new QComboBox)
+    , m_start(new QDoubleSpinBox)
+    , m_length(new QDoubleSpinBox)
+    , m_preview(new ExportPreview)
     , m_summary(new QLabel)
     , m_progress(new QProgressBar)
     , m_status(new QLabel)
@@ -145,11 +182,48 @@ ExportAnimationDialog::ExportAnimationDialog(const ExportRequest &base, QWidget 
     m_framing->addItem(tr("The whole photo"), int(ExportFraming::Photo));
     m_framing->setCurrentIndex(m_framing->findData(int(base.framing)));
 
+    m_preset->setObjectName(QStringLiteral("preset"));
+    m_preset->addItem(tr("None"), QString());
+    for (const ExportPreset &p : exportPresets())
+        m_preset->addItem(presetName(p.name), p.name);
+    m_preset->setToolTip(tr("Ready-made settings for a place where talking faces are shared; the export "
+                            "keeps to its limits or says why it cannot"));
+
+    m_background->setObjectName(QStringLiteral("background"));
+    m_background->addItem(tr("Automatic"), kAutomatic);
+    m_background->addItem(tr("Transparent"), kTransparent);
+    m_background->addItem(tr("Colour…"), kColour);
+    m_background->addItem(tr("Photo…"), kPhoto);
+    m_background->setToolTip(tr("Automatic: transparent for WebM, MOV, APNG, WebP and PNG frames, white for "
+                                "MP4 and GIF"));
+    setBackground(base.background);
+
+    const double length = base.timeline.frameCount() / std::max(1.0, base.timeline.frameRate());
+    m_start->setObjectName(QStringLiteral("start"));
+    m_start->setRange(0, std::max(0.0, length));
+    m_start->setDecimals(2);
+    m_start->setSingleStep(0.5);
+    m_start->setSuffix(tr(" s"));
+    m_start->setValue(base.start);
+    m_length->setObjectName(QStringLiteral("length"));
+    m_length->setRange(0, std::max(0.0, length));
+    m_length->setDecimals(2);
+    m_length->setSingleStep(0.5);
+    m_length->setSuffix(tr(" s"));
+    m_length->setSpecialValueText(tr("To the end"));
+    m_length->setValue(base.duration);
+    auto *stretchRow = new QHBoxLayout;
+    stretchRow->addWidget(m_start);
+    stretchRow->addWidget(new QLabel(tr("for")));
+    stretchRow->addWidget(m_length);
+    stretchRow->addStretch(1);
+
     m_summary->setObjectName(QStringLiteral("summary"));
     m_summary->setWordWrap(true);
     m_summary->setForegroundRole(QPalette::PlaceholderText);
 
     auto *form = new QFormLayout;
+    form->addRow(tr("&Preset:"), m_preset);
     form->addRow(tr("&Format:"), m_format);
     auto *pathLabel = new QLabel(tr("&Save to:"));
     pathLabel->setBuddy(m_path);
@@ -157,6 +231,10 @@ ExportAnimationDialog::ExportAnimationDialog(const ExportRequest &base, QWidget 
     form->addRow(tr("Frame si&ze:"), m_size);
     form->addRow(tr("Frame &rate:"), m_fps);
     form->addRow(tr("Fr&aming:"), m_framing);
+    form->addRow(tr("&Background:"), m_background);
+    auto *stretchLabel = new QLabel(tr("Fro&m:"));
+    stretchLabel->setBuddy(m_start);
+    form->addRow(stretchLabel, stretchRow);
     form->addRow(QString(), m_summary);
 
     m_progress->setObjectName(QStringLiteral("progress"));
@@ -178,8 +256,11 @@ ExportAnimationDialog::ExportAnimationDialog(const ExportRequest &base, QWidget 
     QPushButton *close = m_buttons->addButton(QDialogButtonBox::Close);
     close->setObjectName(QStringLiteral("close"));
 
+    auto *top = new QHBoxLayout;
+    top->addLayout(form, 1);
+    top->addWidget(m_preview, 0, Qt::AlignTop);
     auto *layout = new QVBoxLayout(this);
-    layout->addLayout(form);
+    layout->addLayout(top);
     layout->addSpacing(6);
     layout->addWidget(m_progress);
     layout->addWidget(m_status);
@@ -192,6 +273,12 @@ ExportAnimationDialog::ExportAnimationDialog(const ExportRequest &base, QWidget 
     connect(m_size, &QComboBox::currentIndexChanged, this, &ExportAnimationDialog::updateSummary);
     connect(m_fps, &QSpinBox::valueChanged, this, &ExportAnimationDialog::updateSummary);
     connect(m_framing, &QComboBox::currentIndexChanged, this, &ExportAnimationDialog::updateSummary);
+    connect(m_framing, &QComboBox::currentIndexChanged, this, &ExportAnimationDialog::updatePreview);
+    connect(m_preset, &QComboBox::currentIndexChanged, this, &ExportAnimationDialog::presetChanged);
+    connect(m_background, &QComboBox::activated, this, &ExportAnimationDialog::backgroundChosen);
+    connect(m_start, &QDoubleSpinBox::valueChanged, this, &ExportAnimationDialog::updateSummary);
+    connect(m_start, &QDoubleSpinBox::valueChanged, this, &ExportAnimationDialog::updatePreview);
+    connect(m_length, &QDoubleSpinBox::valueChanged, this, &ExportAnimationDialog::updateSummary);
     connect(m_export, &QPushButton::clicked, this, [this] {
         const QString target = QDir::cleanPath(m_path->text().trimmed());
         const QFileInfo info(target);
@@ -236,7 +323,72 @@ ExportRequest ExportAnimationDialog::request() const
     r.size = m_size->currentData().toInt();
     r.fps = m_fps->value();
     r.framing = ExportFraming(m_framing->currentData().toInt());
+    r.background = background();
+    r.start = m_start->value();
+    r.duration = m_length->value();
+    if (const std::optional<ExportPreset> p = preset())
+        r = withPreset(r, *p);
     return r;
+}
+
+std::optional<ExportPreset> ExportAnimationDialog::preset() const
+{
+    return exportPresetNamed(m_preset->currentData().toString());
+}
+
+ExportBackground ExportAnimationDialog::background() const
+{
+    const QString choice = m_background->currentData().toString();
+    if (choice == kTransparent)
+        return ExportBackground::transparent();
+    if (choice == kColour)
+        return ExportBackground::ofColour(m_colour);
+    if (choice == kPhoto)
+        return ExportBackground::ofPhoto(m_photo);
+    return {};
+}
+
+void ExportAnimationDialog::setBackground(const ExportBackground &background)
+{
+    QString choice = kAutomatic;
+    switch (background.kind) {
+    case ExportBackground::Kind::Automatic: break;
+    case ExportBackground::Kind::Transparent: choice = kTransparent; break;
+    case ExportBackground::Kind::Colour:
+        choice = kColour;
+        m_colour = background.colour;
+        break;
+    case ExportBackground::Kind::Photo:
+        choice = kPhoto;
+        m_photo = background.photoPath;
+        break;
+    }
+    const int colourRow = m_background->findData(kColour);
+    m_background->setItemText(colourRow, choice == kColour ? tr("Colour: %1").arg(m_colour.name()) : tr("Colour…"));
+    m_background->setItemIcon(colourRow, QIcon());
+    if (choice == kColour) {
+        QPixmap swatch(16, 16);
+        swatch.fill(m_colour);
+        m_background->setItemIcon(colourRow, QIcon(swatch));
+    }
+    const int photoRow = m_background->findData(kPhoto);
+    m_background->setItemText(
+        photoRow, choice == kPhoto ? tr("Photo: %1").arg(QFileInfo(m_photo).fileName()) : tr("Photo…"));
+    m_background->setCurrentIndex(m_background->findData(choice));
+    if (m_export) { // built
+        updateSummary();
+        updatePreview();
+    }
+}
+
+QString ExportAnimationDialog::problem() const
+{
+    const ExportRequest r = request();
+    if (const std::optional<ExportPreset> p = preset()) {
+        if (const QString why = presetProblem(r, *p); !why.isEmpty())
+            return why;
+    }
+    return backgroundProblem(r.format, r.background);
 }
 
 bool ExportAnimationDialog::isRunning() const
@@ -247,7 +399,7 @@ bool ExportAnimationDialog::isRunning() const
 bool ExportAnimationDialog::start()
 {
     const ExportRequest r = request();
-    if (isRunning() || r.outputPath.isEmpty())
+    if (isRunning() || r.outputPath.isEmpty() || !problem().isEmpty())
         return false;
     m_cancel = std::make_shared<std::atomic_bool>(false);
     m_running = r.outputPath;
@@ -257,13 +409,15 @@ bool ExportAnimationDialog::start()
     m_show->setVisible(false);
     setRunning(true);
     const std::shared_ptr<std::atomic_bool> cancel = m_cancel;
+    const std::optional<ExportPreset> preset = this->preset();
     m_watcher.setFuture(QtConcurrent::run(
-        [cancel](QPromise<ExportResult> &promise, const ExportRequest &request) {
+        [cancel, preset](QPromise<ExportResult> &promise, const ExportRequest &request) {
             promise.setProgressRange(0, kProgressSteps);
-            promise.addResult(exportAnimation(
-                request,
-                [&promise](double fraction) { promise.setProgressValue(int(std::lround(fraction * kProgressSteps))); },
-                cancel.get()));
+            const auto report = [&promise](double fraction) {
+                promise.setProgressValue(int(std::lround(fraction * kProgressSteps)));
+            };
+            promise.addResult(preset ? exportWithPreset(request, *preset, report, cancel.get())
+                                     : exportAnimation(request, report, cancel.get()));
         },
         r));
     return true;
@@ -298,8 +452,68 @@ void ExportAnimationDialog::formatChanged()
         m_progress->setValue(0);
         m_show->setVisible(false);
     }
-    m_size->setEnabled(isRasterFormat(format));
+    m_size->setEnabled(isRasterFormat(format) && !preset());
+    m_background->setEnabled(isRasterFormat(format));
+    m_start->setEnabled(isRasterFormat(format));
+    m_length->setEnabled(isRasterFormat(format));
     updateSummary();
+    updatePreview();
+}
+
+void ExportAnimationDialog::presetChanged()
+{
+    const std::optional<ExportPreset> p = preset();
+    if (p) {
+        m_format->setCurrentIndex(m_format->findData(int(p->format)));
+        if (p->maxSeconds > 0 && (m_length->value() == 0 || m_length->value() > p->maxSeconds))
+            m_length->setValue(std::min(p->maxSeconds, m_length->maximum()));
+    }
+    m_format->setEnabled(!p && !isRunning());
+    formatChanged();
+}
+
+void ExportAnimationDialog::backgroundChosen()
+{
+    const QString choice = m_background->currentData().toString();
+    if (choice == kColour) {
+        const QColor colour = QColorDialog::getColor(m_colour, this, tr("Background Colour"));
+        if (colour.isValid())
+            m_colour = colour;
+    } else if (choice == kPhoto) {
+        const QString photo = QFileDialog::getOpenFileName(this, tr("Background Photo"),
+            m_photo.isEmpty() ? QFileInfo(m_path->text()).absolutePath() : m_photo,
+            tr("Images (*.png *.jpg *.jpeg *.webp *.bmp)"));
+        if (!photo.isEmpty())
+            m_photo = photo;
+        else if (m_photo.isEmpty()) { // nothing chosen: back to automatic
+            setBackground({});
+            return;
+        }
+    }
+    setBackground(background());
+}
+
+// A still of the export's first frame, small: drawn as the export draws it (background
+// included), over the checkerboard where it stays transparent.
+void ExportAnimationDialog::updatePreview()
+{
+    const ExportRequest r = request();
+    SvgFace face(r.face, r.style);
+    face.setFrame(r.framing == ExportFraming::Head ? headFrame(r.face) : QRectF());
+    for (const QString &layer : r.layerFiles)
+        face.addLayerFile(layer);
+    const QSize size = exportFrameSize(r).scaled(m_preview->sizeHint(), Qt::KeepAspectRatio);
+    const ExportBackground b = effectiveBackground(r);
+    QImage backdrop;
+    if (b.kind == ExportBackground::Kind::Photo)
+        backdrop = backgroundPicture(b.photoPath, size, nullptr);
+    const QColor colour = b.kind == ExportBackground::Kind::Colour ? b.colour : QColor(Qt::transparent);
+    // An MP4 asked to be transparent is refused: its still shows it white, as it was.
+    const FrameRenderer renderer(face, r.timeline, r.mouthShapes, size,
+        b.kind == ExportBackground::Kind::Transparent && !animationFormatCanBeTransparent(r.format) ? QColor(Qt::white)
+                                                                                                    : colour,
+        backdrop);
+    m_preview->setFrame(renderer.renderAt(r.start));
 }
 
 void ExportAnimationDialog::browse()
@@ -329,12 +543,15 @@ void ExportAnimationDialog::updateSummary()
         parts << tr("vector drawing");
     }
     const bool hasSound = !r.audioPath.isEmpty() || (r.timeline.audio() && !r.timeline.audio()->path.isEmpty());
-    if (r.format == AnimationFormat::Gif || r.format == AnimationFormat::PngSequence)
+    if (!animationFormatHasSound(r.format) || r.silent)
         parts << tr("silent");
     else
         parts << (hasSound ? tr("with sound") : tr("no sound"));
+    const QString why = problem();
+    if (!why.isEmpty())
+        parts << tr("cannot export: %1").arg(why);
     m_summary->setText(parts.join(QStringLiteral(" · ")));
-    m_export->setEnabled(!isRunning() && !r.outputPath.isEmpty());
+    m_export->setEnabled(!isRunning() && !r.outputPath.isEmpty() && why.isEmpty());
 }
 
 void ExportAnimationDialog::exportFinished()
@@ -360,6 +577,7 @@ void ExportAnimationDialog::exportFinished()
         break;
     case ExportStatus::BadInput:
     case ExportStatus::Failed:
+    case ExportStatus::OverLimit:
         m_progress->setValue(0);
         m_status->setText(tr("Not exported: %1").arg(m_result.error));
         break;
@@ -375,10 +593,17 @@ void ExportAnimationDialog::showInFolder()
 
 void ExportAnimationDialog::setRunning(bool running)
 {
-    for (QWidget *w : {static_cast<QWidget *>(m_format), static_cast<QWidget *>(m_path),
-             static_cast<QWidget *>(m_browse), static_cast<QWidget *>(m_fps), static_cast<QWidget *>(m_framing)})
+    for (QWidget *w :
+        {static_cast<QWidget *>(m_format), static_cast<QWidget *>(m_path), static_cast<QWidget *>(m_browse),
+            static_cast<QWidget *>(m_fps), static_cast<QWidget *>(m_framing), static_cast<QWidget *>(m_preset),
+            static_cast<QWidget *>(m_background), static_cast<QWidget *>(m_start), static_cast<QWidget *>(m_length)})
         w->setEnabled(!running);
-    m_size->setEnabled(!running && isRasterFormat(request().format));
+    const bool raster = isRasterFormat(request().format);
+    m_format->setEnabled(!running && !preset());
+    m_size->setEnabled(!running && raster && !preset());
+    for (QWidget *w :
+        {static_cast<QWidget *>(m_background), static_cast<QWidget *>(m_start), static_cast<QWidget *>(m_length)})
+        w->setEnabled(!running && raster);
     m_export->setEnabled(!running);
     if (QPushButton *close = m_buttons->button(QDialogButtonBox::Close))
         close->setText(running ? tr("Cancel") : tr("Close"));
