@@ -113,6 +113,8 @@ void measure(Labelled *row, const QImage &photo, const FaceModel &face)
     m["crownSeen"] = !f.crownCut && !(f.topCut && f.headHeight < AppearanceFindings::kMinHeadHeight) ? 1.0 : 0.0;
     m["headHeight"] = f.headHeight;
     m["scalpReach"] = f.scalpReach;
+    m["hairSeen"] = f.hairSeen ? 1.0 : 0.0;
+    m["hairFall"] = f.hairFall;
     m["hatScore"] = f.hatScore;
     m["crownToHair"] = f.crownToHair;
     m["crownToSkin"] = f.crownToSkin;
@@ -367,26 +369,30 @@ int lengthClass(const QString &label)
     return int(names.indexOf(label));
 }
 
-// Hair length (short, medium, long) from how far down the hair outline reaches (hairDrop): two
-// thresholds, cross-validated for accuracy on the faces whose hair length is labelled and not none.
-QStringList hairLength(const std::vector<Labelled> &rows, const std::vector<size_t> &detected, int k)
+// Hair length (short, medium, long) from how far down the hair reaches (`measure`: the outline's
+// hairDrop, or the parse's hairFall): two thresholds, cross-validated for accuracy on the faces
+// whose hair length is labelled and not none (and, with `seenOnly`, whose crown showed the parse
+// its hair).
+QStringList hairLength(
+    const std::vector<Labelled> &rows, const std::vector<size_t> &detected, int k, const char *measure, bool seenOnly)
 {
     std::vector<size_t> scored;
     std::vector<int> label;
     for (size_t i : detected)
-        if (lengthClass(rows[i].hairLength) >= 0 && !rows[i].shipped.bald) {
+        if (lengthClass(rows[i].hairLength) >= 0 && !rows[i].shipped.bald
+            && (!seenOnly || rows[i].m.at("hairSeen") == 1.0)) {
             scored.push_back(i);
             label.push_back(lengthClass(rows[i].hairLength));
         }
     if (scored.empty())
         return {};
     auto classOf = [&](size_t r, const std::vector<double> &t) {
-        const double drop = rows[r].m.at("hairDrop");
+        const double drop = rows[r].m.at(measure);
         return drop < t[0] ? 0 : drop < t[1] ? 1 : 2;
     };
     std::vector<double> v;
     for (size_t i : scored)
-        v.push_back(rows[i].m.at("hairDrop"));
+        v.push_back(rows[i].m.at(measure));
     // Counted as "right or not" (every face a positive): recall is the share right.
     bench::Rule rule {{bench::thresholdsFrom(v, 24), bench::thresholdsFrom(v, 24)},
         [&](size_t r, const std::vector<double> &t) { return classOf(r, t) == lengthClass(rows[r].hairLength); }};
@@ -405,11 +411,11 @@ QStringList hairLength(const std::vector<Labelled> &rows, const std::vector<size
     const std::vector<double> all = bench::fitRule(rule, scored, truth, objective);
     const int right = confusion[0][0] + confusion[1][1] + confusion[2][2];
     QStringList out;
-    out << QStringLiteral(
-        "hair length — hairDrop, held-out folds (%1-fold, objective accuracy; fitted on all: %2, %3):")
+    out << QStringLiteral("hair length — %4%5, held-out folds (%1-fold, objective accuracy; fitted on all: %2, %3):")
                .arg(k)
                .arg(all[0], 0, 'g', 4)
-               .arg(all[1], 0, 'g', 4);
+               .arg(all[1], 0, 'g', 4)
+               .arg(QLatin1StringView(measure), seenOnly ? QStringLiteral(" (crowns showing hair)") : QString());
     out << QStringLiteral("  right %1 of %2 (%3); rows labelled short/medium/long, columns decided:")
                .arg(right)
                .arg(scored.size())
@@ -472,7 +478,9 @@ QJsonObject attributes()
             report << QStringLiteral("  held out: drawn on women %1, on children %2").arg(women).arg(children);
         }
     }
-    report << hairLength(rows, detected, k);
+    report << hairLength(rows, detected, k, "hairDrop", false);
+    report << hairLength(rows, detected, k, "hairDrop", true);
+    report << hairLength(rows, detected, k, "hairFall", true);
     // Facial hair drawn on women and children.
     int onWomen = 0, onChildren = 0;
     for (size_t i : detected) {

@@ -57,6 +57,10 @@ struct AppearanceFindings
     // (ES0) and how far up toward it the skin reaches (0..1).
     bool crownCut = true, topCut = false;
     double headHeight = 0, scalpReach = 0;
+    // ... and how far the hair falls beside the face below the chin's point, in ES0 (hairSeen: the
+    // crown showed its colour; fallCut: the photo ends while it still falls).
+    bool hairSeen = false, fallCut = false;
+    double hairFall = 0;
     double hatScore = 0; // the crown's hue outside hair's hues, in degrees, times its saturation
     AppearanceEvidence evidence; // measured against the cheeks in L*a*b*
     HairLength hairLength = HairLength::Short;

@@ -37,6 +37,11 @@ constexpr double kSkinHue = 12.0;
 constexpr double kSkinRatio = 1.6;
 constexpr double kSpreadTimes = 2.5;
 constexpr double kGreyChroma = 4.0;
+// The hair's fall: its colour sampled over the forehead (see measureHairFall), at least
+// kMinHairSample d² of it; the band beside the face starts kSideGap d out from the cheek's line.
+constexpr double kHairSampleLow = 0.3, kHairSampleHigh = 1.3, kHairSampleHalf = 0.7, kMinHairSample = 0.1;
+constexpr double kSideGap = 0.05, kSideBand = 0.6, kHairRowShare = 0.3, kFallGap = 0.25;
+constexpr double kHairColourDistance = 18.0; // L*a*b* units
 // The forehead's sample: kForeheadHalf d either side of the midline, from kForeheadLow to
 // kForeheadHigh d above the brows' top.
 constexpr double kForeheadHalf = 0.45, kForeheadLow = 0.08, kForeheadHigh = 0.3;
@@ -146,6 +151,78 @@ QColor medianColour(const cv::Mat &rgb, const cv::Mat &inside, const std::vector
     if (channels[0].empty())
         return {};
     return QColor(int(medianOf(channels[0])), int(medianOf(channels[1])), int(medianOf(channels[2])));
+}
+
+void measureHairFall(HeadParse *parse, const cv::Mat &lab, double browTop, double eyeY, double chinY,
+    const std::array<QPointF, 2> &leftCheek, const std::array<QPointF, 2> &rightCheek)
+{
+    const double d = kParseEyeDistance;
+    HeadParse &out = *parse;
+    const double mid = out.size.width() / 2.0;
+    // The hair's colour: the median of the person's pixels other than skin over the forehead
+    // (kHairSampleLow..kHairSampleHigh d above the brows, kHairSampleHalf d either side).
+    std::array<std::vector<double>, 3> sample;
+    for (int y = std::max(0, int(browTop - kHairSampleHigh * d)); y <= int(browTop - kHairSampleLow * d); ++y)
+        for (int x = int(mid - kHairSampleHalf * d); x <= int(mid + kHairSampleHalf * d); ++x)
+            if (out.at(x, y) == HeadParse::Other) {
+                const Lab c = labAt(lab, x, y);
+                sample[0].push_back(c.l);
+                sample[1].push_back(c.a);
+                sample[2].push_back(c.b);
+            }
+    if (sample[0].size() < size_t(kMinHairSample * d * d))
+        return;
+    const Lab hair {medianOf(sample[0]), medianOf(sample[1]), medianOf(sample[2])};
+    out.hairSeen = true;
+    // Down each side from the eyes' line: a row is hair where at least kHairRowShare of a band
+    // beside the face (from the cheek's line outward, kSideBand d wide) is the person, not skin,
+    // within kHairColourDistance of the hair's colour; the fall ends where kFallGap d of rows
+    // have none (past the shoulders, or where the photo ends: reported as cut).
+    auto sideLine = [&](const std::array<QPointF, 2> &cheek, double y) {
+        const QPointF a = cheek[0], b = cheek[1];
+        const double t = std::clamp((y - a.y()) / std::max(1.0, b.y() - a.y()), 0.0, 1.0);
+        return a.x() + (b.x() - a.x()) * t;
+    };
+    const int gap = std::max(1, int(std::lround(kFallGap * d)));
+    std::vector<double> falls;
+    for (const auto &[cheek, outward] : {std::pair(leftCheek, -1.0), std::pair(rightCheek, 1.0)}) {
+        int last = int(eyeY), misses = 0;
+        bool cut = false;
+        for (int y = int(eyeY); y < out.size.height(); ++y) {
+            const double edge = sideLine(cheek, y) + outward * kSideGap * d;
+            int n = 0, hairy = 0, outside = 0;
+            for (int k = 0; k < int(kSideBand * d); ++k) {
+                const int x = int(std::lround(edge + outward * k));
+                if (x < 0 || x >= out.size.width()) {
+                    ++outside;
+                    continue;
+                }
+                const HeadParse::Label label = out.at(x, y);
+                if (label == HeadParse::Outside) {
+                    ++outside;
+                    continue;
+                }
+                ++n;
+                if (label == HeadParse::Other) {
+                    const Lab c = labAt(lab, x, y);
+                    hairy += std::hypot(c.l - hair.l, c.a - hair.a, c.b - hair.b) < kHairColourDistance;
+                }
+            }
+            if (n < outside) {
+                cut = true;
+                break;
+            }
+            if (hairy >= kHairRowShare * n) {
+                last = y;
+                misses = 0;
+            } else if (++misses > gap) {
+                break;
+            }
+        }
+        falls.push_back((last - chinY) / d);
+        out.fallCut = out.fallCut || (cut && last >= int(chinY));
+    }
+    out.hairFall = std::max(falls[0], falls[1]);
 }
 
 } // namespace
@@ -342,6 +419,7 @@ HeadParse parseHead(const QImage &photo, const FaceModel &face)
         out.headHeight = medianOf(heights);
         out.scalpReach = medianOf(reaches);
     }
+    measureHairFall(&out, lab, browTop, w("3.4").y(), w("2.1").y(), {w("5.2"), w("2.14")}, {w("5.1"), w("2.13")});
     out.valid = true;
     return out;
 }

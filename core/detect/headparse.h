@@ -41,6 +41,13 @@ struct HeadParse
     bool crownCut = true, topCut = false;
     double headHeight = 0, scalpReach = 0;
 
+    // How far the hair falls beside the face: the lowest row (on the lower side) where a band
+    // beside the cheeks still holds hair of the crown's colour, in eye distances below the chin's
+    // point (negative: above it). hairSeen: the crown showed hair to take the colour from;
+    // fallCut: the photo ends while the hair still falls.
+    bool hairSeen = false, fallCut = false;
+    double hairFall = 0;
+
     Label at(int x, int y) const { return Label(labels[size_t(y) * size.width() + x]); }
     QImage toImage() const; // a colour per label, for the editor's detection steps and debugging
 };
