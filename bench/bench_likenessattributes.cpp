@@ -115,6 +115,7 @@ void measure(Labelled *row, const QImage &photo, const FaceModel &face)
     m["scalpReach"] = f.scalpReach;
     m["hairSeen"] = f.hairSeen ? 1.0 : 0.0;
     m["hairFall"] = f.hairFall;
+    m["hairLengthShipped"] = double(int(f.hairLength)); // 0 none, 1 short, 2 medium, 3 long
     m["hatScore"] = f.hatScore;
     m["crownToHair"] = f.crownToHair;
     m["crownToSkin"] = f.crownToSkin;
@@ -373,6 +374,30 @@ int lengthClass(const QString &label)
 // hairDrop, or the parse's hairFall): two thresholds, cross-validated for accuracy on the faces
 // whose hair length is labelled and not none (and, with `seenOnly`, whose crown showed the parse
 // its hair).
+// The shipped hair length against the labels (short, medium, long; faces not drawn bald).
+QStringList shippedHairLength(const std::vector<Labelled> &rows, const std::vector<size_t> &detected)
+{
+    int confusion[3][3] = {}, right = 0, n = 0;
+    for (size_t i : detected) {
+        const int truth = lengthClass(rows[i].hairLength);
+        const int decided = int(rows[i].m.at("hairLengthShipped")) - 1;
+        if (truth < 0 || decided < 0)
+            continue;
+        ++confusion[truth][decided];
+        right += truth == decided;
+        ++n;
+    }
+    QStringList out;
+    out << QStringLiteral("hair length — as shipped: right %1 of %2 (%3); rows labelled short/medium/long, "
+                          "columns decided:")
+               .arg(right)
+               .arg(n)
+               .arg(n > 0 ? double(right) / n : 0.0, 0, 'f', 2);
+    for (int c = 0; c < 3; ++c)
+        out << QStringLiteral("  %1 %2 %3").arg(confusion[c][0], 4).arg(confusion[c][1], 4).arg(confusion[c][2], 4);
+    return out;
+}
+
 QStringList hairLength(
     const std::vector<Labelled> &rows, const std::vector<size_t> &detected, int k, const char *measure, bool seenOnly)
 {
@@ -478,6 +503,7 @@ QJsonObject attributes()
             report << QStringLiteral("  held out: drawn on women %1, on children %2").arg(women).arg(children);
         }
     }
+    report << shippedHairLength(rows, detected);
     report << hairLength(rows, detected, k, "hairDrop", false);
     report << hairLength(rows, detected, k, "hairDrop", true);
     report << hairLength(rows, detected, k, "hairFall", true);

@@ -94,6 +94,11 @@ struct AppearanceFindings
     // medium is seldom told from the others).
     static constexpr double kHairMedium = 1.005;
     static constexpr double kHairLong = 1.072;
+    // ... and where the parse saw the crown's hair, by hairFall (ES0 below the chin's point):
+    // medium from kFallMedium, long from kFallLong (cross-validated the same way on the 42 faces
+    // whose crown shows hair: held-out 0.60, the outline's drop 0.45 on the same faces).
+    static constexpr double kFallMedium = -0.70;
+    static constexpr double kFallLong = 0.16;
 
     // Rims under the eyes and a bridge as edges over the skin's texture (glassesScore): kept from
     // the shared photos as a second way to find a frame; on faces-attributes it draws glasses on

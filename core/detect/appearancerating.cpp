@@ -37,8 +37,9 @@ void judgeConfidence(AppearanceFindings *out)
     out->confidence.bald = !out->crownCut ? sureness(out->scalpReach - A::kScalpReach, 0.1)
                                           : sureness(out->baldScore - A::kBaldThreshold, 0.2);
     out->confidence.headwear = sureness(std::min(out->crownToHair, out->crownToSkin) - A::kHatContrast, 15.0);
-    out->confidence.hairLength = out->appearance.bald
-        ? out->confidence.bald
+    out->confidence.hairLength = out->appearance.bald ? out->confidence.bald
+        : out->hairSeen
+        ? sureness(std::min(std::abs(out->hairFall - A::kFallMedium), std::abs(out->hairFall - A::kFallLong)), 0.3)
         : sureness(std::min(std::abs(out->hairDrop - A::kHairMedium), std::abs(out->hairDrop - A::kHairLong)), 0.1);
 }
 
@@ -46,6 +47,11 @@ HairLength hairLengthOf(const AppearanceFindings &f)
 {
     if (f.appearance.bald)
         return HairLength::None;
+    // Where the parse saw the crown's hair, how far it falls beside the face; else the outline.
+    if (f.hairSeen)
+        return f.hairFall >= AppearanceFindings::kFallLong  ? HairLength::Long
+            : f.hairFall >= AppearanceFindings::kFallMedium ? HairLength::Medium
+                                                            : HairLength::Short;
     return f.hairDrop >= AppearanceFindings::kHairLong  ? HairLength::Long
         : f.hairDrop >= AppearanceFindings::kHairMedium ? HairLength::Medium
                                                         : HairLength::Short;

@@ -26,6 +26,9 @@ constexpr double kHalfWidth = 3.5, kAbove = 3.5, kBelow = 5.0;
 // above kFarBelow d under the eyes (lower, clothes may run to the photo's edge).
 constexpr double kHeadLift = 0.3, kHeadRx = 1.7, kHeadRy = 2.2;
 constexpr double kNeckHalf = 0.8, kNeckTop = 1.0;
+// ... and where long hair falls: kCurtainHalf d either side of the midline, from the eyes down to
+// kCurtainBottom d below them.
+constexpr double kCurtainHalf = 1.8, kCurtainBottom = 3.0;
 constexpr double kFar = 3.3, kFarBelow = 1.0;
 constexpr int kGrabCutRounds = 2;
 // Skin: a pixel whose hue (in the a*b* plane), chroma and L* stay near the cheeks' — light and
@@ -40,7 +43,7 @@ constexpr double kGreyChroma = 4.0;
 // The hair's fall: its colour sampled over the forehead (see measureHairFall), at least
 // kMinHairSample d² of it; the band beside the face starts kSideGap d out from the cheek's line.
 constexpr double kHairSampleLow = 0.3, kHairSampleHigh = 1.3, kHairSampleHalf = 0.7, kMinHairSample = 0.1;
-constexpr double kSideGap = 0.05, kSideBand = 0.6, kHairRowShare = 0.3, kFallGap = 0.25;
+constexpr double kSideGap = 0.05, kSideBand = 0.6, kHairWidth = 0.1, kFallGap = 0.25;
 constexpr double kHairColourDistance = 18.0; // L*a*b* units
 // The forehead's sample: kForeheadHalf d either side of the midline, from kForeheadLow to
 // kForeheadHigh d above the brows' top.
@@ -174,9 +177,9 @@ void measureHairFall(HeadParse *parse, const cv::Mat &lab, double browTop, doubl
         return;
     const Lab hair {medianOf(sample[0]), medianOf(sample[1]), medianOf(sample[2])};
     out.hairSeen = true;
-    // Down each side from the eyes' line: a row is hair where at least kHairRowShare of a band
+    // Down each side from the eyes' line: a row is hair where at least kHairWidth d of a band
     // beside the face (from the cheek's line outward, kSideBand d wide) is the person, not skin,
-    // within kHairColourDistance of the hair's colour; the fall ends where kFallGap d of rows
+    // within kHairColourDistance of the hair's colour (a strand or a curtain of it); the fall ends where kFallGap d of rows
     // have none (past the shoulders, or where the photo ends: reported as cut).
     auto sideLine = [&](const std::array<QPointF, 2> &cheek, double y) {
         const QPointF a = cheek[0], b = cheek[1];
@@ -212,7 +215,7 @@ void measureHairFall(HeadParse *parse, const cv::Mat &lab, double browTop, doubl
                 cut = true;
                 break;
             }
-            if (hairy >= kHairRowShare * n) {
+            if (hairy >= kHairWidth * d) {
                 last = y;
                 misses = 0;
             } else if (++misses > gap) {
@@ -278,7 +281,8 @@ HeadParse parseHead(const QImage &photo, const FaceModel &face)
             const double dx = (x - centre.x()) / d, dy = (y - centre.y()) / d;
             const bool head = std::pow(dx / kHeadRx, 2) + std::pow((dy + kHeadLift) / kHeadRy, 2) <= 1.0;
             const bool neck = std::abs(dx) < kNeckHalf && dy > kNeckTop;
-            if (head || neck)
+            const bool curtain = std::abs(dx) < kCurtainHalf && dy > 0 && dy < kCurtainBottom;
+            if (head || neck || curtain)
                 mask.at<std::uint8_t>(y, x) = cv::GC_PR_FGD;
             else if (std::hypot(dx, dy) > kFar && dy < kFarBelow && inside.at<std::uint8_t>(y, x))
                 mask.at<std::uint8_t>(y, x) = cv::GC_BGD;

@@ -2,6 +2,7 @@
 #include "detect/detector.h"
 #include "detect/headparse.h"
 #include "drawnface.h"
+#include "face/pointtable.h"
 #include "render/style.h"
 #include "shareddata.h"
 
@@ -130,6 +131,32 @@ private Q_SLOTS:
         QVERIFY(p.valid);
         QVERIFY2(p.crownCut, qPrintable(describe(p)));
         QCOMPARE(p.at(p.size.width() / 2, 0), HeadParse::Outside);
+    }
+
+    // Hair drawn down to the shoulders falls below the chin; hair cut above the ears does not.
+    void hairFall()
+    {
+        const FaceModel face = testing::drawnFaceModel();
+        const double es0 = QLineF(face.point("3.6"), face.point("3.5")).length();
+        FaceModel longHaired = face;
+        // The outline's three lowest points each side moved down to below the chin.
+        const double chin = face.point("2.1").y();
+        for (int k = 0; k < 3; ++k) {
+            for (const int i : {pt::idx("h.1") + k, pt::idx("h.19") - k})
+                longHaired.setPoint(
+                    i, QPointF(face.point(i).x(), std::max(face.point(i).y(), chin + (1.0 - 0.45 * k) * es0)));
+        }
+        DrawnFaceOptions o;
+        const HeadParse shortParse = parseHead(testing::drawnFace(o, face), face);
+        const HeadParse longParse = parseHead(testing::drawnFace(o, longHaired), face);
+        QVERIFY(shortParse.hairSeen && longParse.hairSeen);
+        QVERIFY2(longParse.hairFall > 0.5, qPrintable(QString::number(longParse.hairFall)));
+        QVERIFY2(shortParse.hairFall < 0, qPrintable(QString::number(shortParse.hairFall)));
+        QVERIFY(!longParse.fallCut);
+        // The hair length decided from it (the outline the detector would find is the drawn one).
+        const QColor skin = o.skin;
+        QCOMPARE(findAppearance(testing::drawnFace(o, longHaired), longHaired, skin).hairLength, HairLength::Long);
+        QCOMPARE(findAppearance(testing::drawnFace(o, face), face, skin).hairLength, HairLength::Short);
     }
 
     void invalidInput()
