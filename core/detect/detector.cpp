@@ -5,6 +5,7 @@
 #include "detect/facescan.h"
 #include "detect/grayview.h"
 #include "detect/hairsearch.h"
+#include "detect/headparse.h"
 #include "detect/headregions.h"
 #include "detect/landmarkfigures.h"
 #include "detect/landmarkfit.h"
@@ -327,6 +328,8 @@ bool refineFace(const QImage &image, bool withDebugImages, PlacedFace *out,
             || (g == PointGroup::Ears && out->head.earUsable[leftEar ? 0 : 1]))
             out->refined.setPoint(i, fromRegions.point(i));
     }
+    // Long hair the outline's searches stopped short of: the outline follows the parse's fall.
+    followHairFall(&out->refined, parseHead(image, out->refined));
     // The seed for tracking: the regions' thresholds and colours, the geometry of the points,
     // and the edge thresholds of the classic method's square around them (thesis 6.3).
     out->seed = out->head.seed;

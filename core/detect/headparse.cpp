@@ -2,6 +2,7 @@
 
 #include "detect/labcolour.h"
 #include "detect/skintone.h"
+#include "face/pointtable.h"
 
 #include <QLineF>
 #include <QPolygonF>
@@ -45,6 +46,11 @@ constexpr double kGreyChroma = 4.0;
 constexpr double kHairSampleLow = 0.3, kHairSampleHigh = 1.3, kHairSampleHalf = 0.7, kMinHairSample = 0.1;
 constexpr double kSideGap = 0.05, kSideBand = 0.6, kHairWidth = 0.1, kFallGap = 0.25;
 constexpr double kHairColourDistance = 18.0; // L*a*b* units
+// The outline follows the fall (followHairFall) where it ends at least kMinFallGain ES0 lower
+// than the outline's end: the end and the kFallPoints points above it move onto the line from
+// there down to the fall's end.
+constexpr double kMinFallGain = 0.25;
+constexpr int kFallPoints = 4;
 // The forehead's sample: kForeheadHalf d either side of the midline, from kForeheadLow to
 // kForeheadHigh d above the brows' top.
 constexpr double kForeheadHalf = 0.45, kForeheadLow = 0.08, kForeheadHigh = 0.3;
@@ -179,8 +185,8 @@ void measureHairFall(HeadParse *parse, const cv::Mat &lab, double browTop, doubl
     out.hairSeen = true;
     // Down each side from the eyes' line: a row is hair where at least kHairWidth d of a band
     // beside the face (from the cheek's line outward, kSideBand d wide) is the person, not skin,
-    // within kHairColourDistance of the hair's colour (a strand or a curtain of it); the fall ends where kFallGap d of rows
-    // have none (past the shoulders, or where the photo ends: reported as cut).
+    // within kHairColourDistance of the hair's colour (a strand or a curtain of it); the fall ends where kFallGap d of
+    // rows have none (past the shoulders, or where the photo ends: reported as cut).
     auto sideLine = [&](const std::array<QPointF, 2> &cheek, double y) {
         const QPointF a = cheek[0], b = cheek[1];
         const double t = std::clamp((y - a.y()) / std::max(1.0, b.y() - a.y()), 0.0, 1.0);
@@ -188,12 +194,16 @@ void measureHairFall(HeadParse *parse, const cv::Mat &lab, double browTop, doubl
     };
     const int gap = std::max(1, int(std::lround(kFallGap * d)));
     std::vector<double> falls;
+    const QTransform toPhoto = out.toWork.inverted();
+    int side = 0;
     for (const auto &[cheek, outward] : {std::pair(leftCheek, -1.0), std::pair(rightCheek, 1.0)}) {
         int last = int(eyeY), misses = 0;
+        double lastOuter = sideLine(cheek, eyeY);
         bool cut = false;
         for (int y = int(eyeY); y < out.size.height(); ++y) {
             const double edge = sideLine(cheek, y) + outward * kSideGap * d;
             int n = 0, hairy = 0, outside = 0;
+            double outer = edge;
             for (int k = 0; k < int(kSideBand * d); ++k) {
                 const int x = int(std::lround(edge + outward * k));
                 if (x < 0 || x >= out.size.width()) {
@@ -208,7 +218,10 @@ void measureHairFall(HeadParse *parse, const cv::Mat &lab, double browTop, doubl
                 ++n;
                 if (label == HeadParse::Other) {
                     const Lab c = labAt(lab, x, y);
-                    hairy += std::hypot(c.l - hair.l, c.a - hair.a, c.b - hair.b) < kHairColourDistance;
+                    if (std::hypot(c.l - hair.l, c.a - hair.a, c.b - hair.b) < kHairColourDistance) {
+                        ++hairy;
+                        outer = x;
+                    }
                 }
             }
             if (n < outside) {
@@ -217,18 +230,47 @@ void measureHairFall(HeadParse *parse, const cv::Mat &lab, double browTop, doubl
             }
             if (hairy >= kHairWidth * d) {
                 last = y;
+                lastOuter = outer;
                 misses = 0;
             } else if (++misses > gap) {
                 break;
             }
         }
         falls.push_back((last - chinY) / d);
+        out.fallEnds[side++] = toPhoto.map(QPointF(lastOuter, last));
         out.fallCut = out.fallCut || (cut && last >= int(chinY));
     }
     out.hairFall = std::max(falls[0], falls[1]);
 }
 
 } // namespace
+
+bool followHairFall(FaceModel *face, const HeadParse &parse)
+{
+    if (!parse.valid || !parse.hairSeen || !face->isValid())
+        return false;
+    const double es0 = QLineF(face->point("3.6"), face->point("3.5")).length();
+    bool moved = false;
+    // Each side: the outline's lower end h.1 (h.19) and the kFallPoints above it toward h.5 (h.15).
+    for (const bool left : {true, false}) {
+        const QPointF end = parse.fallEnds[left ? 0 : 1];
+        const int lowest = pt::idx(left ? "h.1" : "h.19");
+        const int step = left ? 1 : -1;
+        const int anchor = lowest + step * kFallPoints;
+        if (end.y() - face->point(lowest).y() < kMinFallGain * es0)
+            continue;
+        const QPointF top = face->point(anchor);
+        for (int k = 0; k < kFallPoints; ++k) {
+            const double t = double(kFallPoints - k) / kFallPoints; // 1 at the end, toward 0 at the anchor
+            const int i = lowest + step * k;
+            if (face->isHandPlaced(i))
+                continue;
+            face->setPoint(i, top + (end - top) * t);
+        }
+        moved = true;
+    }
+    return moved;
+}
 
 QImage HeadParse::toImage() const
 {

@@ -3,6 +3,7 @@
 #include "face/facemodel.h"
 
 #include <QImage>
+#include <QPointF>
 #include <QSize>
 #include <QTransform>
 
@@ -47,6 +48,7 @@ struct HeadParse
     // fallCut: the photo ends while the hair still falls.
     bool hairSeen = false, fallCut = false;
     double hairFall = 0;
+    QPointF fallEnds[2]; // in the photo: where each side's fall ends, at the hair's outer edge (left, right)
 
     Label at(int x, int y) const { return Label(labels[size_t(y) * size.width() + x]); }
     QImage toImage() const; // a colour per label, for the editor's detection steps and debugging
@@ -56,5 +58,11 @@ inline constexpr double kParseEyeDistance = 24.0;
 
 // Nothing (valid false) for an invalid face or a null photo.
 HeadParse parseHead(const QImage &photo, const FaceModel &face);
+
+// The hair outline's lower ends follow the hair down beside the face where the parse sees it
+// fall lower than the outline ends (long hair the outline's search stopped short of; where the
+// photo's edge cuts the fall, down to that edge); points the user placed stay. True when a point
+// moved.
+bool followHairFall(FaceModel *face, const HeadParse &parse);
 
 } // namespace toonface

@@ -159,6 +159,43 @@ private Q_SLOTS:
         QCOMPARE(findAppearance(testing::drawnFace(o, face), face, skin).hairLength, HairLength::Short);
     }
 
+    // The outline's lower ends follow the fall where the outline stopped short: on the long-haired
+    // drawing with the short outline, h.1 and h.19 move down below the chin; on a short-haired one
+    // they stay above it; a point the user placed stays.
+    void outlineFollowsTheFall()
+    {
+        const FaceModel face = testing::drawnFaceModel();
+        const double es0 = QLineF(face.point("3.6"), face.point("3.5")).length();
+        const double chin = face.point("2.1").y();
+        FaceModel longHaired = face;
+        for (int k = 0; k < 3; ++k)
+            for (const int i : {pt::idx("h.1") + k, pt::idx("h.19") - k})
+                longHaired.setPoint(
+                    i, QPointF(face.point(i).x(), std::max(face.point(i).y(), chin + (1.0 - 0.45 * k) * es0)));
+        DrawnFaceOptions o;
+        const QImage photo = testing::drawnFace(o, longHaired);
+        FaceModel outline = face; // the search's short outline over long hair
+        QVERIFY(followHairFall(&outline, parseHead(photo, face)));
+        QVERIFY2(outline.point("h.1").y() > chin && outline.point("h.19").y() > chin,
+            qPrintable(QStringLiteral("%1 %2 chin %3")
+                           .arg(outline.point("h.1").y())
+                           .arg(outline.point("h.19").y())
+                           .arg(chin)));
+        for (int i = pt::idx("h.5"); i <= pt::idx("h.15"); ++i)
+            QCOMPARE(outline.point(i), face.point(i));
+
+        FaceModel placed = face;
+        placed.setPoint(pt::idx("h.1"), face.point("h.1"), true);
+        followHairFall(&placed, parseHead(photo, face));
+        QCOMPARE(placed.point("h.1"), face.point("h.1"));
+
+        // (The drawing's short hair is closed along the jaw: it goes down beside the cheeks to the
+        // jaw's corners, and no lower.)
+        FaceModel shortHaired = face;
+        followHairFall(&shortHaired, parseHead(testing::drawnFace(o, face), face));
+        QVERIFY(shortHaired.point("h.1").y() < chin && shortHaired.point("h.19").y() < chin);
+    }
+
     void invalidInput()
     {
         QVERIFY(!parseHead(QImage(), testing::drawnFaceModel()).valid);
