@@ -218,6 +218,70 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
 
 namespace {
 
+// Each syllable's confidence from its doubts against the recording's (alignconfidence.h); 0 for
+// the syllables not spoken.
+void setConfidences(AlignResult *r)
+{
+    std::vector<Doubts> raw;
+    for (const AlignedSyllable &s : std::as_const(r->syllables))
+        raw.push_back(s.doubts);
+    const std::vector<Doubts> relative = relativeDoubts(raw);
+    for (qsizetype k = 0; k < r->syllables.size(); ++k)
+        r->syllables[k].confidence = r->unspoken.contains(int(k)) ? 0.0 : syllableConfidence(relative[size_t(k)]);
+}
+
+// Whether a syllable begins with a long noise: a fricative, an affricate or an aspirated stop.
+bool hasNoisyInitial(const QString &pinyin)
+{
+    const std::optional<PinyinParts> parts = splitPinyinSyllable(pinyin);
+    static const QStringList noisy
+        = {QStringLiteral("h"), QStringLiteral("f"), QStringLiteral("s"), QStringLiteral("sh"), QStringLiteral("x"),
+            QStringLiteral("c"), QStringLiteral("ch"), QStringLiteral("q"), QStringLiteral("k"), QStringLiteral("p"),
+            QStringLiteral("t"), QStringLiteral("j"), QStringLiteral("z"), QStringLiteral("zh")};
+    return parts && noisy.contains(parts->initial);
+}
+
+// A fricative, affricate or aspirated initial after a pause is 20 dB or more quieter than its vowel: in a
+// noisy recording its noise is lost in the pause's, the pause seems to run up to the vowel, and
+// the onset lands on the vowel's rise, late by the whole initial (an h of 150 ms in a slow voice).
+// Where the sound right after such an onset is already voiced, the initial lies hidden in the
+// pause: the onset moves back by the initial's length in the reference at the speaker's pace,
+// never before the pause begins. (Where the initial's noise is heard, the pause ends at it and
+// the sound after the onset is voiceless: nothing moves.)
+void moveOnsetsOfHiddenInitials(const SpeechFeatures &a, const OnsetSignals &sig, const Script &script,
+    const TtsResult &reference, double pace, AlignResult *r)
+{
+    for (qsizetype k = 0; k < r->syllables.size(); ++k) {
+        AlignedSyllable &s = r->syllables[k];
+        const TtsUnit &u = reference.units[k];
+        if (!hasNoisyInitial(script.syllables[k].pinyin) || u.phonemes.size() < 2)
+            continue;
+        const int onset = a.frameAt(s.start + 0.5 * SpeechFeatures::kHop);
+        int pauseEnd = -1;
+        for (int t = onset; t >= onset - 3 && t >= 0; --t)
+            if (sig.isPause(t)) {
+                pauseEnd = t;
+                break;
+            }
+        if (pauseEnd < 0)
+            continue;
+        double voiced = 0;
+        for (int t = pauseEnd + 1; t <= pauseEnd + 3; ++t)
+            voiced += a.voicing[size_t(std::clamp(t, 0, a.frames - 1))] / 3.0;
+        if (voiced < 0.5)
+            continue;
+        int pauseStart = pauseEnd;
+        while (pauseStart > 0 && sig.isPause(pauseStart - 1))
+            --pauseStart;
+        const double initial = std::min((u.phonemes[1].start - u.start) * pace, 0.25);
+        const double earliest
+            = std::max(a.time(pauseStart) - 0.5 * SpeechFeatures::kHop, k > 0 ? r->syllables[k - 1].start + 0.01 : 0.0);
+        const double moved
+            = std::max(std::min(s.start, a.time(pauseEnd + 1) - 0.5 * SpeechFeatures::kHop) - initial, earliest);
+        s.start = std::min(s.start, moved);
+    }
+}
+
 // The aligner proper, on the recording's features `a` and the padded reference's `b`.
 AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const TtsResult &reference,
     const SpeechFeatures &b, bool refine, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
@@ -446,6 +510,7 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         double cost;
     };
     std::vector<std::array<Candidate, 3>> candidates(static_cast<size_t>(n));
+    std::vector<double> warpGap(static_cast<size_t>(n), 0.0);
     for (int k = 0; k < n; ++k) {
         // A frame's onset is the start of its window's middle 10 ms.
         const double refined = a.time(onsets[size_t(k)]) - 0.5 * SpeechFeatures::kHop;
@@ -459,6 +524,7 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         const bool pauseBetween = sig.pauseFrames(w0, w1) > 0;
         const bool keepWarped = evidence[size_t(k)] - atWarped < 0.25 && !pauseBetween;
         const bool close = std::abs(refined - warped) <= 0.04;
+        warpGap[size_t(k)] = std::abs(refined - warped);
         candidates[size_t(k)] = {{{refined, keepWarped || close ? 1.0 : 0.0}, {warped, keepWarped ? 0.0 : 2.0},
             {0.5 * (refined + warped), !keepWarped && close ? 0.0 : 1.5}}};
     }
@@ -522,10 +588,12 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         }
         const std::vector<RefinedBoundary> refined = refineBoundaries(a, sig, in);
         for (int k = 0; k < n; ++k) {
+            at(r.syllables[k].doubts, Doubt::RefineMove) = std::abs(refined[size_t(k)].start - r.syllables[k].start);
             r.syllables[k].start = refined[size_t(k)].start;
             landmark[size_t(k)] = refined[size_t(k)].strength;
         }
     }
+    moveOnsetsOfHiddenInitials(a, sig, script, reference, pace, &r);
     for (int k = 0; k < n; ++k) {
         AlignedSyllable &s = r.syllables[k];
         // A syllable ends where the next begins, or where a pause after it begins (never
@@ -545,28 +613,51 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
             --endFrame;
         s.end = std::min(next, a.time(endFrame) - 0.5 * SpeechFeatures::kHop);
         s.end = std::max(s.end, s.start + 0.01);
-        // Confidence: a clear onset, where the warp expected it, over sounds that matched the
-        // reference (a mean distance of 0.15 is the same sounds in another voice, 0.4 none),
-        // lasting about as long as the reference says at this pace (half or twice as long
-        // halves that share), and not held at its least length by the duration model.
-        const double e = std::max(std::clamp(evidence[size_t(k)] / 0.5, 0.0, 1.0), landmark[size_t(k)]);
-        const double shift = std::abs(onsets[size_t(k)] - prior[size_t(k)]) * SpeechFeatures::kHop;
-        const double matched = std::clamp((0.4 - match[size_t(k)]) / 0.25, 0.0, 1.0);
-        const double length = std::max(s.end - s.start, 0.01);
-        const double fits = std::exp(-std::abs(std::log(length / (expectedFrames[size_t(k)] * SpeechFeatures::kHop))))
-            * (length < 1.2 * minSeconds[size_t(k)] ? 0.5 : 1.0);
-        s.confidence = std::clamp((e + std::exp(-shift / 0.1) + matched + fits) / 4.0, 0.0, 1.0);
-        s.heard = heard[size_t(k)];
-        if (s.heard < kUnspokenShare) {
-            r.unspoken.append(k);
-            s.confidence = 0;
+        // What may make the onset doubtful (alignconfidence.h).
+        Doubts &d = s.doubts;
+        at(d, Doubt::Unclear) = 1.0 - std::max(std::clamp(evidence[size_t(k)] / 0.5, 0.0, 1.0), landmark[size_t(k)]);
+        at(d, Doubt::WarpGap) = warpGap[size_t(k)];
+        at(d, Doubt::PriorShift) = std::abs(onsets[size_t(k)] - prior[size_t(k)]) * SpeechFeatures::kHop;
+        at(d, Doubt::Match) = match[size_t(k)];
+        {
+            double around = 0;
+            int count = 0;
+            for (const int j : {k - 1, k + 1})
+                if (j >= 0 && j < n) {
+                    around += match[size_t(j)];
+                    ++count;
+                }
+            at(d, Doubt::MatchExcess) = count ? match[size_t(k)] - around / count : 0.0;
+            at(d, Doubt::NeighbourGap)
+                = std::max(k > 0 ? warpGap[size_t(k) - 1] : 0.0, k + 1 < n ? warpGap[size_t(k) + 1] : 0.0);
         }
+        const double length = std::max(s.end - s.start, 0.01);
+        at(d, Doubt::LengthMisfit) = std::abs(std::log(length / (expectedFrames[size_t(k)] * SpeechFeatures::kHop)));
+        at(d, Doubt::AtMinimum) = length < 1.2 * minSeconds[size_t(k)] ? 1.0 : 0.0;
+        {
+            // Frames to the nearest pause either side of the onset (the speech before the
+            // first syllable and after the last counts as pause).
+            constexpr int kFar = 100; // 1 s
+            int nearest = kFar;
+            for (int t = startFrame, steps = 0; steps < kFar; --t, ++steps)
+                if (t < first || sig.isPause(t)) {
+                    nearest = steps;
+                    break;
+                }
+            nearest = std::min(nearest, std::max(0, std::min(sig.nextPause(startFrame), last + 1) - startFrame));
+            at(d, Doubt::NearPause) = 1.0 - std::min(nearest, kFar) / double(kFar);
+        }
+        at(d, Doubt::HeardMisfit) = std::abs(std::log(std::max(heard[size_t(k)], 0.05)));
+        s.heard = heard[size_t(k)];
+        if (s.heard < kUnspokenShare)
+            r.unspoken.append(k);
         const TtsUnit &u = reference.units[k];
         // Phonemes: warped times, moved with the onset and kept inside the syllable.
         const double delta = s.start - mapTime(u.start + kReferencePad, true);
         for (const TtsPhoneme &p : u.phonemes)
             s.phonemes.append({p.name, std::clamp(mapTime(p.start + kReferencePad, true) + delta, s.start, s.end)});
     }
+    setConfidences(&r);
     r.speechStart = a.time(first) - 0.0125;
     r.speechEnd = a.time(last) + 0.0125;
     r.status = AlignStatus::Ok;
@@ -613,6 +704,9 @@ AlignResult alignAdapted(const SpeechFeatures &a, const Script &script, const Tt
         }
         refClasses = soundClasses(b, script, starts, initialEnds(script, starts, phonemes, kReferencePad), ends);
     }
+    std::vector<double> firstPass;
+    for (const AlignedSyllable &syl : r.syllables)
+        firstPass.push_back(syl.start);
     // Each round moves the onsets less; past a few the changes are within a frame.
     constexpr int kMaxRounds = 2;
     constexpr double kStable = 0.01; // seconds
@@ -638,6 +732,10 @@ AlignResult alignAdapted(const SpeechFeatures &a, const Script &script, const Tt
         if (moved < kStable)
             break;
     }
+    // Where adapting moved an onset far, the first pass and the adapted one disagree: doubt.
+    for (int k = 0; k < n; ++k)
+        at(r.syllables[k].doubts, Doubt::PassMove) = std::abs(r.syllables[k].start - firstPass[size_t(k)]);
+    setConfidences(&r);
     return r;
 }
 

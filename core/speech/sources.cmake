@@ -21,6 +21,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/boundaryrefine.h speech/boundaryrefine.cpp
   speech/paceprobe.h speech/paceprobe.cpp
   speech/speakeradapt.h speech/speakeradapt.cpp
+  speech/alignconfidence.h speech/alignconfidence.cpp
   speech/aligner.h speech/aligner.cpp
   speech/englishshapes.h speech/englishshapes.cpp
   speech/lipsync.h speech/lipsync.cpp
