@@ -243,7 +243,8 @@ bool hasNoisyInitial(const QString &pinyin)
 
 // A fricative, affricate or aspirated initial after a pause is 20 dB or more quieter than its vowel: in a
 // noisy recording its noise is lost in the pause's, the pause seems to run up to the vowel, and
-// the onset lands on the vowel's rise, late by the whole initial (an h of 150 ms in a slow voice).
+// the onset lands on the vowel's rise, late by the whole initial (an h of 150 ms in a slow voice,
+// under noise 20 dB below the speech).
 // Where the sound right after such an onset is already voiced, the initial lies hidden in the
 // pause: the onset moves back by the initial's length in the reference at the speaker's pace,
 // never before the pause begins. (Where the initial's noise is heard, the pause ends at it and
@@ -251,6 +252,10 @@ bool hasNoisyInitial(const QString &pinyin)
 void moveOnsetsOfHiddenInitials(const SpeechFeatures &a, const OnsetSignals &sig, const Script &script,
     const TtsResult &reference, double pace, AlignResult *r)
 {
+    // Only noise within 30 dB of the speech (6.9 ln units) can hide such an initial: in a
+    // cleaner recording its noise is heard, and a pause before it is silence.
+    if (a.speechLevel - a.noiseFloor >= 6.9f)
+        return;
     for (qsizetype k = 0; k < r->syllables.size(); ++k) {
         AlignedSyllable &s = r->syllables[k];
         const TtsUnit &u = reference.units[k];
