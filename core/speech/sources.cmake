@@ -19,6 +19,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/samplerelay.h speech/samplerelay.cpp
   speech/referencefeatures.h speech/referencefeatures.cpp
   speech/boundaryrefine.h speech/boundaryrefine.cpp
+  speech/hiddeninitials.h speech/hiddeninitials.cpp
   speech/paceprobe.h speech/paceprobe.cpp
   speech/speakeradapt.h speech/speakeradapt.cpp
   speech/alignconfidence.h speech/alignconfidence.cpp
