@@ -37,6 +37,11 @@ QJsonObject Errors::json() const
     o.insert(QStringLiteral("offBy80Ms"), off);
     o.insert(QStringLiteral("offBy80MsFlagged"), offFlagged);
     o.insert(QStringLiteral("flagged"), flaggedAll);
+    // The shares the editor's tint is judged by: of the onsets > 80 ms off, how many it marks;
+    // of all, how many (a tint on every other syllable says nothing).
+    o.insert(QStringLiteral("offBy80MsFlaggedShare"), off ? std::round(1000.0 * offFlagged / off) / 1000 : 1.0);
+    o.insert(
+        QStringLiteral("flaggedShare"), ms.empty() ? 0.0 : std::round(1000.0 * flaggedAll / double(ms.size())) / 1000);
     return o;
 }
 
@@ -55,6 +60,20 @@ const QStringList &sentences()
 
 const Voice kVoices[4] = {{"cmn-latn-pinyin+f2", 140, 70}, {"cmn-latn-pinyin+m3", 230, 35},
     {"cmn-latn-pinyin+f4", 180, 85}, {"cmn-latn-pinyin+klatt", 120, 45}};
+
+// Speakers no constant of the aligner was chosen on: espeak-ng variants, rates and pitches
+// unlike kVoices (which speech.alignSynthetic reports) and the reference's default voice.
+const Voice kHeldOutVoices[6]
+    = {{"cmn-latn-pinyin+m1", 170, 40}, {"cmn-latn-pinyin+f5", 210, 75}, {"cmn-latn-pinyin+m7", 110, 30},
+        {"cmn-latn-pinyin+klatt3", 260, 60}, {"cmn-latn-pinyin+croak", 150, 50}, {"cmn-latn-pinyin+f1", 125, 90}};
+
+// The shared sentences and some whose tones change in context (一, 不, 3rd before 3rd).
+QStringList heldOutSentences()
+{
+    return sentences()
+        + QStringList {QStringLiteral("我们一起去买一本书，好不好？"), QStringLiteral("你不要一天到晚想这个问题。"),
+            QStringLiteral("老李很少给小马打电话。"), QStringLiteral("一个人不是一座孤岛。")};
+}
 
 // A synthetic recording: the script spoken in `v`, with leading and trailing silence, a pause
 // the script does not mark, and white noise at 20 dB SNR; `truth` gets its syllable onsets.

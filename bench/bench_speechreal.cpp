@@ -17,20 +17,6 @@ using namespace toonface::speechbench;
 
 namespace {
 
-// Speakers no constant of the aligner was chosen on: espeak-ng variants, rates and pitches
-// unlike kVoices (which speech.alignSynthetic reports) and the reference's default voice.
-const Voice kHeldOutVoices[]
-    = {{"cmn-latn-pinyin+m1", 170, 40}, {"cmn-latn-pinyin+f5", 210, 75}, {"cmn-latn-pinyin+m7", 110, 30},
-        {"cmn-latn-pinyin+klatt3", 260, 60}, {"cmn-latn-pinyin+croak", 150, 50}, {"cmn-latn-pinyin+f1", 125, 90}};
-
-// The shared sentences and some whose tones change in context (一, 不, 3rd before 3rd).
-QStringList heldOutSentences()
-{
-    return sentences()
-        + QStringList {QStringLiteral("我们一起去买一本书，好不好？"), QStringLiteral("你不要一天到晚想这个问题。"),
-            QStringLiteral("老李很少给小马打电话。"), QStringLiteral("一个人不是一座孤岛。")};
-}
-
 QJsonArray rounded(const std::vector<double> &v)
 {
     QJsonArray a;

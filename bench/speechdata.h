@@ -3,6 +3,7 @@
 // What the speech benchmarks share: error statistics, synthetic recordings in espeak-ng voices
 // with exact syllable times, and the shared data's real recordings with their references.
 
+#include "speech/alignconfidence.h"
 #include "speech/audio.h"
 #include "speech/lipsync.h"
 #include "speech/script.h"
@@ -21,7 +22,7 @@ struct Errors
 {
     std::vector<double> signedMs;
     std::vector<double> ms; // absolute
-    std::vector<bool> flagged; // the aligner doubted the syllable (confidence < 0.5)
+    std::vector<bool> flagged; // the aligner doubted the syllable (confidence < kDoubtfulConfidence)
     void add(double aligned, double truth, double confidence = 1.0)
     {
         signedMs.push_back((aligned - truth) * 1000.0);
@@ -50,7 +51,7 @@ struct Errors
     }
     QJsonObject json() const;
     // The editor tints syllables below this confidence as doubtful.
-    static constexpr double kDoubtful = 0.5;
+    static constexpr double kDoubtful = kDoubtfulConfidence;
 };
 
 const QStringList &sentences();
@@ -63,6 +64,13 @@ struct Voice
 
 // The voices alignSynthetic reports (rate, pitch chosen with the aligner's constants).
 extern const Voice kVoices[4];
+
+// Speakers no constant of the aligner was chosen on: espeak-ng variants, rates and pitches
+// unlike kVoices and the reference's default voice.
+extern const Voice kHeldOutVoices[6];
+
+// The shared sentences and some whose tones change in context (一, 不, 3rd before 3rd).
+QStringList heldOutSentences();
 
 // A synthetic recording: the script spoken in `v`, with leading and trailing silence, a pause
 // the script does not mark, and white noise at 20 dB SNR; `truth` gets its syllable onsets.

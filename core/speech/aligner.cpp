@@ -4,6 +4,7 @@
 #include "speech/boundaryrefine.h"
 #include "speech/dtw.h"
 #include "speech/features.h"
+#include "speech/hiddeninitials.h"
 #include "speech/onsetsignals.h"
 #include "speech/paceprobe.h"
 #include "speech/pinyin.h"
@@ -217,6 +218,18 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
 } // namespace
 
 namespace {
+
+// Each syllable's confidence from its doubts against the recording's (alignconfidence.h); 0 for
+// the syllables not spoken.
+void setConfidences(AlignResult *r)
+{
+    std::vector<Doubts> raw;
+    for (const AlignedSyllable &s : std::as_const(r->syllables))
+        raw.push_back(s.doubts);
+    const std::vector<Doubts> relative = relativeDoubts(raw);
+    for (qsizetype k = 0; k < r->syllables.size(); ++k)
+        r->syllables[k].confidence = r->unspoken.contains(int(k)) ? 0.0 : syllableConfidence(relative[size_t(k)]);
+}
 
 // The aligner proper, on the recording's features `a` and the padded reference's `b`.
 AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const TtsResult &reference,
@@ -446,6 +459,7 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         double cost;
     };
     std::vector<std::array<Candidate, 3>> candidates(static_cast<size_t>(n));
+    std::vector<double> warpGap(static_cast<size_t>(n), 0.0);
     for (int k = 0; k < n; ++k) {
         // A frame's onset is the start of its window's middle 10 ms.
         const double refined = a.time(onsets[size_t(k)]) - 0.5 * SpeechFeatures::kHop;
@@ -459,6 +473,7 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         const bool pauseBetween = sig.pauseFrames(w0, w1) > 0;
         const bool keepWarped = evidence[size_t(k)] - atWarped < 0.25 && !pauseBetween;
         const bool close = std::abs(refined - warped) <= 0.04;
+        warpGap[size_t(k)] = std::abs(refined - warped);
         candidates[size_t(k)] = {{{refined, keepWarped || close ? 1.0 : 0.0}, {warped, keepWarped ? 0.0 : 2.0},
             {0.5 * (refined + warped), !keepWarped && close ? 0.0 : 1.5}}};
     }
@@ -522,10 +537,12 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         }
         const std::vector<RefinedBoundary> refined = refineBoundaries(a, sig, in);
         for (int k = 0; k < n; ++k) {
+            at(r.syllables[k].doubts, Doubt::RefineMove) = std::abs(refined[size_t(k)].start - r.syllables[k].start);
             r.syllables[k].start = refined[size_t(k)].start;
             landmark[size_t(k)] = refined[size_t(k)].strength;
         }
     }
+    moveOnsetsOfHiddenInitials(a, sig, script, reference, pace, &r);
     for (int k = 0; k < n; ++k) {
         AlignedSyllable &s = r.syllables[k];
         // A syllable ends where the next begins, or where a pause after it begins (never
@@ -545,28 +562,51 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
             --endFrame;
         s.end = std::min(next, a.time(endFrame) - 0.5 * SpeechFeatures::kHop);
         s.end = std::max(s.end, s.start + 0.01);
-        // Confidence: a clear onset, where the warp expected it, over sounds that matched the
-        // reference (a mean distance of 0.15 is the same sounds in another voice, 0.4 none),
-        // lasting about as long as the reference says at this pace (half or twice as long
-        // halves that share), and not held at its least length by the duration model.
-        const double e = std::max(std::clamp(evidence[size_t(k)] / 0.5, 0.0, 1.0), landmark[size_t(k)]);
-        const double shift = std::abs(onsets[size_t(k)] - prior[size_t(k)]) * SpeechFeatures::kHop;
-        const double matched = std::clamp((0.4 - match[size_t(k)]) / 0.25, 0.0, 1.0);
-        const double length = std::max(s.end - s.start, 0.01);
-        const double fits = std::exp(-std::abs(std::log(length / (expectedFrames[size_t(k)] * SpeechFeatures::kHop))))
-            * (length < 1.2 * minSeconds[size_t(k)] ? 0.5 : 1.0);
-        s.confidence = std::clamp((e + std::exp(-shift / 0.1) + matched + fits) / 4.0, 0.0, 1.0);
-        s.heard = heard[size_t(k)];
-        if (s.heard < kUnspokenShare) {
-            r.unspoken.append(k);
-            s.confidence = 0;
+        // What may make the onset doubtful (alignconfidence.h).
+        Doubts &d = s.doubts;
+        at(d, Doubt::Unclear) = 1.0 - std::max(std::clamp(evidence[size_t(k)] / 0.5, 0.0, 1.0), landmark[size_t(k)]);
+        at(d, Doubt::WarpGap) = warpGap[size_t(k)];
+        at(d, Doubt::PriorShift) = std::abs(onsets[size_t(k)] - prior[size_t(k)]) * SpeechFeatures::kHop;
+        at(d, Doubt::Match) = match[size_t(k)];
+        {
+            double around = 0;
+            int count = 0;
+            for (const int j : {k - 1, k + 1})
+                if (j >= 0 && j < n) {
+                    around += match[size_t(j)];
+                    ++count;
+                }
+            at(d, Doubt::MatchExcess) = count ? match[size_t(k)] - around / count : 0.0;
+            at(d, Doubt::NeighbourGap)
+                = std::max(k > 0 ? warpGap[size_t(k) - 1] : 0.0, k + 1 < n ? warpGap[size_t(k) + 1] : 0.0);
         }
+        const double length = std::max(s.end - s.start, 0.01);
+        at(d, Doubt::LengthMisfit) = std::abs(std::log(length / (expectedFrames[size_t(k)] * SpeechFeatures::kHop)));
+        at(d, Doubt::AtMinimum) = length < 1.2 * minSeconds[size_t(k)] ? 1.0 : 0.0;
+        {
+            // Frames to the nearest pause either side of the onset (the speech before the
+            // first syllable and after the last counts as pause).
+            constexpr int kFar = 100; // 1 s
+            int nearest = kFar;
+            for (int t = startFrame, steps = 0; steps < kFar; --t, ++steps)
+                if (t < first || sig.isPause(t)) {
+                    nearest = steps;
+                    break;
+                }
+            nearest = std::min(nearest, std::max(0, std::min(sig.nextPause(startFrame), last + 1) - startFrame));
+            at(d, Doubt::NearPause) = 1.0 - std::min(nearest, kFar) / double(kFar);
+        }
+        at(d, Doubt::HeardMisfit) = std::abs(std::log(std::max(heard[size_t(k)], 0.05)));
+        s.heard = heard[size_t(k)];
+        if (s.heard < kUnspokenShare)
+            r.unspoken.append(k);
         const TtsUnit &u = reference.units[k];
         // Phonemes: warped times, moved with the onset and kept inside the syllable.
         const double delta = s.start - mapTime(u.start + kReferencePad, true);
         for (const TtsPhoneme &p : u.phonemes)
             s.phonemes.append({p.name, std::clamp(mapTime(p.start + kReferencePad, true) + delta, s.start, s.end)});
     }
+    setConfidences(&r);
     r.speechStart = a.time(first) - 0.0125;
     r.speechEnd = a.time(last) + 0.0125;
     r.status = AlignStatus::Ok;
@@ -613,6 +653,9 @@ AlignResult alignAdapted(const SpeechFeatures &a, const Script &script, const Tt
         }
         refClasses = soundClasses(b, script, starts, initialEnds(script, starts, phonemes, kReferencePad), ends);
     }
+    std::vector<double> firstPass;
+    for (const AlignedSyllable &syl : r.syllables)
+        firstPass.push_back(syl.start);
     // Each round moves the onsets less; past a few the changes are within a frame.
     constexpr int kMaxRounds = 2;
     constexpr double kStable = 0.01; // seconds
@@ -638,6 +681,10 @@ AlignResult alignAdapted(const SpeechFeatures &a, const Script &script, const Tt
         if (moved < kStable)
             break;
     }
+    // Where adapting moved an onset far, the first pass and the adapted one disagree: doubt.
+    for (int k = 0; k < n; ++k)
+        at(r.syllables[k].doubts, Doubt::PassMove) = std::abs(r.syllables[k].start - firstPass[size_t(k)]);
+    setConfidences(&r);
     return r;
 }
 

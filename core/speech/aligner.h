@@ -1,5 +1,6 @@
 #pragma once
 
+#include "speech/alignconfidence.h"
 #include "speech/audio.h"
 #include "speech/features.h"
 #include "speech/paceprobe.h"
@@ -30,7 +31,8 @@ struct AlignedSyllable
 {
     double start = 0; // seconds in the audio
     double end = 0; // seconds; <= the next syllable's start
-    double confidence = 0; // 0..1: how well the recording matched the reference here
+    double confidence = 0; // 0..1: below kDoubtfulConfidence the onset may well be > 80 ms off
+    Doubts doubts {}; // what the confidence was made of (alignconfidence.h)
     QVector<TtsPhoneme> phonemes; // the reference's phonemes, their starts mapped into the audio
     // The recording's speech the warp gave the syllable over the length the reference and the
     // speaker's pace expect: about 1; near 0 for a syllable the speaker did not say.

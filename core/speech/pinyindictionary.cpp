@@ -9,11 +9,13 @@
 #include <QMutex>
 #include <QMutexLocker>
 #include <QSaveFile>
+#include <QSet>
 #include <QStandardPaths>
 
 #include <bzlib.h>
 
 #include <atomic>
+#include <cmath>
 #include <limits>
 #include <string_view>
 #include <vector>
@@ -198,7 +200,7 @@ struct Sources
 };
 
 // Bumped whenever the parsing below changes what it makes of the same sources.
-constexpr quint64 kParserVersion = 1;
+constexpr quint64 kParserVersion = 3;
 
 // The source files, in the order they are read: the plain file beside each .bz2 is read
 // instead when it exists.
@@ -238,6 +240,17 @@ quint64 sourceSignature(const QString &root)
     return h;
 }
 
+// Terra writes 一 and 不 in some phrases with the tone they take before the next syllable (一樣
+// yi2, 不是 bu2): their own tone is kept, the sandhi (tonesandhi.h) changes it as spoken.
+PinyinSyllable underlyingTone(char32_t han, PinyinSyllable s)
+{
+    if (han == U'一' && (s.tone == 2 || s.tone == 4))
+        s.tone = 1;
+    else if (han == U'不' && s.tone == 2)
+        s.tone = 4;
+    return s;
+}
+
 std::optional<Sources> parseSources(const QString &root, QString *error)
 {
     QString err;
@@ -266,6 +279,24 @@ std::optional<Sources> parseSources(const QString &root, QString *error)
             }
         }
     });
+    // How often each reading is heard: kHanyuPinlu counts readings in a corpus of modern
+    // Mandarin ("hǎo(6060) hāo(142) hào(115)"), a spoken frequency where the input method's
+    // weights below count what people type.
+    QHash<char32_t, QVector<QPair<PinyinSyllable, double>>> heard;
+    forEachLine(readings, [&](string_view line) {
+        if (!line.starts_with("U+"))
+            return;
+        const auto cols = splitView(line, '\t');
+        if (cols.size() < 3 || cols[1] != "kHanyuPinlu")
+            return;
+        const char32_t c = parseCodePoint(cols[0]);
+        for (const QString &item : utf8(cols[2]).split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+            const qsizetype paren = item.indexOf(QLatin1Char('('));
+            const auto syl = paren > 0 ? parseCached(item.left(paren)) : std::nullopt;
+            if (c && syl)
+                heard[c].append({*syl, item.mid(paren + 1).chopped(1).toDouble()});
+        }
+    });
     for (auto it = perField.cbegin(); it != perField.cend(); ++it) {
         QVector<PinyinSyllable> all;
         for (const auto &list : it.value())
@@ -292,6 +323,26 @@ std::optional<Sources> parseSources(const QString &root, QString *error)
                 simplified.insert(from, to);
         }
     });
+    // A traditional form with no simplified variant of its own whose semantic variant has one
+    // (爲 → 為 → 为): terra writes many phrases with it (認爲, 因爲).
+    {
+        QSet<char32_t> targets;
+        for (const char32_t to : std::as_const(simplified))
+            targets.insert(to);
+        QHash<char32_t, char32_t> more;
+        forEachLine(variants, [&](string_view line) {
+            if (!line.starts_with("U+"))
+                return;
+            const auto cols = splitView(line, '\t');
+            if (cols.size() < 3 || cols[1] != "kSemanticVariant")
+                return;
+            const char32_t from = parseCodePoint(cols[0]);
+            const char32_t via = parseCodePoint(splitView(splitView(cols[2], ' ').front(), '<').front());
+            if (from && via && !simplified.contains(from) && !targets.contains(from) && simplified.contains(via))
+                more.insert(from, simplified.value(via));
+        });
+        simplified.insert(more);
+    }
 
     const QString terraPath = root + QStringLiteral("/rime-data/terra_pinyin.dict.yaml");
     QFile terra(terraPath);
@@ -302,17 +353,30 @@ std::optional<Sources> parseSources(const QString &root, QString *error)
         return std::nullopt;
     }
     QHash<char32_t, QVector<QPair<PinyinSyllable, double>>> charWeights;
+    // Terra lists some phrases more than once (不好 as bù hǎo and as bú hào, 着急 as zhāo jí
+    // and zháo jí): all are kept until the characters' weights can choose among them.
+    QHash<QString, QVector<QVector<PinyinSyllable>>> candidates;
+    QStringList candidateOrder;
+    auto addCandidate = [&](const QString &key, const QVector<PinyinSyllable> &reading) {
+        auto it = candidates.find(key);
+        if (it == candidates.end()) {
+            candidateOrder.append(key);
+            candidates.insert(key, {reading});
+        } else if (!it->contains(reading)) {
+            it->append(reading);
+        }
+    };
     forEachRimeEntry(terra.readAll(), [&](const QString &text, const QString &code, const QString &weight) {
         const std::u32string han = text.toStdU32String();
         const QStringList codes = code.split(QLatin1Char(' '), Qt::SkipEmptyParts);
         if (han.empty() || size_t(codes.size()) != han.size())
             return;
         QVector<PinyinSyllable> reading;
-        for (const QString &c : codes) {
-            const auto s = parseCached(c);
+        for (qsizetype i = 0; i < codes.size(); ++i) {
+            const auto s = parseCached(codes[i]);
             if (!s)
                 return;
-            reading.append(*s);
+            reading.append(han.size() > 1 ? underlyingTone(han[size_t(i)], *s) : *s);
         }
         if (han.size() == 1) {
             const double w = rimeWeight(weight);
@@ -320,12 +384,12 @@ std::optional<Sources> parseSources(const QString &root, QString *error)
                 charWeights[han[0]].append({reading[0], w});
             return;
         }
-        d.addPhrase(text, reading);
+        addCandidate(text, reading);
         std::u32string simp = han;
         for (char32_t &c : simp)
             c = simplified.value(c, c);
         if (simp != han)
-            d.addPhrase(QString::fromStdU32String(simp), reading);
+            addCandidate(QString::fromStdU32String(simp), reading);
     });
     // Terra lists phrases only where its own usual readings would be wrong, so a character's
     // usual reading must be terra's when terra weighs several.
@@ -342,6 +406,42 @@ std::optional<Sources> parseSources(const QString &root, QString *error)
             appendReading(ordered, s);
         d.readings.insert(it.key(), ordered);
     }
+    // How usual a reading of a character is, 0..1: its share of the corpus counts where there
+    // are some, else of terra's weights, else by its place in the list of readings.
+    auto share = [&](char32_t c, const PinyinSyllable &s) {
+        auto shareIn = [&](const QVector<QPair<PinyinSyllable, double>> &counts) {
+            double all = 0, mine = 0;
+            for (const auto &[r, n] : counts) {
+                all += n;
+                mine += r == s ? n : 0.0;
+            }
+            return all > 0 ? mine / all : -1.0;
+        };
+        double v = shareIn(heard.value(c));
+        if (v < 0)
+            v = shareIn(charWeights.value(c));
+        if (v < 0) {
+            const qsizetype rank = d.readings.value(c).indexOf(s);
+            v = rank < 0 ? 0.0 : 1.0 / double(rank + 1);
+        }
+        return std::max(v, 0.005);
+    };
+    for (const QString &key : std::as_const(candidateOrder)) {
+        const QVector<QVector<PinyinSyllable>> &list = candidates[key];
+        const std::u32string han = key.toStdU32String();
+        qsizetype best = 0;
+        double bestScore = -1e300;
+        for (qsizetype r = 0; r < list.size(); ++r) {
+            double score = 0;
+            for (size_t i = 0; i < han.size(); ++i)
+                score += std::log(share(han[i], list[r][qsizetype(i)]));
+            if (score > bestScore) {
+                bestScore = score;
+                best = r;
+            }
+        }
+        d.addPhrase(key, list[best]);
+    }
 
     QFile simp(root + QStringLiteral("/rime-data/pinyin_simp.dict.yaml"));
     if (simp.open(QIODevice::ReadOnly)) {
@@ -357,11 +457,13 @@ std::optional<Sources> parseSources(const QString &root, QString *error)
                 if (!toneless)
                     return;
                 PinyinSyllable s = *toneless;
-                // The tone of the character's own reading with this spelling.
+                // The tone of the character's most usual reading with this spelling (跑得 pǎo
+                // de: 得's neutral de is heard far more often than dé).
+                double bestShare = -1;
                 for (const auto &r : d.readings.value(han[i])) {
-                    if (r.pinyin == s.pinyin) {
+                    if (r.pinyin == s.pinyin && share(han[i], r) > bestShare) {
+                        bestShare = share(han[i], r);
                         s.tone = r.tone;
-                        break;
                     }
                 }
                 reading.append(s);
@@ -479,6 +581,27 @@ std::shared_ptr<const PinyinDictionary> PinyinDictionary::loadCached(
     return std::shared_ptr<const PinyinDictionary>(new PinyinDictionary(std::move(*index)));
 }
 
+namespace {
+
+// The reading of han[i], a character in no phrase of the dictionaries, where its neighbours
+// make it a particle: 得 after another character marks a complement (跑得快 pǎo de kuài).
+// Otherwise none: the usual reading.
+std::optional<PinyinSyllable> loneReading(const std::u32string &han, size_t i)
+{
+    if (han[i] == U'得' && i > 0)
+        return PinyinSyllable {QStringLiteral("de"), 5};
+    return std::nullopt;
+}
+
+// 地 after a doubled syllable makes an adverb (慢慢地 màn màn de, 好好地), whatever phrase the
+// dictionaries found it in (their toneless 好地 hao di).
+bool adverbialDe(const std::u32string &han, size_t i)
+{
+    return han[i] == U'地' && i >= 2 && han[i - 1] == han[i - 2];
+}
+
+} // namespace
+
 QVector<PinyinSyllable> PinyinDictionary::readRun(const std::u32string &han) const
 {
     const size_t n = han.size();
@@ -516,10 +639,15 @@ QVector<PinyinSyllable> PinyinDictionary::readRun(const std::u32string &han) con
             for (size_t k = c.from; k < end; ++k)
                 out[qsizetype(k)] = reading[qsizetype(k - c.from)];
         } else {
-            out[qsizetype(c.from)] = m_index.usualReading(han[c.from]).value_or(PinyinSyllable {QString(), 5});
+            out[qsizetype(c.from)]
+                = loneReading(han, c.from)
+                      .value_or(m_index.usualReading(han[c.from]).value_or(PinyinSyllable {QString(), 5}));
         }
         end = c.from;
     }
+    for (size_t i = 0; i < n; ++i)
+        if (adverbialDe(han, i))
+            out[qsizetype(i)] = PinyinSyllable {QStringLiteral("de"), 5};
     return out;
 }
 

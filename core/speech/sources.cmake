@@ -19,8 +19,10 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/samplerelay.h speech/samplerelay.cpp
   speech/referencefeatures.h speech/referencefeatures.cpp
   speech/boundaryrefine.h speech/boundaryrefine.cpp
+  speech/hiddeninitials.h speech/hiddeninitials.cpp
   speech/paceprobe.h speech/paceprobe.cpp
   speech/speakeradapt.h speech/speakeradapt.cpp
+  speech/alignconfidence.h speech/alignconfidence.cpp
   speech/aligner.h speech/aligner.cpp
   speech/englishshapes.h speech/englishshapes.cpp
   speech/lipsync.h speech/lipsync.cpp

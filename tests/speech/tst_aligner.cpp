@@ -616,6 +616,47 @@ private Q_SLOTS:
         QVERIFY2(wrong < right - 0.1, qPrintable(QStringLiteral("said %1, not said %2").arg(right).arg(wrong)));
     }
 
+    // The editor's tint: syllables the aligner cannot have placed right (the script's second
+    // half is words the recording does not say, so their onsets are wherever the warp ran) come
+    // out below kDoubtfulConfidence, the ones it says mostly above it.
+    void confidenceFlagsMisalignedSyllables()
+    {
+        const QString said = QStringLiteral("今天天气很好，我们去公园散步吧。");
+        const QString written = QStringLiteral("今天天气很好，春眠不觉晓花落吧。");
+        std::vector<double> truth;
+        const Audio rec
+            = pieces({{mandarin(said), 160}}, QStringLiteral("cmn-latn-pinyin+f2"), 0.5, 0, 40, 30, 5, &truth);
+        const AlignResult r = alignScript(rec, mandarin(written));
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        int flaggedSaid = 0, flaggedWrong = 0;
+        QString figures;
+        for (int k = 0; k < r.syllables.size(); ++k) {
+            const bool flagged = r.syllables[k].confidence < kDoubtfulConfidence;
+            (k < 6 ? flaggedSaid : flaggedWrong) += flagged ? 1 : 0;
+            figures += QStringLiteral("%1 %2 ms %3; ")
+                           .arg(k)
+                           .arg(std::round((r.syllables[k].start - truth[size_t(k)]) * 1000))
+                           .arg(r.syllables[k].confidence, 0, 'f', 2);
+        }
+        QVERIFY2(flaggedSaid <= 1, qPrintable(figures));
+        QVERIFY2(flaggedWrong >= 3, qPrintable(figures));
+    }
+
+    // A syllable whose initial is a long noise (h, an aspirated stop) after a pause the script
+    // does not mark, in a slow voice and a noisy recording: the noise of the initial sinks into
+    // the pause's, and the onset must not be put at the vowel, an initial's length late.
+    void noisyInitialHiddenInAPause()
+    {
+        const Script first = mandarin(QStringLiteral("这个问题")), second = mandarin(QStringLiteral("很难回答"));
+        std::vector<double> truth;
+        const Audio rec
+            = pieces({{first, 110}, {second, 110}}, QStringLiteral("cmn-latn-pinyin+m7"), 0.5, 0.35, 60, 20, 9, &truth);
+        const AlignResult r = alignScript(rec, mandarin(QStringLiteral("这个问题很难回答")));
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        const double error = (r.syllables[4].start - truth[4]) * 1000;
+        QVERIFY2(std::abs(error) <= 80, qPrintable(QStringLiteral("很 off by %1 ms").arg(error)));
+    }
+
     // The duration model holds inside the search: no syllable comes out shorter than its
     // least plausible length, whatever pulls two onsets together (a speaker who speeds up
     // within a phrase, long pauses the script does not mark).

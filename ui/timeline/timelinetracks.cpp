@@ -1,6 +1,7 @@
 #include "timeline/timelinetracks.h"
 
 #include "anim/keycurve.h"
+#include "speech/alignconfidence.h"
 #include "speech/pinyin.h"
 #include "timeline/mouthicons.h"
 #include "timeline/posetrack.h"
@@ -142,7 +143,7 @@ void paintScriptRow(QPainter &p, const TimelineScene &s, double t0, double t1)
         const LipsyncSyllable &syl = syllables[i];
         const QRectF r = spanRect(s, RowKind::Script, spans[i]);
         const bool selected = s.selection->contains({ItemKind::Syllable, int(i)});
-        const QColor fill = syl.confidence < 0.5 ? QColor(0x5a, 0x47, 0x3a) : QColor(0x3b, 0x41, 0x4d);
+        const QColor fill = syl.confidence < kDoubtfulConfidence ? QColor(0x5a, 0x47, 0x3a) : QColor(0x3b, 0x41, 0x4d);
         if (strip.take(r.left(), r.right(), selected ? kSelection : fill.lighter(130)))
             continue;
         p.setPen(QPen(fill.lighter(150), 1));
