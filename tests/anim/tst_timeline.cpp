@@ -2,6 +2,7 @@
 #include "anim/timelineevaluator.h"
 #include "face/averageface.h"
 #include "face/mouthshape.h"
+#include "testmain.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -427,5 +428,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestTimeline)
+TOONFACE_TEST_GUILESS_MAIN(TestTimeline)
 #include "tst_timeline.moc"

@@ -6,6 +6,7 @@
 #include "face/fapu.h"
 #include "face/mouthshape.h"
 #include "face/pose.h"
+#include "testmain.h"
 
 #include <QLineF>
 #include <QTest>
@@ -634,5 +635,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestTimelineEvaluator)
+TOONFACE_TEST_GUILESS_MAIN(TestTimelineEvaluator)
 #include "tst_timelineevaluator.moc"

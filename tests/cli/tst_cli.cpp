@@ -5,6 +5,7 @@
 #include "io/project.h"
 #include "media/mediareader.h"
 #include "render/svgface.h"
+#include "testmain.h"
 
 #include "testphotos.h"
 
@@ -673,5 +674,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCli)
+TOONFACE_TEST_GUILESS_MAIN(TestCli)
 #include "tst_cli.moc"

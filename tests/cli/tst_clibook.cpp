@@ -1,6 +1,7 @@
 // toonface-cli book: the contract's exit codes, the error line naming the file, and no book
 // (nor a hidden part of one) left behind on bad input.
 
+#include "testmain.h"
 #include <QDir>
 #include <QFile>
 #include <QProcess>
@@ -115,5 +116,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCliBook)
+TOONFACE_TEST_GUILESS_MAIN(TestCliBook)
 #include "tst_clibook.moc"

@@ -1,3 +1,4 @@
+#include "testmain.h"
 #include "tsfile.h"
 
 #include <QDir>
@@ -197,5 +198,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCliLanguage)
+TOONFACE_TEST_GUILESS_MAIN(TestCliLanguage)
 #include "tst_clilanguage.moc"

@@ -5,6 +5,7 @@
 #include "speech/audio.h"
 #include "speech/script.h"
 #include "speech/tts.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
@@ -193,5 +194,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCliLight)
+TOONFACE_TEST_GUILESS_MAIN(TestCliLight)
 #include "tst_clilight.moc"

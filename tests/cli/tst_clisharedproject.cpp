@@ -1,4 +1,5 @@
 #include "animationfixture.h"
+#include "testmain.h"
 
 #include "face/mouthshape.h"
 #include "io/project.h"
@@ -379,5 +380,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestCliSharedProject)
+TOONFACE_TEST_MAIN(TestCliSharedProject)
 #include "tst_clisharedproject.moc"

@@ -1,6 +1,7 @@
 #include "export/videoencoder.h"
 #include "speech/audio.h"
 #include "talkingface.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
@@ -268,5 +269,5 @@ private:
     QString m_drawn;
 };
 
-QTEST_GUILESS_MAIN(TestCliTrack)
+TOONFACE_TEST_GUILESS_MAIN(TestCliTrack)
 #include "tst_clitrack.moc"

@@ -7,6 +7,7 @@
 #include "render/style.h"
 #include "render/svgface.h"
 #include "shareddata.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -836,5 +837,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestAppearance)
+TOONFACE_TEST_MAIN(TestAppearance)
 #include "tst_appearance.moc"

@@ -2,6 +2,7 @@
 #include "drawnface.h"
 #include "io/appearancejson.h"
 #include "render/style.h"
+#include "testmain.h"
 
 #include <QJsonArray>
 #include <QRegularExpression>
@@ -114,5 +115,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestAppearanceJson)
+TOONFACE_TEST_MAIN(TestAppearanceJson)
 #include "tst_appearancejson.moc"

@@ -3,6 +3,7 @@
 #include "drawnface.h"
 #include "render/style.h"
 #include "shareddata.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
@@ -212,5 +213,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestAppearanceLikeness)
+TOONFACE_TEST_MAIN(TestAppearanceLikeness)
 #include "tst_appearancelikeness.moc"

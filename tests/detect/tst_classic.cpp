@@ -5,6 +5,7 @@
 #include "detect/detector.h"
 #include "detect/landmarkmap.h"
 #include "shareddata.h"
+#include "testmain.h"
 
 #include "testphotos.h"
 
@@ -509,5 +510,5 @@ void TestClassic::sharedDataNmeWithFaceBox()
         nme, normalizedMeanError(box.face, truth), r.timingMs.value(QStringLiteral("total")));
 }
 
-QTEST_MAIN(TestClassic)
+TOONFACE_TEST_MAIN(TestClassic)
 #include "tst_classic.moc"

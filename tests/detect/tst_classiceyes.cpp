@@ -2,6 +2,7 @@
 // rules, the face checks of a pair, the eyeball.
 
 #include "detect/classic.h"
+#include "testmain.h"
 
 #include <QPainter>
 #include <QTest>
@@ -303,5 +304,5 @@ void TestClassicEyes::mouthRow()
         QVERIFY(row >= mouthY - 3 - 230 && row <= mouthY + 2 - 230);
 }
 
-QTEST_MAIN(TestClassicEyes)
+TOONFACE_TEST_MAIN(TestClassicEyes)
 #include "tst_classiceyes.moc"

@@ -2,6 +2,7 @@
 // boundaries (core/detect/classicpoints.cpp).
 
 #include "detect/classic.h"
+#include "testmain.h"
 
 #include <QLineF>
 #include <QRandomGenerator>
@@ -235,5 +236,5 @@ void TestClassicFeatures::cheeks()
     QVERIFY2(std::abs(right - (cx + halfWidth)) <= 2, qPrintable(QString::number(right)));
 }
 
-QTEST_MAIN(TestClassicFeatures)
+TOONFACE_TEST_MAIN(TestClassicFeatures)
 #include "tst_classicfeatures.moc"

@@ -7,6 +7,7 @@
 #include "media/mediareader.h"
 #include "render/style.h"
 #include "shareddata.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -199,5 +200,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestClassicHair)
+TOONFACE_TEST_MAIN(TestClassicHair)
 #include "tst_classichair.moc"

@@ -1,6 +1,7 @@
 #include "detect/detector.h"
 #include "detect/facescan.h"
 #include "detect/modelcache.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
@@ -117,5 +118,5 @@ void TestDetectionWarmUp::detectionsOnSeveralThreadsAfterWarmUp()
         compareResults(r, m_cold);
 }
 
-QTEST_GUILESS_MAIN(TestDetectionWarmUp)
+TOONFACE_TEST_GUILESS_MAIN(TestDetectionWarmUp)
 #include "tst_detectionwarmup.moc"

@@ -2,6 +2,7 @@
 #include "detect/detector.h"
 #include "detect/landmarkmap.h"
 #include "shareddata.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
@@ -630,5 +631,5 @@ void TestDetector::resultHasRegions()
     }
 }
 
-QTEST_GUILESS_MAIN(TestDetector)
+TOONFACE_TEST_GUILESS_MAIN(TestDetector)
 #include "tst_detector.moc"

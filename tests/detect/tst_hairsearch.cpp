@@ -1,6 +1,7 @@
 #include "detect/hairsearch.h"
 #include "detect/landmarkmap.h"
 #include "syntheticlandmarks.h"
+#include "testmain.h"
 
 #include <QPainter>
 #include <QTest>
@@ -179,5 +180,5 @@ void TestHairSearch::measuredPointsUntouched()
     }
 }
 
-QTEST_GUILESS_MAIN(TestHairSearch)
+TOONFACE_TEST_GUILESS_MAIN(TestHairSearch)
 #include "tst_hairsearch.moc"

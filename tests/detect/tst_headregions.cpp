@@ -1,6 +1,7 @@
 #include "detect/headregions.h"
 #include "detect/landmarkmap.h"
 #include "syntheticlandmarks.h"
+#include "testmain.h"
 
 #include <QPainter>
 #include <QTest>
@@ -296,5 +297,5 @@ void TestHeadRegions::seedMeasured()
     QVERIFY(r.seed.s2 >= 4.0);
 }
 
-QTEST_GUILESS_MAIN(TestHeadRegions)
+TOONFACE_TEST_GUILESS_MAIN(TestHeadRegions)
 #include "tst_headregions.moc"

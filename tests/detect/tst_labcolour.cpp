@@ -1,4 +1,5 @@
 #include "detect/labcolour.h"
+#include "testmain.h"
 
 #include <QTest>
 
@@ -139,5 +140,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestLabColour)
+TOONFACE_TEST_GUILESS_MAIN(TestLabColour)
 #include "tst_labcolour.moc"

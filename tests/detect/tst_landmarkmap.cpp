@@ -1,5 +1,6 @@
 #include "detect/landmarkmap.h"
 #include "syntheticlandmarks.h"
+#include "testmain.h"
 
 #include <QFile>
 #include <QLineF>
@@ -215,7 +216,7 @@ void TestLandmarkMap::nmeScalesWithError()
     QVERIFY(!scoredReference(pt::idx("h.10"), ibug, &ref));
 }
 
-QTEST_GUILESS_MAIN(TestLandmarkMap)
+TOONFACE_TEST_GUILESS_MAIN(TestLandmarkMap)
 // The ear is the longest run of plausible widths; its points land on the run's top, widest
 // row and bottom; a run too short, or widths out of range, place nothing.
 void TestLandmarkMap::earFromProfile()

@@ -1,6 +1,7 @@
 #include "detect/detector.h"
 #include "detect/grayview.h"
 #include "detect/landmarkpredictor.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
@@ -157,5 +158,5 @@ void TestLandmarkPredictor::badFilesAreNamed()
     QVERIFY2(error.contains(expected), qPrintable(error));
 }
 
-QTEST_GUILESS_MAIN(TestLandmarkPredictor)
+TOONFACE_TEST_GUILESS_MAIN(TestLandmarkPredictor)
 #include "tst_landmarkpredictor.moc"

@@ -5,6 +5,7 @@
 #include "detect/landmarkpredictor.h"
 #include "detect/modelcache.h"
 #include "madeupmodel.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
@@ -472,8 +473,8 @@ void TestModelCache::concurrentProcessesLeaveOneCache()
     std::vector<std::unique_ptr<QProcess>> children;
     for (int i = 0; i < kProcesses; ++i) {
         auto child = std::make_unique<QProcess>();
-        child->start(
-            QCoreApplication::applicationFilePath(), {QString::fromLatin1(kChildArgument), m_model, m_cacheDir});
+        child->start(QCoreApplication::applicationFilePath(),
+            toonface::test::suiteArguments() + QStringList {QString::fromLatin1(kChildArgument), m_model, m_cacheDir});
         children.push_back(std::move(child));
     }
     int built = 0;
@@ -565,7 +566,9 @@ void TestModelCache::faceDetectorCacheDamaged()
     QCOMPARE(loadFaceDetector(m_cacheDir).cache, CacheUse::Used);
 }
 
-int main(int argc, char *argv[])
+namespace {
+
+int suiteMain(int argc, char *argv[])
 {
     if (argc == 4 && qstrcmp(argv[1], kChildArgument) == 0) {
         const LandmarkModelLoad load
@@ -581,5 +584,9 @@ int main(int argc, char *argv[])
     TestModelCache test;
     return QTest::qExec(&test, argc, argv);
 }
+
+} // namespace
+
+TOONFACE_TEST_REGISTER(suiteMain)
 
 #include "tst_modelcache.moc"

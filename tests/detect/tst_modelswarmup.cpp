@@ -1,6 +1,7 @@
 #include "detect/detector.h"
 #include "detect/facescan.h"
 #include "detect/modelcache.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
@@ -53,5 +54,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestModelsWarmUp)
+TOONFACE_TEST_GUILESS_MAIN(TestModelsWarmUp)
 #include "tst_modelswarmup.moc"

@@ -1,4 +1,5 @@
 #include "detect/regions.h"
+#include "testmain.h"
 
 #include <QPainter>
 #include <QTest>
@@ -178,5 +179,5 @@ void TestRegions::refinement()
     QCOMPARE(r.hair.at(100, 150), std::uint8_t(0));
 }
 
-QTEST_GUILESS_MAIN(TestRegions)
+TOONFACE_TEST_GUILESS_MAIN(TestRegions)
 #include "tst_regions.moc"

@@ -1,6 +1,7 @@
 #include "detect/detector.h"
 #include "detect/landmarkpredictor.h"
 #include "madeupmodel.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
@@ -259,5 +260,5 @@ private:
     QTemporaryDir m_dir;
 };
 
-QTEST_GUILESS_MAIN(TestShapeModelFile)
+TOONFACE_TEST_GUILESS_MAIN(TestShapeModelFile)
 #include "tst_shapemodelfile.moc"

@@ -1,4 +1,5 @@
 #include "detect/tsai.h"
+#include "testmain.h"
 
 #include <QTest>
 
@@ -116,5 +117,5 @@ void TestTsai::degenerate()
     QCOMPARE(t.threshold, 77);
 }
 
-QTEST_GUILESS_MAIN(TestTsai)
+TOONFACE_TEST_GUILESS_MAIN(TestTsai)
 #include "tst_tsai.moc"

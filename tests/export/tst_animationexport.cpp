@@ -1,4 +1,5 @@
 #include "animationfixture.h"
+#include "testmain.h"
 
 #include "export/animationexport.h"
 #include "io/project.h"
@@ -423,5 +424,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestAnimationExport)
+TOONFACE_TEST_GUILESS_MAIN(TestAnimationExport)
 #include "tst_animationexport.moc"

@@ -1,5 +1,6 @@
 #include "animationfixture.h"
 #include "imagedifference.h"
+#include "testmain.h"
 
 #include "anim/timeline.h"
 #include "export/framerenderer.h"
@@ -426,5 +427,5 @@ private:
     }
 };
 
-QTEST_GUILESS_MAIN(TestBrowser)
+TOONFACE_TEST_GUILESS_MAIN(TestBrowser)
 #include "tst_browser.moc"

@@ -2,6 +2,7 @@
 #include "face/averageface.h"
 #include "render/style.h"
 #include "render/svgface.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
@@ -84,5 +85,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestCartoonFile)
+TOONFACE_TEST_MAIN(TestCartoonFile)
 #include "tst_cartoonfile.moc"

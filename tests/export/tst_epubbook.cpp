@@ -9,6 +9,7 @@
 #include "shareddata.h"
 #include "speech/audio.h"
 #include "speech/lipsync.h"
+#include "testmain.h"
 #include "xmltree.h"
 
 #include <QDir>
@@ -604,5 +605,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestEpubBook)
+TOONFACE_TEST_GUILESS_MAIN(TestEpubBook)
 #include "tst_epubbook.moc"

@@ -1,4 +1,5 @@
 #include "animationfixture.h"
+#include "testmain.h"
 
 #include "anim/timeline.h"
 #include "anim/timelineevaluator.h"
@@ -144,5 +145,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestFrameRenderer)
+TOONFACE_TEST_GUILESS_MAIN(TestFrameRenderer)
 #include "tst_framerenderer.moc"

@@ -1,4 +1,5 @@
 #include "smilfixture.h"
+#include "testmain.h"
 
 #include <QTest>
 
@@ -415,5 +416,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestSmilExport)
+TOONFACE_TEST_GUILESS_MAIN(TestSmilExport)
 #include "tst_smilexport.moc"

@@ -1,4 +1,5 @@
 #include "smilfixture.h"
+#include "testmain.h"
 
 #include <QTest>
 
@@ -197,5 +198,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestSmilSound)
+TOONFACE_TEST_GUILESS_MAIN(TestSmilSound)
 #include "tst_smilsound.moc"

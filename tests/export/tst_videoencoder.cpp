@@ -1,6 +1,7 @@
 #include "export/videoencoder.h"
 #include "imagedifference.h"
 #include "media/mediareader.h"
+#include "testmain.h"
 
 #include <QDataStream>
 #include <QDir>
@@ -800,5 +801,5 @@ void TestVideoEncoder::probeErrors()
     QCOMPARE(error, path + u": has no frame 3 (it has 3)"_qs);
 }
 
-QTEST_GUILESS_MAIN(TestVideoEncoder)
+TOONFACE_TEST_GUILESS_MAIN(TestVideoEncoder)
 #include "tst_videoencoder.moc"

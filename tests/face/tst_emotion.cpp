@@ -4,6 +4,7 @@
 #include "face/fapu.h"
 #include "face/mouthshape.h"
 #include "face/pose.h"
+#include "testmain.h"
 
 #include <QTest>
 
@@ -298,5 +299,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestEmotion)
+TOONFACE_TEST_APPLESS_MAIN(TestEmotion)
 #include "tst_emotion.moc"

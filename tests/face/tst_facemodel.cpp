@@ -5,6 +5,7 @@
 #include "face/mouthshape.h"
 #include "face/pointtable.h"
 #include "face/pose.h"
+#include "testmain.h"
 
 #include <QLineF>
 #include <QSet>
@@ -325,5 +326,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestFaceModel)
+TOONFACE_TEST_GUILESS_MAIN(TestFaceModel)
 #include "tst_facemodel.moc"

@@ -1,4 +1,5 @@
 #include "animationfixture.h"
+#include "testmain.h"
 #include "translators.h"
 #include "uifixture.h"
 
@@ -250,5 +251,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestLocalizedDialogs)
+TOONFACE_TEST_MAIN(TestLocalizedDialogs)
 #include "tst_localizeddialogs.moc"

@@ -1,3 +1,4 @@
+#include "testmain.h"
 #include "translators.h"
 #include "tsfile.h"
 #include "uifixture.h"
@@ -258,5 +259,5 @@ private:
     QTemporaryDir m_dir;
 };
 
-QTEST_MAIN(TestLocalizedErrors)
+TOONFACE_TEST_MAIN(TestLocalizedErrors)
 #include "tst_localizederrors.moc"

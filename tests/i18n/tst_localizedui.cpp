@@ -1,3 +1,4 @@
+#include "testmain.h"
 #include "translators.h"
 #include "tsfile.h"
 #include "uifixture.h"
@@ -146,5 +147,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestLocalizedUi)
+TOONFACE_TEST_MAIN(TestLocalizedUi)
 #include "tst_localizedui.moc"

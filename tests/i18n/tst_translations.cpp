@@ -1,3 +1,4 @@
+#include "testmain.h"
 #include "translators.h"
 #include "tsfile.h"
 
@@ -286,5 +287,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestTranslations)
+TOONFACE_TEST_GUILESS_MAIN(TestTranslations)
 #include "tst_translations.moc"

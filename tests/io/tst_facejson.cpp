@@ -2,6 +2,7 @@
 #include "face/averageface.h"
 #include "face/fapu.h"
 #include "io/facejson.h"
+#include "testmain.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -335,5 +336,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestFaceJson)
+TOONFACE_TEST_GUILESS_MAIN(TestFaceJson)
 #include "tst_facejson.moc"

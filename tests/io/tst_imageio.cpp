@@ -1,4 +1,5 @@
 #include "io/imageio.h"
+#include "testmain.h"
 
 #include <QBuffer>
 #include <QColorSpace>
@@ -377,5 +378,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestImageIo)
+TOONFACE_TEST_GUILESS_MAIN(TestImageIo)
 #include "tst_imageio.moc"

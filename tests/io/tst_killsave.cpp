@@ -1,5 +1,6 @@
 #include "face/averageface.h"
 #include "io/project.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -92,5 +93,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestKillSave)
+TOONFACE_TEST_GUILESS_MAIN(TestKillSave)
 #include "tst_killsave.moc"

@@ -1,5 +1,6 @@
 #include "anim/timeline.h"
 #include "io/lipsyncformats.h"
+#include "testmain.h"
 
 #include <QFile>
 #include <QSet>
@@ -604,5 +605,5 @@ void TestLipSyncFormats::loadErrorsNameTheFile()
     QVERIFY2(error.startsWith(unwritable + u": not saved"_qs), qPrintable(error));
 }
 
-QTEST_GUILESS_MAIN(TestLipSyncFormats)
+TOONFACE_TEST_GUILESS_MAIN(TestLipSyncFormats)
 #include "tst_lipsyncformats.moc"

@@ -1,5 +1,6 @@
 #include "face/averageface.h"
 #include "io/project.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
@@ -571,5 +572,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestProject)
+TOONFACE_TEST_GUILESS_MAIN(TestProject)
 #include "tst_project.moc"

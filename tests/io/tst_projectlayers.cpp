@@ -4,6 +4,7 @@
 #include "face/averageface.h"
 #include "io/project.h"
 #include "render/svglayer.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
@@ -120,5 +121,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestProjectLayers)
+TOONFACE_TEST_GUILESS_MAIN(TestProjectLayers)
 #include "tst_projectlayers.moc"

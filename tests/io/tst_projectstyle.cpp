@@ -1,6 +1,7 @@
 #include "face/averageface.h"
 #include "io/project.h"
 #include "render/svglayer.h"
+#include "testmain.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -132,5 +133,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_APPLESS_MAIN(TestProjectStyle)
+TOONFACE_TEST_APPLESS_MAIN(TestProjectStyle)
 #include "tst_projectstyle.moc"

@@ -1,4 +1,5 @@
 #include "io/textgrid.h"
+#include "testmain.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -77,5 +78,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestTextGrid)
+TOONFACE_TEST_GUILESS_MAIN(TestTextGrid)
 #include "tst_textgrid.moc"

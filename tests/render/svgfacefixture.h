@@ -49,7 +49,7 @@ inline QStringList idsUnder(const Node &n)
     return ids;
 }
 
-const QRegularExpression &numberPattern()
+inline const QRegularExpression &numberPattern()
 {
     static const QRegularExpression re(QStringLiteral("-?(?:\\d+\\.?\\d*|\\.\\d+)(?:[eE][-+]?\\d+)?"));
     return re;
@@ -221,7 +221,7 @@ inline double area(const QPainterPath &path)
     return total;
 }
 
-const FacePart *partById(const QVector<FacePart> &parts, const QString &id)
+inline const FacePart *partById(const QVector<FacePart> &parts, const QString &id)
 {
     for (const FacePart &p : parts) {
         if (p.id == id)

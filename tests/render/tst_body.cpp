@@ -3,6 +3,7 @@
 // no room under the chin.
 
 #include "drawnface.h"
+#include "testmain.h"
 #include "xmltree.h"
 
 #include "face/fapu.h"
@@ -162,5 +163,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestBody)
+TOONFACE_TEST_MAIN(TestBody)
 #include "tst_body.moc"

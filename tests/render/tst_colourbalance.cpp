@@ -2,6 +2,7 @@
 #include "drawnface.h"
 #include "render/colourbalance.h"
 #include "render/style.h"
+#include "testmain.h"
 
 #include <QFileInfo>
 #include <QTest>
@@ -160,5 +161,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestColourBalance)
+TOONFACE_TEST_MAIN(TestColourBalance)
 #include "tst_colourbalance.moc"

@@ -1,4 +1,5 @@
 #include "render/curves.h"
+#include "testmain.h"
 
 #include <QLineF>
 #include <QTest>
@@ -352,5 +353,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCurves)
+TOONFACE_TEST_GUILESS_MAIN(TestCurves)
 #include "tst_curves.moc"

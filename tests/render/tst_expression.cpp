@@ -10,6 +10,7 @@
 #include "face/pose.h"
 #include "render/style.h"
 #include "render/svgface.h"
+#include "testmain.h"
 
 #include <QRegularExpression>
 #include <QTest>
@@ -250,5 +251,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestExpression)
+TOONFACE_TEST_GUILESS_MAIN(TestExpression)
 #include "tst_expression.moc"

@@ -2,6 +2,7 @@
 #include "render/style.h"
 #include "render/svgface.h"
 #include "render/svglayer.h"
+#include "testmain.h"
 
 #include <QFile>
 #include <QRegularExpression>
@@ -267,5 +268,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestLayerSafety)
+TOONFACE_TEST_GUILESS_MAIN(TestLayerSafety)
 #include "tst_layersafety.moc"

@@ -2,6 +2,7 @@
 // behind the head, drawn the same in the preview's renderer, the SMIL/HTML exports and the
 // raster frames (MP4, GIF), and made inert and self-contained (render/svglayer.h).
 
+#include "testmain.h"
 #include "xmltree.h"
 
 #include "anim/timeline.h"
@@ -257,5 +258,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestStyleLayers)
+TOONFACE_TEST_MAIN(TestStyleLayers)
 #include "tst_stylelayers.moc"

@@ -6,6 +6,7 @@
 #include "render/style.h"
 #include "render/svgface.h"
 #include "svgfacefixture.h"
+#include "testmain.h"
 #include "xmltree.h"
 
 #include <QDir>
@@ -661,5 +662,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestSvgFace)
+TOONFACE_TEST_GUILESS_MAIN(TestSvgFace)
 #include "tst_svgface.moc"

@@ -6,6 +6,7 @@
 #include "face/pose.h"
 #include "render/svgface.h"
 #include "svgfacefixture.h"
+#include "testmain.h"
 
 #include <QRegularExpression>
 #include <QTest>
@@ -384,5 +385,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestSvgFeatures)
+TOONFACE_TEST_MAIN(TestSvgFeatures)
 #include "tst_svgfeatures.moc"

@@ -6,6 +6,7 @@
 #include "render/style.h"
 #include "render/svgface.h"
 #include "svgfacefixture.h"
+#include "testmain.h"
 #include "xmltree.h"
 
 #include <QDir>
@@ -476,5 +477,5 @@ private:
     }
 };
 
-QTEST_GUILESS_MAIN(TestSvgStyles)
+TOONFACE_TEST_GUILESS_MAIN(TestSvgStyles)
 #include "tst_svgstyles.moc"

@@ -5,6 +5,7 @@
 #include "speech/script.h"
 #include "speech/syllableduration.h"
 #include "speech/tts.h"
+#include "testmain.h"
 
 #include <QFile>
 #include <QProcess>
@@ -778,5 +779,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestAligner)
+TOONFACE_TEST_GUILESS_MAIN(TestAligner)
 #include "tst_aligner.moc"

@@ -4,6 +4,7 @@
 #include "speech/audio.h"
 #include "speech/script.h"
 #include "speech/tts.h"
+#include "testmain.h"
 
 #include <QFile>
 #include <QRandomGenerator>
@@ -274,5 +275,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestAlignerPauses)
+TOONFACE_TEST_GUILESS_MAIN(TestAlignerPauses)
 #include "tst_alignerpauses.moc"

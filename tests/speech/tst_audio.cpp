@@ -1,5 +1,6 @@
 #include "shareddata.h"
 #include "speech/audio.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
@@ -383,5 +384,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestAudio)
+TOONFACE_TEST_GUILESS_MAIN(TestAudio)
 #include "tst_audio.moc"

@@ -1,4 +1,5 @@
 #include "speech/audiomouth.h"
+#include "testmain.h"
 #include "track/trackaccuracy.h"
 
 #include <QFileInfo>
@@ -311,5 +312,5 @@ void TestAudioMouth::realSpeech()
     QVERIFY2(r > 0.7, qPrintable(QString::number(r)));
 }
 
-QTEST_GUILESS_MAIN(TestAudioMouth)
+TOONFACE_TEST_GUILESS_MAIN(TestAudioMouth)
 #include "tst_audiomouth.moc"

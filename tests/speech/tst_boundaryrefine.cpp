@@ -5,6 +5,7 @@
 #include "speech/onsetsignals.h"
 #include "speech/script.h"
 #include "speech/tts.h"
+#include "testmain.h"
 
 #include <QRandomGenerator>
 #include <QTest>
@@ -245,5 +246,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestBoundaryRefine)
+TOONFACE_TEST_GUILESS_MAIN(TestBoundaryRefine)
 #include "tst_boundaryrefine.moc"

@@ -2,6 +2,7 @@
 #include "speech/audio.h"
 #include "speech/script.h"
 #include "speech/tts.h"
+#include "testmain.h"
 
 #include <QTest>
 
@@ -85,5 +86,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestDroppedWord)
+TOONFACE_TEST_GUILESS_MAIN(TestDroppedWord)
 #include "tst_droppedword.moc"

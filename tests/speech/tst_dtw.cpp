@@ -1,4 +1,5 @@
 #include "speech/dtw.h"
+#include "testmain.h"
 
 #include <QTest>
 
@@ -129,5 +130,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestDtw)
+TOONFACE_TEST_GUILESS_MAIN(TestDtw)
 #include "tst_dtw.moc"

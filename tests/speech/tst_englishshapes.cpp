@@ -4,6 +4,7 @@
 #include "speech/englishshapes.h"
 #include "speech/script.h"
 #include "speech/tts.h"
+#include "testmain.h"
 
 #include <QFile>
 #include <QTest>
@@ -176,5 +177,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestEnglishShapes)
+TOONFACE_TEST_GUILESS_MAIN(TestEnglishShapes)
 #include "tst_englishshapes.moc"

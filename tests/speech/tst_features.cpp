@@ -1,6 +1,7 @@
 #include "speech/features.h"
 #include "speech/script.h"
 #include "speech/tts.h"
+#include "testmain.h"
 
 #include <QRandomGenerator>
 #include <QTest>
@@ -141,5 +142,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestFeatures)
+TOONFACE_TEST_GUILESS_MAIN(TestFeatures)
 #include "tst_features.moc"

@@ -1,4 +1,5 @@
 #include "shareddata.h"
+#include "testmain.h"
 
 #include "speech/audio.h"
 #include "speech/lipsync.h"
@@ -313,5 +314,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestLipsync)
+TOONFACE_TEST_GUILESS_MAIN(TestLipsync)
 #include "tst_lipsync.moc"

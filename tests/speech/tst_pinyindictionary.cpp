@@ -1,5 +1,6 @@
 #include "speech/pinyindictionary.h"
 #include "speech/pinyinindex.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
@@ -273,5 +274,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestPinyinDictionary)
+TOONFACE_TEST_GUILESS_MAIN(TestPinyinDictionary)
 #include "tst_pinyindictionary.moc"

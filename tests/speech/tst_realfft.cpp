@@ -1,6 +1,7 @@
 // The speech features' own real FFT (speech/realfft.h): exact against a direct DFT, and the
 // same spectra (to float precision) as FFmpeg's av_rdft, which the features used before.
 #include "speech/realfft.h"
+#include "testmain.h"
 
 #include <QRandomGenerator>
 #include <QTest>
@@ -167,5 +168,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRealFft)
+TOONFACE_TEST_GUILESS_MAIN(TestRealFft)
 #include "tst_realfft.moc"

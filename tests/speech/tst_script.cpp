@@ -2,6 +2,7 @@
 #include "speech/pinyindictionary.h"
 #include "speech/script.h"
 #include "speech/zhuyin.h"
+#include "testmain.h"
 
 #include <QTemporaryDir>
 #include <QTest>
@@ -292,5 +293,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestScript)
+TOONFACE_TEST_GUILESS_MAIN(TestScript)
 #include "tst_script.moc"

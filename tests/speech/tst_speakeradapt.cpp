@@ -3,6 +3,7 @@
 #include "speech/script.h"
 #include "speech/speakeradapt.h"
 #include "speech/tts.h"
+#include "testmain.h"
 
 #include <QRandomGenerator>
 #include <QTest>
@@ -179,5 +180,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestSpeakerAdapt)
+TOONFACE_TEST_GUILESS_MAIN(TestSpeakerAdapt)
 #include "tst_speakeradapt.moc"

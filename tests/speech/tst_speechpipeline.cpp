@@ -6,6 +6,7 @@
 #include "speech/samplerelay.h"
 #include "speech/script.h"
 #include "speech/tts.h"
+#include "testmain.h"
 
 #include <QCoreApplication>
 #include <QCryptographicHash>
@@ -135,7 +136,8 @@ int child(const QStringList &args)
 QByteArray childResult(const QStringList &args)
 {
     QProcess p;
-    p.start(QCoreApplication::applicationFilePath(), QStringList {QStringLiteral("--child")} + args);
+    p.start(QCoreApplication::applicationFilePath(),
+        toonface::test::suiteArguments() + QStringList {QStringLiteral("--child")} + args);
     if (!p.waitForFinished(120000) || p.exitCode() != 0)
         return "failed: " + p.readAllStandardError();
     return p.readAllStandardOutput();
@@ -295,7 +297,9 @@ private Q_SLOTS:
     }
 };
 
-int main(int argc, char *argv[])
+namespace {
+
+int suiteMain(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
     if (argc > 2 && qstrcmp(argv[1], "--child") == 0)
@@ -303,4 +307,8 @@ int main(int argc, char *argv[])
     TestSpeechPipeline test;
     return QTest::qExec(&test, argc, argv);
 }
+
+} // namespace
+
+TOONFACE_TEST_REGISTER(suiteMain)
 #include "tst_speechpipeline.moc"

@@ -1,5 +1,6 @@
 #include "speech/pinyin.h"
 #include "speech/syllableshapes.h"
+#include "testmain.h"
 
 #include <QFile>
 #include <QSet>
@@ -242,5 +243,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestSyllableShapes)
+TOONFACE_TEST_GUILESS_MAIN(TestSyllableShapes)
 #include "tst_syllableshapes.moc"

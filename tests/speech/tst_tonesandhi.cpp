@@ -1,5 +1,6 @@
 #include "speech/script.h"
 #include "speech/tonesandhi.h"
+#include "testmain.h"
 
 #include <QTest>
 
@@ -129,5 +130,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestToneSandhi)
+TOONFACE_TEST_GUILESS_MAIN(TestToneSandhi)
 #include "tst_tonesandhi.moc"

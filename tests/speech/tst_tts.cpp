@@ -1,6 +1,7 @@
 #include "speech/script.h"
 #include "speech/tts.h"
 #include "speech/ttsvoicefile.h"
+#include "testmain.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -264,5 +265,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestTts)
+TOONFACE_TEST_GUILESS_MAIN(TestTts)
 #include "tst_tts.moc"

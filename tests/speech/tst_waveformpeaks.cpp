@@ -1,4 +1,5 @@
 #include "speech/waveformpeaks.h"
+#include "testmain.h"
 
 #include <QRandomGenerator>
 #include <QTemporaryDir>
@@ -135,5 +136,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestWaveformPeaks)
+TOONFACE_TEST_GUILESS_MAIN(TestWaveformPeaks)
 #include "tst_waveformpeaks.moc"

@@ -3,6 +3,7 @@
 #include "speech/audio.h"
 #include "speech/audioconvert.h"
 #include "speech/wavfile.h"
+#include "testmain.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -260,5 +261,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestWavFile)
+TOONFACE_TEST_GUILESS_MAIN(TestWavFile)
 #include "tst_wavfile.moc"

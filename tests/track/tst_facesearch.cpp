@@ -1,4 +1,5 @@
 #include "talkingface.h"
+#include "testmain.h"
 #include "track/facesearch.h"
 
 #include <QFileInfo>
@@ -107,5 +108,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestFaceSearch)
+TOONFACE_TEST_MAIN(TestFaceSearch)
 #include "tst_facesearch.moc"

@@ -3,6 +3,7 @@
 #include "face/fapu.h"
 #include "face/pointtable.h"
 #include "speech/audiomouth.h"
+#include "testmain.h"
 #include "track/livepose.h"
 #include "track/retarget.h"
 
@@ -303,5 +304,5 @@ void TestLivePose::takeWithSoundWhileLost()
     QCOMPARE(mouth[2].shape, MouthShape::M);
 }
 
-QTEST_GUILESS_MAIN(TestLivePose)
+TOONFACE_TEST_GUILESS_MAIN(TestLivePose)
 #include "tst_livepose.moc"

@@ -1,5 +1,6 @@
 #include "export/videoencoder.h"
 #include "talkingface.h"
+#include "testmain.h"
 #include "track/trackaccuracy.h"
 #include "track/trackvideo.h"
 
@@ -173,5 +174,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestTrackClips)
+TOONFACE_TEST_GUILESS_MAIN(TestTrackClips)
 #include "tst_trackclips.moc"

@@ -1,5 +1,6 @@
 #include "face/averageface.h"
 #include "talkingface.h"
+#include "testmain.h"
 #include "track/facemeasure.h"
 #include "track/oneeuro.h"
 #include "track/retarget.h"
@@ -420,5 +421,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestTracker)
+TOONFACE_TEST_GUILESS_MAIN(TestTracker)
 #include "tst_tracker.moc"

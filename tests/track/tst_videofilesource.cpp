@@ -1,6 +1,7 @@
 #include "export/videoencoder.h"
 #include "imagedifference.h"
 #include "numberedclip.h"
+#include "testmain.h"
 #include "track/videofilesource.h"
 
 #include <QElapsedTimer>
@@ -243,5 +244,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestVideoFileSource)
+TOONFACE_TEST_GUILESS_MAIN(TestVideoFileSource)
 #include "tst_videofilesource.moc"

@@ -1,4 +1,5 @@
 #include "dialogfixture.h"
+#include "testmain.h"
 #include "uifixture.h"
 
 #include "dialogs/animationedits.h"
@@ -206,5 +207,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestAnimationDialogs)
+TOONFACE_TEST_MAIN(TestAnimationDialogs)
 #include "tst_animationdialogs.moc"

@@ -1,4 +1,5 @@
 #include "appearance/appearancepanel.h"
+#include "testmain.h"
 #include "uifixture.h"
 
 #include <QCheckBox>
@@ -126,5 +127,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestAppearancePanel)
+TOONFACE_TEST_MAIN(TestAppearancePanel)
 #include "tst_appearancepanel.moc"

@@ -1,3 +1,4 @@
+#include "testmain.h"
 #include "uifixture.h"
 
 #include "document/autosaver.h"
@@ -256,5 +257,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestAutosave)
+TOONFACE_TEST_MAIN(TestAutosave)
 #include "tst_autosave.moc"

@@ -6,6 +6,7 @@
 #include "dialogs/jobstatus.h"
 #include "document/document.h"
 #include "face/averageface.h"
+#include "testmain.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -125,5 +126,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestBookDialog)
+TOONFACE_TEST_MAIN(TestBookDialog)
 #include "tst_bookdialog.moc"

@@ -4,6 +4,7 @@
 #include "capture/framepane.h"
 #include "capture/livewindow.h"
 #include "document/document.h"
+#include "testmain.h"
 #include "uifixture.h"
 
 #include <QCamera>
@@ -229,5 +230,5 @@ void TestCamera::liveWindowWithoutCameraSaysSo()
     QVERIFY(window.findChildren<QCamera *>().isEmpty());
 }
 
-QTEST_MAIN(TestCamera)
+TOONFACE_TEST_MAIN(TestCamera)
 #include "tst_camera.moc"

@@ -1,3 +1,4 @@
+#include "testmain.h"
 #include "window/detectionsteps.h"
 #include "window/detectiontask.h"
 
@@ -131,5 +132,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestDetectionSteps)
+TOONFACE_TEST_GUILESS_MAIN(TestDetectionSteps)
 #include "tst_detectionsteps.moc"

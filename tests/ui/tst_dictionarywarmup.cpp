@@ -1,3 +1,4 @@
+#include "testmain.h"
 #include "uifixture.h"
 
 #include "dialogs/lipsyncdialog.h"
@@ -57,5 +58,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestDictionaryWarmUp)
+TOONFACE_TEST_MAIN(TestDictionaryWarmUp)
 #include "tst_dictionarywarmup.moc"

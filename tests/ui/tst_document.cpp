@@ -1,3 +1,4 @@
+#include "testmain.h"
 #include "uifixture.h"
 
 #include "document/changestylecommand.h"
@@ -471,5 +472,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestDocument)
+TOONFACE_TEST_MAIN(TestDocument)
 #include "tst_document.moc"

@@ -1,4 +1,5 @@
 #include "animationfixture.h"
+#include "testmain.h"
 
 #include "dialogs/exportanimationdialog.h"
 #include "dialogs/exportpreview.h"
@@ -337,5 +338,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestExportAnimationDialog)
+TOONFACE_TEST_MAIN(TestExportAnimationDialog)
 #include "tst_exportanimationdialog.moc"

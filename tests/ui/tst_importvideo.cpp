@@ -1,4 +1,5 @@
 #include "dialogfixture.h"
+#include "testmain.h"
 #include "uifixture.h"
 #include "videofixture.h"
 
@@ -447,5 +448,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestImportVideo)
+TOONFACE_TEST_MAIN(TestImportVideo)
 #include "tst_importvideo.moc"

@@ -1,3 +1,4 @@
+#include "testmain.h"
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
@@ -85,5 +86,5 @@ void TestLaunchTimings::eventsInOrder()
         QVERIFY(at("open") - at("window-usable") >= delayMs);
 }
 
-QTEST_GUILESS_MAIN(TestLaunchTimings)
+TOONFACE_TEST_GUILESS_MAIN(TestLaunchTimings)
 #include "tst_launchtimings.moc"

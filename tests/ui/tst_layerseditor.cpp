@@ -3,6 +3,7 @@
 
 #include "appearance/appearancepanel.h"
 #include "appearance/layerseditor.h"
+#include "testmain.h"
 #include "uifixture.h"
 #include "views/previewview.h"
 
@@ -148,5 +149,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestLayersEditor)
+TOONFACE_TEST_MAIN(TestLayersEditor)
 #include "tst_layerseditor.moc"

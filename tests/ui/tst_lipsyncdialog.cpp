@@ -1,4 +1,5 @@
 #include "dialogfixture.h"
+#include "testmain.h"
 #include "uifixture.h"
 
 #include "dialogs/lipsyncdialog.h"
@@ -347,5 +348,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestLipSyncDialog)
+TOONFACE_TEST_MAIN(TestLipSyncDialog)
 #include "tst_lipsyncdialog.moc"

@@ -8,6 +8,7 @@
 #include "face/pointtable.h"
 #include "media/mediareader.h"
 #include "playback/playhead.h"
+#include "testmain.h"
 #include "track/clocksource.h"
 #include "track/trackaccuracy.h"
 #include "track/videofilesource.h"
@@ -468,5 +469,5 @@ void TestLiveMode::cartoonWaitsAtRestBeforeASource()
     QVERIFY(!nothing.cartoonPane()->caption().isEmpty());
 }
 
-QTEST_MAIN(TestLiveMode)
+TOONFACE_TEST_MAIN(TestLiveMode)
 #include "tst_livemode.moc"

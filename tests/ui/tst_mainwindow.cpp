@@ -1,3 +1,4 @@
+#include "testmain.h"
 #include "uifixture.h"
 
 #include "detect/detector.h"
@@ -938,5 +939,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestMainWindow)
+TOONFACE_TEST_MAIN(TestMainWindow)
 #include "tst_mainwindow.moc"

@@ -1,4 +1,5 @@
 #include "pulseserver.h"
+#include "testmain.h"
 #include "uifixture.h"
 #include "videofixture.h"
 
@@ -281,5 +282,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestMicrophone)
+TOONFACE_TEST_MAIN(TestMicrophone)
 #include "tst_microphone.moc"

@@ -1,4 +1,5 @@
 #include "dialogfixture.h"
+#include "testmain.h"
 #include "uifixture.h"
 
 #include "dialogs/mouthshapesdialog.h"
@@ -169,5 +170,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestMouthShapesDialog)
+TOONFACE_TEST_MAIN(TestMouthShapesDialog)
 #include "tst_mouthshapesdialog.moc"

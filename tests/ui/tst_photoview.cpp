@@ -1,3 +1,4 @@
+#include "testmain.h"
 #include "uifixture.h"
 
 #include "views/photoview.h"
@@ -485,5 +486,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestPhotoView)
+TOONFACE_TEST_MAIN(TestPhotoView)
 #include "tst_photoview.moc"

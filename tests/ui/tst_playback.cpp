@@ -1,4 +1,5 @@
 #include "playbackfixture.h"
+#include "testmain.h"
 #include "uifixture.h"
 
 #include "playback/mediaaudiotrack.h"
@@ -554,5 +555,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestPlayback)
+TOONFACE_TEST_MAIN(TestPlayback)
 #include "tst_playback.moc"

@@ -1,5 +1,6 @@
 #include "playbackfixture.h"
 #include "pulseserver.h"
+#include "testmain.h"
 #include "uifixture.h"
 
 #include "capture/microphone.h"
@@ -147,5 +148,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestPlaybackDevice)
+TOONFACE_TEST_MAIN(TestPlaybackDevice)
 #include "tst_playbackdevice.moc"

@@ -1,4 +1,5 @@
 #include "playbackfixture.h"
+#include "testmain.h"
 #include "uifixture.h"
 
 #include "anim/easing.h"
@@ -248,5 +249,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestPoseKeys)
+TOONFACE_TEST_MAIN(TestPoseKeys)
 #include "tst_posekeys.moc"

@@ -1,4 +1,5 @@
 #include "playbackfixture.h"
+#include "testmain.h"
 #include "uifixture.h"
 
 #include "anim/timelineevaluator.h"
@@ -145,5 +146,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestPreviewPlayback)
+TOONFACE_TEST_MAIN(TestPreviewPlayback)
 #include "tst_previewplayback.moc"

@@ -1,4 +1,5 @@
 #include "dialogfixture.h"
+#include "testmain.h"
 #include "uifixture.h"
 
 #include "dialogs/languagebox.h"
@@ -196,5 +197,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestSayTextDialog)
+TOONFACE_TEST_MAIN(TestSayTextDialog)
 #include "tst_saytextdialog.moc"

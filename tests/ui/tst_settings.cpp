@@ -1,3 +1,4 @@
+#include "testmain.h"
 #include "uifixture.h"
 
 #include "window/settings.h"
@@ -103,5 +104,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestSettings)
+TOONFACE_TEST_MAIN(TestSettings)
 #include "tst_settings.moc"

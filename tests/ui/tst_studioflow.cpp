@@ -1,4 +1,5 @@
 #include "dialogfixture.h"
+#include "testmain.h"
 #include "timelinefixture.h"
 #include "uifixture.h"
 
@@ -351,5 +352,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestStudioFlow)
+TOONFACE_TEST_MAIN(TestStudioFlow)
 #include "tst_studioflow.moc"

@@ -1,3 +1,4 @@
+#include "testmain.h"
 #include "timelinefixture.h"
 
 #include "timeline/timelineedits.h"
@@ -336,5 +337,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestTimelineEdits)
+TOONFACE_TEST_GUILESS_MAIN(TestTimelineEdits)
 #include "tst_timelineedits.moc"

@@ -1,3 +1,4 @@
+#include "testmain.h"
 #include "timelinefixture.h"
 #include "uifixture.h"
 
@@ -592,5 +593,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestTimelineView)
+TOONFACE_TEST_MAIN(TestTimelineView)
 #include "tst_timelineview.moc"

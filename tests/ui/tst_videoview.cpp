@@ -1,4 +1,5 @@
 #include "numberedclip.h"
+#include "testmain.h"
 #include "uifixture.h"
 #include "videofixture.h"
 
@@ -271,5 +272,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestVideoView)
+TOONFACE_TEST_MAIN(TestVideoView)
 #include "tst_videoview.moc"

@@ -1,4 +1,5 @@
 // The main window's arrangement on a laptop's screen, its dock toggles and its keys.
+#include "testmain.h"
 #include "uifixture.h"
 
 #include "dialogs/shortcutsdialog.h"
@@ -149,5 +150,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestWindowLayout)
+TOONFACE_TEST_MAIN(TestWindowLayout)
 #include "tst_windowlayout.moc"
