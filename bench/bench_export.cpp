@@ -14,6 +14,7 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 
+#include <algorithm>
 #include <random>
 
 using namespace toonface;
@@ -133,6 +134,23 @@ QJsonObject benchExport(bool fast)
         }
     }
 
+    // The largest animations: the element's id and attribute, and their bytes.
+    QVector<std::pair<qsizetype, QString>> elements;
+    static const QRegularExpression animation(
+        QStringLiteral("<(?:animate|animateTransform) attributeName=\"(\\w+)\"[^>]*/>|\\bid=\"([^\"]+)\""));
+    QString owner;
+    for (auto it = animation.globalMatch(text); it.hasNext();) {
+        const auto m = it.next();
+        if (m.hasCaptured(2))
+            owner = m.captured(2);
+        else
+            elements.append({m.capturedLength(0), owner + QLatin1Char(' ') + m.captured(1)});
+    }
+    std::sort(elements.begin(), elements.end(), [](const auto &a, const auto &b) { return a.first > b.first; });
+    QJsonObject largest;
+    for (qsizetype i = 0; i < std::min<qsizetype>(8, elements.size()); ++i)
+        largest.insert(elements[i].second, elements[i].first);
+
     AnimationExportOptions frameOptions = options;
     frameOptions.mode = AnimationExportOptions::Mode::Frames;
     QByteArray frames;
@@ -151,11 +169,13 @@ QJsonObject benchExport(bool fast)
     r.insert(QStringLiteral("smilKeyTimesBytes"), keyTimesBytes);
     r.insert(QStringLiteral("smilKeySplinesBytes"), keySplinesBytes);
     r.insert(QStringLiteral("smilValuesBytes"), valuesBytes);
+    r.insert(QStringLiteral("smilLargestAnimationsBytes"), largest);
     r.insert(QStringLiteral("framesMs"), framesMs);
     r.insert(QStringLiteral("framesBytes"), frames.size());
     r.insert(QStringLiteral("frames"), timeline.frameCount());
-    r.insert(QStringLiteral("targetSmilBytes"), 3'000'000);
-    r.insert(QStringLiteral("targetSmilMs"), 2000);
+    // Issue 28's targets for ten minutes without the sound.
+    r.insert(QStringLiteral("targetSmilBytes"), 2'000'000);
+    r.insert(QStringLiteral("targetSmilMs"), 1000);
     return r;
 }
 
