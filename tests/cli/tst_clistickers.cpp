@@ -1,4 +1,5 @@
 #include "shareddata.h"
+#include "testmain.h"
 
 #include "media/mediareader.h"
 
@@ -247,5 +248,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCliStickers)
+TOONFACE_TEST_GUILESS_MAIN(TestCliStickers)
 #include "tst_clistickers.moc"

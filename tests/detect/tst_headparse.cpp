@@ -5,6 +5,7 @@
 #include "face/pointtable.h"
 #include "render/style.h"
 #include "shareddata.h"
+#include "testmain.h"
 
 #include <QDir>
 #include <QFile>
@@ -248,5 +249,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestHeadParse)
+TOONFACE_TEST_MAIN(TestHeadParse)
 #include "tst_headparse.moc"

@@ -1,4 +1,5 @@
 #include "animationfixture.h"
+#include "testmain.h"
 
 #include "export/animationexport.h"
 #include "export/exportpreset.h"
@@ -497,5 +498,5 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestTransparentExport)
+TOONFACE_TEST_GUILESS_MAIN(TestTransparentExport)
 #include "tst_transparentexport.moc"
