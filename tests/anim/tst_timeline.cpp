@@ -33,7 +33,7 @@ Timeline fullTimeline()
     t.addNod(5.0, 6.0);
     t.addPoseKey({0.04, {{QStringLiteral("8.2"), {0.0, 0.125}}, {QStringLiteral("8.4"), {-0.01 / 3.0, 0.0}}}});
     t.addPoseKey({0.08, {{QStringLiteral("3.2"), {0.0, 0.05}}}});
-    t.setAudio(AudioClip {QStringLiteral("/tmp/speech (1).wav"), 0.125, 11.9});
+    t.setAudioClips({AudioClip {QStringLiteral("/tmp/speech (1).wav"), 0.125, 11.9}});
     return t;
 }
 
@@ -89,10 +89,10 @@ private Q_SLOTS:
         QCOMPARE(t.duration(), 2.5);
         t.addBlink({2.4, 0.2});
         QCOMPARE(t.duration(), 2.6);
-        t.setAudio(AudioClip {QStringLiteral("a.wav"), 0.5, 10.0});
+        t.setAudioClips({AudioClip {QStringLiteral("a.wav"), 0.5, 10.0}});
         QCOMPARE(t.duration(), 10.5);
         QCOMPARE(t.frameCount(), 263); // ceil(10.5 * 25)
-        t.setAudio(AudioClip {QStringLiteral("a.wav"), 0.0, 10.0});
+        t.setAudioClips({AudioClip {QStringLiteral("a.wav"), 0.0, 10.0}});
         QCOMPARE(t.frameCount(), 250);
         t.setFrameRate(30);
         QCOMPARE(t.frameCount(), 300);

@@ -104,7 +104,7 @@ private:
         p.timeline = test::animationTimeline();
         p.timeline.setAudio(std::nullopt);
         if (!audio.isEmpty())
-            p.timeline.setAudio(AudioClip {QDir(dir).absoluteFilePath(audio), 0.0, 10.0});
+            p.timeline.setAudioClips({AudioClip {QDir(dir).absoluteFilePath(audio), 0.0, 10.0}});
         p.layerPaths = layerFiles;
         p.style.layers = inlineLayers;
         const QString path = QDir(dir).filePath(name + QStringLiteral(".toonface"));

@@ -67,7 +67,7 @@ Project richProject(const QString &dir)
     timeline.addBlink(BlinkEvent {1.1, 0.17});
     timeline.addGazeKey(GazeKey {0.3, QPointF(0.05, -0.02)});
     timeline.addHeadKey(HeadKey {0.7, 3.5, QPointF(0.01, 0.02), 1.05});
-    timeline.setAudio(AudioClip {dir + QStringLiteral("/audio/voice.wav"), 0.125 + 1e-9, 12.345678901234567});
+    timeline.setAudioClips({AudioClip {dir + QStringLiteral("/audio/voice.wav"), 0.125 + 1e-9, 12.345678901234567}});
     timeline.setVideo(VideoClip {dir + QStringLiteral("/video/talk.mpg"), 0.5 + 1e-9, 2.999999999, 29.97});
     p.timeline = timeline;
 

@@ -123,7 +123,7 @@ private Q_SLOTS:
         Document doc;
         fixture::fill(doc);
         Animation a;
-        a.timeline.setAudio(AudioClip {QStringLiteral("/tmp/x.wav"), 0, 12.0});
+        a.timeline.setAudioClips({AudioClip {QStringLiteral("/tmp/x.wav"), 0, 12.0}});
         a.timeline.addBlink({3.0, 0.2});
         doc.changeAnimation(a, QStringLiteral("setup"));
         doc.undoStack()->clear();
@@ -159,7 +159,7 @@ private Q_SLOTS:
         fixture::fill(doc);
         Animation a;
         a.timeline.addEmotionClip({0.0, 8.0, Emotion::Sad, 1.0, 0.3, 0.3});
-        a.timeline.setAudio(AudioClip {QStringLiteral("/tmp/x.wav"), 0, 8.0});
+        a.timeline.setAudioClips({AudioClip {QStringLiteral("/tmp/x.wav"), 0, 8.0}});
         doc.changeAnimation(a, QStringLiteral("setup"));
         doc.undoStack()->clear();
         const Animation before = doc.animation();

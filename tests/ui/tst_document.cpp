@@ -330,7 +330,7 @@ private Q_SLOTS:
         a.timeline.addMouthKey(MouthKey {0.25, MouthShape::U, 0.8, 0.15});
         a.timeline.generateBlinks(7, 4.0);
         a.timeline.addNod(1.0, 2.0);
-        a.timeline.setAudio(AudioClip {m_dir.filePath(QStringLiteral("sound/voice.wav")), 0.5, 3.5});
+        a.timeline.setAudioClips({AudioClip {m_dir.filePath(QStringLiteral("sound/voice.wav")), 0.5, 3.5}});
         LipsyncSyllable wo {QStringLiteral("我"), QStringLiteral("wo"), 3, 0.25, 0.4, 0.75, {}};
         wo.shapes = {{MouthShape::U, 0.25}, {MouthShape::O, 0.25 + 0.8095 * 0.15}};
         a.syllables = {wo};

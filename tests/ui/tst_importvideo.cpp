@@ -200,7 +200,7 @@ private Q_SLOTS:
         Document doc;
         fillBusy(doc);
         Animation a = doc.animation();
-        a.timeline.setAudio(AudioClip {m_dir.filePath(QStringLiteral("recording.wav")), 0, 6.0});
+        a.timeline.setAudioClips({AudioClip {m_dir.filePath(QStringLiteral("recording.wav")), 0, 6.0}});
         doc.changeAnimation(a, QStringLiteral("sound"));
         ImportVideoDialog dialog(&doc, 0.0);
         dialog.show();

@@ -182,7 +182,7 @@ private Q_SLOTS:
         Document doc;
         fillBusy(doc);
         Animation a = doc.animation();
-        a.timeline.setAudio(AudioClip {m_dir.filePath(QStringLiteral("x.wav")), 1.5, 3.0});
+        a.timeline.setAudioClips({AudioClip {m_dir.filePath(QStringLiteral("x.wav")), 1.5, 3.0}});
         a.script = QStringLiteral("你好");
         doc.changeAnimation(a, QStringLiteral("setup"));
         LipSyncDialog dialog(&doc);

@@ -86,7 +86,7 @@ class TestPlayback : public QObject
     void setAudio(const QString &path, double offset, double duration, double seconds)
     {
         Timeline timeline = fixture::talkingTimeline(seconds);
-        timeline.setAudio(AudioClip {path, offset, duration});
+        timeline.setAudioClips({AudioClip {path, offset, duration}});
         fixture::setTimeline(*m_doc, timeline);
     }
     int frame() const { return m_playhead->frame(m_doc->timeline().frameRate()); }

@@ -109,7 +109,7 @@ private Q_SLOTS:
         const QString recording = writeTone(m_dir.filePath(QStringLiteral("recording.wav")), 6.0);
         QVERIFY(!recording.isEmpty());
         Animation a = doc.animation();
-        a.timeline.setAudio(AudioClip {recording, 0, 6.0});
+        a.timeline.setAudioClips({AudioClip {recording, 0, 6.0}});
         a.scriptLanguage = QStringLiteral("cmn");
         doc.changeAnimation(a, QStringLiteral("setup"));
         doc.undoStack()->clear();

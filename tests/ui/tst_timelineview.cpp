@@ -532,7 +532,7 @@ private Q_SLOTS:
         if (!writeAudio(path, audio, &error))
             qFatal("%s", qPrintable(error));
         Animation a = m_doc->animation();
-        a.timeline.setAudio(AudioClip {path, 0, 3});
+        a.timeline.setAudioClips({AudioClip {path, 0, 3}});
         m_doc->changeAnimation(a, QStringLiteral("sound"));
         m_view->waveform()->waitForFinished();
         if (m_view->waveform()->peaks().isEmpty())

@@ -7,6 +7,7 @@ namespace toonface {
 std::optional<ItemKind> itemKindOf(RowKind row)
 {
     switch (row) {
+    case RowKind::Waveform: return ItemKind::Audio;
     case RowKind::Script: return ItemKind::Syllable;
     case RowKind::Mouth: return ItemKind::Mouth;
     case RowKind::Emotion: return ItemKind::Emotion;
@@ -28,6 +29,7 @@ RowKind rowOf(ItemKind kind)
     case ItemKind::Head: return RowKind::Head;
     case ItemKind::Gaze: return RowKind::Gaze;
     case ItemKind::Pose: return RowKind::Pose;
+    case ItemKind::Audio: return RowKind::Waveform;
     }
     return RowKind::Mouth;
 }

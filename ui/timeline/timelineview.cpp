@@ -79,7 +79,8 @@ TimelineView::TimelineView(Document *document, Playhead *playhead, QWidget *pare
         followPlayhead(t);
         viewport()->update();
     });
-    connect(&m_waveform, &WaveformSource::ready, viewport(), qOverload<>(&QWidget::update));
+    m_waveforms.push_back(std::make_unique<WaveformSource>());
+    connect(m_waveforms.back().get(), &WaveformSource::ready, viewport(), qOverload<>(&QWidget::update));
     onDocumentChanged(ChangeFlags(Change::Photo) | Change::Animation | Change::MouthShapes);
 }
 
@@ -107,9 +108,13 @@ TimelineScene TimelineView::scene() const
     s.mouthSpans = &m_mouthSpans;
     s.layout = &m_layout;
     s.selection = &m_selection;
-    s.peaks = &m_waveform.peaks();
+    const qsizetype clips = m_document->timeline().audioClips().size();
+    for (qsizetype i = 0; i < clips && size_t(i) < m_waveforms.size(); ++i) {
+        const WaveformSource &w = *m_waveforms[size_t(i)];
+        s.clipPeaks.append(&w.peaks());
+        s.clipStatus.append(w.isLoading() ? tr("Reading the sound…") : w.error());
+    }
     s.waveformGain = waveformGain();
-    s.waveformStatus = m_waveform.isLoading() ? tr("Reading the sound…") : m_waveform.error();
     s.icons = &m_icons;
     s.playhead = m_playhead->time();
     s.focusRow = m_focusRow;
@@ -127,16 +132,27 @@ void TimelineView::onDocumentChanged(ChangeFlags what)
         const Animation a = m_document->animation();
         const Selection before = m_selection;
         m_selection.clip([&](ItemKind kind) { return itemCount(a, kind); });
-        const std::optional<AudioClip> &audio = m_document->timeline().audio();
-        m_waveform.setPath(audio ? audio->path : QString());
+        const QVector<AudioClip> &clips = m_document->timeline().audioClips();
+        while (m_waveforms.size() < size_t(std::max<qsizetype>(1, clips.size()))) {
+            m_waveforms.push_back(std::make_unique<WaveformSource>());
+            connect(m_waveforms.back().get(), &WaveformSource::ready, viewport(), qOverload<>(&QWidget::update));
+        }
+        m_waveforms.resize(size_t(std::max<qsizetype>(1, clips.size())));
+        QString media;
+        for (size_t i = 0; i < m_waveforms.size(); ++i) {
+            const QString path = qsizetype(i) < clips.size() ? clips[qsizetype(i)].path : QString();
+            m_waveforms[i]->setPath(path);
+            media += path + QLatin1Char('|');
+        }
         // A new recording or clip (lip sync, Say Text, Import Video) is shown whole, not the
         // first second of it.
         const std::optional<VideoClip> &video = m_document->timeline().video();
-        const QString media = (audio ? audio->path : QString()) + QLatin1Char('|') + (video ? video->path : QString());
+        media += video ? video->path : QString();
         if (media != m_media) {
             const bool first = m_media.isNull();
             m_media = media;
-            if (!first && media != QLatin1String("|") && viewport()->width() > TimelineLayout::kLabelWidth)
+            if (!first && media != QLatin1String("|") && media.size() > 1
+                && viewport()->width() > TimelineLayout::kLabelWidth)
                 zoomToFit();
         }
         if (m_selection != before)
@@ -171,9 +187,17 @@ void TimelineView::setFocusRow(std::optional<RowKind> row)
 
 double TimelineView::waveformGain() const
 {
-    if (m_waveform.peaks().isEmpty())
+    double loudness = 0;
+    bool any = false;
+    for (const auto &w : m_waveforms) {
+        if (w->peaks().isEmpty())
+            continue;
+        any = true;
+        loudness = std::max(loudness, w->loudness());
+    }
+    if (!any)
         return m_waveformZoom;
-    return m_waveformZoom * kWaveformFill / std::max(kQuietestShown, m_waveform.loudness());
+    return m_waveformZoom * kWaveformFill / std::max(kQuietestShown, loudness);
 }
 
 void TimelineView::setWaveformZoom(double zoom)
@@ -379,7 +403,7 @@ void TimelineView::mousePressEvent(QMouseEvent *event)
         setFocusRow(hit.row);
         return;
     }
-    if (*hit.row == RowKind::Ruler || *hit.row == RowKind::Waveform) {
+    if (*hit.row == RowKind::Ruler || (*hit.row == RowKind::Waveform && !hit.item)) {
         m_drag.mode = DragMode::Scrub;
         m_drag.started = true;
         m_playhead->setScrubbing(true);
