@@ -103,7 +103,7 @@ QStringList soundPaths(const ExportRequest &request)
     if (!request.audioPath.isEmpty())
         return {request.audioPath};
     QStringList paths;
-    for (const AudioClip &clip : request.timeline.audioClips())
+    for (const AudioClip &clip : soundingClips(request.timeline.audioClips()))
         paths << clip.path;
     return paths;
 }
@@ -114,7 +114,7 @@ std::optional<AudioSource> videoSound(
 {
     if (!request.audioPath.isEmpty())
         return AudioSource::fromFile(request.audioPath);
-    if (timeline.audioClips().isEmpty())
+    if (soundingClips(timeline.audioClips()).isEmpty())
         return AudioSource {};
     std::optional<MixedSound> mix = mixAudioClips(timeline.audioClips(), 0, error, cancel);
     if (!mix)

@@ -76,7 +76,7 @@ bool resolveAudio(
     // The audio track as one file: a clip's own, or the clips mixed (kept until the sound is
     // encoded into the page, which a reference to a file outside it cannot be).
     QTemporaryDir mixFolder;
-    if (path.isEmpty() && !timeline.audioClips().isEmpty()) {
+    if (path.isEmpty() && !soundingClips(timeline.audioClips()).isEmpty()) {
         QString problem;
         const std::optional<TrackSound> track
             = trackSoundFile(timeline.audioClips(), mixFolder.path(), QStringLiteral("mix.wav"), &problem);

@@ -49,9 +49,19 @@ void limit(QVector<float> &x, int rate)
 
 } // namespace
 
-std::optional<MixedSound> mixAudioClips(
-    const QVector<AudioClip> &clips, int sampleRate, QString *error, const std::atomic_bool *cancel)
+QVector<AudioClip> soundingClips(const QVector<AudioClip> &clips)
 {
+    QVector<AudioClip> out;
+    for (const AudioClip &clip : clips)
+        if (!clip.path.isEmpty())
+            out.append(clip);
+    return out;
+}
+
+std::optional<MixedSound> mixAudioClips(
+    const QVector<AudioClip> &allClips, int sampleRate, QString *error, const std::atomic_bool *cancel)
+{
+    const QVector<AudioClip> clips = soundingClips(allClips);
     MixedSound mix;
     if (clips.isEmpty()) {
         mix.sampleRate = sampleRate > 0 ? sampleRate : kSpeechSampleRate;
@@ -107,9 +117,10 @@ std::optional<MixedSound> mixAudioClips(
     return mix;
 }
 
-std::optional<TrackSound> trackSoundFile(const QVector<AudioClip> &clips, const QString &folder, const QString &name,
+std::optional<TrackSound> trackSoundFile(const QVector<AudioClip> &allClips, const QString &folder, const QString &name,
     QString *error, const std::atomic_bool *cancel)
 {
+    const QVector<AudioClip> clips = soundingClips(allClips);
     TrackSound out;
     if (clips.isEmpty())
         return out;

@@ -24,17 +24,20 @@ struct MixedSound
 };
 
 inline constexpr float kMixCeiling = 0.98f;
+
+// The clips that name a file (a clip with an empty path only holds the timeline's length).
+QVector<AudioClip> soundingClips(const QVector<AudioClip> &clips);
 // The rate a mix is made at when not chosen: the highest of the clips' own rates, at most this.
 inline constexpr int kMaxMixRate = 48000;
 
-// Decodes and mixes `clips` at `sampleRate` (0: the clips' highest own rate, at most
+// Decodes and mixes the soundingClips() of `clips` at `sampleRate` (0: the clips' highest own rate, at most
 // kMaxMixRate). nullopt with *error naming the file when one is not a regular file that decodes
 // as sound (or cancelled, *error empty). An empty track mixes to no samples.
 std::optional<MixedSound> mixAudioClips(
     const QVector<AudioClip> &clips, int sampleRate, QString *error, const std::atomic_bool *cancel = nullptr);
 
 // The audio track as one file, for what plays or encodes a file (the editor's playback, an
-// SVG's or HTML page's sound): the file of the only clip when it is heard whole (no trim), else
+// SVG's or HTML page's sound): the file of the only sounding clip when it is heard whole (no trim), else
 // the mix written as a 16-bit WAV named `name` in `folder`. `offset` is where the file starts in
 // the animation and `duration` how long it sounds (0 when unknown).
 struct TrackSound

@@ -180,7 +180,7 @@ bool PlaybackController::hasSound() const
 
 void PlaybackController::openSound()
 {
-    const QVector<AudioClip> &clips = m_document->timeline().audioClips();
+    const QVector<AudioClip> clips = soundingClips(m_document->timeline().audioClips());
     if (clips.isEmpty()) {
         m_heard.reset();
         m_soundProblem.clear();

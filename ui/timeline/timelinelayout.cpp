@@ -52,7 +52,7 @@ QString rowTitle(RowKind row)
 
 TimelineLayout::TimelineLayout()
 {
-    const std::pair<RowKind, int> heights[] = {{RowKind::Waveform, 58}, {RowKind::Script, 42}, {RowKind::Mouth, 50},
+    const std::pair<RowKind, int> heights[] = {{RowKind::Waveform, 66}, {RowKind::Script, 42}, {RowKind::Mouth, 50},
         {RowKind::Emotion, 38}, {RowKind::Blink, 22}, {RowKind::Head, 34}, {RowKind::Gaze, 24}, {RowKind::Pose, 24}};
     m_rows.append({RowKind::Ruler, 0, kRulerHeight});
     int top = 0;
