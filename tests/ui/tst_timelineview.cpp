@@ -419,6 +419,26 @@ private Q_SLOTS:
         undoAllAndCompare();
     }
 
+    // Issue 26: Head Nod acts at the playhead after a click elsewhere on the ruler, not over the
+    // selection made before it.
+    void headNodAfterClickingElsewhere()
+    {
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, centre({ItemKind::Blink, 0})); // 0.9 s
+        QVERIFY(!m_view->selection().isEmpty());
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, at(2.5, RowKind::Ruler));
+        QVERIFY(m_view->selection().isEmpty());
+        QVERIFY(near(m_playhead->time(), 2.5, 0.021));
+        m_widget->timelineActions().addNod->trigger();
+        QVector<double> added;
+        for (const HeadKey &k : m_doc->timeline().headKeys())
+            if (!m_before.timeline.headKeys().contains(k))
+                added << k.time;
+        QVERIFY(!added.isEmpty());
+        QVERIFY2(
+            *std::min_element(added.begin(), added.end()) >= 2.5 - 0.021, qPrintable(QString::number(added.first())));
+        undoAllAndCompare();
+    }
+
     void rulerScrubs()
     {
         QVERIFY(!m_playhead->isScrubbing());
@@ -456,6 +476,8 @@ private Q_SLOTS:
             {AudioClip {tone("first.wav", 1.2), 0.0, 1.2}, AudioClip {tone("second.wav", 1.0), 1.5, 1.0}});
         m_doc->changeAnimation(a, QStringLiteral("sound"));
         const Animation two = m_doc->animation();
+        m_view->setPixelsPerSecond(kPps, TimelineLayout::kLabelWidth); // new sound: it zoomed to fit
+        m_view->waveform(1)->waitForFinished();
 
         const QRectF r = m_view->itemRect({ItemKind::Audio, 1});
         QVERIFY(near(r.left(), m_view->xOf(1.5), 1.0));

@@ -463,11 +463,14 @@ void PlaybackController::onDocumentChanged(ChangeFlags what)
             m_soundOpen = false;
             m_soundPath.clear();
             m_heard.reset();
-            // Opened (mixed) when it plays: a drag of a clip changes the track at every step.
-            if (m_playing && !m_suspended) {
+            // A track that must be mixed is opened when it plays (a drag of a clip changes the
+            // track at every step); one clip heard whole opens at once.
+            const QVector<AudioClip> sounding = soundingClips(clips);
+            const bool whole = sounding.size() == 1 && sounding.first().trimIn == 0 && sounding.first().trimOut == 0;
+            if (whole || (m_playing && !m_suspended))
                 openSound();
+            if (m_playing && !m_suspended)
                 startSound(m_clock.time(now()));
-            }
         }
         updateActions();
     }

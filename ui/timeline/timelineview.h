@@ -25,7 +25,8 @@ class Playhead;
 // step (a drag pushes its moves with one merge id and commits on release). It keeps no copy of
 // the document: only its selection, zoom and caches derived from the document.
 //
-// Mouse: click/drag on the ruler or waveform scrubs the playhead; click, Shift/Ctrl+click and a
+// Mouse: click/drag on the ruler or waveform scrubs the playhead (and, without Shift or Ctrl,
+// clears the selection); click, Shift/Ctrl+click and a
 // rubber band select; dragging a body moves, an edge resizes (neighbours give way), an emotion
 // clip's handles set its fades and intensity, a mouth block's top its weight; double-click on a
 // syllable edits its pinyin, on an emotion clip its intensity. Wheel scrolls, Shift+wheel scrolls the rows, Ctrl+wheel
