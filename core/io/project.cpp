@@ -5,6 +5,7 @@
 #include "io/layersjson.h"
 #include "io/pointsjson.h"
 #include "io/syllablesjson.h"
+#include "media/mediareader.h"
 #include "media/userfile.h"
 
 #include <QDir>
@@ -577,8 +578,21 @@ std::optional<Project> loadProject(const QString &path, QString *error)
     }
     QString problem;
     auto project = projectFromJson(doc.object(), info.absolutePath(), &problem);
-    if (!project)
+    if (!project) {
         *error = withFile(path, problem);
+        return project;
+    }
+    // Files of the one-sound format could name a sound without its length: the clip is as long
+    // as its file, when the file can be read (else it stays of unknown length, 0).
+    QVector<AudioClip> clips = project->timeline.audioClips();
+    for (AudioClip &clip : clips) {
+        QString unreadable;
+        if (clip.duration > 0 || !irregularFileProblem(clip.path).isEmpty())
+            continue;
+        if (const std::optional<MediaInfo> media = probeMedia(clip.path, &unreadable); media && media->hasAudio)
+            clip.duration = std::min(media->audioDurationS, Timeline::kMaxSeconds - std::max(0.0, clip.offset));
+    }
+    project->timeline.setAudioClips(clips);
     return project;
 }
 

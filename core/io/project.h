@@ -30,7 +30,8 @@ namespace toonface {
 // Version 1 held one sound: `audio` {path, offset} beside `timeline.audio` {path, offset,
 // duration} (`audio` won when the two disagreed: older files kept the timeline's path absolute)
 // and `script` {text, language, syllables}; it loads as an audio track of that one clip with
-// that script (a file with only `audio` gets a clip of unknown duration, 0).
+// that script (a file with only `audio` gets a clip of unknown duration, 0; loadProject gives it
+// its file's length when the file can be read).
 // The timeline's video clip (Import Video) is written relative to the project too.
 // Colours are "#rrggbb", "#aarrggbb" or "none" (8 bits a channel: an in-memory colour
 // round-trips when it is an 8-bit RGB colour). Numbers are written in their shortest exact

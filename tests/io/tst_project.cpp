@@ -1,5 +1,6 @@
 #include "face/averageface.h"
 #include "io/project.h"
+#include "speech/audio.h"
 
 #include <QDir>
 #include <QFile>
@@ -356,6 +357,26 @@ private Q_SLOTS:
         const auto reloaded = loadProject(again, &error);
         QVERIFY2(reloaded, qPrintable(error));
         QCOMPARE(reloaded->timeline.audioClips(), p->timeline.audioClips());
+    }
+
+    // A version-1 sound of unknown length gets its file's length when the file is there.
+    void versionOneSoundGetsItsLength()
+    {
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("project.toonface"));
+        QVERIFY(QFile::copy(kData + QStringLiteral("/v1/project.toonface"), file));
+        Audio tone;
+        tone.samples.resize(qsizetype(1.5 * tone.sampleRate));
+        for (qsizetype i = 0; i < tone.samples.size(); ++i)
+            tone.samples[i] = float(0.3 * std::sin(0.1 * double(i)));
+        QString error;
+        QVERIFY2(writeAudio(dir.filePath(QStringLiteral("voice.wav")), tone, &error), qPrintable(error));
+        const auto p = loadProject(file, &error);
+        QVERIFY2(p, qPrintable(error));
+        QCOMPARE(p->timeline.audioClips().size(), 1);
+        QVERIFY2(std::abs(p->timeline.audioClips().first().duration - 1.5) < 0.01,
+            qPrintable(QString::number(p->timeline.audioClips().first().duration)));
+        QCOMPARE(p->timeline.audioClips().first().end(), 1.75); // from its offset, 0.25 s
     }
 
     void malformedProjects_data()
