@@ -102,7 +102,7 @@ private:
         Project p;
         p.face = test::animationFace();
         p.timeline = test::animationTimeline();
-        p.timeline.setAudio(std::nullopt);
+        p.timeline.setAudioClips({});
         if (!audio.isEmpty())
             p.timeline.setAudioClips({AudioClip {QDir(dir).absoluteFilePath(audio), 0.0, 10.0}});
         p.layerPaths = layerFiles;
