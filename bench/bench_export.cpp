@@ -92,7 +92,7 @@ Timeline tenMinutesOfSpeech(double shortest, double longest, double length = 600
         timeline.addShake(s * k, s * k + 1.0);
     for (double s : {90.0, 250.0, 500.0})
         timeline.addNod(s * k, s * k + 1.0);
-    timeline.setAudio(AudioClip {QStringLiteral("speech.wav"), 0.0, length});
+    timeline.setAudioClips({AudioClip {QStringLiteral("speech.wav"), 0.0, length}});
     return timeline;
 }
 
@@ -236,7 +236,7 @@ QJsonObject benchVideoFromProject()
         }
     }
     project.timeline = tenMinutesOfSpeech(0.14, 0.30, 60.0);
-    project.timeline.setAudio(std::nullopt);
+    project.timeline.setAudioClips({});
     const QString path = dir.filePath(QStringLiteral("minute.toonface"));
     QString error;
     if (!saveProject(project, path, &error))

@@ -58,9 +58,10 @@ Project benchProject(const QString &dir)
     p.style.components.insert(QStringLiteral("hair"), {QColor(51, 34, 26), QColor(), 0, true});
     p.layerPaths = {dir + QStringLiteral("/layers/hat.svg")};
     p.timeline = tenMinuteTimeline();
-    p.timeline.setAudio(AudioClip {dir + QStringLiteral("/voice.wav"), 0.0, 600.0});
-    p.script = QString(3000, QChar(0x4f60));
-    p.scriptLanguage = QStringLiteral("cmn");
+    AudioClip voice {dir + QStringLiteral("/voice.wav"), 0.0, 600.0};
+    voice.script = QString(3000, QChar(0x4f60));
+    voice.language = QStringLiteral("cmn");
+    p.timeline.setAudioClips({voice});
     return p;
 }
 

@@ -45,7 +45,7 @@ QString writeProject(const QString &dir, const HostileCase &c)
         keys.append(MouthKey {i * 0.1, kAllMouthShapes[size_t(i) % kAllMouthShapes.size()], 1.0, std::nullopt});
     p.timeline.setMouthKeys(keys);
     if (!c.sound.isEmpty())
-        p.timeline.setAudio(AudioClip {QDir(dir).absoluteFilePath(c.sound), 0.0, 4.0});
+        p.timeline.setAudioClips({AudioClip {QDir(dir).absoluteFilePath(c.sound), 0.0, 4.0}});
     p.layerPaths = c.layerFiles;
     const QString path = QDir(dir).filePath(
         QString::fromLatin1(c.name).replace(QLatin1Char(' '), QLatin1Char('-')) + QStringLiteral(".toonface"));

@@ -83,9 +83,10 @@ Project tenMinuteProject(const QString &audioPath)
     tl.generateBlinks(5, kTenMinutes);
     for (double s = 5; s < kTenMinutes; s += 20)
         tl.addShake(s, s + 1.5);
-    tl.setAudio(AudioClip {audioPath, 0, kTenMinutes});
-    project.script = QStringLiteral("bench");
-    project.scriptLanguage = QStringLiteral("cmn");
+    AudioClip clip {audioPath, 0, kTenMinutes};
+    clip.script = QStringLiteral("bench");
+    clip.language = QStringLiteral("cmn");
+    tl.setAudioClips({clip});
     return project;
 }
 

@@ -43,7 +43,7 @@ inline Timeline tenMinuteTimeline()
         timeline.addShake(s, s + 1.0);
         timeline.addNod(s + 20.0, s + 21.0);
     }
-    timeline.setAudio(AudioClip {QStringLiteral("speech.wav"), 0.0, length});
+    timeline.setAudioClips({AudioClip {QStringLiteral("speech.wav"), 0.0, length}});
     return timeline;
 }
 

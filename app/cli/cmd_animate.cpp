@@ -206,7 +206,7 @@ int runAnimate(const Command &self, const QStringList &args)
             if (!writeAudio(speech.audioPath, sound.audio, &error))
                 return fail(ExitFailed, error);
             speech.duration = std::max(speech.duration, sound.audio.duration());
-            timeline.setAudio(AudioClip {speech.audioPath, 0.0, sound.audio.duration()});
+            timeline.setAudioClips({AudioClip {speech.audioPath, 0.0, sound.audio.duration()}});
         } else {
             warn(track.hasAudio ? Cli::tr("%1: the animation is silent").arg(sound.error)
                                 : Cli::tr("%1: the clip has no sound; the animation is silent").arg(clipPath));
@@ -231,11 +231,9 @@ int runAnimate(const Command &self, const QStringList &args)
             timeline.addEmotionClip(EmotionClip {0.0, timeline.duration(), expression, 1.0, 0.4, 0.4});
         if (parser.isSet(noBlink))
             timeline.setBlinks({});
-        speech.audioPath = input.project->audioPath();
+        // The sound is the timeline's audio track (its clips mixed), not one file.
         speech.duration = timeline.duration();
         speech.syllables = input.project->syllables;
-        speech.script = input.project->script;
-        speech.language = input.project->scriptLanguage;
     } else {
         // Speech: the mouth track and the sound.
         SpeechRequest request;
@@ -250,7 +248,10 @@ int runAnimate(const Command &self, const QStringList &args)
 
         timeline.setFrameRate(frameRate);
         timeline.addMouthCues(speech.cues);
-        timeline.setAudio(AudioClip {speech.audioPath, 0.0, speech.duration});
+        AudioClip clip {speech.audioPath, 0.0, speech.duration};
+        clip.script = speech.script;
+        clip.language = speech.language;
+        timeline.setAudioClips({clip});
         if (expression != Emotion::Neutral)
             timeline.addEmotionClip(EmotionClip {0.0, speech.duration, expression, 1.0, 0.4, 0.4});
         if (!parser.isSet(noBlink))
@@ -266,8 +267,6 @@ int runAnimate(const Command &self, const QStringList &args)
         project.layerPaths = input.layerPaths;
         project.timeline = timeline;
         project.syllables = speech.syllables;
-        project.script = speech.script;
-        project.scriptLanguage = speech.language;
         QString error;
         if (!saveProject(project, parser.value(projectOut), &error))
             return fail(ExitFailed, error);

@@ -34,6 +34,7 @@ auto blinkTime = [](const BlinkEvent &b) { return b.time; };
 auto gazeTime = [](const GazeKey &k) { return k.time; };
 auto headTime = [](const HeadKey &k) { return k.time; };
 auto poseTime = [](const PoseKey &k) { return k.time; };
+auto audioTime = [](const AudioClip &c) { return c.start(); };
 
 HeadKey lerpHead(const HeadKey &a, const HeadKey &b, double s)
 {
@@ -78,8 +79,8 @@ private:
 double Timeline::duration() const
 {
     double end = 0;
-    if (m_audio)
-        end = std::max(end, m_audio->offset + m_audio->duration);
+    for (const AudioClip &clip : m_audio)
+        end = std::max(end, clip.end());
     for (const MouthKey &k : m_mouth)
         end = std::max(end, k.time + std::max(0.0, k.duration.value_or(0.0)));
     for (const EmotionClip &c : m_emotion)
@@ -93,6 +94,28 @@ double Timeline::duration() const
     if (!m_pose.isEmpty())
         end = std::max(end, m_pose.last().time);
     return end;
+}
+
+void Timeline::setAudioClips(QVector<AudioClip> clips)
+{
+    sortByTime(clips, audioTime);
+    m_audio = std::move(clips);
+}
+
+int Timeline::addAudioClip(const AudioClip &clip)
+{
+    insertByTime(m_audio, clip, audioTime);
+    const auto at = std::upper_bound(
+        m_audio.begin(), m_audio.end(), clip.start(), [](double t, const AudioClip &c) { return t < c.start(); });
+    return int(at - m_audio.begin()) - 1;
+}
+
+int Timeline::audioClipAt(double t) const
+{
+    for (qsizetype i = m_audio.size() - 1; i >= 0; --i)
+        if (t >= m_audio[i].start() && t < m_audio[i].end())
+            return int(i);
+    return -1;
 }
 
 int Timeline::frameCount() const

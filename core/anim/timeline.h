@@ -10,6 +10,7 @@
 #include <QString>
 #include <QVector>
 
+#include <algorithm>
 #include <optional>
 
 namespace toonface {
@@ -111,13 +112,33 @@ struct PoseKey
     bool operator==(const PoseKey &) const = default;
 };
 
-// The sound the animation plays: the file starts `offset` seconds into the animation and
-// lasts `duration` seconds.
+// One recording on the audio track: the file starts `offset` seconds into the animation and
+// lasts `duration` seconds (0 when unknown); `trimIn` seconds of its start and `trimOut` of its
+// end are not heard, so it sounds over [start(), end()]. Trimming moves nothing: the file's
+// time t stays at offset + t. `script` is what the recording says and `language` its
+// language ("cmn", "en" or empty); the syllables and mouth keys timed to it are those inside
+// its span (Animation keeps them, at timeline times).
 struct AudioClip
 {
+    AudioClip() = default;
+    AudioClip(QString path, double offset, double duration)
+        : path(std::move(path))
+        , offset(offset)
+        , duration(duration)
+    { }
+
     QString path;
     double offset = 0;
     double duration = 0;
+    double trimIn = 0;
+    double trimOut = 0;
+    QString script;
+    QString language;
+
+    // Where the clip is heard on the timeline.
+    double start() const { return offset + trimIn; }
+    double end() const { return std::max(start(), offset + duration - trimOut); }
+    double length() const { return end() - start(); }
 
     bool operator==(const AudioClip &) const = default;
 };
@@ -158,7 +179,7 @@ Q_DECLARE_OPERATORS_FOR_FLAGS(Tracks)
 inline constexpr Tracks kAllTracks = Tracks(0x3f);
 
 // The key frames of one animation: mouth shapes, emotions, blinks, gaze, head motion, control-point
-// poses and the audio clip they play with. A plain value type holding no face: the same timeline animates
+// poses and the audio track they play with. A plain value type holding no face: the same timeline animates
 // any FaceModel through TimelineEvaluator, which turns it into a Pose at time t.
 class Timeline
 {
@@ -168,7 +189,7 @@ public:
     double frameRate() const { return m_frameRate; }
     // requires: fps > 0
     void setFrameRate(double fps) { m_frameRate = fps; }
-    // The audio clip's end, or the last key or clip end when there is no audio (or it is shorter).
+    // The last audio clip's end, or the last key or clip end when that is later.
     double duration() const;
     // Frames of duration() at frameRate(), frame i showing time i / frameRate().
     int frameCount() const;
@@ -233,8 +254,14 @@ public:
     void addPoseKey(const PoseKey &key);
     static constexpr double kPoseTimeTolerance = 1e-9;
 
-    const std::optional<AudioClip> &audio() const { return m_audio; }
-    void setAudio(std::optional<AudioClip> audio) { m_audio = std::move(audio); }
+    // The audio track: the recordings the animation plays, sorted by start() (stable). Clips
+    // may overlap (their sound is mixed); the editor places new ones where none plays.
+    const QVector<AudioClip> &audioClips() const { return m_audio; }
+    void setAudioClips(QVector<AudioClip> clips);
+    // Inserts in start order (after clips of the same start); returns its index.
+    int addAudioClip(const AudioClip &clip);
+    // The clip heard at time t (the last to start, when several are), or -1.
+    int audioClipAt(double t) const;
 
     // The clip the motion was tracked from, if any.
     const std::optional<VideoClip> &video() const { return m_video; }
@@ -245,13 +272,15 @@ public:
     Pose evaluate(double t, const FaceModel &face, const MouthShapeSet &shapes) const;
 
     // The timeline as the project file's `timeline` object: {version, fps, smoothing, mouth,
-    // emotion, blink, gaze, head, pose, audio, video {path, offset, duration, fps}}; a pose key is {time, offsets: {ID:
-    // [dx, dy]}}. Lossless: fromJson(toJson()) == *this.
+    // emotion, blink, gaze, head, pose, audio [{path, offset, duration, trimIn, trimOut, script,
+    // language}], video {path, offset, duration, fps}}; a pose key is {time, offsets: {ID:
+    // [dx, dy]}}. Version 1 held one clip as an `audio` object {path, offset, duration}: it is
+    // read as a track of that clip. Lossless: fromJson(toJson()) == *this.
     QJsonObject toJson() const;
     // Validates every field; on failure returns nullopt with *error naming the field by its
     // path, e.g. "mouth[3].shape: unknown mouth shape 'x'". Unknown fields are ignored.
     static std::optional<Timeline> fromJson(const QJsonObject &json, QString *error);
-    static constexpr int kJsonVersion = 1;
+    static constexpr int kJsonVersion = 2;
     // The longest span a timeline keeps: four hours (an audio book's chapter fits many times);
     // a time further from 0 in a file is refused by name.
     static constexpr double kMaxSeconds = 4 * 3600.0;
@@ -267,7 +296,7 @@ private:
     QVector<GazeKey> m_gaze;
     QVector<HeadKey> m_head;
     QVector<PoseKey> m_pose;
-    std::optional<AudioClip> m_audio;
+    QVector<AudioClip> m_audio;
     std::optional<VideoClip> m_video;
 };
 

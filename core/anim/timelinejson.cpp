@@ -218,11 +218,19 @@ QJsonObject Timeline::toJson() const
     }
     json.insert(QStringLiteral("pose"), pose);
 
-    if (m_audio) {
-        QJsonObject audio;
-        audio.insert(QStringLiteral("path"), m_audio->path);
-        audio.insert(QStringLiteral("offset"), m_audio->offset);
-        audio.insert(QStringLiteral("duration"), m_audio->duration);
+    if (!m_audio.isEmpty()) {
+        QJsonArray audio;
+        for (const AudioClip &clip : m_audio) {
+            QJsonObject o;
+            o.insert(QStringLiteral("path"), clip.path);
+            o.insert(QStringLiteral("offset"), clip.offset);
+            o.insert(QStringLiteral("duration"), clip.duration);
+            o.insert(QStringLiteral("trimIn"), clip.trimIn);
+            o.insert(QStringLiteral("trimOut"), clip.trimOut);
+            o.insert(QStringLiteral("script"), clip.script);
+            o.insert(QStringLiteral("language"), clip.language);
+            audio.append(o);
+        }
         json.insert(QStringLiteral("audio"), audio);
     }
     if (m_video) {
@@ -368,19 +376,39 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
     if (!tracksOk)
         return std::nullopt;
 
-    const QJsonValue audioValue = json.value(QStringLiteral("audio"));
-    if (!audioValue.isUndefined() && !audioValue.isNull()) {
-        if (!audioValue.isObject()) {
-            if (error)
-                *error = ProjectText::tr("audio: expected an object");
-            return std::nullopt;
-        }
-        FieldReader r(audioValue.toObject(), QStringLiteral("audio"), error);
+    // Version 1 held one clip as an object; version 2 a track of clips.
+    auto readClip = [&](const QJsonObject &o, const QString &path) {
+        FieldReader r(o, path, error);
         AudioClip clip;
         if (!r.string("path", &clip.path, true) || !r.seconds("offset", &clip.offset, false)
-            || !r.seconds("duration", &clip.duration, false, nonNegative))
+            || !r.seconds("duration", &clip.duration, false, nonNegative)
+            || !r.seconds("trimIn", &clip.trimIn, false, nonNegative)
+            || !r.seconds("trimOut", &clip.trimOut, false, nonNegative) || !r.string("script", &clip.script, false)
+            || !r.string("language", &clip.language, false))
+            return false;
+        if (clip.duration > 0 && clip.trimIn + clip.trimOut > clip.duration)
+            return r.fail("trimOut", ProjectText::tr("the trims are longer than the recording"));
+        if (std::abs(clip.offset + clip.duration) > Timeline::kMaxSeconds)
+            return r.fail("duration",
+                ProjectText::tr("the clip ends beyond the longest timeline Toonface keeps (%1 hours)")
+                    .arg(Timeline::kMaxSeconds / 3600));
+        if (!clip.language.isEmpty() && clip.language != QLatin1StringView("cmn")
+            && clip.language != QLatin1StringView("en"))
+            return r.fail("language", ProjectText::tr("expected \"cmn\", \"en\" or \"\""));
+        timeline.m_audio.append(clip);
+        return true;
+    };
+    const QJsonValue audioValue = json.value(QStringLiteral("audio"));
+    if (audioValue.isObject()) {
+        if (!readClip(audioValue.toObject(), QStringLiteral("audio")))
             return std::nullopt;
-        timeline.m_audio = clip;
+    } else if (audioValue.isArray()) {
+        if (!readArray(json, "audio", error, readClip))
+            return std::nullopt;
+    } else if (!audioValue.isUndefined() && !audioValue.isNull()) {
+        if (error)
+            *error = ProjectText::tr("audio: expected an array of clips");
+        return std::nullopt;
     }
 
     const QJsonValue videoValue = json.value(QStringLiteral("video"));
@@ -406,6 +434,7 @@ std::optional<Timeline> Timeline::fromJson(const QJsonObject &json, QString *err
     timeline.setGazeKeys(timeline.m_gaze);
     timeline.setHeadKeys(timeline.m_head);
     timeline.setPoseKeys(timeline.m_pose);
+    timeline.setAudioClips(timeline.m_audio);
     return timeline;
 }
 

@@ -8,6 +8,8 @@
 #include "face/pose.h"
 #include "i18n/coretext.h"
 #include "io/project.h"
+#include "media/audiomix.h"
+#include "media/audiosource.h"
 #include "media/mediareader.h"
 #include "media/pngframes.h"
 #include "media/userfile.h"
@@ -95,11 +97,31 @@ Timeline exportTimeline(const ExportRequest &request)
     return timeline;
 }
 
-QString soundPath(const ExportRequest &request)
+// The files the export's sound comes from: the request's, else every clip's.
+QStringList soundPaths(const ExportRequest &request)
 {
     if (!request.audioPath.isEmpty())
-        return request.audioPath;
-    return request.timeline.audio() ? request.timeline.audio()->path : QString();
+        return {request.audioPath};
+    QStringList paths;
+    for (const AudioClip &clip : soundingClips(request.timeline.audioClips()))
+        paths << clip.path;
+    return paths;
+}
+
+// The sound of an MP4: the request's file from the start, else the timeline's clips mixed.
+std::optional<AudioSource> videoSound(
+    const ExportRequest &request, const Timeline &timeline, QString *error, const std::atomic_bool *cancel)
+{
+    if (!request.audioPath.isEmpty())
+        return AudioSource::fromFile(request.audioPath);
+    if (soundingClips(timeline.audioClips()).isEmpty())
+        return AudioSource {};
+    std::optional<MixedSound> mix = mixAudioClips(timeline.audioClips(), 0, error, cancel);
+    if (!mix)
+        return std::nullopt;
+    if (mix->samples.isEmpty())
+        return AudioSource {};
+    return AudioSource::fromSamples(std::move(mix->samples), mix->sampleRate, mix->start);
 }
 
 // What makes the request impossible before anything is drawn: the status and message, or
@@ -138,9 +160,8 @@ std::optional<ExportResult> checkRequest(const ExportRequest &request, SvgFace *
         if (!face->addLayerFile(layer, &error))
             return ExportResult {ExportStatus::BadInput, error};
     }
-    const QString sound = soundPath(request);
     const bool silent = request.silent || !animationFormatHasSound(request.format);
-    if (!silent && !sound.isEmpty()) {
+    for (const QString &sound : silent ? QStringList() : soundPaths(request)) {
         // The sound must be a regular file that decodes as sound: nothing else reaches a file
         // the user hands on (a shared project may name any file as its sound).
         if (const QString problem = irregularFileProblem(sound); !problem.isEmpty())
@@ -293,9 +314,14 @@ ExportResult exportFrames(const ExportRequest &request, const SvgFace &face, con
 
     AudioSource audio;
     if (videoFormatHasSound(format) && !request.silent) {
-        audio.path = soundPath(request);
-        audio.offset = (audio.path.isEmpty() || !timeline.audio() ? 0.0 : timeline.audio()->offset)
-            - first / renderer.frameRate();
+        QString problem;
+        std::optional<AudioSource> sound = videoSound(request, timeline, &problem, cancel);
+        if (isCancelled(cancel))
+            return result(ExportStatus::Cancelled, out, QStringLiteral("cancelled"));
+        if (!sound)
+            return ExportResult {ExportStatus::BadInput, problem};
+        audio = std::move(*sound);
+        audio.offset -= first / renderer.frameRate(); // the export starts at frame `first`
     }
     VideoOptions options;
     // A GIF is transparent only when asked; under a photo its frames are opaque.

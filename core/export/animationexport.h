@@ -91,8 +91,8 @@ struct ExportRequest
     Timeline timeline;
     MouthShapeSet mouthShapes;
     QStringList layerFiles; // extra SVG layers drawn over the face
-    // The sound; empty: the timeline's audio clip. It starts at the clip's offset. GIF and PNG
-    // sequences are silent.
+    // The sound, from the animation's start; empty: the timeline's audio track, its clips
+    // mixed into one sound (media/audiomix.h). GIF and PNG sequences are silent.
     QString audioPath;
 };
 

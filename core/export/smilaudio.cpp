@@ -5,6 +5,7 @@
 #include "export/svgnumbers.h"
 #include "export/svgxml.h"
 #include "i18n/coretext.h"
+#include "media/audiomix.h"
 #include "media/mediareader.h"
 #include "media/userfile.h"
 #include "speech/audio.h"
@@ -72,11 +73,24 @@ bool resolveAudio(
         return true;
     QString path = options.audioPath;
     out->duration = duration;
-    if (timeline.audio()) {
-        if (path.isEmpty())
-            path = timeline.audio()->path;
-        out->offset = timeline.audio()->offset;
-        out->duration = timeline.audio()->duration > 0 ? timeline.audio()->duration : duration;
+    // The audio track as one file: a clip's own, or the clips mixed (kept until the sound is
+    // encoded into the page, which a reference to a file outside it cannot be).
+    QTemporaryDir mixFolder;
+    if (path.isEmpty() && !soundingClips(timeline.audioClips()).isEmpty()) {
+        QString problem;
+        const std::optional<TrackSound> track
+            = trackSoundFile(timeline.audioClips(), mixFolder.path(), QStringLiteral("mix.wav"), &problem);
+        if (!track) {
+            *error = SoundText::tr("the sound cannot be used: %1").arg(problem);
+            return false;
+        }
+        if (track->mixed && options.audio != ExportAudio::Embed) {
+            *error = SoundText::tr("the sound of several or trimmed recordings can only be embedded, not referenced");
+            return false;
+        }
+        path = track->path;
+        out->offset = track->offset;
+        out->duration = track->duration > 0 ? track->duration : duration;
     }
     if (path.isEmpty())
         return true;

@@ -16,7 +16,7 @@ class MouthShapeSet;
 class Timeline;
 struct Style;
 
-// How an exported animation carries the sound of the timeline's audio clip.
+// How an exported animation carries the sound of the timeline's audio track.
 enum class ExportAudio {
     Embed, // the sound decoded and encoded anew, as a data: URI inside the export
     Reference, // a relative URI of the file, as seen from the export's folder
@@ -37,8 +37,9 @@ struct AnimationExportOptions
     // 32 kHz) — ten minutes of 16-bit 44.1 kHz stereo is 140 MB of base64, and 6.6 MB so; false:
     // as 16-bit PCM WAV (mono, at most 48 kHz). Either way the file must be a regular file.
     bool compressAudio = true;
-    // The sound file; empty means the path of the timeline's audio clip. Without either the
-    // export is silent.
+    // The sound file, from the animation's start; empty means the timeline's audio track (one
+    // clip heard whole: its file at its offset; else the clips mixed, which only embeds).
+    // Without either the export is silent.
     QString audioPath;
     // With ExportAudio::Reference: the folder the export will be written to (empty: the
     // current directory), so the reference is relative to it.

@@ -5,6 +5,7 @@
 #include "io/layersjson.h"
 #include "io/pointsjson.h"
 #include "io/syllablesjson.h"
+#include "media/mediareader.h"
 #include "media/userfile.h"
 
 #include <QDir>
@@ -315,24 +316,16 @@ QJsonObject projectToJson(const Project &project, const QString &projectDir)
         layers.append(pathToDisk(layer, dir));
     json.insert(QStringLiteral("layers"), layers);
     Timeline timeline = project.timeline;
-    AudioClip clip = timeline.audio().value_or(AudioClip {});
-    clip.path = pathToDisk(clip.path, dir);
-    if (timeline.audio())
-        timeline.setAudio(clip);
+    QVector<AudioClip> clips = timeline.audioClips();
+    for (AudioClip &clip : clips)
+        clip.path = pathToDisk(clip.path, dir);
+    timeline.setAudioClips(clips);
     if (std::optional<VideoClip> video = timeline.video()) {
         video->path = pathToDisk(video->path, dir);
         timeline.setVideo(video);
     }
     json.insert(QStringLiteral("timeline"), timeline.toJson());
-    QJsonObject audio;
-    audio.insert(QStringLiteral("path"), clip.path);
-    audio.insert(QStringLiteral("offset"), clip.offset);
-    json.insert(QStringLiteral("audio"), audio);
-    QJsonObject script;
-    script.insert(QStringLiteral("text"), project.script);
-    script.insert(QStringLiteral("language"), project.scriptLanguage);
-    script.insert(QStringLiteral("syllables"), syllablesToJson(project.syllables));
-    json.insert(QStringLiteral("script"), script);
+    json.insert(QStringLiteral("syllables"), syllablesToJson(project.syllables));
     return json;
 }
 
@@ -413,6 +406,22 @@ std::optional<Project> projectFromJson(const QJsonObject &json, const QString &p
     }
     p.timeline = std::move(*timeline);
 
+    QVector<AudioClip> clips = p.timeline.audioClips();
+    for (AudioClip &clip : clips)
+        clip.path = pathFromDisk(clip.path, dir);
+    if (std::optional<VideoClip> video = p.timeline.video()) {
+        video->path = pathFromDisk(video->path, dir);
+        p.timeline.setVideo(video);
+    }
+    if (version >= 2) {
+        p.timeline.setAudioClips(clips);
+        const JsonField syllables = root.member("syllables");
+        if (!syllables.isMissing() && !syllablesFromJson(syllables, &p.syllables, error))
+            return std::nullopt;
+        return p;
+    }
+
+    // Version 1: one sound, named by `audio` (which wins) and `timeline.audio`, and one script.
     const JsonField audio = root.member("audio");
     QJsonObject unused;
     QString audioPath;
@@ -420,28 +429,24 @@ std::optional<Project> projectFromJson(const QJsonObject &json, const QString &p
     if (!audio.toObject(&unused, error) || !audio.member("path").toString(&audioPath, error)
         || !audio.member("offset").toNumber(&audioOffset, error))
         return std::nullopt;
+    std::optional<AudioClip> clip;
+    if (!clips.isEmpty())
+        clip = clips.first();
     if (!audioPath.isEmpty()) {
-        AudioClip clip = p.timeline.audio().value_or(AudioClip {});
-        clip.path = pathFromDisk(audioPath, dir);
-        clip.offset = audioOffset;
-        p.timeline.setAudio(clip);
-    } else if (p.timeline.audio()) {
-        AudioClip clip = *p.timeline.audio();
-        clip.path = pathFromDisk(clip.path, dir);
-        p.timeline.setAudio(clip);
-    }
-    if (std::optional<VideoClip> video = p.timeline.video()) {
-        video->path = pathFromDisk(video->path, dir);
-        p.timeline.setVideo(video);
+        clip = clip.value_or(AudioClip {});
+        clip->path = pathFromDisk(audioPath, dir);
+        clip->offset = audioOffset;
     }
 
     const JsonField script = root.member("script");
     const JsonField language = script.member("language");
-    if (!script.toObject(&unused, error) || !script.member("text").toString(&p.script, error)
-        || !language.toString(&p.scriptLanguage, error))
+    QString text;
+    QString languageCode;
+    if (!script.toObject(&unused, error) || !script.member("text").toString(&text, error)
+        || !language.toString(&languageCode, error))
         return std::nullopt;
-    if (!p.scriptLanguage.isEmpty() && p.scriptLanguage != QLatin1StringView("cmn")
-        && p.scriptLanguage != QLatin1StringView("en")) {
+    if (!languageCode.isEmpty() && languageCode != QLatin1StringView("cmn")
+        && languageCode != QLatin1StringView("en")) {
         language.expected(ProjectText::tr("\"cmn\", \"en\" or \"\""), error);
         return std::nullopt;
     }
@@ -449,6 +454,13 @@ std::optional<Project> projectFromJson(const QJsonObject &json, const QString &p
     const JsonField syllables = script.member("syllables");
     if (!syllables.isMissing() && !syllablesFromJson(syllables, &p.syllables, error))
         return std::nullopt;
+    if (clip) {
+        clip->script = text;
+        clip->language = languageCode;
+        p.timeline.setAudioClips({*clip});
+    } else {
+        p.timeline.setAudioClips({});
+    }
     return p;
 }
 
@@ -467,7 +479,8 @@ QStringList filesOutsideFolder(const Project &project, const QString &projectDir
             out << ProjectText::tr("%1: %2").arg(what, QDir::toNativeSeparators(real.isEmpty() ? absolute : real));
     };
     check(ProjectText::tr("photo"), project.photoPath);
-    check(ProjectText::tr("sound"), project.audioPath());
+    for (const AudioClip &clip : project.timeline.audioClips())
+        check(ProjectText::tr("sound"), clip.path);
     if (const std::optional<VideoClip> video = project.timeline.video())
         check(ProjectText::tr("video"), video->path);
     for (const QString &layer : project.layerPaths)
@@ -565,8 +578,21 @@ std::optional<Project> loadProject(const QString &path, QString *error)
     }
     QString problem;
     auto project = projectFromJson(doc.object(), info.absolutePath(), &problem);
-    if (!project)
+    if (!project) {
         *error = withFile(path, problem);
+        return project;
+    }
+    // Files of the one-sound format could name a sound without its length: the clip is as long
+    // as its file, when the file can be read (else it stays of unknown length, 0).
+    QVector<AudioClip> clips = project->timeline.audioClips();
+    for (AudioClip &clip : clips) {
+        QString unreadable;
+        if (clip.duration > 0 || !irregularFileProblem(clip.path).isEmpty())
+            continue;
+        if (const std::optional<MediaInfo> media = probeMedia(clip.path, &unreadable); media && media->hasAudio)
+            clip.duration = std::min(media->audioDurationS, Timeline::kMaxSeconds - std::max(0.0, clip.offset));
+    }
+    project->timeline.setAudioClips(clips);
     return project;
 }
 

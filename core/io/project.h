@@ -19,17 +19,20 @@ namespace toonface {
 // On disk the photo, audio and layer paths are relative to the project file; in memory they
 // are absolute.
 //
-// Version 1 holds: photo, imageSize {width, height} (absent when unknown), points
+// Version 2 holds: photo, imageSize {width, height} (absent when unknown), points
 // [{id, x, y, handPlaced}] in face-model.md order, style {name, cornerCutDepth, cute, eyebrows,
 // nose, components {name: {fill, stroke, strokeWidth, visible}}, layers [{name, svg, x, y, width,
 // front, visible}] (io/layersjson.h: the user's SVG layers held inline)}, mouthShapes {m, f, h, a, i, u,
 // e, o, n: {up, dn, lf, rt: {dx, dy: {mns, mw, lowerLip, px}}, cornersAtLipMiddle,
-// cornersFromPrevious}}, layers [path], timeline {...} (Timeline::toJson), audio {path, offset},
-// script {text, language, syllables [...] (syllablesToJson)}. The timeline's audio clip is the
-// project's sound: its path is written relative to the project in both `audio` and
-// `timeline.audio`; `audio` wins when a file's two disagree (older files kept the timeline's
-// path absolute), and a file with only `audio` gets a clip of unknown duration (0). The
-// timeline's video clip (Import Video) is written relative to the project too.
+// cornersFromPrevious}}, layers [path], timeline {...} (Timeline::toJson: its `audio` is the
+// audio track, each clip with its path relative to the project, its script and language),
+// syllables [...] (syllablesToJson: every clip's syllables, at timeline times).
+// Version 1 held one sound: `audio` {path, offset} beside `timeline.audio` {path, offset,
+// duration} (`audio` won when the two disagreed: older files kept the timeline's path absolute)
+// and `script` {text, language, syllables}; it loads as an audio track of that one clip with
+// that script (a file with only `audio` gets a clip of unknown duration, 0; loadProject gives it
+// its file's length when the file can be read).
+// The timeline's video clip (Import Video) is written relative to the project too.
 // Colours are "#rrggbb", "#aarrggbb" or "none" (8 bits a channel: an in-memory colour
 // round-trips when it is an 8-bit RGB colour). Numbers are written in their shortest exact
 // form, so a save and a load give back an equal Project.
@@ -40,18 +43,19 @@ struct Project
     Style style;
     MouthShapeSet mouthShapes;
     QStringList layerPaths; // extra SVG layers
-    Timeline timeline; // its audio() is the project's sound
-    QVector<LipsyncSyllable> syllables; // the script's syllables at their aligned times
-    QString script;
-    QString scriptLanguage; // "cmn", "en" or empty (detect)
+    Timeline timeline; // its audioClips() are the project's recordings
+    QVector<LipsyncSyllable> syllables; // every clip's script's syllables at their aligned times
 
-    // The project's sound file (absolute), or empty.
-    QString audioPath() const { return timeline.audio() ? timeline.audio()->path : QString(); }
+    // The first recording's file (absolute), or empty.
+    QString audioPath() const
+    {
+        return timeline.audioClips().isEmpty() ? QString() : timeline.audioClips().first().path;
+    }
 
     bool operator==(const Project &) const = default;
 };
 
-inline constexpr int kProjectVersion = 1;
+inline constexpr int kProjectVersion = 2;
 
 // Writes atomically (QSaveFile): a failed save leaves the old file intact and no temporary
 // file behind. Refuses (error "<file>: not saved: ...") a project that loadProject would reject,

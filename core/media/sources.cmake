@@ -4,4 +4,5 @@ list(APPEND TOONFACE_CORE_SOURCES
   media/audiofeed.h media/audiofeed.cpp
   media/pngframes.h
   media/userfile.h media/userfile.cpp
-  media/mediareader.h media/mediareader.cpp)
+  media/mediareader.h media/mediareader.cpp
+  media/audiomix.h media/audiomix.cpp)

@@ -270,6 +270,21 @@
     </message>
 </context>
 <context>
+    <name>toonface::AnimationEdits</name>
+    <message>
+        <source>placed after %1, at %2 s (it would have played over it)</source>
+        <translation>已放在 %1 之后，位于 %2 秒（否则会与其重叠播放）</translation>
+    </message>
+    <message>
+        <source>replaced %1</source>
+        <translation>已替换 %1</translation>
+    </message>
+    <message>
+        <source>plays together with %1</source>
+        <translation>与 %1 同时播放</translation>
+    </message>
+</context>
+<context>
     <name>toonface::AppearancePanel</name>
     <message>
         <source>none</source>
@@ -1799,10 +1814,6 @@
         <translation>保留连续动作(&amp;C)（姿势关键帧）</translation>
     </message>
     <message>
-        <source>Use the clip&apos;s s&amp;ound as the project&apos;s sound</source>
-        <translation>使用片段的声音作为项目的声音(&amp;O)</translation>
-    </message>
-    <message>
         <source>At the &amp;playhead (%1)</source>
         <translation>在播放头处（%1）(&amp;P)</translation>
     </message>
@@ -1961,8 +1972,12 @@
         <translation>导入视频 %1</translation>
     </message>
     <message>
-        <source>Use the clip&apos;s s&amp;ound, replacing the project&apos;s sound %1</source>
-        <translation>使用片段的声音，替换项目的声音 %1(&amp;O)</translation>
+        <source>Use the clip&apos;s s&amp;ound (a new clip on the audio track)</source>
+        <translation>使用片段的声音（音轨上的新片段）(&amp;O)</translation>
+    </message>
+    <message>
+        <source>It plays over %1: &amp;replace it (else both sound together)</source>
+        <translation>会与 %1 重叠播放：替换它（否则两者一起发声）(&amp;R)</translation>
     </message>
 </context>
 <context>
@@ -2126,10 +2141,6 @@
         <translation>根据录音做口型同步</translation>
     </message>
     <message>
-        <source>Aligns a recording with the script it speaks, syllable by syllable. The mouth keys and the script&apos;s syllables where the recording plays are replaced; the rest of the timeline is kept.</source>
-        <translation>将录音与其朗读的文稿逐音节对齐。录音播放范围内的口型关键帧和文稿音节会被替换，时间轴的其余部分保持不变。</translation>
-    </message>
-    <message>
         <source>An audio file, or a video whose sound is used</source>
         <translation>音频文件，或使用其声音的视频</translation>
     </message>
@@ -2220,6 +2231,10 @@
     <message>
         <source>Lip Sync from %1</source>
         <translation>根据 %1 做口型同步</translation>
+    </message>
+    <message>
+        <source>Aligns a recording with the script it speaks, syllable by syllable. The recording becomes a clip on the audio track; the mouth keys and syllables where it plays are replaced, the other recordings and the rest of the timeline are kept.</source>
+        <translation>逐音节将录音与其文稿对齐。录音成为音轨上的一个片段；其播放范围内的口型关键帧与音节会被替换，其他录音与时间轴的其余部分都会保留。</translation>
     </message>
 </context>
 <context>
@@ -3430,10 +3445,6 @@ The points are unchanged.</source>
         <translation>应为 [dx, dy] 两个数字</translation>
     </message>
     <message>
-        <source>audio: expected an object</source>
-        <translation>audio：应为对象</translation>
-    </message>
-    <message>
         <source>video: expected an object</source>
         <translation>video：应为对象</translation>
     </message>
@@ -3689,6 +3700,22 @@ The points are unchanged.</source>
         <source>the system gave no reason (is the disk full or removed?)</source>
         <translation>系统未说明原因（磁盘是否已满或已移除？）</translation>
     </message>
+    <message>
+        <source>the trims are longer than the recording</source>
+        <translation>修剪的长度超过录音本身</translation>
+    </message>
+    <message>
+        <source>the clip ends beyond the longest timeline Toonface keeps (%1 hours)</source>
+        <translation>片段的结尾超出 Toonface 所能保存的最长时间轴（%1 小时）</translation>
+    </message>
+    <message>
+        <source>expected &quot;cmn&quot;, &quot;en&quot; or &quot;&quot;</source>
+        <translation>应为 "cmn"、"en" 或 ""</translation>
+    </message>
+    <message>
+        <source>audio: expected an array of clips</source>
+        <translation>audio：应为片段的数组</translation>
+    </message>
 </context>
 <context>
     <name>toonface::Questions</name>
@@ -3802,10 +3829,6 @@ The points are unchanged.</source>
         <translation>说出文字</translation>
     </message>
     <message>
-        <source>The built-in voice speaks the text and the face says it with the voice&apos;s exact timings. The mouth keys and syllables where the speech plays are replaced.</source>
-        <translation>内置语音朗读文字，人脸按语音的精确时间说出来。语音播放范围内的口型关键帧和音节会被替换。</translation>
-    </message>
-    <message>
         <source>Chinese characters, pinyin, Zhuyin or English, e.g. 您好，我是葛麗絲。</source>
         <translation>汉字、拼音、注音或英文，例如：您好，我是葛丽丝。</translation>
     </message>
@@ -3878,12 +3901,8 @@ The points are unchanged.</source>
         <translation>%1：无法创建其文件夹</translation>
     </message>
     <message>
-        <source>&amp;Replace the project&apos;s sound, %1 (%2 s)</source>
-        <translation>替换项目的声音 %1（%2 秒）(&amp;R)</translation>
-    </message>
-    <message>
-        <source>The timeline holds one sound: the syllables and mouth keys outside the new speech keep no sound under them. Undo brings the old sound back.</source>
-        <translation>时间轴只容纳一段声音：新语音以外的音节和口型关键帧将没有声音。撤销可找回原来的声音。</translation>
+        <source>The built-in voice speaks the text and the face says it with the voice&apos;s exact timings. The speech becomes a clip on the audio track; the mouth keys and syllables where it plays are replaced, the other recordings are kept.</source>
+        <translation>内置语音朗读文字，脸部按语音的精确时间说出。语音成为音轨上的一个片段；其播放范围内的口型关键帧与音节会被替换，其他录音都会保留。</translation>
     </message>
 </context>
 <context>
@@ -4270,6 +4289,10 @@ The points are unchanged.</source>
         <source>cut short (its header promises %1 s, it holds %2 s)</source>
         <translation>文件不完整（文件头记载 %1 秒，实际只有 %2 秒）</translation>
     </message>
+    <message>
+        <source>the sound of several or trimmed recordings can only be embedded, not referenced</source>
+        <translation>多段或经修剪的录音只能内嵌，不能以引用方式使用</translation>
+    </message>
 </context>
 <context>
     <name>toonface::SpeechDialog</name>
@@ -4284,6 +4307,30 @@ The points are unchanged.</source>
     <message>
         <source>Cancelled: nothing was changed.</source>
         <translation>已取消：没有任何更改。</translation>
+    </message>
+    <message>
+        <source>Place it after them</source>
+        <translation>放在它们之后</translation>
+    </message>
+    <message>
+        <source>Replace them (with their syllables and mouth keys)</source>
+        <translation>替换它们（连同其音节与口型关键帧）</translation>
+    </message>
+    <message>
+        <source>The timeline keeps every recording as a clip on the audio track. What to do when the new one would play over others: nothing is replaced unless you choose so.</source>
+        <translation>时间轴将每段录音保存为音轨上的片段。新录音会与其他录音重叠时的做法：除非您选择替换，否则不会替换任何录音。</translation>
+    </message>
+    <message>
+        <source>If other recordings &amp;play there:</source>
+        <translation>若该处已有其他录音(&amp;P)：</translation>
+    </message>
+    <message>
+        <source>%1 (%2 s) does not fit on the timeline there: it would end past %3 hours.</source>
+        <translation>%1（%2 秒）放不进时间轴的该处：结尾会超过 %3 小时。</translation>
+    </message>
+    <message>
+        <source>%1: %2 at %3 s</source>
+        <translation>%1：%2 位于 %3 秒</translation>
     </message>
 </context>
 <context>
@@ -4400,20 +4447,8 @@ The points are unchanged.</source>
         <translation>摄像头照片已保存为 %1</translation>
     </message>
     <message>
-        <source>Say Text</source>
-        <translation>说出文字</translation>
-    </message>
-    <message>
-        <source>%1: done; the project&apos;s sound is unchanged.</source>
-        <translation>%1：完成；项目的声音没有更改。</translation>
-    </message>
-    <message>
-        <source>%1: the project&apos;s sound is now %2.</source>
-        <translation>%1：项目的声音现在是 %2。</translation>
-    </message>
-    <message>
-        <source>%1 replaced the project&apos;s sound %2 with %3 (Edit ▸ Undo brings it back).</source>
-        <translation>%1 用 %3 替换了项目的声音 %2（编辑 ▸ 撤销可找回）。</translation>
+        <source>Imported %1 with its sound as a clip on the audio track</source>
+        <translation>已导入 %1，其声音成为音轨上的片段</translation>
     </message>
 </context>
 <context>

@@ -270,6 +270,21 @@
     </message>
 </context>
 <context>
+    <name>toonface::AnimationEdits</name>
+    <message>
+        <source>placed after %1, at %2 s (it would have played over it)</source>
+        <translation>已放在 %1 之後，位於 %2 秒（否則會與其重疊播放）</translation>
+    </message>
+    <message>
+        <source>replaced %1</source>
+        <translation>已取代 %1</translation>
+    </message>
+    <message>
+        <source>plays together with %1</source>
+        <translation>與 %1 同時播放</translation>
+    </message>
+</context>
+<context>
     <name>toonface::AppearancePanel</name>
     <message>
         <source>none</source>
@@ -1799,10 +1814,6 @@
         <translation>保留連續動作(&amp;C)（姿勢關鍵影格）</translation>
     </message>
     <message>
-        <source>Use the clip&apos;s s&amp;ound as the project&apos;s sound</source>
-        <translation>使用片段的聲音作為專案的聲音(&amp;O)</translation>
-    </message>
-    <message>
         <source>At the &amp;playhead (%1)</source>
         <translation>在播放頭處（%1）(&amp;P)</translation>
     </message>
@@ -1961,8 +1972,12 @@
         <translation>匯入影片 %1</translation>
     </message>
     <message>
-        <source>Use the clip&apos;s s&amp;ound, replacing the project&apos;s sound %1</source>
-        <translation>使用片段的聲音，取代專案的聲音 %1(&amp;O)</translation>
+        <source>Use the clip&apos;s s&amp;ound (a new clip on the audio track)</source>
+        <translation>使用片段的聲音（音軌上的新片段）(&amp;O)</translation>
+    </message>
+    <message>
+        <source>It plays over %1: &amp;replace it (else both sound together)</source>
+        <translation>會與 %1 重疊播放：取代它（否則兩者一起發聲）(&amp;R)</translation>
     </message>
 </context>
 <context>
@@ -2126,10 +2141,6 @@
         <translation>依錄音做唇形同步</translation>
     </message>
     <message>
-        <source>Aligns a recording with the script it speaks, syllable by syllable. The mouth keys and the script&apos;s syllables where the recording plays are replaced; the rest of the timeline is kept.</source>
-        <translation>將錄音與其朗讀的文稿逐音節對齊。錄音播放範圍內的口型關鍵影格與文稿音節會被取代，時間軸的其餘部分保持不變。</translation>
-    </message>
-    <message>
         <source>An audio file, or a video whose sound is used</source>
         <translation>音訊檔案，或使用其聲音的影片</translation>
     </message>
@@ -2220,6 +2231,10 @@
     <message>
         <source>Lip Sync from %1</source>
         <translation>依 %1 做唇形同步</translation>
+    </message>
+    <message>
+        <source>Aligns a recording with the script it speaks, syllable by syllable. The recording becomes a clip on the audio track; the mouth keys and syllables where it plays are replaced, the other recordings and the rest of the timeline are kept.</source>
+        <translation>逐音節將錄音與其文稿對齊。錄音成為音軌上的一個片段；其播放範圍內的口型關鍵影格與音節會被取代，其他錄音與時間軸的其餘部分都會保留。</translation>
     </message>
 </context>
 <context>
@@ -3430,10 +3445,6 @@ The points are unchanged.</source>
         <translation>應為 [dx, dy] 兩個數字</translation>
     </message>
     <message>
-        <source>audio: expected an object</source>
-        <translation>audio：應為物件</translation>
-    </message>
-    <message>
         <source>video: expected an object</source>
         <translation>video：應為物件</translation>
     </message>
@@ -3689,6 +3700,22 @@ The points are unchanged.</source>
         <source>the system gave no reason (is the disk full or removed?)</source>
         <translation>系統未說明原因（磁碟是否已滿或已移除？）</translation>
     </message>
+    <message>
+        <source>the trims are longer than the recording</source>
+        <translation>修剪的長度超過錄音本身</translation>
+    </message>
+    <message>
+        <source>the clip ends beyond the longest timeline Toonface keeps (%1 hours)</source>
+        <translation>片段的結尾超出 Toonface 所能保存的最長時間軸（%1 小時）</translation>
+    </message>
+    <message>
+        <source>expected &quot;cmn&quot;, &quot;en&quot; or &quot;&quot;</source>
+        <translation>應為 "cmn"、"en" 或 ""</translation>
+    </message>
+    <message>
+        <source>audio: expected an array of clips</source>
+        <translation>audio：應為片段的陣列</translation>
+    </message>
 </context>
 <context>
     <name>toonface::Questions</name>
@@ -3802,10 +3829,6 @@ The points are unchanged.</source>
         <translation>說出文字</translation>
     </message>
     <message>
-        <source>The built-in voice speaks the text and the face says it with the voice&apos;s exact timings. The mouth keys and syllables where the speech plays are replaced.</source>
-        <translation>內建語音朗讀文字，臉部依語音的精確時間說出來。語音播放範圍內的口型關鍵影格與音節會被取代。</translation>
-    </message>
-    <message>
         <source>Chinese characters, pinyin, Zhuyin or English, e.g. 您好，我是葛麗絲。</source>
         <translation>漢字、拼音、注音或英文，例如：您好，我是葛麗絲。</translation>
     </message>
@@ -3878,12 +3901,8 @@ The points are unchanged.</source>
         <translation>%1：無法建立其資料夾</translation>
     </message>
     <message>
-        <source>&amp;Replace the project&apos;s sound, %1 (%2 s)</source>
-        <translation>取代專案的聲音 %1（%2 秒）(&amp;R)</translation>
-    </message>
-    <message>
-        <source>The timeline holds one sound: the syllables and mouth keys outside the new speech keep no sound under them. Undo brings the old sound back.</source>
-        <translation>時間軸只容納一段聲音：新語音以外的音節與口型關鍵影格將沒有聲音。復原可找回原本的聲音。</translation>
+        <source>The built-in voice speaks the text and the face says it with the voice&apos;s exact timings. The speech becomes a clip on the audio track; the mouth keys and syllables where it plays are replaced, the other recordings are kept.</source>
+        <translation>內建語音朗讀文字，臉部依語音的精確時間說出。語音成為音軌上的一個片段；其播放範圍內的口型關鍵影格與音節會被取代，其他錄音都會保留。</translation>
     </message>
 </context>
 <context>
@@ -4270,6 +4289,10 @@ The points are unchanged.</source>
         <source>cut short (its header promises %1 s, it holds %2 s)</source>
         <translation>檔案不完整（標頭記載 %1 秒，實際只有 %2 秒）</translation>
     </message>
+    <message>
+        <source>the sound of several or trimmed recordings can only be embedded, not referenced</source>
+        <translation>多段或經修剪的錄音只能內嵌，不能以參照方式使用</translation>
+    </message>
 </context>
 <context>
     <name>toonface::SpeechDialog</name>
@@ -4284,6 +4307,30 @@ The points are unchanged.</source>
     <message>
         <source>Cancelled: nothing was changed.</source>
         <translation>已取消：沒有任何變更。</translation>
+    </message>
+    <message>
+        <source>Place it after them</source>
+        <translation>放在它們之後</translation>
+    </message>
+    <message>
+        <source>Replace them (with their syllables and mouth keys)</source>
+        <translation>取代它們（連同其音節與口型關鍵影格）</translation>
+    </message>
+    <message>
+        <source>The timeline keeps every recording as a clip on the audio track. What to do when the new one would play over others: nothing is replaced unless you choose so.</source>
+        <translation>時間軸將每段錄音保存為音軌上的片段。新錄音會與其他錄音重疊時的做法：除非您選擇取代，否則不會取代任何錄音。</translation>
+    </message>
+    <message>
+        <source>If other recordings &amp;play there:</source>
+        <translation>若該處已有其他錄音(&amp;P)：</translation>
+    </message>
+    <message>
+        <source>%1 (%2 s) does not fit on the timeline there: it would end past %3 hours.</source>
+        <translation>%1（%2 秒）放不進時間軸的該處：結尾會超過 %3 小時。</translation>
+    </message>
+    <message>
+        <source>%1: %2 at %3 s</source>
+        <translation>%1：%2 位於 %3 秒</translation>
     </message>
 </context>
 <context>
@@ -4400,20 +4447,8 @@ The points are unchanged.</source>
         <translation>攝影機照片已儲存為 %1</translation>
     </message>
     <message>
-        <source>Say Text</source>
-        <translation>說出文字</translation>
-    </message>
-    <message>
-        <source>%1: done; the project&apos;s sound is unchanged.</source>
-        <translation>%1：完成；專案的聲音沒有變更。</translation>
-    </message>
-    <message>
-        <source>%1: the project&apos;s sound is now %2.</source>
-        <translation>%1：專案的聲音現在是 %2。</translation>
-    </message>
-    <message>
-        <source>%1 replaced the project&apos;s sound %2 with %3 (Edit ▸ Undo brings it back).</source>
-        <translation>%1 以 %3 取代了專案的聲音 %2（編輯 ▸ 復原可找回）。</translation>
+        <source>Imported %1 with its sound as a clip on the audio track</source>
+        <translation>已匯入 %1，其聲音成為音軌上的片段</translation>
     </message>
 </context>
 <context>

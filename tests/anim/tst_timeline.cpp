@@ -34,7 +34,7 @@ Timeline fullTimeline()
     t.addNod(5.0, 6.0);
     t.addPoseKey({0.04, {{QStringLiteral("8.2"), {0.0, 0.125}}, {QStringLiteral("8.4"), {-0.01 / 3.0, 0.0}}}});
     t.addPoseKey({0.08, {{QStringLiteral("3.2"), {0.0, 0.05}}}});
-    t.setAudio(AudioClip {QStringLiteral("/tmp/speech (1).wav"), 0.125, 11.9});
+    t.setAudioClips({AudioClip {QStringLiteral("/tmp/speech (1).wav"), 0.125, 11.9}});
     return t;
 }
 
@@ -56,7 +56,7 @@ private Q_SLOTS:
         QCOMPARE(t.frameRate(), 25.0);
         QCOMPARE(t.duration(), 0.0);
         QCOMPARE(t.frameCount(), 0);
-        QVERIFY(!t.audio());
+        QVERIFY(t.audioClips().isEmpty());
         QCOMPARE(t.smoothing().minHold, 0.06);
         QCOMPARE(t.smoothing().silenceHold, 0.3);
     }
@@ -83,6 +83,61 @@ private Q_SLOTS:
         QCOMPARE(t.headKeys().first().time, 0.5);
     }
 
+    // Issue 26: the audio track keeps its clips in order of where they are heard, round-trips
+    // through JSON, and reads a version-1 file's one clip.
+    void audioTrack()
+    {
+        Timeline t;
+        AudioClip late {QStringLiteral("b.wav"), 5.0, 3.0};
+        late.trimIn = 0.5;
+        late.trimOut = 0.25;
+        late.script = QStringLiteral("bye");
+        late.language = QStringLiteral("en");
+        AudioClip early {QStringLiteral("a.wav"), 0.0, 4.0};
+        QCOMPARE(t.addAudioClip(late), 0);
+        QCOMPARE(t.addAudioClip(early), 0);
+        QCOMPARE(t.audioClips()[1], late);
+        QCOMPARE(late.start(), 5.5);
+        QCOMPARE(late.end(), 7.75);
+        QCOMPARE(t.audioClipAt(2.0), 0);
+        QCOMPARE(t.audioClipAt(5.2), -1); // trimmed away
+        QCOMPARE(t.audioClipAt(6.0), 1);
+        QCOMPARE(t.duration(), 7.75);
+
+        QString error;
+        const QJsonObject json = t.toJson();
+        QCOMPARE(json.value(QStringLiteral("version")).toInt(), 2);
+        QCOMPARE(json.value(QStringLiteral("audio")).toArray().size(), 2);
+        const std::optional<Timeline> back = Timeline::fromJson(json, &error);
+        QVERIFY2(back, qPrintable(error));
+        QCOMPARE(*back, t);
+
+        QJsonObject v1;
+        v1.insert(QStringLiteral("version"), 1);
+        v1.insert(QStringLiteral("audio"),
+            QJsonObject {{QStringLiteral("path"), QStringLiteral("x.wav")}, {QStringLiteral("offset"), 0.5},
+                {QStringLiteral("duration"), 2.0}});
+        const std::optional<Timeline> old = Timeline::fromJson(v1, &error);
+        QVERIFY2(old, qPrintable(error));
+        QCOMPARE(old->audioClips(), QVector<AudioClip> {AudioClip(QStringLiteral("x.wav"), 0.5, 2.0)});
+
+        // Bad clips are named.
+        QJsonObject bad = json;
+        QJsonArray clips = json.value(QStringLiteral("audio")).toArray();
+        QJsonObject c = clips[1].toObject();
+        c.insert(QStringLiteral("trimIn"), 2.9);
+        clips[1] = c;
+        bad.insert(QStringLiteral("audio"), clips);
+        QVERIFY(!Timeline::fromJson(bad, &error));
+        QVERIFY2(error.startsWith(QStringLiteral("audio[1].trimOut")), qPrintable(error));
+        c.insert(QStringLiteral("trimIn"), 0.0);
+        c.insert(QStringLiteral("offset"), Timeline::kMaxSeconds - 1);
+        clips[1] = c;
+        bad.insert(QStringLiteral("audio"), clips);
+        QVERIFY(!Timeline::fromJson(bad, &error));
+        QVERIFY2(error.startsWith(QStringLiteral("audio[1].duration")), qPrintable(error));
+    }
+
     void durationFollowsAudioOrLastKey()
     {
         Timeline t;
@@ -90,10 +145,10 @@ private Q_SLOTS:
         QCOMPARE(t.duration(), 2.5);
         t.addBlink({2.4, 0.2});
         QCOMPARE(t.duration(), 2.6);
-        t.setAudio(AudioClip {QStringLiteral("a.wav"), 0.5, 10.0});
+        t.setAudioClips({AudioClip {QStringLiteral("a.wav"), 0.5, 10.0}});
         QCOMPARE(t.duration(), 10.5);
         QCOMPARE(t.frameCount(), 263); // ceil(10.5 * 25)
-        t.setAudio(AudioClip {QStringLiteral("a.wav"), 0.0, 10.0});
+        t.setAudioClips({AudioClip {QStringLiteral("a.wav"), 0.0, 10.0}});
         QCOMPARE(t.frameCount(), 250);
         t.setFrameRate(30);
         QCOMPARE(t.frameCount(), 300);
@@ -333,7 +388,7 @@ private Q_SLOTS:
         QVERIFY2(t, qPrintable(error));
         QCOMPARE(t->mouthKeys().size(), 2);
         QCOMPARE(t->mouthKeys()[0], (MouthKey {1.0, MouthShape::A, 0.5, std::nullopt}));
-        QVERIFY(!t->audio());
+        QVERIFY(t->audioClips().isEmpty());
     }
 
     void jsonErrorsNameThePath_data()
@@ -380,8 +435,8 @@ private Q_SLOTS:
         QTest::newRow("pose offset number") << QByteArray(R"({"pose": [{"time": 0, "offsets": {"8.2": [1, "a"]}}]})")
                                             << QStringLiteral("pose[0].offsets.8.2: expected [dx, dy], two numbers");
         QTest::newRow("fps") << QByteArray(R"({"fps": 0})") << QStringLiteral("fps: must be positive");
-        QTest::newRow("newer version") << QByteArray(R"({"version": 2})")
-                                       << QStringLiteral("version: 2 is newer than this Toonface reads (1)");
+        QTest::newRow("newer version") << QByteArray(R"({"version": 3})")
+                                       << QStringLiteral("version: 3 is newer than this Toonface reads (2)");
         QTest::newRow("smoothing field") << QByteArray(R"({"smoothing": {"minHold": -0.1}})")
                                          << QStringLiteral("smoothing.minHold: must not be negative");
         QTest::newRow("smoothing type") << QByteArray(R"({"smoothing": []})")
@@ -389,7 +444,7 @@ private Q_SLOTS:
         QTest::newRow("audio path") << QByteArray(R"({"audio": {"offset": 1}})")
                                     << QStringLiteral("audio.path: missing");
         QTest::newRow("audio type") << QByteArray(R"({"audio": "a.wav"})")
-                                    << QStringLiteral("audio: expected an object");
+                                    << QStringLiteral("audio: expected an array of clips");
         QTest::newRow("video path") << QByteArray(R"({"video": {"offset": 1}})")
                                     << QStringLiteral("video.path: missing");
         QTest::newRow("video fps") << QByteArray(R"({"video": {"path": "a.mpg", "fps": -25}})")

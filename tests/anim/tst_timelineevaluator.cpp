@@ -596,7 +596,7 @@ private Q_SLOTS:
         t.addGazeKey({0.0, {}});
         t.addGazeKey({1.3, {0.05, 0}});
         t.addShake(3.0, 3.5);
-        t.setAudio(AudioClip {QStringLiteral("x.wav"), 0.0, 4.0});
+        t.setAudioClips({AudioClip {QStringLiteral("x.wav"), 0.0, 4.0}});
         const TimelineEvaluator e(t, m_face, m_shapes);
         const auto keys = e.exportKeys();
         QCOMPARE(keys.times.first(), 0.0);

@@ -494,7 +494,7 @@ private Q_SLOTS:
         QVERIFY(!reloaded->timeline.mouthKeys().isEmpty());
         QCOMPARE(reloaded->syllables.size(), 4);
         QCOMPARE(reloaded->syllables[1].pinyin, QStringLiteral("hao"));
-        QCOMPARE(reloaded->script, QStringLiteral("ni3 hao3, shi4 jie4"));
+        QCOMPARE(reloaded->timeline.audioClips().first().script, QStringLiteral("ni3 hao3, shi4 jie4"));
         QCOMPARE(reloaded->audioPath(), QFileInfo(path(QStringLiteral("talk.wav"))).absoluteFilePath());
 
         // The saved project plays its own timeline: the same frames as the animation it came from.
@@ -578,7 +578,7 @@ private Q_SLOTS:
         QCOMPARE(r.code, 0);
         const auto reloaded = loadProject(saved, &error);
         QVERIFY2(reloaded, qPrintable(error));
-        QCOMPARE(reloaded->script, QStringLiteral("ni3 hao3 shi4 jie4"));
+        QCOMPARE(reloaded->timeline.audioClips().first().script, QStringLiteral("ni3 hao3 shi4 jie4"));
         QCOMPARE(reloaded->syllables.size(), 4);
     }
 

@@ -103,9 +103,9 @@ private:
         Project p;
         p.face = test::animationFace();
         p.timeline = test::animationTimeline();
-        p.timeline.setAudio(std::nullopt);
+        p.timeline.setAudioClips({});
         if (!audio.isEmpty())
-            p.timeline.setAudio(AudioClip {QDir(dir).absoluteFilePath(audio), 0.0, 10.0});
+            p.timeline.setAudioClips({AudioClip {QDir(dir).absoluteFilePath(audio), 0.0, 10.0}});
         p.layerPaths = layerFiles;
         p.style.layers = inlineLayers;
         const QString path = QDir(dir).filePath(name + QStringLiteral(".toonface"));

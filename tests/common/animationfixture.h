@@ -53,7 +53,7 @@ inline Timeline animationTimeline(const QString &audioPath = {})
     t.addGazeKey({8.0, {0, 0}});
     t.addShake(2.0, 3.0);
     t.addNod(6.8, 7.8);
-    t.setAudio(AudioClip {audioPath, 0.0, 10.0});
+    t.setAudioClips({AudioClip {audioPath, 0.0, 10.0}});
     return t;
 }
 

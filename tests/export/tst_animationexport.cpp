@@ -27,7 +27,7 @@ Timeline shortTimeline(const QString &audioPath = {})
     t.addMouthCues({{0.1, 0.4, MouthShape::A}, {0.4, 0.7, MouthShape::O}, {0.8, 1.2, MouthShape::I}});
     t.addBlink({0.5, 0.15});
     t.addEmotionClip({0.2, 1.4, Emotion::Smile, 0.8, 0.3, 0.3});
-    t.setAudio(AudioClip {audioPath, 0.0, 1.6});
+    t.setAudioClips({AudioClip {audioPath, 0.0, 1.6}});
     return t;
 }
 

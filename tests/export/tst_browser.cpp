@@ -324,7 +324,7 @@ private Q_SLOTS:
         QFETCH(double, seekTo);
         QFETCH(double, audioTime);
         Timeline timeline = m_timeline;
-        timeline.setAudio(AudioClip {m_dir.filePath(QStringLiteral("voice.wav")), 0.8, 9.2});
+        timeline.setAudioClips({AudioClip {m_dir.filePath(QStringLiteral("voice.wav")), 0.8, 9.2}});
         AnimationExportOptions options;
         options.audio = ExportAudio::Embed;
         QString error;

@@ -80,7 +80,7 @@ private Q_SLOTS:
         QString error;
         QVERIFY2(writeAudio(source, sound, &error), qPrintable(error));
         Timeline t = timeline();
-        t.setAudio(AudioClip {source, 0.0, 3.0});
+        t.setAudioClips({AudioClip {source, 0.0, 3.0}});
         AnimationExportOptions o;
         o.audio = ExportAudio::Embed;
         QByteArray svg = exportSmilSvg(m_face, Style(), t, m_shapes, o, &error);

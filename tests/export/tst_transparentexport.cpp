@@ -28,7 +28,7 @@ Timeline talkingTimeline(const QString &audioPath = {}, double length = 2.0)
     t.addMouthCues({{0.1, 0.5, MouthShape::A}, {0.6, 0.9, MouthShape::O}, {1.0, 1.5, MouthShape::I}});
     t.addBlink({0.7, 0.15});
     t.addShake(0.2, 1.4, 12.0, 2.0);
-    t.setAudio(AudioClip {audioPath, 0.0, length});
+    t.setAudioClips({AudioClip {audioPath, 0.0, length}});
     return t;
 }
 

@@ -22,12 +22,12 @@ using namespace toonface;
 // mix or a cut-off file.
 namespace {
 
-// A large project (a long animation: some megabytes of JSON) whose script says which it is.
+// A large project (a long animation: some megabytes of JSON) whose one syllable says which it is.
 Project bigProject(const QString &which)
 {
     Project p;
     p.face = averageFace(QRectF(60, 80, 200, 240), QSize(320, 400));
-    p.script = which;
+    p.syllables = {{which, QString(), 0, 0.0, 0.5, 1.0, {}}};
     for (int i = 0; i < 30000; ++i)
         p.timeline.addMouthKey({i * 0.04, MouthShape(i % kMouthShapeCount), 1.0, 0.02});
     return p;
@@ -78,7 +78,7 @@ private Q_SLOTS:
 
             const std::optional<Project> loaded = loadProject(path, &error);
             QVERIFY2(loaded, qPrintable(error));
-            QVERIFY(loaded->script == first.script || loaded->script == second.script);
+            QVERIFY(loaded->syllables == first.syllables || loaded->syllables == second.syllables);
             QCOMPARE(loaded->timeline.mouthKeys().size(), first.timeline.mouthKeys().size());
         }
         QCOMPARE(killedWhileSaving, 12);
@@ -89,7 +89,7 @@ private Q_SLOTS:
                 f == QStringLiteral("talk.toonface") || f.startsWith(QStringLiteral("talk.toonface.")), qPrintable(f));
         // And the next save (by a new process) still works.
         QVERIFY2(saveProject(first, path, &error), qPrintable(error));
-        QCOMPARE(loadProject(path, &error)->script, first.script);
+        QCOMPARE(loadProject(path, &error)->syllables, first.syllables);
     }
 };
 

@@ -1,5 +1,6 @@
 #include "face/averageface.h"
 #include "io/project.h"
+#include "speech/audio.h"
 #include "testmain.h"
 
 #include <QDir>
@@ -68,7 +69,16 @@ Project richProject(const QString &dir)
     timeline.addBlink(BlinkEvent {1.1, 0.17});
     timeline.addGazeKey(GazeKey {0.3, QPointF(0.05, -0.02)});
     timeline.addHeadKey(HeadKey {0.7, 3.5, QPointF(0.01, 0.02), 1.05});
-    timeline.setAudio(AudioClip {dir + QStringLiteral("/audio/voice.wav"), 0.125 + 1e-9, 12.345678901234567});
+    // Two recordings, the second trimmed, each with its script.
+    AudioClip voice {dir + QStringLiteral("/audio/voice.wav"), 0.125 + 1e-9, 12.345678901234567};
+    voice.script = QStringLiteral("你好，世界 — \"hello\"\n第二行");
+    voice.language = QStringLiteral("cmn");
+    AudioClip reply {dir + QStringLiteral("/audio/reply.wav"), 13.0, 4.5};
+    reply.trimIn = 0.25;
+    reply.trimOut = 1.0 / 3;
+    reply.script = QStringLiteral("Fine, thanks");
+    reply.language = QStringLiteral("en");
+    timeline.setAudioClips({reply, voice});
     timeline.setVideo(VideoClip {dir + QStringLiteral("/video/talk.mpg"), 0.5 + 1e-9, 2.999999999, 29.97});
     p.timeline = timeline;
 
@@ -78,8 +88,6 @@ Project richProject(const QString &dir)
     hao.shapes = {{MouthShape::A, 0.35}, {MouthShape::U, 0.35 + 0.8095 * 0.35}};
     p.syllables = {ni, hao};
 
-    p.script = QStringLiteral("你好，世界 — \"hello\"\n第二行");
-    p.scriptLanguage = QStringLiteral("cmn");
     return p;
 }
 
@@ -177,8 +185,9 @@ private Q_SLOTS:
         QCOMPARE(loaded->timeline, original.timeline);
         QCOMPARE(loaded->syllables, original.syllables);
         QCOMPARE(loaded->audioPath(), original.audioPath());
-        QCOMPARE(loaded->script, original.script);
-        QCOMPARE(loaded->scriptLanguage, original.scriptLanguage);
+        QCOMPARE(loaded->timeline.audioClips().size(), 2);
+        QCOMPARE(loaded->timeline.audioClips()[1].trimOut, 1.0 / 3);
+        QCOMPARE(loaded->timeline.audioClips()[1].script, QStringLiteral("Fine, thanks"));
         QVERIFY(*loaded == original);
     }
 
@@ -225,8 +234,11 @@ private Q_SLOTS:
         QCOMPARE(json.value(QStringLiteral("layers")).toArray().at(0).toString(), QStringLiteral("layers/hat.svg"));
         QCOMPARE(json.value(QStringLiteral("layers")).toArray().at(1).toString(),
             QStringLiteral("../elsewhere/glasses.svg"));
-        QCOMPARE(json.value(QStringLiteral("audio")).toObject().value(QStringLiteral("path")).toString(),
-            QStringLiteral("audio/voice.wav"));
+        const QJsonArray clips
+            = json.value(QStringLiteral("timeline")).toObject().value(QStringLiteral("audio")).toArray();
+        QCOMPARE(clips.size(), 2);
+        QCOMPARE(clips.at(0).toObject().value(QStringLiteral("path")).toString(), QStringLiteral("audio/voice.wav"));
+        QCOMPARE(clips.at(1).toObject().value(QStringLiteral("path")).toString(), QStringLiteral("audio/reply.wav"));
         const QJsonObject video
             = json.value(QStringLiteral("timeline")).toObject().value(QStringLiteral("video")).toObject();
         QCOMPARE(video.value(QStringLiteral("path")).toString(), QStringLiteral("video/talk.mpg"));
@@ -326,10 +338,46 @@ private Q_SLOTS:
         QCOMPARE(p->timeline.mouthKeys()[1].shape, MouthShape::A);
         QCOMPARE(p->audioPath(), QDir::cleanPath(kData + QStringLiteral("/v1/voice.wav")));
         QVERIFY(p->syllables.isEmpty()); // a file from before syllables were saved
-        QVERIFY(p->timeline.audio());
-        QCOMPARE(p->timeline.audio()->offset, 0.25);
+        // Its one sound is a track of one clip, with the file's script.
+        QCOMPARE(p->timeline.audioClips().size(), 1);
+        const AudioClip &clip = p->timeline.audioClips().first();
+        QCOMPARE(clip.offset, 0.25);
+        QCOMPARE(clip.trimIn, 0.0);
+        QCOMPARE(clip.trimOut, 0.0);
+        QCOMPARE(clip.script, QStringLiteral("ni hao"));
+        QCOMPARE(clip.language, QStringLiteral("cmn"));
         QVERIFY(!p->timeline.video()); // a file from before Import Video
-        QCOMPARE(p->scriptLanguage, QStringLiteral("cmn"));
+        // Saved again, it is written in the new form and loads the same.
+        QTemporaryDir dir;
+        const QString again = dir.filePath(QStringLiteral("again.toonface"));
+        QVERIFY2(saveProject(*p, again, &error), qPrintable(error));
+        const QJsonObject json = QJsonDocument::fromJson(readAll(again)).object();
+        QCOMPARE(json.value(QStringLiteral("version")).toInt(), 2);
+        QVERIFY(json.value(QStringLiteral("timeline")).toObject().value(QStringLiteral("audio")).isArray());
+        QVERIFY(!json.contains(QStringLiteral("script")));
+        const auto reloaded = loadProject(again, &error);
+        QVERIFY2(reloaded, qPrintable(error));
+        QCOMPARE(reloaded->timeline.audioClips(), p->timeline.audioClips());
+    }
+
+    // A version-1 sound of unknown length gets its file's length when the file is there.
+    void versionOneSoundGetsItsLength()
+    {
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("project.toonface"));
+        QVERIFY(QFile::copy(kData + QStringLiteral("/v1/project.toonface"), file));
+        Audio tone;
+        tone.samples.resize(qsizetype(1.5 * tone.sampleRate));
+        for (qsizetype i = 0; i < tone.samples.size(); ++i)
+            tone.samples[i] = float(0.3 * std::sin(0.1 * double(i)));
+        QString error;
+        QVERIFY2(writeAudio(dir.filePath(QStringLiteral("voice.wav")), tone, &error), qPrintable(error));
+        const auto p = loadProject(file, &error);
+        QVERIFY2(p, qPrintable(error));
+        QCOMPARE(p->timeline.audioClips().size(), 1);
+        QVERIFY2(std::abs(p->timeline.audioClips().first().duration - 1.5) < 0.01,
+            qPrintable(QString::number(p->timeline.audioClips().first().duration)));
+        QCOMPARE(p->timeline.audioClips().first().end(), 1.75); // from its offset, 0.25 s
     }
 
     void malformedProjects_data()
@@ -367,7 +415,7 @@ private Q_SLOTS:
         row("audio-offset-string.toonface", "audio.offset: expected a number");
         row("script-language.toonface", "script.language: expected \"cmn\", \"en\" or \"\"");
         row("image-size-negative.toonface", "imageSize.width: expected an integer from 0 to 1000000, found -640");
-        row("newer-version.toonface", "made by a newer Toonface (project version 3; this version reads up to 1)");
+        row("newer-version.toonface", "made by a newer Toonface (project version 3; this version reads up to 2)");
         row("version-string.toonface", "version: expected a version number (1 or more), found the string \"1\"");
         row("version-zero.toonface", "version: expected a version number (1 or more), found 0");
         row("wrong-format.toonface",
@@ -476,9 +524,9 @@ private Q_SLOTS:
         Project p = richProject(tmp.path());
         QString error;
         QVERIFY2(saveProject(p, file, &error), qPrintable(error));
-        p.script = QStringLiteral("changed");
+        p.syllables.first().text = QStringLiteral("changed");
         QVERIFY2(saveProject(p, file, &error), qPrintable(error));
-        QCOMPARE(loadProject(file, &error)->script, QStringLiteral("changed"));
+        QCOMPARE(loadProject(file, &error)->syllables.first().text, QStringLiteral("changed"));
         QCOMPARE(entries(tmp.path()), QStringList {QStringLiteral("a.toonface")});
     }
 
@@ -524,7 +572,7 @@ private Q_SLOTS:
             if (folderWritable)
                 probe.remove();
             else {
-                p.script = QStringLiteral("a new script");
+                p.syllables.first().text = QStringLiteral("a new script");
                 saved = saveProject(p, file, &error);
             }
         }

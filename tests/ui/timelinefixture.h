@@ -20,8 +20,6 @@ inline constexpr double kTalkDuration = 3.0;
 inline Animation talkingAnimation()
 {
     Animation a;
-    a.script = QStringLiteral("你好吗，明天");
-    a.scriptLanguage = QStringLiteral("cmn");
     a.syllables = {
         syllable(QStringLiteral("你"), QStringLiteral("ni"), 3, 0.2, 0.5),
         syllable(QStringLiteral("好"), QStringLiteral("hao"), 3, 0.5, 0.8),
@@ -53,8 +51,6 @@ inline void fillTalking(Document &document)
     const Animation a = talkingAnimation();
     project.timeline = a.timeline;
     project.syllables = a.syllables;
-    project.script = a.script;
-    project.scriptLanguage = a.scriptLanguage;
     document.reset(project, photo(), {}, true);
 }
 

@@ -56,7 +56,7 @@ private Q_SLOTS:
     void speechReplacesOnlyItsRange()
     {
         const Animation before = withTalk();
-        const Animation after = withSpeech(
+        const Animation after = *withSpeech(
             before, twoSyllables(), SpeechPlacement {QStringLiteral("/tmp/a.wav"), 2.0, QStringLiteral("你好")});
         // Keys: the one at 0.5 and at 4.0 kept, the one at 2.5 replaced by the result's, moved by 2 s.
         const QVector<MouthKey> &keys = after.timeline.mouthKeys();
@@ -77,10 +77,53 @@ private Q_SLOTS:
             (QStringList {QStringLiteral("一"), QStringLiteral("你"), QStringLiteral("好"), QStringLiteral("三")}));
         QCOMPARE(after.syllables[2].start, 2.5);
         QCOMPARE(after.syllables[2].shapes[1].start, 2.82);
-        QCOMPARE(
-            after.timeline.audio(), (std::optional<AudioClip>(AudioClip {QStringLiteral("/tmp/a.wav"), 2.0, 1.0})));
-        QCOMPARE(after.script, QStringLiteral("你好"));
-        QCOMPARE(after.scriptLanguage, QStringLiteral("cmn"));
+        AudioClip clip {QStringLiteral("/tmp/a.wav"), 2.0, 1.0};
+        clip.script = QStringLiteral("你好");
+        clip.language = QStringLiteral("cmn");
+        QCOMPARE(after.timeline.audioClips(), QVector<AudioClip> {clip});
+    }
+
+    // Issue 26: a new recording is a new clip; one it would play over is kept (it goes after
+    // it) unless replacing is asked for; the same recording again replaces itself.
+    void speechIsPlacedBesideOtherClips()
+    {
+        Animation before = withTalk();
+        AudioClip first {QStringLiteral("/tmp/first.wav"), 2.0, 1.5}; // owns 二 and the key at 2.5
+        first.script = QStringLiteral("二");
+        before.timeline.setAudioClips({first});
+        const SpeechPlacement wanted {QStringLiteral("/tmp/new.wav"), 2.2, QStringLiteral("你好")};
+
+        ClipPlace placed;
+        const Animation after = *withSpeech(before, twoSyllables(), wanted, &placed);
+        QCOMPARE(placed.start, 3.5); // after the first clip
+        QCOMPARE(placed.overlapped, QVector<int> {0});
+        QVERIFY(placed.replaced.isEmpty());
+        QCOMPARE(after.timeline.audioClips().size(), 2);
+        QCOMPARE(after.timeline.audioClips()[0], first);
+        QCOMPARE(after.timeline.audioClips()[1].offset, 3.5);
+        QVERIFY(after.syllables.contains(before.syllables[1])); // 二 kept
+        QVERIFY(after.timeline.mouthKeys().contains(before.timeline.mouthKeys()[1]));
+        QVERIFY(placementNote(before.timeline, placed, wanted.offset).contains(QStringLiteral("first.wav")));
+
+        SpeechPlacement replace = wanted;
+        replace.overlap = ClipOverlap::Replace;
+        const Animation replaced = *withSpeech(before, twoSyllables(), replace, &placed);
+        QCOMPARE(placed.start, 2.2);
+        QCOMPARE(placed.replaced, QVector<int> {0});
+        QCOMPARE(replaced.timeline.audioClips().size(), 1);
+        QCOMPARE(replaced.timeline.audioClips()[0].path, QStringLiteral("/tmp/new.wav"));
+        QVERIFY(!replaced.syllables.contains(before.syllables[1])); // 二 went with its clip
+        QVERIFY(replaced.syllables.contains(before.syllables[2])); // 三 (no clip) stays
+
+        // Lip-syncing the first recording again at its place replaces it, whatever the choice.
+        const Animation again
+            = *withSpeech(before, twoSyllables(), SpeechPlacement {first.path, first.offset, QStringLiteral("你好")});
+        QCOMPARE(again.timeline.audioClips().size(), 1);
+        QCOMPARE(again.timeline.audioClips()[0].script, QStringLiteral("你好"));
+
+        // Nothing past the timeline's four hours.
+        QVERIFY(
+            !withSpeech(before, twoSyllables(), SpeechPlacement {wanted.audioPath, Timeline::kMaxSeconds - 0.5, {}}));
     }
 
     void emotionGivesWay()
@@ -124,7 +167,7 @@ private Q_SLOTS:
         Document doc;
         fixture::fill(doc);
         Animation a;
-        a.timeline.setAudio(AudioClip {QStringLiteral("/tmp/x.wav"), 0, 12.0});
+        a.timeline.setAudioClips({AudioClip {QStringLiteral("/tmp/x.wav"), 0, 12.0}});
         a.timeline.addBlink({3.0, 0.2});
         doc.changeAnimation(a, QStringLiteral("setup"));
         doc.undoStack()->clear();
@@ -160,7 +203,7 @@ private Q_SLOTS:
         fixture::fill(doc);
         Animation a;
         a.timeline.addEmotionClip({0.0, 8.0, Emotion::Sad, 1.0, 0.3, 0.3});
-        a.timeline.setAudio(AudioClip {QStringLiteral("/tmp/x.wav"), 0, 8.0});
+        a.timeline.setAudioClips({AudioClip {QStringLiteral("/tmp/x.wav"), 0, 8.0}});
         doc.changeAnimation(a, QStringLiteral("setup"));
         doc.undoStack()->clear();
         const Animation before = doc.animation();

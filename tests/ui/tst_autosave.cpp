@@ -109,7 +109,9 @@ private Q_SLOTS:
             edited = doc.animation();
         }
         // What the user did since the save: a lip-synced phrase, a smile, blinks.
-        edited.script = QStringLiteral("ni3 hao3");
+        AudioClip clip {QStringLiteral("/tmp/voice.wav"), 0.0, 2.0};
+        clip.script = QStringLiteral("ni3 hao3");
+        edited.timeline.setAudioClips({clip});
         for (int i = 0; i < 400; ++i)
             edited.timeline.addMouthKey({0.1 * i, MouthShape(i % kMouthShapeCount), 1.0, 0.08});
         edited.timeline.setEmotionClips({EmotionClip {1.0, 3.0, Emotion::Smile, 0.8, 0.3, 0.3}});
@@ -153,7 +155,7 @@ private Q_SLOTS:
         Document restored;
         Autosaver::restoreInto(&restored, loaded);
         QCOMPARE(restored.animation().timeline, edited.timeline);
-        QCOMPARE(restored.animation().script, edited.script);
+        QCOMPARE(restored.animation().timeline.audioClips(), edited.timeline.audioClips());
         QCOMPARE(restored.filePath(), original);
         QVERIFY(restored.isModified());
     }

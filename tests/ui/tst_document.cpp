@@ -249,8 +249,10 @@ private Q_SLOTS:
         LipsyncSyllable ma {QStringLiteral("妈"), QStringLiteral("ma"), 1, 0.5, 0.7, 1.0, {}};
         ma.shapes = {{MouthShape::M, 0.5}, {MouthShape::A, 0.5 + 0.8095 * 0.2}};
         after.syllables = {ma};
-        after.script = QStringLiteral("妈");
-        after.scriptLanguage = QStringLiteral("cmn");
+        AudioClip clip {m_dir.filePath(QStringLiteral("ma.wav")), 0.4, 0.5};
+        clip.script = QStringLiteral("妈");
+        clip.language = QStringLiteral("cmn");
+        after.timeline.setAudioClips({clip});
         doc.changeAnimation(after, QStringLiteral("Lip Sync"));
         QCOMPARE(doc.animation(), after);
         QCOMPARE(doc.timeline(), after.timeline);
@@ -331,12 +333,13 @@ private Q_SLOTS:
         a.timeline.addMouthKey(MouthKey {0.25, MouthShape::U, 0.8, 0.15});
         a.timeline.generateBlinks(7, 4.0);
         a.timeline.addNod(1.0, 2.0);
-        a.timeline.setAudio(AudioClip {m_dir.filePath(QStringLiteral("sound/voice.wav")), 0.5, 3.5});
+        AudioClip clip {m_dir.filePath(QStringLiteral("sound/voice.wav")), 0.5, 3.5};
+        clip.script = QStringLiteral("我");
+        clip.language = QStringLiteral("cmn");
+        a.timeline.setAudioClips({clip});
         LipsyncSyllable wo {QStringLiteral("我"), QStringLiteral("wo"), 3, 0.25, 0.4, 0.75, {}};
         wo.shapes = {{MouthShape::U, 0.25}, {MouthShape::O, 0.25 + 0.8095 * 0.15}};
         a.syllables = {wo};
-        a.script = QStringLiteral("我");
-        a.scriptLanguage = QStringLiteral("cmn");
         doc.changeAnimation(a, QStringLiteral("Animate"));
 
         const QString projectPath = m_dir.filePath(QStringLiteral("talker.toonface"));

@@ -57,7 +57,7 @@ private:
         t.setFrameRate(25);
         t.addMouthCues({{0.2, 0.5, MouthShape::A}, {0.5, 0.9, MouthShape::U}, {1.0, 1.6, MouthShape::E}});
         t.addBlink({1.2, 0.18});
-        t.setAudio(AudioClip {m_tone, 0.0, 2.0});
+        t.setAudioClips({AudioClip {m_tone, 0.0, 2.0}});
         r.timeline = t;
         return r;
     }

@@ -40,8 +40,6 @@ Animation busyAnimation()
     a.timeline.addEmotionClip({0.0, 3.0, Emotion::Smile, 0.8, 0.3, 0.3});
     a.timeline.addBlink({1.0, 0.18});
     a.timeline.addHeadKey({2.0, 5.0, QPointF(0.01, 0), 1.0});
-    a.script = QStringLiteral("好远");
-    a.scriptLanguage = QStringLiteral("cmn");
     return a;
 }
 
@@ -168,19 +166,17 @@ private Q_SLOTS:
         QCOMPARE(t.blinks()[0], before.timeline.blinks()[0]);
         QVERIFY(std::abs(blinkMiddle(t.blinks()[1]) - (1.5 + 18.5 / kFps)) <= 1.5 / kFps);
         // Continuous mouth: the pose track moves the mouth where the clip plays, so the mouth keys
-        // there go and those elsewhere stay; the clip's sound replaces the project's, so the
-        // syllables timed to the old sound there go too. The emotions stay.
+        // there go and those elsewhere stay; the clip's sound is a new clip on the audio track,
+        // which replaces nothing: the syllables stay. The emotions stay.
         QCOMPARE(t.mouthKeys().size(), 1);
         QCOMPARE(t.mouthKeys()[0], before.timeline.mouthKeys()[0]);
-        QCOMPARE(doc.syllables().size(), 1);
-        QCOMPARE(doc.syllables()[0], before.syllables[0]);
-        QCOMPARE(doc.project().script, before.script);
+        QCOMPARE(doc.syllables(), before.syllables);
         QCOMPARE(t.emotionClips(), before.timeline.emotionClips());
         // The clip is the sound and the video, from the playhead.
-        QVERIFY(t.audio());
-        QCOMPARE(t.audio()->path, m_talking);
-        QCOMPARE(t.audio()->offset, 1.5);
-        QVERIFY(std::abs(t.audio()->duration - kTalkingFrames / kFps) < 0.05);
+        QVERIFY(!t.audioClips().isEmpty());
+        QCOMPARE(t.audioClips().first().path, m_talking);
+        QCOMPARE(t.audioClips().first().offset, 1.5);
+        QVERIFY(std::abs(t.audioClips().first().duration - kTalkingFrames / kFps) < 0.05);
         QVERIFY(t.video());
         QCOMPARE(t.video()->path, m_talking);
         QCOMPARE(t.video()->offset, 1.5);
@@ -201,15 +197,30 @@ private Q_SLOTS:
         Document doc;
         fillBusy(doc);
         Animation a = doc.animation();
-        a.timeline.setAudio(AudioClip {m_dir.filePath(QStringLiteral("recording.wav")), 0, 6.0});
+        a.timeline.setAudioClips({AudioClip {m_dir.filePath(QStringLiteral("recording.wav")), 0, 6.0}});
         doc.changeAnimation(a, QStringLiteral("sound"));
+        const AudioClip recording = doc.timeline().audioClips().first();
         ImportVideoDialog dialog(&doc, 0.0);
         dialog.show();
         QVERIFY(dialog.openClip(m_talking));
         auto *useSound = child<QCheckBox>(dialog, "useSound");
+        auto *replace = child<QCheckBox>(dialog, "replaceOverlap");
         QVERIFY(useSound->isEnabled()); // the clip has sound
-        QVERIFY(!useSound->isChecked()); // but the project's is not replaced without a word
-        QVERIFY2(useSound->text().contains(QStringLiteral("recording.wav")), qPrintable(useSound->text()));
+        QVERIFY(useSound->isChecked()); // a new clip: it replaces nothing
+        // It would play over the recording: the dialog says so, and replaces it only on request.
+        QVERIFY(replace->isVisible());
+        QVERIFY(!replace->isChecked());
+        QVERIFY2(replace->text().contains(QStringLiteral("recording.wav")), qPrintable(replace->text()));
+        QSignalSpy applied(&dialog, &ImportVideoDialog::applied);
+        QSignalSpy failed(&dialog, &ImportVideoDialog::failed);
+        QVERIFY(click(&dialog, "start"));
+        QVERIFY(QTest::qWaitFor([&] { return !applied.isEmpty() || !failed.isEmpty(); }, kTrackTimeoutMs));
+        QVERIFY2(failed.isEmpty(), qPrintable(dialog.message()));
+        // Both recordings are on the track, the first as it was.
+        const QVector<AudioClip> &clips = doc.timeline().audioClips();
+        QCOMPARE(clips.size(), 2);
+        QVERIFY(clips.contains(recording));
+        QVERIFY(std::any_of(clips.begin(), clips.end(), [&](const AudioClip &c) { return c.path == m_talking; }));
     }
 
     void snappedMouthGivesMouthKeys()
@@ -243,7 +254,7 @@ private Q_SLOTS:
         };
         QCOMPARE(shapeAt(3 / kFps), MouthShape::M);
         QVERIFY(shapeAt(11 / kFps) != MouthShape::M);
-        QVERIFY(!t.audio()); // the sound was not taken, so the script's syllables stay
+        QVERIFY(t.audioClips().isEmpty()); // the sound was not taken, so the script's syllables stay
         QCOMPARE(doc.syllables(), busyAnimation().syllables);
         QVERIFY(t.video());
         QCOMPARE(doc.undoStack()->count(), 1);
@@ -439,8 +450,8 @@ private Q_SLOTS:
         QVERIFY2(t.poseKeys().size() >= 70, qPrintable(QString::number(t.poseKeys().size())));
         QCOMPARE(t.headKeys().size(), t.poseKeys().size());
         QCOMPARE(t.gazeKeys().size(), t.poseKeys().size());
-        QVERIFY(t.audio());
-        QCOMPARE(t.audio()->path, clip);
+        QVERIFY(!t.audioClips().isEmpty());
+        QCOMPARE(t.audioClips().first().path, clip);
         QVERIFY(t.video());
         QCOMPARE(doc.undoStack()->count(), 1); // the import on the new project
         doc.undoStack()->undo();

@@ -7,6 +7,7 @@
 #include "i18n/translations.h"
 #include "speech/tts.h"
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
@@ -36,8 +37,6 @@ Animation busyAnimation()
     a.timeline.addBlink({1.0, 0.18});
     a.syllables.append({QStringLiteral("好"), QStringLiteral("hao"), 3, 1.0, 1.3, 1.0, {{MouthShape::A, 1.0}}});
     a.syllables.append({QStringLiteral("远"), QStringLiteral("yuan"), 3, 100.0, 100.3, 1.0, {{MouthShape::U, 100.0}}});
-    a.script = QStringLiteral("好");
-    a.scriptLanguage = QStringLiteral("cmn");
     return a;
 }
 
@@ -124,12 +123,12 @@ private Q_SLOTS:
             if (s.start < 50)
                 spoken += s.text;
         QCOMPARE(spoken, kRealScript);
-        QVERIFY(doc.timeline().audio().has_value());
-        QCOMPARE(doc.timeline().audio()->path, wav);
-        const double duration = doc.timeline().audio()->duration;
+        QVERIFY(!doc.timeline().audioClips().isEmpty());
+        QCOMPARE(doc.timeline().audioClips().first().path, wav);
+        const double duration = doc.timeline().audioClips().first().duration;
         QVERIFY(duration > 2.0 && duration < 10.0);
-        QCOMPARE(doc.project().script, kRealScript);
-        QCOMPARE(doc.project().scriptLanguage, QStringLiteral("cmn"));
+        QCOMPARE(doc.timeline().audioClips().first().script, kRealScript);
+        QCOMPARE(doc.timeline().audioClips().first().language, QStringLiteral("cmn"));
         int keysInRange = 0;
         for (const MouthKey &k : doc.timeline().mouthKeys())
             keysInRange += k.time <= duration;
@@ -172,24 +171,32 @@ private Q_SLOTS:
         QVERIFY2(failed.isEmpty(), qPrintable(dialog.message()));
         QCOMPARE(doc.syllables().size(), 6);
         QCOMPARE(doc.syllables().first().text, QStringLiteral("set"));
-        QCOMPARE(doc.project().scriptLanguage, QStringLiteral("en"));
-        QCOMPARE(doc.timeline().audio()->path, QFileInfo(video).absoluteFilePath());
-        QVERIFY(std::abs(doc.timeline().audio()->duration - 3.0) < 0.2);
+        QCOMPARE(doc.timeline().audioClips().first().language, QStringLiteral("en"));
+        QCOMPARE(doc.timeline().audioClips().first().path, QFileInfo(video).absoluteFilePath());
+        QVERIFY(std::abs(doc.timeline().audioClips().first().duration - 3.0) < 0.2);
         QVERIFY(!doc.timeline().mouthKeys().isEmpty());
     }
 
-    void startsWithTheProjectsSoundAndScript()
+    void startsWithTheClipUnderThePlayhead()
     {
         Document doc;
         fillBusy(doc);
         Animation a = doc.animation();
-        a.timeline.setAudio(AudioClip {m_dir.filePath(QStringLiteral("x.wav")), 1.5, 3.0});
-        a.script = QStringLiteral("你好");
+        AudioClip clip {m_dir.filePath(QStringLiteral("x.wav")), 1.5, 3.0};
+        clip.script = QStringLiteral("你好");
+        clip.language = QStringLiteral("cmn");
+        a.timeline.setAudioClips({clip});
         doc.changeAnimation(a, QStringLiteral("setup"));
-        LipSyncDialog dialog(&doc);
-        QCOMPARE(dialog.findChild<QLineEdit *>(QStringLiteral("recording"))->text(), a.timeline.audio()->path);
-        QCOMPARE(dialog.findChild<QPlainTextEdit *>(QStringLiteral("script"))->toPlainText(), a.script);
+        // On the clip: its recording, script and place, to lip-sync it again.
+        LipSyncDialog dialog(&doc, nullptr, 2.0);
+        QCOMPARE(dialog.findChild<QLineEdit *>(QStringLiteral("recording"))->text(), clip.path);
+        QCOMPARE(dialog.findChild<QPlainTextEdit *>(QStringLiteral("script"))->toPlainText(), clip.script);
         QCOMPARE(dialog.findChild<QDoubleSpinBox *>(QStringLiteral("offset"))->value(), 1.5);
+        // Elsewhere: a new recording at the playhead.
+        LipSyncDialog elsewhere(&doc, nullptr, 7.0);
+        QVERIFY(elsewhere.findChild<QLineEdit *>(QStringLiteral("recording"))->text().isEmpty());
+        QCOMPARE(elsewhere.findChild<QDoubleSpinBox *>(QStringLiteral("offset"))->value(), 7.0);
+        QVERIFY(elsewhere.findChild<QComboBox *>(QStringLiteral("overlap")));
     }
 
     void cancelLeavesTheProjectUnchanged()

@@ -2,6 +2,7 @@
 #include "testmain.h"
 #include "uifixture.h"
 
+#include "media/mediareader.h"
 #include "playback/mediaaudiotrack.h"
 #include "playback/playbackclock.h"
 #include "playback/playbackcontroller.h"
@@ -87,7 +88,7 @@ class TestPlayback : public QObject
     void setAudio(const QString &path, double offset, double duration, double seconds)
     {
         Timeline timeline = fixture::talkingTimeline(seconds);
-        timeline.setAudio(AudioClip {path, offset, duration});
+        timeline.setAudioClips({AudioClip {path, offset, duration}});
         fixture::setTimeline(*m_doc, timeline);
     }
     int frame() const { return m_playhead->frame(m_doc->timeline().frameRate()); }
@@ -394,6 +395,33 @@ private Q_SLOTS:
         m_controller->play();
         QCOMPARE(track->plays.size(), 3);
         QCOMPARE(track->plays[2], 1.5);
+    }
+
+    // Issue 26: two recordings play as one mix, from the first one's start to the second's end.
+    void twoClipsPlayAsOneMix()
+    {
+        useSimulatedClock();
+        fixture::FakeAudioTrack *track = useFakeTrack();
+        const QString tone = toneFile(1.0);
+        Timeline timeline = fixture::talkingTimeline(4.0);
+        timeline.setAudioClips({AudioClip {tone, 0.5, 1.0}, AudioClip {tone, 2.5, 1.0}});
+        fixture::setTimeline(*m_doc, timeline);
+        m_controller->play(); // the mix is made when it plays
+        QVERIFY2(m_controller->hasSound(), qPrintable(m_controller->soundProblem()));
+        QVERIFY(track->opened != tone);
+        QString error;
+        const std::optional<QVector<float>> mix = readAudio(track->opened, 16000, &error);
+        QVERIFY2(mix, qPrintable(error));
+        QVERIFY(std::abs(mix->size() / 16000.0 - 3.0) < 0.01); // 0.5 .. 3.5 s
+        advance(520);
+        QCOMPARE(track->plays.size(), 1);
+        QVERIFY(track->plays[0] >= 0 && track->plays[0] < 0.03); // the mix's start is the first clip's
+        // Moving the second clip makes another mix, from then on.
+        timeline.setAudioClips({AudioClip {tone, 0.5, 1.0}, AudioClip {tone, 3.0, 1.0}});
+        const QString before = track->opened;
+        fixture::setTimeline(*m_doc, timeline);
+        QVERIFY(track->opened != before);
+        m_controller->pause();
     }
 
     void fileShorterThanTheClipEndsInSilence()

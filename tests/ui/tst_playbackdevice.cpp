@@ -71,7 +71,7 @@ private Q_SLOTS:
         Document document;
         fixture::fill(document);
         Timeline timeline = fixture::talkingTimeline(4.0);
-        timeline.setAudio(AudioClip {path, 0.0, 4.0});
+        timeline.setAudioClips({AudioClip {path, 0.0, 4.0}});
         fixture::setTimeline(document, timeline);
         Playhead playhead;
         PlaybackController controller(&document, &playhead);

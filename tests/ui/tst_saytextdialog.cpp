@@ -4,10 +4,13 @@
 
 #include "dialogs/languagebox.h"
 #include "dialogs/saytextdialog.h"
+#include "dialogs/secondsbox.h"
 #include "document/document.h"
 #include "speech/tts.h"
+#include "timeline/audioclipedits.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QFileInfo>
 #include <QLabel>
 #include <QLineEdit>
@@ -17,6 +20,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
+
+#include <algorithm>
 
 using namespace toonface;
 using namespace toonface::dialogfixture;
@@ -79,9 +84,9 @@ private Q_SLOTS:
         QVERIFY(QFileInfo::exists(wav));
         const AudioResult sound = loadAudio(wav);
         QVERIFY2(sound.ok(), qPrintable(sound.error));
-        QVERIFY(doc.timeline().audio().has_value());
-        QCOMPARE(doc.timeline().audio()->path, wav);
-        QVERIFY(std::abs(doc.timeline().audio()->duration - sound.sourceDuration) < 0.05);
+        QVERIFY(!doc.timeline().audioClips().isEmpty());
+        QCOMPARE(doc.timeline().audioClips().first().path, wav);
+        QVERIFY(std::abs(doc.timeline().audioClips().first().duration - sound.sourceDuration) < 0.05);
 
         // The syllables carry the synthesizer's own timings.
         const Script script = parseScript(text).script;
@@ -94,8 +99,8 @@ private Q_SLOTS:
         }
         QVERIFY(doc.timeline().mouthKeys().size() > expected.syllables.size());
         QVERIFY(doc.timeline().mouthKeys().contains(before.timeline.mouthKeys().first())); // past the speech
-        QCOMPARE(doc.project().script, text);
-        QCOMPARE(doc.project().scriptLanguage, QStringLiteral("cmn"));
+        QCOMPARE(doc.timeline().audioClips().first().script, text);
+        QCOMPARE(doc.timeline().audioClips().first().language, QStringLiteral("cmn"));
 
         // One step; undo gives back the exact previous animation.
         QCOMPARE(doc.undoStack()->count(), 1);
@@ -103,37 +108,63 @@ private Q_SLOTS:
         QVERIFY(doc.animation() == before);
     }
 
-    void soundAlreadyThereIsReplacedOnlyWhenAsked()
+    // Issue 26: a second recording is a second clip; the first stays unless the user asks.
+    void secondRecordingKeepsTheFirst()
     {
         Document doc;
         fixture::fill(doc);
         const QString recording = writeTone(m_dir.filePath(QStringLiteral("recording.wav")), 6.0);
         QVERIFY(!recording.isEmpty());
         Animation a = doc.animation();
-        a.timeline.setAudio(AudioClip {recording, 0, 6.0});
-        a.scriptLanguage = QStringLiteral("cmn");
+        AudioClip first {recording, 0, 6.0};
+        first.script = QStringLiteral("你好");
+        first.language = QStringLiteral("cmn");
+        a.timeline.setAudioClips({first});
+        a.syllables = {{QStringLiteral("你"), QStringLiteral("ni"), 3, 1.0, 1.3, 1.0, {{MouthShape::I, 1.0}}}};
         doc.changeAnimation(a, QStringLiteral("setup"));
         doc.undoStack()->clear();
 
-        SayTextDialog dialog(&doc);
+        // Wanted at the playhead (2 s), inside the recording: placed after it.
+        SayTextDialog dialog(&doc, nullptr, 2.0);
         dialog.show();
+        QCOMPARE(dialog.findChild<SecondsBox *>(QStringLiteral("offset"))->value(), 2.0);
         // The language is read from the new text, not taken from the last script's.
         QCOMPARE(dialog.findChild<LanguageBox *>(QStringLiteral("language"))->language(), Language::Auto);
         type(dialog, QStringLiteral("Hello there"));
-        auto *replace = dialog.findChild<QCheckBox *>(QStringLiteral("replaceSound"));
-        QVERIFY(replace);
-        QVERIFY(replace->text().contains(QStringLiteral("recording.wav")));
-        QVERIFY(!replace->isChecked());
-        QVERIFY(!click(&dialog, "start")); // not without the user's word
-        QTest::mouseClick(replace, Qt::LeftButton, {}, QPoint(8, replace->height() / 2));
-        QVERIFY(replace->isChecked());
+        auto *overlap = dialog.findChild<QComboBox *>(QStringLiteral("overlap"));
+        QVERIFY(overlap);
+        QCOMPARE(ClipOverlap(overlap->currentData().toInt()), ClipOverlap::PlaceAfter);
         QSignalSpy applied(&dialog, &SayTextDialog::applied);
         QSignalSpy failed(&dialog, &SayTextDialog::failed);
         QVERIFY(click(&dialog, "start"));
         QVERIFY2(applied.wait(kSpeakTimeoutMs) || !failed.isEmpty(), qPrintable(dialog.message()));
         QVERIFY2(failed.isEmpty(), qPrintable(dialog.message()));
-        QCOMPARE(doc.project().scriptLanguage, QStringLiteral("en"));
-        QVERIFY(doc.timeline().audio()->path != recording);
+        const QVector<AudioClip> clips = doc.timeline().audioClips();
+        QCOMPARE(clips.size(), 2);
+        QCOMPARE(clips[0], first);
+        QCOMPARE(clips[1].path, dialog.soundPath());
+        QCOMPARE(clips[1].offset, 6.0);
+        QCOMPARE(clips[1].language, QStringLiteral("en"));
+        QCOMPARE(clips[1].script, QStringLiteral("Hello there"));
+        QCOMPARE(doc.syllables().first(), a.syllables.first()); // the first clip's syllable stays
+        QVERIFY(doc.syllables().last().start >= 6.0);
+        QVERIFY2(dialog.outcome().contains(QStringLiteral("recording.wav")), qPrintable(dialog.outcome()));
+
+        // On request, the new one replaces what it plays over, with its syllables.
+        SayTextDialog again(&doc, nullptr, 0.5);
+        again.show();
+        type(again, QStringLiteral("Hi"));
+        auto *replace = again.findChild<QComboBox *>(QStringLiteral("overlap"));
+        replace->setCurrentIndex(replace->findData(int(ClipOverlap::Replace)));
+        QSignalSpy appliedAgain(&again, &SayTextDialog::applied);
+        QVERIFY(click(&again, "start"));
+        QVERIFY2(appliedAgain.wait(kSpeakTimeoutMs), qPrintable(again.message()));
+        const QVector<AudioClip> after = doc.timeline().audioClips();
+        QCOMPARE(after.size(), 2);
+        QCOMPARE(after[0].offset, 0.5);
+        QCOMPARE(after[1], clips[1]);
+        QVERIFY(std::none_of(after.begin(), after.end(), [&](const AudioClip &c) { return c.path == recording; }));
+        QVERIFY(!doc.syllables().contains(a.syllables.first()));
     }
 
     void unsavedProjectSpeaksBesideThePhoto()

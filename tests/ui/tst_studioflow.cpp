@@ -188,8 +188,8 @@ private Q_SLOTS:
         QVERIFY(*synced);
         QCOMPARE(doc->undoStack()->count(), stepsBefore + 1);
         QCOMPARE(doc->syllables().size(), kRealScript.size());
-        QVERIFY(doc->timeline().audio().has_value());
-        QCOMPARE(doc->timeline().audio()->path, wav);
+        QVERIFY(!doc->timeline().audioClips().isEmpty());
+        QCOMPARE(doc->timeline().audioClips().first().path, wav);
         QVERIFY(doc->timeline().mouthKeys().size() >= doc->syllables().size());
         shoot(window.get(), QStringLiteral("2-lipsynced"));
 

@@ -19,6 +19,7 @@
 #include <QToolButton>
 #include <QUndoStack>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -419,6 +420,26 @@ private Q_SLOTS:
         undoAllAndCompare();
     }
 
+    // Issue 26: Head Nod acts at the playhead after a click elsewhere on the ruler, not over the
+    // selection made before it.
+    void headNodAfterClickingElsewhere()
+    {
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, centre({ItemKind::Blink, 0})); // 0.9 s
+        QVERIFY(!m_view->selection().isEmpty());
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, at(2.5, RowKind::Ruler));
+        QVERIFY(m_view->selection().isEmpty());
+        QVERIFY(near(m_playhead->time(), 2.5, 0.021));
+        m_widget->timelineActions().addNod->trigger();
+        QVector<double> added;
+        for (const HeadKey &k : m_doc->timeline().headKeys())
+            if (!m_before.timeline.headKeys().contains(k))
+                added << k.time;
+        QVERIFY(!added.isEmpty());
+        QVERIFY2(
+            *std::min_element(added.begin(), added.end()) >= 2.5 - 0.021, qPrintable(QString::number(added.first())));
+        undoAllAndCompare();
+    }
+
     void rulerScrubs()
     {
         QVERIFY(!m_playhead->isScrubbing());
@@ -431,6 +452,85 @@ private Q_SLOTS:
         QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, at(1.5, RowKind::Ruler));
         QVERIFY(!m_playhead->isScrubbing());
         QCOMPARE(m_doc->undoStack()->count(), 0);
+    }
+
+    // Issue 26: two recordings as clips on the Audio row. A clip's title strip moves it, with
+    // its syllables and mouth keys; its edge trims it; Delete removes it with what it owns; the
+    // waveform under the title still scrubs. Each is one undo step.
+    void audioClipsMoveTrimAndDelete()
+    {
+        QTemporaryDir dir;
+        const auto tone = [&](const char *name, double seconds) {
+            Audio audio;
+            audio.samples.resize(qsizetype(seconds * audio.sampleRate));
+            for (qsizetype i = 0; i < audio.samples.size(); ++i)
+                audio.samples[i] = float(0.5 * std::sin(2 * M_PI * 220 * double(i) / audio.sampleRate));
+            QString error;
+            const QString path = dir.filePath(QString::fromLatin1(name));
+            if (!writeAudio(path, audio, &error))
+                qFatal("%s", qPrintable(error));
+            return path;
+        };
+        // The fixture's syllables: 你好吗 over 0.2-1.1 s, 明天 over 1.6-2.4 s.
+        Animation a = m_doc->animation();
+        a.timeline.setAudioClips(
+            {AudioClip {tone("first.wav", 1.2), 0.0, 1.2}, AudioClip {tone("second.wav", 1.0), 1.5, 1.0}});
+        m_doc->changeAnimation(a, QStringLiteral("sound"));
+        const Animation two = m_doc->animation();
+        m_view->setPixelsPerSecond(kPps, TimelineLayout::kLabelWidth); // new sound: it zoomed to fit
+        m_view->waveform(1)->waitForFinished();
+
+        const QRectF r = m_view->itemRect({ItemKind::Audio, 1});
+        QVERIFY(near(r.left(), m_view->xOf(1.5), 1.0));
+        const QPoint title(int(r.center().x()), int(r.top()) + 6);
+        QCOMPARE(m_view->hitAt(title).item, (std::optional<ItemRef>(ItemRef {ItemKind::Audio, 1})));
+        QCOMPARE(m_view->hitAt(title).part, HitPart::Body);
+        QVERIFY(!m_view->hitAt(QPoint(title.x(), int(r.bottom()) - 4)).item); // the waveform scrubs
+
+        // Moved 0.5 s later: its syllables and mouth keys follow, the first clip's stay.
+        drag(viewport(), title, title + QPoint(int(0.5 * kPps), 0));
+        const QVector<AudioClip> &clips = m_doc->timeline().audioClips();
+        QCOMPARE(clips.size(), 2);
+        QCOMPARE(clips[0], two.timeline.audioClips()[0]);
+        QVERIFY2(near(clips[1].offset, 2.0, 1e-6), qPrintable(QString::number(clips[1].offset)));
+        const QVector<LipsyncSyllable> &syllables = m_doc->syllables();
+        QCOMPARE(syllables.size(), two.syllables.size());
+        for (qsizetype i = 0; i < syllables.size(); ++i) {
+            const double shift = two.syllables[i].start >= 1.5 ? 0.5 : 0.0;
+            QVERIFY2(near(syllables[i].start, two.syllables[i].start + shift), qPrintable(syllables[i].text));
+            QVERIFY(near(syllables[i].end, two.syllables[i].end + shift));
+        }
+        const QVector<MouthKey> &keys = m_doc->timeline().mouthKeys();
+        QCOMPARE(keys.size(), two.timeline.mouthKeys().size());
+        for (const MouthKey &k : two.timeline.mouthKeys()) {
+            const double shift = k.time >= 1.5 && k.time < 2.5 ? 0.5 : 0.0;
+            QVERIFY2(std::any_of(keys.begin(), keys.end(),
+                         [&](const MouthKey &m) { return near(m.time, k.time + shift) && m.shape == k.shape; }),
+                qPrintable(QString::number(k.time)));
+        }
+        QCOMPARE(m_doc->undoStack()->undoText(), QStringLiteral("Move on Timeline"));
+
+        // Its start edge trims it: heard from 2.2 s, the file where it was.
+        const QRectF moved = m_view->itemRect({ItemKind::Audio, 1});
+        const QPoint edge(int(std::lround(moved.left())) + 1, int(moved.center().y()));
+        QCOMPARE(m_view->hitAt(edge).part, HitPart::StartEdge);
+        drag(viewport(), edge, edge + QPoint(int(0.2 * kPps), 0));
+        QVERIFY2(near(m_doc->timeline().audioClips()[1].trimIn, 0.2, 1e-6),
+            qPrintable(QString::number(m_doc->timeline().audioClips()[1].trimIn)));
+        QVERIFY(near(m_doc->timeline().audioClips()[1].offset, 2.0));
+
+        // The first clip, selected by its title and deleted, goes with its syllables (你好吗).
+        const QRectF first = m_view->itemRect({ItemKind::Audio, 0});
+        QTest::mouseClick(
+            viewport(), Qt::LeftButton, Qt::NoModifier, QPoint(int(first.center().x()), int(first.top()) + 6));
+        QCOMPARE(m_view->selection(), (Selection {{ItemKind::Audio, 0}}));
+        QTest::keyClick(m_view, Qt::Key_Delete);
+        QCOMPARE(m_doc->timeline().audioClips().size(), 1);
+        QCOMPARE(m_doc->timeline().audioClips()[0].path, two.timeline.audioClips()[1].path);
+        QCOMPARE(m_doc->syllables().size(), 2);
+        QCOMPARE(m_doc->syllables()[0].text, QStringLiteral("明"));
+        QCOMPARE(m_doc->undoStack()->count(), 4);
+        undoAllAndCompare();
     }
 
     void wheelZoomsAboutTheCursor()
@@ -533,7 +633,7 @@ private Q_SLOTS:
         if (!writeAudio(path, audio, &error))
             qFatal("%s", qPrintable(error));
         Animation a = m_doc->animation();
-        a.timeline.setAudio(AudioClip {path, 0, 3});
+        a.timeline.setAudioClips({AudioClip {path, 0, 3}});
         m_doc->changeAnimation(a, QStringLiteral("sound"));
         m_view->waveform()->waitForFinished();
         if (m_view->waveform()->peaks().isEmpty())

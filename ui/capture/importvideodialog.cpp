@@ -5,6 +5,7 @@
 #include "capture/tracktask.h"
 #include "dialogs/jobstatus.h"
 #include "document/document.h"
+#include "timeline/audioclipedits.h"
 #include "track/retarget.h"
 
 #include <QButtonGroup>
@@ -68,7 +69,8 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     , m_method(new QComboBox(this))
     , m_snap(new QRadioButton(tr("Snap to the nine mouth &shapes (mouth keys)"), this))
     , m_continuous(new QRadioButton(tr("Keep the &continuous motion (pose keys)"), this))
-    , m_useSound(new QCheckBox(tr("Use the clip's s&ound as the project's sound"), this))
+    , m_useSound(new QCheckBox(tr("Use the clip's s&ound (a new clip on the audio track)"), this))
+    , m_replaceOverlap(new QCheckBox(this))
     , m_atPlayhead(new QRadioButton(tr("At the &playhead (%1)").arg(seconds(playheadTime)), this))
     , m_atStart(new QRadioButton(tr("At the s&tart (0 s)"), this))
     , m_usePhoto(new QCheckBox(tr("Use the neutral frame as the p&hoto (a new project with its face)"), this))
@@ -148,7 +150,12 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     auto *form = new QFormLayout;
     form->addRow(tr("&Method:"), m_method);
     form->addRow(tr("Mouth:"), mouthBox);
-    form->addRow(tr("Sound:"), m_useSound);
+    auto *soundBox = new QVBoxLayout;
+    soundBox->addWidget(m_useSound);
+    soundBox->addWidget(m_replaceOverlap);
+    m_replaceOverlap->setObjectName(QStringLiteral("replaceOverlap"));
+    m_replaceOverlap->setVisible(false);
+    form->addRow(tr("Sound:"), soundBox);
     form->addRow(tr("Starts:"), placeBox);
     if (!document->hasFace())
         form->addRow(tr("Photo:"), m_usePhoto);
@@ -168,8 +175,10 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     layout->addLayout(form);
     layout->addWidget(m_status);
     layout->addWidget(m_buttons);
-    m_inputs = {m_clip, browseButton, m_slider, m_spin, m_method, m_snap, m_continuous, m_useSound, m_atPlayhead,
-        m_atStart, m_usePhoto};
+    m_inputs = {m_clip, browseButton, m_slider, m_spin, m_method, m_snap, m_continuous, m_useSound, m_replaceOverlap,
+        m_atPlayhead, m_atStart, m_usePhoto};
+    connect(m_useSound, &QCheckBox::toggled, this, &ImportVideoDialog::updateSoundChoice);
+    connect(m_atPlayhead, &QRadioButton::toggled, this, &ImportVideoDialog::updateSoundChoice);
 
     connect(m_buttons, &QDialogButtonBox::accepted, this, &ImportVideoDialog::start);
     connect(m_buttons, &QDialogButtonBox::rejected, this, &ImportVideoDialog::reject);
@@ -242,15 +251,27 @@ bool ImportVideoDialog::openClip(const QString &path)
         }
     }
     m_useSound->setEnabled(ok && m_decoder->hasAudio());
-    // The timeline holds one sound: one there already is replaced only when the user says so.
-    const std::optional<AudioClip> &sound = m_document->timeline().audio();
-    m_useSound->setText(sound
-            ? tr("Use the clip's s&ound, replacing the project's sound %1").arg(QFileInfo(sound->path).fileName())
-            : tr("Use the clip's s&ound as the project's sound"));
-    m_useSound->setChecked(ok && m_decoder->hasAudio() && !sound);
+    m_useSound->setChecked(ok && m_decoder->hasAudio());
+    updateSoundChoice();
     updateNeutralLabel();
     updateButtons();
     return ok;
+}
+
+void ImportVideoDialog::updateSoundChoice()
+{
+    const double start = m_atPlayhead->isChecked() ? m_playheadTime : 0.0;
+    const double length = m_decoder->isOpen() ? std::max(m_decoder->duration(), 0.0) : 0.0;
+    const Timeline &timeline = m_document->timeline();
+    QStringList names;
+    for (int i : audioClipsOverlapping(timeline, start, start + std::max(length, 1e-9)))
+        names << QFileInfo(timeline.audioClips()[i].path).fileName();
+    const bool overlap = m_useSound->isChecked() && m_useSound->isEnabled() && !names.isEmpty();
+    m_replaceOverlap->setVisible(overlap);
+    if (!overlap)
+        m_replaceOverlap->setChecked(false);
+    m_replaceOverlap->setText(
+        tr("It plays over %1: &replace it (else both sound together)").arg(names.join(QStringLiteral(", "))));
 }
 
 int ImportVideoDialog::neutralFrame() const
@@ -337,6 +358,7 @@ void ImportVideoDialog::start()
     m_runOffset = m_atPlayhead->isChecked() ? m_playheadTime : 0.0;
     m_runSnap = m_snap->isChecked();
     m_runSound = m_useSound->isChecked() && m_decoder->hasAudio();
+    m_runReplace = m_runSound && m_replaceOverlap->isVisible() && m_replaceOverlap->isChecked();
     m_runPhoto = !m_document->hasFace() && m_usePhoto->isChecked();
     m_status->showProgress(0, tr("Finding the face on frame %1").arg(options.neutralFrame));
     m_task->start(m_runPath, options);
@@ -405,6 +427,10 @@ void ImportVideoDialog::apply(const TrackResult &result)
         : fps > 0                                     ? result.frames.size() / fps
                                                       : result.frames.last().time;
     Animation after = m_document->animation();
+    // The sound goes where the motion does: the recordings it plays over stay (mixed with it)
+    // unless the user chose to replace them (with their syllables and mouth keys).
+    if (m_runSound && m_runReplace)
+        after = removeAudioClips(after, audioClipsOverlapping(after.timeline, m_runOffset, m_runOffset + duration));
     RetargetOptions retarget;
     retarget.mouthKeysFromShapes = m_runSnap;
     addTrackToTimeline(result.frames, fps, &after.timeline, retarget, m_runOffset);
@@ -420,13 +446,11 @@ void ImportVideoDialog::apply(const TrackResult &result)
         after.timeline.setMouthKeys(mouth);
     }
     if (m_runSound) {
-        after.timeline.setAudio(AudioClip {m_runPath, m_runOffset, duration});
-        // The script's syllables were timed to the sound replaced.
-        after.syllables.removeIf([&](const LipsyncSyllable &s) { return inClip(s.start, s.end); });
-        if (after.syllables.isEmpty()) {
-            after.script.clear();
-            after.scriptLanguage.clear();
-        }
+        AudioClip clip;
+        clip.path = m_runPath;
+        clip.offset = m_runOffset;
+        clip.duration = duration;
+        after.timeline.addAudioClip(clip);
     }
     after.timeline.setVideo(VideoClip {m_runPath, m_runOffset, duration, fps});
     m_document->changeAnimation(after, tr("Import Video %1").arg(QFileInfo(m_runPath).fileName()));

@@ -26,8 +26,10 @@ class TrackTask;
 // Import Video…: a clip of a person speaking drives the cartoon (thesis ch. 6). The user picks
 // the clip and its neutral frame (a slider and a spin box, the frame shown large, decoded off the
 // GUI thread), the tracking method, whether the mouth snaps to the nine shapes (mouth keys) or
-// keeps its continuous motion (pose keys), whether the clip's sound becomes the project's sound,
-// and where the clip starts (the playhead or 0). Tracking runs in the background with progress
+// keeps its continuous motion (pose keys), whether the clip's sound becomes a clip on the audio
+// track, and where the clip starts (the playhead or 0). The sound goes where the motion does:
+// when other recordings play there, the dialog says which, and they are kept (sounding
+// together with it) unless the user ticks to replace them. Tracking runs in the background with progress
 // and Cancel. The result lands as ONE undo step: the pose, blink, gaze and head tracks (and the
 // mouth keys when snapped), the clip's sound, and the clip itself (shown beside the cartoon).
 // With no face in the project yet, the neutral frame can become the photo (a new project whose
@@ -83,6 +85,9 @@ private:
     void setRunning(bool running);
     void updateButtons();
     void updateNeutralLabel();
+    // Says which recordings the clip's sound would play over where it starts, and offers to
+    // replace them.
+    void updateSoundChoice();
 
     Document *m_document;
     double m_playheadTime;
@@ -98,6 +103,7 @@ private:
     QRadioButton *m_snap;
     QRadioButton *m_continuous;
     QCheckBox *m_useSound;
+    QCheckBox *m_replaceOverlap;
     QRadioButton *m_atPlayhead;
     QRadioButton *m_atStart;
     QCheckBox *m_usePhoto;
@@ -113,6 +119,7 @@ private:
     double m_runOffset = 0;
     bool m_runSnap = false;
     bool m_runSound = false;
+    bool m_runReplace = false;
     bool m_runPhoto = false;
 };
 

@@ -44,7 +44,12 @@ bool commitTake(Document *document, const LiveTake &take, double at, const QStri
             out = error.isEmpty() ? LiveTakeText::tr("%1: cannot create its folder").arg(audioPath) : error;
             return false;
         }
-        after.timeline.setAudio(AudioClip {QFileInfo(audioPath).absoluteFilePath(), at, take.audio.duration()});
+        // A new clip where the take was recorded: the recordings there stay (the sounds mix).
+        AudioClip clip;
+        clip.path = QFileInfo(audioPath).absoluteFilePath();
+        clip.offset = at;
+        clip.duration = take.audio.duration();
+        after.timeline.addAudioClip(clip);
     }
     document->changeAnimation(after, LiveTakeText::tr("Record Live Take"));
     const QString length = QString::number(take.duration, 'f', 1);

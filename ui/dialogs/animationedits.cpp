@@ -1,14 +1,26 @@
 #include "dialogs/animationedits.h"
 
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QStringList>
+
 #include <algorithm>
+#include <cmath>
 
 namespace toonface {
 
-Animation withSpeech(const Animation &before, const LipsyncResult &result, const SpeechPlacement &placement)
+std::optional<Animation> withSpeech(
+    const Animation &before, const LipsyncResult &result, const SpeechPlacement &placement, ClipPlace *placed)
 {
-    Animation after = before;
-    const double from = placement.offset;
-    const double to = placement.offset + result.duration;
+    const std::optional<ClipPlace> place
+        = placeAudioClip(before.timeline, placement.audioPath, placement.offset, result.duration, placement.overlap);
+    if (!place)
+        return std::nullopt;
+    if (placed)
+        *placed = *place;
+    Animation after = removeAudioClips(before, place->replaced);
+    const double from = place->start;
+    const double to = from + result.duration;
 
     QVector<MouthCue> cues = result.mouthCues;
     for (MouthCue &cue : cues) {
@@ -21,7 +33,7 @@ Animation withSpeech(const Animation &before, const LipsyncResult &result, const
     after.timeline.addMouthCues(cues);
 
     QVector<LipsyncSyllable> syllables;
-    for (const LipsyncSyllable &s : before.syllables) {
+    for (const LipsyncSyllable &s : after.syllables) {
         const bool inside = s.end > from && s.start < to;
         if (!inside)
             syllables.append(s);
@@ -37,10 +49,36 @@ Animation withSpeech(const Animation &before, const LipsyncResult &result, const
         [](const LipsyncSyllable &a, const LipsyncSyllable &b) { return a.start < b.start; });
     after.syllables = syllables;
 
-    after.timeline.setAudio(AudioClip {placement.audioPath, from, result.duration});
-    after.script = placement.script;
-    after.scriptLanguage = languageCode(result.language);
+    AudioClip clip;
+    clip.path = placement.audioPath;
+    clip.offset = from;
+    clip.duration = result.duration;
+    clip.script = placement.script;
+    clip.language = languageCode(result.language);
+    after.timeline.addAudioClip(clip);
     return after;
+}
+
+QString placementNote(const Timeline &before, const ClipPlace &placed, double wanted)
+{
+    const QVector<AudioClip> &clips = before.audioClips();
+    QStringList names;
+    for (int i : placed.overlapped)
+        if (i >= 0 && i < clips.size())
+            names << QFileInfo(clips[i].path).fileName();
+    if (names.isEmpty())
+        return {};
+    const QString list = names.join(QStringLiteral(", "));
+    if (std::abs(placed.start - std::max(0.0, wanted)) > 1e-9)
+        return QCoreApplication::translate(
+            "toonface::AnimationEdits", "placed after %1, at %2 s (it would have played over it)")
+            .arg(list)
+            .arg(placed.start, 0, 'f', 2);
+    bool replaced = true;
+    for (int i : placed.overlapped)
+        replaced = replaced && placed.replaced.contains(i);
+    return replaced ? QCoreApplication::translate("toonface::AnimationEdits", "replaced %1").arg(list)
+                    : QCoreApplication::translate("toonface::AnimationEdits", "plays together with %1").arg(list);
 }
 
 Animation withBlinks(const Animation &before, quint32 seed, double start, double end)

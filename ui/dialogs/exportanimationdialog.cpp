@@ -542,7 +542,7 @@ void ExportAnimationDialog::updateSummary()
     } else {
         parts << tr("vector drawing");
     }
-    const bool hasSound = !r.audioPath.isEmpty() || (r.timeline.audio() && !r.timeline.audio()->path.isEmpty());
+    const bool hasSound = !r.audioPath.isEmpty() || !r.timeline.audioClips().isEmpty();
     if (!animationFormatHasSound(r.format) || r.silent)
         parts << tr("silent");
     else

@@ -12,6 +12,7 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -21,6 +22,7 @@
 #include <QStringDecoder>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace toonface {
 
@@ -30,13 +32,16 @@ constexpr int kScriptCheckDelayMs = 250;
 
 } // namespace
 
-bool LipSyncDialog::run(QWidget *parent, Document *document)
+bool LipSyncDialog::run(QWidget *parent, Document *document, double playhead, QString *outcome)
 {
-    LipSyncDialog dialog(document, parent);
-    return dialog.exec() == QDialog::Accepted;
+    LipSyncDialog dialog(document, parent, playhead);
+    const bool applied = dialog.exec() == QDialog::Accepted;
+    if (outcome)
+        *outcome = dialog.outcome();
+    return applied;
 }
 
-LipSyncDialog::LipSyncDialog(Document *document, QWidget *parent)
+LipSyncDialog::LipSyncDialog(Document *document, QWidget *parent, double playhead)
     : SpeechDialog(document, tr("Lip Sync"), parent)
     , m_recording(new QLineEdit(this))
     , m_offset(new SecondsBox(this))
@@ -47,9 +52,9 @@ LipSyncDialog::LipSyncDialog(Document *document, QWidget *parent)
     , m_dictionary(new DictionaryWarmUp(this))
 {
     setWindowTitle(tr("Lip Sync from Recording"));
-    const QString intro = tr("Aligns a recording with the script it speaks, syllable by syllable. The mouth keys "
-                             "and the script's syllables where the recording plays are replaced; the rest of the "
-                             "timeline is kept.");
+    const QString intro = tr("Aligns a recording with the script it speaks, syllable by syllable. The recording "
+                             "becomes a clip on the audio track; the mouth keys and syllables where it plays are "
+                             "replaced, the other recordings and the rest of the timeline are kept.");
 
     m_recording->setObjectName(QStringLiteral("recording"));
     m_recording->setPlaceholderText(tr("An audio file, or a video whose sound is used"));
@@ -86,8 +91,10 @@ LipSyncDialog::LipSyncDialog(Document *document, QWidget *parent)
     form->addRow(tr("S&cript:"), scriptBox);
     static_cast<QLabel *>(form->labelForField(recordingRow))->setBuddy(m_recording);
     static_cast<QLabel *>(form->labelForField(scriptBox))->setBuddy(m_script);
+    QList<QWidget *> inputs {m_recording, browse, m_offset, m_language, m_script, openScriptButton};
+    addOverlapRow(form, &inputs);
 
-    setBody(intro, form, {m_recording, browse, m_offset, m_language, m_script, openScriptButton});
+    setBody(intro, form, inputs);
 
     m_scriptCheck->setSingleShot(true);
     m_scriptCheck->setInterval(kScriptCheckDelayMs);
@@ -99,13 +106,17 @@ LipSyncDialog::LipSyncDialog(Document *document, QWidget *parent)
     connect(browse, &QPushButton::clicked, this, &LipSyncDialog::browseRecording);
     connect(openScriptButton, &QPushButton::clicked, this, &LipSyncDialog::browseScript);
 
-    // Start from what the project has: its sound and its script.
-    if (const std::optional<AudioClip> &clip = document->timeline().audio()) {
-        m_recording->setText(clip->path);
-        m_offset->setValue(clip->offset);
+    // Start from the clip under the playhead (to lip-sync it again), else a new one there.
+    const QVector<AudioClip> &clips = document->timeline().audioClips();
+    if (const int at = document->timeline().audioClipAt(playhead); at >= 0) {
+        const AudioClip &clip = clips[at];
+        m_recording->setText(clip.path);
+        m_offset->setValue(clip.offset);
+        m_language->setLanguageCode(clip.language);
+        m_script->setPlainText(clip.script);
+    } else {
+        m_offset->setValue(std::max(0.0, playhead));
     }
-    m_language->setLanguageCode(document->project().scriptLanguage);
-    m_script->setPlainText(document->project().script);
     checkScript();
 }
 
@@ -199,11 +210,10 @@ std::optional<SpeechTask::Job> LipSyncDialog::prepare()
             const std::atomic_bool *cancel) { return lipsyncRecording(audio, script, scriptName, progress, cancel); };
 }
 
-void LipSyncDialog::apply(const LipsyncResult &result)
+bool LipSyncDialog::apply(const LipsyncResult &result)
 {
-    const Animation after
-        = withSpeech(document()->animation(), result, SpeechPlacement {m_runAudio, m_runOffset, m_runScript});
-    document()->changeAnimation(after, tr("Lip Sync from %1").arg(QFileInfo(m_runAudio).fileName()));
+    return applySpeech(
+        result, m_runAudio, m_runOffset, m_runScript, tr("Lip Sync from %1").arg(QFileInfo(m_runAudio).fileName()));
 }
 
 } // namespace toonface

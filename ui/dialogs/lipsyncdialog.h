@@ -15,19 +15,23 @@ class SecondsBox;
 
 // Lip Sync from Recording…: a recording (an audio file, or a video's sound) and its script,
 // typed or opened from a file, are aligned off the GUI thread with a progress bar and Cancel.
-// The result replaces the mouth keys and the script's syllables in the recording's range, the
-// recording becomes the timeline's sound, as ONE undo step; then the dialog closes. A script
-// that cannot fit the recording, or a file that cannot be read, is said in the dialog (which
-// stays open) and changes nothing; so does cancelling.
+// The result becomes a new clip on the audio track where the recording is wanted (or after the
+// recordings already there, or replacing them, as the user chooses), with its syllables and
+// mouth keys, as ONE undo step; then the dialog closes. The dialog starts from the clip under
+// the playhead (its recording, script and place: lip-syncing it again replaces it), else
+// empty at the playhead. A script that cannot fit the recording, or a file that cannot be read, is said in the dialog
+// (which stays open) and changes nothing; so does cancelling.
 class LipSyncDialog : public SpeechDialog
 {
     Q_OBJECT
 
 public:
     // Opens the dialog modally on `document`; true when the lip sync was applied.
-    static bool run(QWidget *parent, Document *document);
+    // `playhead` is where a new recording starts by default; *outcome (when given) receives
+    // outcome().
+    static bool run(QWidget *parent, Document *document, double playhead = 0, QString *outcome = nullptr);
 
-    explicit LipSyncDialog(Document *document, QWidget *parent = nullptr);
+    explicit LipSyncDialog(Document *document, QWidget *parent = nullptr, double playhead = 0);
     ~LipSyncDialog() override;
 
     // Loads a UTF-8 script file into the script box; false (with the error shown) when it
@@ -36,7 +40,7 @@ public:
 
 protected:
     std::optional<SpeechTask::Job> prepare() override;
-    void apply(const LipsyncResult &result) override;
+    bool apply(const LipsyncResult &result) override;
     bool canStart() const override;
 
 private:

@@ -9,12 +9,12 @@
 #include "document/companionfile.h"
 #include "document/document.h"
 
-#include <QCheckBox>
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -24,13 +24,17 @@
 #include <QSpinBox>
 #include <QStandardPaths>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace toonface {
 
-bool SayTextDialog::run(QWidget *parent, Document *document)
+bool SayTextDialog::run(QWidget *parent, Document *document, double playhead, QString *outcome)
 {
-    SayTextDialog dialog(document, parent);
-    return dialog.exec() == QDialog::Accepted;
+    SayTextDialog dialog(document, parent, playhead);
+    const bool applied = dialog.exec() == QDialog::Accepted;
+    if (outcome)
+        *outcome = dialog.outcome();
+    return applied;
 }
 
 QString SayTextDialog::defaultSoundPath(const Document &document)
@@ -39,7 +43,7 @@ QString SayTextDialog::defaultSoundPath(const Document &document)
         QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
 }
 
-SayTextDialog::SayTextDialog(Document *document, QWidget *parent)
+SayTextDialog::SayTextDialog(Document *document, QWidget *parent, double playhead)
     : SpeechDialog(document, tr("Say"), parent)
     , m_text(new QPlainTextEdit(this))
     , m_language(new LanguageBox(this))
@@ -51,8 +55,10 @@ SayTextDialog::SayTextDialog(Document *document, QWidget *parent)
     , m_soundNote(new QLabel(this))
 {
     setWindowTitle(tr("Say Text"));
-    const QString intro = tr("The built-in voice speaks the text and the face says it with the voice's exact "
-                             "timings. The mouth keys and syllables where the speech plays are replaced.");
+    const QString intro
+        = tr("The built-in voice speaks the text and the face says it with the voice's exact "
+             "timings. The speech becomes a clip on the audio track; the mouth keys and syllables where "
+             "it plays are replaced, the other recordings are kept.");
 
     m_text->setObjectName(QStringLiteral("text"));
     m_text->setPlaceholderText(tr("Chinese characters, pinyin, Zhuyin or English, e.g. 您好，我是葛麗絲。"));
@@ -95,20 +101,6 @@ SayTextDialog::SayTextDialog(Document *document, QWidget *parent)
     soundBox->addLayout(soundRow);
     soundBox->addWidget(m_soundNote);
 
-    const std::optional<AudioClip> &sound = document->timeline().audio();
-    if (sound) {
-        m_replaceSound = new QCheckBox(tr("&Replace the project's sound, %1 (%2 s)")
-                                           .arg(QFileInfo(sound->path).fileName())
-                                           .arg(sound->duration, 0, 'f', 1),
-            this);
-        m_replaceSound->setObjectName(QStringLiteral("replaceSound"));
-        m_replaceSound->setChecked(false);
-        m_replaceSound->setToolTip(tr("The timeline holds one sound: the syllables and mouth keys outside the new "
-                                      "speech keep no sound under them. Undo brings the old sound back."));
-        soundBox->addWidget(m_replaceSound);
-        connect(m_replaceSound, &QCheckBox::toggled, this, &SayTextDialog::updateButtons);
-    }
-
     auto *form = new QFormLayout;
     form->addRow(tr("&Text:"), m_text);
     form->addRow(tr("&Language:"), m_language);
@@ -119,8 +111,8 @@ SayTextDialog::SayTextDialog(Document *document, QWidget *parent)
     static_cast<QLabel *>(form->labelForField(soundBox))->setBuddy(m_soundPath);
 
     QList<QWidget *> inputs {m_text, m_language, m_rate, m_pitch, m_offset, m_soundPath, choose};
-    if (m_replaceSound)
-        inputs.append(m_replaceSound);
+    addOverlapRow(form, &inputs);
+    m_offset->setValue(std::max(0.0, playhead));
     setBody(intro, form, inputs);
 
     connect(m_text, &QPlainTextEdit::textChanged, this, &SayTextDialog::updateButtons);
@@ -151,8 +143,7 @@ void SayTextDialog::chooseSoundPath()
 bool SayTextDialog::canStart() const
 {
     // (The character dictionary started loading in the background when the dialog opened.)
-    return !m_text->toPlainText().trimmed().isEmpty() && !m_soundPath->text().trimmed().isEmpty()
-        && (!m_replaceSound || m_replaceSound->isChecked());
+    return !m_text->toPlainText().trimmed().isEmpty() && !m_soundPath->text().trimmed().isEmpty();
 }
 
 std::optional<SpeechTask::Job> SayTextDialog::prepare()
@@ -195,11 +186,12 @@ std::optional<SpeechTask::Job> SayTextDialog::prepare()
     };
 }
 
-void SayTextDialog::apply(const LipsyncResult &result)
+bool SayTextDialog::apply(const LipsyncResult &result)
 {
-    const Animation after
-        = withSpeech(document()->animation(), result, SpeechPlacement {m_runPath, m_runOffset, m_runText});
-    document()->changeAnimation(after, tr("Say Text"));
+    if (applySpeech(result, m_runPath, m_runOffset, m_runText, tr("Say Text")))
+        return true;
+    discard();
+    return false;
 }
 
 // A sound written just before a cancel is not the user's: leave no new file.

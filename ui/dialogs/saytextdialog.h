@@ -2,7 +2,6 @@
 
 #include "dialogs/speechdialog.h"
 
-class QCheckBox;
 class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
@@ -16,19 +15,21 @@ class SecondsBox;
 
 // Say Text…: the built-in voice (espeak-ng; cmn-latn-pinyin for Mandarin) speaks a text. The
 // sound is saved as a WAV file beside the project — or, for a project not saved yet, beside
-// its photo (the dialog says which, and the user may choose another file) — and becomes the
-// timeline's sound; the mouth keys and syllables take the synthesizer's exact timings. One
-// undo step. Runs off the GUI thread with a progress bar and Cancel; a cancelled or failed
-// run changes nothing and leaves no new file.
+// its photo (the dialog says which, and the user may choose another file) — and becomes a new
+// clip on the audio track where the speech is wanted (by default at the playhead; after the
+// recordings already there, or replacing them, as the user chooses); the mouth keys and
+// syllables take the synthesizer's exact timings. One undo step. Runs off the GUI thread with a progress bar and
+// Cancel; a cancelled or failed run changes nothing and leaves no new file.
 class SayTextDialog : public SpeechDialog
 {
     Q_OBJECT
 
 public:
     // Opens the dialog modally on `document`; true when the speech was applied.
-    static bool run(QWidget *parent, Document *document);
+    // `playhead` is where the speech starts by default; *outcome (when given) receives outcome().
+    static bool run(QWidget *parent, Document *document, double playhead = 0, QString *outcome = nullptr);
 
-    explicit SayTextDialog(Document *document, QWidget *parent = nullptr);
+    explicit SayTextDialog(Document *document, QWidget *parent = nullptr, double playhead = 0);
     ~SayTextDialog() override;
 
     // Where the sound would be saved: beside the project, else beside the photo, else in the
@@ -39,7 +40,7 @@ public:
 
 protected:
     std::optional<SpeechTask::Job> prepare() override;
-    void apply(const LipsyncResult &result) override;
+    bool apply(const LipsyncResult &result) override;
     void discard() override;
     bool canStart() const override;
 
@@ -54,9 +55,6 @@ private:
     QLineEdit *m_soundPath;
     DictionaryWarmUp *m_dictionary;
     QLabel *m_soundNote;
-    // With a sound in the project already: the user's consent to replace it (the timeline holds
-    // one sound), unticked at first so that nothing is lost without a word.
-    QCheckBox *m_replaceSound = nullptr;
     // What the running job was started with.
     QString m_runPath;
     QString m_runText;

@@ -1,6 +1,12 @@
 #include "dialogs/speechdialog.h"
 
+#include "dialogs/animationedits.h"
 #include "dialogs/jobstatus.h"
+#include "document/document.h"
+
+#include <QComboBox>
+#include <QFileInfo>
+#include <QFormLayout>
 
 #include <QDialogButtonBox>
 #include <QLabel>
@@ -115,10 +121,49 @@ void SpeechDialog::onFinished(const LipsyncOutcome &outcome)
         fail(outcome.error);
         return;
     }
-    apply(outcome.result);
+    if (!apply(outcome.result))
+        return;
     m_status->clear();
     Q_EMIT applied();
     accept();
+}
+
+void SpeechDialog::addOverlapRow(QFormLayout *form, QList<QWidget *> *inputs)
+{
+    if (m_document->timeline().audioClips().isEmpty())
+        return;
+    m_overlap = new QComboBox(this);
+    m_overlap->setObjectName(QStringLiteral("overlap"));
+    m_overlap->addItem(tr("Place it after them"), int(ClipOverlap::PlaceAfter));
+    m_overlap->addItem(tr("Replace them (with their syllables and mouth keys)"), int(ClipOverlap::Replace));
+    m_overlap->setToolTip(tr("The timeline keeps every recording as a clip on the audio track. What to do when the "
+                             "new one would play over others: nothing is replaced unless you choose so."));
+    form->addRow(tr("If other recordings &play there:"), m_overlap);
+    inputs->append(m_overlap);
+}
+
+bool SpeechDialog::applySpeech(
+    const LipsyncResult &result, const QString &path, double offset, const QString &script, const QString &undoText)
+{
+    SpeechPlacement placement {path, offset, script, ClipOverlap::PlaceAfter};
+    if (m_overlap)
+        placement.overlap = ClipOverlap(m_overlap->currentData().toInt());
+    const Timeline before = m_document->timeline();
+    ClipPlace placed;
+    const std::optional<Animation> after = withSpeech(m_document->animation(), result, placement, &placed);
+    if (!after) {
+        fail(tr("%1 (%2 s) does not fit on the timeline there: it would end past %3 hours.")
+                 .arg(QFileInfo(path).fileName())
+                 .arg(result.duration, 0, 'f', 1)
+                 .arg(Timeline::kMaxSeconds / 3600));
+        return false;
+    }
+    m_document->changeAnimation(*after, undoText);
+    const QString note = placementNote(before, placed, offset);
+    m_outcome = tr("%1: %2 at %3 s").arg(undoText, QFileInfo(path).fileName()).arg(placed.start, 0, 'f', 2);
+    if (!note.isEmpty())
+        m_outcome += QStringLiteral(", ") + note;
+    return true;
 }
 
 } // namespace toonface

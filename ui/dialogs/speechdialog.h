@@ -6,7 +6,9 @@
 
 #include <optional>
 
+class QComboBox;
 class QDialogButtonBox;
+class QFormLayout;
 class QLayout;
 class QPushButton;
 
@@ -30,6 +32,9 @@ public:
     bool isRunning() const;
     // The message shown under the form (an error, or a note such as "cancelled"), or empty.
     QString message() const;
+    // After the result was applied: what became of the new recording, for the status line
+    // ("Lip Sync: speech.wav at 2.00 s, placed after ..."), else empty.
+    QString outcome() const { return m_outcome; }
 
 public Q_SLOTS:
     // What the start button does.
@@ -53,8 +58,8 @@ protected:
     void setBody(const QString &intro, QLayout *form, const QList<QWidget *> &inputs);
     // The work to run for the form as filled in, or nullopt after fail() said what is wrong.
     virtual std::optional<SpeechTask::Job> prepare() = 0;
-    // Pushes the result onto the document as one step.
-    virtual void apply(const LipsyncResult &result) = 0;
+    // Pushes the result onto the document as one step; false after fail() said why it cannot.
+    virtual bool apply(const LipsyncResult &result) = 0;
     // A run that ended without being applied (cancelled or failed).
     virtual void discard() { }
     // Whether the form is filled in enough to start.
@@ -65,6 +70,14 @@ protected:
     // Says what went wrong and that nothing changed; emits failed().
     void fail(const QString &message);
     Document *document() const { return m_document; }
+    // Adds the row "If other recordings play there:" (place it after them, or replace them) to
+    // `form` when the audio track has clips, and its box to `inputs`.
+    void addOverlapRow(QFormLayout *form, QList<QWidget *> *inputs);
+    // Puts `result` on the timeline as a new clip of `path` wanted at `offset` (withSpeech, with
+    // the overlap row's choice) as one step named `undoText`; sets outcome(). False after fail()
+    // when it cannot go there.
+    bool applySpeech(const LipsyncResult &result, const QString &path, double offset, const QString &script,
+        const QString &undoText);
     JobStatus *status() const { return m_status; }
 
 private:
@@ -78,6 +91,8 @@ private:
     QPushButton *m_startButton;
     QPushButton *m_cancelButton;
     QList<QWidget *> m_inputs;
+    QComboBox *m_overlap = nullptr;
+    QString m_outcome;
 };
 
 } // namespace toonface

@@ -125,7 +125,7 @@ void Document::changeStyle(const Style &style, const QString &text)
 
 Animation Document::animation() const
 {
-    return Animation {m_project.timeline, m_project.syllables, m_project.script, m_project.scriptLanguage};
+    return Animation {m_project.timeline, m_project.syllables};
 }
 
 void Document::changeAnimation(const Animation &after, const QString &text, int mergeId, bool commit)
@@ -148,8 +148,6 @@ void Document::applyAnimation(const Animation &animation)
 {
     m_project.timeline = animation.timeline;
     m_project.syllables = animation.syllables;
-    m_project.script = animation.script;
-    m_project.scriptLanguage = animation.scriptLanguage;
     emitChanged(Change::Animation);
 }
 

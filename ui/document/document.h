@@ -22,7 +22,7 @@ enum class Change : unsigned {
     Style = 0x04, // the drawing style
     Photo = 0x08, // the photo (a new document)
     FileState = 0x10, // file path or modified state
-    Animation = 0x20, // the timeline, the script's syllables, the script or the audio clip
+    Animation = 0x20, // the timeline, its audio track (clips and their scripts) or the syllables
     MouthShapes = 0x40, // the character's mouth-shape presets
 };
 Q_DECLARE_FLAGS(ChangeFlags, Change)
@@ -63,7 +63,7 @@ public:
     const Timeline &timeline() const { return m_project.timeline; }
     const QVector<LipsyncSyllable> &syllables() const { return m_project.syllables; }
     const MouthShapeSet &mouthShapes() const { return m_project.mouthShapes; }
-    // The timeline, syllables and script as one value (what changeAnimation() replaces).
+    // The timeline (with its audio track) and the syllables as one value (what changeAnimation() replaces).
     Animation animation() const;
     bool hasFace() const { return m_hasFace; }
     const QImage &photo() const { return m_photo; }

@@ -8,8 +8,11 @@
 #include <QAction>
 #include <QAudioDevice>
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QMediaDevices>
+
+#include "media/audiomix.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,7 +41,7 @@ PlaybackController::PlaybackController(Document *document, Playhead *playhead, Q
     connect(m_document, &Document::changed, this, &PlaybackController::onDocumentChanged);
     connect(m_playhead, &Playhead::timeChanged, this, &PlaybackController::onPlayheadMoved);
     connect(m_playhead, &Playhead::scrubbingChanged, this, &PlaybackController::onScrubbing);
-    m_clip = m_document->timeline().audio();
+    m_clips = m_document->timeline().audioClips();
     if (!QMediaDevices::audioOutputs().isEmpty())
         setAudioTrack(std::make_unique<MediaAudioTrack>());
     else
@@ -172,32 +175,58 @@ void PlaybackController::setAudioTrack(std::unique_ptr<AudioTrack> track)
 
 bool PlaybackController::hasSound() const
 {
-    return m_track && m_soundOpen && m_document->timeline().audio().has_value();
+    return m_track && m_soundOpen && m_heard.has_value();
 }
 
 void PlaybackController::openSound()
 {
-    const std::optional<AudioClip> &clip = m_document->timeline().audio();
-    if (!clip || clip->path.isEmpty()) {
+    const QVector<AudioClip> clips = soundingClips(m_document->timeline().audioClips());
+    if (clips.isEmpty()) {
+        m_heard.reset();
         m_soundProblem.clear();
         return;
     }
-    const QString path = QDir::toNativeSeparators(clip->path);
-    if (!QFileInfo(clip->path).isFile()) {
-        m_soundOpen = false;
-        m_soundPath.clear();
-        m_soundProblem = tr("The audio file %1 is missing: playing without sound.").arg(path);
-        return;
+    for (const AudioClip &clip : clips) {
+        if (!QFileInfo(clip.path).isFile()) {
+            m_soundOpen = false;
+            m_soundPath.clear();
+            m_heard.reset();
+            m_soundProblem
+                = tr("The audio file %1 is missing: playing without sound.").arg(QDir::toNativeSeparators(clip.path));
+            return;
+        }
     }
     if (!m_track) {
         m_soundProblem = tr("No audio output device: playing without sound.");
         return;
     }
-    if (m_soundOpen && clip->path == m_soundPath)
+    if (m_soundOpen && m_heard && clips == m_openedClips)
         return;
+    // The track as one file: a clip's own, or the clips mixed (media/audiomix.h).
+    if (!m_mixFolder)
+        m_mixFolder = std::make_unique<QTemporaryDir>();
+    if (!m_mixPath.isEmpty())
+        QFile::remove(m_mixPath);
+    m_mixPath.clear();
     QString error;
-    m_soundOpen = m_track->open(clip->path, &error);
-    m_soundPath = m_soundOpen ? clip->path : QString();
+    const std::optional<TrackSound> sound = m_mixFolder->isValid()
+        ? trackSoundFile(clips, m_mixFolder->path(), QStringLiteral("mix-%1.wav").arg(++m_mixCount), &error)
+        : std::nullopt;
+    if (!m_mixFolder->isValid())
+        error = m_mixFolder->errorString();
+    m_openedClips = clips;
+    if (!sound || sound->path.isEmpty()) {
+        m_soundOpen = false;
+        m_soundPath.clear();
+        m_heard.reset();
+        m_soundProblem = sound ? QString() : tr("%1 Playing without sound.").arg(error);
+        return;
+    }
+    if (sound->mixed)
+        m_mixPath = sound->path;
+    m_heard = AudioClip {sound->path, sound->offset, sound->duration > 0 ? sound->duration : Timeline::kMaxSeconds};
+    m_soundOpen = m_track->open(sound->path, &error);
+    m_soundPath = m_soundOpen ? sound->path : QString();
     m_soundProblem = m_soundOpen ? QString() : tr("%1 Playing without sound.").arg(error);
 }
 
@@ -286,7 +315,7 @@ void PlaybackController::startSound(double time)
     stopSound();
     if (!hasSound())
         return;
-    const AudioClip &clip = *m_document->timeline().audio();
+    const AudioClip &clip = *m_heard;
     const double inFile = time - clip.offset;
     if (inFile < 0) {
         m_sound = Sound::Waiting; // the lead-in
@@ -317,7 +346,7 @@ void PlaybackController::updateSound(double time)
         stopSound();
         return;
     }
-    const AudioClip &clip = *m_document->timeline().audio();
+    const AudioClip &clip = *m_heard;
     const double inFile = time - clip.offset;
     if (m_sound == Sound::Waiting && inFile >= 0) {
         startSound(time);
@@ -345,7 +374,7 @@ void PlaybackController::tick()
             const bool lockIn = !m_soundFlowed;
             m_soundFlowed = true;
             m_lastAudioPosition = position;
-            const double heard = m_document->timeline().audio()->offset + *position;
+            const double heard = m_heard->offset + *position;
             m_soundHoldTime = heard + kMaxAheadOfSound;
             m_soundNewsNs = wall;
             // A re-sync moves the clock, never the picture back: a picture ahead of the sound
@@ -427,15 +456,19 @@ void PlaybackController::onDocumentChanged(ChangeFlags what)
     if (what & Change::Photo)
         pause(); // another project
     if (what & (Change::Animation | Change::Photo)) {
-        const std::optional<AudioClip> &clip = m_document->timeline().audio();
-        if (clip != m_clip) {
-            m_clip = clip;
+        const QVector<AudioClip> &clips = m_document->timeline().audioClips();
+        if (clips != m_clips) {
+            m_clips = clips;
             stopSound();
-            if (!clip || clip->path != m_soundPath) {
-                m_soundOpen = false;
-                m_soundPath.clear();
-            }
-            openSound();
+            m_soundOpen = false;
+            m_soundPath.clear();
+            m_heard.reset();
+            // A track that must be mixed is opened when it plays (a drag of a clip changes the
+            // track at every step); one clip heard whole opens at once.
+            const QVector<AudioClip> sounding = soundingClips(clips);
+            const bool whole = sounding.size() == 1 && sounding.first().trimIn == 0 && sounding.first().trimOut == 0;
+            if (whole || (m_playing && !m_suspended))
+                openSound();
             if (m_playing && !m_suspended)
                 startSound(m_clock.time(now()));
         }

@@ -7,6 +7,7 @@
 #include <QList>
 #include <QObject>
 #include <QPointer>
+#include <QTemporaryDir>
 #include <QTimer>
 
 #include <functional>
@@ -21,7 +22,8 @@ class AudioTrack;
 class Playhead;
 
 // Plays the document's animation: advances the Playhead frame by frame and sounds the timeline's
-// audio clip through an AudioTrack.
+// audio track through an AudioTrack: the file of its only clip, or its clips mixed into one
+// (trackSoundFile, made again when the track has changed and it plays).
 //
 // The picture follows the audio clock: while the sound plays, every tick reads its position and
 // re-syncs the PlaybackClock to it (see there), so picture and sound stay within a frame of each
@@ -33,7 +35,7 @@ class Playhead;
 // sound catches up. Without sound (no clip, its file missing, no audio output device:
 // QMediaDevices::audioOutputs() empty) it runs on the wall clock (QElapsedTimer).
 //
-// The clip's sound starts `offset` seconds into the animation (silence before it: a lead-in) and
+// The track's sound starts `offset` seconds into the animation (silence before it: a lead-in) and
 // lasts `duration` seconds; the animation goes on silently past it. Playback ends at the last
 // frame, or with loop on wraps to the start. The playhead shows frame times (frame / fps).
 //
@@ -144,7 +146,12 @@ private:
     std::optional<double> m_lastAudioPosition; // the track's position as last told, since it was started
     double m_soundHoldTime = 0; // animation time the clock may not pass while the sound is held up
     qint64 m_soundNewsNs = 0; // when the sound last moved (or started)
-    std::optional<AudioClip> m_clip; // the clip as last seen, to notice edits of it
+    QVector<AudioClip> m_clips; // the audio track as last seen, to notice edits of it
+    QVector<AudioClip> m_openedClips; // the track m_track has open
+    std::optional<AudioClip> m_heard; // the file m_track plays, where it starts and how long it sounds
+    std::unique_ptr<QTemporaryDir> m_mixFolder; // where the clips are mixed to one file
+    QString m_mixPath; // the mix m_track has open, or empty
+    int m_mixCount = 0;
     QString m_soundPath; // the file m_track has open
     bool m_soundOpen = false;
     QString m_soundProblem;

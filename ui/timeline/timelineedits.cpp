@@ -2,6 +2,7 @@
 
 #include "speech/pinyin.h"
 #include "speech/syllableshapes.h"
+#include "timeline/audioclipedits.h"
 #include "timeline/posetrack.h"
 
 #include <QCoreApplication>
@@ -271,6 +272,7 @@ int itemCount(const Animation &a, ItemKind kind)
     case ItemKind::Head: return int(tl.headKeys().size());
     case ItemKind::Gaze: return int(tl.gazeKeys().size());
     case ItemKind::Pose: return int(poseKeyTimes(tl).size());
+    case ItemKind::Audio: return int(tl.audioClips().size());
     }
     return 0;
 }
@@ -294,6 +296,10 @@ QVector<Span> itemSpans(const Animation &a, ItemKind kind)
     case ItemKind::Blink:
         for (const BlinkEvent &b : a.timeline.blinks())
             spans.append({b.time, b.time + b.duration});
+        break;
+    case ItemKind::Audio:
+        for (const AudioClip &c : a.timeline.audioClips())
+            spans.append({c.start(), c.end()});
         break;
     default:
         for (double t : keyTimes(a, kind))
@@ -338,6 +344,7 @@ void setItemSpans(Animation &a, ItemKind kind, const QVector<Span> &spans)
         tl.setBlinks(blinks);
         break;
     }
+    case ItemKind::Audio: break; // moved and trimmed by audioclipedits.h
     default: {
         QVector<double> t;
         for (const Span &s : spans)
@@ -398,6 +405,8 @@ Animation dragItemEdge(const Animation &animation, ItemRef item, SpanEdge edge, 
 {
     if (!hasSpans(item.kind))
         return animation;
+    if (item.kind == ItemKind::Audio)
+        return trimAudioClip(animation, item.index, edge, to, minSpan);
     Animation out = animation;
     setItemSpans(out, item.kind, dragSpanEdge(itemSpans(animation, item.kind), item.index, edge, to, minSpan));
     return out;
@@ -405,6 +414,8 @@ Animation dragItemEdge(const Animation &animation, ItemRef item, SpanEdge edge, 
 
 Animation moveItems(const Animation &animation, const Selection &selection, double dt, double minSpan, double *applied)
 {
+    if (selection.hasKind(ItemKind::Audio))
+        return moveAudioClips(animation, selection.indices(ItemKind::Audio), dt, applied);
     // The most restrictive clamp of every kind, so that all move together.
     for (int k = 0; k < kItemKindCount; ++k) {
         const auto kind = ItemKind(k);
@@ -499,7 +510,8 @@ Animation deleteItems(const Animation &animation, const Selection &selection)
     removeIndices(gaze, selection.indices(ItemKind::Gaze));
     tl.setGazeKeys(gaze);
     removePoseKeys(tl, selection.indices(ItemKind::Pose));
-    return out;
+    // Last: the clips' spans are as before, and their syllables and keys go with them.
+    return removeAudioClips(out, selection.indices(ItemKind::Audio));
 }
 
 namespace {

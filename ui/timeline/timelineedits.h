@@ -38,7 +38,8 @@ QVector<Span> dragSpanEdge(QVector<Span> spans, int index, SpanEdge edge, double
 double moveSpans(QVector<Span> &spans, const QVector<int> &indices, double dt, double minSpan);
 
 // The spans of each track kind that has them (Mouth: Timeline::mouthCues; Syllable, Emotion,
-// Blink), and writing them back (a mouth key gets an explicit duration when its end changed).
+// Blink; Audio: where each clip is heard), and writing them back (a mouth key gets an explicit
+// duration when its end changed; audio clips are moved and trimmed by audioclipedits.h only).
 QVector<Span> itemSpans(const Animation &animation, ItemKind kind);
 void setItemSpans(Animation &animation, ItemKind kind, const QVector<Span> &spans);
 // The time of a key or the start of a span.
@@ -46,8 +47,8 @@ double itemTime(const Animation &animation, const ItemRef &item);
 int itemCount(const Animation &animation, ItemKind kind);
 inline bool hasSpans(ItemKind kind)
 {
-    return kind == ItemKind::Syllable || kind == ItemKind::Mouth || kind == ItemKind::Emotion
-        || kind == ItemKind::Blink;
+    return kind == ItemKind::Syllable || kind == ItemKind::Mouth || kind == ItemKind::Emotion || kind == ItemKind::Blink
+        || kind == ItemKind::Audio;
 }
 
 // Syllables: new start and end times (same count, same order; `retimed` gives each changed
@@ -57,14 +58,17 @@ inline bool hasSpans(ItemKind kind)
 // place in proportion. Keys outside the changed syllables' reach stay.
 Animation retimeSyllables(const Animation &animation, const QVector<Span> &syllableTimes);
 
-// Drags an edge of an item that has a span (mouth cue, emotion clip, blink, syllable).
+// Drags an edge of an item that has a span (mouth cue, emotion clip, blink, syllable; an audio
+// clip is trimmed, see trimAudioClip).
 Animation dragItemEdge(const Animation &animation, ItemRef item, SpanEdge edge, double to, double minSpan);
 // Moves the selected items by dt (every kind at once; spans by moveSpans, keys keep their order
-// with their unselected neighbours). *applied receives the dt applied to span kinds.
+// with their unselected neighbours). *applied receives the dt applied to span kinds. A
+// selection that holds audio clips moves those clips only, with what they own (moveAudioClips).
 Animation moveItems(
     const Animation &animation, const Selection &selection, double dt, double minSpan, double *applied = nullptr);
 // Removes the selected items. A removed mouth cue leaves the cue before it holding over its time;
-// a removed syllable leaves silence (its mouth keys become one `m`).
+// a removed syllable leaves silence (its mouth keys become one `m`); a removed audio clip goes
+// with its syllables and mouth keys (removeAudioClips).
 Animation deleteItems(const Animation &animation, const Selection &selection);
 
 // Mouth keys.

@@ -16,6 +16,7 @@ inline constexpr double kEdgeGrip = 5; // pixels either side of an edge that tak
 inline constexpr double kKeySize = 11; // a key's diamond
 inline constexpr double kHandleRadius = 4.5;
 inline constexpr double kClipHandlesMinWidth = 30; // narrower clips show no handles (nor name)
+inline constexpr double kAudioTitle = 14; // an audio clip's title strip, which moves it
 
 inline QRectF rowBand(const TimelineScene &s, RowKind row)
 {

@@ -132,6 +132,12 @@ TimelineHit hitTest(const TimelineScene &s, QPoint point)
         hitKeys(s, *hit.row, *kind, pos, &hit);
     if (*kind == ItemKind::Mouth)
         hitMouthWeight(s, pos, &hit);
+    // An audio clip moves by its title strip; the waveform below scrubs.
+    if (*kind == ItemKind::Audio && hit.part == HitPart::Body
+        && pos.y() > rowBand(s, RowKind::Waveform).top() + kAudioTitle) {
+        hit.item.reset();
+        hit.part = HitPart::None;
+    }
     return hit;
 }
 

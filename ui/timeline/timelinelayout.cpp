@@ -7,6 +7,7 @@ namespace toonface {
 std::optional<ItemKind> itemKindOf(RowKind row)
 {
     switch (row) {
+    case RowKind::Waveform: return ItemKind::Audio;
     case RowKind::Script: return ItemKind::Syllable;
     case RowKind::Mouth: return ItemKind::Mouth;
     case RowKind::Emotion: return ItemKind::Emotion;
@@ -28,6 +29,7 @@ RowKind rowOf(ItemKind kind)
     case ItemKind::Head: return RowKind::Head;
     case ItemKind::Gaze: return RowKind::Gaze;
     case ItemKind::Pose: return RowKind::Pose;
+    case ItemKind::Audio: return RowKind::Waveform;
     }
     return RowKind::Mouth;
 }
@@ -50,7 +52,7 @@ QString rowTitle(RowKind row)
 
 TimelineLayout::TimelineLayout()
 {
-    const std::pair<RowKind, int> heights[] = {{RowKind::Waveform, 58}, {RowKind::Script, 42}, {RowKind::Mouth, 50},
+    const std::pair<RowKind, int> heights[] = {{RowKind::Waveform, 66}, {RowKind::Script, 42}, {RowKind::Mouth, 50},
         {RowKind::Emotion, 38}, {RowKind::Blink, 22}, {RowKind::Head, 34}, {RowKind::Gaze, 24}, {RowKind::Pose, 24}};
     m_rows.append({RowKind::Ruler, 0, kRulerHeight});
     int top = 0;

@@ -4,6 +4,7 @@
 #include "timeline/timelinegeometry.h"
 #include "timeline/timelinetracks.h"
 
+#include <QFileInfo>
 #include <QPainter>
 #include <QPainterPath>
 
@@ -78,7 +79,9 @@ void paintLabels(QPainter &p, const TimelineScene &s)
         }
         p.setPen(s.focusRow == r.kind ? kText : kDimText);
         p.drawText(label.adjusted(10, 0, -4, 0), Qt::AlignVCenter | Qt::AlignLeft, rowTitle(r.kind));
-        if (r.kind == RowKind::Waveform && s.peaks && !s.peaks->isEmpty() && std::abs(s.waveformGain - 1) > 0.01) {
+        const bool peaks = std::any_of(
+            s.clipPeaks.cbegin(), s.clipPeaks.cend(), [](const WaveformPeaks *w) { return w && !w->isEmpty(); });
+        if (r.kind == RowKind::Waveform && peaks && std::abs(s.waveformGain - 1) > 0.01) {
             // How much the drawing is magnified, so a quiet recording is not taken for a loud one.
             p.setPen(kDimText);
             p.drawText(label.adjusted(10, 0, -4, -3), Qt::AlignBottom | Qt::AlignLeft,
@@ -150,34 +153,77 @@ void paintGrid(QPainter &p, const TimelineScene &s, double t0, double t1)
     }
 }
 
-void paintWaveform(QPainter &p, const TimelineScene &s)
+// One audio clip: a box over where it is heard, its title strip (file and script), and the
+// waveform of its file at its offset inside the box.
+void paintAudioClip(QPainter &p, const TimelineScene &s, int index, const QRect &row)
 {
-    const QRect row = s.layout->rowRect(RowKind::Waveform, s.width);
-    const std::optional<AudioClip> &audio = s.animation.timeline.audio();
-    if (!audio || !s.peaks || s.peaks->isEmpty()) {
+    const AudioClip &clip = s.animation.timeline.audioClips()[index];
+    const TimelineLayout &l = *s.layout;
+    const QRectF box = geometry::spanRect(s, RowKind::Waveform, {clip.start(), clip.end()});
+    const bool selected = s.selection && s.selection->contains({ItemKind::Audio, index});
+    p.setPen(QPen(selected ? kSelection : kWave.darker(170), selected ? 2 : 1));
+    p.setBrush(QColor(kWave.red(), kWave.green(), kWave.blue(), 28));
+    p.drawRoundedRect(box.adjusted(0.5, 0.5, -0.5, -0.5), 3, 3);
+    const QRectF title(box.left(), box.top(), box.width(), geometry::kAudioTitle);
+    p.fillRect(title.adjusted(1, 1, -1, 0), QColor(kWave.red(), kWave.green(), kWave.blue(), selected ? 110 : 70));
+    if (box.width() > 24) {
+        QFont small = p.font();
+        const QFont base = small;
+        small.setPointSizeF(base.pointSizeF() * 0.8);
+        p.setFont(small);
+        const QString name = QFileInfo(clip.path).fileName();
+        const QString script = clip.script.simplified();
+        const QString text = script.isEmpty() ? name : QStringLiteral("%1 — %2").arg(name, script);
+        const QRectF textRect = title.adjusted(4, 0, -3, 0);
+        p.setPen(kText);
+        p.drawText(textRect, Qt::AlignVCenter | Qt::AlignLeft,
+            p.fontMetrics().elidedText(text, Qt::ElideRight, int(textRect.width())));
+        p.setFont(base);
+    }
+    const WaveformPeaks *peaks = index < s.clipPeaks.size() ? s.clipPeaks[index] : nullptr;
+    const QRectF wave = box.adjusted(1, geometry::kAudioTitle + 1, -1, -1);
+    if (!peaks || peaks->isEmpty()) {
         p.setPen(kDimText);
-        const QString text = !audio ? QObject::tr("No sound") : s.waveformStatus;
-        p.drawText(row.adjusted(8, 0, 0, 0), Qt::AlignVCenter | Qt::AlignLeft, text);
+        p.drawText(wave.adjusted(6, 0, 0, 0), Qt::AlignVCenter | Qt::AlignLeft, s.clipStatus.value(index));
         return;
     }
-    const TimelineLayout &l = *s.layout;
-    const double mid = row.center().y();
-    const double half = row.height() / 2.0 - 3;
-    const int x0 = std::max(row.left(), int(std::floor(l.xOf(audio->offset))));
-    const int x1 = std::min(row.right(), int(std::ceil(l.xOf(audio->offset + s.peaks->duration()))));
+    const double mid = wave.center().y();
+    const double half = wave.height() / 2.0 - 1;
+    const int x0 = std::max(row.left(), int(std::floor(wave.left())));
+    const int x1
+        = std::min(row.right(), int(std::ceil(std::min(wave.right(), l.xOf(clip.offset + peaks->duration())))));
+    if (x1 < x0)
+        return;
     p.setPen(QPen(kWave.darker(160), 1));
     p.drawLine(QPointF(x0, mid), QPointF(x1, mid));
     p.setPen(QPen(kWave, 1));
     QVector<QLineF> lines;
     lines.reserve(std::max(0, x1 - x0 + 1));
     for (int x = x0; x <= x1; ++x) {
-        const double a = l.timeAt(x) - audio->offset, b = l.timeAt(x + 1) - audio->offset;
-        const auto [rawLo, rawHi] = s.peaks->range(a, b);
+        const double a = l.timeAt(x) - clip.offset, b = l.timeAt(x + 1) - clip.offset;
+        const auto [rawLo, rawHi] = peaks->range(a, b);
         const double lo = std::clamp(rawLo * s.waveformGain, -1.0, 1.0);
         const double hi = std::clamp(rawHi * s.waveformGain, -1.0, 1.0);
         lines.append(QLineF(x + 0.5, mid - hi * half, x + 0.5, mid - lo * half + 0.01));
     }
     p.drawLines(lines);
+}
+
+void paintWaveform(QPainter &p, const TimelineScene &s, double t0, double t1)
+{
+    const QRect row = s.layout->rowRect(RowKind::Waveform, s.width);
+    const QVector<AudioClip> &clips = s.animation.timeline.audioClips();
+    if (clips.isEmpty()) {
+        p.setPen(kDimText);
+        p.drawText(row.adjusted(8, 0, 0, 0), Qt::AlignVCenter | Qt::AlignLeft, QObject::tr("No sound"));
+        return;
+    }
+    p.save();
+    p.setClipRect(row, Qt::IntersectClip);
+    for (qsizetype i = 0; i < clips.size(); ++i)
+        if (clips[i].end() >= t0 && clips[i].start() <= t1)
+            paintAudioClip(p, s, int(i), row);
+    p.restore();
 }
 
 void paintPlayhead(QPainter &p, const TimelineScene &s)
@@ -250,7 +296,7 @@ void paintTimeline(QPainter &p, const TimelineScene &s)
     if (xEnd < s.width)
         p.fillRect(QRectF(xEnd, TimelineLayout::kRulerHeight, s.width - xEnd, s.height), QColor(0, 0, 0, 60));
     paintGrid(p, s, t0, t1);
-    paintWaveform(p, s);
+    paintWaveform(p, s, t0, t1);
     p.setRenderHint(QPainter::Antialiasing, true);
     tracks::paintScriptRow(p, s, t0, t1);
     tracks::paintMouthRow(p, s, t0, t1);

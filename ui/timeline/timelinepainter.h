@@ -6,6 +6,8 @@
 #include <QColor>
 #include <QRect>
 #include <QString>
+#include <QStringList>
+#include <QVector>
 
 #include <optional>
 
@@ -24,8 +26,10 @@ struct TimelineScene
     const QVector<Span> *mouthSpans = nullptr; // itemSpans(animation, Mouth), cached by the view
     const TimelineLayout *layout = nullptr;
     const Selection *selection = nullptr;
-    const WaveformPeaks *peaks = nullptr;
-    QString waveformStatus; // shown in the waveform row when there are no peaks
+    // Each audio clip's peaks (of its whole file; null while not read), and what its box says
+    // when there are none ("Reading the sound…", an error naming the file).
+    QVector<const WaveformPeaks *> clipPeaks;
+    QStringList clipStatus;
     double waveformGain = 1; // sample values are multiplied by this before drawing (clipped at full height)
     const MouthIcons *icons = nullptr;
     double playhead = 0;
@@ -36,7 +40,8 @@ struct TimelineScene
     int height = 0;
 };
 
-// The parts of an item a pointer can take hold of.
+// The parts of an item a pointer can take hold of. An audio clip's body is taken by its title
+// strip (geometry::kAudioTitle high) only: the waveform under it scrubs the playhead.
 enum class HitPart { None, Body, StartEdge, EndEdge, FadeIn, FadeOut, Intensity, Weight };
 
 struct TimelineHit
@@ -47,7 +52,8 @@ struct TimelineHit
     HitPart part = HitPart::None;
 };
 
-// Paints the whole viewport: label column, ruler, waveform, script row, tracks, playhead.
+// Paints the whole viewport: label column, ruler, the audio track's clips with their waveforms,
+// script row, tracks, playhead.
 // Only the visible time range is walked (binary searches into the time-sorted tracks), and at
 // most one item is drawn per pixel column where they are denser than that.
 void paintTimeline(QPainter &painter, const TimelineScene &scene);

@@ -6,9 +6,10 @@
 
 namespace toonface {
 
-// The rows of the timeline that hold items, top to bottom below the ruler and the waveform.
-enum class ItemKind { Syllable, Mouth, Emotion, Blink, Head, Gaze, Pose };
-inline constexpr int kItemKindCount = 7;
+// The kinds of items on the timeline's rows: the script's syllables, the tracks' keys and clips,
+// and the audio track's clips (on the waveform row; last, so older kinds keep their values).
+enum class ItemKind { Syllable, Mouth, Emotion, Blink, Head, Gaze, Pose, Audio };
+inline constexpr int kItemKindCount = 8;
 
 // One item on the timeline: the index of a syllable, key or clip in its (time-sorted) list.
 struct ItemRef

@@ -24,7 +24,6 @@ namespace {
 constexpr double kMaxPixelsPerSecond = 4000;
 constexpr double kZoomStep = 1.25;
 constexpr int kSnapPixels = 6;
-constexpr int kDragThreshold = 3;
 constexpr double kEmotionLength = 2.0; // seconds of a preset dropped with no range selected
 // A selection shorter than this is not a range an expression is meant to fill (a face needs
 // about half a second to show one): a preset dropped on it starts where it was dropped.
@@ -37,12 +36,6 @@ constexpr double kWaveformFill = 0.9;
 // Quieter than this (-40 dBFS) is drawn as if it were this loud: hiss or a silent file is not
 // blown up to fill the row.
 constexpr double kQuietestShown = 0.01;
-
-int nextMergeId()
-{
-    static int id = 0x54000000;
-    return ++id;
-}
 
 std::optional<MouthShape> shapeForKey(int key)
 {
@@ -79,7 +72,8 @@ TimelineView::TimelineView(Document *document, Playhead *playhead, QWidget *pare
         followPlayhead(t);
         viewport()->update();
     });
-    connect(&m_waveform, &WaveformSource::ready, viewport(), qOverload<>(&QWidget::update));
+    m_waveforms.push_back(std::make_unique<WaveformSource>());
+    connect(m_waveforms.back().get(), &WaveformSource::ready, viewport(), qOverload<>(&QWidget::update));
     onDocumentChanged(ChangeFlags(Change::Photo) | Change::Animation | Change::MouthShapes);
 }
 
@@ -107,9 +101,13 @@ TimelineScene TimelineView::scene() const
     s.mouthSpans = &m_mouthSpans;
     s.layout = &m_layout;
     s.selection = &m_selection;
-    s.peaks = &m_waveform.peaks();
+    const qsizetype clips = m_document->timeline().audioClips().size();
+    for (qsizetype i = 0; i < clips && size_t(i) < m_waveforms.size(); ++i) {
+        const WaveformSource &w = *m_waveforms[size_t(i)];
+        s.clipPeaks.append(&w.peaks());
+        s.clipStatus.append(w.isLoading() ? tr("Reading the sound…") : w.error());
+    }
     s.waveformGain = waveformGain();
-    s.waveformStatus = m_waveform.isLoading() ? tr("Reading the sound…") : m_waveform.error();
     s.icons = &m_icons;
     s.playhead = m_playhead->time();
     s.focusRow = m_focusRow;
@@ -127,16 +125,27 @@ void TimelineView::onDocumentChanged(ChangeFlags what)
         const Animation a = m_document->animation();
         const Selection before = m_selection;
         m_selection.clip([&](ItemKind kind) { return itemCount(a, kind); });
-        const std::optional<AudioClip> &audio = m_document->timeline().audio();
-        m_waveform.setPath(audio ? audio->path : QString());
+        const QVector<AudioClip> &clips = m_document->timeline().audioClips();
+        while (m_waveforms.size() < size_t(std::max<qsizetype>(1, clips.size()))) {
+            m_waveforms.push_back(std::make_unique<WaveformSource>());
+            connect(m_waveforms.back().get(), &WaveformSource::ready, viewport(), qOverload<>(&QWidget::update));
+        }
+        m_waveforms.resize(size_t(std::max<qsizetype>(1, clips.size())));
+        QString media;
+        for (size_t i = 0; i < m_waveforms.size(); ++i) {
+            const QString path = qsizetype(i) < clips.size() ? clips[qsizetype(i)].path : QString();
+            m_waveforms[i]->setPath(path);
+            media += path + QLatin1Char('|');
+        }
         // A new recording or clip (lip sync, Say Text, Import Video) is shown whole, not the
         // first second of it.
         const std::optional<VideoClip> &video = m_document->timeline().video();
-        const QString media = (audio ? audio->path : QString()) + QLatin1Char('|') + (video ? video->path : QString());
+        media += video ? video->path : QString();
         if (media != m_media) {
             const bool first = m_media.isNull();
             m_media = media;
-            if (!first && media != QLatin1String("|") && viewport()->width() > TimelineLayout::kLabelWidth)
+            if (!first && media != QLatin1String("|") && media.size() > 1
+                && viewport()->width() > TimelineLayout::kLabelWidth)
                 zoomToFit();
         }
         if (m_selection != before)
@@ -171,9 +180,17 @@ void TimelineView::setFocusRow(std::optional<RowKind> row)
 
 double TimelineView::waveformGain() const
 {
-    if (m_waveform.peaks().isEmpty())
+    double loudness = 0;
+    bool any = false;
+    for (const auto &w : m_waveforms) {
+        if (w->peaks().isEmpty())
+            continue;
+        any = true;
+        loudness = std::max(loudness, w->loudness());
+    }
+    if (!any)
         return m_waveformZoom;
-    return m_waveformZoom * kWaveformFill / std::max(kQuietestShown, m_waveform.loudness());
+    return m_waveformZoom * kWaveformFill / std::max(kQuietestShown, loudness);
 }
 
 void TimelineView::setWaveformZoom(double zoom)
@@ -338,7 +355,7 @@ void TimelineView::paintEvent(QPaintEvent *)
     paintTimeline(painter, scene());
 }
 
-// --- gestures ---
+// --- gestures (the mouse: timelinegestures.cpp) ---
 
 double TimelineView::snapped(double t, bool *toBoundary) const
 {
@@ -357,217 +374,6 @@ double TimelineView::snapped(double t, bool *toBoundary) const
 void TimelineView::apply(const Animation &after, const QString &text)
 {
     m_document->changeAnimation(after, text);
-}
-
-void TimelineView::mousePressEvent(QMouseEvent *event)
-{
-    if (event->button() != Qt::LeftButton) {
-        QAbstractScrollArea::mousePressEvent(event);
-        return;
-    }
-    if (m_pinyinEditor && m_pinyinEditor->isVisible())
-        commitPinyin();
-    const QPoint pos = event->position().toPoint();
-    const TimelineHit hit = hitAt(pos);
-    m_drag = Drag();
-    m_drag.pressPos = pos;
-    m_drag.start = m_document->animation();
-    m_drag.mergeId = nextMergeId();
-    if (!hit.row)
-        return;
-    if (pos.x() < TimelineLayout::kLabelWidth) {
-        setFocusRow(hit.row);
-        return;
-    }
-    if (*hit.row == RowKind::Ruler || *hit.row == RowKind::Waveform) {
-        m_drag.mode = DragMode::Scrub;
-        m_drag.started = true;
-        m_playhead->setScrubbing(true);
-        m_playhead->setTime(snapped(hit.time));
-        return;
-    }
-    setFocusRow(hit.row);
-    if (!hit.item) {
-        if (!(event->modifiers() & (Qt::ShiftModifier | Qt::ControlModifier)))
-            setSelection({});
-        m_drag.mode = DragMode::RubberBand;
-        m_drag.baseSelection = m_selection;
-        return;
-    }
-    const ItemRef item = *hit.item;
-    m_drag.item = item;
-    if (event->modifiers() & Qt::ControlModifier) {
-        Selection s = m_selection;
-        s.toggle(item);
-        setSelection(s);
-        m_anchor = item;
-        if (!s.contains(item))
-            return;
-    } else if (event->modifiers() & Qt::ShiftModifier) {
-        // Extends from the last item clicked on the same row to this one, as in a list.
-        Selection s = m_selection;
-        const bool range = m_anchor && m_anchor->kind == item.kind;
-        const int from = range ? std::min(m_anchor->index, item.index) : item.index;
-        const int count = int(itemSpans(m_document->animation(), item.kind).size());
-        const int to = range ? std::min(std::max(m_anchor->index, item.index), count - 1) : item.index;
-        for (int i = from; i <= to; ++i)
-            s.insert({item.kind, i});
-        setSelection(s);
-        if (!range)
-            m_anchor = item;
-    } else if (!m_selection.contains(item) || hit.part != HitPart::Body) {
-        setSelection({item});
-        m_anchor = item;
-    } else {
-        m_anchor = item;
-    }
-    const double pointer = m_layout.timeAt(pos.x());
-    switch (hit.part) {
-    case HitPart::Body:
-        m_drag.mode = DragMode::Move;
-        m_drag.grabOffset = itemTime(m_drag.start, item) - pointer;
-        break;
-    case HitPart::StartEdge:
-    case HitPart::EndEdge: {
-        m_drag.mode = DragMode::Edge;
-        m_drag.edge = hit.part == HitPart::StartEdge ? SpanEdge::Start : SpanEdge::End;
-        const Span span = itemSpans(m_drag.start, item.kind)[item.index];
-        m_drag.grabOffset = (m_drag.edge == SpanEdge::Start ? span.start : span.end) - pointer;
-        break;
-    }
-    case HitPart::FadeIn: m_drag.mode = DragMode::FadeIn; break;
-    case HitPart::FadeOut: m_drag.mode = DragMode::FadeOut; break;
-    case HitPart::Intensity: m_drag.mode = DragMode::Intensity; break;
-    case HitPart::Weight: m_drag.mode = DragMode::Weight; break;
-    case HitPart::None: break;
-    }
-}
-
-void TimelineView::mouseMoveEvent(QMouseEvent *event)
-{
-    const QPoint pos = event->position().toPoint();
-    if (m_drag.mode == DragMode::None || !(event->buttons() & Qt::LeftButton)) {
-        const TimelineHit hit = hitAt(pos);
-        Qt::CursorShape cursor = Qt::ArrowCursor;
-        if (hit.part == HitPart::StartEdge || hit.part == HitPart::EndEdge || hit.part == HitPart::FadeIn
-            || hit.part == HitPart::FadeOut)
-            cursor = Qt::SizeHorCursor;
-        else if (hit.part == HitPart::Intensity || hit.part == HitPart::Weight)
-            cursor = Qt::SizeVerCursor;
-        viewport()->setCursor(cursor);
-        return;
-    }
-    if (!m_drag.started && (pos - m_drag.pressPos).manhattanLength() < kDragThreshold)
-        return;
-    m_drag.started = true;
-    dragTo(pos, false);
-}
-
-void TimelineView::mouseReleaseEvent(QMouseEvent *event)
-{
-    if (event->button() != Qt::LeftButton || m_drag.mode == DragMode::None)
-        return;
-    if (m_drag.started)
-        dragTo(event->position().toPoint(), true);
-    if (m_drag.mode == DragMode::Scrub)
-        m_playhead->setScrubbing(false);
-    m_drag = Drag();
-    m_rubberBand = QRect();
-    m_snapLine.reset();
-    viewport()->update();
-}
-
-QString TimelineView::dragText() const
-{
-    switch (m_drag.mode) {
-    case DragMode::Move: return tr("Move on Timeline");
-    case DragMode::Edge:
-        return m_drag.item.kind == ItemKind::Syllable ? tr("Retime Syllable") : tr("Resize on Timeline");
-    case DragMode::FadeIn:
-    case DragMode::FadeOut: return tr("Change Emotion Fade");
-    case DragMode::Intensity: return tr("Change Emotion Intensity");
-    case DragMode::Weight: return tr("Change Mouth Weight");
-    default: return {};
-    }
-}
-
-void TimelineView::dragTo(QPoint pos, bool commit)
-{
-    const double pointer = m_layout.timeAt(pos.x());
-    std::optional<Animation> after;
-    bool toBoundary = false;
-    m_snapLine.reset();
-    switch (m_drag.mode) {
-    case DragMode::None: return;
-    case DragMode::Scrub: m_playhead->setTime(snapped(pointer)); return;
-    case DragMode::RubberBand: {
-        m_rubberBand = QRect(m_drag.pressPos, pos).normalized();
-        Selection s = m_drag.baseSelection;
-        const Selection inside = itemsIn(scene(), m_rubberBand);
-        for (const ItemRef &r : inside.items())
-            s.insert(r);
-        setSelection(s);
-        viewport()->update();
-        return;
-    }
-    case DragMode::Move: {
-        const double from = itemTime(m_drag.start, m_drag.item);
-        // Not moved sideways: not moved (snapping alone would shift an item that is off the frames).
-        const double to = pos.x() == m_drag.pressPos.x() ? from : snapped(pointer + m_drag.grabOffset, &toBoundary);
-        after = moveItems(m_drag.start, m_selection, to - from, minSpan());
-        break;
-    }
-    case DragMode::Edge: {
-        if (pos.x() == m_drag.pressPos.x()) {
-            after = m_drag.start;
-            break;
-        }
-        const double to = snapped(pointer + m_drag.grabOffset, &toBoundary);
-        after = dragItemEdge(m_drag.start, m_drag.item, m_drag.edge, to, minSpan());
-        if (toBoundary)
-            m_snapLine = to;
-        break;
-    }
-    case DragMode::FadeIn:
-    case DragMode::FadeOut: {
-        const EmotionClip &c = m_drag.start.timeline.emotionClips()[m_drag.item.index];
-        const double t = snapped(pointer);
-        after = m_drag.mode == DragMode::FadeIn
-            ? setEmotionFades(m_drag.start, m_drag.item.index, t - c.start, c.fadeOut)
-            : setEmotionFades(m_drag.start, m_drag.item.index, c.fadeIn, c.end - t);
-        break;
-    }
-    case DragMode::Intensity: {
-        const QRectF r = itemRect(m_drag.item);
-        const double top = r.top() + 12;
-        after = toonface::setEmotionIntensity(
-            m_drag.start, m_drag.item.index, (r.bottom() - pos.y()) / std::max(1.0, r.bottom() - top));
-        break;
-    }
-    case DragMode::Weight: {
-        const QRectF r = itemRect(m_drag.item);
-        const QVector<int> keys = m_selection.indices(ItemKind::Mouth);
-        after = toonface::setMouthWeight(m_drag.start, keys, 1.0 - (pos.y() - r.top()) / std::max(1.0, r.height() - 4));
-        break;
-    }
-    }
-    if (m_drag.mode == DragMode::Move && toBoundary)
-        m_snapLine = snapped(pointer + m_drag.grabOffset);
-    // Nothing is pushed until the drag changes something, so a drag that changes nothing leaves
-    // no empty step in the history.
-    if (after && (m_drag.pushed || !(*after == m_drag.start))) {
-        m_drag.pushed = true;
-        m_document->changeAnimation(*after, dragText(), m_drag.mergeId, commit);
-    }
-}
-
-void TimelineView::mouseDoubleClickEvent(QMouseEvent *event)
-{
-    const TimelineHit hit = hitAt(event->position().toPoint());
-    if (hit.item && hit.item->kind == ItemKind::Syllable)
-        editSyllable(hit.item->index);
-    else if (hit.item && hit.item->kind == ItemKind::Emotion)
-        Q_EMIT emotionIntensityRequested(hit.item->index);
 }
 
 // --- keys ---

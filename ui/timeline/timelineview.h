@@ -9,6 +9,10 @@
 
 #include <QAbstractScrollArea>
 
+#include <algorithm>
+#include <memory>
+#include <vector>
+
 class QLineEdit;
 
 namespace toonface {
@@ -21,7 +25,8 @@ class Playhead;
 // step (a drag pushes its moves with one merge id and commits on release). It keeps no copy of
 // the document: only its selection, zoom and caches derived from the document.
 //
-// Mouse: click/drag on the ruler or waveform scrubs the playhead; click, Shift/Ctrl+click and a
+// Mouse: click/drag on the ruler or waveform scrubs the playhead (and, without Shift or Ctrl,
+// clears the selection); click, Shift/Ctrl+click and a
 // rubber band select; dragging a body moves, an edge resizes (neighbours give way), an emotion
 // clip's handles set its fades and intensity, a mouth block's top its weight; double-click on a
 // syllable edits its pinyin, on an emotion clip its intensity. Wheel scrolls, Shift+wheel scrolls the rows, Ctrl+wheel
@@ -41,10 +46,14 @@ public:
     std::optional<RowKind> focusRow() const { return m_focusRow; }
     void setFocusRow(std::optional<RowKind> row);
     bool snapEnabled() const { return m_snap; }
-    WaveformSource *waveform() { return &m_waveform; }
+    // The waveform of audio clip `clip` (of the first when there is none: it shows nothing).
+    WaveformSource *waveform(int clip = 0)
+    {
+        return m_waveforms[std::clamp<size_t>(size_t(std::max(clip, 0)), 0, m_waveforms.size() - 1)].get();
+    }
     const MouthIcons &mouthIcons() const { return m_icons; }
-    // The waveform's vertical zoom over the recording's own loudness (1: its loud parts fill the
-    // row). The gain is what sample values are multiplied by on screen.
+    // The waveform's vertical zoom over the recordings' own loudness (1: the loud parts of the
+    // loudest fill the row). The gain is what sample values are multiplied by on screen.
     double waveformZoom() const { return m_waveformZoom; }
     double waveformGain() const;
 
@@ -152,7 +161,7 @@ private:
     std::optional<RowKind> m_focusRow;
     QVector<Span> m_mouthSpans;
     MouthIcons m_icons;
-    WaveformSource m_waveform;
+    std::vector<std::unique_ptr<WaveformSource>> m_waveforms; // one per audio clip, at least one
     static constexpr double kWaveformZoomStep = 1.5;
     double m_waveformZoom = 1;
     bool m_snap = true;

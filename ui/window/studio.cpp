@@ -69,14 +69,20 @@ void Studio::install(PreviewView *preview, QAction *beforeMenu)
     m_lipSync = new QAction(themedIcon("audio-x-generic", "lip-sync.svg"), tr("&Lip Sync from Recording…"), this);
     m_lipSync->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
     m_lipSync->setStatusTip(tr("Time the mouth to a speech recording and its script"));
-    connect(m_lipSync, &QAction::triggered, this, [this] { LipSyncDialog::run(m_window, m_document); });
+    connect(m_lipSync, &QAction::triggered, this, [this] {
+        m_playback->pause();
+        QString outcome;
+        if (LipSyncDialog::run(m_window, m_document, m_playhead->time(), &outcome))
+            Q_EMIT message(outcome);
+    });
     m_sayText = new QAction(themedIcon("insert-text", "say-text.svg"), tr("&Say Text…"), this);
     m_sayText->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
     m_sayText->setStatusTip(tr("Speak a text with the built-in voice and lip-sync the face to it"));
     connect(m_sayText, &QAction::triggered, this, [this] {
-        const std::optional<AudioClip> before = m_document->timeline().audio();
-        if (SayTextDialog::run(m_window, m_document))
-            Q_EMIT message(soundChange(before, tr("Say Text")));
+        m_playback->pause();
+        QString outcome;
+        if (SayTextDialog::run(m_window, m_document, m_playhead->time(), &outcome))
+            Q_EMIT message(outcome);
     });
     m_addBlinks = new QAction(QIcon(QStringLiteral(":/toonface/icons/timeline-blinks.svg")), tr("Add &Blinks…"), this);
     connect(m_addBlinks, &QAction::triggered, this, [this] { BlinksDialog::run(m_window, m_document); });
@@ -146,14 +152,16 @@ void Studio::installVideo()
     m_importVideo->setStatusTip(tr("Track a clip of a person speaking and put the motion on the timeline"));
     connect(m_importVideo, &QAction::triggered, this, [this] {
         m_playback->pause();
-        const std::optional<AudioClip> before = m_document->timeline().audio();
+        const qsizetype before = m_document->timeline().audioClips().size();
         ImportVideoDialog dialog(m_document, m_playhead->time(), m_window);
         if (dialog.exec() != QDialog::Accepted)
             return;
         m_videoDock->show();
         m_videoDock->raise(); // its tab in front: the clip just imported
-        const QString imported
-            = soundChange(before, tr("Imported %1").arg(QFileInfo(m_document->timeline().video()->path).fileName()));
+        const QString name = QFileInfo(m_document->timeline().video()->path).fileName();
+        const QString imported = m_document->timeline().audioClips().size() > before
+            ? tr("Imported %1 with its sound as a clip on the audio track").arg(name)
+            : tr("Imported %1").arg(name);
         Q_EMIT message(
             dialog.warnings().isEmpty() ? imported : imported + QStringLiteral(" — ") + dialog.warnings().join(u' '));
     });
@@ -183,17 +191,6 @@ void Studio::installVideo()
     m_transport->insertAction(m_exportAnimation, m_importVideo);
 }
 // --- end of Import Video ---------------------------------------------------------------------
-
-QString Studio::soundChange(const std::optional<AudioClip> &before, const QString &what) const
-{
-    const std::optional<AudioClip> &after = m_document->timeline().audio();
-    if (!after || (before && before->path == after->path))
-        return tr("%1: done; the project's sound is unchanged.").arg(what);
-    if (!before)
-        return tr("%1: the project's sound is now %2.").arg(what, QFileInfo(after->path).fileName());
-    return tr("%1 replaced the project's sound %2 with %3 (Edit ▸ Undo brings it back).")
-        .arg(what, QFileInfo(before->path).fileName(), QFileInfo(after->path).fileName());
-}
 
 QMenu *Studio::windowMenu(const char *title) const
 {

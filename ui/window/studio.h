@@ -81,8 +81,6 @@ private:
     void installPreferences();
     // The main window's menu titled `title` (its source text, e.g. "&View"), or null.
     QMenu *windowMenu(const char *title) const;
-    // What `what` (Say Text, Import Video) did to the project's sound, which was `before`.
-    QString soundChange(const std::optional<AudioClip> &before, const QString &what) const;
 
     Document *m_document;
     QMainWindow *m_window;
