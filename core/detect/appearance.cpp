@@ -904,7 +904,6 @@ AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, co
         out.headHeight = parse.headHeight; // eye distances, as ES0
         out.scalpReach = parse.scalpReach;
         out.hairSeen = parse.hairSeen;
-        out.fallCut = parse.fallCut;
         out.hairFall = parse.hairFall;
     }
     findHead(px, face, es0, skin, &out);

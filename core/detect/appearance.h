@@ -58,8 +58,8 @@ struct AppearanceFindings
     bool crownCut = true, topCut = false;
     double headHeight = 0, scalpReach = 0;
     // ... and how far the hair falls beside the face below the chin's point, in ES0 (hairSeen: the
-    // crown showed its colour; fallCut: the photo ends while it still falls).
-    bool hairSeen = false, fallCut = false;
+    // crown showed its colour).
+    bool hairSeen = false;
     double hairFall = 0;
     double hatScore = 0; // the crown's hue outside hair's hues, in degrees, times its saturation
     AppearanceEvidence evidence; // measured against the cheeks in L*a*b*

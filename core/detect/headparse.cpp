@@ -272,16 +272,6 @@ bool followHairFall(FaceModel *face, const HeadParse &parse)
     return moved;
 }
 
-QImage HeadParse::toImage() const
-{
-    QImage out(size, QImage::Format_RGB32);
-    static constexpr QRgb kColours[] = {qRgb(255, 0, 255), qRgb(30, 120, 30), qRgb(250, 200, 160), qRgb(170, 20, 20)};
-    for (int y = 0; y < size.height(); ++y)
-        for (int x = 0; x < size.width(); ++x)
-            out.setPixel(x, y, kColours[at(x, y)]);
-    return out;
-}
-
 HeadParse parseHead(const QImage &photo, const FaceModel &face)
 {
     HeadParse out;

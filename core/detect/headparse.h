@@ -51,7 +51,6 @@ struct HeadParse
     QPointF fallEnds[2]; // in the photo: where each side's fall ends, at the hair's outer edge (left, right)
 
     Label at(int x, int y) const { return Label(labels[size_t(y) * size.width() + x]); }
-    QImage toImage() const; // a colour per label, for the editor's detection steps and debugging
 };
 
 inline constexpr double kParseEyeDistance = 24.0;
