@@ -143,37 +143,10 @@ public:
             }
         }
 
-        m_frame.reset(av_frame_alloc());
-        m_frame->format = m_format.pixelFormat;
-        m_frame->width = m_encoded.width();
-        m_frame->height = m_encoded.height();
-        if (yuv) {
-            m_frame->color_range = AVCOL_RANGE_MPEG;
-            m_frame->colorspace = AVCOL_SPC_BT709;
-        }
-        m_rgb.reset(av_frame_alloc());
-        m_rgb->format = AV_PIX_FMT_RGB32;
-        m_rgb->width = m_encoded.width();
-        m_rgb->height = m_encoded.height();
-        r = av_frame_get_buffer(m_frame.get(), 0);
-        if (r >= 0)
-            r = av_frame_get_buffer(m_rgb.get(), 0);
-        if (r < 0) {
-            cancel();
-            return fail(
-                error, path, ExportText::tr("out of memory for a %1x%2 frame").arg(size.width()).arg(size.height()));
-        }
-        m_sws.reset(sws_getContext(m_encoded.width(), m_encoded.height(), AV_PIX_FMT_RGB32, m_encoded.width(),
-            m_encoded.height(), m_format.pixelFormat, SWS_BILINEAR, nullptr, nullptr, nullptr));
-        if (!m_sws) {
-            cancel();
-            return fail(error, path,
-                ExportText::tr("cannot convert %1x%2 RGBA for %3").arg(size.width()).arg(size.height()).arg(name));
-        }
-        if (yuv) {
-            const int *coefficients = sws_getCoefficients(SWS_CS_ITU709);
-            sws_setColorspaceDetails(m_sws.get(), coefficients, 1, coefficients, 0, 0, 1 << 16, 1 << 16);
-        }
+        if (!openFrames(m_format.pixelFormat, yuv, size,
+                ExportText::tr("cannot convert %1x%2 RGBA for %3").arg(size.width()).arg(size.height()).arg(name),
+                error))
+            return false;
 
         AVDictionary *muxerOptions = nullptr;
         if (format == VideoFormat::Apng)
@@ -222,10 +195,6 @@ protected:
 
 private:
     AlphaFormat m_format {};
-    QSize m_encoded;
-    FramePtr m_frame;
-    FramePtr m_rgb;
-    SwsPtr m_sws;
 };
 
 } // namespace

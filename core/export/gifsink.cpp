@@ -343,7 +343,6 @@ private:
     QColor m_background;
     GifPalette m_palette;
     QVector<QImage> m_paletteSamples;
-    FramePtr m_frame;
     int m_input = 0;
     int64_t m_written = 0;
 };

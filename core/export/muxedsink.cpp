@@ -143,6 +143,43 @@ bool MuxedSink::openOutput(const QString &path, const char *formatName, QString 
     return true;
 }
 
+bool MuxedSink::openFrames(
+    AVPixelFormat pixelFormat, bool bt709, QSize size, const QString &convertProblem, QString *error)
+{
+    m_frame.reset(av_frame_alloc());
+    m_frame->format = pixelFormat;
+    m_frame->width = m_encoded.width();
+    m_frame->height = m_encoded.height();
+    if (bt709) {
+        m_frame->color_range = AVCOL_RANGE_MPEG;
+        m_frame->colorspace = AVCOL_SPC_BT709;
+    }
+    m_rgb.reset(av_frame_alloc());
+    m_rgb->format = AV_PIX_FMT_RGB32;
+    m_rgb->width = m_encoded.width();
+    m_rgb->height = m_encoded.height();
+    int r = av_frame_get_buffer(m_frame.get(), 0);
+    if (r >= 0)
+        r = av_frame_get_buffer(m_rgb.get(), 0);
+    if (r < 0) {
+        cancel();
+        return fail(
+            error, m_path, ExportText::tr("out of memory for a %1x%2 frame").arg(size.width()).arg(size.height()));
+    }
+    m_sws.reset(sws_getContext(m_encoded.width(), m_encoded.height(), AV_PIX_FMT_RGB32, m_encoded.width(),
+        m_encoded.height(), pixelFormat, SWS_BILINEAR, nullptr, nullptr, nullptr));
+    if (!m_sws) {
+        cancel();
+        return fail(error, m_path, convertProblem);
+    }
+    if (bt709) {
+        // RGB (full range) to BT.709 limited-range YUV, matching the stream's colour tags.
+        const int *coefficients = sws_getCoefficients(SWS_CS_ITU709);
+        sws_setColorspaceDetails(m_sws.get(), coefficients, 1, coefficients, 0, 0, 1 << 16, 1 << 16);
+    }
+    return true;
+}
+
 bool MuxedSink::startWriting(AVDictionary **options, QString *error)
 {
     int r = avio_open(&m_fmt->pb, localPath(m_temp).constData(), AVIO_FLAG_WRITE);

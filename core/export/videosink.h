@@ -70,6 +70,12 @@ protected:
 
     void closeAll();
 
+    // The frames pictures are converted through: an RGB32 one and one in `pixelFormat`, both
+    // m_encoded's size, and the converter between them (`bt709`: tagged and converted as BT.709
+    // limited-range YUV). Failures name `size` (the pictures' size asked for) or `convertProblem`
+    // (a converter that cannot be made); on failure the sink is cancelled.
+    bool openFrames(AVPixelFormat pixelFormat, bool bt709, QSize size, const QString &convertProblem, QString *error);
+
     QString m_path;
     QString m_temp;
     AVFormatContext *m_fmt = nullptr;
@@ -83,6 +89,10 @@ protected:
     double m_fps = 25;
     bool m_headerWritten = false;
     bool m_trailerOnCancel = false;
+    QSize m_encoded; // the encoded pictures' size
+    FramePtr m_frame; // in the encoder's pixel format
+    FramePtr m_rgb;
+    SwsPtr m_sws;
 
 private:
     std::unique_ptr<AudioFeed> m_feed;
