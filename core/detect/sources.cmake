@@ -3,6 +3,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   detect/landmarkfigures.h detect/landmarkfigures.cpp
   detect/faceregions.h detect/faceregions.cpp
   detect/appearance.h detect/appearance.cpp
+  detect/photopixels.h detect/photopixels.cpp detect/glassesfind.cpp detect/facialhairfind.cpp
   detect/headparse.h detect/headparse.cpp
   detect/skintone.h detect/skintone.cpp
   detect/appearanceevidence.h detect/appearanceevidence.cpp
