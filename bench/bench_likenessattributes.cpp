@@ -39,6 +39,8 @@ struct Labelled
     Appearance shipped;
     std::map<std::string, double> m; // the findings' measures
     double drawnL = 0, cheekL = 0;
+    QString hairColour; // the label: black, brown, blond, red, grey, none or ?
+    QColor drawnHair, drawnSkin, parsedHair;
 };
 
 // CIE L* (D65) of an sRGB colour.
@@ -98,6 +100,9 @@ void measure(Labelled *row, const QImage &photo, const FaceModel &face)
     row->shipped = style.appearance;
     row->drawnL = lStar(style.components.value(QStringLiteral("face")).fill);
     row->cheekL = photoCheekL(photo, face);
+    row->drawnHair = style.components.value(QStringLiteral("hair")).fill;
+    row->drawnSkin = style.components.value(QStringLiteral("face")).fill;
+    row->parsedHair = f.parsedHair;
     auto &m = row->m;
     m["glassesScore"] = f.glassesScore;
     m["bridgedDark"] = f.bridgedDark;
@@ -115,11 +120,26 @@ void measure(Labelled *row, const QImage &photo, const FaceModel &face)
     m["scalpReach"] = f.scalpReach;
     m["hairSeen"] = f.hairSeen ? 1.0 : 0.0;
     m["hairFall"] = f.hairFall;
+    m["templeHairSeen"] = f.templeHairSeen ? 1.0 : 0.0;
+    m["noHairSeen"] = f.hairSeen || f.templeHairSeen ? 0.0 : 1.0;
+    m["fallCut"] = f.fallCut ? 1.0 : 0.0;
     m["hairLengthShipped"] = double(int(f.hairLength)); // 0 none, 1 short, 2 medium, 3 long
     m["hatScore"] = f.hatScore;
     m["crownToHair"] = f.crownToHair;
     m["crownToSkin"] = f.crownToSkin;
     m["brimSpread"] = f.brimSpread;
+    m["coverSeen"] = f.cover.seen ? 1.0 : 0.0;
+    m["coverL"] = f.cover.l;
+    m["coverChroma"] = f.cover.chroma;
+    m["coverHueOff"] = f.cover.hueOff;
+    m["coverToSkin"] = f.cover.toSkin;
+    m["coverToBrows"] = f.cover.toBrows;
+    m["coverLighter"] = f.cover.lighter;
+    m["coverEdgeSpread"] = f.cover.edgeSpread;
+    m["coverEdgeHeight"] = f.cover.edgeHeight;
+    m["coverSides"] = f.cover.sides;
+    m["coverColourScore"] = f.cover.seen ? f.cover.hueOff * f.cover.chroma / 100.0 : 0.0;
+    m["coverWhiteL"] = f.cover.seen ? f.cover.l : 0.0;
     const AppearanceEvidence &e = f.evidence;
     m["lipHair"] = e.lipHair;
     m["chinHair"] = e.chinHair;
@@ -166,6 +186,7 @@ std::vector<Labelled> load(QString *error)
         r.age = c[col("age_group")];
         r.skin = c[col("skin")];
         r.hairLength = c[col("hair_length")];
+        r.hairColour = c[col("hair_colour")];
         r.bald = flag("bald");
         r.beard = flag("beard");
         r.moustache = flag("moustache");
@@ -304,11 +325,14 @@ std::vector<Decision> decisions()
         },
         QStringLiteral("f0.5")});
     d.push_back({QStringLiteral("headwear"), [](const Labelled &r) { return r.headwear; }, all,
-        [](const Labelled &r) { return r.shipped.hat; }, {"hatScore"},
-        // (18 of the 21 headwear faces are crops whose crown the photo cuts off, where no hat is
-        // decided; the colour of the photo's top rows over the forehead, against the skin's and
-        // the brows', was tried and did not tell headwear from hair or forehead.)
-        [m](const Labelled &r, const std::vector<double> &t) { return m(r, "hatScore") >= t[0]; },
+        [](const Labelled &r) { return r.shipped.hat; }, {"coverColourScore", "coverWhiteL", "coverLighter"},
+        // (18 of the 21 headwear faces are crops whose crown the photo cuts off, where the crown's
+        // rules (hatScore, a brim) decide nothing: what the parse sees over the forehead decides,
+        // a colour no hair has or white far lighter than the brows.)
+        [m](const Labelled &r, const std::vector<double> &t) {
+            return m(r, "hatScore") >= A::kHatThreshold || m(r, "coverColourScore") >= t[0]
+                || (m(r, "coverWhiteL") >= t[1] && m(r, "coverLighter") >= t[2]);
+        },
         QStringLiteral("accuracy")});
     d.push_back({QStringLiteral("bald"), [](const Labelled &r) { return r.bald; }, all,
         [](const Labelled &r) { return r.shipped.bald; }, {"scalpReach", "headHeight", "baldScore", "skinReach"},
@@ -398,14 +422,14 @@ QStringList shippedHairLength(const std::vector<Labelled> &rows, const std::vect
     return out;
 }
 
-QStringList hairLength(
-    const std::vector<Labelled> &rows, const std::vector<size_t> &detected, int k, const char *measure, bool seenOnly)
+QStringList hairLength(const std::vector<Labelled> &rows, const std::vector<size_t> &detected, int k,
+    const char *measure, const char *onlyWhere)
 {
     std::vector<size_t> scored;
     std::vector<int> label;
     for (size_t i : detected)
         if (lengthClass(rows[i].hairLength) >= 0 && !rows[i].shipped.bald
-            && (!seenOnly || rows[i].m.at("hairSeen") == 1.0)) {
+            && (!onlyWhere || rows[i].m.at(onlyWhere) == 1.0)) {
             scored.push_back(i);
             label.push_back(lengthClass(rows[i].hairLength));
         }
@@ -440,7 +464,8 @@ QStringList hairLength(
                .arg(k)
                .arg(all[0], 0, 'g', 4)
                .arg(all[1], 0, 'g', 4)
-               .arg(QLatin1StringView(measure), seenOnly ? QStringLiteral(" (crowns showing hair)") : QString());
+               .arg(QLatin1StringView(measure),
+                   onlyWhere ? QStringLiteral(" (where %1)").arg(QLatin1StringView(onlyWhere)) : QString());
     out << QStringLiteral("  right %1 of %2 (%3); rows labelled short/medium/long, columns decided:")
                .arg(right)
                .arg(scored.size())
@@ -504,9 +529,11 @@ QJsonObject attributes()
         }
     }
     report << shippedHairLength(rows, detected);
-    report << hairLength(rows, detected, k, "hairDrop", false);
-    report << hairLength(rows, detected, k, "hairDrop", true);
-    report << hairLength(rows, detected, k, "hairFall", true);
+    report << hairLength(rows, detected, k, "hairDrop", nullptr);
+    report << hairLength(rows, detected, k, "hairDrop", "hairSeen");
+    report << hairLength(rows, detected, k, "hairDrop", "noHairSeen");
+    report << hairLength(rows, detected, k, "hairFall", "hairSeen");
+    report << hairLength(rows, detected, k, "hairFall", "templeHairSeen");
     // Facial hair drawn on women and children.
     int onWomen = 0, onChildren = 0;
     for (size_t i : detected) {
@@ -558,6 +585,11 @@ QJsonObject attributes()
     for (const Labelled &r : rows) {
         QJsonObject o;
         o.insert(QStringLiteral("file"), r.file);
+        o.insert(QStringLiteral("hairColour"), r.hairColour);
+        o.insert(QStringLiteral("headwear"), r.headwear);
+        o.insert(QStringLiteral("skin"), r.skin);
+        o.insert(QStringLiteral("age"), r.age);
+        o.insert(QStringLiteral("sex"), r.sex);
         if (r.detected) {
             QJsonObject m;
             for (const auto &[key, value] : r.m)
@@ -565,6 +597,9 @@ QJsonObject attributes()
             o.insert(QStringLiteral("m"), m);
             o.insert(QStringLiteral("drawnL"), r.drawnL);
             o.insert(QStringLiteral("cheekL"), r.cheekL);
+            o.insert(QStringLiteral("drawnHair"), r.drawnHair.name());
+            o.insert(QStringLiteral("drawnSkin"), r.drawnSkin.name());
+            o.insert(QStringLiteral("parsedHair"), r.parsedHair.isValid() ? r.parsedHair.name() : QString());
         }
         perFace.append(o);
     }

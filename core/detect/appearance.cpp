@@ -304,8 +304,19 @@ AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, co
         out.scalpReach = parse.scalpReach;
         out.hairSeen = parse.hairSeen;
         out.hairFall = parse.hairFall;
+        out.templeHairSeen = parse.templeHairSeen;
+        out.fallCut = parse.fallCut;
+        out.cover = measureCover(parse);
+        if (parse.hairSeen)
+            out.parsedHair = parse.hair;
     }
     findHead(px, face, es0, skin, &out);
+    // What lies over the forehead in the parse, where the crown's rules saw no hat (a tight crop
+    // shows only the band of a cap or a scarf).
+    if (!out.appearance.bald && !out.appearance.hat && isHeadwear(out.cover)) {
+        out.appearance.hat = true;
+        out.hat = out.cover.colour;
+    }
     rateAppearance(face, &out);
     return out;
 }

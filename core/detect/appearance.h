@@ -1,6 +1,7 @@
 #pragma once
 
 #include "detect/appearanceevidence.h"
+#include "detect/headcover.h"
 #include "face/facemodel.h"
 #include "render/style.h"
 
@@ -61,6 +62,13 @@ struct AppearanceFindings
     // crown showed its colour).
     bool hairSeen = false;
     double hairFall = 0;
+    // ... measured from the hair's colour beside the temples (a tight crop), and whether the
+    // photo ends while the hair still falls.
+    bool templeHairSeen = false, fallCut = false;
+    // What lies over the forehead and beside the face in the parse (headcover.h), and the hair's
+    // colour the parse sampled over the forehead (invalid when it saw none).
+    HeadCover cover;
+    QColor parsedHair;
     double hatScore = 0; // the crown's hue outside hair's hues, in degrees, times its saturation
     AppearanceEvidence evidence; // measured against the cheeks in L*a*b*
     HairLength hairLength = HairLength::Short;
@@ -99,6 +107,12 @@ struct AppearanceFindings
     // whose crown shows hair: held-out 0.60, the outline's drop 0.45 on the same faces).
     static constexpr double kFallMedium = -0.70;
     static constexpr double kFallLong = 0.16;
+    // ... and where a tight crop showed the hair's colour only beside the temples, by hairFall
+    // measured from there: cross-validated the same way on the 44 such faces (held-out 0.66; the
+    // outline's drop calls nearly all of them short). The two thresholds lie close: a crop cut at
+    // the chin seldom tells medium from long.
+    static constexpr double kTempleFallMedium = -0.554;
+    static constexpr double kTempleFallLong = -0.508;
 
     // Rims under the eyes and a bridge as edges over the skin's texture (glassesScore): kept from
     // the shared photos as a second way to find a frame; on faces-attributes it draws glasses on

@@ -36,10 +36,15 @@ void judgeConfidence(AppearanceFindings *out)
     out->confidence.glasses = sureness(frame, 1.0);
     out->confidence.bald = !out->crownCut ? sureness(out->scalpReach - A::kScalpReach, 0.1)
                                           : sureness(out->baldScore - A::kBaldThreshold, 0.2);
-    out->confidence.headwear = sureness(std::min(out->crownToHair, out->crownToSkin) - A::kHatContrast, 15.0);
+    out->confidence.headwear = out->cover.seen && !out->crownToHair
+        ? sureness(out->cover.hueOff * out->cover.chroma / 100.0 - kCoverColourScore, 10.0)
+        : sureness(std::min(out->crownToHair, out->crownToSkin) - A::kHatContrast, 15.0);
     out->confidence.hairLength = out->appearance.bald ? out->confidence.bald
         : out->hairSeen
         ? sureness(std::min(std::abs(out->hairFall - A::kFallMedium), std::abs(out->hairFall - A::kFallLong)), 0.3)
+        : out->templeHairSeen
+        ? sureness(
+            std::min(std::abs(out->hairFall - A::kTempleFallMedium), std::abs(out->hairFall - A::kTempleFallLong)), 0.3)
         : sureness(std::min(std::abs(out->hairDrop - A::kHairMedium), std::abs(out->hairDrop - A::kHairLong)), 0.1);
 }
 
@@ -52,6 +57,10 @@ HairLength hairLengthOf(const AppearanceFindings &f)
         return f.hairFall >= AppearanceFindings::kFallLong  ? HairLength::Long
             : f.hairFall >= AppearanceFindings::kFallMedium ? HairLength::Medium
                                                             : HairLength::Short;
+    if (f.templeHairSeen)
+        return f.hairFall >= AppearanceFindings::kTempleFallLong  ? HairLength::Long
+            : f.hairFall >= AppearanceFindings::kTempleFallMedium ? HairLength::Medium
+                                                                  : HairLength::Short;
     return f.hairDrop >= AppearanceFindings::kHairLong  ? HairLength::Long
         : f.hairDrop >= AppearanceFindings::kHairMedium ? HairLength::Medium
                                                         : HairLength::Short;

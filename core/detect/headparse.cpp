@@ -32,6 +32,7 @@ constexpr double kNeckHalf = 0.8, kNeckTop = 1.0;
 constexpr double kCurtainHalf = 1.8, kCurtainBottom = 3.0;
 constexpr double kFar = 3.3, kFarBelow = 1.0;
 constexpr int kGrabCutRounds = 2;
+constexpr double kMinRoom = 0.5; // d²: less of the room in the photo is not modelled (a tight crop)
 // Skin: a pixel whose hue (in the a*b* plane), chroma and L* stay near the cheeks' — light and
 // shade change a skin's L* and chroma together and leave its hue (a shine takes both toward white).
 // Within kSkinHue degrees of the cheeks' hue, chroma and L* within a factor kSkinRatio of theirs
@@ -46,6 +47,7 @@ constexpr double kGreyChroma = 4.0;
 constexpr double kHairSampleLow = 0.3, kHairSampleHigh = 1.3, kHairSampleHalf = 0.7, kMinHairSample = 0.1;
 constexpr double kSideGap = 0.05, kSideBand = 0.6, kHairWidth = 0.1, kFallGap = 0.25;
 constexpr double kHairColourDistance = 18.0; // L*a*b* units
+constexpr double kTempleNear = 0.75, kTempleFar = 1.5, kTempleHigh = 1.0;
 // The outline follows the fall (followHairFall) where it ends at least kMinFallGain ES0 lower
 // than the outline's end: the end and the kFallPoints points above it move onto the line from
 // there down to the fall's end.
@@ -162,15 +164,15 @@ QColor medianColour(const cv::Mat &rgb, const cv::Mat &inside, const std::vector
     return QColor(int(medianOf(channels[0])), int(medianOf(channels[1])), int(medianOf(channels[2])));
 }
 
-void measureHairFall(HeadParse *parse, const cv::Mat &lab, double browTop, double eyeY, double chinY,
-    const std::array<QPointF, 2> &leftCheek, const std::array<QPointF, 2> &rightCheek)
+void measureHairFall(HeadParse *parse, const cv::Mat &rgb, const cv::Mat &lab, double browTop, double eyeY,
+    double chinY, const std::array<QPointF, 2> &leftCheek, const std::array<QPointF, 2> &rightCheek)
 {
     const double d = kParseEyeDistance;
     HeadParse &out = *parse;
     const double mid = out.size.width() / 2.0;
     // The hair's colour: the median of the person's pixels other than skin over the forehead
     // (kHairSampleLow..kHairSampleHigh d above the brows, kHairSampleHalf d either side).
-    std::array<std::vector<double>, 3> sample;
+    std::array<std::vector<double>, 3> sample, sampleRgb;
     for (int y = std::max(0, int(browTop - kHairSampleHigh * d)); y <= int(browTop - kHairSampleLow * d); ++y)
         for (int x = int(mid - kHairSampleHalf * d); x <= int(mid + kHairSampleHalf * d); ++x)
             if (out.at(x, y) == HeadParse::Other) {
@@ -178,11 +180,40 @@ void measureHairFall(HeadParse *parse, const cv::Mat &lab, double browTop, doubl
                 sample[0].push_back(c.l);
                 sample[1].push_back(c.a);
                 sample[2].push_back(c.b);
+                const cv::Vec3b p = rgb.at<cv::Vec3b>(y, x);
+                for (size_t k = 0; k < 3; ++k)
+                    sampleRgb[k].push_back(p[int(k)]);
             }
-    if (sample[0].size() < size_t(kMinHairSample * d * d))
-        return;
+    // A tight crop shows little or nothing over the forehead: the hair beside the temples
+    // (kTempleNear..kTempleFar d out from the midline, from kTempleHigh d over the brows' top
+    // down to the eyes) tells its colour instead.
+    bool fromTemples = false;
+    if (sample[0].size() < size_t(kMinHairSample * d * d)) {
+        for (auto &c : sample)
+            c.clear();
+        for (auto &c : sampleRgb)
+            c.clear();
+        for (int y = std::max(0, int(browTop - kTempleHigh * d)); y <= int(eyeY); ++y)
+            for (int x = 0; x < out.size.width(); ++x) {
+                const double off = std::abs(x - mid) / d;
+                if (off < kTempleNear || off > kTempleFar || out.at(x, y) != HeadParse::Other)
+                    continue;
+                const Lab c = labAt(lab, x, y);
+                sample[0].push_back(c.l);
+                sample[1].push_back(c.a);
+                sample[2].push_back(c.b);
+                const cv::Vec3b p = rgb.at<cv::Vec3b>(y, x);
+                for (size_t k = 0; k < 3; ++k)
+                    sampleRgb[k].push_back(p[int(k)]);
+            }
+        if (sample[0].size() < size_t(kMinHairSample * d * d))
+            return;
+        fromTemples = true;
+    }
     const Lab hair {medianOf(sample[0]), medianOf(sample[1]), medianOf(sample[2])};
-    out.hairSeen = true;
+    out.hairSeen = !fromTemples;
+    out.templeHairSeen = fromTemples;
+    out.hair = QColor(int(medianOf(sampleRgb[0])), int(medianOf(sampleRgb[1])), int(medianOf(sampleRgb[2])));
     // Down each side from the eyes' line: a row is hair where at least kHairWidth d of a band
     // beside the face (from the cheek's line outward, kSideBand d wide) is the person, not skin,
     // within kHairColourDistance of the hair's colour (a strand or a curtain of it); the fall ends where kFallGap d of
@@ -224,7 +255,7 @@ void measureHairFall(HeadParse *parse, const cv::Mat &lab, double browTop, doubl
                     }
                 }
             }
-            if (n < outside) {
+            if (n < kHairWidth * d) { // too little of the band inside the photo to tell
                 cut = true;
                 break;
             }
@@ -247,7 +278,7 @@ void measureHairFall(HeadParse *parse, const cv::Mat &lab, double browTop, doubl
 
 bool followHairFall(FaceModel *face, const HeadParse &parse)
 {
-    if (!parse.valid || !parse.hairSeen || !face->isValid())
+    if (!parse.valid || !(parse.hairSeen || parse.templeHairSeen) || !face->isValid())
         return false;
     const double es0 = QLineF(face->point("3.6"), face->point("3.5")).length();
     bool moved = false;
@@ -348,10 +379,12 @@ HeadParse parseHead(const QImage &photo, const FaceModel &face)
         cv::Mat roiMask = mask(covered);
         cv::Mat person = (roiMask == cv::GC_FGD) | (roiMask == cv::GC_PR_FGD);
         const int people = cv::countNonZero(person);
-        if (people > 0 && people < int(roiMask.total())) {
+        // A tight crop of the face (the photo holds little or nothing beyond where the person
+        // probably is) leaves too little of the room to model: its seeds stand as they are.
+        const int room = int(roiMask.total()) - people;
+        if (people > 0 && room >= kMinRoom * d * d)
             cv::grabCut(work(covered), roiMask, cv::Rect(), bgModel, fgModel, kGrabCutRounds, cv::GC_INIT_WITH_MASK);
-            grabbed = true;
-        }
+        grabbed = people > 0;
     }
     cv::theRNG() = saved;
     if (!grabbed)
@@ -382,6 +415,15 @@ HeadParse parseHead(const QImage &photo, const FaceModel &face)
         QPoint(int(std::ceil(centre.x() - kForeheadHalf * d)), int(std::ceil(browTop - kForeheadHigh * d))),
         QPoint(int(std::floor(centre.x() + kForeheadHalf * d)), int(std::floor(browTop - kForeheadLow * d))));
     const SkinModel forehead = cheekModel(lab, inside, {foreheadBox});
+    out.work = QImage(work.data, work.cols, work.rows, int(work.step), QImage::Format_RGB888).copy();
+    out.cheeks = cheekColour;
+    out.browTop = browTop;
+    for (const char *id : kBrows)
+        out.brows.push_back(w(id));
+    out.sideCheeks[0][0] = w("5.2");
+    out.sideCheeks[0][1] = w("2.14");
+    out.sideCheeks[1][0] = w("5.1");
+    out.sideCheeks[1][1] = w("2.13");
     const bool foreheadIsSkin = forehead.valid && skin.isSkin(forehead.centre());
     const double foreheadL = foreheadIsSkin ? forehead.l : skin.l;
     // (Skin also where a shine lights it toward white.)
@@ -443,6 +485,7 @@ HeadParse parseHead(const QImage &photo, const FaceModel &face)
             ++cut;
             continue;
         }
+        out.foreheadTop.emplace_back(x, skinTop);
         // (Hair or a hat running to the photo's edge still lies over the forehead's skin.)
         tops += headCut;
         const double height = browTop - headTop;
@@ -455,7 +498,7 @@ HeadParse parseHead(const QImage &photo, const FaceModel &face)
         out.headHeight = medianOf(heights);
         out.scalpReach = medianOf(reaches);
     }
-    measureHairFall(&out, lab, browTop, w("3.4").y(), w("2.1").y(), {w("5.2"), w("2.14")}, {w("5.1"), w("2.13")});
+    measureHairFall(&out, work, lab, browTop, w("3.4").y(), w("2.1").y(), {w("5.2"), w("2.14")}, {w("5.1"), w("2.13")});
     out.valid = true;
     return out;
 }

@@ -2,7 +2,9 @@
 
 #include "face/facemodel.h"
 
+#include <QColor>
 #include <QImage>
+#include <QPoint>
 #include <QPointF>
 #include <QSize>
 #include <QTransform>
@@ -47,8 +49,19 @@ struct HeadParse
     // point (negative: above it). hairSeen: the crown showed hair to take the colour from;
     // fallCut: the photo ends while the hair still falls.
     bool hairSeen = false, fallCut = false;
+    bool templeHairSeen = false; // the crown showed none, the temples did (a tight crop): its colour came from there
     double hairFall = 0;
     QPointF fallEnds[2]; // in the photo: where each side's fall ends, at the hair's outer edge (left, right)
+
+    // What the parse measured in: the work frame's pixels (RGB), the cheeks' median colour, the
+    // brows' points and their top row, the hair's colour (sampled over the forehead; invalid
+    // unless hairSeen), and up each forehead column the skin's last pixel below the photo's edge.
+    QImage work;
+    QColor cheeks, hair;
+    std::vector<QPointF> brows;
+    double browTop = 0;
+    std::vector<QPoint> foreheadTop;
+    QPointF sideCheeks[2][2]; // the cheeks' lines beside the face (left, right), each from eye level to the jaw
 
     Label at(int x, int y) const { return Label(labels[size_t(y) * size.width() + x]); }
 };

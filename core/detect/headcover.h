@@ -1,0 +1,41 @@
+#pragma once
+
+#include "detect/headparse.h"
+
+#include <QColor>
+
+namespace toonface {
+
+// What lies over the forehead and beside the face in a parse of the head (headparse.h): the
+// evidence a hat, a cap, a scarf or a wrap leaves that hair does not. Hair takes the brows'
+// colour family and the hues hair grows in, its edge over the forehead curves or breaks into
+// strands; a covering is often a colour no hair has, unlike the brows, with a straight edge low
+// on the forehead, and a scarf wraps the sides of the face in the same colour.
+struct HeadCover
+{
+    bool seen = false; // enough of the person, not skin, right over the forehead to measure
+    double l = 0, a = 0, b = 0; // its median CIE L*a*b*
+    QColor colour; // ... in sRGB
+    double chroma = 0;
+    double hueOff = 0; // degrees its hue lies outside the hues hair grows in (0 inside them, or too grey to tell)
+    double toSkin = 0, toBrows = 0; // L*a*b* distances from the cheeks' and the brows' colours
+    double lighter = 0; // its L* over the brows' (positive: lighter)
+    double edgeSpread = -1; // the forehead's top edge about its best straight line, in eye distances (80th percentile)
+    double edgeHeight = 0; // the forehead's top edge above the brows' top, in eye distances (median)
+    double sides = 0; // share of bands beside the cheeks of its colour (a scarf or a hood wraps them)
+};
+
+HeadCover measureCover(const HeadParse &parse);
+
+// Whether the covering is headwear, not hair: a colour no hair grows in (its hue outside hair's,
+// by kColourScore degrees times chroma / 100; not in colours darker than kCoverDarkest in HSV value,
+// whose hue a cast decides: black hair goes navy under a cool light), or white far lighter than the brows (hair that
+// white goes with white brows). Thresholds chosen by cross-validation over the labelled faces
+// (`toonface-bench likeness.attributes` prints the held-out folds).
+bool isHeadwear(const HeadCover &cover);
+inline constexpr double kCoverColourScore = 10.0;
+inline constexpr double kCoverDarkest = 0.2;
+inline constexpr double kCoverWhiteL = 80.0;
+inline constexpr double kCoverWhiteOverBrows = 50.0;
+
+} // namespace toonface
