@@ -22,9 +22,11 @@ namespace {
 constexpr double kCoverHalf = 0.6, kCoverLow = 0.25, kCoverHigh = 2.0;
 constexpr double kMinCover = 0.03;
 // Hair grows in hues (the a*b* plane's angle) from kHairHue[0] to kHairHue[1] degrees: blacks,
-// browns, blondes and reds (a red scarf is far more saturated: chroma tells those apart); below
+// browns, blondes and reds (a red scarf is far more saturated: chroma tells those apart), about
+// a skin of hue kSkinHue; a colour cast turns both, so the range turns with the cheeks' hue. Below
 // kGreyChroma a colour shows no hue (black, grey, white).
 constexpr double kHairHue[2] = {20.0, 100.0};
+constexpr double kSkinHue = 55.0;
 constexpr double kGreyChroma = 8.0;
 // The brows: the person's pixels other than skin within kBrowReach d of their points' line.
 constexpr double kBrowReach = 0.1;
@@ -146,13 +148,16 @@ HeadCover measureCover(const HeadParse &parse)
         const cv::Vec3b v = rgb.at<cv::Vec3b>(0, 0);
         out.colour = QColor(v[0], v[1], v[2]);
     }
+    const Lab skin = labOf(parse.cheeks);
     if (out.chroma >= kGreyChroma) {
-        const double hue = std::atan2(c.b, c.a) * 180.0 / std::numbers::pi;
+        const double cast = std::hypot(skin.a, skin.b) >= kGreyChroma
+            ? std::remainder(std::atan2(skin.b, skin.a) * 180.0 / std::numbers::pi - kSkinHue, 360.0)
+            : 0.0;
+        const double hue = std::remainder(std::atan2(c.b, c.a) * 180.0 / std::numbers::pi - cast, 360.0);
         auto off = [](double from, double to) { return std::abs(std::remainder(to - from, 360.0)); };
         out.hueOff
             = hue >= kHairHue[0] && hue <= kHairHue[1] ? 0.0 : std::min(off(hue, kHairHue[0]), off(hue, kHairHue[1]));
     }
-    const Lab skin = labOf(parse.cheeks);
     out.toSkin = distance(c, skin);
 
     Sample brows;
