@@ -317,6 +317,8 @@ AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, co
         out.appearance.hat = true;
         out.hat = out.cover.colour;
     }
+    // Headwear whose colour also covers the bands beside the cheeks wraps the head.
+    out.appearance.wrap = out.appearance.hat && out.cover.seen && out.cover.sides >= kWrapSides;
     rateAppearance(face, &out);
     return out;
 }

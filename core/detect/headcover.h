@@ -37,5 +37,8 @@ inline constexpr double kCoverColourScore = 10.0;
 inline constexpr double kCoverDarkest = 0.2;
 inline constexpr double kCoverWhiteL = 80.0;
 inline constexpr double kCoverWhiteOverBrows = 50.0;
+// Headwear wraps the head (a headscarf, a hood) when its colour covers at least this share of the
+// bands beside the cheeks (half: hair or the room beside the face fill the rest of them otherwise).
+inline constexpr double kWrapSides = 0.5;
 
 } // namespace toonface

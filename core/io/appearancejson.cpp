@@ -19,6 +19,9 @@ QJsonObject appearanceToJson(const Style &style, const AppearanceFindings &findi
     out.insert(QStringLiteral("hairLength"), hairLengthName(a.bald ? HairLength::None : findings.hairLength));
     out.insert(QStringLiteral("bald"), a.bald);
     out.insert(QStringLiteral("headwear"), a.hat);
+    // What kind: "hat" (over the crown) or "wrap" (a headscarf or hood around the face); null without.
+    out.insert(QStringLiteral("headwearKind"),
+        a.hat ? QJsonValue(a.wrap ? QStringLiteral("wrap") : QStringLiteral("hat")) : QJsonValue());
     out.insert(QStringLiteral("moustache"), a.moustache);
     out.insert(QStringLiteral("beard"), a.beard);
     out.insert(QStringLiteral("goatee"), a.goatee);

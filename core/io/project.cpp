@@ -144,6 +144,7 @@ QJsonObject styleToJson(const Style &style)
     look.insert(QStringLiteral("beard"), style.appearance.beard);
     look.insert(QStringLiteral("goatee"), style.appearance.goatee);
     look.insert(QStringLiteral("hat"), style.appearance.hat);
+    look.insert(QStringLiteral("wrap"), style.appearance.wrap);
     look.insert(QStringLiteral("bald"), style.appearance.bald);
     if (const GlassesFit &lens = style.appearance.lens; lens.isSet())
         look.insert(QStringLiteral("lens"),
@@ -189,6 +190,9 @@ bool styleFromJson(const JsonField &field, Style *style, QString *error)
             || !enumFromJson(kGlassesShapes, &glassesShapeName, look.member("glasses"), &a.glasses, error)
             || !look.member("moustache").toBool(&a.moustache, error) || !look.member("beard").toBool(&a.beard, error)
             || !look.member("hat").toBool(&a.hat, error) || !look.member("bald").toBool(&a.bald, error))
+            return false;
+        // Added later: without it, no wrap.
+        if (const JsonField wrap = look.member("wrap"); !wrap.isMissing() && !wrap.toBool(&a.wrap, error))
             return false;
         // Added later: without it, no goatee.
         if (const JsonField goatee = look.member("goatee"); !goatee.isMissing() && !goatee.toBool(&a.goatee, error))

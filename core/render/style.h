@@ -35,7 +35,8 @@ enum class EyebrowVariant { Polyline, Bezier, Thick };
 enum class GlassesShape { None, Round, Rectangular, Rimless };
 
 // What a photo shows of the person beyond the 72 points: things worn and kinds of hair that the
-// drawing adds as layers of their own (SVG ids "glasses", "moustache", "beard" (a beard or a goatee), "hat"), each only
+// drawing adds as layers of their own (SVG ids "glasses", "moustache", "beard" (a beard or a goatee), "hat" and
+// "hat-wrap"), each only
 // when found. Their colours are the components "glasses" (stroke: frame; fill: lens tint, usually
 // transparent), "moustache", "beard" and "hat"; a component's `visible` switches its layer off.
 // The lenses as measured on the photo, in ES0 about each eye's middle (between its corners):
@@ -59,6 +60,9 @@ struct Appearance
     bool hat = false; // the top of the head is a hat, not hair
     bool bald = false; // the head shows the skull: the hair outline is drawn as skin
     GlassesFit lens; // the lenses' size and place, when measured
+    // The hat wraps the head's sides and falls past the chin (a headscarf, a hood): drawn around
+    // the face in the hat's colour, no hair showing.
+    bool wrap = false;
 
     bool operator==(const Appearance &) const = default;
 };

@@ -464,7 +464,11 @@ SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
 
     auto visible = [&](const char *key) { return componentStyle(style.components, key).visible; };
     const Appearance &look = style.appearance;
-    if (visible("hair") && !look.bald)
+    // A wrap hides the hair; it lies behind the face, its crown and brim (the hat) in front.
+    const bool wrapped = look.hat && look.wrap && visible("hat");
+    if (wrapped)
+        g.staticParts.push_back(makeWrap(P, g.centre, g.es0, style.cornerCutDepth));
+    else if (visible("hair") && !look.bald)
         g.staticParts.push_back(makeHair(P, g, style.cornerCutDepth));
     if (visible("ears")) {
         makeEar(P, g, true, &g.staticParts);

@@ -18,6 +18,9 @@ constexpr double kGoateeReach = 0.3; // how far from a mouth corner toward the j
 constexpr double kMoustacheGap = 0.12; // share of nose-to-lip left bare under the nose
 constexpr double kMoustacheOverLip = 0.025;
 constexpr double kHatBrimReach = 0.06;
+// A wrap lies kWrapOutset ES0 outside the hair outline and the cheeks, and reaches kWrapBelowChin
+// ES0 under the chin (a scarf's fold under it, past where the jaw opens).
+constexpr double kWrapOutset = 0.08, kWrapBelowChin = 0.45;
 // A skull's top above the eyes' level, in ES0 (eye distances): adult heads measure about 1.5
 // (9-10 cm over a 6.3 cm eye distance); the drawing keeps within these.
 constexpr double kSkullHeight[2] = {1.2, 1.9};
@@ -198,6 +201,30 @@ Part makeHat(const Pt &P, double es0, int depth)
     outline.append({(left + right) / 2.0, brim + 0.1 * es0});
     const QVector<QPointF> shape = cornerCutPolyline(outline, depth, true);
     return {"hat", false, "polygon", {{"points", pointList(shape)}}, "hat"};
+}
+
+Part makeWrap(const Pt &P, QPointF centre, double es0, int depth)
+{
+    QVector<QPointF> outline;
+    // Over the head: the hair outline pushed out from the face's centre.
+    for (int i = 0; i < 19; ++i) {
+        const QPointF h = P.p[pt::idx("h.1") + i];
+        const QPointF out = h - centre;
+        const double len = std::max(1e-9, std::hypot(out.x(), out.y()));
+        outline.append(h + out / len * (kWrapOutset * es0));
+    }
+    // Down the sides, wider than the cheeks, and round under the chin.
+    const QPointF chin = P("2.1");
+    const double right = std::max(P("5.1").x(), outline.last().x()) + kWrapOutset * es0;
+    const double left = std::min(P("5.2").x(), outline.first().x()) - kWrapOutset * es0;
+    const double bottom = chin.y() + kWrapBelowChin * es0;
+    outline.append({right, std::max(outline.last().y(), P("2.13").y())});
+    outline.append({right - 0.1 * es0, bottom - 0.1 * es0});
+    outline.append({chin.x(), bottom});
+    outline.append({left + 0.1 * es0, bottom - 0.1 * es0});
+    outline.append({left, std::max(outline.first().y(), P("2.14").y())});
+    const QVector<QPointF> shape = cornerCutPolyline(outline, depth, true);
+    return {"hat-wrap", false, "polygon", {{"points", pointList(shape)}}, "hat"};
 }
 
 QByteArray baldFaceOutline(const Pt &P, double es0, QPointF startTangent, QPointF endTangent)

@@ -10,6 +10,9 @@ namespace toonface::svgparts {
 
 // Static: the hat, over the hair and the top of the face, below the brows.
 Part makeHat(const Pt &P, double es0, int depth);
+// A headscarf's or a hood's cloth around the face (behind it): over the head a little outside
+// the hair outline, down both sides past the cheeks and jaw to under the chin.
+Part makeWrap(const Pt &P, QPointF centre, double es0, int depth);
 // Dynamic: the beard follows the jaw (it opens with it) and the lower lip; drawn before the mouth.
 Part makeBeard(const Pt &P, double es0);
 // Dynamic: a goatee, the chin's part of a beard (under the lower lip, round the chin), with the

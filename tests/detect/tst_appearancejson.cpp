@@ -41,7 +41,12 @@ QString schemaProblem(const QJsonObject &a)
         if (!c.isDouble() || c.toDouble() < 0 || c.toDouble() > 1)
             return QStringLiteral("confidence.%1: expected a number in 0..1").arg(QLatin1StringView(key));
     }
-    if (a.size() != 10 || confidence.size() != 7)
+    const QJsonValue kind = a.value(QLatin1StringView("headwearKind"));
+    if (a.value(QLatin1StringView("headwear")).toBool()
+            ? kind.toString() != QLatin1StringView("hat") && kind.toString() != QLatin1StringView("wrap")
+            : !kind.isNull())
+        return QStringLiteral("headwearKind: expected hat or wrap with headwear, null without");
+    if (a.size() != 11 || confidence.size() != 7)
         return QStringLiteral("unexpected keys");
     return {};
 }

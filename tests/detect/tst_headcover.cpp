@@ -68,9 +68,18 @@ void headscarf(QImage *photo, const FaceModel &face, const QColor &cloth)
     p.setBrush(cloth);
     const double es0 = QLineF(face.point("3.6"), face.point("3.5")).length();
     const double edge = std::min(face.point("4.2").y(), face.point("4.1").y()) - 0.45 * es0;
+    // Over the head a little outside its outline, and down the sides to the shoulders.
+    QPolygonF head;
+    const QPointF centre = (face.point("5.2") + face.point("5.1")) / 2.0;
+    for (int i = 0; i < 19; ++i) {
+        const QPointF h = face.point(pt::idx("h.1") + i);
+        head << h + (h - centre) * 0.12;
+    }
+    const double bottom = face.point("2.1").y() + 0.8 * es0;
+    head << QPointF(face.point("5.1").x() + 0.5 * es0, bottom) << QPointF(face.point("5.2").x() - 0.5 * es0, bottom);
     QPainterPath scarf;
-    scarf.addRect(QRectF(face.point("5.2").x() - 1.2 * es0, 0,
-        face.point("5.1").x() - face.point("5.2").x() + 2.4 * es0, double(photo->height())));
+    scarf.addPolygon(head);
+    scarf.closeSubpath();
     QPolygonF faceShape;
     faceShape << QPointF(face.point("11.2").x(), edge) << QPointF(face.point("11.3").x(), edge);
     for (const char *id : {"5.1", "2.13", "2.11", "2.1", "2.12", "2.14", "5.2"})
@@ -170,6 +179,7 @@ private Q_SLOTS:
         const AppearanceFindings f = findAppearance(crop.photo, crop.face, skin);
         QVERIFY2(f.appearance.hat, qPrintable(describe(f)));
         QVERIFY2(!f.appearance.bald, qPrintable(describe(f)));
+        QVERIFY2(!f.appearance.wrap, qPrintable(describe(f)));
         // Drawn in the cap's colour (within a few L*a*b* units' worth of RGB).
         QVERIFY2(std::abs(f.hat.red() - cap.red()) + std::abs(f.hat.green() - cap.green())
                     + std::abs(f.hat.blue() - cap.blue())
@@ -222,6 +232,8 @@ private Q_SLOTS:
         const AppearanceFindings f = findAppearance(c.photo, c.face, skin);
         QVERIFY2(f.appearance.hat, qPrintable(describe(f)));
         QVERIFY2(!f.appearance.bald, qPrintable(describe(f)));
+        // It covers the sides of the face too: a wrap, not a cap.
+        QVERIFY2(f.appearance.wrap, qPrintable(describe(f) + QStringLiteral(" sides %1").arg(f.cover.sides)));
     }
 
     // Long hair falling beside the face of a tight crop: long; the same face with short hair:

@@ -648,6 +648,40 @@ private Q_SLOTS:
         QVERIFY2(sameDocument(got, want, 0.02, QString(), &why), qPrintable(why));
     }
 
+    // A headscarf: the cloth drawn around the face (behind it, in the hat's colour, past the chin)
+    // instead of the hair, the crown and brim over it; a hat alone leaves the hair drawn.
+    void wrapReplacesTheHair()
+    {
+        const FaceModel face = testFace();
+        Style drawing = Style::preset(QStringLiteral("normal"));
+        drawing.appearance.hat = true;
+        const QByteArray capped = SvgFace(face, drawing).svg();
+        QVERIFY(capped.contains("id=\"hair\""));
+        QVERIFY(!capped.contains("id=\"hat-wrap\""));
+        drawing.appearance.wrap = true;
+        const SvgFace wrapped(face, drawing);
+        const QByteArray svg = wrapped.svg();
+        QVERIFY(!svg.contains("id=\"hair\""));
+        QVERIFY(svg.contains("id=\"hat-wrap\""));
+        QVERIFY(svg.contains("id=\"hat\""));
+        QVERIFY(svg.indexOf("id=\"hat-wrap\"") < svg.indexOf("id=\"face\""));
+        // The wrap reaches under the chin and out past the cheeks.
+        for (const FacePart &part : wrapped.parts()) {
+            if (part.id != QLatin1StringView("hat-wrap"))
+                continue;
+            QPolygonF shape;
+            for (const QString &xy :
+                part.geometry.value(QStringLiteral("points")).split(QLatin1Char(' '), Qt::SkipEmptyParts))
+                shape << QPointF(
+                    xy.section(QLatin1Char(','), 0, 0).toDouble(), xy.section(QLatin1Char(','), 1, 1).toDouble());
+            const QRectF box = shape.boundingRect();
+            QVERIFY(box.bottom() > face.point("2.1").y());
+            QVERIFY(box.left() < face.point("5.2").x() && box.right() > face.point("5.1").x());
+            return;
+        }
+        QFAIL("no hat-wrap part");
+    }
+
     void goldenComparisonNoticesChanges()
     {
         // The comparison itself: tolerant of rounding, not of real changes.
