@@ -1,5 +1,6 @@
 #include "views/pointhandle.h"
 
+#include "views/displaynames.h"
 #include "views/photoview.h"
 
 #include <QCoreApplication>
@@ -33,20 +34,6 @@ QRectF labelRect(int index)
 }
 
 } // namespace
-
-QString PointHandle::groupDisplayName(PointGroup group)
-{
-    switch (group) {
-    case PointGroup::Hair: return QCoreApplication::translate("PointHandle", "hair");
-    case PointGroup::Contour: return QCoreApplication::translate("PointHandle", "face contour");
-    case PointGroup::Ears: return QCoreApplication::translate("PointHandle", "ears");
-    case PointGroup::Eyebrows: return QCoreApplication::translate("PointHandle", "eyebrows");
-    case PointGroup::Eyes: return QCoreApplication::translate("PointHandle", "eyes");
-    case PointGroup::Nose: return QCoreApplication::translate("PointHandle", "nose");
-    case PointGroup::Mouth: return QCoreApplication::translate("PointHandle", "mouth");
-    }
-    return groupName(group);
-}
 
 PointHandle::PointHandle(PhotoView *view, int index)
     : m_view(view)
@@ -185,8 +172,7 @@ void PointHandle::mouseReleaseEvent(QGraphicsSceneMouseEvent *event)
 void PointHandle::updateToolTip()
 {
     const PointInfo &info = pointTable()[m_index];
-    QString tip = QCoreApplication::translate("PointHandle", "Point %1 (%2)")
-                      .arg(pointId(m_index), groupDisplayName(info.group));
+    QString tip = pointTitle(m_index);
     if (info.control)
         tip += QLatin1Char('\n') + QCoreApplication::translate("PointHandle", "Control point: animation moves it");
     if (m_handPlaced)
