@@ -46,9 +46,9 @@
     </message>
     <message numerus="yes">
         <source>The project&apos;s audio track (%n recording(s), mixed)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>The project&apos;s audio track (%n recording, mixed)</numerusform>
+            <numerusform>The project&apos;s audio track (%n recordings, mixed)</numerusform>
         </translation>
     </message>
 </context>
