@@ -152,6 +152,19 @@ void TimelineEvaluator::buildPose(const Timeline &timeline, double es0)
     }
     std::sort(m_posePoints.begin(), m_posePoints.end());
     const qsizetype stride = m_posePoints.size();
+    for (int index : std::as_const(m_posePoints)) {
+        // The jaw handle keys the lower lip (8.2); the chin follows it by rule.
+        const bool mouth = pointTable()[index].group == PointGroup::Mouth;
+        m_poseOnMouth.append(mouth ? 1 : 0);
+        m_poseMovesMouth = m_poseMovesMouth || mouth;
+    }
+    for (const AudioClip &clip : timeline.audioClips()) {
+        if (clip.end() > clip.start())
+            m_speechSpans.append({clip.start(), clip.end()});
+    }
+    if (m_speechSpans.isEmpty() && m_mouthTimes.size() >= 2)
+        m_speechSpans.append({m_mouthTimes.first(), m_mouthTimes.last()});
+    std::sort(m_speechSpans.begin(), m_speechSpans.end());
     for (const PoseKey &k : keys) {
         if (m_poseTimes.isEmpty() || m_poseTimes.last() != k.time) {
             m_poseTimes.append(k.time);
@@ -161,6 +174,38 @@ void TimelineEvaluator::buildPose(const Timeline &timeline, double es0)
         for (qsizetype j = 0; j < stride; ++j)
             values[j] = k.offsetsEs0.value(pointId(m_posePoints[j])) * es0;
     }
+}
+
+double TimelineEvaluator::speechWeightAt(double t) const
+{
+    double weight = 0;
+    for (const auto &[start, end] : m_speechSpans) {
+        if (start - kSpeechFade > t)
+            break;
+        if (t >= start && t <= end)
+            return 1.0;
+        const double away = t < start ? start - t : t - end;
+        if (away < kSpeechFade)
+            weight = std::max(weight, ease(1.0 - away / kSpeechFade));
+    }
+    return weight;
+}
+
+double TimelineEvaluator::poseOnMouthWeightAt(double t) const
+{
+    const double speech = speechWeightAt(t);
+    if (speech == 0.0)
+        return 1.0;
+    double near = 0;
+    const auto after = std::lower_bound(m_poseTimes.cbegin(), m_poseTimes.cend(), t);
+    for (auto it : {after, after == m_poseTimes.cbegin() ? m_poseTimes.cend() : after - 1}) {
+        if (it == m_poseTimes.cend())
+            continue;
+        const double away = std::abs(*it - t);
+        if (away < kPoseKeyReach)
+            near = std::max(near, ease(1.0 - away / kPoseKeyReach));
+    }
+    return std::max(1.0 - speech, near);
 }
 
 QVector<QPointF> TimelineEvaluator::poseOffsetsAt(double t) const
@@ -341,8 +386,9 @@ Pose TimelineEvaluator::evaluate(double t) const
 
     if (!m_poseTimes.isEmpty()) {
         const QVector<QPointF> offsets = poseOffsetsAt(t);
+        const double onMouth = m_poseMovesMouth ? poseOnMouthWeightAt(t) : 1.0;
         for (qsizetype j = 0; j < offsets.size(); ++j)
-            pose.offset[m_posePoints[j]] += offsets[j];
+            pose.offset[m_posePoints[j]] += m_poseOnMouth[j] ? offsets[j] * onMouth : offsets[j];
     }
     return pose;
 }
@@ -397,6 +443,18 @@ TimelineEvaluator::ExportKeys TimelineEvaluator::exportKeys(Tracks tracks) const
             const QPointF *a = m_poseValues.constData() + i * stride;
             return !std::equal(a, a + stride, a + stride);
         });
+        // The speech taking the mouth over from the pose track and giving it back, and the
+        // pose keys' reach into the speech.
+        if (m_poseMovesMouth && !m_speechSpans.isEmpty()) {
+            for (const auto &[start, end] : m_speechSpans) {
+                addMotion(start - kSpeechFade, start);
+                addMotion(end, end + kSpeechFade);
+            }
+            for (double key : m_poseTimes) {
+                addMotion(key - kPoseKeyReach, key);
+                addMotion(key, key + kPoseKeyReach);
+            }
+        }
     }
 
     // Times closer than a microsecond are one time (sums like start + fade may round apart).

@@ -90,6 +90,17 @@ public:
     const QVector<int> &poseTrackPoints() const { return m_posePoints; }
     // The pose track's offsets at t, pixels, in poseTrackPoints() order.
     QVector<QPointF> poseOffsetsAt(double t) const;
+    // How much the speech owns the mouth at t, 0..1: 1 over each recording on the audio track
+    // (over the mouth track when there is none), easing to 0 within kSpeechFade of its edges.
+    double speechWeightAt(double t) const;
+    // How much the pose track's keys on the mouth's points (lips, corners, the jaw by 8.2) count
+    // at t, 0..1: fully where the character is silent, and in speech only around a pose key
+    // (easing to 0 within kPoseKeyReach of it), so an Edit Pose jaw key opens the jaw at its
+    // time, the key the user dragged shows, and the speech's mouth wins the rest of the speech
+    // (a jaw key held the mouth open through all of it). Evaluate() and the export apply it.
+    double poseOnMouthWeightAt(double t) const;
+    static constexpr double kSpeechFade = 0.15;
+    static constexpr double kPoseKeyReach = 0.2;
 
     // The resolved mouth track: the mouth displacements of kMouthControlIds at these times, eased
     // between neighbours (for inspection and tests; mouthAt() samples it).
@@ -144,6 +155,9 @@ private:
     QVector<int> m_posePoints;
     QVector<double> m_poseTimes; // distinct, ascending (the later of equal-time keys wins)
     QVector<QPointF> m_poseValues; // pixels, m_posePoints.size() per key, key after key
+    QVector<char> m_poseOnMouth; // per m_posePoints: a point of the mouth (speech wins there)
+    bool m_poseMovesMouth = false;
+    QVector<std::pair<double, double>> m_speechSpans; // sorted by start
 };
 
 } // namespace toonface

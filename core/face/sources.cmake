@@ -6,4 +6,5 @@ list(APPEND TOONFACE_CORE_SOURCES
   face/emotion.h face/emotion.cpp
   face/pose.h face/pose.cpp
   face/averageface.h face/averageface.cpp
-  face/caricature.h face/caricature.cpp)
+  face/caricature.h face/caricature.cpp
+  face/headturn.h face/headturn.cpp)

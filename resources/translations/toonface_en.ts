@@ -44,6 +44,13 @@
             <numerusform>Wrote %1: %n pages</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>The project&apos;s audio track (%n recording(s), mixed)</source>
+        <translation>
+            <numerusform>The project&apos;s audio track (%n recording, mixed)</numerusform>
+            <numerusform>The project&apos;s audio track (%n recordings, mixed)</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>toonface::ExportAnimationDialog</name>

@@ -67,44 +67,12 @@
 <context>
     <name>MovePointCommand</name>
     <message>
-        <source>Move point %1</source>
-        <translation>移動特徵點 %1</translation>
+        <source>Move %1</source>
+        <translation>移動%1</translation>
     </message>
 </context>
 <context>
     <name>PointHandle</name>
-    <message>
-        <source>hair</source>
-        <translation>頭髮</translation>
-    </message>
-    <message>
-        <source>face contour</source>
-        <translation>臉部輪廓</translation>
-    </message>
-    <message>
-        <source>ears</source>
-        <translation>耳朵</translation>
-    </message>
-    <message>
-        <source>eyebrows</source>
-        <translation>眉毛</translation>
-    </message>
-    <message>
-        <source>eyes</source>
-        <translation>眼睛</translation>
-    </message>
-    <message>
-        <source>nose</source>
-        <translation>鼻子</translation>
-    </message>
-    <message>
-        <source>mouth</source>
-        <translation>嘴巴</translation>
-    </message>
-    <message>
-        <source>Point %1 (%2)</source>
-        <translation>特徵點 %1（%2）</translation>
-    </message>
     <message>
         <source>Control point: animation moves it</source>
         <translation>控制點：動畫會移動它</translation>
@@ -505,6 +473,18 @@
         <source>The landmark method could not serve: %1</source>
         <translation>關鍵點方法無法使用：%1</translation>
     </message>
+    <message>
+        <source>The face is turned about %1° to the side.</source>
+        <translation>臉轉向一側約 %1°。</translation>
+    </message>
+    <message>
+        <source>The head is tilted about %1°.</source>
+        <translation>頭傾斜約 %1°。</translation>
+    </message>
+    <message>
+        <source>The cartoon is drawn from the front and will look twisted: a photo looking straight into the camera works best.</source>
+        <translation>卡通是從正面畫的，會顯得扭曲：正面直視鏡頭的照片效果最好。</translation>
+    </message>
 </context>
 <context>
     <name>toonface::Autosaver</name>
@@ -528,24 +508,12 @@
         <translation>加入眨眼</translation>
     </message>
     <message>
-        <source>Blinks at a person&apos;s pace: about one every three and a half seconds, now and then two in a row. The same seed always gives the same blinks.</source>
-        <translation>依真人的節奏眨眼：大約每三秒半一次，偶爾連眨兩下。相同的種子永遠產生相同的眨眼。</translation>
-    </message>
-    <message>
-        <source>&amp;New Seed</source>
-        <translation>新種子(&amp;N)</translation>
-    </message>
-    <message>
         <source>The &amp;whole animation (%1 s)</source>
         <translation>整段動畫（%1 秒）(&amp;W)</translation>
     </message>
     <message>
         <source>to</source>
         <translation>到</translation>
-    </message>
-    <message>
-        <source>&amp;Seed:</source>
-        <translation>種子(&amp;S)：</translation>
     </message>
     <message>
         <source>Over:</source>
@@ -566,6 +534,18 @@
         <translation>
             <numerusform>此範圍原有的 %n 次眨眼會被取代。</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Blinks at a person&apos;s pace: about one every three and a half seconds, now and then two in a row. The same pattern number always gives the same blinks.</source>
+        <translation>以真人的節奏眨眼：大約每三秒半一次，偶爾連續兩次。同一個樣式編號總是產生相同的眨眼。</translation>
+    </message>
+    <message>
+        <source>&amp;Shuffle</source>
+        <translation>隨機(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Pattern:</source>
+        <translation>樣式(&amp;P)：</translation>
     </message>
 </context>
 <context>
@@ -687,6 +667,16 @@
     <message>
         <source>Cancelled; nothing was written.</source>
         <translation>已取消；沒有寫入任何檔案。</translation>
+    </message>
+    <message numerus="yes">
+        <source>The project&apos;s audio track (%n recording(s), mixed)</source>
+        <translation>
+            <numerusform>專案的音軌（%n 段錄音，混音）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Mixing the recordings…</source>
+        <translation>正在混合錄音…</translation>
     </message>
 </context>
 <context>
@@ -2902,10 +2892,6 @@ The points are unchanged.</source>
         <translation>風格「%1」</translation>
     </message>
     <message>
-        <source>Point %1 (%2) at %3, %4</source>
-        <translation>特徵點 %1（%2）位於 %3, %4</translation>
-    </message>
-    <message>
         <source> · control point</source>
         <translation> · 控制點</translation>
     </message>
@@ -2924,6 +2910,21 @@ The points are unchanged.</source>
     <message>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>鍵盤快速鍵(&amp;K)</translation>
+    </message>
+    <message>
+        <source>%1 at %2, %3</source>
+        <translation>%1 位於 %2, %3</translation>
+    </message>
+    <message>
+        <source>User &amp;Manual</source>
+        <translation>使用手冊(&amp;M)</translation>
+    </message>
+</context>
+<context>
+    <name>toonface::ManualDialog</name>
+    <message>
+        <source>User Manual</source>
+        <translation>使用手冊</translation>
     </message>
 </context>
 <context>
@@ -3050,22 +3051,6 @@ The points are unchanged.</source>
         <translation>舌尖上抬（n）</translation>
     </message>
     <message>
-        <source>Upper lip 8.9</source>
-        <translation>上唇 8.9</translation>
-    </message>
-    <message>
-        <source>Lower lip 8.2</source>
-        <translation>下唇 8.2</translation>
-    </message>
-    <message>
-        <source>Left corner 8.4</source>
-        <translation>左嘴角 8.4</translation>
-    </message>
-    <message>
-        <source>Right corner 8.3</source>
-        <translation>右嘴角 8.3</translation>
-    </message>
-    <message>
         <source>Corners at the height &amp;midway between the lips (as o)</source>
         <translation>嘴角位於雙唇中間的高度(&amp;M)（如 o）</translation>
     </message>
@@ -3098,22 +3083,6 @@ The points are unchanged.</source>
         <translation>全部重設(&amp;A)</translation>
     </message>
     <message>
-        <source>× MNS0</source>
-        <translation>× MNS0</translation>
-    </message>
-    <message>
-        <source>× MW0</source>
-        <translation>× MW0</translation>
-    </message>
-    <message>
-        <source>× LowerLipH</source>
-        <translation>× LowerLipH</translation>
-    </message>
-    <message>
-        <source>× ES0/100</source>
-        <translation>× ES0/100</translation>
-    </message>
-    <message>
         <source>= pixels here</source>
         <translation>= 此處的像素</translation>
     </message>
@@ -3144,6 +3113,66 @@ The points are unchanged.</source>
     <message>
         <source>Edit Mouth Shapes</source>
         <translation>編輯口型</translation>
+    </message>
+    <message>
+        <source>Upper lip</source>
+        <translation>上唇</translation>
+    </message>
+    <message>
+        <source>Lower lip</source>
+        <translation>下唇</translation>
+    </message>
+    <message>
+        <source>Left corner</source>
+        <translation>左嘴角</translation>
+    </message>
+    <message>
+        <source>Right corner</source>
+        <translation>右嘴角</translation>
+    </message>
+    <message>
+        <source>Drag the four points of the mouth in the picture to change the shape. Each shape fits every face: it moves the lips in proportion to this face&apos;s mouth.</source>
+        <translation>在圖中拖曳嘴巴的四個點即可改變口型。每個口型適用於任何臉：它依這張臉的嘴巴比例移動嘴唇。</translation>
+    </message>
+    <message>
+        <source>Ad&amp;vanced: the numbers</source>
+        <translation>進階：數值(&amp;V)</translation>
+    </message>
+    <message>
+        <source>× nose to mouth</source>
+        <translation>× 鼻到嘴</translation>
+    </message>
+    <message>
+        <source>× mouth width</source>
+        <translation>× 嘴寬</translation>
+    </message>
+    <message>
+        <source>× lower lip</source>
+        <translation>× 下唇</translation>
+    </message>
+    <message>
+        <source>× eye distance/100</source>
+        <translation>× 眼距/100</translation>
+    </message>
+    <message>
+        <source>MNS0: the height from the tip of the nose to the lips</source>
+        <translation>MNS0：鼻尖到嘴唇的高度</translation>
+    </message>
+    <message>
+        <source>MW0: the width of the mouth, corner to corner</source>
+        <translation>MW0：嘴巴的寬度，從嘴角到嘴角</translation>
+    </message>
+    <message>
+        <source>LowerLipH: the height of the lower lip</source>
+        <translation>LowerLipH：下唇的高度</translation>
+    </message>
+    <message>
+        <source>ES0/100: a hundredth of the distance between the eyes</source>
+        <translation>ES0/100：兩眼距離的百分之一</translation>
+    </message>
+    <message>
+        <source>The move on this face, in pixels</source>
+        <translation>在這張臉上移動的像素</translation>
     </message>
 </context>
 <context>
@@ -3247,6 +3276,276 @@ The points are unchanged.</source>
         <source>classic</source>
         <comment>detection method</comment>
         <translation>經典</translation>
+    </message>
+    <message>
+        <source>Hair outline, point %1</source>
+        <comment>a point of the face</comment>
+        <translation>髮際輪廓，第 %1 點</translation>
+    </message>
+    <message>
+        <source>Left temple</source>
+        <comment>a point of the face</comment>
+        <translation>左太陽穴</translation>
+    </message>
+    <message>
+        <source>Hairline, centre</source>
+        <comment>a point of the face</comment>
+        <translation>髮際線中央</translation>
+    </message>
+    <message>
+        <source>Right temple</source>
+        <comment>a point of the face</comment>
+        <translation>右太陽穴</translation>
+    </message>
+    <message>
+        <source>Left cheek</source>
+        <comment>a point of the face</comment>
+        <translation>左臉頰</translation>
+    </message>
+    <message>
+        <source>Right cheek</source>
+        <comment>a point of the face</comment>
+        <translation>右臉頰</translation>
+    </message>
+    <message>
+        <source>Jaw, left, at the mouth</source>
+        <comment>a point of the face</comment>
+        <translation>下顎左側，與嘴同高</translation>
+    </message>
+    <message>
+        <source>Lower jaw, left</source>
+        <comment>a point of the face</comment>
+        <translation>下顎左下方</translation>
+    </message>
+    <message>
+        <source>Chin</source>
+        <comment>a point of the face</comment>
+        <translation>下巴</translation>
+    </message>
+    <message>
+        <source>Lower jaw, right</source>
+        <comment>a point of the face</comment>
+        <translation>下顎右下方</translation>
+    </message>
+    <message>
+        <source>Jaw, right, at the mouth</source>
+        <comment>a point of the face</comment>
+        <translation>下顎右側，與嘴同高</translation>
+    </message>
+    <message>
+        <source>Left ear, top</source>
+        <comment>a point of the face</comment>
+        <translation>左耳，頂端</translation>
+    </message>
+    <message>
+        <source>Left ear, outermost point</source>
+        <comment>a point of the face</comment>
+        <translation>左耳，最外側</translation>
+    </message>
+    <message>
+        <source>Left ear, bottom of the lobe</source>
+        <comment>a point of the face</comment>
+        <translation>左耳，耳垂底端</translation>
+    </message>
+    <message>
+        <source>Left ear, where the lobe meets the cheek</source>
+        <comment>a point of the face</comment>
+        <translation>左耳，耳垂與臉頰交接處</translation>
+    </message>
+    <message>
+        <source>Right ear, top</source>
+        <comment>a point of the face</comment>
+        <translation>右耳，頂端</translation>
+    </message>
+    <message>
+        <source>Right ear, outermost point</source>
+        <comment>a point of the face</comment>
+        <translation>右耳，最外側</translation>
+    </message>
+    <message>
+        <source>Right ear, bottom of the lobe</source>
+        <comment>a point of the face</comment>
+        <translation>右耳，耳垂底端</translation>
+    </message>
+    <message>
+        <source>Right ear, where the lobe meets the cheek</source>
+        <comment>a point of the face</comment>
+        <translation>右耳，耳垂與臉頰交接處</translation>
+    </message>
+    <message>
+        <source>Left eyebrow, outer end</source>
+        <comment>a point of the face</comment>
+        <translation>左眉，外端</translation>
+    </message>
+    <message>
+        <source>Left eyebrow, outer arch</source>
+        <comment>a point of the face</comment>
+        <translation>左眉，外側眉峰</translation>
+    </message>
+    <message>
+        <source>Left eyebrow, inner arch</source>
+        <comment>a point of the face</comment>
+        <translation>左眉，內側眉峰</translation>
+    </message>
+    <message>
+        <source>Left eyebrow, inner end</source>
+        <comment>a point of the face</comment>
+        <translation>左眉，內端</translation>
+    </message>
+    <message>
+        <source>Right eyebrow, inner end</source>
+        <comment>a point of the face</comment>
+        <translation>右眉，內端</translation>
+    </message>
+    <message>
+        <source>Right eyebrow, inner arch</source>
+        <comment>a point of the face</comment>
+        <translation>右眉，內側眉峰</translation>
+    </message>
+    <message>
+        <source>Right eyebrow, outer arch</source>
+        <comment>a point of the face</comment>
+        <translation>右眉，外側眉峰</translation>
+    </message>
+    <message>
+        <source>Right eyebrow, outer end</source>
+        <comment>a point of the face</comment>
+        <translation>右眉，外端</translation>
+    </message>
+    <message>
+        <source>Left eye, outer corner</source>
+        <comment>a point of the face</comment>
+        <translation>左眼，外眼角</translation>
+    </message>
+    <message>
+        <source>Left eye, upper lid</source>
+        <comment>a point of the face</comment>
+        <translation>左眼，上眼瞼</translation>
+    </message>
+    <message>
+        <source>Left eye, inner corner</source>
+        <comment>a point of the face</comment>
+        <translation>左眼，內眼角</translation>
+    </message>
+    <message>
+        <source>Left eye, lower lid</source>
+        <comment>a point of the face</comment>
+        <translation>左眼，下眼瞼</translation>
+    </message>
+    <message>
+        <source>Left eye, centre of the eyeball</source>
+        <comment>a point of the face</comment>
+        <translation>左眼，眼球中心</translation>
+    </message>
+    <message>
+        <source>Right eye, inner corner</source>
+        <comment>a point of the face</comment>
+        <translation>右眼，內眼角</translation>
+    </message>
+    <message>
+        <source>Right eye, upper lid</source>
+        <comment>a point of the face</comment>
+        <translation>右眼，上眼瞼</translation>
+    </message>
+    <message>
+        <source>Right eye, outer corner</source>
+        <comment>a point of the face</comment>
+        <translation>右眼，外眼角</translation>
+    </message>
+    <message>
+        <source>Right eye, lower lid</source>
+        <comment>a point of the face</comment>
+        <translation>右眼，下眼瞼</translation>
+    </message>
+    <message>
+        <source>Right eye, centre of the eyeball</source>
+        <comment>a point of the face</comment>
+        <translation>右眼，眼球中心</translation>
+    </message>
+    <message>
+        <source>Bridge of the nose, left</source>
+        <comment>a point of the face</comment>
+        <translation>鼻樑，左側</translation>
+    </message>
+    <message>
+        <source>Bridge of the nose, right</source>
+        <comment>a point of the face</comment>
+        <translation>鼻樑，右側</translation>
+    </message>
+    <message>
+        <source>Nose, top left</source>
+        <comment>a point of the face</comment>
+        <translation>鼻子，左上方</translation>
+    </message>
+    <message>
+        <source>Nose, top right</source>
+        <comment>a point of the face</comment>
+        <translation>鼻子，右上方</translation>
+    </message>
+    <message>
+        <source>Nose, left wing</source>
+        <comment>a point of the face</comment>
+        <translation>鼻子，左鼻翼</translation>
+    </message>
+    <message>
+        <source>Nose, right wing</source>
+        <comment>a point of the face</comment>
+        <translation>鼻子，右鼻翼</translation>
+    </message>
+    <message>
+        <source>Left nostril, bottom</source>
+        <comment>a point of the face</comment>
+        <translation>左鼻孔，底部</translation>
+    </message>
+    <message>
+        <source>Right nostril, bottom</source>
+        <comment>a point of the face</comment>
+        <translation>右鼻孔，底部</translation>
+    </message>
+    <message>
+        <source>Tip of the nose</source>
+        <comment>a point of the face</comment>
+        <translation>鼻尖</translation>
+    </message>
+    <message>
+        <source>Mouth, left corner</source>
+        <comment>a point of the face</comment>
+        <translation>嘴巴，左嘴角</translation>
+    </message>
+    <message>
+        <source>Upper lip, left peak</source>
+        <comment>a point of the face</comment>
+        <translation>上唇，左唇峰</translation>
+    </message>
+    <message>
+        <source>Upper lip, top centre</source>
+        <comment>a point of the face</comment>
+        <translation>上唇，上緣中央</translation>
+    </message>
+    <message>
+        <source>Upper lip, right peak</source>
+        <comment>a point of the face</comment>
+        <translation>上唇，右唇峰</translation>
+    </message>
+    <message>
+        <source>Mouth, right corner</source>
+        <comment>a point of the face</comment>
+        <translation>嘴巴，右嘴角</translation>
+    </message>
+    <message>
+        <source>Lower lip, bottom centre</source>
+        <comment>a point of the face</comment>
+        <translation>下唇，下緣中央</translation>
+    </message>
+    <message>
+        <source>Upper lip, inner edge</source>
+        <comment>a point of the face</comment>
+        <translation>上唇，內緣</translation>
+    </message>
+    <message>
+        <source>Lower lip, inner edge</source>
+        <comment>a point of the face</comment>
+        <translation>下唇，內緣</translation>
     </message>
 </context>
 <context>
@@ -3710,7 +4009,7 @@ The points are unchanged.</source>
     </message>
     <message>
         <source>expected &quot;cmn&quot;, &quot;en&quot; or &quot;&quot;</source>
-        <translation>應為 "cmn"、"en" 或 ""</translation>
+        <translation>應為 &quot;cmn&quot;、&quot;en&quot; 或 &quot;&quot;</translation>
     </message>
     <message>
         <source>audio: expected an array of clips</source>

@@ -11,6 +11,7 @@
 #include <QLineF>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace toonface;
@@ -506,7 +507,8 @@ private Q_SLOTS:
             QVERIFY(QLineF(added(1.0 + u, chin), expected).length() < kTol);
             QVERIFY(QLineF(added(1.0 + u, brow), QPointF(0, -0.05 * es0) * (1 - ease(u))).length() < kTol);
         }
-        // Only the named points move; the pose adds to speech.
+        // Only the named points move; where the character speaks the speech owns the mouth
+        // (jawKeyGivesWayToSpeech), and the brow's key still adds.
         const Pose p = e.evaluate(1.5);
         for (int i = 0; i < kPointCount; ++i) {
             if (i != chin && i != brow)
@@ -514,11 +516,13 @@ private Q_SLOTS:
         }
         Timeline speech;
         speech.addMouthKey({1.5, MouthShape::A, 1.0, 0.5});
+        speech.addMouthKey({2.5, MouthShape::M, 1.0, 0.5});
         Timeline speaking = t;
         speaking.setMouthKeys(speech.mouthKeys());
         const TimelineEvaluator both(speaking, face, shapes);
-        const QPointF spoken = TimelineEvaluator(speech, face, shapes).evaluate(1.5).offset[chin];
-        QVERIFY(QLineF(both.evaluate(1.5).offset[chin], spoken + added(1.5, chin)).length() < kTol);
+        const Pose spoken = TimelineEvaluator(speech, face, shapes).evaluate(1.5);
+        QVERIFY(QLineF(both.evaluate(1.5).offset[chin], spoken.offset[chin]).length() < kTol);
+        QVERIFY(QLineF(both.evaluate(1.5).offset[brow], spoken.offset[brow] + added(1.5, brow)).length() < kTol);
 
         // The same track on a face twice the size moves twice as far (retargeting by ES0).
         const FaceModel big = averageFace(QRectF(200, 300, 400, 480), QSize(800, 1000));
@@ -531,6 +535,55 @@ private Q_SLOTS:
         const auto posed = posedPoints(face, e.evaluate(3.0));
         const auto neutral = posedPoints(face, rest);
         QVERIFY(posed[pt::idx("2.1")].y() - neutral[pt::idx("2.1")].y() > 0.39 * es0);
+    }
+
+    // An Edit Pose jaw key is one key on the pose track, held before and after it. Where a
+    // recording plays the speech's mouth wins (the jaw key held the mouth open through all the
+    // speech) but around the key's own time, where the jaw opens as dragged; where it is silent
+    // the key shapes the mouth; the hand-overs ease, and the export knows their times.
+    void jawKeyGivesWayToSpeech()
+    {
+        const FaceModel face = testFace();
+        const double es0 = face.fapu().es0;
+        const MouthShapeSet shapes;
+        Timeline speech;
+        speech.setAudioClips({AudioClip {QStringLiteral("/tmp/speech.wav"), 2.0, 2.0}});
+        speech.addMouthKey({2.2, MouthShape::A, 1.0, 0.5});
+        speech.addMouthKey({2.8, MouthShape::E, 1.0, 0.5});
+        speech.addMouthKey({3.5, MouthShape::M, 1.0, 0.5});
+        speech.addGazeKey({6.0, {0.0, 0.0}}); // the animation goes on after the speech
+        Timeline posed = speech;
+        // The jaw dragged open at 3.0, in the middle of the speech (and a brow with it).
+        posed.addPoseKey({3.0, {{QStringLiteral("8.2"), {0.0, 0.4}}, {QStringLiteral("4.4"), {0.0, -0.05}}}});
+        const TimelineEvaluator onlySpeech(speech, face, shapes);
+        const TimelineEvaluator e(posed, face, shapes);
+        const int lip = pt::idx("8.2");
+        const int brow = pt::idx("4.4");
+        const auto jaw
+            = [&](double time) { return e.evaluate(time).offset[lip] - onlySpeech.evaluate(time).offset[lip]; };
+        const QPointF open(0, 0.4 * es0);
+
+        // At the key, as dragged; silent before and after the recording, the key's open jaw.
+        for (double time : {3.0, 0.0, 1.0, 1.8, 4.2, 6.0})
+            QVERIFY2(QLineF(jaw(time), open).length() < kTol, qPrintable(QString::number(time)));
+        // The rest of the speech: the speech's mouth exactly, whatever shape it says.
+        for (double time : {2.0, 2.2, 2.5, 3.3, 3.5, 4.0})
+            QVERIFY2(QLineF(jaw(time), QPointF()).length() < kTol, qPrintable(QString::number(time)));
+        // The hand-overs ease.
+        const double edge = 2.0 - TimelineEvaluator::kSpeechFade / 2;
+        QVERIFY(std::abs(jaw(edge).y() - open.y() * (1 - ease(0.5))) < kTol);
+        const double reach = 3.0 + TimelineEvaluator::kPoseKeyReach / 2;
+        QVERIFY(std::abs(jaw(reach).y() - open.y() * ease(0.5)) < kTol);
+        // The brows are not the mouth's: their key adds in speech too.
+        QVERIFY(QLineF(e.evaluate(2.5).offset[brow] - onlySpeech.evaluate(2.5).offset[brow], QPointF(0, -0.05 * es0))
+                    .length()
+            < kTol);
+        // The export samples where the mouth changes hands.
+        const QVector<double> times = e.keyTimes(Track::Pose);
+        for (double time : {2.0 - TimelineEvaluator::kSpeechFade, 2.0, 4.0, 4.0 + TimelineEvaluator::kSpeechFade,
+                 3.0 - TimelineEvaluator::kPoseKeyReach, 3.0 + TimelineEvaluator::kPoseKeyReach})
+            QVERIFY2(std::any_of(times.cbegin(), times.cend(), [time](double k) { return std::abs(k - time) < 1e-9; }),
+                qPrintable(QString::number(time)));
     }
 
     void poseTrackExportKeys()

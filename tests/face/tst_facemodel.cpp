@@ -2,6 +2,7 @@
 #include "face/emotion.h"
 #include "face/facemodel.h"
 #include "face/fapu.h"
+#include "face/headturn.h"
 #include "face/mouthshape.h"
 #include "face/pointtable.h"
 #include "face/pose.h"
@@ -10,6 +11,9 @@
 #include <QLineF>
 #include <QSet>
 #include <QTest>
+#include <QTransform>
+
+#include <cmath>
 
 using namespace toonface;
 
@@ -37,6 +41,40 @@ class TestFaceModel : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    // The head's turn and tilt from its points: none for the front-facing average face; a face
+    // rotated in the picture gives that roll; the nose tip moved aside along the eye line by
+    // depth · tan(yaw) gives that yaw; beyond kDrawnWellDeg the cartoon is said to look twisted.
+    void headTurnFromThePoints()
+    {
+        const FaceModel front = averageFace(QRectF(100, 150, 200, 240), QSize(400, 500));
+        const HeadTurn none = headTurn(front);
+        QVERIFY(std::abs(none.yawDeg) < 1.0);
+        QVERIFY(std::abs(none.rollDeg) < 1.0);
+        QVERIFY(!turnedTooFar(none));
+
+        for (double degrees : {-25.0, 10.0, 20.0}) {
+            FaceModel tilted = front;
+            QTransform rotation;
+            rotation.translate(200, 250).rotate(degrees).translate(-200, -250);
+            for (int i = 0; i < kPointCount; ++i)
+                tilted.setPoint(i, rotation.map(front.point(i)));
+            const HeadTurn turn = headTurn(tilted);
+            QVERIFY2(std::abs(turn.rollDeg - degrees) < 0.5 + std::abs(none.rollDeg),
+                qPrintable(QString::number(turn.rollDeg)));
+            QCOMPARE(turnedTooFar(turn), std::abs(degrees) > kDrawnWellDeg);
+        }
+        for (double yaw : {-30.0, 8.0, 25.0}) {
+            FaceModel turned = front;
+            const double es0 = QLineF(front.point("3.6"), front.point("3.5")).length();
+            const QPointF eyeMid = (front.point("3.6") + front.point("3.5")) / 2.0;
+            const QPointF nose(eyeMid.x() + kNoseDepthEs0 * std::tan(yaw * M_PI / 180) * es0, front.point("9.15").y());
+            turned.setPoint(pt::idx("9.15"), nose);
+            const HeadTurn turn = headTurn(turned);
+            QVERIFY2(std::abs(turn.yawDeg - yaw) < 1.0, qPrintable(QString::number(turn.yawDeg)));
+            QCOMPARE(turnedTooFar(turn), std::abs(yaw) > kDrawnWellDeg);
+        }
+    }
+
     void pointTableMatchesContract()
     {
         const auto &t = pointTable();

@@ -8,9 +8,11 @@
 #include "dialogs/posepreview.h"
 #include "document/document.h"
 
+#include <QAbstractButton>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QRadioButton>
 #include <QSlider>
 #include <QSpinBox>
@@ -195,6 +197,23 @@ private Q_SLOTS:
         ranged.accept();
         QVERIFY(doc.timeline().blinks().contains(before.timeline.blinks().first()));
         QCOMPARE(doc.animation(), withBlinks(before, 5, 5.0, 12.0));
+    }
+
+    // The blinks' pattern is a number the user may type or shuffle; the dialog does not speak of
+    // the random generator's "seed".
+    void blinksDialogSpeaksOfAPattern()
+    {
+        Document doc;
+        fixture::fill(doc);
+        BlinksDialog dialog(&doc);
+        QStringList texts;
+        for (const QLabel *label : dialog.findChildren<QLabel *>())
+            texts << label->text();
+        for (const QAbstractButton *button : dialog.findChildren<QAbstractButton *>())
+            texts << button->text() << button->toolTip();
+        QVERIFY(texts.size() > 4);
+        for (const QString &text : std::as_const(texts))
+            QVERIFY2(!text.contains(QStringLiteral("seed"), Qt::CaseInsensitive), qPrintable(text));
     }
 
     void emotionDialogAddsOneStepWithItsPreview()

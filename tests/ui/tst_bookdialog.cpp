@@ -6,6 +6,8 @@
 #include "dialogs/jobstatus.h"
 #include "document/document.h"
 #include "face/averageface.h"
+#include "media/mediareader.h"
+#include "speech/audio.h"
 #include "testmain.h"
 
 #include <QAction>
@@ -16,6 +18,8 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <cmath>
 
 using namespace toonface;
 
@@ -114,6 +118,57 @@ private Q_SLOTS:
         QVERIFY(finished.wait(60000));
         QCOMPARE(dialog.lastResult().status, BookStatus::Cancelled);
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList {QStringLiteral("t.md")});
+    }
+
+    // A project of several recordings is read by its whole audio track, mixed — not by its first
+    // recording alone; one whole recording is offered as before.
+    void severalRecordingsAreReadAsTheMixedTrack()
+    {
+        QTemporaryDir dir;
+        Audio tone;
+        tone.samples.resize(tone.sampleRate); // 1 s
+        for (qsizetype i = 0; i < tone.samples.size(); ++i)
+            tone.samples[i] = float(0.3 * std::sin(2 * M_PI * 300 * double(i) / tone.sampleRate));
+        const QString a = dir.filePath(QStringLiteral("a.wav"));
+        const QString b = dir.filePath(QStringLiteral("b.wav"));
+        QString error;
+        QVERIFY2(writeAudio(a, tone, &error) && writeAudio(b, tone, &error), qPrintable(error));
+
+        BookRequest first = base();
+        first.audioPath = a;
+        BookDialog single(first);
+        single.setProjectTrack({AudioClip {a, 0.0, 1.0}});
+        QCOMPARE(single.sourceBox()->count(), 2);
+        QCOMPARE(single.request().audioPath, a);
+
+        BookDialog dialog(first);
+        dialog.setProjectTrack({AudioClip {a, 0.0, 1.0}, AudioClip {b, 2.0, 1.0}});
+        QCOMPARE(dialog.sourceBox()->count(), 3);
+        QCOMPARE(dialog.sourceBox()->currentIndex(), 0);
+        QVERIFY2(dialog.sourceBox()->currentText().contains(QLatin1Char('2')),
+            qPrintable(dialog.sourceBox()->currentText()));
+        QCOMPARE(dialog.request().audioPath, dialog.mixedTrackPath());
+        QVERIFY(!dialog.audioEdit()->isEnabled());
+
+        dialog.textEdit()->setText(writeText(dir, QStringLiteral("t.txt"), QStringLiteral("Hello there.\n")));
+        dialog.outputEdit()->setText(dir.filePath(QStringLiteral("b.epub")));
+        QSignalSpy finished(&dialog, &BookDialog::finished);
+        QVERIFY(dialog.start());
+        QVERIFY(finished.wait(120000));
+        // What the book read: both recordings at their places, 0 .. 3 s (the first alone is 1 s).
+        const std::optional<QVector<float>> heard = readAudio(dialog.mixedTrackPath(), tone.sampleRate, &error);
+        QVERIFY2(heard, qPrintable(error));
+        QVERIFY2(
+            std::abs(heard->size() / double(tone.sampleRate) - 3.0) < 0.01, qPrintable(QString::number(heard->size())));
+        const auto level = [&heard, &tone](double from, double to) {
+            float peak = 0;
+            for (qsizetype i = qsizetype(from * tone.sampleRate); i < qsizetype(to * tone.sampleRate); ++i)
+                peak = std::max(peak, std::abs(heard->at(i)));
+            return peak;
+        };
+        QVERIFY(level(0.1, 0.9) > 0.25f);
+        QVERIFY(level(1.1, 1.9) < 0.01f);
+        QVERIFY(level(2.1, 2.9) > 0.25f);
     }
 
     void actionOpensForTheDocument()

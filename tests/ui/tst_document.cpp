@@ -77,7 +77,7 @@ private Q_SLOTS:
         QVERIFY(doc.face().isHandPlaced(i));
         QVERIFY(doc.isModified());
         QVERIFY(allChanges(spy).testFlag(Change::Points));
-        QCOMPARE(doc.undoStack()->undoText(), QStringLiteral("Move point 8.9"));
+        QCOMPARE(doc.undoStack()->undoText(), QStringLiteral("Move Upper lip, left peak"));
 
         spy.clear();
         doc.undoStack()->undo();

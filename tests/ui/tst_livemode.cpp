@@ -77,6 +77,7 @@ private Q_SLOTS:
     void microphoneOnlyWithoutMicrophoneSaysSo();
     void mouthChoicesDoNotSayCamera();
     void cartoonWaitsAtRestBeforeASource();
+    void opensBesideTheMainWindow();
 };
 
 void TestLiveMode::initTestCase()
@@ -467,6 +468,34 @@ void TestLiveMode::cartoonWaitsAtRestBeforeASource()
     LiveWindow nothing(&empty, &playhead);
     QVERIFY(nothing.cartoonPane()->image().isNull());
     QVERIFY(!nothing.cartoonPane()->caption().isEmpty());
+}
+
+// Live Mode opens as its own window beside the main window when the screen has room, and
+// otherwise at the screen's right edge: never centred over the main window's photo, never off
+// the screen.
+void TestLiveMode::opensBesideTheMainWindow()
+{
+    const QRect screen(0, 0, 1920, 1080);
+    const QSize wanted(960, 640);
+    // Room on the right of a main window on the left half.
+    QRect place = LiveWindow::placement(QRect(0, 30, 900, 800), wanted, screen);
+    QCOMPARE(place, QRect(QPoint(900, 30), wanted));
+    // Room only on the left.
+    place = LiveWindow::placement(QRect(960, 0, 960, 1000), wanted, screen);
+    QCOMPARE(place, QRect(QPoint(0, 0), wanted));
+    // A maximised main window on a laptop screen: at the right edge, inside the screen, shrunk
+    // to it, its left edge right of the main window's centre-left photo.
+    const QRect laptop(0, 0, 1280, 720);
+    place = LiveWindow::placement(laptop, wanted, laptop);
+    QVERIFY(laptop.contains(place));
+    QCOMPARE(place.right(), laptop.right());
+    QVERIFY(place.left() >= laptop.width() / 4);
+    // A small screen: the window shrinks to fit.
+    place = LiveWindow::placement(QRect(0, 0, 800, 500), wanted, QRect(0, 0, 800, 500));
+    QCOMPARE(place, QRect(0, 0, 800, 500));
+    // A main window low on the screen: the live window still fits above the bottom.
+    place = LiveWindow::placement(QRect(0, 900, 900, 100), wanted, screen);
+    QCOMPARE(place.bottom(), screen.bottom());
 }
 
 TOONFACE_TEST_MAIN(TestLiveMode)

@@ -8,9 +8,11 @@
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QLineF>
 #include <QListWidget>
 #include <QTest>
+#include <QToolButton>
 #include <QUndoStack>
 
 using namespace toonface;
@@ -49,6 +51,7 @@ private Q_SLOTS:
         auto *list = dialog.findChild<QListWidget *>(QStringLiteral("shapes"));
         auto *preview = dialog.findChild<PosePreview *>(QStringLiteral("preview"));
         QCOMPARE(list->count(), kMouthShapeCount);
+        QTest::mouseClick(dialog.findChild<QToolButton *>(QStringLiteral("advanced")), Qt::LeftButton);
 
         // Choosing a shape in the list shows it; m (shut) and a (wide open) look different.
         list->setCurrentRow(int(MouthShape::M));
@@ -167,6 +170,34 @@ private Q_SLOTS:
         dialog.reject();
         QVERIFY(doc.mouthShapes() == before);
         QCOMPARE(doc.undoStack()->count(), 0);
+    }
+
+    // The dialog shows the shape to drag; the numbers in the face's measures (MNS0, MW0, …) wait
+    // behind Advanced, and even there each column says in words what it measures.
+    void numbersWaitBehindAdvanced()
+    {
+        Document doc;
+        fixture::fill(doc);
+        MouthShapesDialog dialog(&doc);
+        dialog.resize(dialog.sizeHint());
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        QVERIFY(dialog.findChild<PosePreview *>(QStringLiteral("preview"))->isVisible());
+        QVERIFY(!dialog.termBox(0, 0, 0)->isVisible());
+        const auto shownText = [&dialog] {
+            QStringList texts;
+            for (const QLabel *label : dialog.findChildren<QLabel *>())
+                if (label->isVisible())
+                    texts << label->text();
+            return texts.join(QLatin1Char('|'));
+        };
+        for (const char *unit : {"MNS0", "MW0", "ES0", "LowerLipH", "8.9", "8.4"})
+            QVERIFY2(!shownText().contains(QLatin1String(unit)), qPrintable(shownText()));
+
+        QTest::mouseClick(dialog.findChild<QToolButton *>(QStringLiteral("advanced")), Qt::LeftButton);
+        QVERIFY(dialog.termBox(0, 0, 0)->isVisible());
+        QVERIFY(shownText().contains(QStringLiteral("× mouth width")));
+        QVERIFY(!shownText().contains(QStringLiteral("× MW0")));
     }
 };
 

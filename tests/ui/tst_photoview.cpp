@@ -10,6 +10,7 @@
 #include <QGraphicsScene>
 #include <QHBoxLayout>
 #include <QLineF>
+#include <QSet>
 #include <QSignalSpy>
 #include <QTest>
 #include <QUndoStack>
@@ -246,7 +247,24 @@ private Q_SLOTS:
         QTRY_VERIFY(!spy.isEmpty());
         QCOMPARE(spy.last().first().toInt(), i);
         QVERIFY(m_photo->handle(i)->isHovered());
-        QVERIFY(m_photo->handle(i)->toolTip().contains(QStringLiteral("9.15")));
+        QVERIFY(m_photo->handle(i)->toolTip().startsWith(QStringLiteral("Tip of the nose")));
+    }
+
+    // Each point is named as a user would name it ("Mouth, left corner"), not by the model's ID
+    // ("Point 8.4 (mouth)"); no two points share a name.
+    void pointsHavePlainNames()
+    {
+        QCOMPARE(m_photo->handle(pt::idx("8.4"))->toolTip().section(QLatin1Char('\n'), 0, 0),
+            QStringLiteral("Mouth, left corner"));
+        QSet<QString> names;
+        for (int i = 0; i < kPointCount; ++i) {
+            const QString name = m_photo->handle(i)->toolTip().section(QLatin1Char('\n'), 0, 0);
+            QVERIFY2(!name.contains(pointId(i)) || pointId(i).startsWith(QLatin1String("h.")), qPrintable(name));
+            QVERIFY2(!name.contains(QLatin1Char('.')), qPrintable(name));
+            QVERIFY2(!name.startsWith(QLatin1String("Point")), qPrintable(name));
+            names.insert(name);
+        }
+        QCOMPARE(names.size(), kPointCount);
     }
 
     void wheelZoomsAndFitRestores()

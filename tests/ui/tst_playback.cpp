@@ -2,6 +2,7 @@
 #include "testmain.h"
 #include "uifixture.h"
 
+#include "media/audiomix.h"
 #include "media/mediareader.h"
 #include "playback/mediaaudiotrack.h"
 #include "playback/playbackclock.h"
@@ -406,8 +407,9 @@ private Q_SLOTS:
         Timeline timeline = fixture::talkingTimeline(4.0);
         timeline.setAudioClips({AudioClip {tone, 0.5, 1.0}, AudioClip {tone, 2.5, 1.0}});
         fixture::setTimeline(*m_doc, timeline);
-        m_controller->play(); // the mix is made when it plays
-        QVERIFY2(m_controller->hasSound(), qPrintable(m_controller->soundProblem()));
+        m_controller->play(); // the mix is made when it plays, in the background
+        QVERIFY(m_controller->isMixing());
+        QTRY_VERIFY2(m_controller->hasSound(), qPrintable(m_controller->soundProblem()));
         QVERIFY(track->opened != tone);
         QString error;
         const std::optional<QVector<float>> mix = readAudio(track->opened, 16000, &error);
@@ -420,7 +422,49 @@ private Q_SLOTS:
         timeline.setAudioClips({AudioClip {tone, 0.5, 1.0}, AudioClip {tone, 3.0, 1.0}});
         const QString before = track->opened;
         fixture::setTimeline(*m_doc, timeline);
-        QVERIFY(track->opened != before);
+        QTRY_VERIFY(track->opened != before);
+        m_controller->pause();
+    }
+
+    // The mix is made off the GUI thread: play() returns at once, the picture plays while the
+    // clips are mixed, and the sound that joins it is the same mix, sample for sample, as
+    // mixAudioClips() gives; the event loop keeps running meanwhile.
+    void mixIsMadeInTheBackground()
+    {
+        useSimulatedClock();
+        fixture::FakeAudioTrack *track = useFakeTrack();
+        const QString tone = toneFile(1.0);
+        Timeline timeline = fixture::talkingTimeline(4.0);
+        AudioClip trimmed {tone, 0.5, 1.0};
+        trimmed.trimIn = 0.25;
+        const QVector<AudioClip> clips {AudioClip {tone, 0.0, 1.0}, trimmed};
+        timeline.setAudioClips(clips);
+        fixture::setTimeline(*m_doc, timeline);
+        QSignalSpy ready(m_controller, &PlaybackController::soundReady);
+        m_controller->play();
+        // Not blocked: play() came back before the mix was used, with the picture playing.
+        QVERIFY(m_controller->isPlaying());
+        QVERIFY(m_controller->isMixing());
+        QVERIFY(!m_controller->hasSound());
+        QVERIFY(track->opened.isEmpty());
+        bool ticked = false;
+        QTimer::singleShot(0, this, [&ticked] { ticked = true; });
+        QVERIFY(ready.wait(20000));
+        QVERIFY(ticked);
+        QVERIFY(!m_controller->isMixing());
+        QVERIFY2(m_controller->hasSound(), qPrintable(m_controller->soundProblem()));
+        // The sound started where the clock is now, in the mix the engine makes.
+        QCOMPARE(track->plays.size(), 1);
+        QString error;
+        const std::optional<MixedSound> expected = mixAudioClips(clips, 0, &error);
+        QVERIFY2(expected, qPrintable(error));
+        const std::optional<QVector<float>> heard = readAudio(track->opened, expected->sampleRate, &error);
+        QVERIFY2(heard, qPrintable(error));
+        QCOMPARE(heard->size(), expected->samples.size());
+        float worst = 0;
+        for (qsizetype i = 0; i < heard->size(); ++i)
+            worst = std::max(worst, std::abs(heard->at(i) - expected->samples[i]));
+        QVERIFY2(worst <= 1.5f / 32768, qPrintable(QString::number(worst))); // 16-bit WAV
         m_controller->pause();
     }
 

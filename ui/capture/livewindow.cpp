@@ -60,6 +60,17 @@ QRectF faceBox(const LiveFrame &frame)
 
 } // namespace
 
+QRect LiveWindow::placement(const QRect &mainFrame, QSize wanted, const QRect &available)
+{
+    const QSize size = wanted.boundedTo(available.size());
+    const auto clampY = [&](int y) { return std::clamp(y, available.top(), available.bottom() + 1 - size.height()); };
+    if (available.right() - mainFrame.right() >= size.width())
+        return QRect(QPoint(mainFrame.right() + 1, clampY(mainFrame.top())), size);
+    if (mainFrame.left() - available.left() >= size.width())
+        return QRect(QPoint(mainFrame.left() - size.width(), clampY(mainFrame.top())), size);
+    return QRect(QPoint(available.right() + 1 - size.width(), clampY(mainFrame.top())), size);
+}
+
 LiveWindow::LiveWindow(Document *document, Playhead *playhead, QWidget *parent)
     : QWidget(parent, Qt::Window)
     , m_document(document)

@@ -37,6 +37,12 @@ public:
     LiveWindow(Document *document, Playhead *playhead, QWidget *parent = nullptr);
     ~LiveWindow() override;
 
+    // Where Live Mode opens: its own window of `wanted` size (shrunk to the screen), beside the
+    // main window's frame `mainFrame` when the screen `available` has room on the right (else
+    // the left), otherwise at the screen's right edge, level with the main window's top, so
+    // that the main window's photo and menus stay in sight. Always inside `available`.
+    static QRect placement(const QRect &mainFrame, QSize wanted, const QRect &available);
+
     // Plays the clip at `path` as the live source (false with the message in the status line).
     bool startClip(const QString &path);
     // Starts the camera described so (empty: the default); false, with the no-camera message

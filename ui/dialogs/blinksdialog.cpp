@@ -44,14 +44,14 @@ BlinksDialog::BlinksDialog(Document *document, QWidget *parent)
     setWindowTitle(tr("Add Blinks"));
 
     auto *intro = new QLabel(tr("Blinks at a person's pace: about one every three and a half seconds, now and then "
-                                "two in a row. The same seed always gives the same blinks."),
+                                "two in a row. The same pattern number always gives the same blinks."),
         this);
     intro->setWordWrap(true);
 
     m_seed->setObjectName(QStringLiteral("seed"));
     m_seed->setRange(0, std::numeric_limits<int>::max());
     auto *shuffleButton
-        = new QPushButton(QIcon::fromTheme(QStringLiteral("media-playlist-shuffle")), tr("&New Seed"), this);
+        = new QPushButton(QIcon::fromTheme(QStringLiteral("media-playlist-shuffle")), tr("&Shuffle"), this);
     shuffleButton->setObjectName(QStringLiteral("shuffle"));
     auto *seedRow = new QHBoxLayout;
     seedRow->addWidget(m_seed, 1);
@@ -79,7 +79,7 @@ BlinksDialog::BlinksDialog(Document *document, QWidget *parent)
     m_summary->setWordWrap(true);
 
     auto *form = new QFormLayout;
-    form->addRow(tr("&Seed:"), seedRow);
+    form->addRow(tr("&Pattern:"), seedRow);
     form->addRow(tr("Over:"), overBox);
     static_cast<QLabel *>(form->labelForField(seedRow))->setBuddy(m_seed);
 

@@ -3,6 +3,7 @@
 #include "dialogs/jobstatus.h"
 #include "document/document.h"
 #include "export/animationexport.h"
+#include "media/audiomix.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -41,8 +42,8 @@ BookDialog::BookDialog(const BookRequest &base, QWidget *parent)
     form->addRow(tr("&Text:"), row(m_text, nullptr, tr("Text (*.txt *.md *.markdown)"), false));
     m_source = new QComboBox;
     m_source->setObjectName(QStringLiteral("bookSource"));
-    m_source->addItem(tr("A recording of the text"));
-    m_source->addItem(tr("The built-in voice"));
+    m_source->addItem(tr("A recording of the text"), QStringLiteral("file"));
+    m_source->addItem(tr("The built-in voice"), QStringLiteral("voice"));
     m_source->setCurrentIndex(base.audioPath.isEmpty() ? 1 : 0);
     form->addRow(tr("&Read by:"), m_source);
     m_audio = new QLineEdit(base.audioPath);
@@ -124,16 +125,50 @@ QAction *BookDialog::createAction(QWidget *window, Document *document)
             ? QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation))
                   .filePath(QStringLiteral("book.epub"))
             : info.absoluteDir().filePath(info.completeBaseName() + QStringLiteral(".epub"));
-        BookDialog::run(window, base);
+        BookDialog dialog(base, window);
+        dialog.setProjectTrack(project.timeline.audioClips());
+        dialog.exec();
     });
     return action;
+}
+
+void BookDialog::setProjectTrack(const QVector<AudioClip> &clips)
+{
+    const QVector<AudioClip> sounding = soundingClips(clips);
+    const bool whole = sounding.size() == 1 && sounding.first().trimIn == 0 && sounding.first().trimOut == 0;
+    const int at = m_source->findData(QStringLiteral("track"));
+    if (at >= 0)
+        m_source->removeItem(at);
+    m_trackClips.clear();
+    if (sounding.isEmpty() || whole)
+        return;
+    m_trackClips = sounding;
+    m_source->insertItem(0, tr("The project's audio track (%n recording(s), mixed)", nullptr, int(sounding.size())),
+        QStringLiteral("track"));
+    m_source->setCurrentIndex(0);
+    updateControls();
+}
+
+QString BookDialog::mixedTrackPath() const
+{
+    return m_mixDir.isValid() ? m_mixDir.filePath(QStringLiteral("track.wav")) : QString();
+}
+
+bool BookDialog::readByTrack() const
+{
+    return m_source->currentData().toString() == QLatin1String("track");
+}
+
+bool BookDialog::readByRecording() const
+{
+    return m_source->currentData().toString() == QLatin1String("file");
 }
 
 BookRequest BookDialog::request() const
 {
     BookRequest r = m_base;
     r.textPath = m_text->text().trimmed();
-    r.audioPath = m_source->currentIndex() == 0 ? m_audio->text().trimmed() : QString();
+    r.audioPath = readByRecording() ? m_audio->text().trimmed() : readByTrack() ? mixedTrackPath() : QString();
     r.language = m_language->currentData().toString();
     r.title = m_title->text().trimmed();
     r.author = m_author->text().trimmed();
@@ -149,7 +184,7 @@ bool BookDialog::isRunning() const
 
 void BookDialog::updateControls()
 {
-    const bool recording = m_source->currentIndex() == 0;
+    const bool recording = readByRecording();
     m_audio->setEnabled(recording && !isRunning());
     m_audioBrowse->setEnabled(recording && !isRunning());
     const BookRequest r = request();
@@ -176,8 +211,24 @@ bool BookDialog::start()
     m_status->showProgress(0, tr("Starting…"));
     const std::shared_ptr<std::atomic_bool> cancel = m_cancel;
     // Progress comes from the worker thread: shown on the dialog's (dropped if it is gone).
+    const QVector<AudioClip> track = readByTrack() ? m_trackClips : QVector<AudioClip> {};
     m_watcher.setFuture(QtConcurrent::run(
-        [this, cancel](const BookRequest &request) {
+        [this, cancel, track](const BookRequest &request) {
+            if (!track.isEmpty()) {
+                // The whole audio track as one recording, the clips mixed at their places.
+                QMetaObject::invokeMethod(
+                    this, [this]() { m_status->showProgress(0, tr("Mixing the recordings…")); }, Qt::QueuedConnection);
+                QString error;
+                const QFileInfo mix(request.audioPath);
+                const std::optional<TrackSound> sound
+                    = trackSoundFile(track, mix.absolutePath(), mix.fileName(), &error, cancel.get());
+                if (!sound || sound->path.isEmpty()) {
+                    BookResult failed;
+                    failed.status = cancel->load() ? BookStatus::Cancelled : BookStatus::BadInput;
+                    failed.error = error;
+                    return failed;
+                }
+            }
             return exportBook(
                 request,
                 [this](double fraction, const QString &stage) {

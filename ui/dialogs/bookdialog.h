@@ -1,9 +1,11 @@
 #pragma once
 
+#include "anim/timeline.h"
 #include "export/epubbook.h"
 
 #include <QDialog>
 #include <QFutureWatcher>
+#include <QTemporaryDir>
 
 #include <atomic>
 #include <memory>
@@ -25,7 +27,10 @@ class JobStatus;
 // nothing is left behind when it is cancelled or fails.
 //
 // Takes everything by value (a BookRequest with the face, style, mouth shapes and layers, and
-// the initial recording and file), so it depends on no document.
+// the initial recording and file), so it depends on no document. A project whose audio track
+// holds several recordings (or a trimmed one) is read by that whole track: "Read by" offers
+// "The project's audio track (N recordings, mixed)", chosen by default, and the clips are mixed
+// (media/audiomix.h) in the background before the book is made.
 class BookDialog : public QDialog
 {
     Q_OBJECT
@@ -39,7 +44,13 @@ public:
     // The File menu's action: opens the dialog for the document's face and recording.
     static QAction *createAction(QWidget *window, Document *document);
 
-    // The request the controls describe now.
+    // The project's audio track (its clips); when it is more than one whole recording, "Read by"
+    // offers it, mixed, and chooses it.
+    void setProjectTrack(const QVector<AudioClip> &clips);
+    // Where the mixed track is written when the book is read by it (valid during the dialog).
+    QString mixedTrackPath() const;
+
+    // The request the controls describe now (for the mixed track: mixedTrackPath()).
     BookRequest request() const;
     bool isRunning() const;
     const BookResult &lastResult() const { return m_result; }
@@ -66,6 +77,8 @@ private:
     void browse(QLineEdit *edit, const QString &filter, bool save);
     void updateControls();
     void bookFinished();
+    bool readByTrack() const;
+    bool readByRecording() const;
 
     BookRequest m_base;
     QLineEdit *m_text;
@@ -84,6 +97,8 @@ private:
     std::shared_ptr<std::atomic_bool> m_cancel;
     BookResult m_result;
     QString m_exported;
+    QVector<AudioClip> m_trackClips; // the project's clips to mix, or empty
+    QTemporaryDir m_mixDir;
 };
 
 } // namespace toonface

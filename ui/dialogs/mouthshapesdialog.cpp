@@ -13,6 +13,7 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -44,10 +45,10 @@ QString shapeDescription(MouthShape shape)
 QString controlTitle(int control)
 {
     switch (control) {
-    case Up: return MouthShapesDialog::tr("Upper lip 8.9");
-    case Down: return MouthShapesDialog::tr("Lower lip 8.2");
-    case Left: return MouthShapesDialog::tr("Left corner 8.4");
-    case Right: return MouthShapesDialog::tr("Right corner 8.3");
+    case Up: return MouthShapesDialog::tr("Upper lip");
+    case Down: return MouthShapesDialog::tr("Lower lip");
+    case Left: return MouthShapesDialog::tr("Left corner");
+    case Right: return MouthShapesDialog::tr("Right corner");
     }
     return QString();
 }
@@ -132,6 +133,25 @@ MouthShapesDialog::MouthShapesDialog(Document *document, QWidget *parent)
     titleFont.setBold(true);
     m_shapeTitle->setFont(titleFont);
 
+    // The shape is what the user sees and drags; the numbers behind it (in the face's own
+    // measures, so that a shape fits any face) wait behind Advanced.
+    auto *hint = new QLabel(tr("Drag the four points of the mouth in the picture to change the shape. Each shape "
+                               "fits every face: it moves the lips in proportion to this face's mouth."),
+        this);
+    hint->setObjectName(QStringLiteral("hint"));
+    hint->setWordWrap(true);
+    auto *advanced = new QToolButton(this);
+    advanced->setObjectName(QStringLiteral("advanced"));
+    advanced->setText(tr("Ad&vanced: the numbers"));
+    advanced->setCheckable(true);
+    advanced->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    advanced->setArrowType(Qt::RightArrow);
+    advanced->setAutoRaise(true);
+    auto *advancedPart = new QWidget(this);
+    advancedPart->setObjectName(QStringLiteral("advancedPart"));
+    auto *advancedLayout = new QVBoxLayout(advancedPart);
+    advancedLayout->setContentsMargins(0, 0, 0, 0);
+
     auto *editorBox = new QGroupBox(tr("How the four mouth control points move"), this);
     auto *grid = new QGridLayout(editorBox);
     buildEditor(grid);
@@ -154,8 +174,17 @@ MouthShapesDialog::MouthShapesDialog(Document *document, QWidget *parent)
     auto *right = new QVBoxLayout;
     right->addWidget(m_shapeTitle);
     right->addWidget(m_preview, 1);
-    right->addWidget(editorBox);
-    right->addWidget(units);
+    right->addWidget(hint);
+    right->addWidget(advanced, 0, Qt::AlignLeft);
+    advancedLayout->addWidget(editorBox);
+    advancedLayout->addWidget(units);
+    right->addWidget(advancedPart);
+    advancedPart->setVisible(false);
+    connect(advanced, &QToolButton::toggled, this, [this, advanced, advancedPart](bool on) {
+        advanced->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
+        advancedPart->setVisible(on);
+        adjustSize();
+    });
 
     auto *body = new QHBoxLayout;
     body->addWidget(m_list);
@@ -195,9 +224,14 @@ MouthShapesDialog::MouthShapesDialog(Document *document, QWidget *parent)
 
 void MouthShapesDialog::buildEditor(QGridLayout *grid)
 {
-    const QStringList heads = {tr("× MNS0"), tr("× MW0"), tr("× LowerLipH"), tr("× ES0/100"), tr("= pixels here")};
+    const QStringList heads = {
+        tr("× nose to mouth"), tr("× mouth width"), tr("× lower lip"), tr("× eye distance/100"), tr("= pixels here")};
+    const QStringList tips = {tr("MNS0: the height from the tip of the nose to the lips"),
+        tr("MW0: the width of the mouth, corner to corner"), tr("LowerLipH: the height of the lower lip"),
+        tr("ES0/100: a hundredth of the distance between the eyes"), tr("The move on this face, in pixels")};
     for (int c = 0; c < heads.size(); ++c) {
         auto *head = new QLabel(heads[c], this);
+        head->setToolTip(tips[c]);
         head->setAlignment(Qt::AlignCenter);
         grid->addWidget(head, 0, 2 + c);
     }
@@ -281,7 +315,7 @@ void MouthShapesDialog::refresh()
     QVector<PosePreview::Marker> markers;
     for (int control = 0; control < 4; ++control) {
         const QPointF from = face.point(kMouthControlIds[control]);
-        markers.append({from, from + d[control], QString::fromLatin1(kMouthControlIds[control])});
+        markers.append({from, from + d[control], controlTitle(control)});
         m_pixels[control * kAxisCount]->setText(tr("%1 px").arg(d[control].x(), 0, 'f', 1));
         m_pixels[control * kAxisCount + 1]->setText(tr("%1 px").arg(d[control].y(), 0, 'f', 1));
     }

@@ -24,7 +24,10 @@ class PosePreview;
 // the four mouth control points (8.9, 8.2, 8.4, 8.3), each coordinate a sum of FAPU terms
 // (MNS0, MW0, LowerLipH, ES0/100) so that it fits any face; the preview marks where each
 // control point moves from and to; dragging a marker there moves that control (corners
-// sideways in MW0, lips up and down in MNS0, the other axis in ES0/100). Reset Shape / Reset All restore the defaults.
+// sideways in MW0, lips up and down in MNS0, the other axis in ES0/100). The shape and its four
+// points are what the dialog shows; the table of terms (its columns named in words: nose to
+// mouth, mouth width, lower lip, eye distance/100) waits behind "Advanced: the numbers".
+// Reset Shape / Reset All restore the defaults.
 // The edits reach the project on OK as one undo step (undo restores the exact previous presets); Cancel changes
 // nothing.
 class MouthShapesDialog : public QDialog

@@ -2,6 +2,7 @@
 
 #include "document/commandid.h"
 #include "document/document.h"
+#include "views/displaynames.h"
 
 #include <QCoreApplication>
 
@@ -16,7 +17,7 @@ MovePointCommand::MovePointCommand(Document *document, int index, QPointF newPos
     , m_oldHandPlaced(document->face().isHandPlaced(index))
     , m_commit(commit)
 {
-    setText(QCoreApplication::translate("MovePointCommand", "Move point %1").arg(pointId(index)));
+    setText(QCoreApplication::translate("MovePointCommand", "Move %1").arg(pointTitle(index)));
 }
 
 void MovePointCommand::undo()

@@ -10,9 +10,9 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QFutureWatcher>
 #include <QMediaDevices>
-
-#include "media/audiomix.h"
+#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <cmath>
@@ -51,6 +51,7 @@ PlaybackController::PlaybackController(Document *document, Playhead *playhead, Q
 
 PlaybackController::~PlaybackController()
 {
+    cancelMix();
     if (m_playing && m_playhead)
         m_playhead->setPlaying(false);
 }
@@ -158,6 +159,7 @@ void PlaybackController::setAudioTrack(std::unique_ptr<AudioTrack> track)
         stopSound();
         m_track->disconnect(this);
     }
+    cancelMix();
     m_track = std::move(track);
     m_soundPath.clear();
     m_soundOpen = false;
@@ -202,29 +204,83 @@ void PlaybackController::openSound()
     }
     if (m_soundOpen && m_heard && clips == m_openedClips)
         return;
-    // The track as one file: a clip's own, or the clips mixed (media/audiomix.h).
+    // The track as one file: a clip's own, or the clips mixed (media/audiomix.h). A mix is made
+    // off the GUI thread (a long track takes seconds to decode and sum): the picture plays at
+    // once and the sound joins it when the mix is ready.
     if (!m_mixFolder)
         m_mixFolder = std::make_unique<QTemporaryDir>();
+    if (!m_mixFolder->isValid()) {
+        m_openedClips = clips;
+        useSound(clips, std::nullopt, tr("%1 Playing without sound.").arg(m_mixFolder->errorString()));
+        return;
+    }
+    const bool whole = clips.size() == 1 && clips.first().trimIn == 0 && clips.first().trimOut == 0;
+    const QString name = QStringLiteral("mix-%1.wav").arg(++m_mixCount);
+    if (whole) {
+        QString error;
+        const std::optional<TrackSound> sound = trackSoundFile(clips, m_mixFolder->path(), name, &error);
+        useSound(clips, sound, sound ? QString() : tr("%1 Playing without sound.").arg(error));
+        return;
+    }
+    if (m_mixing && clips == m_mixingClips)
+        return; // already being mixed
+    cancelMix();
+    m_mixCancel = std::make_shared<std::atomic_bool>(false);
+    m_mixing = true;
+    m_mixingClips = clips;
+    const int generation = ++m_mixGeneration;
+    auto *watcher = new QFutureWatcher<MixOutcome>(this);
+    connect(watcher, &QFutureWatcher<MixOutcome>::finished, this, [this, watcher, generation, clips] {
+        watcher->deleteLater();
+        const MixOutcome outcome = watcher->result();
+        if (generation != m_mixGeneration) {
+            if (outcome.sound && outcome.sound->mixed)
+                QFile::remove(outcome.sound->path); // an older track's mix
+            return;
+        }
+        m_mixing = false;
+        useSound(clips, outcome.sound,
+            outcome.sound || outcome.error.isEmpty() ? QString() : tr("%1 Playing without sound.").arg(outcome.error));
+        if (!m_soundProblem.isEmpty())
+            Q_EMIT message(m_soundProblem);
+        if (m_playing && !m_suspended)
+            startSound(m_clock.time(now()));
+        Q_EMIT soundReady();
+    });
+    watcher->setFuture(QtConcurrent::run([clips, folder = m_mixFolder->path(), name, cancel = m_mixCancel] {
+        MixOutcome outcome;
+        outcome.sound = trackSoundFile(clips, folder, name, &outcome.error, cancel.get());
+        return outcome;
+    }));
+}
+
+void PlaybackController::cancelMix()
+{
+    if (m_mixCancel)
+        *m_mixCancel = true;
+    m_mixCancel.reset();
+    ++m_mixGeneration;
+    m_mixing = false;
+}
+
+void PlaybackController::useSound(
+    const QVector<AudioClip> &clips, const std::optional<TrackSound> &sound, const QString &problem)
+{
     if (!m_mixPath.isEmpty())
         QFile::remove(m_mixPath);
     m_mixPath.clear();
-    QString error;
-    const std::optional<TrackSound> sound = m_mixFolder->isValid()
-        ? trackSoundFile(clips, m_mixFolder->path(), QStringLiteral("mix-%1.wav").arg(++m_mixCount), &error)
-        : std::nullopt;
-    if (!m_mixFolder->isValid())
-        error = m_mixFolder->errorString();
     m_openedClips = clips;
-    if (!sound || sound->path.isEmpty()) {
+    if (!sound || sound->path.isEmpty() || !m_track) {
         m_soundOpen = false;
         m_soundPath.clear();
         m_heard.reset();
-        m_soundProblem = sound ? QString() : tr("%1 Playing without sound.").arg(error);
+        m_soundProblem = m_track ? problem : tr("No audio output device: playing without sound.");
         return;
     }
     if (sound->mixed)
         m_mixPath = sound->path;
     m_heard = AudioClip {sound->path, sound->offset, sound->duration > 0 ? sound->duration : Timeline::kMaxSeconds};
+    QString error;
     m_soundOpen = m_track->open(sound->path, &error);
     m_soundPath = m_soundOpen ? sound->path : QString();
     m_soundProblem = m_soundOpen ? QString() : tr("%1 Playing without sound.").arg(error);
@@ -459,6 +515,7 @@ void PlaybackController::onDocumentChanged(ChangeFlags what)
         const QVector<AudioClip> &clips = m_document->timeline().audioClips();
         if (clips != m_clips) {
             m_clips = clips;
+            cancelMix();
             stopSound();
             m_soundOpen = false;
             m_soundPath.clear();

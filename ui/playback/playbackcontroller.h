@@ -1,6 +1,7 @@
 #pragma once
 
 #include "document/document.h"
+#include "media/audiomix.h"
 #include "playback/playbackclock.h"
 
 #include <QElapsedTimer>
@@ -10,6 +11,7 @@
 #include <QTemporaryDir>
 #include <QTimer>
 
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -70,6 +72,8 @@ public:
 
     // Whether the sound is heard while playing (a clip, its file opened, an output device).
     bool hasSound() const;
+    // Whether the clips are being mixed to one file in the background (soundReady() follows).
+    bool isMixing() const { return m_mixing; }
     // Why there is no sound, for the status bar (empty when there is, or no clip to play).
     QString soundProblem() const { return m_soundProblem; }
     // Frames the playhead was moved to while playing, and the re-syncs to the audio clock that
@@ -102,6 +106,8 @@ Q_SIGNALS:
     void playingChanged(bool playing);
     // Something the user should know, for the status bar (e.g. "playing without sound: ...").
     void message(const QString &text);
+    // A mix made in the background is open (or failed: soundProblem() says why).
+    void soundReady();
 
 private:
     enum class Sound { Off, Waiting, Playing, Done };
@@ -118,6 +124,10 @@ private:
     void onPlayheadMoved(double time);
     void onScrubbing(bool scrubbing);
     void openSound();
+    // Opens `sound` (the track `clips` as one file) in the player, or says `problem`.
+    void useSound(const QVector<AudioClip> &clips, const std::optional<TrackSound> &sound, const QString &problem);
+    // Drops the mix being made (the track changed): its result, when it comes, is not used.
+    void cancelMix();
     // Starts the clock and the sound at animation time `time`.
     void startAt(double time);
     void startSound(double time);
@@ -152,6 +162,15 @@ private:
     std::unique_ptr<QTemporaryDir> m_mixFolder; // where the clips are mixed to one file
     QString m_mixPath; // the mix m_track has open, or empty
     int m_mixCount = 0;
+    struct MixOutcome
+    {
+        std::optional<TrackSound> sound;
+        QString error;
+    };
+    bool m_mixing = false; // a mix of m_mixingClips is being made
+    QVector<AudioClip> m_mixingClips;
+    int m_mixGeneration = 0; // the mix that counts; an older one finishing is dropped
+    std::shared_ptr<std::atomic_bool> m_mixCancel; // stops the mix that no longer counts
     QString m_soundPath; // the file m_track has open
     bool m_soundOpen = false;
     QString m_soundProblem;

@@ -1,5 +1,6 @@
 #include "views/pointhandle.h"
 
+#include "views/displaynames.h"
 #include "views/photoview.h"
 
 #include <QCoreApplication>
@@ -12,9 +13,11 @@ namespace toonface {
 
 namespace {
 
-QString labelText(int index)
+// The label beside a point: its ID when every point is labelled (View ▸ Show Point IDs, compact),
+// its plain name ("Mouth, left corner") beside the one point hovered.
+QString labelText(int index, bool name)
 {
-    return pointId(index);
+    return name ? pointTitle(index) : pointId(index);
 }
 
 QFont labelFont()
@@ -25,28 +28,21 @@ QFont labelFont()
 }
 
 // Where the label sits relative to the point, and its size.
-QRectF labelRect(int index)
+QRectF labelRect(int index, bool name)
 {
     const QFontMetricsF metrics(labelFont());
-    const QRectF text = metrics.boundingRect(labelText(index));
+    const QRectF text = metrics.boundingRect(labelText(index, name));
     return QRectF(QPointF(PointHandle::kRadius + 2, -text.height() / 2), text.size()).adjusted(-1, 0, 1, 0);
 }
 
-} // namespace
+constexpr double kHoveredZ = 4;
 
-QString PointHandle::groupDisplayName(PointGroup group)
+double restingZ(int index)
 {
-    switch (group) {
-    case PointGroup::Hair: return QCoreApplication::translate("PointHandle", "hair");
-    case PointGroup::Contour: return QCoreApplication::translate("PointHandle", "face contour");
-    case PointGroup::Ears: return QCoreApplication::translate("PointHandle", "ears");
-    case PointGroup::Eyebrows: return QCoreApplication::translate("PointHandle", "eyebrows");
-    case PointGroup::Eyes: return QCoreApplication::translate("PointHandle", "eyes");
-    case PointGroup::Nose: return QCoreApplication::translate("PointHandle", "nose");
-    case PointGroup::Mouth: return QCoreApplication::translate("PointHandle", "mouth");
-    }
-    return groupName(group);
+    return pointTable()[index].control ? 3 : 2;
 }
+
+} // namespace
 
 PointHandle::PointHandle(PhotoView *view, int index)
     : m_view(view)
@@ -56,7 +52,7 @@ PointHandle::PointHandle(PhotoView *view, int index)
     setAcceptHoverEvents(true);
     setAcceptedMouseButtons(Qt::LeftButton);
     setCursor(Qt::OpenHandCursor);
-    setZValue(pointTable()[index].control ? 3 : 2);
+    setZValue(restingZ(index));
     updateToolTip();
 }
 
@@ -98,7 +94,7 @@ QRectF PointHandle::boundingRect() const
     const double r = kRadius + 3;
     QRectF rect(-r, -r, 2 * r, 2 * r);
     if (m_showId || m_hovered)
-        rect |= labelRect(m_index).adjusted(-1, -1, 1, 1);
+        rect |= labelRect(m_index, !m_showId).adjusted(-1, -1, 1, 1);
     return rect;
 }
 
@@ -125,13 +121,13 @@ void PointHandle::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWi
         painter->drawEllipse(QPointF(), r, r);
 
     if (m_showId || m_hovered) {
-        const QRectF label = labelRect(m_index);
+        const QRectF label = labelRect(m_index, !m_showId);
         painter->setPen(Qt::NoPen);
         painter->setBrush(QColor(0, 0, 0, 160));
         painter->drawRoundedRect(label, 2, 2);
         painter->setPen(Qt::white);
         painter->setFont(labelFont());
-        painter->drawText(label, Qt::AlignCenter, labelText(m_index));
+        painter->drawText(label, Qt::AlignCenter, labelText(m_index, !m_showId));
     }
 }
 
@@ -139,6 +135,7 @@ void PointHandle::hoverEnterEvent(QGraphicsSceneHoverEvent *)
 {
     prepareGeometryChange();
     m_hovered = true;
+    setZValue(kHoveredZ); // its name reads over the neighbouring points
     m_view->pointHoverChanged(m_index, true);
 }
 
@@ -146,6 +143,7 @@ void PointHandle::hoverLeaveEvent(QGraphicsSceneHoverEvent *)
 {
     prepareGeometryChange();
     m_hovered = false;
+    setZValue(restingZ(m_index));
     m_view->pointHoverChanged(m_index, false);
 }
 
@@ -185,8 +183,7 @@ void PointHandle::mouseReleaseEvent(QGraphicsSceneMouseEvent *event)
 void PointHandle::updateToolTip()
 {
     const PointInfo &info = pointTable()[m_index];
-    QString tip = QCoreApplication::translate("PointHandle", "Point %1 (%2)")
-                      .arg(pointId(m_index), groupDisplayName(info.group));
+    QString tip = pointTitle(m_index);
     if (info.control)
         tip += QLatin1Char('\n') + QCoreApplication::translate("PointHandle", "Control point: animation moves it");
     if (m_handPlaced)

@@ -23,7 +23,6 @@ public:
     bool isHovered() const { return m_hovered; }
 
     static QColor groupColour(PointGroup group);
-    static QString groupDisplayName(PointGroup group); // translated, for the user
     static constexpr double kRadius = 4.5; // on screen, in device-independent pixels
 
     QRectF boundingRect() const override;

@@ -44,13 +44,24 @@ const QVector<PoseHandle> &poseHandles()
     return handles;
 }
 
+namespace {
+
+// What the pose track adds to a point at `time` as the cartoon shows it: on the mouth's points
+// in speech, only as much as TimelineEvaluator::poseOnMouthWeightAt() lets through.
+QPointF shownOffset(const TimelineEvaluator &evaluator, int index, QPointF raw, double time)
+{
+    return pointTable()[index].group == PointGroup::Mouth ? raw * evaluator.poseOnMouthWeightAt(time) : raw;
+}
+
+} // namespace
+
 QPointF poseTrackOffsetEs0(const TimelineEvaluator &evaluator, double es0, double time, const QString &control)
 {
     const int index = pointIndex(control);
     const qsizetype at = evaluator.poseTrackPoints().indexOf(index);
     if (at < 0 || !(es0 > 0))
         return {};
-    return evaluator.poseOffsetsAt(time).at(at) / es0;
+    return shownOffset(evaluator, index, evaluator.poseOffsetsAt(time).at(at), time) / es0;
 }
 
 Animation withPoseOffset(const Animation &animation, const TimelineEvaluator &evaluator, double es0, double time,
@@ -70,8 +81,9 @@ Animation withPoseOffset(const Animation &animation, const TimelineEvaluator &ev
     if (!found && es0 > 0) {
         const QVector<int> &points = evaluator.poseTrackPoints();
         const QVector<QPointF> offsets = evaluator.poseOffsetsAt(time);
+        // The new key holds what each point shows now, so that adding it moves nothing else.
         for (qsizetype i = 0; i < points.size(); ++i)
-            key.offsetsEs0.insert(pointId(points[i]), offsets[i] / es0);
+            key.offsetsEs0.insert(pointId(points[i]), shownOffset(evaluator, points[i], offsets[i], time) / es0);
     }
     key.offsetsEs0.insert(control, offsetEs0);
     out.timeline.addPoseKey(key);

@@ -29,12 +29,14 @@ const QVector<PoseHandle> &poseHandles();
 
 // The animation with a pose key at `time` giving control point `control` the pose-track offset
 // `offsetEs0`. A key already at that time (within Timeline::kPoseTimeTolerance) keeps its other
-// offsets; a new key takes the track's current offsets at `time` for every point the track moves
-// (from `evaluator`, built on the same timeline, and `es0`), so the rest of the track is unchanged.
+// offsets; a new key takes the offsets the cartoon shows at `time` for every point the track moves
+// (from `evaluator`, built on the same timeline, and `es0`: on the mouth's points in speech, as
+// much of the track as TimelineEvaluator::poseOnMouthWeightAt() lets through), so nothing else
+// moves where the key is added.
 Animation withPoseOffset(const Animation &animation, const TimelineEvaluator &evaluator, double es0, double time,
     const QString &control, QPointF offsetEs0);
 
-// The pose track's offset of `control` at `time`, ES0 units.
+// The pose track's offset of `control` at `time` as the cartoon shows it, ES0 units.
 QPointF poseTrackOffsetEs0(const TimelineEvaluator &evaluator, double es0, double time, const QString &control);
 
 // One drag of a pose handle: every move replaces the animation as it was when the drag began by

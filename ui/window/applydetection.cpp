@@ -2,9 +2,12 @@
 
 #include "document/document.h"
 #include "document/undomacro.h"
+#include "face/headturn.h"
 #include "views/displaynames.h"
 
 #include <QCoreApplication>
+
+#include <cmath>
 
 namespace toonface {
 
@@ -34,6 +37,19 @@ void applyDetection(Document *document, const DetectionResult &result, Detection
     }
 }
 
+QString turnedFaceWarning(const FaceModel &face)
+{
+    const HeadTurn turn = headTurn(face);
+    if (!turnedTooFar(turn))
+        return {};
+    const QString how = std::abs(turn.yawDeg) >= std::abs(turn.rollDeg)
+        ? ApplyDetection::tr("The face is turned about %1° to the side.").arg(qRound(std::abs(turn.yawDeg)))
+        : ApplyDetection::tr("The head is tilted about %1°.").arg(qRound(std::abs(turn.rollDeg)));
+    return how + QLatin1Char(' ')
+        + ApplyDetection::tr("The cartoon is drawn from the front and will look twisted: a photo looking straight "
+                             "into the camera works best.");
+}
+
 QString detectionSummary(const DetectionResult &result, bool choseFace)
 {
     const int ms = qRound(result.timingMs.value(QStringLiteral("total")));
@@ -53,6 +69,8 @@ QString detectionSummary(const DetectionResult &result, bool choseFace)
                     .arg(ms);
     if (!result.note.isEmpty())
         found += QLatin1Char(' ') + ApplyDetection::tr("The landmark method could not serve: %1").arg(result.note);
+    if (const QString turned = turnedFaceWarning(result.face); !turned.isEmpty())
+        found += QLatin1Char(' ') + turned;
     return found;
 }
 

@@ -22,5 +22,8 @@ void applyDetection(Document *document, const DetectionResult &result, Detection
 // What the status bar says of a detection: the method and its time, how many faces were found
 // and which is used, and why auto fell back to the thesis' pipeline.
 QString detectionSummary(const DetectionResult &result, bool choseFace);
+// Says that the face is turned or tilted beyond what the cartoon draws well (face/headturn.h),
+// or nothing; detectionSummary() adds it.
+QString turnedFaceWarning(const FaceModel &face);
 
 } // namespace toonface

@@ -6,7 +6,6 @@
 #include "render/svgface.h"
 #include "views/displaynames.h"
 #include "views/photoview.h"
-#include "views/pointhandle.h"
 #include "views/previewview.h"
 #include "views/themedicon.h"
 #include "window/applydetection.h"
@@ -300,7 +299,8 @@ void MainWindow::applyDetectedFace(const DetectionResult &result)
     // Auto's fallback to the thesis' pipeline, and the choice of faces, stay up until the next
     // message.
     statusBar()->showMessage(detectionSummary(result, m_detectChoosesFace),
-        result.note.isEmpty() && result.faceCount <= 1 ? kStatusTimeoutMs : 0);
+        result.note.isEmpty() && result.faceCount <= 1 && turnedFaceWarning(result.face).isEmpty() ? kStatusTimeoutMs
+                                                                                                   : 0);
     Q_EMIT pointsPlaced();
 }
 
@@ -591,10 +591,7 @@ void MainWindow::showPointStatus(int index)
     }
     const PointInfo &info = pointTable()[index];
     const QPointF p = m_document->face().point(index);
-    QString text = tr("Point %1 (%2) at %3, %4")
-                       .arg(pointId(index), PointHandle::groupDisplayName(info.group))
-                       .arg(p.x(), 0, 'f', 1)
-                       .arg(p.y(), 0, 'f', 1);
+    QString text = tr("%1 at %2, %3").arg(pointTitle(index)).arg(p.x(), 0, 'f', 1).arg(p.y(), 0, 'f', 1);
     if (info.control)
         text += tr(" · control point");
     if (m_document->face().isHandPlaced(index))

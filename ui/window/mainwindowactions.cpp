@@ -2,6 +2,7 @@
 // mainwindow.cpp holds what the window does with them.
 #include "window/mainwindow.h"
 
+#include "dialogs/manualdialog.h"
 #include "dialogs/shortcutsdialog.h"
 #include "document/document.h"
 #include "render/style.h"
@@ -177,6 +178,13 @@ void MainWindow::createMenus()
     m_stepsUi->install(view);
 
     m_helpMenu = menuBar()->addMenu(tr("&Help"));
+    auto *manual = new QAction(tr("User &Manual"), this);
+    manual->setObjectName(QStringLiteral("actionManual"));
+    connect(manual, &QAction::triggered, this, [this] {
+        ManualDialog dialog(this);
+        dialog.exec();
+    });
+    m_helpMenu->addAction(manual);
     auto *shortcuts = new QAction(tr("&Keyboard Shortcuts"), this);
     connect(shortcuts, &QAction::triggered, this, [this] {
         ShortcutsDialog dialog(menuBar(), this);

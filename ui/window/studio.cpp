@@ -33,6 +33,7 @@
 #include <QMainWindow>
 #include <QMenu>
 #include <QMenuBar>
+#include <QScreen>
 #include <QStandardPaths>
 #include <QToolBar>
 
@@ -273,6 +274,7 @@ void Studio::installCapture()
     m_captureCamera->setStatusTip(tr("Take the neutral photo with a camera"));
     connect(m_captureCamera, &QAction::triggered, this, &Studio::captureFromCamera);
     m_liveMode = new QAction(themedIcon("camera-web", "live-mode.svg"), tr("&Live Mode…"), this);
+    m_liveMode->setObjectName(QStringLiteral("actionLiveMode"));
     m_liveMode->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
     m_liveMode->setStatusTip(tr("Puppeteer the cartoon live from a camera or a video, and record the performance"));
     connect(m_liveMode, &QAction::triggered, this, &Studio::showLiveMode);
@@ -303,6 +305,13 @@ void Studio::showLiveMode()
     if (!m_liveWindow) {
         m_liveWindow = new LiveWindow(m_document, m_playhead, m_window);
         connect(m_liveWindow, &LiveWindow::message, this, &Studio::message);
+        // Its own window beside the main one (it opened centred over it, hiding the photo).
+        if (const QScreen *screen = m_window->screen()) {
+            const QRect place
+                = LiveWindow::placement(m_window->frameGeometry(), m_liveWindow->size(), screen->availableGeometry());
+            m_liveWindow->resize(place.size());
+            m_liveWindow->move(place.topLeft());
+        }
     }
     m_liveWindow->show();
     m_liveWindow->raise();
