@@ -87,10 +87,24 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
     }
     for (int k = n - 2; k >= 0; --k)
         hi[size_t(k)] = std::min(hi[size_t(k)], hi[size_t(k) + 1] - minFrames[size_t(k)]);
+    // The windows of neighbouring syllables overlap: each frame's evidence for a kind of onset
+    // is worked out once (NaN: not yet).
+    constexpr int kKinds = int(OnsetKind::Any) + 1;
+    std::array<std::vector<double>, kKinds> evidenceOf;
+    auto onsetEvidence = [&](int b, int k) {
+        if (k == 0)
+            return sig.onsetEvidence(b, kinds[0], true);
+        std::vector<double> &cache = evidenceOf[size_t(kinds[size_t(k)])];
+        if (cache.empty())
+            cache.assign(size_t(T), std::nan(""));
+        double &e = cache[size_t(b)];
+        if (std::isnan(e))
+            e = sig.onsetEvidence(b, kinds[size_t(k)], false);
+        return e;
+    };
     auto node = [&](int k, int b) {
         const double d = (b - prior[size_t(k)]) / kPriorSigma;
-        return kOnset * sig.onsetEvidence(b, kinds[size_t(k)], k == 0)
-            - kPrior * priorWeight[size_t(k)] * std::min(0.5 * d * d, kPriorCap);
+        return kOnset * onsetEvidence(b, k) - kPrior * priorWeight[size_t(k)] * std::min(0.5 * d * d, kPriorCap);
     };
     // A pause may follow a syllable's nucleus, never come between its onset and its nucleus.
     // Its nucleus is a rise after the dip that follows the onset (the first frames after an
@@ -117,11 +131,15 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
     // A syllable over [from, to): its nucleus and its length (pauses excluded) score `base`,
     // from which `penalty` (never negative) is taken. base alone bounds the span's score from
     // above: the search skips the penalty where that bound cannot win.
-    auto base = [&](int k, int from, int to) {
-        const double len = std::max(1.0, (to - from) - sig.pauseFrames(from, to));
+    // (`speech` the span's frames less its pauses, `nucleus` its strongest nucleus.)
+    auto baseOf = [&](int k, double speech, double nucleus) {
+        const double len = std::max(1.0, speech);
         const double r
             = (len < double(logLength.size()) ? logLength[size_t(len)] : std::log(len)) - logExpected[size_t(k)];
-        return kNucleus * sig.maxNucleus(from, to) - kDuration * r * r;
+        return kNucleus * nucleus - kDuration * r * r;
+    };
+    auto base = [&](int k, int from, int to) {
+        return baseOf(k, (to - from) - sig.pauseFrames(from, to), sig.maxNucleus(from, to));
     };
     auto penalty = [&](int from, int to) {
         // Two loud peaks inside with a valley of 3 ln units (13 dB) between them: a syllable
@@ -143,10 +161,21 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
     constexpr double kNone = -1e18;
     std::vector<std::vector<double>> score(static_cast<size_t>(n));
     std::vector<std::vector<int>> from(static_cast<size_t>(n));
+    // The best score of the syllable before at or before each of its onsets: with the
+    // strongest nucleus the spans can hold, it bounds what the onsets further back can score
+    // once their spans are longer than expected (and grow longer still): the search stops
+    // where the bound cannot win.
+    std::vector<double> bestBefore;
     for (int k = 0; k < n; ++k) {
         const int w = std::max(hi[size_t(k)] - lo[size_t(k)] + 1, 0);
         score[size_t(k)].assign(size_t(w), kNone);
         from[size_t(k)].assign(size_t(w), -1);
+        if (k > 0) {
+            const std::vector<double> &before = score[size_t(k) - 1];
+            bestBefore.resize(before.size());
+            for (size_t q = 0; q < before.size(); ++q)
+                bestBefore[q] = q > 0 ? std::max(bestBefore[q - 1], before[q]) : before[q];
+        }
         for (int b = lo[size_t(k)]; b <= hi[size_t(k)]; ++b) {
             const double here = node(k, b);
             if (k == 0) {
@@ -159,16 +188,33 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
             // considered: the search runs back from b and stops there.
             const double longest = 4.0 * std::max(expected[size_t(k) - 1], 3.0) + 10.0;
             const int shortest = minFrames[size_t(k) - 1];
-            for (int p = std::min(hi[size_t(k) - 1], b - shortest); p >= lo[size_t(k) - 1]; --p) {
-                const double speech = (b - p) - sig.pauseFrames(p, b);
+            // The span [p, b)'s pauses and strongest nucleus, kept as p moves back a frame at
+            // a time (the same values as the window sums and maxima, without their look-ups).
+            const int start = std::min(hi[size_t(k) - 1], b - shortest);
+            int pauses = start >= lo[size_t(k) - 1] ? int(sig.pauseFrames(start, b)) : 0;
+            double nucleus = start >= lo[size_t(k) - 1] ? sig.maxNucleus(start, b) : 0.0;
+            const double strongest = kNucleus * sig.maxNucleus(lo[size_t(k) - 1], b);
+            for (int p = start; p >= lo[size_t(k) - 1]; --p) {
+                if (p < start) {
+                    pauses += sig.isPause(p) ? 1 : 0;
+                    nucleus = std::max(nucleus, sig.nucleus(p));
+                }
+                const double speech = (b - p) - pauses;
                 if (speech > longest)
                     break;
+                {
+                    const double len = std::max(1.0, speech);
+                    const double r = (len < double(logLength.size()) ? logLength[size_t(len)] : std::log(len))
+                        - logExpected[size_t(k) - 1];
+                    if (r >= 0 && bestBefore[size_t(p - lo[size_t(k) - 1])] + (strongest - kDuration * r * r) <= best)
+                        break;
+                }
                 if (speech < shortest)
                     continue;
                 const double prev = score[size_t(k) - 1][size_t(p - lo[size_t(k) - 1])];
                 if (prev <= kNone / 2)
                     continue;
-                const double b0 = base(k - 1, p, b);
+                const double b0 = baseOf(k - 1, speech, nucleus);
                 if (prev + b0 <= best)
                     continue;
                 const double v = prev + (b0 - penalty(p, b));
@@ -231,9 +277,45 @@ void setConfidences(AlignResult *r)
         r->syllables[k].confidence = r->unspoken.contains(int(k)) ? 0.0 : syllableConfidence(relative[size_t(k)]);
 }
 
-// The aligner proper, on the recording's features `a` and the padded reference's `b`.
+using WarpPath = std::vector<std::pair<int, int>>;
+
+// What the aligner reads of the recording's and the reference's pauses: the same for every
+// pass (adapting the reference moves its vectors, not its loudness or silence).
+struct PauseSignals
+{
+    OnsetSignals sig; // the recording's
+    // Silence for the warp: quiet by the whole band's energy, or a pause by the mid band's
+    // loudness. Steady noise (hum, a fan, a noisy line) can keep a pause's whole-band energy
+    // near that of speech; counted as speech, the noise before the first word draws the first
+    // syllables into it and squeezes them.
+    std::vector<float> quietA, quietB;
+    std::vector<float> longA, longB; // pauses, not closures
+    double refSpeech = 0; // frames of the reference that are not pause
+
+    PauseSignals(const SpeechFeatures &a, const SpeechFeatures &b)
+        : sig(a)
+        , quietA(a.silence)
+        , quietB(b.silence)
+        , longA(size_t(a.frames), 0.0f)
+        , longB(size_t(b.frames), 0.0f)
+    {
+        const OnsetSignals refSig(b);
+        for (int t = 0; t < b.frames; ++t)
+            if (refSig.isPause(t))
+                quietB[size_t(t)] = longB[size_t(t)] = 1.0f;
+        refSpeech = b.frames - refSig.pauseFrames(0, b.frames);
+        for (int t = 0; t < a.frames; ++t)
+            if (sig.isPause(t))
+                quietA[size_t(t)] = longA[size_t(t)] = 1.0f;
+    }
+};
+
+// The aligner proper, on the recording's features `a` and the padded reference's `b`. With
+// `guide` (the warp of an earlier pass against a like reference) the warp searches near it
+// (DtwOptions::guide); `warp` (optional) receives the warp.
 AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const TtsResult &reference,
-    const SpeechFeatures &b, bool refine, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+    const SpeechFeatures &b, const PauseSignals &in, bool refine, const SpeechProgressFn &progress,
+    const std::atomic_bool *cancel, const WarpPath *guide = nullptr, WarpPath *warpOut = nullptr)
 {
     const int n = int(script.syllables.size());
     if (!reference.ok() || reference.units.size() != n)
@@ -275,28 +357,10 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     // finer ones keep the default radius. (With the default at every level, sentences of
     // joined real recordings landed up to 1.9 s late; 20 at every level still left one.)
     opt.coarseRadius = 30;
-    // Silence for the warp: quiet by the whole band's energy, or a pause by the mid band's
-    // loudness. Steady noise (hum, a fan, a noisy line) can keep a pause's whole-band energy
-    // near that of speech; counted as speech, the noise before the first word draws the first
-    // syllables into it and squeezes them.
-    // (The signals are built again after the warp rather than held through it: on a long
-    // recording they weigh as much as the warp.)
-    std::vector<float> quietA = a.silence, quietB = b.silence;
-    std::vector<float> longA(size_t(a.frames), 0.0f), longB(size_t(b.frames), 0.0f); // pauses, not closures
-    double refSpeech = 0;
-    {
-        const OnsetSignals refSig(b);
-        for (int t = 0; t < b.frames; ++t)
-            if (refSig.isPause(t))
-                quietB[size_t(t)] = longB[size_t(t)] = 1.0f;
-        refSpeech = b.frames - refSig.pauseFrames(0, b.frames);
-    }
-    {
-        const OnsetSignals pauses(a);
-        for (int t = 0; t < a.frames; ++t)
-            if (pauses.isPause(t))
-                quietA[size_t(t)] = longA[size_t(t)] = 1.0f;
-    }
+    opt.guide = guide;
+    const std::vector<float> &quietA = in.quietA, &quietB = in.quietB;
+    const OnsetSignals &sig = in.sig;
+    const double refSpeech = in.refSpeech;
     // The speaker may pause between any two syllables, not only where the script marks a
     // break: the warp may hold the last frame of each of the reference's syllables over a
     // pause of the recording at a small cost (dtw.h). A stop's closure inside a syllable is
@@ -307,9 +371,8 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         if (j >= 0 && j < b.frames)
             pauseB[size_t(j)] = 1.0f;
     }
-    const auto path = dtwPath({a.vectors.data(), quietA.data(), a.frames, longA.data()},
-        {b.vectors.data(), quietB.data(), b.frames, longB.data(), pauseB.data()}, opt, cancel);
-    const OnsetSignals sig(a);
+    const auto path = dtwPath({a.vectors.data(), quietA.data(), a.frames, in.longA.data()},
+        {b.vectors.data(), quietB.data(), b.frames, in.longB.data(), pauseB.data()}, opt, cancel);
     if (isCancelled(cancel))
         return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
     if (path.empty())
@@ -317,6 +380,8 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     if (progress)
         progress(0.8, QStringLiteral("warping"));
     const Warp warp(path, b.frames);
+    if (warpOut)
+        *warpOut = path;
 
     // Reference time → audio time. Where the recording is slower, the warp holds one reference
     // frame against several of its frames, and the reference's moment may be any of them: an
@@ -634,7 +699,11 @@ std::vector<double> initialEnds(const Script &script, const std::vector<double> 
 AlignResult alignAdapted(const SpeechFeatures &a, const Script &script, const TtsResult &reference,
     const SpeechFeatures &b, bool refine, bool adapt, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
-    AlignResult r = alignFeatures(a, script, reference, b, refine, progress, cancel);
+    if (!reference.ok() || reference.units.size() != script.syllables.size())
+        return failure(AlignStatus::BadInput, ScriptText::tr("no reference rendering of the script"));
+    const PauseSignals pauses(a, b);
+    WarpPath warp;
+    AlignResult r = alignFeatures(a, script, reference, b, pauses, refine, progress, cancel, nullptr, &warp);
     markStage("first alignment");
     const int n = int(script.syllables.size());
     // Too few syllables say too little about the voice: on single sentences (10-20
@@ -670,7 +739,10 @@ AlignResult alignAdapted(const SpeechFeatures &a, const Script &script, const Tt
         SpeechFeatures adapted = b;
         adaptReference(
             a, soundClasses(a, script, starts, initialEnds(script, starts, phonemes, 0.0), ends), &adapted, refClasses);
-        AlignResult next = alignFeatures(a, script, reference, adapted, refine, {}, cancel);
+        // The adapted reference warps onto the recording much as the plain one did: near the
+        // warp before (within DtwOptions::guideRadius; the band's search found the same onsets).
+        WarpPath nextWarp;
+        AlignResult next = alignFeatures(a, script, reference, adapted, pauses, refine, {}, cancel, &warp, &nextWarp);
         markStage("adapted alignment");
         if (!next.ok())
             break;
@@ -678,6 +750,7 @@ AlignResult alignAdapted(const SpeechFeatures &a, const Script &script, const Tt
         for (int k = 0; k < n; ++k)
             moved = std::max(moved, std::abs(next.syllables[k].start - r.syllables[k].start));
         r = std::move(next);
+        warp = std::move(nextWarp);
         if (moved < kStable)
             break;
     }
