@@ -141,10 +141,11 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
     auto base = [&](int k, int from, int to) {
         return baseOf(k, (to - from) - sig.pauseFrames(from, to), sig.maxNucleus(from, to));
     };
-    auto penalty = [&](int from, int to) {
+    // (`valley` the span's sig.innerValley(from, to).)
+    auto penaltyOf = [&](int from, int to, double valley) {
         // Two loud peaks inside with a valley of 3 ln units (13 dB) between them: a syllable
         // boundary missed.
-        const double inside = std::clamp((sig.innerValley(from, to) - 1.0) / 2.0, 0.0, 1.0);
+        const double inside = std::clamp((valley - 1.0) / 2.0, 0.0, 1.0);
         // Nor does a syllable go on after a pause: a nucleus after the pause inside the span
         // belongs to the next syllable (stop closures are too short to count as pauses).
         const int pause = sig.nextPause(from + 1);
@@ -158,6 +159,7 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
         }
         return kValley * (inside + pauseInside);
     };
+    auto penalty = [&](int from, int to) { return penaltyOf(from, to, sig.innerValley(from, to)); };
     constexpr double kNone = -1e18;
     std::vector<std::vector<double>> score(static_cast<size_t>(n));
     std::vector<std::vector<int>> from(static_cast<size_t>(n));
@@ -188,16 +190,19 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
             // considered: the search runs back from b and stops there.
             const double longest = 4.0 * std::max(expected[size_t(k) - 1], 3.0) + 10.0;
             const int shortest = minFrames[size_t(k) - 1];
-            // The span [p, b)'s pauses and strongest nucleus, kept as p moves back a frame at
-            // a time (the same values as the window sums and maxima, without their look-ups).
+            // The span [p, b)'s pauses, strongest nucleus and deepest valley, kept as p moves
+            // back a frame at a time (the same values as the window sums and maxima, without
+            // their look-ups).
             const int start = std::min(hi[size_t(k) - 1], b - shortest);
             int pauses = start >= lo[size_t(k) - 1] ? int(sig.pauseFrames(start, b)) : 0;
             double nucleus = start >= lo[size_t(k) - 1] ? sig.maxNucleus(start, b) : 0.0;
+            double valley = start >= lo[size_t(k) - 1] ? sig.innerValley(start, b) : 0.0;
             const double strongest = kNucleus * sig.maxNucleus(lo[size_t(k) - 1], b);
             for (int p = start; p >= lo[size_t(k) - 1]; --p) {
                 if (p < start) {
                     pauses += sig.isPause(p) ? 1 : 0;
                     nucleus = std::max(nucleus, sig.nucleus(p));
+                    valley = std::max(valley, sig.valleyFromPeak(p + 2, b));
                 }
                 const double speech = (b - p) - pauses;
                 if (speech > longest)
@@ -217,7 +222,7 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
                 const double b0 = baseOf(k - 1, speech, nucleus);
                 if (prev + b0 <= best)
                     continue;
-                const double v = prev + (b0 - penalty(p, b));
+                const double v = prev + (b0 - penaltyOf(p, b, valley));
                 if (v > best) {
                     best = v;
                     arg = p;
@@ -358,6 +363,9 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     // joined real recordings landed up to 1.9 s late; 20 at every level still left one.)
     opt.coarseRadius = 30;
     opt.guide = guide;
+    // A long recording's coarsest level searches near a pilot one level coarser: the same
+    // onsets on the shared recordings, joined to a minute, and on espeak-ng's held-out voices.
+    opt.pilot = true;
     const std::vector<float> &quietA = in.quietA, &quietB = in.quietB;
     const OnsetSignals &sig = in.sig;
     const double refSpeech = in.refSpeech;

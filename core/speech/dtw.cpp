@@ -157,6 +157,29 @@ void rowCosts(const Level &a, const Level &b, const HoldTerms &termsA, const Hol
     }
 }
 
+// The corridor of `width` columns around the line on which both sequences have spoken the
+// same share of their speech (frames with silence < 0.5).
+void bandCorridor(const Level &ca, const Level &cb, long width, std::vector<int> *lo, std::vector<int> *hi)
+{
+    std::vector<double> speechB(size_t(cb.frames) + 1, 0.0);
+    for (int j = 0; j < cb.frames; ++j)
+        speechB[size_t(j) + 1] = speechB[size_t(j)] + (cb.silence[size_t(j)] < 0.5f ? 1.0 : 0.0);
+    double totalA = 0;
+    for (int i = 0; i < ca.frames; ++i)
+        totalA += ca.silence[size_t(i)] < 0.5f ? 1.0 : 0.0;
+    const int half = int(width / 2);
+    double spokenA = 0;
+    for (int i = 0; i < ca.frames; ++i) {
+        spokenA += ca.silence[size_t(i)] < 0.5f ? 1.0 : 0.0;
+        const double share = totalA > 0 ? spokenA / totalA : double(i + 1) / ca.frames;
+        const int centre
+            = int(std::lower_bound(speechB.begin(), speechB.end(), share * speechB.back() - 1e-9) - speechB.begin());
+        (*lo)[size_t(i)] = std::clamp(centre - half, 0, cb.frames - 1);
+        (*hi)[size_t(i)] = std::clamp(centre + half, 0, cb.frames - 1);
+    }
+    monotoneCorridor(*lo, *hi, cb.frames);
+}
+
 // Narrows the corridor [lo, hi] (of a level `level` times halved) to within `radius`
 // full-resolution frames of `guide`'s rows (as much as it holds of each row) and keeps it
 // monotone.
@@ -295,28 +318,34 @@ std::vector<std::pair<int, int>> dtwPath(
     int level = int(as.size()) - 1;
     const Level &ca = as[size_t(level)], &cb = bs[size_t(level)];
     std::vector<int> lo(size_t(ca.frames), 0), hi(size_t(ca.frames), cb.frames - 1);
-    if (width() < cb.frames) {
-        // The band around the line of equal shares of speech.
-        std::vector<double> speechB(size_t(cb.frames) + 1, 0.0);
-        for (int j = 0; j < cb.frames; ++j)
-            speechB[size_t(j) + 1] = speechB[size_t(j)] + (cb.silence[size_t(j)] < 0.5f ? 1.0 : 0.0);
-        double totalA = 0;
+    if (width() < cb.frames)
+        bandCorridor(ca, cb, width(), &lo, &hi);
+    const int guideRadius = std::max(options.guideRadius, 0);
+    if (options.guide && !options.guide->empty()) {
+        guideCorridor(*options.guide, level, guideRadius, cb.frames, &lo, &hi);
+    } else if (options.pilot && ca.frames > 16 && cb.frames > 16) {
+        long cells = 0;
         for (int i = 0; i < ca.frames; ++i)
-            totalA += ca.silence[size_t(i)] < 0.5f ? 1.0 : 0.0;
-        const int half = int(width() / 2);
-        double spokenA = 0;
-        for (int i = 0; i < ca.frames; ++i) {
-            spokenA += ca.silence[size_t(i)] < 0.5f ? 1.0 : 0.0;
-            const double share = totalA > 0 ? spokenA / totalA : double(i + 1) / ca.frames;
-            const int centre = int(
-                std::lower_bound(speechB.begin(), speechB.end(), share * speechB.back() - 1e-9) - speechB.begin());
-            lo[size_t(i)] = std::clamp(centre - half, 0, cb.frames - 1);
-            hi[size_t(i)] = std::clamp(centre + half, 0, cb.frames - 1);
+            cells += hi[size_t(i)] - lo[size_t(i)] + 1;
+        const long reach = 2L * (guideRadius >> level) + 1;
+        if (cells > 4 * reach * ca.frames) {
+            // The pilot: the band's search one level coarser, whose path then guides this level.
+            const Level pa = halve(ca, dim), pb = halve(cb, dim);
+            std::vector<int> plo(size_t(pa.frames), 0), phi(size_t(pa.frames), pb.frames - 1);
+            const long band = 2L * (long(options.band) >> (level + 1)) + 1;
+            if (options.band > 0 && band < pb.frames)
+                bandCorridor(pa, pb, band, &plo, &phi);
+            const Path pilot = corridorDtw(pa, pb, plo, phi, options, dim, cancel);
+            Path guide;
+            guide.reserve(pilot.size() * 4);
+            for (const auto &[i, j] : pilot)
+                for (int di = 0; di < 2; ++di)
+                    for (int dj = 0; dj < 2; ++dj)
+                        guide.emplace_back((2 * i + di) << level, (2 * j + dj) << level);
+            if (!guide.empty())
+                guideCorridor(guide, level, guideRadius, cb.frames, &lo, &hi);
         }
-        monotoneCorridor(lo, hi, cb.frames);
     }
-    if (options.guide && !options.guide->empty())
-        guideCorridor(*options.guide, level, std::max(options.guideRadius, 0), cb.frames, &lo, &hi);
     Path path = corridorDtw(ca, cb, lo, hi, options, dim, cancel);
     const int coarsest = level;
     while (level > 0 && !path.empty()) {

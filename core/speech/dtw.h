@@ -52,7 +52,10 @@ struct DtwOptions
     // full resolution) of it rather than the whole band: the same path whenever the band's
     // best lies that near, at a fraction of the cost.
     const std::vector<std::pair<int, int>> *guide = nullptr;
-    int guideRadius = 500;
+    int guideRadius = 250;
+    // Without a guide: where the coarsest level's corridor is wider than four times the
+    // guide's, the same search one level coarser (a quarter of the cells) makes the guide.
+    bool pilot = false;
 };
 
 // The warping path from (0, 0) to (a.frames-1, b.frames-1), as (i in a, j in b) pairs;

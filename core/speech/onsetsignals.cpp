@@ -116,6 +116,17 @@ OnsetSignals::OnsetSignals(const SpeechFeatures &f)
             --v;
         m_firstValley[size_t(t)] = v;
     }
+    m_byLeftStart.assign(n + 1, 0);
+    for (const Valley &v : m_valleys)
+        ++m_byLeftStart[size_t(v.left) + 1];
+    for (size_t t = 0; t < n; ++t)
+        m_byLeftStart[t + 1] += m_byLeftStart[t];
+    m_byLeft.resize(m_valleys.size());
+    {
+        std::vector<int> next(m_byLeftStart.begin(), m_byLeftStart.end() - 1);
+        for (size_t v = 0; v < m_valleys.size(); ++v)
+            m_byLeft[size_t(next[size_t(m_valleys[v].left)]++)] = int(v);
+    }
     m_sumLoud = prefix(m_loud);
     m_sumNucleus = prefix(m_nucleus);
     m_sumSpeech = prefix(speech);
