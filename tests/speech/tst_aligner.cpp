@@ -658,6 +658,60 @@ private Q_SLOTS:
         QVERIFY2(std::abs(error) <= 80, qPrintable(QStringLiteral("很 off by %1 ms").arg(error)));
     }
 
+    // A pause the script does not mark with a loud breath in it (noise 10 dB under the
+    // speech, 0.2 s, between two quiet stretches), the phrase before it spoken as a phrase's
+    // end: the breath belongs to the pause. Counted as speech, it split the pause and drew the
+    // syllables either side into it: runs of three to five slid by 0.1-0.7 s.
+    void breathInAnUnmarkedPause_data()
+    {
+        QTest::addColumn<QString>("before");
+        QTest::addColumn<QString>("after");
+        QTest::addColumn<QString>("voice");
+        QTest::addColumn<int>("rate");
+        QTest::addColumn<double>("gap");
+        QTest::newRow("klatt3 fast") << QStringLiteral("我爱") << QStringLiteral("北京天安门，天安门上太阳升。")
+                                     << QStringLiteral("cmn-latn-pinyin+klatt3") << 260 << 0.61;
+        QTest::newRow("m7 slow") << QStringLiteral("我们一起去") << QStringLiteral("买一本书，好不好？")
+                                 << QStringLiteral("cmn-latn-pinyin+m7") << 110 << 0.41;
+    }
+    void breathInAnUnmarkedPause()
+    {
+        QFETCH(QString, before);
+        QFETCH(QString, after);
+        QFETCH(QString, voice);
+        QFETCH(int, rate);
+        QFETCH(double, gap);
+        const Script first = mandarin(before), second = mandarin(after);
+        std::vector<double> truth;
+        Audio rec = pieces({{first, rate}, {second, rate}}, voice, 0.5, gap, 60, 20, 11, &truth);
+        // The breath: in the middle of the gap before the second piece's first onset.
+        const int k = int(first.syllables.size());
+        double power = 0;
+        qsizetype loud = 0;
+        for (const float s : rec.samples)
+            if (std::abs(s) > 0.01f) {
+                power += double(s) * s;
+                ++loud;
+            }
+        power /= double(std::max<qsizetype>(loud, 1));
+        const qsizetype length = qsizetype(0.2 * kSpeechSampleRate);
+        const qsizetype from = qsizetype((truth[size_t(k)] - 0.5 * gap - 0.1) * kSpeechSampleRate);
+        const double amplitude = std::sqrt(3 * power / 10.0);
+        QRandomGenerator rng(12);
+        for (qsizetype i = 0; i < length; ++i)
+            rec.samples[from + i]
+                += float(amplitude * std::sin(M_PI * double(i) / double(length)) * (2 * rng.generateDouble() - 1));
+        const Script script = mandarin(before + after);
+        const AlignResult r = alignScript(rec, script);
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        for (int q = 0; q < r.syllables.size(); ++q) {
+            const double error = (r.syllables[q].start - truth[size_t(q)]) * 1000;
+            QVERIFY2(std::abs(error) <= 150,
+                qPrintable(
+                    QStringLiteral("%1 (syllable %2) off by %3 ms").arg(script.syllables[q].text).arg(q).arg(error)));
+        }
+    }
+
     // The duration model holds inside the search: no syllable comes out shorter than its
     // least plausible length, whatever pulls two onsets together (a speaker who speeds up
     // within a phrase, long pauses the script does not mark).
