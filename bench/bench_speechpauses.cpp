@@ -158,6 +158,7 @@ QJsonObject pauseRunsOf(bool phrased, bool breath)
     Errors all, afterPause;
     RunCount runs;
     double shortest = 1e9;
+    QString shortestWhere;
     int under60 = 0, syllables = 0;
     QJsonArray perVoice;
     quint32 seed = 5000;
@@ -193,8 +194,20 @@ QJsonObject pauseRunsOf(bool phrased, bool breath)
                 all.add(syl.start, truth[size_t(k)], syl.confidence);
                 voiceErrors.add(syl.start, truth[size_t(k)], syl.confidence);
                 signedMs.push_back((syl.start - truth[size_t(k)]) * 1000);
-                const double length = (syl.end - syl.start) * 1000;
-                shortest = std::min(shortest, length);
+                // In whole milliseconds, as toonface-cli writes the times.
+                const double length = std::round(syl.end * 1000) - std::round(syl.start * 1000);
+                if (length < shortest) {
+                    shortest = length;
+                    const double next = size_t(k) + 1 < truth.size() ? truth[size_t(k) + 1] : syl.end;
+                    shortestWhere = QStringLiteral("%1 rate %2, %3 syllable %4 (%5): %6 ms, spoken %7 ms")
+                                        .arg(QString::fromLatin1(v.voice))
+                                        .arg(v.rate)
+                                        .arg(items[item].left(8))
+                                        .arg(k)
+                                        .arg(s.syllables[k].text)
+                                        .arg(length)
+                                        .arg(std::round((next - truth[size_t(k)]) * 1000));
+                }
                 under60 += length < 60 ? 1 : 0;
                 ++syllables;
                 for (const int b : before)
@@ -224,6 +237,7 @@ QJsonObject pauseRunsOf(bool phrased, bool breath)
     out.insert(QStringLiteral("runExamples"), runs.examples);
     out.insert(QStringLiteral("shortestSyllableMs"), std::round(shortest));
     out.insert(QStringLiteral("syllablesUnder60Ms"), under60);
+    out.insert(QStringLiteral("shortestSyllable"), shortestWhere);
     out.insert(QStringLiteral("syllables"), syllables);
     out.insert(QStringLiteral("voices"), perVoice);
     out.insert(QStringLiteral("what"),

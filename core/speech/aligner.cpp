@@ -625,9 +625,11 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         const int startFrame = a.frameAt(s.start + 0.5 * SpeechFeatures::kHop);
         // The next onset may lie a few frames past the pause's end (the first sound of its
         // initial): the pause before it is still this syllable's end.
+        // (Never ending the syllable before its minimum length.)
         for (int e = endFrame, back = 0; e - 1 > startFrame && back <= 5; --e, ++back)
             if (sig.isPause(e - 1)) {
-                endFrame = e;
+                if (a.time(e) - 0.5 * SpeechFeatures::kHop >= s.start + minSeconds[size_t(k)] - 1e-9)
+                    endFrame = e;
                 break;
             }
         while (endFrame - 1 > startFrame && sig.isPause(endFrame - 1)
@@ -704,7 +706,7 @@ std::vector<double> initialEnds(const Script &script, const std::vector<double> 
 
 // alignFeatures, then re-aligned against the reference adapted to the speaker as the
 // alignment heard them (speakeradapt.h) until the onsets stop moving.
-AlignResult alignAdapted(const SpeechFeatures &a, const Script &script, const TtsResult &reference,
+AlignResult alignPasses(const SpeechFeatures &a, const Script &script, const TtsResult &reference,
     const SpeechFeatures &b, bool refine, bool adapt, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
     if (!reference.ok() || reference.units.size() != script.syllables.size())
@@ -766,6 +768,24 @@ AlignResult alignAdapted(const SpeechFeatures &a, const Script &script, const Tt
     for (int k = 0; k < n; ++k)
         at(r.syllables[k].doubts, Doubt::PassMove) = std::abs(r.syllables[k].start - firstPass[size_t(k)]);
     setConfidences(&r);
+    return r;
+}
+
+// alignPasses, with each syllable that ends at the next one's onset frame (no pause between
+// them) ended at that onset itself: a frame's time falls up to a frame before the onset, and
+// a syllable at its least length came out that much shorter. (The passes and the doubts keep
+// the frame's time, as the confidence was fitted with it.)
+AlignResult alignAdapted(const SpeechFeatures &a, const Script &script, const TtsResult &reference,
+    const SpeechFeatures &b, bool refine, bool adapt, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+{
+    AlignResult r = alignPasses(a, script, reference, b, refine, adapt, progress, cancel);
+    for (qsizetype k = 0; r.ok() && k + 1 < r.syllables.size(); ++k) {
+        AlignedSyllable &s = r.syllables[k];
+        const double next = r.syllables[k + 1].start;
+        const double frame = a.time(a.frameAt(next + 0.5 * SpeechFeatures::kHop)) - 0.5 * SpeechFeatures::kHop;
+        if (s.end >= std::min(next, frame) - 1e-9)
+            s.end = std::max(s.end, next);
+    }
     return r;
 }
 
