@@ -87,10 +87,24 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
     }
     for (int k = n - 2; k >= 0; --k)
         hi[size_t(k)] = std::min(hi[size_t(k)], hi[size_t(k) + 1] - minFrames[size_t(k)]);
+    // The windows of neighbouring syllables overlap: each frame's evidence for a kind of onset
+    // is worked out once (NaN: not yet).
+    constexpr int kKinds = int(OnsetKind::Any) + 1;
+    std::array<std::vector<double>, kKinds> evidenceOf;
+    auto onsetEvidence = [&](int b, int k) {
+        if (k == 0)
+            return sig.onsetEvidence(b, kinds[0], true);
+        std::vector<double> &cache = evidenceOf[size_t(kinds[size_t(k)])];
+        if (cache.empty())
+            cache.assign(size_t(T), std::nan(""));
+        double &e = cache[size_t(b)];
+        if (std::isnan(e))
+            e = sig.onsetEvidence(b, kinds[size_t(k)], false);
+        return e;
+    };
     auto node = [&](int k, int b) {
         const double d = (b - prior[size_t(k)]) / kPriorSigma;
-        return kOnset * sig.onsetEvidence(b, kinds[size_t(k)], k == 0)
-            - kPrior * priorWeight[size_t(k)] * std::min(0.5 * d * d, kPriorCap);
+        return kOnset * onsetEvidence(b, k) - kPrior * priorWeight[size_t(k)] * std::min(0.5 * d * d, kPriorCap);
     };
     // A pause may follow a syllable's nucleus, never come between its onset and its nucleus.
     // Its nucleus is a rise after the dip that follows the onset (the first frames after an
@@ -117,16 +131,21 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
     // A syllable over [from, to): its nucleus and its length (pauses excluded) score `base`,
     // from which `penalty` (never negative) is taken. base alone bounds the span's score from
     // above: the search skips the penalty where that bound cannot win.
-    auto base = [&](int k, int from, int to) {
-        const double len = std::max(1.0, (to - from) - sig.pauseFrames(from, to));
+    // (`speech` the span's frames less its pauses, `nucleus` its strongest nucleus.)
+    auto baseOf = [&](int k, double speech, double nucleus) {
+        const double len = std::max(1.0, speech);
         const double r
             = (len < double(logLength.size()) ? logLength[size_t(len)] : std::log(len)) - logExpected[size_t(k)];
-        return kNucleus * sig.maxNucleus(from, to) - kDuration * r * r;
+        return kNucleus * nucleus - kDuration * r * r;
     };
-    auto penalty = [&](int from, int to) {
+    auto base = [&](int k, int from, int to) {
+        return baseOf(k, (to - from) - sig.pauseFrames(from, to), sig.maxNucleus(from, to));
+    };
+    // (`valley` the span's sig.innerValley(from, to).)
+    auto penaltyOf = [&](int from, int to, double valley) {
         // Two loud peaks inside with a valley of 3 ln units (13 dB) between them: a syllable
         // boundary missed.
-        const double inside = std::clamp((sig.innerValley(from, to) - 1.0) / 2.0, 0.0, 1.0);
+        const double inside = std::clamp((valley - 1.0) / 2.0, 0.0, 1.0);
         // Nor does a syllable go on after a pause: a nucleus after the pause inside the span
         // belongs to the next syllable (stop closures are too short to count as pauses).
         const int pause = sig.nextPause(from + 1);
@@ -140,13 +159,25 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
         }
         return kValley * (inside + pauseInside);
     };
+    auto penalty = [&](int from, int to) { return penaltyOf(from, to, sig.innerValley(from, to)); };
     constexpr double kNone = -1e18;
     std::vector<std::vector<double>> score(static_cast<size_t>(n));
     std::vector<std::vector<int>> from(static_cast<size_t>(n));
+    // The best score of the syllable before at or before each of its onsets: with the
+    // strongest nucleus the spans can hold, it bounds what the onsets further back can score
+    // once their spans are longer than expected (and grow longer still): the search stops
+    // where the bound cannot win.
+    std::vector<double> bestBefore;
     for (int k = 0; k < n; ++k) {
         const int w = std::max(hi[size_t(k)] - lo[size_t(k)] + 1, 0);
         score[size_t(k)].assign(size_t(w), kNone);
         from[size_t(k)].assign(size_t(w), -1);
+        if (k > 0) {
+            const std::vector<double> &before = score[size_t(k) - 1];
+            bestBefore.resize(before.size());
+            for (size_t q = 0; q < before.size(); ++q)
+                bestBefore[q] = q > 0 ? std::max(bestBefore[q - 1], before[q]) : before[q];
+        }
         for (int b = lo[size_t(k)]; b <= hi[size_t(k)]; ++b) {
             const double here = node(k, b);
             if (k == 0) {
@@ -159,19 +190,39 @@ std::vector<int> segmentSyllables(const OnsetSignals &sig, const std::vector<int
             // considered: the search runs back from b and stops there.
             const double longest = 4.0 * std::max(expected[size_t(k) - 1], 3.0) + 10.0;
             const int shortest = minFrames[size_t(k) - 1];
-            for (int p = std::min(hi[size_t(k) - 1], b - shortest); p >= lo[size_t(k) - 1]; --p) {
-                const double speech = (b - p) - sig.pauseFrames(p, b);
+            // The span [p, b)'s pauses, strongest nucleus and deepest valley, kept as p moves
+            // back a frame at a time (the same values as the window sums and maxima, without
+            // their look-ups).
+            const int start = std::min(hi[size_t(k) - 1], b - shortest);
+            int pauses = start >= lo[size_t(k) - 1] ? int(sig.pauseFrames(start, b)) : 0;
+            double nucleus = start >= lo[size_t(k) - 1] ? sig.maxNucleus(start, b) : 0.0;
+            double valley = start >= lo[size_t(k) - 1] ? sig.innerValley(start, b) : 0.0;
+            const double strongest = kNucleus * sig.maxNucleus(lo[size_t(k) - 1], b);
+            for (int p = start; p >= lo[size_t(k) - 1]; --p) {
+                if (p < start) {
+                    pauses += sig.isPause(p) ? 1 : 0;
+                    nucleus = std::max(nucleus, sig.nucleus(p));
+                    valley = std::max(valley, sig.valleyFromPeak(p + 2, b));
+                }
+                const double speech = (b - p) - pauses;
                 if (speech > longest)
                     break;
+                {
+                    const double len = std::max(1.0, speech);
+                    const double r = (len < double(logLength.size()) ? logLength[size_t(len)] : std::log(len))
+                        - logExpected[size_t(k) - 1];
+                    if (r >= 0 && bestBefore[size_t(p - lo[size_t(k) - 1])] + (strongest - kDuration * r * r) <= best)
+                        break;
+                }
                 if (speech < shortest)
                     continue;
                 const double prev = score[size_t(k) - 1][size_t(p - lo[size_t(k) - 1])];
                 if (prev <= kNone / 2)
                     continue;
-                const double b0 = base(k - 1, p, b);
+                const double b0 = baseOf(k - 1, speech, nucleus);
                 if (prev + b0 <= best)
                     continue;
-                const double v = prev + (b0 - penalty(p, b));
+                const double v = prev + (b0 - penaltyOf(p, b, valley));
                 if (v > best) {
                     best = v;
                     arg = p;
@@ -231,9 +282,45 @@ void setConfidences(AlignResult *r)
         r->syllables[k].confidence = r->unspoken.contains(int(k)) ? 0.0 : syllableConfidence(relative[size_t(k)]);
 }
 
-// The aligner proper, on the recording's features `a` and the padded reference's `b`.
+using WarpPath = std::vector<std::pair<int, int>>;
+
+// What the aligner reads of the recording's and the reference's pauses: the same for every
+// pass (adapting the reference moves its vectors, not its loudness or silence).
+struct PauseSignals
+{
+    OnsetSignals sig; // the recording's
+    // Silence for the warp: quiet by the whole band's energy, or a pause by the mid band's
+    // loudness. Steady noise (hum, a fan, a noisy line) can keep a pause's whole-band energy
+    // near that of speech; counted as speech, the noise before the first word draws the first
+    // syllables into it and squeezes them.
+    std::vector<float> quietA, quietB;
+    std::vector<float> longA, longB; // pauses, not closures
+    double refSpeech = 0; // frames of the reference that are not pause
+
+    PauseSignals(const SpeechFeatures &a, const SpeechFeatures &b)
+        : sig(a)
+        , quietA(a.silence)
+        , quietB(b.silence)
+        , longA(size_t(a.frames), 0.0f)
+        , longB(size_t(b.frames), 0.0f)
+    {
+        const OnsetSignals refSig(b);
+        for (int t = 0; t < b.frames; ++t)
+            if (refSig.isPause(t))
+                quietB[size_t(t)] = longB[size_t(t)] = 1.0f;
+        refSpeech = b.frames - refSig.pauseFrames(0, b.frames);
+        for (int t = 0; t < a.frames; ++t)
+            if (sig.isPause(t))
+                quietA[size_t(t)] = longA[size_t(t)] = 1.0f;
+    }
+};
+
+// The aligner proper, on the recording's features `a` and the padded reference's `b`. With
+// `guide` (the warp of an earlier pass against a like reference) the warp searches near it
+// (DtwOptions::guide); `warp` (optional) receives the warp.
 AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const TtsResult &reference,
-    const SpeechFeatures &b, bool refine, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+    const SpeechFeatures &b, const PauseSignals &in, bool refine, const SpeechProgressFn &progress,
+    const std::atomic_bool *cancel, const WarpPath *guide = nullptr, WarpPath *warpOut = nullptr)
 {
     const int n = int(script.syllables.size());
     if (!reference.ok() || reference.units.size() != n)
@@ -275,28 +362,13 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     // finer ones keep the default radius. (With the default at every level, sentences of
     // joined real recordings landed up to 1.9 s late; 20 at every level still left one.)
     opt.coarseRadius = 30;
-    // Silence for the warp: quiet by the whole band's energy, or a pause by the mid band's
-    // loudness. Steady noise (hum, a fan, a noisy line) can keep a pause's whole-band energy
-    // near that of speech; counted as speech, the noise before the first word draws the first
-    // syllables into it and squeezes them.
-    // (The signals are built again after the warp rather than held through it: on a long
-    // recording they weigh as much as the warp.)
-    std::vector<float> quietA = a.silence, quietB = b.silence;
-    std::vector<float> longA(size_t(a.frames), 0.0f), longB(size_t(b.frames), 0.0f); // pauses, not closures
-    double refSpeech = 0;
-    {
-        const OnsetSignals refSig(b);
-        for (int t = 0; t < b.frames; ++t)
-            if (refSig.isPause(t))
-                quietB[size_t(t)] = longB[size_t(t)] = 1.0f;
-        refSpeech = b.frames - refSig.pauseFrames(0, b.frames);
-    }
-    {
-        const OnsetSignals pauses(a);
-        for (int t = 0; t < a.frames; ++t)
-            if (pauses.isPause(t))
-                quietA[size_t(t)] = longA[size_t(t)] = 1.0f;
-    }
+    opt.guide = guide;
+    // A long recording's coarsest level searches near a pilot one level coarser: the same
+    // onsets on the shared recordings, joined to a minute, and on espeak-ng's held-out voices.
+    opt.pilot = true;
+    const std::vector<float> &quietA = in.quietA, &quietB = in.quietB;
+    const OnsetSignals &sig = in.sig;
+    const double refSpeech = in.refSpeech;
     // The speaker may pause between any two syllables, not only where the script marks a
     // break: the warp may hold the last frame of each of the reference's syllables over a
     // pause of the recording at a small cost (dtw.h). A stop's closure inside a syllable is
@@ -307,9 +379,8 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         if (j >= 0 && j < b.frames)
             pauseB[size_t(j)] = 1.0f;
     }
-    const auto path = dtwPath({a.vectors.data(), quietA.data(), a.frames, longA.data()},
-        {b.vectors.data(), quietB.data(), b.frames, longB.data(), pauseB.data()}, opt, cancel);
-    const OnsetSignals sig(a);
+    const auto path = dtwPath({a.vectors.data(), quietA.data(), a.frames, in.longA.data()},
+        {b.vectors.data(), quietB.data(), b.frames, in.longB.data(), pauseB.data()}, opt, cancel);
     if (isCancelled(cancel))
         return failure(AlignStatus::Cancelled, QStringLiteral("cancelled"));
     if (path.empty())
@@ -317,6 +388,8 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
     if (progress)
         progress(0.8, QStringLiteral("warping"));
     const Warp warp(path, b.frames);
+    if (warpOut)
+        *warpOut = path;
 
     // Reference time → audio time. Where the recording is slower, the warp holds one reference
     // frame against several of its frames, and the reference's moment may be any of them: an
@@ -552,9 +625,11 @@ AlignResult alignFeatures(const SpeechFeatures &a, const Script &script, const T
         const int startFrame = a.frameAt(s.start + 0.5 * SpeechFeatures::kHop);
         // The next onset may lie a few frames past the pause's end (the first sound of its
         // initial): the pause before it is still this syllable's end.
+        // (Never ending the syllable before its minimum length.)
         for (int e = endFrame, back = 0; e - 1 > startFrame && back <= 5; --e, ++back)
             if (sig.isPause(e - 1)) {
-                endFrame = e;
+                if (a.time(e) - 0.5 * SpeechFeatures::kHop >= s.start + minSeconds[size_t(k)] - 1e-9)
+                    endFrame = e;
                 break;
             }
         while (endFrame - 1 > startFrame && sig.isPause(endFrame - 1)
@@ -631,10 +706,14 @@ std::vector<double> initialEnds(const Script &script, const std::vector<double> 
 
 // alignFeatures, then re-aligned against the reference adapted to the speaker as the
 // alignment heard them (speakeradapt.h) until the onsets stop moving.
-AlignResult alignAdapted(const SpeechFeatures &a, const Script &script, const TtsResult &reference,
+AlignResult alignPasses(const SpeechFeatures &a, const Script &script, const TtsResult &reference,
     const SpeechFeatures &b, bool refine, bool adapt, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
 {
-    AlignResult r = alignFeatures(a, script, reference, b, refine, progress, cancel);
+    if (!reference.ok() || reference.units.size() != script.syllables.size())
+        return failure(AlignStatus::BadInput, ScriptText::tr("no reference rendering of the script"));
+    const PauseSignals pauses(a, b);
+    WarpPath warp;
+    AlignResult r = alignFeatures(a, script, reference, b, pauses, refine, progress, cancel, nullptr, &warp);
     markStage("first alignment");
     const int n = int(script.syllables.size());
     // Too few syllables say too little about the voice: on single sentences (10-20
@@ -670,7 +749,10 @@ AlignResult alignAdapted(const SpeechFeatures &a, const Script &script, const Tt
         SpeechFeatures adapted = b;
         adaptReference(
             a, soundClasses(a, script, starts, initialEnds(script, starts, phonemes, 0.0), ends), &adapted, refClasses);
-        AlignResult next = alignFeatures(a, script, reference, adapted, refine, {}, cancel);
+        // The adapted reference warps onto the recording much as the plain one did: near the
+        // warp before (within DtwOptions::guideRadius; the band's search found the same onsets).
+        WarpPath nextWarp;
+        AlignResult next = alignFeatures(a, script, reference, adapted, pauses, refine, {}, cancel, &warp, &nextWarp);
         markStage("adapted alignment");
         if (!next.ok())
             break;
@@ -678,6 +760,7 @@ AlignResult alignAdapted(const SpeechFeatures &a, const Script &script, const Tt
         for (int k = 0; k < n; ++k)
             moved = std::max(moved, std::abs(next.syllables[k].start - r.syllables[k].start));
         r = std::move(next);
+        warp = std::move(nextWarp);
         if (moved < kStable)
             break;
     }
@@ -685,6 +768,24 @@ AlignResult alignAdapted(const SpeechFeatures &a, const Script &script, const Tt
     for (int k = 0; k < n; ++k)
         at(r.syllables[k].doubts, Doubt::PassMove) = std::abs(r.syllables[k].start - firstPass[size_t(k)]);
     setConfidences(&r);
+    return r;
+}
+
+// alignPasses, with each syllable that ends at the next one's onset frame (no pause between
+// them) ended at that onset itself: a frame's time falls up to a frame before the onset, and
+// a syllable at its least length came out that much shorter. (The passes and the doubts keep
+// the frame's time, as the confidence was fitted with it.)
+AlignResult alignAdapted(const SpeechFeatures &a, const Script &script, const TtsResult &reference,
+    const SpeechFeatures &b, bool refine, bool adapt, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+{
+    AlignResult r = alignPasses(a, script, reference, b, refine, adapt, progress, cancel);
+    for (qsizetype k = 0; r.ok() && k + 1 < r.syllables.size(); ++k) {
+        AlignedSyllable &s = r.syllables[k];
+        const double next = r.syllables[k + 1].start;
+        const double frame = a.time(a.frameAt(next + 0.5 * SpeechFeatures::kHop)) - 0.5 * SpeechFeatures::kHop;
+        if (s.end >= std::min(next, frame) - 1e-9)
+            s.end = std::max(s.end, next);
+    }
     return r;
 }
 

@@ -99,6 +99,117 @@ void monotoneCorridor(std::vector<int> &lo, std::vector<int> &hi, int columns)
         lo[size_t(r)] = std::min(lo[size_t(r)], hi[size_t(r)]);
 }
 
+// The costs of one row of the corridor against columns [lo, hi], in loops without a
+// dependency from cell to cell (vectorized): `dist` the local distance, `up` the cost of holding
+// b's column while a advances, `left` that of holding a's row while b advances.
+struct RowCosts
+{
+    std::vector<float> dist, up, left;
+};
+
+// Per frame of a level: what the holds' costs need of it besides its distance.
+struct HoldTerms
+{
+    std::vector<float> open; // 1 - max(pauseAt, pause) * (1 - pauseCost), times silenceCost
+};
+
+HoldTerms holdTerms(const Level &l, const DtwOptions &o)
+{
+    HoldTerms h;
+    h.open.resize(size_t(l.frames));
+    for (int t = 0; t < l.frames; ++t)
+        h.open[size_t(t)]
+            = o.silenceCost * (1 - std::max(l.pauseAt[size_t(t)], l.pause[size_t(t)]) * (1 - o.pauseCost));
+    return h;
+}
+
+void rowCosts(const Level &a, const Level &b, const HoldTerms &termsA, const HoldTerms &termsB, int i, int rowLo,
+    int rowHi, const DtwOptions &o, int dim, RowCosts *out)
+{
+    const size_t w = size_t(rowHi - rowLo + 1);
+    out->dist.resize(w);
+    out->up.resize(w);
+    out->left.resize(w);
+    float *dist = out->dist.data();
+    float *up = out->up.data();
+    float *left = out->left.data();
+    const float *va = a.vectors.data() + size_t(i) * size_t(dim);
+    const float *vb = b.vectors.data() + size_t(rowLo) * size_t(dim);
+    for (size_t c = 0; c < w; ++c)
+        dist[c] = squaredDistance(va, vb + c * size_t(dim), dim);
+    const float norm = 1.0f / std::sqrt(float(o.dim));
+    const float sa = a.silence[size_t(i)], la = a.pause[size_t(i)];
+    // A long pause held where the other may pause costs pauseCost, elsewhere silenceCost (a
+    // closure there is silent too, but no place for a pause).
+    const float pauseA = termsA.open[size_t(i)];
+    const float *sb = b.silence.data() + rowLo;
+    const float *lb = b.pause.data() + rowLo;
+    const float *pauseB = termsB.open.data() + rowLo;
+    const float silenceCost = o.silenceCost;
+    for (size_t c = 0; c < w; ++c) {
+        // Two silences match whatever their noise spectra.
+        const float both = sa * sb[c];
+        const float d = (1 - both) * std::sqrt(dist[c]) * norm + both * 0.1f * silenceCost;
+        dist[c] = d;
+        // Holding b while a advances over a's silence (a pause b does not make), and back.
+        up[c] = (1 - sa) * d + sa * ((1 - la) * std::min(d, silenceCost) + la * pauseB[c]);
+        left[c] = (1 - sb[c]) * d + sb[c] * ((1 - lb[c]) * std::min(d, silenceCost) + lb[c] * pauseA);
+    }
+}
+
+// The corridor of `width` columns around the line on which both sequences have spoken the
+// same share of their speech (frames with silence < 0.5).
+void bandCorridor(const Level &ca, const Level &cb, long width, std::vector<int> *lo, std::vector<int> *hi)
+{
+    std::vector<double> speechB(size_t(cb.frames) + 1, 0.0);
+    for (int j = 0; j < cb.frames; ++j)
+        speechB[size_t(j) + 1] = speechB[size_t(j)] + (cb.silence[size_t(j)] < 0.5f ? 1.0 : 0.0);
+    double totalA = 0;
+    for (int i = 0; i < ca.frames; ++i)
+        totalA += ca.silence[size_t(i)] < 0.5f ? 1.0 : 0.0;
+    const int half = int(width / 2);
+    double spokenA = 0;
+    for (int i = 0; i < ca.frames; ++i) {
+        spokenA += ca.silence[size_t(i)] < 0.5f ? 1.0 : 0.0;
+        const double share = totalA > 0 ? spokenA / totalA : double(i + 1) / ca.frames;
+        const int centre
+            = int(std::lower_bound(speechB.begin(), speechB.end(), share * speechB.back() - 1e-9) - speechB.begin());
+        (*lo)[size_t(i)] = std::clamp(centre - half, 0, cb.frames - 1);
+        (*hi)[size_t(i)] = std::clamp(centre + half, 0, cb.frames - 1);
+    }
+    monotoneCorridor(*lo, *hi, cb.frames);
+}
+
+// Narrows the corridor [lo, hi] (of a level `level` times halved) to within `radius`
+// full-resolution frames of `guide`'s rows (as much as it holds of each row) and keeps it
+// monotone.
+void guideCorridor(const Path &guide, int level, int radius, int columns, std::vector<int> *lo, std::vector<int> *hi)
+{
+    const int rows = int(lo->size());
+    std::vector<int> glo(size_t(rows), std::numeric_limits<int>::max()), ghi(size_t(rows), -1);
+    for (const auto &[i, j] : guide) {
+        const int r = std::clamp(i >> level, 0, rows - 1), c = std::clamp(j >> level, 0, columns - 1);
+        glo[size_t(r)] = std::min(glo[size_t(r)], c);
+        ghi[size_t(r)] = std::max(ghi[size_t(r)], c);
+    }
+    const int reach = radius >> level;
+    // Rows the guide skips (none when it is a warping path of these sequences) take the row before's.
+    for (int r = 0; r < rows; ++r) {
+        if (ghi[size_t(r)] < 0) {
+            glo[size_t(r)] = r > 0 ? glo[size_t(r) - 1] : 0;
+            ghi[size_t(r)] = r > 0 ? ghi[size_t(r) - 1] : 0;
+        }
+    }
+    for (int r = 0; r < rows; ++r) {
+        const int r0 = std::max(0, r - reach), r1 = std::min(rows - 1, r + reach);
+        (*lo)[size_t(r)] = std::max((*lo)[size_t(r)], glo[size_t(r0)] - reach);
+        (*hi)[size_t(r)] = std::min((*hi)[size_t(r)], ghi[size_t(r1)] + reach);
+        (*lo)[size_t(r)] = std::clamp((*lo)[size_t(r)], 0, columns - 1);
+        (*hi)[size_t(r)] = std::clamp((*hi)[size_t(r)], 0, columns - 1);
+    }
+    monotoneCorridor(*lo, *hi, columns);
+}
+
 // DTW inside a corridor: row i of `a` may meet columns [lo[i], hi[i]] of `b`.
 // `dim` is the channels per frame of the levels; distances are normalised by o.dim.
 Path corridorDtw(const Level &a, const Level &b, const std::vector<int> &lo, const std::vector<int> &hi,
@@ -111,55 +222,42 @@ Path corridorDtw(const Level &a, const Level &b, const std::vector<int> &lo, con
     // Only the steps are kept for the whole corridor; the costs of two rows at a time.
     std::vector<uint8_t> step(offset.back(), 0);
     const float inf = std::numeric_limits<float>::infinity();
-    std::vector<float> prev, cur;
-    const float norm = 1.0f / std::sqrt(float(o.dim));
+    std::vector<float> prev, cur, above;
+    const HoldTerms termsA = holdTerms(a, o), termsB = holdTerms(b, o);
+    RowCosts costs;
     for (int i = 0; i < n; ++i) {
         if ((i & 255) == 0 && isCancelled(cancel))
             return {};
         const int rowLo = lo[size_t(i)], rowHi = hi[size_t(i)];
         const int prevLo = i > 0 ? lo[size_t(i) - 1] : 0, prevHi = i > 0 ? hi[size_t(i) - 1] : -1;
-        auto above = [&](int j) { return j < prevLo || j > prevHi ? inf : prev[size_t(j - prevLo)]; };
-        cur.assign(size_t(rowHi - rowLo + 1), inf);
-        const float *va = a.vectors.data() + size_t(i) * size_t(dim);
-        const float sa = a.silence[size_t(i)], la = a.pause[size_t(i)];
-        const float openA = std::max(a.pauseAt[size_t(i)], la);
-        for (int j = rowLo; j <= rowHi; ++j) {
-            const float *vb = b.vectors.data() + size_t(j) * size_t(dim);
-            const float acc = squaredDistance(va, vb, dim);
-            const float sb = b.silence[size_t(j)], lb = b.pause[size_t(j)];
-            const float openB = std::max(b.pauseAt[size_t(j)], lb);
-            // Two silences match whatever their noise spectra.
-            const float both = sa * sb;
-            const float dist = (1 - both) * std::sqrt(acc) * norm + both * 0.1f * o.silenceCost;
-            // Holding b while a advances over a's silence (a pause b does not make), and back.
-            // A long pause held where the other may pause costs pauseCost, elsewhere
-            // silenceCost (a closure there is silent too, but no place for a pause).
-            const float pauseB = o.silenceCost * (1 - openB * (1 - o.pauseCost));
-            const float pauseA = o.silenceCost * (1 - openA * (1 - o.pauseCost));
-            const float holdB = (1 - sa) * dist + sa * ((1 - la) * std::min(dist, o.silenceCost) + la * pauseB);
-            const float holdA = (1 - sb) * dist + sb * ((1 - lb) * std::min(dist, o.silenceCost) + lb * pauseA);
-            float best;
-            uint8_t s;
-            if (i == 0 && j == 0) {
-                best = dist;
-                s = 3;
-            } else {
-                const float diag = above(j - 1) + 2 * dist;
-                const float up = above(j) + holdB;
-                const float left = j > rowLo ? cur[size_t(j - 1 - rowLo)] + holdA : inf;
-                best = diag;
-                s = 0;
-                if (up < best) {
-                    best = up;
-                    s = 1;
-                }
-                if (left < best) {
-                    best = left;
-                    s = 2;
-                }
+        const size_t w = size_t(rowHi - rowLo + 1);
+        // The row above over columns rowLo - 1 .. rowHi (infinite outside its corridor).
+        above.assign(w + 1, inf);
+        for (int j = std::max(rowLo - 1, prevLo); j <= std::min(rowHi, prevHi); ++j)
+            above[size_t(j - rowLo + 1)] = prev[size_t(j - prevLo)];
+        rowCosts(a, b, termsA, termsB, i, rowLo, rowHi, o, dim, &costs);
+        cur.resize(w);
+        uint8_t *rowStep = step.data() + offset[size_t(i)];
+        // The diagonal and vertical steps depend on the row above alone; then the horizontal
+        // steps, cell after cell.
+        for (size_t c = 0; c < w; ++c) {
+            const float diag = above[c] + 2 * costs.dist[c];
+            const float up = above[c + 1] + costs.up[c];
+            const bool upBetter = up < diag;
+            cur[c] = upBetter ? up : diag;
+            rowStep[c] = upBetter ? 1 : 0;
+        }
+        size_t c0 = 1;
+        if (i == 0 && rowLo == 0) {
+            cur[0] = costs.dist[0];
+            rowStep[0] = 3;
+        }
+        for (size_t c = c0; c < w; ++c) {
+            const float left = cur[c - 1] + costs.left[c];
+            if (left < cur[c]) {
+                cur[c] = left;
+                rowStep[c] = 2;
             }
-            cur[size_t(j - rowLo)] = best;
-            step[offset[size_t(i)] + size_t(j - rowLo)] = s;
         }
         std::swap(prev, cur);
     }
@@ -220,25 +318,33 @@ std::vector<std::pair<int, int>> dtwPath(
     int level = int(as.size()) - 1;
     const Level &ca = as[size_t(level)], &cb = bs[size_t(level)];
     std::vector<int> lo(size_t(ca.frames), 0), hi(size_t(ca.frames), cb.frames - 1);
-    if (width() < cb.frames) {
-        // The band around the line of equal shares of speech.
-        std::vector<double> speechB(size_t(cb.frames) + 1, 0.0);
-        for (int j = 0; j < cb.frames; ++j)
-            speechB[size_t(j) + 1] = speechB[size_t(j)] + (cb.silence[size_t(j)] < 0.5f ? 1.0 : 0.0);
-        double totalA = 0;
+    if (width() < cb.frames)
+        bandCorridor(ca, cb, width(), &lo, &hi);
+    const int guideRadius = std::max(options.guideRadius, 0);
+    if (options.guide && !options.guide->empty()) {
+        guideCorridor(*options.guide, level, guideRadius, cb.frames, &lo, &hi);
+    } else if (options.pilot && ca.frames > 16 && cb.frames > 16) {
+        long cells = 0;
         for (int i = 0; i < ca.frames; ++i)
-            totalA += ca.silence[size_t(i)] < 0.5f ? 1.0 : 0.0;
-        const int half = int(width() / 2);
-        double spokenA = 0;
-        for (int i = 0; i < ca.frames; ++i) {
-            spokenA += ca.silence[size_t(i)] < 0.5f ? 1.0 : 0.0;
-            const double share = totalA > 0 ? spokenA / totalA : double(i + 1) / ca.frames;
-            const int centre = int(
-                std::lower_bound(speechB.begin(), speechB.end(), share * speechB.back() - 1e-9) - speechB.begin());
-            lo[size_t(i)] = std::clamp(centre - half, 0, cb.frames - 1);
-            hi[size_t(i)] = std::clamp(centre + half, 0, cb.frames - 1);
+            cells += hi[size_t(i)] - lo[size_t(i)] + 1;
+        const long reach = 2L * (guideRadius >> level) + 1;
+        if (cells > 4 * reach * ca.frames) {
+            // The pilot: the band's search one level coarser, whose path then guides this level.
+            const Level pa = halve(ca, dim), pb = halve(cb, dim);
+            std::vector<int> plo(size_t(pa.frames), 0), phi(size_t(pa.frames), pb.frames - 1);
+            const long band = 2L * (long(options.band) >> (level + 1)) + 1;
+            if (options.band > 0 && band < pb.frames)
+                bandCorridor(pa, pb, band, &plo, &phi);
+            const Path pilot = corridorDtw(pa, pb, plo, phi, options, dim, cancel);
+            Path guide;
+            guide.reserve(pilot.size() * 4);
+            for (const auto &[i, j] : pilot)
+                for (int di = 0; di < 2; ++di)
+                    for (int dj = 0; dj < 2; ++dj)
+                        guide.emplace_back((2 * i + di) << level, (2 * j + dj) << level);
+            if (!guide.empty())
+                guideCorridor(guide, level, guideRadius, cb.frames, &lo, &hi);
         }
-        monotoneCorridor(lo, hi, cb.frames);
     }
     Path path = corridorDtw(ca, cb, lo, hi, options, dim, cancel);
     const int coarsest = level;

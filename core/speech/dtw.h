@@ -46,6 +46,16 @@ struct DtwOptions
     // < 0.5). A full DTW at the coarsest level a long recording allows averages a third of a
     // second into a frame and loses its way; within the band the coarsest level stays fine.
     int band = 0;
+    // When set: a path (full-resolution frames, from (0, 0) to the last frames) the warp is
+    // known to lie near, e.g. an earlier warp of the same recording against a like
+    // reference. The coarsest level then searches only within `guideRadius` frames (of the
+    // full resolution) of it rather than the whole band: the same path whenever the band's
+    // best lies that near, at a fraction of the cost.
+    const std::vector<std::pair<int, int>> *guide = nullptr;
+    int guideRadius = 250;
+    // Without a guide: where the coarsest level's corridor is wider than four times the
+    // guide's, the same search one level coarser (a quarter of the cells) makes the guide.
+    bool pilot = false;
 };
 
 // The warping path from (0, 0) to (a.frames-1, b.frames-1), as (i in a, j in b) pairs;

@@ -28,7 +28,11 @@ struct MelBank
         std::vector<float> weights;
     };
     std::vector<Band> bands;
-    std::array<std::array<float, kMelBands>, SpeechFeatures::kCepstra> dct;
+    std::array<std::array<float, SpeechFeatures::kCepstra>, kMelBands> dctByBand; // [band][cepstrum]
+    // The bands by bin: bin k's weights in binWeight[binStart[k] .. binStart[k + 1]), of the
+    // bands binBand[...].
+    std::vector<int> binStart, binBand;
+    std::vector<float> binWeight;
     MelBank()
     {
         auto mel = [](double hz) { return 2595.0 * std::log10(1.0 + hz / 700.0); };
@@ -48,9 +52,21 @@ struct MelBank
             }
             bands.push_back(std::move(band));
         }
+        binStart.assign(kBins + 1, 0);
+        for (int k = 0; k < kBins; ++k) {
+            binStart[size_t(k)] = int(binBand.size());
+            for (int b = 0; b < kMelBands; ++b) {
+                const Band &band = bands[size_t(b)];
+                if (k >= band.from && k <= band.to) {
+                    binBand.push_back(b);
+                    binWeight.push_back(band.weights[size_t(k - band.from)]);
+                }
+            }
+        }
+        binStart[kBins] = int(binBand.size());
         for (int c = 0; c < SpeechFeatures::kCepstra; ++c)
             for (int b = 0; b < kMelBands; ++b)
-                dct[size_t(c)][size_t(b)] = float(std::cos(M_PI * (c + 1) * (b + 0.5) / kMelBands));
+                dctByBand[size_t(b)][size_t(c)] = float(std::cos(M_PI * (c + 1) * (b + 0.5) / kMelBands));
     }
 };
 
@@ -209,12 +225,29 @@ void SpeechFeatureStream::frameBlock(const float *samples, int count, Rows &out)
     std::array<float, kMelBands> logMel;
     FrameFft &fft = realFft();
     float *z = fft.data;
+    // The frames' means, four frames at a time (each summed in the order of its samples).
+    thread_local std::vector<float> means;
+    means.resize(size_t(std::max(count, 0)));
+    {
+        int r = 0;
+        for (; r + 4 <= count; r += 4) {
+            std::array<float, 4> sum {0, 0, 0, 0};
+            for (int i = 0; i < kWindow; ++i)
+                for (int q = 0; q < 4; ++q)
+                    sum[size_t(q)] += samples[size_t(r + q) * kHopSamples + size_t(i)];
+            for (int q = 0; q < 4; ++q)
+                means[size_t(r + q)] = sum[size_t(q)] / kWindow;
+        }
+        for (; r < count; ++r) {
+            float sum = 0;
+            for (int i = 0; i < kWindow; ++i)
+                sum += samples[size_t(r) * kHopSamples + size_t(i)];
+            means[size_t(r)] = sum / kWindow;
+        }
+    }
     for (int r = 0; r < count; ++r) {
         const float *s = samples + size_t(r) * kHopSamples;
-        float mean = 0;
-        for (int i = 0; i < kWindow; ++i)
-            mean += s[i];
-        mean /= kWindow;
+        const float mean = means[size_t(r)];
         for (int i = 0; i < kWindow; ++i)
             z[i] = (s[i] - mean) * hamming[size_t(i)];
         std::fill(z + kWindow, z + kFft, 0.0f);
@@ -224,33 +257,34 @@ void SpeechFeatureStream::frameBlock(const float *samples, int count, Rows &out)
         for (int k = 1; k < kBins - 1; ++k)
             power[size_t(k)] = z[2 * k] * z[2 * k] + z[2 * k + 1] * z[2 * k + 1];
         power[kBins - 1] = z[1] * z[1];
+        // One pass over the bins: the whole-band sum's long chain of additions leaves room for
+        // the bands' and the mel bands' (each summed in the order of its bins as before).
         double total = 0, mid = 0, high = 0, low = 0;
+        std::array<double, kMelBands> e {};
         for (int k = 0; k < kBins; ++k) {
-            total += power[size_t(k)];
+            const float pk = power[size_t(k)];
+            total += pk;
             if (k >= bandLo && k <= bandHi)
-                mid += power[size_t(k)];
+                mid += pk;
             if (k >= highLo)
-                high += power[size_t(k)];
+                high += pk;
             if (k <= lowHi)
-                low += power[size_t(k)];
+                low += pk;
+            for (int m = bank.binStart[size_t(k)]; m < bank.binStart[size_t(k) + 1]; ++m)
+                e[size_t(bank.binBand[size_t(m)])] += bank.binWeight[size_t(m)] * pk;
         }
         out.logEnergy.push_back(float(std::log(total + 1e-9)));
         out.band.push_back(float(std::log(mid + 1e-9)));
         out.hf.push_back(float(std::log(high + 1e-9) - std::log(total + 1e-9)));
         out.lf.push_back(float(std::log(low + 1e-9) - std::log(total + 1e-9)));
-        for (int b = 0; b < kMelBands; ++b) {
-            const auto &bd = bank.bands[size_t(b)];
-            double e = 0;
-            for (int k = bd.from; k <= bd.to && k < kBins; ++k)
-                e += bd.weights[size_t(k - bd.from)] * power[size_t(k)];
-            logMel[size_t(b)] = float(std::log(e + 1e-8));
-        }
-        for (int c = 0; c < SpeechFeatures::kCepstra; ++c) {
-            float acc = 0;
-            for (int b = 0; b < kMelBands; ++b)
-                acc += bank.dct[size_t(c)][size_t(b)] * logMel[size_t(b)];
-            out.cep.push_back(acc);
-        }
+        for (int b = 0; b < kMelBands; ++b)
+            logMel[size_t(b)] = float(std::log(e[size_t(b)] + 1e-8));
+        // Every cepstrum's sum over the bands in the same order, all cepstra at once.
+        std::array<float, SpeechFeatures::kCepstra> cep {};
+        for (int b = 0; b < kMelBands; ++b)
+            for (int c = 0; c < SpeechFeatures::kCepstra; ++c)
+                cep[size_t(c)] += bank.dctByBand[size_t(b)][size_t(c)] * logMel[size_t(b)];
+        out.cep.insert(out.cep.end(), cep.begin(), cep.end());
         // The autocorrelation: the inverse transform of the power spectrum (its scale does
         // not matter, only its ratio to lag 0).
         z[0] = power[0];
@@ -266,8 +300,15 @@ void SpeechFeatureStream::frameBlock(const float *samples, int count, Rows &out)
         if (r0 > 0) {
             // Divided by the window's own autocorrelation at this lag (Boersma 1993): the
             // Hamming taper alone lowers a 70 Hz voice's peak to a seventh.
-            for (int lag = lagLo; lag <= lagHi; ++lag)
-                best = std::max(best, ac[lag] * inverseWindowAutocorr[size_t(lag)]);
+            // Four running maxima, then theirs: the same maximum, without one long chain.
+            std::array<float, 4> most {0, 0, 0, 0};
+            int lag = lagLo;
+            for (; lag + 3 <= lagHi; lag += 4)
+                for (int q = 0; q < 4; ++q)
+                    most[size_t(q)] = std::max(most[size_t(q)], ac[lag + q] * inverseWindowAutocorr[size_t(lag + q)]);
+            for (; lag <= lagHi; ++lag)
+                most[0] = std::max(most[0], ac[lag] * inverseWindowAutocorr[size_t(lag)]);
+            best = std::max(std::max(most[0], most[1]), std::max(most[2], most[3]));
             best /= r0;
         }
         out.voicing.push_back(std::clamp(best, 0.0f, 1.0f));

@@ -1,6 +1,7 @@
 #include "speech/hiddeninitials.h"
 
 #include "speech/pinyin.h"
+#include "speech/syllableduration.h"
 
 #include <QStringList>
 
@@ -54,8 +55,8 @@ void moveOnsetsOfHiddenInitials(const SpeechFeatures &a, const OnsetSignals &sig
         while (pauseStart > 0 && sig.isPause(pauseStart - 1))
             --pauseStart;
         const double initial = std::min((u.phonemes[1].start - u.start) * pace, 0.25);
-        const double earliest
-            = std::max(a.time(pauseStart) - 0.5 * SpeechFeatures::kHop, k > 0 ? r->syllables[k - 1].start + 0.01 : 0.0);
+        const double earliest = std::max(a.time(pauseStart) - 0.5 * SpeechFeatures::kHop,
+            k > 0 ? r->syllables[k - 1].start + kShortestSyllable : 0.0);
         const double moved
             = std::max(std::min(s.start, a.time(pauseEnd + 1) - 0.5 * SpeechFeatures::kHop) - initial, earliest);
         s.start = std::min(s.start, moved);

@@ -63,6 +63,31 @@ OnsetSignals::OnsetSignals(const SpeechFeatures &f)
         quiet[t] = maxLn(u - 5, u + 5) < level - 5.0
             || (silent(u - 2) && silent(u - 1) && silent(u) && silent(u + 1) && silent(u + 2));
     }
+    // A breath between two quiet stretches is part of the pause: a short sound without voicing
+    // well under the speech's loudness (a syllable, even one with a voiceless initial, always
+    // holds a voiced final). Counted as speech, a loud breath split the pause in two and drew
+    // the syllables either side into it: runs of them slid together by 0.1-1 s.
+    for (size_t t = 0; t < n;) {
+        if (quiet[t]) {
+            ++t;
+            continue;
+        }
+        size_t e = t;
+        while (e < n && !quiet[e])
+            ++e;
+        constexpr size_t kLongestBreath = 45; // frames, with the look-around's 50 ms either side
+        if (t > 0 && e < n && e - t <= kLongestBreath) {
+            int voiced = 0;
+            float loudest = -1e9f;
+            for (size_t u = t; u < e; ++u) {
+                voiced += f.voicing[u] >= 0.5f ? 1 : 0;
+                loudest = std::max(loudest, m_ln[u]);
+            }
+            if (voiced <= 2 && loudest < level - 2.0f)
+                std::fill(quiet.begin() + qsizetype(t), quiet.begin() + qsizetype(e), true);
+        }
+        t = e;
+    }
     m_pause.assign(n, 0.0f);
     for (size_t t = 0; t < n;) {
         if (!quiet[t]) {
@@ -115,6 +140,17 @@ OnsetSignals::OnsetSignals(const SpeechFeatures &f)
         while (v > 0 && m_valleys[size_t(v) - 1].at >= t)
             --v;
         m_firstValley[size_t(t)] = v;
+    }
+    m_byLeftStart.assign(n + 1, 0);
+    for (const Valley &v : m_valleys)
+        ++m_byLeftStart[size_t(v.left) + 1];
+    for (size_t t = 0; t < n; ++t)
+        m_byLeftStart[t + 1] += m_byLeftStart[t];
+    m_byLeft.resize(m_valleys.size());
+    {
+        std::vector<int> next(m_byLeftStart.begin(), m_byLeftStart.end() - 1);
+        for (size_t v = 0; v < m_valleys.size(); ++v)
+            m_byLeft[size_t(next[size_t(m_valleys[v].left)]++)] = int(v);
     }
     m_sumLoud = prefix(m_loud);
     m_sumNucleus = prefix(m_nucleus);

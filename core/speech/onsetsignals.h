@@ -55,6 +55,23 @@ public:
         return deepest;
     }
 
+    // The deepest valley (ln units) whose left peak is frame `left` and whose right peak lies
+    // before to - 1 (0 when none): innerValley(from, to) is the largest of these over the
+    // frames left >= from + 2, so a search that moves `from` back a frame at a time keeps it
+    // with one look-up per frame.
+    double valleyFromPeak(int left, int to) const
+    {
+        if (left < 0 || left >= m_frames)
+            return 0;
+        double deepest = 0;
+        for (int v = m_byLeftStart[size_t(left)]; v < m_byLeftStart[size_t(left) + 1]; ++v) {
+            const Valley &valley = m_valleys[size_t(m_byLeft[size_t(v)])];
+            if (valley.right < to - 1)
+                deepest = std::max(deepest, valley.depth);
+        }
+        return deepest;
+    }
+
 private:
     using SparseMax = std::vector<std::vector<float>>;
     static SparseMax sparseMax(const std::vector<float> &v)
@@ -127,6 +144,8 @@ private:
         double depth;
     };
     std::vector<Valley> m_valleys;
+    std::vector<int> m_byLeft; // the valleys in the order of their left peaks
+    std::vector<int> m_byLeftStart; // per frame: where its valleys start in m_byLeft
 };
 
 } // namespace toonface

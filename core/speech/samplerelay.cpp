@@ -4,7 +4,10 @@ namespace toonface {
 
 namespace {
 
-constexpr size_t kMaxQueued = 16; // blocks; the synthesiser's are 200 ms
+constexpr size_t kMaxQueued = 16; // blocks; the synthesiser's are 60 ms
+// The sink's thread is woken once this many blocks wait (or at the end), not for every block:
+// a wake-up per block cost more than the blocks' hand-over.
+constexpr size_t kWakeAt = 8;
 
 } // namespace
 
@@ -31,7 +34,8 @@ void SampleRelay::push(const float *samples, qsizetype count)
     }
     block.assign(samples, samples + count);
     m_queue.push_back(std::move(block));
-    m_changed.notify_all();
+    if (m_queue.size() >= kWakeAt)
+        m_changed.notify_all();
 }
 
 void SampleRelay::finish()
@@ -49,16 +53,20 @@ void SampleRelay::run()
 {
     std::unique_lock lock(m_mutex);
     for (;;) {
-        m_changed.wait(lock, [this] { return m_done || !m_queue.empty(); });
+        m_changed.wait(lock, [this] { return m_done || m_queue.size() >= kWakeAt; });
         if (m_queue.empty())
             return; // done, and nothing left
-        std::vector<float> block = std::move(m_queue.front());
-        m_queue.pop_front();
-        m_changed.notify_all();
-        lock.unlock();
-        m_sink(block.data(), qsizetype(block.size()));
-        lock.lock();
-        m_spare.push_back(std::move(block));
+        while (!m_queue.empty()) {
+            std::vector<float> block = std::move(m_queue.front());
+            m_queue.pop_front();
+            // A producer waits only on a full queue: it is woken once half of it is free.
+            if (m_queue.size() == kMaxQueued - kWakeAt)
+                m_changed.notify_all();
+            lock.unlock();
+            m_sink(block.data(), qsizetype(block.size()));
+            lock.lock();
+            m_spare.push_back(std::move(block));
+        }
     }
 }
 

@@ -10,7 +10,7 @@ namespace toonface {
 // for an ordinary pace (syllables about 0.2 s long on average); `pace` scales them to the
 // speaker's (their mean syllable length / 0.2 s, 0.5..1.5 taken into account). Never below
 // kShortestSyllable: an initial and a final cannot both be shorter.
-inline constexpr double kShortestSyllable = 0.04; // seconds
+inline constexpr double kShortestSyllable = 0.06; // seconds
 inline constexpr double kOrdinarySyllable = 0.2; // seconds: the pace the figures are for
 
 // `pinyin` toneless and normalised (empty: an English word or unknown, which gets the floor).
