@@ -307,7 +307,7 @@ AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, co
         out.templeHairSeen = parse.templeHairSeen;
         out.fallCut = parse.fallCut;
         out.cover = measureCover(parse);
-        if (parse.hairSeen)
+        if (parse.hairSeen || parse.templeHairSeen)
             out.parsedHair = parse.hair;
     }
     findHead(px, face, es0, skin, &out);

@@ -437,6 +437,14 @@ void Style::sampleColours(const QImage &original, const FaceModel &face, Appeara
     if (findings)
         *findings = found;
     appearance = found.appearance;
+    // The parse of the head saw the hair as a whole (the person's pixels other than skin over the
+    // forehead, or beside the temples in a tight crop): its median is the hair's own colour, where
+    // the band inside the outline may have caught the room or the skin.
+    if (found.parsedHair.isValid() && !appearance.bald && !appearance.hat) {
+        hair = monochrome ? hairFromGrey(qGray(found.parsedHair.rgb())) : found.parsedHair;
+        hairOk = true;
+        setHair(hair);
+    }
     if (found.hat.isValid()) {
         const QColor hat = monochrome ? hairFromGrey(qGray(found.hat.rgb())) : found.hat;
         components[QStringLiteral("hat")].fill = hat;
