@@ -505,6 +505,9 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
 {
     Points posed = posedPoints(face, pose);
     applyStyleRules(posed, g, style);
+    const Appearance &look = style.appearance;
+    if (look.glasses != GlassesShape::None)
+        keepBrowsAboveGlasses(posed, g.neutral, glassesLenses(Pt {posed}, look.glasses, look.lens, g.es0), g.es0);
     const Pt P {posed};
     std::vector<Part> parts;
     parts.reserve(g.staticParts.size() + 24);
@@ -514,7 +517,6 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
         makeEyebrows(P, style, g.es0, &parts);
     if (componentStyle(style.components, "jaw").visible)
         parts.push_back(makeJaw(P, g));
-    const Appearance &look = style.appearance;
     if (look.beard)
         parts.push_back(makeBeard(P, g.es0));
     else if (look.goatee)
