@@ -506,6 +506,8 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
     Points posed = posedPoints(face, pose);
     applyStyleRules(posed, g, style);
     const Appearance &look = style.appearance;
+    if (look.hat && componentStyle(style.components, "hat").visible)
+        keepBrowsUnderBrim(posed, g.neutral, g.es0);
     if (look.glasses != GlassesShape::None)
         keepBrowsAboveGlasses(posed, g.neutral, glassesLenses(Pt {posed}, look.glasses, look.lens, g.es0), g.es0);
     const Pt P {posed};

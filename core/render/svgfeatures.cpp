@@ -1,5 +1,7 @@
 #include "render/svgfeatures.h"
 
+#include "face/restingface.h"
+
 #include <numbers>
 
 namespace toonface::svgparts {
@@ -69,10 +71,28 @@ LensPlace glassesLenses(const Pt &P, GlassesShape shape, const GlassesFit &fit, 
     return l;
 }
 
+namespace {
+
+constexpr const char *kBrowIds[] = {"4.6", "4.4a", "4.4", "4.2", "4.1", "4.3", "4.3a", "4.5"};
+
+} // namespace
+
+void keepBrowsUnderBrim(Points &posed, const Points &neutral, double es0)
+{
+    const double limit = posed[pt::idx("11.1")].y() + kBrowBelowHairline * es0;
+    double push = 0;
+    for (const char *id : kBrowIds) {
+        const int i = pt::idx(id);
+        push = std::max(push, std::min(limit, neutral[i].y()) - posed[i].y());
+    }
+    for (const char *id : kBrowIds)
+        posed[pt::idx(id)].ry() += push;
+}
+
 void keepBrowsAboveGlasses(Points &posed, const Points &neutral, const LensPlace &lenses, double es0)
 {
     const double limit = lenses.top() - kBrowAboveRim * es0;
-    for (const char *id : {"4.6", "4.4a", "4.4", "4.2", "4.1", "4.3", "4.3a", "4.5"}) {
+    for (const char *id : kBrowIds) {
         const int i = pt::idx(id);
         const double lowest = std::max(limit, neutral[i].y());
         posed[i].ry() = std::min(posed[i].y(), lowest);

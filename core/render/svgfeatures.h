@@ -32,6 +32,14 @@ struct LensPlace
 };
 LensPlace glassesLenses(const Pt &P, GlassesShape shape, const GlassesFit &fit, double es0);
 
+// An expression never lifts a brow under the hat's brim (makeHat, across the hairline 11.1):
+// when a point of `posed` lies higher than kBrowBelowHairline ES0 under 11.1 (or than its place
+// in `neutral`, where the drawing's own brow is higher), both brows come down together by the most
+// any point overshoots, keeping their shapes. (The pose already keeps them under the photo's
+// hairline, keepBrowsUnderHairline; this holds it for the drawing's, which the style's caricature
+// moves.)
+void keepBrowsUnderBrim(Points &posed, const Points &neutral, double es0);
+
 // An expression never pushes a brow down across the glasses' rims: each brow point of `posed`
 // stays kBrowAboveRim ES0 (half a thick brow and the rim's stroke) above the lenses' top, or
 // where it is in `neutral` when the photo's own brow already lies lower.
