@@ -52,6 +52,15 @@ std::vector<EyePairCandidate> eyePairCandidates(
 // by its lids: detectClassic() tells them apart by width (see there).
 bool isRingShaped(const Region &region, const std::vector<int> &labels, QSize imageSize);
 
+// The intensity relative to the person's own skin around each pixel (item: dark skin). Eyes and
+// brows are darker than the skin around them by a share of it, whatever the skin's tone: on dark
+// skin the brows' hair is little darker than the skin (a few levels), while the lash line and iris
+// stay far darker than the eye white and the lids; a threshold on I itself (eq. 3.3) takes the
+// brows, the shade of a cheek and the eye together. The local skin level is the grey closing of I
+// (the brightest level a dark feature narrower than `featureSize` pixels is surrounded by); the
+// result is 255 * I / that level (255: as light as the skin around, lower: darker than it).
+Plane skinRelativeIntensity(const Plane &intensity, int featureSize);
+
 // How much darker `region` is than its surround (the frame of half the box's size around the
 // box), in intensity levels: mean(surround) - mean(region). Eyes and brows lie in lighter skin.
 double darknessContrast(const Plane &intensity, const Region &region, const std::vector<int> &labels);
@@ -62,7 +71,11 @@ double darknessContrast(const Plane &intensity, const Region &region, const std:
 // corners has only the chin below it) and 0.55 .. 1.6 d to each side along the eye line from
 // the midpoint (a face is about 2.2 eye distances wide at the eyes; hair over a temple or a
 // turned head shortens one side; nostrils, bits of the lips or of a fringe lie many of their
-// own spacings from the face's sides). Reaches are capped at 3 d down and 3 d sideways.
+// own spacings from the face's sides). Reaches are capped at 3 d down and 3 d sideways. Down the
+// midline the reach crosses gaps in F of up to kMaxGapBelow d: a moustache or a dark mouth under
+// the nose (on dark skin they fall below eq. (3.3)'s threshold, and a beard joins them to the
+// background) leaves the face going on below it.
+inline constexpr double kMaxGapBelow = 0.3;
 inline constexpr double kMinReachBelow = 1.2;
 inline constexpr double kMinReachSide = 0.55;
 inline constexpr double kMaxReachSide = 1.6;

@@ -5,6 +5,8 @@
 
 #include <QLineF>
 
+#include <opencv2/imgproc.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -91,6 +93,24 @@ bool isRingShaped(const Region &region, const std::vector<int> &labels, QSize im
     return enclosed >= region.area;
 }
 
+Plane skinRelativeIntensity(const Plane &I, int featureSize)
+{
+    Plane out {I.size, std::vector<float>(I.values.size())};
+    if (I.values.empty())
+        return out;
+    const int k = std::max(3, featureSize | 1);
+    const cv::Mat src(I.size.height(), I.size.width(), CV_32F, const_cast<float *>(I.values.data()));
+    cv::Mat skin;
+    cv::morphologyEx(src, skin, cv::MORPH_CLOSE, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(k, k)),
+        cv::Point(-1, -1), 1, cv::BORDER_REPLICATE);
+    for (int y = 0; y < I.size.height(); ++y) {
+        const float *s = skin.ptr<float>(y);
+        for (int x = 0; x < I.size.width(); ++x)
+            out.at(x, y) = 255.0f * I.at(x, y) / std::max(s[x], 1.0f);
+    }
+    return out;
+}
+
 double darknessContrast(const Plane &I, const Region &region, const std::vector<int> &labels)
 {
     const QRect box = region.box;
@@ -124,18 +144,25 @@ bool eyePairInFace(const Mask &F, QPointF left, QPointF right, PairReach *reach)
         const int x = int(std::lround(p.x())), y = int(std::lround(p.y()));
         return F.contains(x, y) && F.at(x, y);
     };
-    // Steps of one pixel from the midpoint while F holds, in d.
-    auto walk = [&](QPointF step) {
-        int n = 0;
+    // Steps of one pixel from the midpoint while F holds, in d; across gaps of up to `maxGap` d
+    // that F does not hold (the last step in F counts).
+    auto walk = [&](QPointF step, double maxGap = 0) {
+        int n = 0, last = 0;
         const int maxSteps = int(std::ceil(3 * d));
-        while (n < maxSteps && inFace(mid + (n + 1) * step))
+        const int gapSteps = int(std::floor(maxGap * d));
+        while (n < maxSteps) {
             ++n;
-        return n / d;
+            if (inFace(mid + n * step))
+                last = n;
+            else if (n - last > gapSteps)
+                break;
+        }
+        return last / d;
     };
     if (d > 0 && inFace(mid)) {
         const QPointF along = (right - left) / d;
         const QPointF perp(-along.y(), along.x());
-        r.below = walk(perp.y() >= 0 ? perp : -perp);
+        r.below = walk(perp.y() >= 0 ? perp : -perp, kMaxGapBelow);
         r.side = std::min(walk(along), walk(-along));
     }
     if (reach)
