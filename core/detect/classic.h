@@ -71,11 +71,7 @@ double darknessContrast(const Plane &intensity, const Region &region, const std:
 // corners has only the chin below it) and 0.55 .. 1.6 d to each side along the eye line from
 // the midpoint (a face is about 2.2 eye distances wide at the eyes; hair over a temple or a
 // turned head shortens one side; nostrils, bits of the lips or of a fringe lie many of their
-// own spacings from the face's sides). Reaches are capped at 3 d down and 3 d sideways. Down the
-// midline the reach crosses gaps in F of up to kMaxGapBelow d: a moustache or a dark mouth under
-// the nose (on dark skin they fall below eq. (3.3)'s threshold, and a beard joins them to the
-// background) leaves the face going on below it.
-inline constexpr double kMaxGapBelow = 0.3;
+// own spacings from the face's sides). Reaches are capped at 3 d down and 3 d sideways.
 inline constexpr double kMinReachBelow = 1.2;
 inline constexpr double kMinReachSide = 0.55;
 inline constexpr double kMaxReachSide = 1.6;

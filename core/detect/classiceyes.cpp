@@ -144,25 +144,18 @@ bool eyePairInFace(const Mask &F, QPointF left, QPointF right, PairReach *reach)
         const int x = int(std::lround(p.x())), y = int(std::lround(p.y()));
         return F.contains(x, y) && F.at(x, y);
     };
-    // Steps of one pixel from the midpoint while F holds, in d; across gaps of up to `maxGap` d
-    // that F does not hold (the last step in F counts).
-    auto walk = [&](QPointF step, double maxGap = 0) {
-        int n = 0, last = 0;
+    // Steps of one pixel from the midpoint while F holds, in d.
+    auto walk = [&](QPointF step) {
+        int n = 0;
         const int maxSteps = int(std::ceil(3 * d));
-        const int gapSteps = int(std::floor(maxGap * d));
-        while (n < maxSteps) {
+        while (n < maxSteps && inFace(mid + (n + 1) * step))
             ++n;
-            if (inFace(mid + n * step))
-                last = n;
-            else if (n - last > gapSteps)
-                break;
-        }
-        return last / d;
+        return n / d;
     };
     if (d > 0 && inFace(mid)) {
         const QPointF along = (right - left) / d;
         const QPointF perp(-along.y(), along.x());
-        r.below = walk(perp.y() >= 0 ? perp : -perp, kMaxGapBelow);
+        r.below = walk(perp.y() >= 0 ? perp : -perp);
         r.side = std::min(walk(along), walk(-along));
     }
     if (reach)
