@@ -172,7 +172,7 @@ private Q_SLOTS:
 
     // The labelled set's dark-skinned faces (research data, read only here), each on a plain
     // background: the classic eye pair within a quarter of the eye distance of the landmark
-    // method's eyes on at least 40 % of them (12 of these 27 frames; 10 before the eyes were
+    // method's eyes on at least 40 % of them (13 of these 27 frames; 10 before the eyes were
     // sought against the skin's own level, and before a mouth under the eyes gave way to them).
     void sharedDarkFaces()
     {
