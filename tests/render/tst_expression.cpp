@@ -166,8 +166,8 @@ private Q_SLOTS:
                 // Surprise lifts the brows from rest about as high as this photo's already are.
                 if (cue.emotion == Emotion::Surprise && face.point("4.2") == raised.point("4.2"))
                     continue;
-                QVERIFY2(cue.size(svg.parts(emotionPose(face, cue.emotion, 1.0))) > 0,
-                    qPrintable(emotionName(cue.emotion)));
+                QVERIFY2(
+                    cue.size(svg.parts(emotionPose(face, cue.emotion, 1.0))) > 0, qPrintable(emotionName(cue.emotion)));
             }
         }
     }
