@@ -52,6 +52,15 @@ std::vector<EyePairCandidate> eyePairCandidates(
 // by its lids: detectClassic() tells them apart by width (see there).
 bool isRingShaped(const Region &region, const std::vector<int> &labels, QSize imageSize);
 
+// The intensity relative to the person's own skin around each pixel (item: dark skin). Eyes and
+// brows are darker than the skin around them by a share of it, whatever the skin's tone: on dark
+// skin the brows' hair is little darker than the skin (a few levels), while the lash line and iris
+// stay far darker than the eye white and the lids; a threshold on I itself (eq. 3.3) takes the
+// brows, the shade of a cheek and the eye together. The local skin level is the grey closing of I
+// (the brightest level a dark feature narrower than `featureSize` pixels is surrounded by); the
+// result is 255 * I / that level (255: as light as the skin around, lower: darker than it).
+Plane skinRelativeIntensity(const Plane &intensity, int featureSize);
+
 // How much darker `region` is than its surround (the frame of half the box's size around the
 // box), in intensity levels: mean(surround) - mean(region). Eyes and brows lie in lighter skin.
 double darknessContrast(const Plane &intensity, const Region &region, const std::vector<int> &labels);

@@ -5,6 +5,8 @@
 
 #include <QLineF>
 
+#include <opencv2/imgproc.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -89,6 +91,24 @@ bool isRingShaped(const Region &region, const std::vector<int> &labels, QSize im
         if (!r.touchesBorder)
             enclosed += r.area;
     return enclosed >= region.area;
+}
+
+Plane skinRelativeIntensity(const Plane &I, int featureSize)
+{
+    Plane out {I.size, std::vector<float>(I.values.size())};
+    if (I.values.empty())
+        return out;
+    const int k = std::max(3, featureSize | 1);
+    const cv::Mat src(I.size.height(), I.size.width(), CV_32F, const_cast<float *>(I.values.data()));
+    cv::Mat skin;
+    cv::morphologyEx(src, skin, cv::MORPH_CLOSE, cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(k, k)),
+        cv::Point(-1, -1), 1, cv::BORDER_REPLICATE);
+    for (int y = 0; y < I.size.height(); ++y) {
+        const float *s = skin.ptr<float>(y);
+        for (int x = 0; x < I.size.width(); ++x)
+            out.at(x, y) = 255.0f * I.at(x, y) / std::max(s[x], 1.0f);
+    }
+    return out;
 }
 
 double darknessContrast(const Plane &I, const Region &region, const std::vector<int> &labels)

@@ -5,6 +5,7 @@
 #include "face/fapu.h"
 #include "face/mouthshape.h"
 #include "face/pose.h"
+#include "face/restingface.h"
 
 #include <algorithm>
 #include <cstring>
@@ -78,7 +79,9 @@ const EmotionPreset &emotionPreset(Emotion emotion)
     // - sad: inner brow ends high and outer ends low (the brows slant down outward), heavy
     //   upper lids, corners well down under a lower lip pushed up (a pout's arch);
     // - angry: inner brow ends down and together and outer ends up (a V), upper lids lowered
-    //   onto a glare, lower lids tensed, the lips bared on the teeth with their corners down;
+    //   onto a glare, lower lids tensed, the lips pressed together into a thin, tight line (the
+    //   upper lip down and the lower up, the corners drawn in and a little down) - not sad's
+    //   downturned pout, so that the two never read alike;
     // - surprise: brows high and arched, eyes wide open round the whole iris, the jaw dropped
     //   under rounded lips (an O).
     static const std::array<EmotionPreset, 5> presets = {{
@@ -90,7 +93,7 @@ const EmotionPreset &emotionPreset(Emotion emotion)
              {"8.4", {0.05, 0.24}}, {"8.9", {0, 0.02}}, {"8.2", {0, -0.07}}},
             0.75},
         {{{"4.6", {0, -0.08}}, {"4.4a", {0.01, 0.02}}, {"4.4", {0.03, 0.1}}, {"4.2", {0.07, 0.19}}, {"3.2", {0, 0.07}},
-             {"3.4", {0, -0.05}}, {"8.4", {0.06, 0.17}}, {"8.9", {0, -0.04}}, {"8.2", {0, 0.05}}},
+             {"3.4", {0, -0.05}}, {"8.4", {0.05, 0.05}}, {"8.9", {0, 0.03}}, {"8.2", {0, -0.04}}},
             0.8},
         {{{"4.6", {0, -0.19}}, {"4.4a", {0, -0.26}}, {"4.4", {0, -0.26}}, {"4.2", {0, -0.2}}, {"3.2", {0, -0.08}},
              {"3.4", {0, 0.04}}, {"8.4", {0.11, 0.04}}, {"8.9", {0, -0.05}}, {"8.2", {0, 0.42}}},
@@ -122,18 +125,20 @@ Pose emotionPose(const FaceModel &face, Emotion emotion, double intensity)
         if (std::strcmp(mirror, move.id) != 0 && std::strcmp(move.id, "8.9") != 0)
             pose.offset[pt::idx(mirror)] += QPointF(-d.x(), d.y());
     }
-    // A photo taken smiling would smile through every emotion: all but the smile first take the
-    // photo's own smile out (its corners above the line where the lips meet come down to it), so
-    // neutral is neutral and surprise an O, not a grin. (Lips photographed apart are shut by the
-    // rest under speech, restingMouth, which stillEmotionPose adds where nothing is said.)
-    if (emotion != Emotion::Smile) {
-        // Where the lips meet at rest: lips photographed apart shut there (restingMouth).
-        const double lipLineY = face.point("2.2").y() + restingMouth(face)[Up].y();
-        const double cornerY = (face.point("8.4").y() + face.point("8.3").y()) / 2.0;
-        const double ownSmile = std::max(0.0, lipLineY - cornerY);
+    // Every preset starts from the face at rest (restingface.h): the photo's own frown or raised
+    // brows would otherwise show through every emotion (a frowning photo reads angry at neutral,
+    // and its sad reads cross), and a photo taken smiling would smile through every emotion. Its
+    // brows come to where people's rest, its mouth corners onto the line where its lips meet (lips
+    // photographed apart are shut by the rest under speech, restingMouth, which stillEmotionPose
+    // adds where nothing is said). The smile keeps the photo's own mouth and adds its own.
+    Pose rest = restingFacePose(face);
+    if (emotion == Emotion::Smile)
         for (const char *id : {"8.4", "8.3"})
-            pose.offset[pt::idx(id)] += QPointF(0, ownSmile * weight);
-    }
+            rest.offset[pt::idx(id)] = {};
+    for (int i = 0; i < kPointCount; ++i)
+        pose.offset[i] += rest.offset[i] * weight;
+    // Brows raised by a preset stay under the hairline, where a hat's brim is drawn.
+    keepBrowsUnderHairline(face, &pose);
     const double scale = 1.0 + (preset.eyeOpenScale - 1.0) * weight;
     pose.leftEyeOpen = scale;
     pose.rightEyeOpen = scale;

@@ -42,8 +42,11 @@ const EmotionPreset &emotionPreset(Emotion emotion);
 // Odd: a negative intensity draws the opposite.
 double emotionWeight(double intensity);
 
-// The pose of `emotion` at `intensity` (0..1) on `face`: to be added to a speech pose. Linear in
-// emotionWeight(intensity): the full pose times that weight.
+// The pose of `emotion` at `intensity` (0..1) on `face`: to be added to a speech pose. It starts
+// from the face at rest (restingFacePose: the photo's own frown, raised brows or smile taken out;
+// neutral is that alone) and keeps raised brows under the hairline (keepBrowsUnderHairline).
+// Linear in emotionWeight(intensity), the full pose times that weight, wherever the hairline
+// does not stop a brow.
 Pose emotionPose(const FaceModel &face, Emotion emotion, double intensity);
 
 // The still drawing of `emotion` at `intensity`: what the animation draws for a clip of it

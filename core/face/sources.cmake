@@ -4,6 +4,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   face/fapu.h face/fapu.cpp
   face/mouthshape.h face/mouthshape.cpp
   face/emotion.h face/emotion.cpp
+  face/restingface.h face/restingface.cpp
   face/pose.h face/pose.cpp
   face/averageface.h face/averageface.cpp
   face/caricature.h face/caricature.cpp

@@ -46,9 +46,12 @@ void addCrease(std::vector<Part> *out, const char *id, QPointF a, QPointF b, QPo
 
 } // namespace
 
-CueStrengths cueStrengths(const Pt &P, const Pt &N, double es0)
+CueStrengths cueStrengths(const Pt &P, const Pt &N, const Pt &R, double es0)
 {
-    auto down = [&](const char *id) { return (P(id).y() - N(id).y()) / es0; };
+    auto down = [&](const char *id) {
+        const double y = P(id).y(), low = std::max(N(id).y(), R(id).y()), high = std::min(N(id).y(), R(id).y());
+        return (y > low ? y - low : y < high ? y - high : 0.0) / es0;
+    };
     auto pair = [&](const char *left, const char *right) { return (down(left) + down(right)) / 2.0; };
     CueStrengths s;
     const double inner = pair("4.2", "4.1");
@@ -61,9 +64,9 @@ CueStrengths cueStrengths(const Pt &P, const Pt &N, double es0)
     return s;
 }
 
-void makeExpressionCues(const Pt &P, const Pt &N, double es0, std::vector<Part> *out)
+void makeExpressionCues(const Pt &P, const Pt &N, const Pt &R, double es0, std::vector<Part> *out)
 {
-    const CueStrengths s = cueStrengths(P, N, es0);
+    const CueStrengths s = cueStrengths(P, N, R, es0);
     const double w = kCreaseHalfWidth * es0;
     const QPointF up(0, -es0);
     for (bool left : {true, false}) {

@@ -14,7 +14,10 @@
 
 namespace toonface::svgparts {
 
-// How strongly the pose shows each cue, 0..1, from the posed points `P` and the neutral ones `N`.
+// How strongly the pose shows each cue, 0..1, from the posed points `P`, the neutral ones `N` (the
+// photo's) and those of the face at rest `R` (restingFacePose): a point's move counts from the
+// nearer of its two resting places, and not at all between them, so neither the photo's own
+// expression nor the rest that takes it out draws a cue; an emotion's move past both does.
 struct CueStrengths
 {
     double frown = 0; // inner brow ends lowered (angry)
@@ -22,12 +25,12 @@ struct CueStrengths
     double forehead = 0; // whole brows raised (surprise)
     double smile = 0; // mouth corners raised (smile)
 };
-CueStrengths cueStrengths(const Pt &P, const Pt &N, double es0);
+CueStrengths cueStrengths(const Pt &P, const Pt &N, const Pt &R, double es0);
 
 // Dynamic parts, drawn over the jaw and under the mouth: "blush-left/right" (style key "blush"),
 // "crease-cheek-left/right", "crease-frown-left/right", "crease-nostril-left/right" (flared
 // nostrils), "crease-worry-left/right",
 // "crease-forehead-1/2" (style key "creases").
-void makeExpressionCues(const Pt &P, const Pt &N, double es0, std::vector<Part> *out);
+void makeExpressionCues(const Pt &P, const Pt &N, const Pt &R, double es0, std::vector<Part> *out);
 
 } // namespace toonface::svgparts

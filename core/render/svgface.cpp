@@ -2,6 +2,7 @@
 
 #include "face/caricature.h"
 #include "face/fapu.h"
+#include "face/restingface.h"
 #include "i18n/coretext.h"
 #include "media/userfile.h"
 #include "render/curves.h"
@@ -53,6 +54,7 @@ constexpr double kHairInset = 0.15; // how far the hair's hidden closing runs in
 struct SvgFaceGeometry
 {
     Points neutral; // the neutral points with the style's rules applied
+    Points rest; // ... and those of the face at rest (restingFacePose), with them
     std::array<QPointF, kPointCount> ruleOffset {}; // what the style's rules add to every pose
     double unit = 1; // ES0 / 100: the thesis' pixel at its photo scale
     double es0 = 100;
@@ -454,6 +456,8 @@ SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
     g.ruleOffset = styleRuleOffsets(face, style);
     g.neutral = face.points();
     applyStyleRules(g.neutral, g, style);
+    g.rest = posedPoints(face, restingFacePose(face));
+    applyStyleRules(g.rest, g, style);
     const Pt P {g.neutral};
     g.centre = face.bounds(PointGroup::Contour).center();
     // The contour's direction where face and jaw meet, from the whole neutral outline, so the
@@ -509,6 +513,11 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
 {
     Points posed = posedPoints(face, pose);
     applyStyleRules(posed, g, style);
+    const Appearance &look = style.appearance;
+    if (look.hat && componentStyle(style.components, "hat").visible)
+        keepBrowsUnderBrim(posed, g.neutral, g.es0);
+    if (look.glasses != GlassesShape::None)
+        keepBrowsAboveGlasses(posed, g.neutral, glassesLenses(Pt {posed}, look.glasses, look.lens, g.es0), g.es0);
     const Pt P {posed};
     std::vector<Part> parts;
     parts.reserve(g.staticParts.size() + 24);
@@ -518,12 +527,11 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
         makeEyebrows(P, style, g.es0, &parts);
     if (componentStyle(style.components, "jaw").visible)
         parts.push_back(makeJaw(P, g));
-    const Appearance &look = style.appearance;
     if (look.beard)
         parts.push_back(makeBeard(P, g.es0));
     else if (look.goatee)
         parts.push_back(makeGoatee(P, g.es0));
-    makeExpressionCues(P, Pt {g.neutral}, g.es0, &parts);
+    makeExpressionCues(P, Pt {g.neutral}, Pt {g.rest}, g.es0, &parts);
     makeMouth(P, &parts);
     if (look.moustache)
         parts.push_back(makeMoustache(P, g.es0));

@@ -1,5 +1,7 @@
 #include "render/svgfeatures.h"
 
+#include "face/restingface.h"
+
 #include <numbers>
 
 namespace toonface::svgparts {
@@ -52,24 +54,61 @@ void roundedRect(PathData &d, QPointF c, double a, double b, double r)
 
 } // namespace
 
-Part makeGlasses(const Pt &P, GlassesShape shape, const GlassesFit &fit, double es0)
+LensPlace glassesLenses(const Pt &P, GlassesShape shape, const GlassesFit &fit, double es0)
 {
-    // Each lens about its eye (as measured on the photo, else a little wider on the outer side);
-    // the bridge over the nose between the lenses' inner edges, the arms from their outer edges
-    // to the face's sides.
+    // Each lens about its eye (as measured on the photo, else a little wider on the outer side).
     const QPointF leftMid = (P("3.12") + P("3.8")) / 2.0;
     const QPointF rightMid = (P("3.11") + P("3.7")) / 2.0;
     const QPointF across = unit(rightMid - leftMid);
     const QPointF down = QPointF(-across.y(), across.x());
     const bool fitted = fit.isSet();
-    const double a = (fitted ? fit.halfWidth : kLensHalfWidth) * es0;
-    const double b = (fitted                                ? fit.halfHeight
-                             : shape == GlassesShape::Round ? kRoundLensHalfHeight
-                                                            : kRectLensHalfHeight)
+    LensPlace l;
+    l.halfWidth = (fitted ? fit.halfWidth : kLensHalfWidth) * es0;
+    l.halfHeight = (fitted                                ? fit.halfHeight
+                           : shape == GlassesShape::Round ? kRoundLensHalfHeight
+                                                          : kRectLensHalfHeight)
         * es0;
     const double out = (fitted ? fit.outward : 0.02) * es0, drop = (fitted ? fit.down : kLensDrop) * es0;
-    const QPointF leftLens = leftMid - across * out + down * drop;
-    const QPointF rightLens = rightMid + across * out + down * drop;
+    l.centre[0] = leftMid - across * out + down * drop;
+    l.centre[1] = rightMid + across * out + down * drop;
+    return l;
+}
+
+namespace {
+
+constexpr const char *kBrowIds[] = {"4.6", "4.4a", "4.4", "4.2", "4.1", "4.3", "4.3a", "4.5"};
+
+} // namespace
+
+void keepBrowsUnderBrim(Points &posed, const Points &neutral, double es0)
+{
+    const double limit = posed[pt::idx("11.1")].y() + kBrowBelowHairline * es0;
+    double push = 0;
+    for (const char *id : kBrowIds) {
+        const int i = pt::idx(id);
+        push = std::max(push, std::min(limit, neutral[i].y()) - posed[i].y());
+    }
+    for (const char *id : kBrowIds)
+        posed[pt::idx(id)].ry() += push;
+}
+
+void keepBrowsAboveGlasses(Points &posed, const Points &neutral, const LensPlace &lenses, double es0)
+{
+    const double limit = lenses.top() - kBrowAboveRim * es0;
+    for (const char *id : kBrowIds) {
+        const int i = pt::idx(id);
+        const double lowest = std::max(limit, neutral[i].y());
+        posed[i].ry() = std::min(posed[i].y(), lowest);
+    }
+}
+
+Part makeGlasses(const Pt &P, GlassesShape shape, const GlassesFit &fit, double es0)
+{
+    // The lenses (glassesLenses); the bridge over the nose between the lenses' inner edges, the
+    // arms from their outer edges to the face's sides.
+    const LensPlace lenses = glassesLenses(P, shape, fit, es0);
+    const QPointF leftLens = lenses.centre[0], rightLens = lenses.centre[1];
+    const double a = lenses.halfWidth, b = lenses.halfHeight;
     PathData d;
     for (const QPointF &c : {leftLens, rightLens}) {
         if (shape == GlassesShape::Round)

@@ -4,10 +4,14 @@
 #include "face/fapu.h"
 #include "face/mouthshape.h"
 #include "face/pose.h"
+#include "face/restingface.h"
 #include "testmain.h"
+
+#include "emotionsignature.h"
 
 #include <QTest>
 
+#include <cstring>
 #include <tuple>
 
 using namespace toonface;
@@ -17,9 +21,56 @@ namespace {
 // How far a preset must move a feature at full intensity to read "from across the room", in ES0.
 constexpr double kClear = 0.1;
 
+// `face` with its points where restingFacePose puts them: a face whose photo shows no expression.
+FaceModel atRest(const FaceModel &face)
+{
+    FaceModel rested = face;
+    const auto p = posedPoints(face, restingFacePose(face));
+    for (int i = 0; i < kPointCount; ++i)
+        rested.setPoint(i, p[i], face.isHandPlaced(i));
+    return rested;
+}
+
 FaceModel testFace()
 {
-    return averageFace(QRectF(100, 150, 200, 240), QSize(400, 500));
+    return atRest(averageFace(QRectF(100, 150, 200, 240), QSize(400, 500)));
+}
+
+// The test face with some of its points moved, in ES0 (both sides mirrored for image-left IDs).
+FaceModel moved(FaceModel face, std::initializer_list<std::pair<const char *, QPointF>> moves)
+{
+    const double es0 = face.fapu().es0;
+    for (const auto &[id, by] : moves) {
+        face.setPoint(pt::idx(id), face.point(id) + by * es0, face.isHandPlaced(pt::idx(id)));
+        const char *mirror = mirrorPointId(id);
+        if (std::strcmp(mirror, id) != 0)
+            face.setPoint(pt::idx(mirror), face.point(mirror) + QPointF(-by.x(), by.y()) * es0,
+                face.isHandPlaced(pt::idx(mirror)));
+    }
+    return face;
+}
+
+// Photos with an expression of their own: a frown (inner brow ends down and together), brows
+// raised in surprise, raised in worry, a smile, a scowl (frown with the corners down).
+FaceModel frowning()
+{
+    return moved(testFace(), {{"4.2", {0.06, 0.14}}, {"4.4", {0.03, 0.07}}, {"4.6", {0, -0.03}}});
+}
+FaceModel browsRaised()
+{
+    return moved(testFace(), {{"4.6", {0, -0.16}}, {"4.4a", {0, -0.2}}, {"4.4", {0, -0.2}}, {"4.2", {0, -0.16}}});
+}
+FaceModel worried()
+{
+    return moved(testFace(), {{"4.2", {0, -0.15}}, {"4.4", {0, -0.08}}, {"4.6", {0, 0.04}}});
+}
+FaceModel smiling()
+{
+    return moved(testFace(), {{"8.4", {-0.04, -0.14}}});
+}
+FaceModel scowling()
+{
+    return moved(frowning(), {{"8.4", {0.02, 0.1}}});
 }
 
 struct Posed
@@ -68,10 +119,86 @@ private Q_SLOTS:
         QVERIFY(!emotionFromName(QStringLiteral("bored")));
     }
 
+    // On a face at rest neutral moves nothing; on one whose photo frowns, raises its brows or
+    // smiles it takes that out: brows at a resting height and slant over the eyes, inner ends
+    // apart, the corners on the lips' line (the resting bands of restingface.h), while a brow
+    // already at rest keeps its place (who the person is).
     void neutralMovesNothing()
     {
         const FaceModel face = testFace();
         QCOMPARE(emotionPose(face, Emotion::Neutral, 1.0), Pose());
+        QCOMPARE(restingFacePose(face), Pose());
+    }
+
+    void neutralTakesTheExpressionOut_data()
+    {
+        QTest::addColumn<int>("which");
+        QTest::newRow("frowning") << 0;
+        QTest::newRow("brows raised") << 1;
+        QTest::newRow("worried") << 2;
+        QTest::newRow("smiling") << 3;
+        QTest::newRow("scowling") << 4;
+    }
+
+    void neutralTakesTheExpressionOut()
+    {
+        QFETCH(int, which);
+        const FaceModel face = std::array {frowning, browsRaised, worried, smiling, scowling}[size_t(which)]();
+        const ExpressionShape photo = expressionShape(face, Pose());
+        const ExpressionShape n = expressionShape(face, stillEmotionPose(face, Emotion::Neutral, 1.0));
+        const ExpressionShape rest = expressionShape(testFace(), Pose());
+        for (int side = 0; side < 2; ++side) {
+            QVERIFY(n.slant(side) >= kBrowRest.slantLow - 1e-9 && n.slant(side) <= kBrowRest.slantHigh + 1e-9);
+            const double mean = (n.innerHeight[side] + n.outerHeight[side]) / 2;
+            QVERIFY(mean >= kBrowRest.heightLow - 1e-9 && mean <= kBrowRest.heightHigh + 1e-9);
+        }
+        QVERIFY(n.innerGap >= kBrowRest.innerGapLow - 1e-9);
+        QVERIFY(n.cornerLift <= 1e-9 && n.cornerLift >= -kRestingCornerDrop - 1e-9);
+        // The photo's expression was outside the bands (or its corners off the line) and is gone.
+        const bool browsOff = photo.slant(0) < kBrowRest.slantLow || photo.slant(0) > kBrowRest.slantHigh
+            || (photo.innerHeight[0] + photo.outerHeight[0]) / 2 > kBrowRest.heightHigh;
+        QVERIFY(browsOff || photo.cornerLift > 0.05);
+        // Only what was off moved: a smiling photo's brows, at rest, stay as they are.
+        if (which == 3)
+            QVERIFY(std::abs(n.slant(0) - rest.slant(0)) < 1e-9);
+    }
+
+    // Every preset reads as itself (emotionsignature.h) on faces photographed at rest and with an
+    // expression of their own: sad and angry far apart whatever the photo's brows did.
+    void signatures()
+    {
+        const std::array<std::pair<const char *, FaceModel>, 6> faces {
+            {{"at rest", testFace()}, {"frowning", frowning()}, {"brows raised", browsRaised()}, {"worried", worried()},
+                {"smiling", smiling()}, {"scowling", scowling()}}};
+        for (const auto &[name, face] : faces) {
+            const QStringList failed = testing::emotionSignatureFailures(face);
+            QVERIFY2(failed.isEmpty(),
+                qPrintable(QLatin1String(name) + QStringLiteral(": ") + failed.join(QStringLiteral("; "))));
+        }
+    }
+
+    // Sad at 80 % under a hat's brim (the hairline 11.1 just above the brows): the brows never rise
+    // past the brim (kBrowBelowHairline under 11.1, or their own place), and still slant as sad
+    // brows do; surprise's brows stay under it too.
+    void browsStayUnderTheHairline()
+    {
+        FaceModel face = testFace();
+        const double es0 = face.fapu().es0;
+        const double browTop = std::min(face.point("4.4").y(), face.point("4.3").y());
+        face.setPoint(pt::idx("11.1"), QPointF(face.point("11.1").x(), browTop - 0.18 * es0));
+        const double limit = face.point("11.1").y() + kBrowBelowHairline * es0;
+        for (Emotion e : {Emotion::Sad, Emotion::Surprise, Emotion::Smile}) {
+            const auto p = posedPoints(face, stillEmotionPose(face, e, 0.8));
+            for (const char *id : {"4.6", "4.4a", "4.4", "4.2", "4.1", "4.3", "4.3a", "4.5"})
+                QVERIFY2(p[pt::idx(id)].y() >= std::min(limit, face.point(id).y()) - 1e-9,
+                    qPrintable(emotionName(e) + QLatin1Char(' ') + QLatin1String(id)));
+        }
+        const ExpressionShape sad = expressionShape(face, stillEmotionPose(face, Emotion::Sad, 0.8));
+        const ExpressionShape free = expressionShape(testFace(), stillEmotionPose(testFace(), Emotion::Sad, 0.8));
+        QVERIFY(std::abs(sad.slant(0) - free.slant(0)) < 1e-9);
+        QVERIFY(std::abs(sad.slant(1) - free.slant(1)) < 1e-9);
+        // Without a hairline near, the brows rise as far as the preset says.
+        QVERIFY(free.innerHeight[0] > sad.innerHeight[0] + 0.05);
     }
 
     // Each preset moves its features in the stated directions, clearly at full intensity and
@@ -115,7 +242,7 @@ private Q_SLOTS:
             QVERIFY(s.d("8.2").y() < 0); // the lower lip pushed up under the frown
         }
         // Angry: inner brow ends down and together (a V), outer ends up, lids narrowed, the lips
-        // bared on the teeth with their corners down.
+        // pressed together into a thin line, their corners drawn in and a little down.
         {
             const Posed s = posed(face, emotionPose(face, Emotion::Angry, intensity));
             for (bool left : {true, false})
@@ -124,10 +251,13 @@ private Q_SLOTS:
             QVERIFY(s.d("4.2").x() > clear / 3 && s.d("4.1").x() < -clear / 3);
             QVERIFY(s.eyeOpening(true) < s.eyeOpening0(true));
             QVERIFY(s.d("4.6").y() < 0 && s.d("4.5").y() < 0);
-            QVERIFY(s.mouthWidth() <= s.mouthWidth0() + 1e-9); // bared, not a smile's widening
-            QVERIFY(s.d("8.4").y() > clear / 2 && s.d("8.3").y() > clear / 2);
-            QVERIFY(s.opening() > posed(face, Pose()).opening() + 0.5 * clear * s.es0); // bared teeth
-            QVERIFY(s.d("8.9").y() < 0); // the upper lip raised off them
+            QVERIFY(s.mouthWidth() < s.mouthWidth0()); // drawn in, not a smile's widening
+            QVERIFY(s.d("8.4").y() > clear / 4 && s.d("8.3").y() > clear / 4);
+            QVERIFY(s.opening() <= posed(face, Pose()).opening() + 1e-9); // pressed shut
+            QVERIFY(s.d("8.9").y() > 0 && s.d("8.2").y() < 0); // both lips pressed thin
+            // Not sad's pout: the corners go down far less.
+            const Posed sad = posed(face, emotionPose(face, Emotion::Sad, intensity));
+            QVERIFY(sad.d("8.4").y() > s.d("8.4").y() + clear);
         }
         // Surprise: brows high, eyes wide, the jaw dropped under rounded lips.
         {
@@ -143,7 +273,8 @@ private Q_SLOTS:
     }
 
     // A face photographed with a grin (corners above the lips' line, lips apart): sad and angry
-    // take the grin out, sad shuts the lips; smile and surprise keep the photo's mouth as it is.
+    // take the grin out (sad's corners well below the lips' line, angry's below it), sad shuts the
+    // lips; smile and surprise keep the photo's mouth as it is.
     void grinningPhoto()
     {
         FaceModel face = testFace();
@@ -157,9 +288,9 @@ private Q_SLOTS:
         move("2.3", {0, 0.16});
         move("2.1", {0, 0.16});
         const double lipLine = (face.point("2.2").y() + face.point("2.3").y()) / 2.0;
-        for (Emotion e : {Emotion::Sad, Emotion::Angry}) {
+        for (const auto &[e, below] : {std::pair {Emotion::Sad, 0.15}, std::pair {Emotion::Angry, 0.0}}) {
             const Posed s = posed(face, emotionPose(face, e, 1.0));
-            QVERIFY2(s.at("8.4").y() > lipLine + 0.05 * es0 && s.at("8.3").y() > lipLine + 0.05 * es0,
+            QVERIFY2(s.at("8.4").y() > lipLine + below * es0 && s.at("8.3").y() > lipLine + below * es0,
                 qPrintable(emotionName(e)));
         }
         const Posed sad = posed(face, stillEmotionPose(face, Emotion::Sad, 1.0));

@@ -8,6 +8,7 @@
 #include "face/fapu.h"
 #include "face/mouthshape.h"
 #include "face/pose.h"
+#include "face/restingface.h"
 #include "render/style.h"
 #include "render/svgface.h"
 #include "testmain.h"
@@ -30,12 +31,24 @@ struct Case
     double caricature;
 };
 
+// A face at rest (restingFacePose): the cues grow from where an emotion starts. (Stretched, the
+// average face's brows sit far above its eyes, as raised brows do in a photo; on such a photo a
+// cue counts only past the photo's own brows: restAndPhotoDrawNoCue.)
+FaceModel atRest(const FaceModel &face)
+{
+    FaceModel rested = face;
+    const auto p = posedPoints(face, restingFacePose(face));
+    for (int i = 0; i < kPointCount; ++i)
+        rested.setPoint(i, p[i], face.isHandPlaced(i));
+    return rested;
+}
+
 QVector<Case> faces()
 {
-    return {{"average", averageFace(QRectF(106, 130, 300, 330), QSize(512, 512)), 0.35},
-        {"long", averageFace(QRectF(150, 80, 200, 340), QSize(500, 500)), 0.35},
-        {"wide", averageFace(QRectF(80, 150, 340, 280), QSize(500, 500)), 0.0},
-        {"small", averageFace(QRectF(400, 300, 120, 140), QSize(900, 700)), 1.0}};
+    return {{"average", atRest(averageFace(QRectF(106, 130, 300, 330), QSize(512, 512))), 0.35},
+        {"long", atRest(averageFace(QRectF(150, 80, 200, 340), QSize(500, 500))), 0.35},
+        {"wide", atRest(averageFace(QRectF(80, 150, 340, 280), QSize(500, 500))), 0.0},
+        {"small", atRest(averageFace(QRectF(400, 300, 120, 140), QSize(900, 700))), 1.0}};
 }
 
 Style styleFor(const Case &c, const QString &preset = QStringLiteral("normal"))
@@ -131,6 +144,34 @@ class TestExpression : public QObject
 private Q_SLOTS:
     // Every cue is absent on the neutral face, grows with its emotion's intensity, and is drawn
     // by its own emotion only.
+    // A photo with an expression of its own (the stretched face's brows raised high, a frown):
+    // neither its plain drawing nor its neutral, which takes the expression out, draws a cue;
+    // every other emotion draws its cues (surprise its forehead lines only once its brows pass
+    // the photo's own).
+    void restAndPhotoDrawNoCue()
+    {
+        const FaceModel raised = averageFace(QRectF(150, 80, 200, 340), QSize(500, 500));
+        FaceModel frowning = averageFace(QRectF(106, 130, 300, 330), QSize(512, 512));
+        const double es0 = frowning.fapu().es0;
+        for (const char *id : {"4.2", "4.1"})
+            frowning.setPoint(pt::idx(id), frowning.point(id) + QPointF(0, 0.12 * es0));
+        for (const FaceModel &face : {raised, frowning}) {
+            SvgFace svg(face, Style::preset(QStringLiteral("normal")));
+            for (const Pose &pose : {Pose(), stillEmotionPose(face, Emotion::Neutral, 1.0)}) {
+                const QVector<FacePart> parts = svg.parts(pose);
+                for (const Cue &cue : cues())
+                    QCOMPARE(cue.size(parts), 0.0);
+            }
+            for (const Cue &cue : cues()) {
+                // Surprise lifts the brows from rest about as high as this photo's already are.
+                if (cue.emotion == Emotion::Surprise && face.point("4.2") == raised.point("4.2"))
+                    continue;
+                QVERIFY2(
+                    cue.size(svg.parts(emotionPose(face, cue.emotion, 1.0))) > 0, qPrintable(emotionName(cue.emotion)));
+            }
+        }
+    }
+
     void cuesFollowIntensity()
     {
         for (const Case &c : faces()) {
