@@ -89,6 +89,33 @@ private Q_SLOTS:
         }
     }
 
+    // Path values leave a repeated command implicit ("C... C..." written "C... ..."), and read
+    // back they have the commands of the path they animate.
+    void pathValuesLeaveRepeatedCommandsImplicit()
+    {
+        const Node doc = document(exported());
+        static const QRegularExpression repeated(QStringLiteral("([LCQSTHVA])[^A-Za-z]*\\1"));
+        int paths = 0, implicit = 0;
+        for (const Node *n : all(doc, "path")) {
+            const std::optional<RawPath> base = rawPath(n->attribute(QStringLiteral("d")));
+            QVERIFY(base);
+            for (const Node &c : n->children) {
+                if (c.name != QLatin1StringView("animate") || c.attribute(QStringLiteral("attributeName")) != u"d")
+                    continue;
+                ++paths;
+                for (const QString &v : c.attribute(QStringLiteral("values")).split(QLatin1Char(';'))) {
+                    QVERIFY2(!repeated.match(v).hasMatch(), qPrintable(v));
+                    const std::optional<RawPath> value = rawPath(v);
+                    QVERIFY2(value, qPrintable(v));
+                    QCOMPARE(value->commands, base->commands);
+                    implicit += base->commands.size() > v.count(QRegularExpression(QStringLiteral("[A-Za-z]")));
+                }
+            }
+        }
+        QVERIFY(paths >= 5);
+        QVERIFY(implicit > 0);
+    }
+
     // The drawing without its animations is SvgFace's drawing of the pose at time 0.
     void drawingIsSvgFacesAtTimeZero_data()
     {
