@@ -5,6 +5,7 @@
 #include "export/smilaudio.h"
 #include "export/smilchannels.h"
 #include "export/smilkeys.h"
+#include "export/smilreduce.h"
 #include "export/smilutil.h"
 #include "export/svgnumbers.h"
 #include "export/svgxml.h"
@@ -33,13 +34,16 @@ void appendTiming(QByteArray &out, const std::optional<Timing> &timing)
     }
     const qint64 y1 = quantize(timing->y1, 3);
     const qint64 y2 = quantize(timing->y2, 3);
-    if (y1 == 333 && y2 == 667) {
+    if (timing->thirds() && y1 == 333 && y2 == 667) {
         out += "0 0 1 1";
         return;
     }
-    out += ".333 ";
+    appendFixed(out, quantize(timing->x1, 3), 3);
+    out += ' ';
     appendFixed(out, y1, 3);
-    out += " .667 ";
+    out += ' ';
+    appendFixed(out, quantize(timing->x2, 3), 3);
+    out += ' ';
     appendFixed(out, y2, 3);
 }
 
@@ -152,6 +156,8 @@ bool smilDocument(const Drawing &d, const TimelineEvaluator &evaluator, const Ti
                 return false;
             report(options, 0.9 * double(g + 1) / double(groups.size()));
         }
+        forEachParallel(
+            keys.size(), [&](qsizetype i) { reduceKeys(d.channels[keys[i].channel], options.reduction, &keys[i]); });
     }
 
     QHash<QByteArray, QByteArray> animations; // element id -> its animation elements

@@ -13,6 +13,23 @@
 
 namespace toonface::smil {
 
+double Timing::parameter(double x) const
+{
+    // Newton's steps from x itself, kept inside a bracket that bisection narrows where a step
+    // leaves it (x'(s) vanishes at the ends when x1 = 0 or x2 = 1).
+    double lo = 0, hi = 1, s = std::clamp(x, 0.0, 1.0);
+    for (int i = 0; i < 40; ++i) {
+        const double f = bezier(x1, x2, s) - x;
+        if (std::abs(f) < 1e-12)
+            break;
+        (f < 0 ? lo : hi) = s;
+        const double slope = 3 * (1 - s) * (1 - s) * x1 + 6 * s * (1 - s) * (x2 - x1) + 3 * s * s * (1 - x2);
+        const double next = slope > 1e-9 ? s - f / slope : -1;
+        s = next > lo && next < hi ? next : (lo + hi) / 2;
+    }
+    return s;
+}
+
 namespace {
 
 // The part [u0, u1] of the ease 3u^2 - 2u^3, as a timing curve (exact: a piece of a cubic is

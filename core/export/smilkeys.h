@@ -40,13 +40,25 @@ struct Grid
     qint64 steps;
 };
 
-// The timing curve of one interval: the cubic Bezier (0,0) (1/3,y1) (2/3,y2) (1,1). Its x is
-// the time fraction itself, so the progress is the cubic 3x(1-x)^2 y1 + 3x^2(1-x) y2 + x^3.
+// The timing curve of one interval: the cubic Bezier (0,0) (x1,y1) (x2,y2) (1,1) of keySplines.
+// With x1 = 1/3 and x2 = 2/3 (as the key refinement makes them) its x is the time fraction
+// itself, so the progress is the cubic 3x(1-x)^2 y1 + 3x^2(1-x) y2 + x^3; other x (a timing
+// fitted over several intervals when keys are dropped) are solved for.
 struct Timing
 {
     double y1 = 1.0 / 3.0;
     double y2 = 2.0 / 3.0;
-    double at(double x) const { return 3 * x * (1 - x) * ((1 - x) * y1 + x * y2) + x * x * x; }
+    double x1 = 1.0 / 3.0;
+    double x2 = 2.0 / 3.0;
+    bool thirds() const { return x1 == 1.0 / 3.0 && x2 == 2.0 / 3.0; }
+    // The curve's x and y at its parameter s.
+    static double bezier(double p1, double p2, double s)
+    {
+        return 3 * s * (1 - s) * ((1 - s) * p1 + s * p2) + s * s * s;
+    }
+    // The parameter at which the curve's x is x (x rises monotonically for x1, x2 in [0, 1]).
+    double parameter(double x) const;
+    double at(double x) const { return thirds() ? bezier(y1, y2, x) : bezier(y1, y2, parameter(x)); }
 };
 
 // One animated channel, ready to write: its key times, values and timings.

@@ -11,6 +11,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   export/smilexport.h export/smilexport.cpp export/smilutil.h
   export/smilchannels.h export/smilchannels.cpp
   export/smilkeys.h export/smilkeys.cpp
+  export/smilreduce.h export/smilreduce.cpp
   export/smilaudio.h export/smilaudio.cpp
   export/svgnumbers.h export/svgnumbers.cpp
   export/svgxml.h export/svgxml.cpp

@@ -236,8 +236,12 @@ void appendAbsolutePath(QByteArray &out, const QByteArray &commands, const qint6
 {
     PathWriter w(out);
     qsizetype i = 0;
+    char last = 0;
     for (const char c : commands) {
-        w.command(c);
+        // A command repeated is implied by its numbers (but numbers after M are L's).
+        if (c != last || c == 'M' || pathArity(c) == 0)
+            w.command(c);
+        last = c;
         for (int j = pathArity(c); j > 0; --j)
             w.number(v[i++], decimals);
     }

@@ -34,6 +34,8 @@ QByteArray seconds(double s);
 // moveto, which keeps the numbers short; quantizing the absolute coordinates first keeps the
 // relative ones from accumulating rounding errors.
 void appendRelativePath(QByteArray &out, const QByteArray &commands, const qint64 *v, int decimals);
+// Path data with the commands as given (absolute), a command repeated left implicit ("C1 2 3 4
+// 5 6 7 8 9 10 11 12" for two C's): the SMIL values, additive offsets of the same commands.
 void appendAbsolutePath(QByteArray &out, const QByteArray &commands, const qint64 *v, int decimals);
 
 // Commands appendRelativePath() can rewrite.
