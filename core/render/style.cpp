@@ -183,6 +183,24 @@ QColor mix(QColor a, QColor b, double t)
 // A skin less saturated than this in a colour photo has lost its colour to the balance (HSV
 // saturation).
 constexpr double kGreySkin = 0.08;
+// The skins drawn from the labelled faces (`toonface-bench likeness.attributes`, 161 photos of
+// every tone) lie between these HSV hues (5th and 95th percentiles, degrees) and above this
+// saturation (5th percentile): a skin sampled pinker or greyer than that is a cast the balance
+// left (drawn as an ashen or mauve face), brought to the nearest natural skin of its lightness.
+constexpr double kSkinHues[2] = {5.5, 29.3};
+constexpr double kMinSkinSaturation = 0.18;
+
+QColor naturalSkin(const QColor &c)
+{
+    double h = c.hsvHueF() * 360.0;
+    if (h > 180.0)
+        h -= 360.0;
+    const double hue = std::clamp(h, kSkinHues[0], kSkinHues[1]);
+    const double s = std::max(c.hsvSaturationF(), float(kMinSkinSaturation));
+    if (hue == h && s == c.hsvSaturationF())
+        return c;
+    return QColor::fromHsvF(float((hue < 0 ? hue + 360.0 : hue) / 360.0), float(s), c.valueF());
+}
 
 bool plausibleSkin(QColor c)
 {
@@ -351,8 +369,10 @@ void Style::sampleColours(const QImage &original, const FaceModel &face, Appeara
     // So is a grey one in a colour photo (a balance that took a pale person's warmth for a cast).
     const bool skinOk = skin.isValid();
     const bool greyInColour = !monochrome && skinOk && skin.hsvSaturationF() < kGreySkin;
-    const QColor skinDrawn
-        = skinOk && (monochrome || greyInColour || !plausibleSkin(skin)) ? skinFromGrey(qGray(skin.rgb())) : skin;
+    const QColor skinDrawn = skinOk && (monochrome || greyInColour || !plausibleSkin(skin))
+        ? skinFromGrey(qGray(skin.rgb()))
+        : skinOk ? naturalSkin(skin)
+                 : skin;
     const QColor skinUsed = skinOk ? skinDrawn : components.value(QStringLiteral("face")).fill;
     if (skinOk) {
         for (const char *key : {"face", "jaw", "ears"})
