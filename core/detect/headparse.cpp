@@ -173,17 +173,19 @@ void measureHairFall(HeadParse *parse, const cv::Mat &rgb, const cv::Mat &lab, d
     // The hair's colour: the median of the person's pixels other than skin over the forehead
     // (kHairSampleLow..kHairSampleHigh d above the brows, kHairSampleHalf d either side).
     std::array<std::vector<double>, 3> sample, sampleRgb;
+    auto take = [&](int x, int y) {
+        const Lab c = labAt(lab, x, y);
+        sample[0].push_back(c.l);
+        sample[1].push_back(c.a);
+        sample[2].push_back(c.b);
+        const cv::Vec3b p = rgb.at<cv::Vec3b>(y, x);
+        for (size_t k = 0; k < 3; ++k)
+            sampleRgb[k].push_back(p[int(k)]);
+    };
     for (int y = std::max(0, int(browTop - kHairSampleHigh * d)); y <= int(browTop - kHairSampleLow * d); ++y)
         for (int x = int(mid - kHairSampleHalf * d); x <= int(mid + kHairSampleHalf * d); ++x)
-            if (out.at(x, y) == HeadParse::Other) {
-                const Lab c = labAt(lab, x, y);
-                sample[0].push_back(c.l);
-                sample[1].push_back(c.a);
-                sample[2].push_back(c.b);
-                const cv::Vec3b p = rgb.at<cv::Vec3b>(y, x);
-                for (size_t k = 0; k < 3; ++k)
-                    sampleRgb[k].push_back(p[int(k)]);
-            }
+            if (out.at(x, y) == HeadParse::Other)
+                take(x, y);
     // A tight crop shows little or nothing over the forehead: the hair beside the temples
     // (kTempleNear..kTempleFar d out from the midline, from kTempleHigh d over the brows' top
     // down to the eyes) tells its colour instead.
@@ -196,15 +198,8 @@ void measureHairFall(HeadParse *parse, const cv::Mat &rgb, const cv::Mat &lab, d
         for (int y = std::max(0, int(browTop - kTempleHigh * d)); y <= int(eyeY); ++y)
             for (int x = 0; x < out.size.width(); ++x) {
                 const double off = std::abs(x - mid) / d;
-                if (off < kTempleNear || off > kTempleFar || out.at(x, y) != HeadParse::Other)
-                    continue;
-                const Lab c = labAt(lab, x, y);
-                sample[0].push_back(c.l);
-                sample[1].push_back(c.a);
-                sample[2].push_back(c.b);
-                const cv::Vec3b p = rgb.at<cv::Vec3b>(y, x);
-                for (size_t k = 0; k < 3; ++k)
-                    sampleRgb[k].push_back(p[int(k)]);
+                if (off >= kTempleNear && off <= kTempleFar && out.at(x, y) == HeadParse::Other)
+                    take(x, y);
             }
         if (sample[0].size() < size_t(kMinHairSample * d * d))
             return;
