@@ -55,7 +55,8 @@ struct HeadParse
 
     // What the parse measured in: the work frame's pixels (RGB), the cheeks' median colour, the
     // brows' points and their top row, the hair's colour (sampled over the forehead, or
-    // beside the temples; invalid unless hairSeen or templeHairSeen), and up each forehead column the skin's last pixel below the photo's edge.
+    // beside the temples; invalid unless hairSeen or templeHairSeen), and up each forehead column the skin's last pixel
+    // below the photo's edge.
     QImage work;
     QColor cheeks, hair;
     std::vector<QPointF> brows;
