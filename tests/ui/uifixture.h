@@ -3,6 +3,7 @@
 #include "document/document.h"
 #include "face/averageface.h"
 #include "render/style.h"
+#include "testmain.h"
 
 #include <QCoreApplication>
 #include <QImage>
@@ -44,12 +45,16 @@ inline void fill(Document &document, const QString &photoPath = {})
     document.reset(project, photo(), {}, true);
 }
 
-// Settings and AppLocalDataLocation in the test sandbox (~/.qttest), never the user's.
+// Settings and AppLocalDataLocation in the test sandbox (~/.qttest), never the user's, and each
+// suite's its own: ctest runs suites side by side, and two of them writing one settings file (the
+// recent files) made each other's checks fail.
 inline void isolateSettings()
 {
     QStandardPaths::setTestModeEnabled(true);
     QCoreApplication::setOrganizationName(QStringLiteral("ToonfaceTest"));
-    QCoreApplication::setApplicationName(QStringLiteral("toonface-test"));
+    const QString suite = toonface::test::suiteArguments().value(0);
+    QCoreApplication::setApplicationName(
+        suite.isEmpty() ? QStringLiteral("toonface-test") : QStringLiteral("toonface-test-%1").arg(suite));
 }
 
 } // namespace toonface::fixture
