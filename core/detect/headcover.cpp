@@ -1,6 +1,7 @@
 #include "detect/headcover.h"
 
 #include "detect/labcolour.h"
+#include "detect/photopixels.h"
 
 #include <QLineF>
 
@@ -44,21 +45,12 @@ double distance(const Lab &p, const Lab &q)
     return std::hypot(p.l - q.l, p.a - q.a, p.b - q.b);
 }
 
-double median(std::vector<double> v)
+double medianOf(std::vector<double> v)
 {
     if (v.empty())
         return 0;
     std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
     return v[v.size() / 2];
-}
-
-double percentile(std::vector<double> v, double q)
-{
-    if (v.empty())
-        return 0;
-    auto it = v.begin() + std::ptrdiff_t(q * double(v.size() - 1));
-    std::nth_element(v.begin(), it, v.end());
-    return *it;
 }
 
 class LabFrame
@@ -91,10 +83,7 @@ struct Sample
         channels[2].push_back(c.b);
     }
     size_t size() const { return channels[0].size(); }
-    Lab median() const
-    {
-        return {toonface::median(channels[0]), toonface::median(channels[1]), toonface::median(channels[2])};
-    }
+    Lab median() const { return {medianOf(channels[0]), medianOf(channels[1]), medianOf(channels[2])}; }
 };
 
 Lab labOf(const QColor &c)
@@ -195,7 +184,7 @@ HeadCover measureCover(const HeadParse &parse)
         sxy += double(top.x()) * top.y();
     }
     const double n = double(parse.foreheadTop.size());
-    out.edgeHeight = median(heights);
+    out.edgeHeight = medianOf(heights);
     const double slope = (n * sxy - sx * sy) / std::max(1e-9, n * sxx - sx * sx), at0 = (sy - slope * sx) / n;
     std::vector<double> off;
     for (const QPoint &top : parse.foreheadTop)
