@@ -2,6 +2,7 @@
 
 #include "detect/appearance.h"
 #include "detect/detector.h"
+#include "detect/photocolours.h"
 #include "face/emotion.h"
 #include "face/pose.h"
 #include "render/style.h"
@@ -134,7 +135,7 @@ QJsonObject sheet()
         }
         Style style = Style::preset(QStringLiteral("normal"));
         AppearanceFindings f;
-        style.sampleColours(photo, r.face, &f);
+        sampleColours(photo, r.face, &style, &f);
         const Appearance &a = style.appearance;
         o.insert(QStringLiteral("glasses"), glassesShapeName(a.glasses));
         o.insert(QStringLiteral("moustache"), a.moustache);
@@ -229,7 +230,7 @@ QJsonObject emotions()
         if (r.status != DetectStatus::Ok)
             continue;
         Style style = Style::preset(QStringLiteral("normal"));
-        style.sampleColours(photo, r.face);
+        sampleColours(photo, r.face, &style);
         SvgFace cartoon(r.face, style);
         cartoon.setFrame(headFrame(r.face));
         for (double intensity : intensities) {

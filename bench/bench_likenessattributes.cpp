@@ -1,5 +1,6 @@
 #include "benchmark.h"
 #include "crossvalidation.h"
+#include "detect/photocolours.h"
 
 #include "detect/appearance.h"
 #include "detect/detector.h"
@@ -96,7 +97,7 @@ void measure(Labelled *row, const QImage &photo, const FaceModel &face)
 {
     Style style = Style::preset(QStringLiteral("normal"));
     AppearanceFindings f;
-    style.sampleColours(photo, face, &f);
+    sampleColours(photo, face, &style, &f);
     row->shipped = style.appearance;
     row->drawnL = lStar(style.components.value(QStringLiteral("face")).fill);
     row->cheekL = photoCheekL(photo, face);

@@ -1,6 +1,7 @@
 #include "cli/command.h"
 #include "cli/faceinput.h"
 #include "detect/appearance.h"
+#include "detect/photocolours.h"
 #include "io/appearancejson.h"
 #include "io/facejson.h"
 #include "render/style.h"
@@ -65,7 +66,7 @@ int runDetect(const Command &self, const QStringList &args)
     if (!input.photo.isNull()) {
         Style style = Style::preset(QStringLiteral("normal"));
         AppearanceFindings findings;
-        style.sampleColours(input.photo, input.face, &findings);
+        sampleColours(input.photo, input.face, &style, &findings);
         face.insert(QStringLiteral("appearance"), appearanceToJson(style, findings));
     }
     const QByteArray json = QJsonDocument(face).toJson(QJsonDocument::Indented);

@@ -1,6 +1,7 @@
 #include "cli/faceinput.h"
 
 #include "cli/command.h"
+#include "detect/photocolours.h"
 #include "i18n/coretext.h"
 #include "io/facejson.h"
 #include "io/imageio.h"
@@ -170,7 +171,7 @@ Style drawingStyle(const FaceInput &input, const std::optional<Style> &chosen)
         return input.style;
     Style style = chosen.value_or(Style::preset(QStringLiteral("normal")));
     if (!input.photo.isNull())
-        style.sampleColours(input.photo, input.face);
+        sampleColours(input.photo, input.face, &style);
     return style;
 }
 

@@ -2,8 +2,8 @@
 
 #include "detect/appearanceevidence.h"
 #include "detect/headcover.h"
+#include "face/appearance.h"
 #include "face/facemodel.h"
-#include "render/style.h"
 
 #include <QColor>
 #include <QImage>

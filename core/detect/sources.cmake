@@ -3,6 +3,8 @@ list(APPEND TOONFACE_CORE_SOURCES
   detect/landmarkfigures.h detect/landmarkfigures.cpp
   detect/faceregions.h detect/faceregions.cpp
   detect/appearance.h detect/appearance.cpp
+  detect/photocolours.h detect/photocolours.cpp
+  detect/colourbalance.h detect/colourbalance.cpp
   detect/photopixels.h detect/photopixels.cpp detect/glassesfind.cpp detect/facialhairfind.cpp
   detect/headparse.h detect/headparse.cpp
   detect/headcover.h detect/headcover.cpp

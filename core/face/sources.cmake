@@ -1,6 +1,7 @@
 list(APPEND TOONFACE_CORE_SOURCES
   face/pointtable.h face/pointtable.cpp
   face/facemodel.h face/facemodel.cpp
+  face/appearance.h face/appearance.cpp
   face/fapu.h face/fapu.cpp
   face/mouthshape.h face/mouthshape.cpp
   face/emotion.h face/emotion.cpp

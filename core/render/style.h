@@ -1,5 +1,7 @@
 #pragma once
 
+#include "face/appearance.h"
+
 #include <QByteArray>
 #include <QColor>
 #include <QMap>
@@ -11,9 +13,6 @@
 class QImage;
 
 namespace toonface {
-
-class FaceModel;
-struct AppearanceFindings;
 
 // How one drawn component looks. Component names are the style keys of SvgFace's parts:
 // "hair", "ears", "face", "jaw", "cheeks", "nose", "eyebrows", "eyes", "eyeballs", "pupils",
@@ -32,40 +31,6 @@ struct ComponentStyle
 };
 
 enum class EyebrowVariant { Polyline, Bezier, Thick };
-enum class GlassesShape { None, Round, Rectangular, Rimless };
-
-// What a photo shows of the person beyond the 72 points: things worn and kinds of hair that the
-// drawing adds as layers of their own (SVG ids "glasses", "moustache", "beard" (a beard or a goatee), "hat" and
-// "hat-wrap"), each only
-// when found. Their colours are the components "glasses" (stroke: frame; fill: lens tint, usually
-// transparent), "moustache", "beard" and "hat"; a component's `visible` switches its layer off.
-// The lenses as measured on the photo, in ES0 about each eye's middle (between its corners):
-// half width and half height, and how far the lens's centre lies outward (toward the temple) and
-// down from there. Zero half sizes: not measured, drawn in the shape's usual proportions.
-struct GlassesFit
-{
-    double halfWidth = 0, halfHeight = 0;
-    double outward = 0, down = 0;
-
-    bool isSet() const { return halfWidth > 0 && halfHeight > 0; }
-    bool operator==(const GlassesFit &) const = default;
-};
-
-struct Appearance
-{
-    GlassesShape glasses = GlassesShape::None;
-    bool moustache = false;
-    bool beard = false; // on the chin and along the jaw; it opens with the jaw
-    bool goatee = false; // on the chin only, under the lower lip (drawn as the "beard" layer when there is no beard)
-    bool hat = false; // the top of the head is a hat, not hair
-    bool bald = false; // the head shows the skull: the hair outline is drawn as skin
-    GlassesFit lens; // the lenses' size and place, when measured
-    // The hat wraps the head's sides and falls past the chin (a headscarf, a hood): drawn around
-    // the face in the hat's colour, no hair showing.
-    bool wrap = false;
-
-    bool operator==(const Appearance &) const = default;
-};
 
 // How much the drawing exaggerates what makes the face differ from the average face
 // (0 = exactly the points; 1 = twice the difference). New styles start mild.
@@ -110,11 +75,9 @@ struct Style
     static QStringList presetNames();
     static Style preset(const QString &name, bool *ok = nullptr);
 
-    // Sets skin, hair, lip and iris colours from the photo under the face's points, corrected
-    // for the photo's white balance (a greyscale photo gets natural colours from its tones), and
-    // the appearance (glasses, facial hair, hat, bald head) with the colours of what it finds;
-    // `findings`, when given, receives the appearance detection's measures.
-    void sampleColours(const QImage &photo, const FaceModel &face, AppearanceFindings *findings = nullptr);
+    // The colours and line weights every preset starts from (widths in ES0/100); a photo's
+    // colours are set over them by sampleColours() (detect/photocolours.h).
+    static QMap<QString, ComponentStyle> baseComponents();
 
     bool operator==(const Style &) const = default;
 };
@@ -122,8 +85,6 @@ struct Style
 QString eyebrowVariantName(EyebrowVariant v);
 bool eyebrowVariantFromName(const QString &name, EyebrowVariant *v);
 QString noseVariantName(NoseVariant v);
-QString glassesShapeName(GlassesShape v); // "none", "round", "rectangular", "rimless"
-bool glassesShapeFromName(const QString &name, GlassesShape *v);
 bool noseVariantFromName(const QString &name, NoseVariant *v);
 
 } // namespace toonface

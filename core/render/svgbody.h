@@ -13,7 +13,7 @@ namespace toonface::svgparts {
 std::vector<Part> makeBody(const Pt &P, double es0);
 
 // How far below the chin the drawing reaches (ES0): the neck and the top of the shoulders. A
-// photo with less room than this under the chin shows no body (Style::sampleColours).
+// photo with less room than this under the chin shows no body (sampleColours, detect/photocolours.h).
 inline constexpr double kBodyRoomBelowChin = 0.6;
 
 } // namespace toonface::svgparts

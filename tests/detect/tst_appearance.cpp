@@ -2,6 +2,7 @@
 #include "detect/detector.h"
 #include "detect/hairsearch.h"
 #include "detect/landmarkmap.h"
+#include "detect/photocolours.h"
 #include "drawnface.h"
 #include "face/fapu.h"
 #include "render/style.h"
@@ -227,7 +228,7 @@ private Q_SLOTS:
         QVERIFY(f.lightFacialHair);
         QVERIFY2(std::abs(qGray(f.facialHair.rgb()) - qGray(options.skin.rgb())) < 25, qPrintable(f.facialHair.name()));
         Style style;
-        style.sampleColours(photo, testing::drawnFaceModel());
+        sampleColours(photo, testing::drawnFaceModel(), &style);
         QVERIFY(style.appearance.moustache);
         QCOMPARE(style.components.value(QStringLiteral("moustache")).fill.alpha(), 255);
     }
@@ -322,13 +323,13 @@ private Q_SLOTS:
         DrawnFaceOptions o;
         o.glasses = o.beard = o.moustache = true;
         Style style = Style::preset(QStringLiteral("normal"));
-        style.sampleColours(testing::drawnFace(o), testing::drawnFaceModel());
+        sampleColours(testing::drawnFace(o), testing::drawnFaceModel(), &style);
         QVERIFY(style.appearance.glasses != GlassesShape::None);
         QVERIFY(style.appearance.beard && style.appearance.moustache);
         QVERIFY(!style.appearance.hat && !style.appearance.bald);
         QVERIFY(style.components.value(QStringLiteral("beard")).fill.value() < 90);
         // Sampling again without them clears them.
-        style.sampleColours(testing::drawnFace({}), testing::drawnFaceModel());
+        sampleColours(testing::drawnFace({}), testing::drawnFaceModel(), &style);
         QCOMPARE(style.appearance, Appearance());
     }
 
@@ -354,7 +355,7 @@ private Q_SLOTS:
             p.drawPolyline(outline);
         }
         Style style = Style::preset(QStringLiteral("normal"));
-        style.sampleColours(photo, face);
+        sampleColours(photo, face, &style);
         const QColor hair = style.components.value(QStringLiteral("hair")).fill;
         QVERIFY2(std::abs(qGray(hair.rgb()) - qGray(o.hair.rgb())) < 25, qPrintable(hair.name()));
     }
@@ -404,7 +405,7 @@ private Q_SLOTS:
         o.hair = hair;
         Style style;
         AppearanceFindings f;
-        style.sampleColours(testing::drawnFace(o), testing::drawnFaceModel(), &f);
+        sampleColours(testing::drawnFace(o), testing::drawnFaceModel(), &style, &f);
         QVERIFY2(style.appearance.hat, qPrintable(describe(f)));
         const QColor drawn = style.components.value(QStringLiteral("hair")).fill;
         auto distance = [](const QColor &a, const QColor &b) {
@@ -428,7 +429,7 @@ private Q_SLOTS:
         o.beard = o.moustache = true;
         Style style;
         AppearanceFindings f;
-        style.sampleColours(testing::drawnFace(o), testing::drawnFaceModel(), &f);
+        sampleColours(testing::drawnFace(o), testing::drawnFaceModel(), &style, &f);
         QVERIFY2(style.appearance.beard, qPrintable(describe(f)));
         const QColor beard = style.components.value(QStringLiteral("beard")).fill;
         const double off = std::hypot(beard.red() - o.beardColour.red(), beard.green() - o.beardColour.green(),
@@ -572,7 +573,7 @@ private Q_SLOTS:
             DrawnFaceOptions o;
             o.browWidth = k == 0 ? 0.035 : 0.075; // within the drawn range, 2.5..8 hundredths
             Style style = Style::preset(QStringLiteral("normal"));
-            style.sampleColours(testing::drawnFace(o), testing::drawnFaceModel());
+            sampleColours(testing::drawnFace(o), testing::drawnFaceModel(), &style);
             widths[k] = style.components.value(QStringLiteral("eyebrows")).strokeWidth;
             // Within a pixel and a half (antialiased edges) at this face's size.
             QVERIFY2(std::abs(widths[k] - o.browWidth * 100) < 2.5, qPrintable(QString::number(widths[k])));
@@ -607,7 +608,7 @@ private Q_SLOTS:
             o.hair = hair;
         o.browColour = brows;
         Style style = Style::preset(QStringLiteral("normal"));
-        style.sampleColours(testing::drawnFace(o), testing::drawnFaceModel());
+        sampleColours(testing::drawnFace(o), testing::drawnFaceModel(), &style);
         const QColor drawn = style.components.value(QStringLiteral("eyebrows")).fill;
         const QColor hairDrawn = style.components.value(QStringLiteral("hair")).fill;
         auto distance = [](const QColor &a, const QColor &b) {
@@ -689,7 +690,7 @@ private Q_SLOTS:
             QSKIP("the landmark model is not installed");
         QCOMPARE(r.status, DetectStatus::Ok);
         Style style = Style::preset(QStringLiteral("normal"));
-        style.sampleColours(photo, r.face);
+        sampleColours(photo, r.face, &style);
         qInfo("grace_hopper: glasses %s, hat %d, bald %d, moustache %d, beard %d",
             qPrintable(glassesShapeName(style.appearance.glasses)), style.appearance.hat, style.appearance.bald,
             style.appearance.moustache, style.appearance.beard);
@@ -711,7 +712,7 @@ private Q_SLOTS:
         FaceModel face = faceFromLandmarks68(pts, photo.size());
         refineFromPhoto(&face, photo);
         Style style = Style::preset(QStringLiteral("normal"));
-        style.sampleColours(photo, face);
+        sampleColours(photo, face, &style);
         qInfo("einstein: moustache %d, beard %d, glasses %s, hat %d", style.appearance.moustache,
             style.appearance.beard, qPrintable(glassesShapeName(style.appearance.glasses)), style.appearance.hat);
         // His white moustache is no darker than his skin: its strands, finer than a pixel on his small
@@ -749,7 +750,7 @@ private Q_SLOTS:
             if (r.status != DetectStatus::Ok)
                 continue;
             Style style;
-            style.sampleColours(photo, r.face);
+            sampleColours(photo, r.face, &style);
             ++tried;
             bald += style.appearance.bald;
             hats += style.appearance.hat;
@@ -805,7 +806,7 @@ private Q_SLOTS:
             QVERIFY(r.face.point(pt::idx("h.19") - i).y() > r.face.point(pt::idx("h.19") - i - 1).y());
         }
         Style style;
-        style.sampleColours(cropped, r.face);
+        sampleColours(cropped, r.face, &style);
         QVERIFY(!style.appearance.bald);
         QVERIFY(!style.appearance.hat);
     }
@@ -826,7 +827,7 @@ private Q_SLOTS:
                 QSKIP("the landmark model is not installed");
             QCOMPARE(r.status, DetectStatus::Ok);
             Style style;
-            style.sampleColours(photo, r.face);
+            sampleColours(photo, r.face, &style);
             QCOMPARE(style.appearance.glasses != GlassesShape::None, glasses);
             if (goatee)
                 QEXPECT_FAIL(

@@ -1,4 +1,5 @@
 #include "detect/appearance.h"
+#include "detect/photocolours.h"
 #include "drawnface.h"
 #include "io/appearancejson.h"
 #include "render/style.h"
@@ -79,7 +80,7 @@ private Q_SLOTS:
         QFETCH(DrawnFaceOptions, options);
         Style style = Style::preset(QStringLiteral("normal"));
         AppearanceFindings findings;
-        style.sampleColours(testing::drawnFace(options), testing::drawnFaceModel(), &findings);
+        sampleColours(testing::drawnFace(options), testing::drawnFaceModel(), &style, &findings);
         const QJsonObject a = appearanceToJson(style, findings);
         const QString problem = schemaProblem(a);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));

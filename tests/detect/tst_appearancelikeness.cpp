@@ -1,5 +1,6 @@
 #include "detect/appearance.h"
 #include "detect/detector.h"
+#include "detect/photocolours.h"
 #include "drawnface.h"
 #include "render/style.h"
 #include "shareddata.h"
@@ -138,7 +139,7 @@ private Q_SLOTS:
             DrawnFaceOptions o;
             o.skin = skin;
             Style style = Style::preset(QStringLiteral("normal"));
-            style.sampleColours(testing::drawnFace(o), testing::drawnFaceModel());
+            sampleColours(testing::drawnFace(o), testing::drawnFaceModel(), &style);
             const double drawn = lStar(style.components.value(QStringLiteral("face")).fill);
             QVERIFY2(drawn < last, qPrintable(skin.name()));
             QVERIFY2(std::abs(drawn - lStar(skin)) <= 6.0,
@@ -155,7 +156,7 @@ private Q_SLOTS:
             DrawnFaceOptions o;
             o.skin = seen;
             Style style = Style::preset(QStringLiteral("normal"));
-            style.sampleColours(testing::drawnFace(o), testing::drawnFaceModel());
+            sampleColours(testing::drawnFace(o), testing::drawnFaceModel(), &style);
             const QColor drawn = style.components.value(QStringLiteral("face")).fill;
             const QByteArray what = (seen.name() + QStringLiteral(" drawn ") + drawn.name()).toUtf8();
             QVERIFY2(drawn.red() > drawn.green() && drawn.green() > drawn.blue(), what.constData());
@@ -190,7 +191,7 @@ private Q_SLOTS:
                 continue;
             ++faces;
             Style style = Style::preset(QStringLiteral("normal"));
-            style.sampleColours(photo, r.face);
+            sampleColours(photo, r.face, &style);
             const Appearance &a = style.appearance;
             auto flag = [&](const char *name) { return c[col(name)] == QLatin1String("1"); };
             const bool hair = flag("beard") || flag("moustache") || flag("goatee");

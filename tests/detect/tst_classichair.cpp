@@ -3,6 +3,7 @@
 
 #include "detect/appearance.h"
 #include "detect/detector.h"
+#include "detect/photocolours.h"
 #include "drawnface.h"
 #include "media/mediareader.h"
 #include "render/style.h"
@@ -36,7 +37,7 @@ Looked classicLook(const QImage &photo)
     options.method = DetectionMethod::Classic;
     out.result = detectFace(photo, options);
     if (out.result.status == DetectStatus::Ok)
-        out.style.sampleColours(photo, out.result.face, &out.findings);
+        sampleColours(photo, out.result.face, &out.style, &out.findings);
     return out;
 }
 
@@ -159,7 +160,7 @@ private Q_SLOTS:
             const DetectionResult r = detectFace(both, options);
             QVERIFY2(r.status == DetectStatus::Ok, qPrintable(r.error));
             Style style;
-            style.sampleColours(both, r.face);
+            sampleColours(both, r.face, &style);
             qInfo("asked for the %s face: eyes at (%.0f, %.0f) and (%.0f, %.0f), bald %d", onRight ? "right" : "left",
                 r.face.point("3.6").x(), r.face.point("3.6").y(), r.face.point("3.5").x(), r.face.point("3.5").y(),
                 style.appearance.bald);

@@ -1,6 +1,7 @@
 #include "detect/appearance.h"
 #include "detect/detector.h"
 #include "detect/headparse.h"
+#include "detect/photocolours.h"
 #include "drawnface.h"
 #include "face/pointtable.h"
 #include "render/style.h"
@@ -217,7 +218,7 @@ private Q_SLOTS:
         QCOMPARE(r.status, DetectStatus::Ok);
         Style style = Style::preset(QStringLiteral("normal"));
         AppearanceFindings f;
-        style.sampleColours(guys, r.face, &f);
+        sampleColours(guys, r.face, &style, &f);
         QVERIFY2(style.appearance.bald, qPrintable(describe(parseHead(guys, r.face))));
         QVERIFY(!f.crownCut);
 
@@ -239,7 +240,7 @@ private Q_SLOTS:
                 continue;
             Style s = Style::preset(QStringLiteral("normal"));
             AppearanceFindings found;
-            s.sampleColours(photo, d.face, &found);
+            sampleColours(photo, d.face, &s, &found);
             if (found.crownCut)
                 continue;
             ++seen;

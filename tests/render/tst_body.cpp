@@ -2,6 +2,7 @@
 // the photo, attached to the head when it turns and nods, off when hidden or when the photo has
 // no room under the chin.
 
+#include "detect/photocolours.h"
 #include "drawnface.h"
 #include "testmain.h"
 #include "xmltree.h"
@@ -145,7 +146,7 @@ private Q_SLOTS:
             p.fillRect(QRectF(0, chin.y() + 0.5 * face.fapu().es0, photo.width(), photo.height()), shirt);
         }
         Style style = Style::preset(QStringLiteral("normal"));
-        style.sampleColours(photo, face);
+        sampleColours(photo, face, &style);
         const ComponentStyle body = style.components.value(QStringLiteral("body"));
         QVERIFY(body.visible);
         QVERIFY2(colourDistance(body.fill, shirt) < 40, qPrintable(body.fill.name()));
@@ -157,7 +158,7 @@ private Q_SLOTS:
 
         const int cut = int(face.point("2.1").y() + 0.2 * face.fapu().es0);
         Style cropped = Style::preset(QStringLiteral("normal"));
-        cropped.sampleColours(photo.copy(0, 0, photo.width(), cut), face);
+        sampleColours(photo.copy(0, 0, photo.width(), cut), face, &cropped);
         QVERIFY(!cropped.components.value(QStringLiteral("body")).visible);
         QVERIFY(!SvgFace(face, cropped).svg().contains("id=\"neck\""));
     }

@@ -1,3 +1,4 @@
+#include "detect/photocolours.h"
 #include "face/averageface.h"
 #include "face/emotion.h"
 #include "face/fapu.h"
@@ -232,7 +233,7 @@ private Q_SLOTS:
         const FaceModel face = testFace();
         const QImage photo = syntheticPhoto(face, skin, hair, lips, iris, true);
         Style s = preset("normal");
-        s.sampleColours(photo, face);
+        sampleColours(photo, face, &s);
         for (const char *key : {"face", "jaw", "ears"}) {
             const QColor got = s.components.value(QLatin1StringView(key)).fill;
             QVERIFY2(colourDistance(got, skin) <= 3,
@@ -256,9 +257,9 @@ private Q_SLOTS:
         // No hair in the photo (the hair outline surrounds background): the preset's hair stays.
         {
             Style s = base;
-            s.sampleColours(
+            sampleColours(
                 syntheticPhoto(face, QColor(230, 185, 155), QColor(), QColor(200, 90, 90), QColor(60, 40, 30), false),
-                face);
+                face, &s);
             QCOMPARE(
                 s.components.value(QStringLiteral("hair")).fill, base.components.value(QStringLiteral("hair")).fill);
             QVERIFY(colourDistance(s.components.value(QStringLiteral("face")).fill, QColor(230, 185, 155)) <= 3);
@@ -269,9 +270,9 @@ private Q_SLOTS:
         // derived from the skin) is used instead.
         {
             Style s = base;
-            s.sampleColours(syntheticPhoto(face, QColor(0, 220, 0), QColor(40, 30, 20), QColor(0, 220, 0),
-                                QColor(250, 250, 250), true),
-                face);
+            sampleColours(syntheticPhoto(face, QColor(0, 220, 0), QColor(40, 30, 20), QColor(0, 220, 0),
+                              QColor(250, 250, 250), true),
+                face, &s);
             const QColor skin = s.components.value(QStringLiteral("face")).fill;
             QVERIFY2(skin.red() > skin.green() && skin.green() > skin.blue(), qPrintable(skin.name()));
             QVERIFY2(std::abs(qGray(skin.rgb()) - qGray(QColor(0, 220, 0).rgb())) < 30, qPrintable(skin.name()));
@@ -289,7 +290,7 @@ private Q_SLOTS:
                 face, QColor(180, 180, 180), QColor(90, 90, 90), QColor(140, 140, 140), QColor(60, 60, 60), true)
                                     .convertToFormat(QImage::Format_Grayscale8);
             QVERIFY(grey.allGray());
-            s.sampleColours(grey, face);
+            sampleColours(grey, face, &s);
             const QColor skin = s.components.value(QStringLiteral("face")).fill;
             QVERIFY2(skin.hsvSaturationF() > 0.15 && std::abs(skin.lightness() - 180) < 40, qPrintable(skin.name()));
             const QColor lips = s.components.value(QStringLiteral("lips")).fill;
@@ -300,7 +301,7 @@ private Q_SLOTS:
         // A null photo changes nothing.
         {
             Style s = base;
-            s.sampleColours(QImage(), face);
+            sampleColours(QImage(), face, &s);
             QCOMPARE(s, base);
         }
     }

@@ -1,6 +1,7 @@
 #include "appearance/appearancepanel.h"
 
 #include "appearance/layerseditor.h"
+#include "detect/photocolours.h"
 #include "views/displaynames.h"
 
 #include <QCheckBox>
@@ -154,7 +155,7 @@ AppearancePanel::AppearancePanel(Document *document, QWidget *parent)
         });
     }
     connect(m_resample, &QPushButton::clicked, this, [this] {
-        change(tr("Resample colours"), [&](Style &s) { s.sampleColours(m_document->photo(), m_document->face()); });
+        change(tr("Resample colours"), [&](Style &s) { sampleColours(m_document->photo(), m_document->face(), &s); });
     });
     connect(m_document, &Document::changed, this, &AppearancePanel::onDocumentChanged);
     sync();

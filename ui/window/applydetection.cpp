@@ -1,5 +1,6 @@
 #include "window/applydetection.h"
 
+#include "detect/photocolours.h"
 #include "document/document.h"
 #include "document/undomacro.h"
 #include "face/headturn.h"
@@ -26,7 +27,7 @@ void applyDetection(Document *document, const DetectionResult &result, Detection
     if (use == DetectionUse::NewFace) {
         const QString text = choseFace ? ApplyDetection::tr("Use another face") : ApplyDetection::tr("Detect face");
         Style style = document->style();
-        style.sampleColours(document->photo(), result.face);
+        sampleColours(document->photo(), result.face, &style);
         const UndoMacro step(document->undoStack(), text);
         document->replaceFace(result.face, false, text);
         document->changeStyle(style, ApplyDetection::tr("Sample colours"));

@@ -1,5 +1,6 @@
 #include "window/mainwindow.h"
 
+#include "detect/photocolours.h"
 #include "dialogs/bookdialog.h"
 #include "document/autosaver.h"
 #include "export/cartoonfile.h"
@@ -572,7 +573,7 @@ void MainWindow::onStyleActivated(int index)
     if (!ok)
         return;
     if (m_document->hasFace() && !m_document->photo().isNull())
-        style.sampleColours(m_document->photo(), m_document->face());
+        sampleColours(m_document->photo(), m_document->face(), &style);
     m_document->changeStyle(style, tr("Style “%1”").arg(m_styleCombo->itemText(index)));
 }
 

@@ -1,4 +1,4 @@
-#include "render/colourbalance.h"
+#include "detect/colourbalance.h"
 
 #include <algorithm>
 #include <array>

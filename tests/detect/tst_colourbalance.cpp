@@ -1,6 +1,7 @@
+#include "detect/colourbalance.h"
 #include "detect/detector.h"
+#include "detect/photocolours.h"
 #include "drawnface.h"
-#include "render/colourbalance.h"
 #include "render/style.h"
 #include "testmain.h"
 
@@ -38,7 +39,7 @@ double hueDistance(const QColor &a, const QColor &b)
 QColor skinOf(const QImage &photo, const FaceModel &face)
 {
     Style s = Style::preset(QStringLiteral("normal"));
-    s.sampleColours(photo, face);
+    sampleColours(photo, face, &s);
     return s.components.value(QStringLiteral("face")).fill;
 }
 
@@ -127,7 +128,7 @@ private Q_SLOTS:
             const QImage grey = testing::drawnFace(o, face).convertToFormat(QImage::Format_Grayscale8);
             QVERIFY(ColourBalance::measure(grey).greyscale);
             Style s = Style::preset(QStringLiteral("normal"));
-            s.sampleColours(grey, face);
+            sampleColours(grey, face, &s);
             const QColor drawn = s.components.value(QStringLiteral("face")).fill;
             const double hue = drawn.hsvHueF() * 360.0;
             QVERIFY2(hue > 10 && hue < 40 && drawn.hsvSaturationF() > 0.15, qPrintable(drawn.name()));
