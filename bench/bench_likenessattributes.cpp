@@ -555,6 +555,46 @@ QJsonObject attributes()
                   .arg(bench::spearman(drawn, cheeks), 0, 'f', 3)
                   .arg(bench::quantile(diff, 0.5), 0, 'f', 1)
                   .arg(bench::quantile(diff, 0.9), 0, 'f', 1);
+    // Hair colour: the drawn hair's L* by label (where hair is drawn), light hair (blond, grey)
+    // drawn light (L* from 40) and dark hair drawn dark, and the rank correlation of L* with
+    // black < brown < blond < grey.
+    {
+        const std::vector<std::pair<QString, double>> kinds {{QStringLiteral("black"), 0}, {QStringLiteral("brown"), 1},
+            {QStringLiteral("red"), 1}, {QStringLiteral("blond"), 2}, {QStringLiteral("grey"), 3}};
+        std::map<QString, std::vector<double>> byKind;
+        std::vector<double> order, lightness;
+        int right = 0, counted = 0;
+        for (size_t i : detected) {
+            const Labelled &r = rows[i];
+            if (r.shipped.bald || r.shipped.hat)
+                continue;
+            for (const auto &[name, rank] : kinds) {
+                if (r.hairColour != name)
+                    continue;
+                const double l = lStar(r.drawnHair);
+                byKind[name].push_back(l);
+                ++counted;
+                right += (rank >= 2) == (l >= 40.0);
+                if (name != QLatin1String("red")) {
+                    order.push_back(rank);
+                    lightness.push_back(l);
+                }
+            }
+        }
+        QString medians;
+        for (const auto &[name, rank] : kinds)
+            medians += QStringLiteral(" %1 %2 (n %3)")
+                           .arg(name)
+                           .arg(bench::quantile(byKind[name], 0.5), 0, 'f', 1)
+                           .arg(byKind[name].size());
+        report << QStringLiteral(
+            "hair colour: drawn L* median by label:%1; light hair drawn light and dark dark %2/%3; "
+            "rank correlation of L* with black<brown<blond<grey %4")
+                      .arg(medians)
+                      .arg(right)
+                      .arg(counted)
+                      .arg(bench::spearman(order, lightness), 0, 'f', 3);
+    }
     // Which measures are evidence of what: the ROC area of each, per label.
     const std::vector<std::pair<QString, std::function<bool(const Labelled &)>>> labels {
         {QStringLiteral("facialHair"), [](const Labelled &r) { return r.beard || r.moustache || r.goatee; }},

@@ -47,20 +47,10 @@ bool colourless(const QColor &skin)
         < kColourless;
 }
 
-// CIE Lab (D65) of an sRGB colour, L* in 0..100 (through labcolour.h's 8-bit tables).
-std::array<double, 3> labOf(const QColor &c)
-{
-    const cv::Mat rgb(1, 1, CV_8UC3, cv::Scalar(c.red(), c.green(), c.blue()));
-    cv::Mat lab;
-    rgbToLab8(rgb, lab);
-    const cv::Vec3b v = lab.at<cv::Vec3b>(0, 0);
-    return {v[0] * 100.0 / 255.0, v[1] - 128.0, v[2] - 128.0};
-}
-
 double labDistance(const QColor &a, const QColor &b)
 {
-    const auto p = labOf(a), q = labOf(b);
-    return std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+    const LabColour p = labOf(a), q = labOf(b);
+    return std::hypot(p.l - q.l, p.a - q.a, p.b - q.b);
 }
 
 // The hair that shows beside the temples, under a hat as without one: between the face's contour

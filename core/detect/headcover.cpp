@@ -86,13 +86,6 @@ struct Sample
     Lab median() const { return {medianOf(channels[0]), medianOf(channels[1]), medianOf(channels[2])}; }
 };
 
-Lab labOf(const QColor &c)
-{
-    QImage one(1, 1, QImage::Format_RGB888);
-    one.setPixelColor(0, 0, c);
-    return LabFrame(one).at(0, 0);
-}
-
 double distanceToSegment(QPointF p, QPointF a, QPointF b)
 {
     const QPointF ab = b - a;
@@ -137,7 +130,8 @@ HeadCover measureCover(const HeadParse &parse)
         const cv::Vec3b v = rgb.at<cv::Vec3b>(0, 0);
         out.colour = QColor(v[0], v[1], v[2]);
     }
-    const Lab skin = labOf(parse.cheeks);
+    const LabColour cheeks = labOf(parse.cheeks);
+    const Lab skin {cheeks.l, cheeks.a, cheeks.b};
     if (out.chroma >= kGreyChroma) {
         const double cast = std::hypot(skin.a, skin.b) >= kGreyChroma
             ? std::remainder(std::atan2(skin.b, skin.a) * 180.0 / std::numbers::pi - kSkinHue, 360.0)

@@ -79,4 +79,13 @@ void rgbToLab8(const cv::Mat &rgb, cv::Mat &lab)
     }
 }
 
+LabColour labOf(const QColor &c)
+{
+    const cv::Mat rgb(1, 1, CV_8UC3, cv::Scalar(c.red(), c.green(), c.blue()));
+    cv::Mat lab;
+    rgbToLab8(rgb, lab);
+    const cv::Vec3b v = lab.at<cv::Vec3b>(0, 0);
+    return {v[0] * 100.0 / 255.0, v[1] - 128.0, v[2] - 128.0};
+}
+
 } // namespace toonface

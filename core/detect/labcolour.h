@@ -6,6 +6,8 @@
 // detects one face would pay inside its first detection. Here the tables are two small ones
 // (256 gamma values, a cube root sampled 4096 times) made in well under a millisecond.
 
+#include <QColor>
+
 #include <opencv2/core/mat.hpp>
 
 namespace toonface {
@@ -13,5 +15,12 @@ namespace toonface {
 // `rgb` (CV_8UC3, red first) in Lab, as CV_8UC3 in `lab` (reallocated as needed): within one
 // unit of what cv::cvtColor(rgb, lab, cv::COLOR_RGB2Lab) gives.
 void rgbToLab8(const cv::Mat &rgb, cv::Mat &lab);
+
+// One colour in CIE Lab (D65): L* in 0..100, a* and b* about 0 (through the same 8-bit tables).
+struct LabColour
+{
+    double l = 0, a = 0, b = 0;
+};
+LabColour labOf(const QColor &c);
 
 } // namespace toonface

@@ -233,7 +233,7 @@ private Q_SLOTS:
         const FaceModel face = testFace();
         const QImage photo = syntheticPhoto(face, skin, hair, lips, iris, true);
         Style s = preset("normal");
-        sampleColours(photo, face, &s);
+        toonface::sampleColours(photo, face, &s);
         for (const char *key : {"face", "jaw", "ears"}) {
             const QColor got = s.components.value(QLatin1StringView(key)).fill;
             QVERIFY2(colourDistance(got, skin) <= 3,
@@ -257,7 +257,7 @@ private Q_SLOTS:
         // No hair in the photo (the hair outline surrounds background): the preset's hair stays.
         {
             Style s = base;
-            sampleColours(
+            toonface::sampleColours(
                 syntheticPhoto(face, QColor(230, 185, 155), QColor(), QColor(200, 90, 90), QColor(60, 40, 30), false),
                 face, &s);
             QCOMPARE(
@@ -270,8 +270,8 @@ private Q_SLOTS:
         // derived from the skin) is used instead.
         {
             Style s = base;
-            sampleColours(syntheticPhoto(face, QColor(0, 220, 0), QColor(40, 30, 20), QColor(0, 220, 0),
-                              QColor(250, 250, 250), true),
+            toonface::sampleColours(syntheticPhoto(face, QColor(0, 220, 0), QColor(40, 30, 20), QColor(0, 220, 0),
+                                        QColor(250, 250, 250), true),
                 face, &s);
             const QColor skin = s.components.value(QStringLiteral("face")).fill;
             QVERIFY2(skin.red() > skin.green() && skin.green() > skin.blue(), qPrintable(skin.name()));
@@ -290,7 +290,7 @@ private Q_SLOTS:
                 face, QColor(180, 180, 180), QColor(90, 90, 90), QColor(140, 140, 140), QColor(60, 60, 60), true)
                                     .convertToFormat(QImage::Format_Grayscale8);
             QVERIFY(grey.allGray());
-            sampleColours(grey, face, &s);
+            toonface::sampleColours(grey, face, &s);
             const QColor skin = s.components.value(QStringLiteral("face")).fill;
             QVERIFY2(skin.hsvSaturationF() > 0.15 && std::abs(skin.lightness() - 180) < 40, qPrintable(skin.name()));
             const QColor lips = s.components.value(QStringLiteral("lips")).fill;
@@ -301,7 +301,7 @@ private Q_SLOTS:
         // A null photo changes nothing.
         {
             Style s = base;
-            sampleColours(QImage(), face, &s);
+            toonface::sampleColours(QImage(), face, &s);
             QCOMPARE(s, base);
         }
     }
