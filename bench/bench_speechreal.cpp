@@ -62,14 +62,40 @@ QJsonArray realFileFigures(const QString &dir, Errors *developed, Errors *heldOu
     return files;
 }
 
-// Adds an alignment of synthetic speech to `e`; the shortest syllable to `shortest`.
+// One held-out syllable far off, with what it may share with the others: its initial and
+// tone, the silence before it (the sentence's start or an inserted pause), its neighbours.
+struct Miss
+{
+    double signedMs;
+    QJsonObject what;
+};
+
+// Adds an alignment of synthetic speech to `e`; the shortest syllable to `shortest`; the
+// syllables more than 50 ms off to `misses` (when given).
 void scoreSynthetic(const Script &s, const Audio &rec, const std::vector<double> &truth, Errors *e, double *shortest,
-    const AlignOptions &options = {})
+    const AlignOptions &options = {}, std::vector<Miss> *misses = nullptr, const QString &voice = {})
 {
     const LipsyncResult r = lipsyncResult(s, alignScript(rec, s, options), rec.duration());
     for (int k = 0; k < r.syllables.size() && size_t(k) < truth.size(); ++k) {
         e->add(r.syllables[k].start, truth[size_t(k)], r.syllables[k].confidence);
         *shortest = std::min(*shortest, (r.syllables[k].end - r.syllables[k].start) * 1000);
+        const double error = (r.syllables[k].start - truth[size_t(k)]) * 1000;
+        if (!misses || std::abs(error) <= 50)
+            continue;
+        QString context;
+        for (int j = std::max(0, k - 2); j <= std::min(int(s.syllables.size()) - 1, k + 2); ++j)
+            context += j == k ? QLatin1Char('[') + s.syllables[j].text + QLatin1Char(']') : s.syllables[j].text;
+        QJsonObject o;
+        o.insert(QStringLiteral("voice"), voice);
+        o.insert(QStringLiteral("syllable"), k);
+        o.insert(QStringLiteral("text"), context);
+        o.insert(QStringLiteral("pinyin"), s.syllables[k].pinyin + QString::number(s.syllables[k].tone));
+        o.insert(QStringLiteral("errorMs"), std::round(error));
+        o.insert(QStringLiteral("lengthMs"), std::round((r.syllables[k].end - r.syllables[k].start) * 1000));
+        o.insert(QStringLiteral("truthLengthMs"),
+            size_t(k) + 1 < truth.size() ? std::round((truth[size_t(k) + 1] - truth[size_t(k)]) * 1000) : 0.0);
+        o.insert(QStringLiteral("confidence"), std::round(r.syllables[k].confidence * 100) / 100);
+        misses->push_back({error, o});
     }
 }
 
@@ -83,6 +109,7 @@ QJsonObject heldOutSynthetic()
     quint32 seed = 1000;
     double shortestAll = 1e9;
     const QStringList texts = heldOutSentences();
+    std::vector<Miss> misses;
     for (const Voice &v : kHeldOutVoices) {
         Errors e;
         double shortest = 1e9;
@@ -90,7 +117,7 @@ QJsonObject heldOutSynthetic()
             const Script s = mandarin(text);
             std::vector<double> truth;
             const Audio rec = syntheticRecording(s, v, seed++, &truth);
-            scoreSynthetic(s, rec, truth, &e, &shortest);
+            scoreSynthetic(s, rec, truth, &e, &shortest, {}, &misses, QString::fromLatin1(v.voice));
             double ignored = 0;
             scoreSynthetic(s, rec, truth, &unadapted, &ignored, noAdaptation);
         }
@@ -107,6 +134,12 @@ QJsonObject heldOutSynthetic()
     out.insert(QStringLiteral("shortestSyllableMs"), std::round(shortestAll));
     out.insert(QStringLiteral("voices"), perVoice);
     out.insert(QStringLiteral("withoutAdaptation"), unadapted.json());
+    std::sort(misses.begin(), misses.end(),
+        [](const Miss &a, const Miss &b) { return std::abs(a.signedMs) > std::abs(b.signedMs); });
+    QJsonArray worst;
+    for (const Miss &m : misses)
+        worst.append(m.what);
+    out.insert(QStringLiteral("offBy50Ms"), worst);
     // One speaker for about a minute: the sentences over and over in one recording.
     {
         QString text;

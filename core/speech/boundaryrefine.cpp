@@ -81,7 +81,8 @@ std::vector<RefinedBoundary> refineBoundaries(const SpeechFeatures &f, const Ons
             if (afterPause)
                 return tr.energy(t + 1) - tr.energy(t - 1);
             switch (kind) {
-            case OnsetKind::Voiceless: return tr.voiced(t - 1) - tr.voiced(t + 1);
+            case OnsetKind::Voiceless:
+            case OnsetKind::VoicelessAfterNasal: return tr.voiced(t - 1) - tr.voiced(t + 1);
             case OnsetKind::Sonorant: return in.afterNasal[size_t(k)] ? tr.change(t) : tr.band(t - 1) - tr.band(t + 1);
             case OnsetKind::Vowel: {
                 // The bottom of the valley: how far under the loudest frames 60 ms either side.

@@ -29,12 +29,14 @@ OnsetSignals::OnsetSignals(const SpeechFeatures &f)
     // The voicing a voiceless initial ends is a lasting loss: measured on the voicing averaged
     // over ±20 ms, since a rough or creaky voice's voicing flickers from frame to frame.
     m_lnVoiced.resize(n);
+    m_voicing.resize(n);
     for (size_t t = 0; t < n; ++t) {
         const size_t from = t >= 2 ? t - 2 : 0, to = std::min(n, t + 3);
         float voicing = 0;
         for (size_t u = from; u < to; ++u)
             voicing += f.voicing[u];
         voicing /= float(to - from);
+        m_voicing[t] = voicing;
         // voicing 1 → 0.1 lowers this by 4.6 (20 dB)
         m_lnVoiced[t] = m_ln[t] + 2.0f * std::log(std::clamp(voicing, 0.1f, 1.0f));
     }
@@ -207,6 +209,23 @@ double OnsetSignals::onsetEvidence(int b, OnsetKind kind, bool first) const
     double e = 0;
     switch (kind) {
     case OnsetKind::Voiceless: e = knee(3.0, true); break;
+    case OnsetKind::VoicelessAfterNasal: {
+        // The vowel's fall into the nasal coda lowers the voiced loudness as much as the
+        // initial's closure or frication does, but the coda goes on voiced: taken for the
+        // onset, it put the initial the coda's length (80-150 ms) early. What follows the
+        // onset is the initial, voiceless (the nucleus's voicing ramp, 0.4-0.8, read the other
+        // way), taken as its least voicing over the 60 ms after the onset: a real speaker's
+        // voicing runs on 20-30 ms into the initial, and over the first 40 ms alone p2fa's 喜
+        // after 更 came 133 ms early (so that file is not held out from this window). (Not
+        // asked of every voiceless initial: between vowels, real speakers voice unaspirated
+        // stops and h, and SSB00050015's onsets came 30-70 ms late.)
+        double leastVoicing = 1.0;
+        for (int t = b + 1; t <= b + 6; ++t)
+            leastVoicing = std::min(leastVoicing, voicing(t));
+        const double voicedAfter = std::clamp((leastVoicing - 0.4) / 0.4, 0.0, 1.0);
+        e = knee(3.0, true) * (1.0 - voicedAfter);
+        break;
+    }
     case OnsetKind::Sonorant: e = knee(1.5, false) * (1.0 - voicingLoss) * shallow(fallDepth); break;
     case OnsetKind::Vowel: e = valley * (1.0 - voicingLoss) * shallow(depth); break;
     case OnsetKind::Any: e = 0; break; // English words end in consonants: no rule here

@@ -13,7 +13,9 @@ namespace toonface {
 // nuclei, and the evidence that a syllable of a given kind starts at a frame.
 
 // How a syllable begins, which decides what its onset looks like in the signal.
-enum class OnsetKind { Voiceless, Sonorant, Vowel, Any };
+// VoicelessAfterNasal: a voiceless initial after a nasal coda, whose onset is where the
+// coda's voicing ends (the aligner sets it; onsetKind gives Voiceless).
+enum class OnsetKind { Voiceless, Sonorant, Vowel, VoicelessAfterNasal, Any };
 
 OnsetKind onsetKind(const ScriptSyllable &s);
 
@@ -117,6 +119,8 @@ private:
     }
     double lnLoud(int t) const { return m_ln[size_t(std::clamp(t, 0, m_frames - 1))]; }
     double lnVoiced(int t) const { return m_lnVoiced[size_t(std::clamp(t, 0, m_frames - 1))]; }
+    // The voicing averaged over ±20 ms.
+    double voicing(int t) const { return m_voicing[size_t(std::clamp(t, 0, m_frames - 1))]; }
     double maxLn(int from, int to) const
     {
         double m = lnLoud(from);
@@ -133,7 +137,7 @@ private:
     }
 
     int m_frames;
-    std::vector<float> m_ln, m_lnVoiced, m_loud, m_nucleus, m_pause;
+    std::vector<float> m_ln, m_lnVoiced, m_voicing, m_loud, m_nucleus, m_pause;
     std::vector<double> m_sumLoud, m_sumNucleus, m_sumSpeech, m_sumPause;
     SparseMax m_maxNucleus, m_maxLoud;
     std::vector<int> m_nextPause, m_nextSpeech;

@@ -18,6 +18,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/onsetsignals.h speech/onsetsignals.cpp
   speech/samplerelay.h speech/samplerelay.cpp
   speech/referencefeatures.h speech/referencefeatures.cpp
+  speech/syllablesearch.h speech/syllablesearch.cpp
   speech/boundaryrefine.h speech/boundaryrefine.cpp
   speech/hiddeninitials.h speech/hiddeninitials.cpp
   speech/paceprobe.h speech/paceprobe.cpp
