@@ -38,7 +38,90 @@ struct DrawnFaceOptions
     bool bald = false;
     double browWidth = 0.07; // in ES0
     QColor browColour; // invalid: the hair's, a little darker (a bald head's a dark brown)
+    // The frame: its rims' width in ES0 (0: 0.03 ES0, at least two pixels) and colour (invalid:
+    // near black); rimless lenses show only a faint light edge, with a thin metal bridge.
+    double frameWidth = 0;
+    QColor frameColour;
+    bool rimless = false;
+    // What a face shows that is neither glasses nor hair, each a soft shadow of the skin's own
+    // colour: dark upper lids, a brow's shadow over deep-set eyes, bags under the eyes (with the
+    // lid's crease below them), the shadow under the lower lip and under the nose, and a dark jaw
+    // line along the chin.
+    bool darkLids = false, browShadow = false, eyeBags = false;
+    bool lipShadow = false, jawShadow = false;
 };
+
+// A soft dark patch of `colour`: an ellipse at `c` with radii `rx`, `ry`, its darkness fading from
+// the middle out (a shadow has no edge).
+inline void drawShadow(QPainter &p, QPointF c, double rx, double ry, const QColor &colour)
+{
+    if (rx <= 0 || ry <= 0)
+        return;
+    p.save();
+    p.translate(c);
+    p.scale(1.0, ry / rx);
+    QRadialGradient g(QPointF(0, 0), rx);
+    QColor edge = colour;
+    edge.setAlpha(0);
+    g.setColorAt(0, colour);
+    g.setColorAt(0.55, colour);
+    g.setColorAt(1, edge);
+    p.setPen(Qt::NoPen);
+    p.setBrush(g);
+    p.drawEllipse(QPointF(0, 0), rx, rx);
+    p.restore();
+}
+
+// The confounders of DrawnFaceOptions, drawn on the skin before the features.
+inline void drawConfounders(QPainter &p, const DrawnFaceOptions &o, const FaceModel &face, double es0)
+{
+    auto P = [&](const char *id) { return face.point(id); };
+    for (bool left : {true, false}) {
+        const QPointF outer = P(left ? "3.12" : "3.7"), inner = P(left ? "3.8" : "3.11");
+        const QPointF top = P(left ? "3.2" : "3.1"), bottom = P(left ? "3.4" : "3.3");
+        const QPointF brow = P(left ? "4.4" : "4.3");
+        const double half = QLineF(outer, inner).length() / 2.0;
+        const double cx = (outer.x() + inner.x()) / 2.0;
+        if (o.browShadow) // the whole socket under the brow in shade
+            drawShadow(p, QPointF(cx, (brow.y() + top.y()) / 2.0 + 0.03 * es0), 1.25 * half,
+                0.55 * (top.y() - brow.y()) + 0.08 * es0, o.skin.darker(150));
+        if (o.darkLids) // the lid from the lashes up to the crease, dark, and darkest at the lashes
+            drawShadow(p, QPointF(cx, top.y() - 0.02 * es0), 1.1 * half, 0.13 * es0, o.skin.darker(190));
+        if (o.eyeBags) {
+            // A puffy crescent under the lower lid, and the lid's crease below it: a thin dark
+            // curve, the line a frame's lower rim would draw there.
+            drawShadow(p, QPointF(cx, bottom.y() + 0.09 * es0), 1.0 * half, 0.09 * es0, o.skin.darker(145));
+            QPainterPath crease;
+            crease.moveTo(QPointF(cx - 0.9 * half, bottom.y() + 0.1 * es0));
+            crease.quadTo(QPointF(cx, bottom.y() + 0.26 * es0), QPointF(cx + 0.9 * half, bottom.y() + 0.1 * es0));
+            p.save();
+            p.setBrush(Qt::NoBrush);
+            p.setPen(QPen(o.skin.darker(150), std::max(1.5, 0.025 * es0), Qt::SolidLine, Qt::RoundCap));
+            p.drawPath(crease);
+            p.restore();
+        }
+    }
+    if (o.lipShadow) {
+        // Under the lower lip, in the chin's fold, and under the nose over the lip.
+        const double mouth = QLineF(P("8.4"), P("8.3")).length();
+        drawShadow(p, P("8.2") + QPointF(0, 0.1 * es0), 0.32 * mouth, 0.09 * es0, o.skin.darker(165));
+        drawShadow(p, (P("9.15") + P("8.1")) / 2.0, 0.2 * mouth, 0.06 * es0, o.skin.darker(140));
+    }
+    if (o.jawShadow) {
+        // Along the jaw from one angle to the other, inside the face's outline.
+        QPainterPath jaw;
+        jaw.moveTo(P("2.14"));
+        jaw.cubicTo(P("2.12"), P("2.12") + (P("2.1") - P("2.12")) * 0.5, P("2.1"));
+        jaw.cubicTo(P("2.11") + (P("2.1") - P("2.11")) * 0.5, P("2.11"), P("2.13"));
+        p.save();
+        p.setBrush(Qt::NoBrush);
+        QColor shade = o.skin.darker(170);
+        shade.setAlpha(170);
+        p.setPen(QPen(shade, 0.22 * es0, Qt::SolidLine, Qt::RoundCap));
+        p.drawPath(jaw);
+        p.restore();
+    }
+}
 
 inline FaceModel drawnFaceModel()
 {
@@ -83,6 +166,13 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
         p.restore();
     }
     const double es0 = QLineF(P("3.6"), P("3.5")).length();
+    {
+        // The shadows stay on the skin (the face's outline), as real ones do.
+        p.save();
+        p.setClipPath(facePath);
+        drawConfounders(p, o, face, es0);
+        p.restore();
+    }
     // Brows, eyes, nose shadow, lips.
     p.setBrush(Qt::NoBrush);
     const QColor brow = o.browColour.isValid() ? o.browColour : o.bald ? QColor(90, 70, 60) : o.hair.darker(120);
@@ -154,7 +244,11 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
     }
     if (o.glasses) {
         p.setBrush(Qt::NoBrush);
-        p.setPen(QPen(QColor(25, 25, 30), std::max(2.0, 0.03 * es0)));
+        const QColor frame = o.frameColour.isValid() ? o.frameColour : QColor(25, 25, 30);
+        const double width = o.frameWidth > 0 ? o.frameWidth * es0 : std::max(2.0, 0.03 * es0);
+        // A rimless lens's edge catches the light: a faint line a little lighter than the skin.
+        const QPen rim = o.rimless ? QPen(o.skin.lighter(112), 1.0) : QPen(frame, width);
+        p.setPen(rim);
         QPointF inner[2];
         for (bool left : {true, false}) {
             const QPointF c
@@ -174,6 +268,7 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
             p.restore();
             inner[left ? 0 : 1] = QPointF(left ? r.right() : r.left(), r.top() + 0.3 * r.height());
         }
+        p.setPen(o.rimless ? QPen(frame, std::max(1.5, 0.02 * es0)) : rim);
         p.drawLine(inner[0], inner[1]);
     }
     p.end();
