@@ -191,8 +191,9 @@ HairSilhouette hairSilhouette(const HeadParse &parse)
                 misses = 0;
                 lastRow[size_t(side)] = y;
                 held = last;
-            } else if (!head && ++misses > fallGap) {
-                break;
+            } else if (!head && y >= eyeY && ++misses > fallGap) {
+                break; // (above the eyes an ear or hair tucked behind it is no end: the parse's
+                       // own fall is looked for from the eyes down, headparse.cpp)
             }
             extent[size_t(side)].push_back(held); // (a row without hair holds the last extent)
         }

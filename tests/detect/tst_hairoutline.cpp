@@ -230,6 +230,36 @@ private Q_SLOTS:
         }
     }
 
+    // Long hair tucked behind the ears: beside the temples, from the brows down to the eyes, the
+    // ears (skin) hide it; below them it falls to the shoulders. The outline still falls with it.
+    void longHairBehindTheEars()
+    {
+        const FaceModel drawn = styled(Hairdo::Long);
+        QImage photo = testing::drawnFace({}, drawn);
+        const double es0 = es0Of(drawn);
+        {
+            QPainter p(&photo);
+            p.setPen(Qt::NoPen);
+            p.setBrush(DrawnFaceOptions().skin);
+            const double top = drawn.point("4.1").y(), bottom = drawn.point("3.5").y() - 0.05 * es0;
+            for (const char *id : {"5.2", "5.1"}) {
+                const double x = drawn.point(id).x();
+                const double outward = x < drawn.point("9.15").x() ? -1.0 : 1.0;
+                p.drawRect(QRectF(QPointF(std::min(x, x + outward * 0.45 * es0), top),
+                    QPointF(std::max(x, x + outward * 0.45 * es0), bottom)));
+            }
+        }
+        FaceModel face = testing::drawnFaceModel();
+        outlineHairFromParse(&face, parseHead(photo, face));
+        const double chin = face.point("2.1").y();
+        for (const char *end : {"h.1", "h.19"})
+            QVERIFY2(face.point(end).y() > chin + 0.8 * es0,
+                qPrintable(QStringLiteral("%1 at %2, chin at %3")
+                               .arg(QLatin1StringView(end))
+                               .arg(face.point(end).y())
+                               .arg(chin)));
+    }
+
     // A fringe: the hairline moves down to where the drawn forehead's skin ends, the temples
     // with it; on the plain head it stays where the drawn hairline is.
     void hairlineOnTheFringe_data()
