@@ -255,7 +255,9 @@ bool outlineHairFromParse(FaceModel *face, const HeadParse &parse)
         moved = moved || QLineF(p, face->point(i)).length() > 1e-9;
         face->setPoint(i, p);
     }
-    return moved;
+    // Where the parse's own measure of the fall (headparse.cpp) sees the hair fall lower than the
+    // silhouette's ends (hair of another shade than the crown's below the ears), the ends follow it.
+    return followHairFall(face, parse) || moved;
 }
 
 bool placeHairlineFromParse(FaceModel *face, const HeadParse &parse)

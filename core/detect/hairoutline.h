@@ -32,7 +32,8 @@ HairSilhouette hairSilhouette(const HeadParse &parse);
 // eyes wider than the search allows an outline, the background taken for hair), the outline from
 // the search stays and only its lower ends follow the hair's fall (followHairFall). Points the user
 // placed stay; where the crown runs beyond the photo's top edge, so do the search's points
-// above it. True when a point moved.
+// above it; where the parse's fall (HeadParse::fallEnds) ends lower than the silhouette, the
+// lower ends follow it (followHairFall). True when a point moved.
 bool outlineHairFromParse(FaceModel *face, const HeadParse &parse);
 
 // The hairline from the parse: 11.1 where the forehead's skin ends up the midline (a fringe ends
