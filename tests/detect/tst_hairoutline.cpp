@@ -260,6 +260,34 @@ private Q_SLOTS:
                                .arg(chin)));
     }
 
+    // A beard of the hair's colour along the jaw and dark clothes under it do not make short
+    // hair fall: the outline's ends stay above the jaw's corners.
+    void beardIsNotAFall()
+    {
+        DrawnFaceOptions o;
+        o.beard = true;
+        o.beardColour = o.hair;
+        const FaceModel drawn = styled(Hairdo::Short);
+        QImage photo = testing::drawnFace(o, drawn);
+        {
+            QPainter p(&photo);
+            p.setPen(Qt::NoPen);
+            p.setBrush(o.hair);
+            const double below = drawn.point("2.1").y() + 0.1 * es0Of(drawn);
+            p.drawRect(QRectF(0, below, photo.width(), photo.height() - below));
+        }
+        FaceModel face = testing::drawnFaceModel();
+        const double es0 = es0Of(face);
+        outlineHairFromParse(&face, parseHead(photo, face));
+        const double jaw = std::max(face.point("2.14").y(), face.point("2.13").y());
+        for (const char *end : {"h.1", "h.19"})
+            QVERIFY2(face.point(end).y() < jaw + 0.1 * es0,
+                qPrintable(QStringLiteral("%1 at %2, jaw at %3")
+                               .arg(QLatin1StringView(end))
+                               .arg(face.point(end).y())
+                               .arg(jaw)));
+    }
+
     // A fringe: the hairline moves down to where the drawn forehead's skin ends, the temples
     // with it; on the plain head it stays where the drawn hairline is.
     void hairlineOnTheFringe_data()
