@@ -36,8 +36,7 @@ constexpr double d = kParseEyeDistance;
 // shine); beside the face the hair is looked for from kInside d inside the face's side line (hair
 // over the cheek) to kReach d outside it, and a row holds hair when at least kMinHair d of its
 // run is hair. The fall ends after kFallGap d of rows without hair (the same gap as the parse's
-// own fall, headparse.cpp). The side goes down no lower than the parse's own fall ends (HeadParse::fallEnds): below it
-// lie the neck and clothes, of the hair's colour or not, and a beard along the jaw.
+// own fall, headparse.cpp).
 constexpr double kGap = 0.12, kInside = 0.1, kReach = 0.6, kMinHair = 0.1, kFallGap = 0.25;
 // A pixel of the person within kHairDistance L*a*b* units of the crown's hair colour is hair
 // (the parse's own distance for the fall, headparse.cpp).
@@ -150,8 +149,7 @@ HairSilhouette hairSilhouette(const HeadParse &parse)
         const int outward = side == 0 ? -1 : 1;
         int misses = 0, cutRows = 0;
         double held = mid;
-        const double fallEnd = std::max(eyeY, parse.toWork.map(parse.fallEnds[side]).y());
-        for (int y = top; y < height && y <= fallEnd + 1; ++y) {
+        for (int y = top; y < height; ++y) {
             const bool head = y < browRow;
             // Above the brows the walk starts on the midline (the head touches it), below them
             // just inside the face's side line (the hair is looked for within reach of it).
