@@ -1,6 +1,7 @@
 #include "benchmark.h"
 #include "crossvalidation.h"
 #include "detect/photocolours.h"
+#include "facecache.h"
 
 #include "detect/appearance.h"
 #include "detect/detector.h"
@@ -67,30 +68,6 @@ double photoCheekL(const QImage &photo, const FaceModel &face)
                     l.push_back(lStar(photo.pixelColor(x, y)));
     }
     return bench::quantile(l, 0.5);
-}
-
-std::optional<FaceModel> detectCached(const QImage &photo, const QString &name)
-{
-    const QString cache = qEnvironmentVariable("TOONFACE_FACE_CACHE");
-    const QString path = cache.isEmpty() ? QString() : QDir(cache).filePath(name + QStringLiteral(".json"));
-    if (!path.isEmpty()) {
-        QFile f(path);
-        if (f.open(QIODevice::ReadOnly)) {
-            QString error;
-            if (auto face = faceFromJson(QJsonDocument::fromJson(f.readAll()).object(), &error))
-                return face;
-        }
-    }
-    const DetectionResult r = detectFace(photo);
-    if (r.status != DetectStatus::Ok)
-        return std::nullopt;
-    if (!path.isEmpty()) {
-        QDir().mkpath(cache);
-        QFile f(path);
-        if (f.open(QIODevice::WriteOnly))
-            f.write(QJsonDocument(faceToJson(r.face, name)).toJson(QJsonDocument::Compact));
-    }
-    return r.face;
 }
 
 void measure(Labelled *row, const QImage &photo, const FaceModel &face)
@@ -199,7 +176,7 @@ std::vector<Labelled> load(QString *error)
             *error = QStringLiteral("%1: not readable").arg(r.file);
             return {};
         }
-        if (const auto face = detectCached(photo, QFileInfo(r.file).completeBaseName())) {
+        if (const auto face = bench::detectCached(photo, QFileInfo(r.file).completeBaseName())) {
             r.detected = true;
             measure(&r, photo, *face);
         }

@@ -4,6 +4,7 @@
 #include "detect/detectionruntime.h"
 #include "detect/facescan.h"
 #include "detect/grayview.h"
+#include "detect/hairoutline.h"
 #include "detect/hairsearch.h"
 #include "detect/headparse.h"
 #include "detect/headregions.h"
@@ -328,8 +329,12 @@ bool refineFace(const QImage &image, bool withDebugImages, PlacedFace *out,
             || (g == PointGroup::Ears && out->head.earUsable[leftEar ? 0 : 1]))
             out->refined.setPoint(i, fromRegions.point(i));
     }
-    // Long hair the outline's searches stopped short of: the outline follows the parse's fall.
-    followHairFall(&out->refined, parseHead(image, out->refined));
+    // The hair outline and the hairline from the parse of the head where it sees the whole
+    // head (long hair to the shoulders, a fringe, a wide head of curls); elsewhere the search's
+    // outline stays, its lower ends following the parse's fall (hairoutline.h).
+    const HeadParse parse = parseHead(image, out->refined);
+    outlineHairFromParse(&out->refined, parse);
+    placeHairlineFromParse(&out->refined, parse);
     // The seed for tracking: the regions' thresholds and colours, the geometry of the points,
     // and the edge thresholds of the classic method's square around them (thesis 6.3).
     out->seed = out->head.seed;
