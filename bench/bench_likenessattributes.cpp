@@ -1,10 +1,10 @@
 #include "benchmark.h"
 #include "crossvalidation.h"
-#include "detect/photocolours.h"
 #include "facecache.h"
 
 #include "detect/appearance.h"
 #include "detect/detector.h"
+#include "detect/photocolours.h"
 #include "face/fapu.h"
 #include "io/facejson.h"
 #include "render/style.h"
