@@ -15,8 +15,8 @@ namespace toonface {
 // while the neutral frame (the clip's first by default) may catch them apart: every closure
 // then reads as the lower lip rising, i.e. `f`. And a speaker on video articulates within a
 // small range: over the GRID clips of shared/data the outer lips (8.9 to 8.2) part from shut
-// by 0.11-0.22 ES0 in 95 % of the frames, while the table's `a` parts them by 1.1 MNS0
-// (0.36-0.40 ES0 on those faces), so only the shapes nearest to shut (m, h, e, f) were in reach. So a clip's
+// by 0.15-0.22 ES0 in 95 % of the frames, while the table's `a` parts them by 1.1 MNS0
+// (0.37-0.46 ES0 on those faces), so only the shapes nearest to shut (m, h, e, f) were in reach. So a clip's
 // mouth is measured as a range:
 // - `closedEs0`: where the four mouth controls (8.9, 8.2, 8.4, 8.3; ES0 of the neutral face,
 //   the head's motion taken out) lie with the lips shut: the median over the clip's most closed
