@@ -31,10 +31,9 @@ namespace {
 QJsonObject benchTrack()
 {
     QJsonObject out;
-    const QString dir = bench::sharedDataDir() + QStringLiteral("/video");
-    const QStringList clips = QDir(dir).entryList({QStringLiteral("*.mpg")}, QDir::Files, QDir::Name);
-    if (bench::sharedDataDir().isEmpty() || clips.isEmpty()) {
-        out.insert(QStringLiteral("skipped"), QStringLiteral("the GRID clips of shared/data/video are absent"));
+    const QStringList clips = bench::gridClips();
+    if (clips.isEmpty()) {
+        out.insert(QStringLiteral("skipped"), QString::fromLatin1(bench::kGridClipsAbsent));
         return out;
     }
     QJsonArray rows;
@@ -43,8 +42,8 @@ QJsonObject benchTrack()
         double ms = 0, cpuMs = 0;
         double mouthSum = 0, mouthMin = 1, eyeSum = 0;
         int refBlinks = 0, found = 0, extra = 0, clipCount = 0;
-        for (const QString &name : clips) {
-            const QString path = dir + QLatin1Char('/') + name;
+        for (const QString &path : clips) {
+            const QString name = QFileInfo(path).fileName();
             TrackVideoOptions options;
             options.tracker.method = method;
             TrackResult best;

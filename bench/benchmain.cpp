@@ -132,6 +132,17 @@ QString sharedDataDir()
     return QFileInfo(dir).isDir() ? QDir(dir).absolutePath() : QString();
 }
 
+QStringList gridClips()
+{
+    if (sharedDataDir().isEmpty())
+        return {};
+    const QDir dir(sharedDataDir() + QStringLiteral("/video"));
+    QStringList paths;
+    for (const QString &name : dir.entryList({QStringLiteral("*.mpg")}, QDir::Files, QDir::Name))
+        paths << dir.filePath(name);
+    return paths;
+}
+
 } // namespace toonface::bench
 
 // Usage: toonface-bench [NAME-SUBSTRING ...]; prints one JSON object with each benchmark's

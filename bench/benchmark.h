@@ -72,6 +72,9 @@ double medianMs(const std::function<void()> &fn, int minRuns = 5, double minMs =
 
 // The research data folder (TOONFACE_DATA_DIR or ../shared/data), or empty when absent.
 QString sharedDataDir();
+// The GRID clips of shared/data/video (absolute paths, by name); empty when they are absent.
+QStringList gridClips();
+inline constexpr const char *kGridClipsAbsent = "the GRID clips of shared/data/video are absent";
 
 } // namespace toonface::bench
 

@@ -8,6 +8,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   track/facesearch.h track/facesearch.cpp
   track/tracker.h track/tracker.cpp
   track/trackvideo.h track/trackvideo.cpp
+  track/mouthrange.h track/mouthrange.cpp
   track/retarget.h track/retarget.cpp
   track/livepose.h track/livepose.cpp
   track/trackaccuracy.h track/trackaccuracy.cpp)

@@ -8,6 +8,7 @@
 
 #include <QLineF>
 
+#include <algorithm>
 #include <cmath>
 
 namespace toonface {
@@ -118,6 +119,34 @@ TrackAccuracy compareSignals(const ClipSignals &tracked, const ClipSignals &refe
         a.blinksFound += matches(r, got);
     for (const BlinkEvent &g : got)
         a.extraBlinks += !matches(g, ref);
+    return a;
+}
+
+SoundAgreement mouthSoundAgreement(const QVector<TrackedFrame> &frames, const QVector<float> &samples, int sampleRate,
+    double period, int maxLeadFrames)
+{
+    QVector<double> parting, loudness;
+    for (const TrackedFrame &f : frames) {
+        const auto &d = f.motion.displacementEs0;
+        parting.append(d[pt::idx("8.2")].y() - d[pt::idx("8.9")].y());
+        const auto from = std::clamp<qsizetype>(qsizetype(f.time * sampleRate), 0, samples.size());
+        const auto to = std::clamp<qsizetype>(qsizetype((f.time + period) * sampleRate), from, samples.size());
+        double sum = 0;
+        for (qsizetype i = from; i < to; ++i)
+            sum += double(samples[i]) * samples[i];
+        loudness.append(to > from ? std::sqrt(sum / double(to - from)) : 0.0);
+    }
+    SoundAgreement a;
+    a.correlationInSync = pearson(parting, loudness);
+    a.correlation = a.correlationInSync;
+    for (int lead = 1; lead <= maxLeadFrames && lead < parting.size() - 1; ++lead) {
+        // The mouth of frame i against the sound of frame i + lead.
+        const double r = pearson(parting.mid(0, parting.size() - lead), loudness.mid(lead));
+        if (r > a.correlation) {
+            a.correlation = r;
+            a.leadFrames = lead;
+        }
+    }
     return a;
 }
 

@@ -39,4 +39,19 @@ TrackAccuracy compareSignals(const ClipSignals &tracked, const ClipSignals &refe
 
 double pearson(const QVector<double> &a, const QVector<double> &b);
 
+// How a clip's mouth agrees with its own sound, for a speaker whose words the lip sync cannot
+// read (GRID is English): the outer lips' parting (8.2's y less 8.9's displacement, ES0) per
+// frame against the sound's loudness over that frame (RMS of `samples` in [time, time +
+// period)). Speech is loud while the mouth is open on a vowel and quiet while it shuts, and the
+// lips lead the sound they shape, so the correlation is the best Pearson over the mouth leading
+// by 0 to `maxLeadFrames` frames.
+struct SoundAgreement
+{
+    double correlation = 0; // at the best lead
+    double correlationInSync = 0; // with no lead
+    int leadFrames = 0;
+};
+SoundAgreement mouthSoundAgreement(const QVector<TrackedFrame> &frames, const QVector<float> &samples, int sampleRate,
+    double period, int maxLeadFrames = 3);
+
 } // namespace toonface

@@ -98,6 +98,9 @@ public:
     // The nearest of the nine shapes (but `n`, whose corners depend on the shape before) to
     // mouth control displacements (8.9, 8.2, 8.4, 8.3) in ES0 units, on the neutral face.
     MouthShape nearestMouthShape(const std::array<QPointF, 4> &mouthEs0) const;
+    // A shape's displacements of 8.9, 8.2, 8.4, 8.3 from `m` on the neutral face, in ES0 units
+    // (what a snapped frame's mouth controls hold). requires: hasNeutral()
+    const std::array<QPointF, 4> &mouthShapeEs0(MouthShape shape) const { return m_shapesEs0[int(shape)]; }
 
 private:
     TrackerOptions m_options;

@@ -2,6 +2,7 @@
 
 #include "i18n/coretext.h"
 #include "io/facejson.h"
+#include "track/mouthrange.h"
 #include "track/videofilesource.h"
 
 #include <QElapsedTimer>
@@ -142,7 +143,11 @@ TrackResult trackVideo(const QString &path, const TrackVideoOptions &options,
                               .arg(path, QString::number(options.neutralFrame), QString::number(seen));
         return result;
     }
-    Tracker tracker(options.tracker);
+    // A snapped mouth is snapped over the whole clip once it is tracked (track/mouthrange.h): the
+    // tracker measures it as it is.
+    TrackerOptions trackerOptions = options.tracker;
+    trackerOptions.snapMouth = false;
+    Tracker tracker(trackerOptions);
     DetectStatus status = DetectStatus::NoFace;
     if (!tracker.setNeutral(neutral->image, &error, &status)) {
         result.status = statusOf(status);
@@ -182,6 +187,10 @@ TrackResult trackVideo(const QString &path, const TrackVideoOptions &options,
     result.trackingCpuMs = processCpuMs() - cpuStart;
     if (result.status == TrackStatus::Cancelled)
         return result;
+    if (options.tracker.snapMouth) {
+        result.mouthRange = measureMouthRange(result.frames, widestMouthOpeningEs0(tracker));
+        snapClipMouth(&result.frames, tracker, *result.mouthRange);
+    }
     if (!source.error().isEmpty())
         result.warnings << VideoText::tr("%1 (tracked the %2 frames before)")
                                .arg(source.error(), QString::number(result.frames.size()));
@@ -200,6 +209,11 @@ TrackResult trackVideo(const QString &path, const TrackVideoOptions &options,
 
 QJsonObject trackToJson(const TrackResult &track)
 {
+    // To `decimals` places, so that the JSON shows them and no more (0.9526, not 0.9526000000000001).
+    auto round = [](double v, int decimals) {
+        const double scale = std::pow(10.0, decimals);
+        return std::round(v * scale) / scale;
+    };
     QJsonObject json;
     json.insert(QStringLiteral("format"), QString::fromLatin1(kTrackFormat));
     QJsonObject video;
@@ -215,6 +229,18 @@ QJsonObject trackToJson(const TrackResult &track)
     json.insert(QStringLiteral("neutral"), faceToJson(track.neutral.face, track.videoPath, &track.neutral));
     json.insert(QStringLiteral("units"), QStringLiteral("ES0"));
     json.insert(QStringLiteral("es0"), track.neutralEs0);
+    if (track.mouthRange) {
+        QJsonObject range;
+        QJsonObject closed;
+        for (int k = 0; k < 4; ++k) {
+            const QPointF d = track.mouthRange->closedEs0[k];
+            closed.insert(QString::fromLatin1(kMouthControlIds[k]), QJsonArray {round(d.x(), 5), round(d.y(), 5)});
+        }
+        range.insert(QStringLiteral("closed"), closed);
+        range.insert(QStringLiteral("wideOpening"), round(track.mouthRange->wideOpeningEs0, 5));
+        range.insert(QStringLiteral("gain"), round(track.mouthRange->gain, 4));
+        json.insert(QStringLiteral("mouthRange"), range);
+    }
 
     // Points and displacements of the points that move: the control points and the mouth's
     // derived points.
@@ -224,11 +250,6 @@ QJsonObject trackToJson(const TrackResult &track)
         if (p.control || p.group == PointGroup::Mouth)
             moving.append(i);
     }
-    // To `decimals` places, so that the JSON shows them and no more (0.9526, not 0.9526000000000001).
-    auto round = [](double v, int decimals) {
-        const double scale = std::pow(10.0, decimals);
-        return std::round(v * scale) / scale;
-    };
     QJsonArray frames;
     for (const TrackedFrame &f : track.frames) {
         QJsonObject o;

@@ -35,6 +35,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPointer>
 #include <QRegularExpression>
 #include <QScreen>
 #include <QSignalSpy>
@@ -49,6 +50,7 @@
 #include <QUndoStack>
 #include <QUrl>
 #include <QWidgetAction>
+#include <QWindow>
 #include <QXmlStreamReader>
 
 #include <csignal>

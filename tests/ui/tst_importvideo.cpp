@@ -126,6 +126,32 @@ private Q_SLOTS:
         QCOMPARE(doc.animation(), busyAnimation()); // looking changes nothing
     }
 
+    // At its smallest (as it opens on a laptop's screen) every row has its own place: the
+    // neutral frame's slider was drawn over the bottom of the picture, the dialog narrower than
+    // its text was laid out for.
+    void rowsDoNotOverlapAtTheSmallestSize()
+    {
+        Document doc;
+        ImportVideoDialog dialog(&doc, 0.0);
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        QVERIFY(dialog.openClip(m_grey));
+        dialog.resize(dialog.minimumSize());
+        QTRY_COMPARE(dialog.size(), dialog.minimumSize());
+        QVERIFY2(dialog.width() >= 600, qPrintable(QString::number(dialog.width())));
+        const auto *view = dialog.findChild<QWidget *>(QStringLiteral("neutralView"));
+        const auto *slider = child<QSlider>(dialog, "neutralSlider");
+        const auto *method = dialog.findChild<QWidget *>(QStringLiteral("method"));
+        const auto *clip = dialog.findChild<QWidget *>(QStringLiteral("clip"));
+        QVERIFY(view && method && clip);
+        auto box = [&](const QWidget *w) { return QRect(w->mapTo(&dialog, QPoint(0, 0)), w->size()); };
+        QVERIFY(box(clip).bottom() < box(view).top());
+        QVERIFY2(box(view).bottom() < box(slider).top(),
+            qPrintable(QStringLiteral("picture to %1, slider from %2").arg(box(view).bottom()).arg(box(slider).top())));
+        QVERIFY(box(slider).bottom() < box(method).top());
+        QVERIFY(view->height() >= view->minimumHeight());
+    }
+
     void importsTheMotionAsOneUndoStep()
     {
         if (m_talking.isEmpty())

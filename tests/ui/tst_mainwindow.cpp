@@ -120,6 +120,46 @@ private Q_SLOTS:
         window->close();
     }
 
+    // Live Mode is a top-level window of its own: not the main window's child (which the
+    // window manager keeps above the main window), never keeping the editor running alone,
+    // closed with the main window, and opened again where it was last closed.
+    void liveModeIsAWindowOfItsOwn()
+    {
+        makeWindow();
+        action("actionLiveMode")->trigger();
+        QPointer<LiveWindow> live = m_window->studio()->liveWindow();
+        QVERIFY(live && live->isVisible());
+        QVERIFY(!live->parentWidget());
+        QVERIFY(live->isWindow());
+        QVERIFY(!live->testAttribute(Qt::WA_QuitOnClose));
+        QVERIFY(live->windowHandle() && !live->windowHandle()->transientParent());
+        // Moved by the user (away from where it first opened), then closed: remembered.
+        const QRect available = m_window->screen()->availableGeometry();
+        const QRect placed = live->geometry();
+        live->move(available.topLeft() + QPoint(37, 41));
+        QTRY_COMPARE(live->pos(), available.topLeft() + QPoint(37, 41));
+        const QRect chosen = live->geometry();
+        QVERIFY(chosen != placed);
+        live->close();
+        QVERIFY(!Settings().liveWindowGeometry().isEmpty());
+
+        // A new session of the editor opens it there.
+        tearDown();
+        QVERIFY(!live); // deleted with the studio, not left behind as a window of its own
+        makeWindow();
+        action("actionLiveMode")->trigger();
+        live = m_window->studio()->liveWindow();
+        QVERIFY(live && live->isVisible());
+        QTRY_COMPARE(live->geometry(), chosen);
+
+        // Closing the main window closes it too (a recording would be committed first).
+        QSignalSpy closed(live.data(), &LiveWindow::closed);
+        m_window->document()->undoStack()->setClean();
+        QVERIFY(m_window->close());
+        QCOMPARE(closed.size(), 1);
+        QVERIFY(!live->isVisible());
+    }
+
     // The animation studio is wired in: its menus, the timeline dock, the transport, and the
     // preview following the studio's playhead.
     void studioIsWiredIn()

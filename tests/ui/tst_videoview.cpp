@@ -17,6 +17,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QSignalSpy>
+#include <QTabBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -34,6 +35,18 @@ void setClip(Document &doc, std::optional<VideoClip> clip)
     Animation a = doc.animation();
     a.timeline.setVideo(std::move(clip));
     doc.changeAnimation(a, QStringLiteral("clip"));
+}
+
+// The title of the front tab of the window's tab group holding the Video dock (empty: none).
+QString frontTab(const QMainWindow &window)
+{
+    for (const QTabBar *bar : window.findChildren<QTabBar *>()) {
+        for (int i = 0; i < bar->count(); ++i) {
+            if (bar->tabText(i) == QStringLiteral("Video"))
+                return bar->tabText(bar->currentIndex());
+        }
+    }
+    return {};
 }
 
 // The time in the middle of clip frame `index`.
@@ -252,6 +265,45 @@ private Q_SLOTS:
         // It follows the studio's playhead.
         studio.playhead()->setTime(timeOf(6) - kOffset);
         QVERIFY(waitShown(*dock->view(), 6));
+        window.setCentralWidget(nullptr);
+        preview.setParent(nullptr);
+    }
+
+    // A project with a clip opened while the Appearance tab is in front (as the window's saved
+    // state has it): the Video tab comes to the front, else nothing says the project has a clip.
+    void reopenedProjectShowsTheVideoTab()
+    {
+        Document doc;
+        fixture::fill(doc, m_dir.filePath(QStringLiteral("photo.png")));
+        setClip(doc, VideoClip {m_grey, 0.0, kFrames / kFps, kFps});
+        const QString file = m_dir.filePath(QStringLiteral("reopened.toonface"));
+        QString error;
+        QVERIFY2(doc.save(file, &error), qPrintable(error));
+        setClip(doc, std::nullopt);
+
+        QMainWindow window;
+        window.menuBar()->addMenu(QStringLiteral("&View"));
+        Studio studio(&doc, &window);
+        PreviewView preview(&doc, studio.playhead());
+        window.setCentralWidget(&preview);
+        auto *appearance = new QDockWidget(QStringLiteral("Appearance"), &window);
+        appearance->setObjectName(QStringLiteral("appearanceDock"));
+        window.addDockWidget(Qt::RightDockWidgetArea, appearance);
+        studio.install(&preview, nullptr);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        VideoDock *dock = studio.videoDock();
+        // The window's saved state brings the dock back before the project opens, its tab
+        // behind Appearance's as the user left it.
+        dock->show();
+        appearance->raise();
+        QCOMPARE(frontTab(window), QStringLiteral("Appearance"));
+
+        QVERIFY2(doc.load(file, &error), qPrintable(error));
+        QVERIFY(doc.timeline().video());
+        QVERIFY(!dock->isHidden());
+        QCOMPARE(frontTab(window), QStringLiteral("Video"));
+        QTRY_VERIFY(!dock->visibleRegion().isEmpty());
         window.setCentralWidget(nullptr);
         preview.setParent(nullptr);
     }

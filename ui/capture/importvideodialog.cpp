@@ -78,12 +78,18 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     , m_buttons(new QDialogButtonBox(this))
 {
     setWindowTitle(tr("Import Video"));
-    setMinimumWidth(640);
     auto *intro = new QLabel(tr("Tracks a clip of a person speaking: the face of the neutral frame is the rest "
                                 "pose, and the motion of every other frame lands on the timeline as key frames "
                                 "(pose, blinks, gaze, head), editable like any others."),
         this);
     intro->setWordWrap(true);
+    // The dialog's width and the text's height at it: the layout sets the dialog's minimum size
+    // from its widgets' (SetMinimumSize below), which undid a minimum width set on the dialog,
+    // and it reckoned with fewer lines of the wrapped text than it has there, so the neutral
+    // frame's slider was drawn over the picture (seen at 1280x720).
+    constexpr int introWidth = 600;
+    intro->setMinimumWidth(introWidth);
+    intro->setMinimumHeight(intro->heightForWidth(introWidth));
 
     m_clip->setObjectName(QStringLiteral("clip"));
     m_clip->setPlaceholderText(tr("A video of a face speaking"));
@@ -94,6 +100,10 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     clipRow->addWidget(browseButton);
     m_clipInfo->setObjectName(QStringLiteral("clipInfo"));
     m_clipInfo->setWordWrap(true);
+    // Its room kept before a clip is chosen (two lines: a long path's problem wraps): the
+    // layout does not grow the dialog for a wrapped label's lines, it pushes the rows below
+    // over the picture.
+    m_clipInfo->setMinimumHeight(2 * m_clipInfo->fontMetrics().lineSpacing());
 
     m_frame->setObjectName(QStringLiteral("neutralView"));
     m_frame->setMinimumSize(320, 180); // the dialog fits an 800 x 600 screen

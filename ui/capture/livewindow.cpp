@@ -437,6 +437,7 @@ void LiveWindow::closeEvent(QCloseEvent *event)
     stopSource();
     m_microphone->stop();
     QWidget::closeEvent(event);
+    Q_EMIT closed();
 }
 
 void LiveWindow::resizeEvent(QResizeEvent *event)

@@ -34,6 +34,7 @@ class LiveWindow : public QWidget
     Q_OBJECT
 
 public:
+    // With no parent it is a top-level window of its own (as the studio opens it).
     LiveWindow(Document *document, Playhead *playhead, QWidget *parent = nullptr);
     ~LiveWindow() override;
 
@@ -69,6 +70,8 @@ public:
 Q_SIGNALS:
     // For the main window's status bar.
     void message(const QString &text);
+    // The window was closed (its source stopped, a recording committed).
+    void closed();
 
 protected:
     void closeEvent(QCloseEvent *event) override;

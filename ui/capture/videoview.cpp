@@ -149,7 +149,13 @@ VideoDock::VideoDock(Document *document, Playhead *playhead, QWidget *parent)
     m_view->setObjectName(QStringLiteral("videoView"));
     setWidget(m_view);
     setVisible(document->timeline().video().has_value());
-    connect(m_view, &VideoView::hasClipChanged, this, &QDockWidget::setVisible);
+    connect(m_view, &VideoView::hasClipChanged, this, [this](bool hasClip) {
+        setVisible(hasClip);
+        // Shown again in its tab group (a project with a clip opened), its tab comes to the
+        // front: shown behind Appearance's tab, nothing would say the project has a clip.
+        if (hasClip)
+            raise();
+    });
 }
 
 } // namespace toonface

@@ -59,8 +59,8 @@ private:
     int m_shown = -1;
 };
 
-// The dock holding the VideoView ("Video" in View): shown when a clip is imported, hidden when
-// the project has none.
+// The dock holding the VideoView ("Video" in View): shown, its tab in front, when the project
+// gets a clip (imported, or a project with one opened); hidden when the project has none.
 class VideoDock : public QDockWidget
 {
     Q_OBJECT

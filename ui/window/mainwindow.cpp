@@ -609,6 +609,7 @@ QString MainWindow::dialogDirectory() const
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
+    m_studio->closeLiveMode(); // first: a take it was recording joins what is saved
     if (!maybeSave()) {
         event->ignore();
         return;

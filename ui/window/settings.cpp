@@ -16,6 +16,7 @@ namespace key {
 const QString windowGeometry = QStringLiteral("window/geometry");
 const QString windowState = QStringLiteral("window/state");
 const QString splitterState = QStringLiteral("window/splitter");
+const QString liveWindowGeometry = QStringLiteral("liveWindow/geometry");
 const QString recentFiles = QStringLiteral("files/recent");
 const QString lastDirectory = QStringLiteral("files/lastDirectory");
 const QString autosaveInterval = QStringLiteral("autosave/intervalSeconds");
@@ -51,6 +52,16 @@ QByteArray Settings::windowState() const
 void Settings::setWindowState(const QByteArray &state)
 {
     m_settings.setValue(key::windowState, state);
+}
+
+QByteArray Settings::liveWindowGeometry() const
+{
+    return m_settings.value(key::liveWindowGeometry).toByteArray();
+}
+
+void Settings::setLiveWindowGeometry(const QByteArray &geometry)
+{
+    m_settings.setValue(key::liveWindowGeometry, geometry);
 }
 
 QByteArray Settings::splitterState() const

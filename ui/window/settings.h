@@ -23,6 +23,9 @@ public:
     void setWindowState(const QByteArray &state);
     QByteArray splitterState() const;
     void setSplitterState(const QByteArray &state);
+    // Live Mode's own window (QWidget::saveGeometry()); empty before it was first closed.
+    QByteArray liveWindowGeometry() const;
+    void setLiveWindowGeometry(const QByteArray &geometry);
 
     // Most recent first, absolute paths, no duplicates, at most kMaxRecentFiles.
     QStringList recentFiles() const;

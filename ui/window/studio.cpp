@@ -23,6 +23,7 @@
 #include "timeline/timelinewidget.h"
 #include "views/previewview.h"
 #include "views/themedicon.h"
+#include "window/settings.h"
 
 #include <QAction>
 #include <QCoreApplication>
@@ -58,6 +59,11 @@ Studio::Studio(Document *document, QMainWindow *window)
         if (what & (Change::Face | Change::Photo))
             updateEnabled();
     });
+}
+
+Studio::~Studio()
+{
+    delete m_liveWindow.data();
 }
 
 void Studio::install(PreviewView *preview, QAction *beforeMenu)
@@ -303,19 +309,40 @@ void Studio::showLiveMode()
 {
     m_playback->pause();
     if (!m_liveWindow) {
-        m_liveWindow = new LiveWindow(m_document, m_playhead, m_window);
+        // A window of its own, not the main window's child (which the window manager keeps above
+        // it); it never keeps the editor running alone: closeLiveMode() closes it with the main
+        // window, and Qt quits when the main window closes.
+        m_liveWindow = new LiveWindow(m_document, m_playhead);
+        m_liveWindow->setAttribute(Qt::WA_QuitOnClose, false);
         connect(m_liveWindow, &LiveWindow::message, this, &Studio::message);
-        // Its own window beside the main one (it opened centred over it, hiding the photo).
-        if (const QScreen *screen = m_window->screen()) {
-            const QRect place
-                = LiveWindow::placement(m_window->frameGeometry(), m_liveWindow->size(), screen->availableGeometry());
-            m_liveWindow->resize(place.size());
-            m_liveWindow->move(place.topLeft());
+        connect(m_liveWindow, &LiveWindow::closed, this,
+            [this] { Settings().setLiveWindowGeometry(m_liveWindow->saveGeometry()); });
+        // Where it was last closed; the first time beside the main window (centred over it, it
+        // would hide the photo).
+        const QByteArray geometry = Settings().liveWindowGeometry();
+        if (geometry.isEmpty() || !m_liveWindow->restoreGeometry(geometry)) {
+            if (const QScreen *screen = m_window->screen()) {
+                const QRect place = LiveWindow::placement(
+                    m_window->frameGeometry(), m_liveWindow->size(), screen->availableGeometry());
+                m_liveWindow->resize(place.size());
+                m_liveWindow->move(place.topLeft());
+            }
         }
     }
     m_liveWindow->show();
     m_liveWindow->raise();
     m_liveWindow->activateWindow();
+}
+
+LiveWindow *Studio::liveWindow() const
+{
+    return m_liveWindow.data();
+}
+
+void Studio::closeLiveMode()
+{
+    if (m_liveWindow && m_liveWindow->isVisible())
+        m_liveWindow->close();
 }
 
 // --- end of camera capture and live mode ---

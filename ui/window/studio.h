@@ -3,6 +3,7 @@
 #include "anim/timeline.h"
 
 #include <QObject>
+#include <QPointer>
 
 #include <optional>
 
@@ -32,6 +33,7 @@ class Studio : public QObject
 
 public:
     Studio(Document *document, QMainWindow *window);
+    ~Studio() override;
 
     Playhead *playhead() const { return m_playhead; }
     PlaybackController *playback() const { return m_playback; }
@@ -58,8 +60,13 @@ public:
     QAction *liveModeAction() const { return m_liveMode; }
     // Edit ▸ Preferences… (the interface's language), added to the Edit menu by install().
     QAction *preferencesAction() const { return m_preferences; }
-    // The live mode window once opened (it is kept, hidden, when closed); null before.
-    LiveWindow *liveWindow() const { return m_liveWindow; }
+    // The live mode window once opened (it is kept, hidden, when closed); null before. A
+    // top-level window of its own: the window manager keeps it neither above the main window
+    // nor on its task-bar entry, and it opens where it was last closed.
+    LiveWindow *liveWindow() const;
+    // Closes Live Mode (stopping its source and committing a recording) before the main window
+    // closes, so that the question about unsaved changes covers the take.
+    void closeLiveMode();
     // --- end of camera capture and live mode ---
 
 Q_SIGNALS:
@@ -102,7 +109,7 @@ private:
     // Camera capture and live mode.
     QAction *m_captureCamera = nullptr;
     QAction *m_liveMode = nullptr;
-    LiveWindow *m_liveWindow = nullptr;
+    QPointer<LiveWindow> m_liveWindow; // top-level: deleted by ~Studio()
     QAction *m_preferences = nullptr;
 };
 
