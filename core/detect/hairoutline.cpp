@@ -58,22 +58,12 @@ constexpr double kMinForehead = 0.2;
 // ... read in the forehead's columns within kHairlineHalf d of the midline.
 constexpr double kHairlineHalf = 0.15;
 
-struct Lab
-{
-    double l = 0, a = 0, b = 0;
-};
+using Lab = LabColour;
 
 Lab labOf(const cv::Mat &lab8, int x, int y)
 {
     const cv::Vec3b v = lab8.at<cv::Vec3b>(y, x);
     return {v[0] * 100.0 / 255.0, v[1] - 128.0, v[2] - 128.0};
-}
-
-Lab labOf(const QColor &c)
-{
-    cv::Mat rgb(1, 1, CV_8UC3, cv::Scalar(c.red(), c.green(), c.blue())), lab;
-    rgbToLab8(rgb, lab);
-    return labOf(lab, 0, 0);
 }
 
 double medianOf(std::vector<double> v)
