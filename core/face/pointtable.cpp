@@ -2,6 +2,9 @@
 
 #include <QHash>
 
+#include <string_view>
+#include <unordered_map>
+
 namespace toonface {
 
 namespace {
@@ -114,7 +117,15 @@ int pointIndex(const QString &id)
 
 int pointIndex(QLatin1StringView id)
 {
-    return pointIndex(QString(id));
+    // Without a QString: the drawing's rules look points up by name hundreds of times a pose.
+    static const std::unordered_map<std::string_view, int> map = [] {
+        std::unordered_map<std::string_view, int> m;
+        for (int i = 0; i < kPointCount; ++i)
+            m.emplace(kTable[i].id, i);
+        return m;
+    }();
+    const auto it = map.find(std::string_view(id.data(), size_t(id.size())));
+    return it == map.end() ? -1 : it->second;
 }
 
 QString pointId(int index)
