@@ -51,7 +51,8 @@ private Q_SLOTS:
             QCOMPARE(pt::idx(id), i);
             QCOMPARE(pointId(i), QString::fromLatin1(id));
         }
-        for (const char *bad : {"", "8", "8.", "8.99", "x.1", "8.9 ", "H.1"})
+        for (const char *bad :
+            {"", "8", "8.", "8.99", "x.1", "8.9 ", "H.1", "08.9", "8.09", "h.01", ".9", "123.1", "8.-1"})
             QCOMPARE(pointIndex(QLatin1StringView(bad)), -1);
         // A view that is part of a longer string reads only its own characters.
         QCOMPARE(pointIndex(QLatin1StringView("8.9x", 3)), pointIndex(QStringLiteral("8.9")));
