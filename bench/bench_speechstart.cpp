@@ -26,15 +26,6 @@ QString dictionaryRoot()
     return root.isEmpty() ? QStringLiteral("/usr/share") : root;
 }
 
-QJsonObject loadAverage()
-{
-    QJsonObject o;
-    double load[3] = {0, 0, 0};
-    if (getloadavg(load, 3) > 0)
-        o.insert(QStringLiteral("loadAverage1min"), std::round(load[0] * 100) / 100);
-    return o;
-}
-
 // A recording and its script for toonface-cli lipsync: `audio` as the WAV `wav`, `text` as
 // the UTF-8 file `txt`.
 bool writeRecording(const QString &wav, const Audio &audio, const QString &txt, const QString &text, QString *error)
@@ -58,7 +49,7 @@ namespace {
 
 QJsonObject dictionaryStart()
 {
-    QJsonObject out = loadAverage();
+    QJsonObject out = bench::loadAverage();
     QTemporaryDir cache;
     QString error;
     QElapsedTimer t;
@@ -124,7 +115,7 @@ QJsonObject breakdown(const bench::ChildRun &run)
 // first run with a cold cache.
 QJsonObject lipsyncCli()
 {
-    QJsonObject out = loadAverage();
+    QJsonObject out = bench::loadAverage();
     QTemporaryDir dir;
     const QStringList env = {QStringLiteral("TOONFACE_CACHE_DIR=") + dir.filePath(QStringLiteral("cache"))};
     const QStringList timedEnv = env + QStringList {QStringLiteral("TOONFACE_TIMINGS=1")};
@@ -191,7 +182,7 @@ QJsonObject lipsyncCli()
 // to toonface-cli-full (its libraries include the light program's, loaded first).
 QJsonObject cliStart()
 {
-    QJsonObject out = loadAverage();
+    QJsonObject out = bench::loadAverage();
     QTemporaryDir dir;
     const QString sentence = QStringLiteral("今天天气很好，我们去公园散步吧。");
     const Script script = parseScript(sentence, Language::Mandarin).script;

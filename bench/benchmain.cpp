@@ -17,6 +17,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <vector>
 
 extern char **environ;
@@ -105,6 +107,15 @@ ChildRun runMeasured(const QString &program, const QStringList &args, const QStr
         r.stderrText = errors.readAll();
     }
     return r;
+}
+
+QJsonObject loadAverage()
+{
+    QJsonObject o;
+    double load[3] = {0, 0, 0};
+    if (getloadavg(load, 3) > 0)
+        o.insert(QStringLiteral("loadAverage1min"), std::round(load[0] * 100) / 100);
+    return o;
 }
 
 double medianMs(const std::function<void()> &fn, int minRuns, double minMs)

@@ -66,6 +66,10 @@ struct ChildRun
 ChildRun runMeasured(
     const QString &program, const QStringList &args, const QStringList &env = {}, bool keepStderr = false);
 
+// {"loadAverage1min": the machine's load average now}: CPU times are comparable only with it
+// (on a loaded machine a process's CPU time grows as it waits on shared caches and cores).
+QJsonObject loadAverage();
+
 // Runs `fn` repeatedly for at least `minMs` milliseconds (and at least `minRuns` times);
 // returns the median time of one run in milliseconds.
 double medianMs(const std::function<void()> &fn, int minRuns = 5, double minMs = 200);

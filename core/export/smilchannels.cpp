@@ -29,11 +29,17 @@ bool readChannel(const Channel &c, const QVector<FacePart> &parts, const QVector
     case ChannelKind::Scale: out[0] = head[3]; return true;
     default: break;
     }
-    const QByteArray text = parts[c.part].geometry.value(c.attribute).toLatin1();
-    QVector<double> numbers;
-    numbers.reserve(c.size);
+    return readChannelText(c, parts[c.part].geometry.value(c.attribute).toLatin1(), out);
+}
+
+bool readChannelText(const Channel &c, QByteArrayView text, double *out)
+{
+    // Scratch space kept per thread: the export reads hundreds of thousands of attributes.
+    thread_local QVector<double> numbers;
+    thread_local QByteArray commands;
+    numbers.clear();
     if (c.kind == ChannelKind::Path) {
-        QByteArray commands;
+        commands.clear();
         if (!parsePath(text, &numbers, &commands) || commands != c.commands)
             return false;
     } else {
@@ -52,25 +58,60 @@ bool headNumbers(const SvgFace &svg, const HeadPose &head, QVector<double> *out)
     return out->size() == 6;
 }
 
+Sampler::Sampler(const SvgFace &svg, const TimelineEvaluator &evaluator, const QVector<Channel> &channels,
+    const QVector<FacePart> &parts)
+    : m_svg(svg)
+    , m_evaluator(evaluator)
+    , m_channels(channels)
+    , m_parts(parts)
+    , m_still(svg.stillPartCount())
+    , m_attribute(channels.size(), -1)
+{
+    const std::vector<SvgFace::PartGeometry> posed = svg.posedGeometry(evaluator.evaluate(0));
+    m_posed = qsizetype(posed.size());
+    for (qsizetype i = 0; i < channels.size(); ++i) {
+        const Channel &c = channels[i];
+        const qsizetype p = c.part - m_still;
+        if (c.part < 0 || p < 0 || p >= m_posed)
+            continue;
+        const auto &attributes = posed[size_t(p)].attributes;
+        for (size_t a = 0; a < attributes.size(); ++a) {
+            if (c.attribute == QLatin1StringView(attributes[a].first))
+                m_attribute[i] = int(a);
+        }
+    }
+}
+
 bool Sampler::sample(double t, const QVector<int> &which, double *out) const
 {
     const Pose pose = m_evaluator.evaluate(t);
     bool needParts = false, needHead = false;
     for (int c : which)
         (m_channels[c].part < 0 ? needHead : needParts) = true;
-    QVector<FacePart> parts;
+    std::vector<SvgFace::PartGeometry> posed;
     if (needParts) {
-        parts = m_svg.parts(pose);
-        if (parts.size() != m_partCount)
+        posed = m_svg.posedGeometry(pose);
+        if (qsizetype(posed.size()) != m_posed || m_still + m_posed != m_parts.size())
             return false;
     }
     QVector<double> head;
     if (needHead && !headNumbers(m_svg, pose.head, &head))
         return false;
-    for (int c : which) {
-        if (!readChannel(m_channels[c], parts, head, out))
-            return false;
-        out += m_channels[c].size;
+    for (int i : which) {
+        const Channel &c = m_channels[i];
+        if (c.part < 0 || c.part < m_still) {
+            if (!readChannel(c, m_parts, head, out))
+                return false;
+        } else {
+            const int a = m_attribute[i];
+            const SvgFace::PartGeometry &part = posed[size_t(c.part - m_still)];
+            // The same attribute as at time 0, or the structure changed.
+            if (a < 0 || size_t(a) >= part.attributes.size()
+                || c.attribute != QLatin1StringView(part.attributes[size_t(a)].first)
+                || !readChannelText(c, part.attributes[size_t(a)].second, out))
+                return false;
+        }
+        out += c.size;
     }
     return true;
 }

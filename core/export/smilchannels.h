@@ -39,6 +39,8 @@ struct Channel
 
 // Reads the numbers of channel `c` from one drawing into out[0 .. c.size).
 bool readChannel(const Channel &c, const QVector<FacePart> &parts, const QVector<double> &head, double *out);
+// Reads the numbers of a part channel from its attribute's text into out[0 .. c.size).
+bool readChannelText(const Channel &c, QByteArrayView text, double *out);
 
 // The transform of <g id="head">: translate(x,y) rotate(a) scale(s) translate(-cx,-cy).
 bool headNumbers(const SvgFace &svg, const HeadPose &head, QVector<double> *out);
@@ -47,13 +49,9 @@ bool headNumbers(const SvgFace &svg, const HeadPose &head, QVector<double> *out)
 class Sampler
 {
 public:
-    Sampler(
-        const SvgFace &svg, const TimelineEvaluator &evaluator, const QVector<Channel> &channels, qsizetype partCount)
-        : m_svg(svg)
-        , m_evaluator(evaluator)
-        , m_channels(channels)
-        , m_partCount(partCount)
-    { }
+    // `parts`: the drawing at time 0, whose structure every sample must have.
+    Sampler(const SvgFace &svg, const TimelineEvaluator &evaluator, const QVector<Channel> &channels,
+        const QVector<FacePart> &parts);
 
     // The numbers of channels `which` at time t, one after another. False when the drawing's
     // structure differs from the one at time 0.
@@ -63,7 +61,12 @@ private:
     const SvgFace &m_svg;
     const TimelineEvaluator &m_evaluator;
     const QVector<Channel> &m_channels;
-    qsizetype m_partCount;
+    const QVector<FacePart> &m_parts;
+    qsizetype m_still; // parts that never move: read from m_parts
+    qsizetype m_posed; // parts that move: read from SvgFace::posedGeometry()
+    // Per channel of a moving part, the index of its attribute in the part's posedGeometry()
+    // attributes (-1 for the head and the still parts).
+    QVector<int> m_attribute;
 };
 
 // The channels of a drawing: every numeric geometry attribute of every part, and the head.

@@ -136,7 +136,7 @@ bool smilDocument(const Drawing &d, const TimelineEvaluator &evaluator, const Ti
     const double duration = evaluator.duration();
     const Grid grid(duration);
     const QByteArray dur = seconds(duration);
-    const Sampler sampler(d.svg, evaluator, d.channels, d.parts.size());
+    const Sampler sampler(d.svg, evaluator, d.channels, d.parts);
 
     // Channels moved by the same tracks start from the same key times and share their samples.
     QVector<Tracks> groups;

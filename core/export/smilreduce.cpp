@@ -27,12 +27,19 @@ struct Keyed
         , unit(c.weight / double(kPow10[c.decimals]))
     { }
     double value(qsizetype key, int j) const { return double(keys.values[key * size + j]) * unit; }
-    // Number j of interval m at its time fraction f.
-    double at(qsizetype m, double f, int j) const
+    // The progress of interval m at its time fraction f (0 where it holds). Solving a timing
+    // with free x control points takes Newton's steps: callers compute it once per time, not
+    // once per number.
+    double progress(qsizetype m, double f) const
+    {
+        const std::optional<Timing> &timing = keys.timings[m];
+        return timing ? timing->at(f) : 0.0;
+    }
+    // Number j of interval m at progress p.
+    double at(qsizetype m, double p, int j) const
     {
         const double a = value(m, j);
-        const std::optional<Timing> &timing = keys.timings[m];
-        return timing ? a + (value(m + 1, j) - a) * timing->at(f) : a;
+        return a + (value(m + 1, j) - a) * p;
     }
 
     const ChannelKeys &keys;
@@ -75,9 +82,10 @@ double mergedError(const Keyed &k, qsizetype first, qsizetype last, const std::o
     double worst = 0;
     for (int i = 0; i < s.count; ++i) {
         const double q = timing ? timing->at(s.x[i]) : 0.0;
+        const double p = k.progress(s.interval[i], s.fraction[i]);
         for (int j = 0; j < k.size; ++j) {
             const double a = k.value(first, j);
-            const double e = std::abs(a + (k.value(last, j) - a) * q - k.at(s.interval[i], s.fraction[i], j));
+            const double e = std::abs(a + (k.value(last, j) - a) * q - k.at(s.interval[i], p, j));
             worst = std::max(worst, e);
             if (worst > limit)
                 return worst;
@@ -191,9 +199,10 @@ bool intervalTiming(const Keyed &k, qsizetype first, qsizetype last, double tole
         std::array<double, kMaxSamples> p;
         for (int i = 0; i < s.count; ++i) {
             double dot = 0;
+            const double progress = k.progress(s.interval[i], s.fraction[i]);
             for (int j = 0; j < k.size; ++j) {
                 const double a = k.value(first, j);
-                dot += (k.at(s.interval[i], s.fraction[i], j) - a) * (k.value(last, j) - a);
+                dot += (k.at(s.interval[i], progress, j) - a) * (k.value(last, j) - a);
             }
             p[i] = dot / dd;
         }
@@ -256,7 +265,7 @@ void keyedValue(const Channel &channel, const ChannelKeys &keys, double n, doubl
             continue;
         }
         const double f = (n - double(keys.times[m])) / double(keys.times[m + 1] - keys.times[m]);
-        out[j] = k.at(m, std::clamp(f, 0.0, 1.0), j) / k.unit / scale;
+        out[j] = k.at(m, k.progress(m, std::clamp(f, 0.0, 1.0)), j) / k.unit / scale;
     }
 }
 

@@ -2,6 +2,8 @@
 
 #include <QHash>
 
+#include <string_view>
+
 namespace toonface {
 
 namespace {
@@ -112,9 +114,56 @@ int pointIndex(const QString &id)
     return indexById().value(id, -1);
 }
 
+namespace {
+
+// An id's slot in the lookup table: its group ("h" or a number below 16) and its number (below
+// 32), or -1 for an id of another form.
+int slotOf(std::string_view id)
+{
+    const size_t dot = id.find('.');
+    if (dot == std::string_view::npos || dot == 0 || dot > 2 || dot + 1 >= id.size() || id.size() - dot > 3)
+        return -1;
+    auto number = [](std::string_view digits) {
+        int n = 0;
+        for (const char c : digits) {
+            if (c < '0' || c > '9')
+                return -1;
+            n = n * 10 + (c - '0');
+        }
+        return n;
+    };
+    const int group = id.substr(0, dot) == "h" ? 0 : number(id.substr(0, dot));
+    const int n = number(id.substr(dot + 1));
+    return group < 0 || group >= 16 || n < 0 || n >= 32 ? -1 : group * 32 + n;
+}
+
+} // namespace
+
 int pointIndex(QLatin1StringView id)
 {
-    return pointIndex(QString(id));
+    // Without a QString or a hash: the drawing's rules look points up by name hundreds of
+    // times a pose, and the SMIL export draws tens of thousands of poses.
+    static const std::array<int, 16 * 32> table = [] {
+        std::array<int, 16 * 32> t;
+        t.fill(-1);
+        for (int i = 0; i < kPointCount; ++i) {
+            if (const int slot = slotOf(kTable[i].id); slot >= 0)
+                t[size_t(slot)] = i;
+        }
+        return t;
+    }();
+    const std::string_view view(id.data(), size_t(id.size()));
+    const int slot = slotOf(view);
+    const int i = slot < 0 ? -1 : table[size_t(slot)];
+    // The slot ignores leading zeros ("8.09"): only the id as written matches.
+    if (i >= 0 && view == kTable[i].id)
+        return i;
+    // Ids of another form ("4.4a") and unknown ones: by comparison with every id.
+    for (int k = 0; k < kPointCount; ++k) {
+        if (view == kTable[k].id)
+            return k;
+    }
+    return -1;
 }
 
 QString pointId(int index)

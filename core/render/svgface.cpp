@@ -67,7 +67,15 @@ struct SvgFaceGeometry
     QByteArray behind, front; // the style's visible layers, placed, that stay still
     QByteArray headBehind, headFront; // ... and those that follow the head (in its group)
     QMap<QString, ComponentStyle> components;
+    // The style keys of components not drawn (componentStyle(...).visible false), so that
+    // drawing a pose, done thousands of times by the SMIL export, looks no styles up.
+    std::vector<QByteArray> hidden;
 };
+
+bool drawn(const SvgFaceGeometry &g, const char *key)
+{
+    return std::none_of(g.hidden.cbegin(), g.hidden.cend(), [&](const QByteArray &h) { return h == key; });
+}
 
 // ---- the style's rules (caricature, cute) ----
 
@@ -453,6 +461,15 @@ SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
     g.es0 = f.es0 > 0 && std::isfinite(f.es0) ? f.es0 : 100.0;
     g.unit = g.es0 / 100.0;
     g.components = style.components;
+    {
+        const QMap<QString, ComponentStyle> defaults = Style::preset(QStringLiteral("normal")).components;
+        QStringList keys = style.components.keys() + defaults.keys();
+        keys.removeDuplicates();
+        for (const QString &key : keys) {
+            if (!componentStyle(style.components, key.toLatin1().constData()).visible)
+                g.hidden.push_back(key.toLatin1());
+        }
+    }
     g.ruleOffset = styleRuleOffsets(face, style);
     g.neutral = face.points();
     applyStyleRules(g.neutral, g, style);
@@ -514,7 +531,7 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
     Points posed = posedPoints(face, pose);
     applyStyleRules(posed, g, style);
     const Appearance &look = style.appearance;
-    if (look.hat && componentStyle(style.components, "hat").visible)
+    if (look.hat && drawn(g, "hat"))
         keepBrowsUnderBrim(posed, g.neutral, g.es0);
     if (look.glasses != GlassesShape::None)
         keepBrowsAboveGlasses(posed, g.neutral, glassesLenses(Pt {posed}, look.glasses, look.lens, g.es0), g.es0);
@@ -523,9 +540,9 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
     parts.reserve(g.staticParts.size() + 24);
     if (withStatic)
         parts = g.staticParts;
-    if (componentStyle(style.components, "eyebrows").visible)
+    if (drawn(g, "eyebrows"))
         makeEyebrows(P, style, g.es0, &parts);
-    if (componentStyle(style.components, "jaw").visible)
+    if (drawn(g, "jaw"))
         parts.push_back(makeJaw(P, g));
     if (look.beard)
         parts.push_back(makeBeard(P, g.es0));
@@ -539,7 +556,7 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
     makeEye(P, g, false, eyeCovers, &parts);
     if (look.glasses != GlassesShape::None)
         parts.push_back(makeGlasses(P, look.glasses, look.lens, g.es0));
-    std::erase_if(parts, [&](const Part &p) { return !componentStyle(style.components, p.styleKey).visible; });
+    std::erase_if(parts, [&](const Part &p) { return !drawn(g, p.styleKey); });
     return parts;
 }
 
@@ -656,6 +673,21 @@ QVector<FacePart> SvgFace::parts(const Pose &pose) const
     for (const Part &p : posed)
         out.append(facePart(p, g));
     return out;
+}
+
+std::vector<SvgFace::PartGeometry> SvgFace::posedGeometry(const Pose &pose) const
+{
+    std::vector<Part> posed = buildParts(m_geometry->g, m_face, m_style, pose, m_eyeCovers, false);
+    std::vector<PartGeometry> out;
+    out.reserve(posed.size());
+    for (Part &p : posed)
+        out.push_back({p.id, std::move(p.geometry)});
+    return out;
+}
+
+qsizetype SvgFace::stillPartCount() const
+{
+    return m_geometry->staticParts.size();
 }
 
 QRectF SvgFace::frame() const

@@ -11,6 +11,8 @@
 #include <QVector>
 
 #include <memory>
+#include <utility>
+#include <vector>
 
 namespace toonface {
 
@@ -57,6 +59,19 @@ public:
     // The drawn components in drawing order (invisible components left out). svg() writes
     // exactly these, each as <element id=... geometry... clip-path=... paint...>.
     QVector<FacePart> parts(const Pose &pose = {}) const;
+    // The geometry of the parts that move with the pose: parts(pose) from index
+    // stillPartCount() on, with only their ids and geometry attributes (names and values in the
+    // order svg() writes them; ids and names are string literals). For callers that read many
+    // poses (the SMIL export samples thousands): it skips building each part's paint and Qt
+    // strings, which cost more than the geometry itself.
+    struct PartGeometry
+    {
+        const char *id;
+        std::vector<std::pair<const char *, QByteArray>> attributes;
+    };
+    std::vector<PartGeometry> posedGeometry(const Pose &pose) const;
+    // How many parts of parts() never move: those before the posed ones.
+    qsizetype stillPartCount() const;
     QByteArray svg(const Pose &pose = {}) const;
     // The transform attribute of <g id="head">: the head motion about the face centre, always
     // of the form "translate(x,y) rotate(a) scale(s) translate(-cx,-cy)".

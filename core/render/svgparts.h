@@ -23,33 +23,35 @@ using Points = std::array<QPointF, kPointCount>;
 
 // ---- compact SVG text ----
 
-// At most two decimals, no trailing zeros, no "-0".
+// At most two decimals, no trailing zeros, no "-0". Written into a buffer and appended once:
+// a drawing of a pose appends a few hundred numbers, and the SMIL export draws thousands of poses.
 inline void appendNumber(QByteArray &out, double v)
 {
     if (!std::isfinite(v))
         v = 0;
     v = std::clamp(v, -1e12, 1e12);
     long long n = std::llround(v * 100.0);
-    if (n < 0) {
-        out += '-';
-        n = -n;
-    }
     char buf[32];
-    int len = 0;
-    long long whole = n / 100;
-    do {
-        buf[len++] = char('0' + whole % 10);
-        whole /= 10;
-    } while (whole > 0);
-    while (len > 0)
-        out += buf[--len];
+    char *end = buf + sizeof buf;
+    char *p = end;
+    const bool negative = n < 0;
+    if (negative)
+        n = -n;
     const int frac = int(n % 100);
     if (frac != 0) {
-        out += '.';
-        out += char('0' + frac / 10);
         if (frac % 10 != 0)
-            out += char('0' + frac % 10);
+            *--p = char('0' + frac % 10);
+        *--p = char('0' + frac / 10);
+        *--p = '.';
     }
+    long long whole = n / 100;
+    do {
+        *--p = char('0' + whole % 10);
+        whole /= 10;
+    } while (whole > 0);
+    if (negative)
+        *--p = '-';
+    out.append(p, end - p);
 }
 
 inline QByteArray number(double v)
@@ -70,6 +72,7 @@ inline void appendPoint(QByteArray &out, QPointF p)
 class PathData
 {
 public:
+    PathData() { m_d.reserve(160); }
     PathData &moveTo(QPointF p) { return command('M', p); }
     PathData &lineTo(QPointF p) { return command('L', p); }
     PathData &cubic(const CubicBezier &b)

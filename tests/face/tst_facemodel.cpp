@@ -41,6 +41,23 @@ class TestFaceModel : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    void pointIdsLookUpTheirIndex()
+    {
+        // Every id finds its own row, by QString and by Latin-1 view alike; other names none.
+        for (int i = 0; i < kPointCount; ++i) {
+            const char *id = pointTable()[i].id;
+            QCOMPARE(pointIndex(QLatin1StringView(id)), i);
+            QCOMPARE(pointIndex(QString::fromLatin1(id)), i);
+            QCOMPARE(pt::idx(id), i);
+            QCOMPARE(pointId(i), QString::fromLatin1(id));
+        }
+        for (const char *bad :
+            {"", "8", "8.", "8.99", "x.1", "8.9 ", "H.1", "08.9", "8.09", "h.01", ".9", "123.1", "8.-1"})
+            QCOMPARE(pointIndex(QLatin1StringView(bad)), -1);
+        // A view that is part of a longer string reads only its own characters.
+        QCOMPARE(pointIndex(QLatin1StringView("8.9x", 3)), pointIndex(QStringLiteral("8.9")));
+    }
+
     // The head's turn and tilt from its points: none for the front-facing average face; a face
     // rotated in the picture gives that roll; the nose tip moved aside along the eye line by
     // depth · tan(yaw) gives that yaw; beyond kDrawnWellDeg the cartoon is said to look twisted.

@@ -15,6 +15,7 @@
 #include <QPainterPath>
 #include <QPolygonF>
 #include <QRegularExpression>
+#include <QSet>
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QTest>
@@ -396,6 +397,60 @@ private Q_SLOTS:
                 if (it.key() == QLatin1StringView("d"))
                     QCOMPARE(commandLetters(other), commandLetters(it.value()));
                 QCOMPARE(numbers(other).size(), numbers(it.value()).size());
+            }
+        }
+    }
+
+    void posedGeometryIsThePartsThatMove_data() { partStructureIsPoseIndependent_data(); }
+
+    void posedGeometryIsThePartsThatMove()
+    {
+        // The SMIL export samples posedGeometry() instead of parts(): they must agree.
+        QFETCH(QString, style);
+        QFETCH(QString, pose);
+        const FaceModel face = testFace();
+        SvgFace svgFace(face, Style::preset(style));
+        for (bool covers : {true, false}) {
+            svgFace.setEyeCovers(covers);
+            const Pose p = namedPoses(face).value(pose);
+            const QVector<FacePart> parts = svgFace.parts(p);
+            const std::vector<SvgFace::PartGeometry> posed = svgFace.posedGeometry(p);
+            const qsizetype still = svgFace.stillPartCount();
+            QCOMPARE(still + qsizetype(posed.size()), parts.size());
+            QVERIFY(!posed.empty());
+            for (qsizetype i = 0; i < parts.size(); ++i) {
+                // The still parts first (all of the static layer), the posed ones after them.
+                if (i < still)
+                    QCOMPARE(parts[i].layer, QStringLiteral("static"));
+                if (i < still)
+                    continue;
+                const SvgFace::PartGeometry &g = posed[size_t(i - still)];
+                QCOMPARE(QString::fromLatin1(g.id), parts[i].id);
+                QCOMPARE(qsizetype(g.attributes.size()), parts[i].geometry.size());
+                for (const auto &[name, value] : g.attributes)
+                    QCOMPARE(QString::fromLatin1(value), parts[i].geometry.value(QString::fromLatin1(name)));
+            }
+        }
+    }
+
+    void hiddenComponentsLeaveEveryPose()
+    {
+        // Every component a pose draws, switched off in the style, is drawn in no pose.
+        const FaceModel face = testFace();
+        const Pose pose = mouthPose(face, MouthShapeSet(), MouthShape::A) + emotionPose(face, Emotion::Smile, 1.0);
+        QSet<QString> keys;
+        for (const FacePart &p : SvgFace(face, Style::preset(QStringLiteral("normal"))).parts(pose))
+            keys.insert(p.styleKey);
+        QVERIFY(keys.contains(QStringLiteral("jaw")) && keys.contains(QStringLiteral("eyebrows")));
+        for (const QString &key : keys) {
+            Style style = Style::preset(QStringLiteral("normal"));
+            style.components[key].visible = false;
+            const SvgFace svgFace(face, style);
+            for (const Pose &p : {Pose {}, pose}) {
+                for (const FacePart &part : svgFace.parts(p))
+                    QVERIFY2(part.styleKey != key, qPrintable(key + QLatin1Char(' ') + part.id));
+                const qsizetype still = svgFace.stillPartCount();
+                QCOMPARE(still + qsizetype(svgFace.posedGeometry(p).size()), svgFace.parts(p).size());
             }
         }
     }
