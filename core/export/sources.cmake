@@ -8,6 +8,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   export/alphasink.cpp
   export/exportbackground.h export/exportbackground.cpp
   export/exportpreset.h export/exportpreset.cpp
+  export/keptframes.h export/keptframes.cpp
   export/smilexport.h export/smilexport.cpp export/smilutil.h
   export/smilchannels.h export/smilchannels.cpp
   export/smilkeys.h export/smilkeys.cpp
