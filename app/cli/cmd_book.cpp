@@ -5,7 +5,6 @@
 
 #include <QFileInfo>
 
-#include <algorithm>
 
 namespace toonface::cli {
 
@@ -87,15 +86,9 @@ int runBook(const Command &self, const QStringList &args)
         = highlighted == QLatin1StringView("syllable") ? BookHighlight::Syllable : BookHighlight::Sentence;
     request.outputPath = parser.value(output);
 
-    int lastTenth = 0;
+    TenthsProgress report;
     const BookResult result = exportBook(
-        request,
-        [&lastTenth](double fraction, const QString &stage) {
-            const int tenth = int(fraction * 10);
-            if (tenth > lastTenth)
-                progress(Cli::tr("%1: %2 %").arg(stage).arg(tenth * 10));
-            lastTenth = std::max(lastTenth, tenth);
-        },
+        request, [&report](double fraction, const QString &stage) { report(fraction, stage); },
         interruption());
     switch (result.status) {
     case BookStatus::Done: break;

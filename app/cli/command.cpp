@@ -3,6 +3,7 @@
 #include <QSaveFile>
 #include <QTextStream>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -103,6 +104,14 @@ void progress(const QString &message)
 {
     if (isatty(fileno(stderr)) || qEnvironmentVariableIsSet("TOONFACE_PROGRESS"))
         QTextStream(stderr) << "toonface-cli: " << message << Qt::endl;
+}
+
+void TenthsProgress::operator()(double fraction, const QString &stage)
+{
+    const int tenth = int(std::clamp(fraction, 0.0, 1.0) * 10);
+    if (tenth > m_last)
+        progress(Cli::tr("%1: %2 %").arg(stage).arg(tenth * 10));
+    m_last = std::max(m_last, tenth);
 }
 
 bool parseArguments(QCommandLineParser &parser, const Command &command, const QStringList &args, bool *helped)

@@ -87,6 +87,16 @@ int fail(int code, const QString &message);
 void warn(const QString &message);
 // Prints a progress line on stderr (only when stderr is a terminal or --progress was given).
 void progress(const QString &message);
+// A long job's progress as lines "<stage>: N %", one each time its fraction done passes
+// another tenth (a job of an hour prints ten lines, not thousands).
+class TenthsProgress
+{
+public:
+    void operator()(double fraction, const QString &stage);
+
+private:
+    int m_last = 0;
+};
 
 // Parses `args` for `command` with `parser` (options already added). On failure prints the
 // error and returns false; the caller returns ExitUsage. `--help` prints help and sets *helped.

@@ -7,7 +7,7 @@
 #include "export/partfiles.h"
 #include "export/smilexport.h"
 #include "i18n/coretext.h"
-#include "media/mediareader.h"
+#include "media/soundcopy.h"
 #include "media/userfile.h"
 #include "render/svgface.h"
 
@@ -465,11 +465,17 @@ BookResult exportBook(const BookRequest &request, const BookProgressFn &progress
     if (!request.audioPath.isEmpty()) {
         if (const QString irregular = irregularFileProblem(request.audioPath); !irregular.isEmpty())
             return failed(BookStatus::BadInput, withProblem(request.audioPath, irregular));
-        report(0, ExportText::tr("reading the recording"));
-        std::optional<QVector<float>> samples = readAudio(request.audioPath, kBookSampleRate, &problem);
-        if (!samples)
-            return failed(BookStatus::BadInput, problem);
-        const double seconds = double(samples->size()) / kBookSampleRate;
+        // Re-encoded a block at a time: an hour-long recording is never held whole.
+        recordingFile = temporary.filePath(QStringLiteral("book.mp3"));
+        const SoundCopy copied = copySound(
+            request.audioPath, recordingFile, kBookSampleRate,
+            [&](double f) { report(0.1 * f, ExportText::tr("reading the recording")); }, cancel);
+        if (copied.status == SoundCopyStatus::Cancelled)
+            return cancelled();
+        if (!copied.ok())
+            return failed(copied.status == SoundCopyStatus::BadInput ? BookStatus::BadInput : BookStatus::Failed,
+                copied.error);
+        const double seconds = copied.seconds;
         const bool english = book.script.language == Language::English;
         const double fastest = english ? kFastestWordsPerSecond : kFastestSyllablesPerSecond;
         const qsizetype units = book.script.syllables.size();
@@ -485,17 +491,12 @@ BookResult exportBook(const BookRequest &request, const BookProgressFn &progress
                         .arg(units)
                         .arg(double(units) / fastest, 0, 'f', 1)
                         .arg(fastest)));
-        recordingFile
-            = encodedSound(temporary, QStringLiteral("book.mp3"), Audio {*samples, kBookSampleRate}, &problem);
-        samples.reset();
-        if (recordingFile.isEmpty())
-            return failed(BookStatus::Failed, problem);
         if (isCancelled(cancel))
             return cancelled();
-        report(0.05, ExportText::tr("aligning the recording with the text"));
+        report(0.1, ExportText::tr("aligning the recording with the text"));
         const LipsyncOutcome aligned = lipsyncRecording(
             request.audioPath, book.script, request.textPath,
-            [&](double f, const QString &stage) { report(0.05 + 0.45 * f, stage); }, cancel);
+            [&](double f, const QString &stage) { report(0.1 + 0.4 * f, stage); }, cancel);
         if (aligned.status == LipsyncStatus::Cancelled)
             return cancelled();
         if (!aligned.ok())
