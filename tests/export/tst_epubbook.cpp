@@ -6,6 +6,7 @@
 #include "export/epubtext.h"
 #include "export/epubzip.h"
 #include "face/averageface.h"
+#include "media/mediareader.h"
 #include "shareddata.h"
 #include "speech/audio.h"
 #include "speech/lipsync.h"
@@ -548,6 +549,59 @@ private Q_SLOTS:
             return;
         const QString problems = epubcheckProblems(out);
         QVERIFY2(problems.isEmpty(), qPrintable(problems));
+    }
+
+    // The recording reaches the book whole, re-encoded a block at a time with progress, and a
+    // cancel while it is read leaves nothing.
+    void recordingStreamsIntoTheBook()
+    {
+        QTemporaryDir dir;
+        const QString text = writeText(dir, QStringLiteral("story.md"), kEnglish);
+        QString spokenText;
+        for (const QString &line : kEnglish.split(QLatin1Char('\n'))) {
+            if (!line.trimmed().isEmpty())
+                spokenText += (line.startsWith(QLatin1Char('#')) ? line.mid(line.indexOf(QLatin1Char(' ')) + 1) : line)
+                    + QLatin1Char('\n');
+        }
+        const ScriptParse script = parseScript(spokenText, Language::English);
+        const TtsResult spoken = synthesize(script.script);
+        QVERIFY2(spoken.ok(), qPrintable(spoken.error));
+        const QString wav = dir.filePath(QStringLiteral("reading.wav"));
+        QString error;
+        QVERIFY2(writeAudio(wav, spoken.audio, &error), qPrintable(error));
+
+        BookRequest req = request(text, dir.filePath(QStringLiteral("r.epub")));
+        req.audioPath = wav;
+        std::atomic_bool cancel = false;
+        const BookResult stopped = exportBook(
+            req,
+            [&](double, const QString &stage) {
+                if (stage == QLatin1StringView("reading the recording"))
+                    cancel = true;
+            },
+            &cancel);
+        QCOMPARE(stopped.status, BookStatus::Cancelled);
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden),
+            (QStringList {QStringLiteral("reading.wav"), QStringLiteral("story.md")}));
+
+        QVector<double> reading;
+        const BookResult r = exportBook(req, [&](double f, const QString &stage) {
+            if (stage == QLatin1StringView("reading the recording"))
+                reading.append(f);
+        });
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        QVERIFY(!reading.isEmpty() && std::is_sorted(reading.begin(), reading.end()));
+        const QString mp3 = dir.filePath(QStringLiteral("book.mp3"));
+        QFile f(mp3);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(readBook(req.outputPath).entry(QStringLiteral("OEBPS/audio/book.mp3")));
+        f.close();
+        const std::optional<MediaInfo> info = probeMedia(mp3, &error);
+        QVERIFY2(info, qPrintable(error));
+        QCOMPARE(info->audioCodec, QStringLiteral("mp3"));
+        QCOMPARE(info->audioSampleRate, 24000);
+        QVERIFY2(std::abs(info->audioDurationS - spoken.audio.duration()) < 0.1,
+            qPrintable(QStringLiteral("%1 s of %2 s").arg(info->audioDurationS).arg(spoken.audio.duration())));
     }
 
     // Cancelled: nothing is written, not even a hidden part.
