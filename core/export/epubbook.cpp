@@ -1,6 +1,7 @@
 #include "export/epubbook.h"
 
 #include "anim/timeline.h"
+#include "export/bookvideo.h"
 #include "export/epubdocs.h"
 #include "export/epubtext.h"
 #include "export/epubzip.h"
@@ -26,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 namespace toonface {
 
@@ -219,6 +221,8 @@ public:
     QVector<epub::ManifestItem> manifest;
     QStringList spine;
     QVector<epub::NavEntry> nav;
+    // The pages' videos (BookFaceMedia::Video), or null: the face is an animated SVG.
+    PageVideoWriter *videos = nullptr;
 
 private:
     bool fail(BookStatus status, const QString &error)
@@ -334,30 +338,44 @@ bool BookWriter::writePage(int page, int first, int last, const QVector<epub::Pa
     timeline.addMouthCues(mouthCues(spoken, duration));
     timeline.generateBlinks(quint32(page) * 2654435761u, duration);
 
-    AnimationExportOptions options;
-    options.audio = ExportAudio::None;
-    options.frame = headFrame(m_request.face);
-    options.layerFiles = m_request.layerFiles;
-    options.cancel = cancel;
-    QString error;
-    const std::optional<SmilElement> face
-        = exportSmilElement(m_request.face, m_request.style, timeline, m_request.mouthShapes, options, &error);
-    if (isCancelled(cancel))
-        return fail(
-            BookStatus::Cancelled, QStringLiteral("%1: %2").arg(m_request.outputPath, QStringLiteral("cancelled")));
-    if (!face)
-        return fail(BookStatus::BadInput, error);
-
+    const QString pageName = numbered("p", page + 1, ".xhtml");
     epub::PageDocument doc;
+    QString error;
+    if (videos) {
+        ExportStatus status = ExportStatus::Failed;
+        const QString video = videos->write(timeline, beginMs, endMs, cancel, &status, &error);
+        if (status == ExportStatus::Cancelled)
+            return fail(BookStatus::Cancelled, withProblem(m_request.outputPath, QStringLiteral("cancelled")));
+        const QString href = numbered("video/p", page + 1, ".mp4");
+        if (video.isEmpty() || !m_zip.addFile(kPackageDir + href, video))
+            return fail(BookStatus::Failed, video.isEmpty() ? error : m_zip.errorString());
+        manifest.append({numbered("video-p", page + 1, ""), href, QStringLiteral("video/mp4"), {}, {}});
+        doc.faceVideoHref = QStringLiteral("../") + href;
+        doc.posterHref = QStringLiteral("../images/cover.png");
+        doc.videoWidth = PageVideoWriter::frameSize().width();
+        doc.videoHeight = PageVideoWriter::frameSize().height();
+    } else {
+        AnimationExportOptions options;
+        options.audio = ExportAudio::None;
+        options.frame = headFrame(m_request.face);
+        options.layerFiles = m_request.layerFiles;
+        options.cancel = cancel;
+        const std::optional<SmilElement> face
+            = exportSmilElement(m_request.face, m_request.style, timeline, m_request.mouthShapes, options, &error);
+        if (isCancelled(cancel))
+            return fail(BookStatus::Cancelled, withProblem(m_request.outputPath, QStringLiteral("cancelled")));
+        if (!face)
+            return fail(BookStatus::BadInput, error);
+        doc.faceSvg = face->svg;
+    }
+
     doc.language = m_result.language;
     const int chapter = m_book.sentences[first].chapter;
     doc.title = m_book.chapterTitles[chapter].isEmpty() ? m_request.title : m_book.chapterTitles[chapter];
     doc.headingLevel = m_book.sentences[first].heading ? m_book.pageHeadingLevel[page] : 0;
     doc.sentences = sentences;
-    doc.faceSvg = face->svg;
     doc.stylesheetHref = QStringLiteral("../book.css");
 
-    const QString pageName = numbered("p", page + 1, ".xhtml");
     const QString overlayName = numbered("p", page + 1, ".smil");
     const QString pageId = numbered("p", page + 1, "");
     const QString overlayId = numbered("mo", page + 1, "");
@@ -369,7 +387,7 @@ bool BookWriter::writePage(int page, int first, int last, const QVector<epub::Pa
             true))
         return fail(BookStatus::Failed, m_zip.errorString());
     manifest.append({pageId, QStringLiteral("text/") + pageName, QStringLiteral("application/xhtml+xml"),
-        QStringLiteral("svg"), overlayId});
+        videos ? QString() : QStringLiteral("svg"), overlayId});
     manifest.append({overlayId, QStringLiteral("smil/") + overlayName, QStringLiteral("application/smil+xml"), {}, {},
         endMs - beginMs});
     spine.append(pageId);
@@ -536,10 +554,18 @@ BookResult exportBook(const BookRequest &request, const BookProgressFn &progress
         zip.addFile(kPackageDir + QStringLiteral("audio/book.mp3"), recordingFile);
     if (!zip.isOpen())
         return failed(BookStatus::Failed, zip.errorString());
-    if (!recordingFile.isEmpty())
-        QFile::remove(recordingFile);
 
     BookWriter writer(meta, book, zip, result);
+    std::optional<PageVideoWriter> videos;
+    if (request.faceMedia == BookFaceMedia::Video) {
+        videos.emplace(meta, temporary.path());
+        writer.videos = &*videos;
+        // The pages' videos are cut from the recording as the book reads it.
+        if (!recordingFile.isEmpty() && !videos->openSound(recordingFile, &problem))
+            return failed(BookStatus::Failed, problem);
+    }
+    if (!recordingFile.isEmpty() && !videos)
+        QFile::remove(recordingFile);
     writer.manifest = {
         {QStringLiteral("nav"), QStringLiteral("nav.xhtml"), QStringLiteral("application/xhtml+xml"),
             QStringLiteral("nav"), {}},
@@ -620,12 +646,15 @@ BookResult exportBook(const BookRequest &request, const BookProgressFn &progress
             return failed(BookStatus::Failed, problem);
         if (!zip.addFile(kPackageDir + audioHref, file))
             return failed(BookStatus::Failed, zip.errorString());
-        QFile::remove(file);
         writer.manifest.append({numbered("audio-c", c + 1, ""), audioHref, QStringLiteral("audio/mpeg"), {}, {}});
+        // The chapter's pages' videos are cut from its sound as the book reads it.
+        if (videos && !videos->openSound(file, &problem))
+            return failed(BookStatus::Failed, problem);
         const auto pages
             = [&](double f) { report(from + (to - from) * (0.6 + 0.4 * f), ExportText::tr("drawing the pages")); };
         if (!writer.writeChapter(c, audioHref, 0, toMs(timed.duration), pages, cancel))
             return failed(result.status, result.error);
+        QFile::remove(file);
     }
 
     // The navigation and the package document, now that every page is known.

@@ -18,4 +18,5 @@ list(APPEND TOONFACE_CORE_SOURCES
   export/svgxml.h export/svgxml.cpp
   export/htmlplayer.h export/htmlplayer.cpp
   export/epubbook.h export/epubbook.cpp export/epubdocs.h export/epubdocs.cpp
-  export/epubtext.h export/epubtext.cpp export/epubzip.h export/epubzip.cpp)
+  export/epubtext.h export/epubtext.cpp export/epubzip.h export/epubzip.cpp
+  export/bookvideo.h export/bookvideo.cpp)

@@ -604,6 +604,79 @@ private Q_SLOTS:
             qPrintable(QStringLiteral("%1 s of %2 s").arg(info->audioDurationS).arg(spoken.audio.duration())));
     }
 
+    // The face as a video per page (for reading systems without media overlays): each page shows
+    // its video, which the package lists as video/mp4 and which holds the face (H.264) reading
+    // the page (AAC) for as long as the page's overlay reads it; epubcheck finds nothing to say.
+    void videoFaceBook()
+    {
+        QTemporaryDir dir;
+        BookRequest req
+            = request(writeText(dir, QStringLiteral("story.md"), kEnglish), dir.filePath(QStringLiteral("v.epub")));
+        req.faceMedia = BookFaceMedia::Video;
+        const BookResult r = exportBook(req);
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        const Book b = readBook(req.outputPath);
+        const Node opf = xml(b.entry(QStringLiteral("OEBPS/package.opf")));
+        std::map<QString, const Node *> items;
+        for (const Node *item : all(opf, QStringLiteral("item")))
+            items[item->attribute(QStringLiteral("href"))] = item;
+        const QRegularExpression videoRe(QStringLiteral("<video src=\"../(video/p\\d{5}\\.mp4)\""));
+        int pages = 0;
+        for (const Node *ref : all(opf, QStringLiteral("itemref"))) {
+            const Node *page = nullptr;
+            for (const auto &[href, item] : items) {
+                if (item->attribute(QStringLiteral("id")) == ref->attribute(QStringLiteral("idref")))
+                    page = item;
+            }
+            QVERIFY(page);
+            const QString pageHref = page->attribute(QStringLiteral("href"));
+            if (!pageHref.startsWith(QLatin1StringView("text/")))
+                continue; // the cover
+            ++pages;
+            QCOMPARE(page->attribute(QStringLiteral("properties")), QString()); // no SVG in it
+            const QByteArray pageData = b.entry(QStringLiteral("OEBPS/") + pageHref);
+            const Node pageXml = xml(pageData);
+            QCOMPARE(all(pageXml, QStringLiteral("svg")).size(), 0);
+            QCOMPARE(all(pageXml, QStringLiteral("video")).size(), 1);
+            const QRegularExpressionMatch m = videoRe.match(QString::fromUtf8(pageData));
+            QVERIFY2(m.hasMatch(), pageData.constData());
+            const QString videoHref = m.captured(1);
+            QVERIFY(items.count(videoHref));
+            QCOMPARE(items[videoHref]->attribute(QStringLiteral("media-type")), QStringLiteral("video/mp4"));
+
+            qint64 overlayMs = 0;
+            for (const auto &[href, item] : items) {
+                if (item->attribute(QStringLiteral("id")) == page->attribute(QStringLiteral("media-overlay"))) {
+                    for (const Clip &c : clipsOf(xml(b.entry(QStringLiteral("OEBPS/") + href))))
+                        overlayMs += c.end - c.begin;
+                }
+            }
+            QVERIFY(overlayMs > 0);
+            const QString video = dir.filePath(QStringLiteral("page.mp4"));
+            QFile f(video);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(b.entry(QStringLiteral("OEBPS/") + videoHref));
+            f.close();
+            QString error;
+            const std::optional<MediaInfo> info = probeMedia(video, &error);
+            QVERIFY2(info, qPrintable(error));
+            QCOMPARE(info->videoCodec, QStringLiteral("h264"));
+            QCOMPARE(QSize(info->width, info->height), QSize(320, 320));
+            QVERIFY(info->hasAudio);
+            // Within a frame (25 fps) and the AAC encoder's last frame.
+            QVERIFY2(std::abs(info->videoDurationS * 1000 - double(overlayMs)) <= 41,
+                qPrintable(QStringLiteral("%1: %2 s of video, %3 ms read").arg(videoHref).arg(info->videoDurationS).arg(overlayMs)));
+            QVERIFY2(std::abs(info->audioDurationS * 1000 - double(overlayMs)) <= 70,
+                qPrintable(QStringLiteral("%1: %2 s of sound, %3 ms read").arg(videoHref).arg(info->audioDurationS).arg(overlayMs)));
+        }
+        QCOMPARE(pages, r.pages);
+
+        if (epubcheckJar().isEmpty() || QStandardPaths::findExecutable(QStringLiteral("java")).isEmpty())
+            return;
+        const QString problems = epubcheckProblems(req.outputPath);
+        QVERIFY2(problems.isEmpty(), qPrintable(problems));
+    }
+
     // Cancelled: nothing is written, not even a hidden part.
     void cancelled()
     {
