@@ -226,7 +226,6 @@ public:
             rate = best;
         }
         m_rate = rate;
-        m_inRate = inRate;
         enc->sample_rate = rate;
         av_channel_layout_copy(&enc->ch_layout, &m_mono);
         enc->time_base = AVRational {1, rate};
@@ -361,7 +360,6 @@ private:
     av::FramePtr m_frame;
     av::PacketPtr m_packet;
     int m_rate = 0;
-    int m_inRate = 0;
     int m_bytesPerSample = 4;
     int m_frameSize = 1024;
     int64_t m_written = 0; // samples sent to the encoder
