@@ -5,7 +5,6 @@
 
 #include <QFileInfo>
 
-
 namespace toonface::cli {
 
 namespace {
@@ -96,8 +95,7 @@ int runBook(const Command &self, const QStringList &args)
 
     TenthsProgress report;
     const BookResult result = exportBook(
-        request, [&report](double fraction, const QString &stage) { report(fraction, stage); },
-        interruption());
+        request, [&report](double fraction, const QString &stage) { report(fraction, stage); }, interruption());
     switch (result.status) {
     case BookStatus::Done: break;
     case BookStatus::Cancelled:
@@ -118,9 +116,10 @@ const CommandRegistrar registrar({QStringLiteral("book"),
     QString::fromUtf8(QT_TRANSLATE_NOOP("toonface::cli::Cli",
         "Make a read-aloud EPUB 3 book of a text: each page a paragraph beside the talking face, its sentences "
         "highlighted as the recording or the built-in voice reads them.")),
-    QStringLiteral("book TEXT.txt|TEXT.md (--audio A | --say) [--face PHOTO|PROJECT] [--lang zh-Hant|zh-Hans|en] "
-                   "[--title T] [--author A] [--highlight sentence|syllable] [--face-as svg|video] [--style NAME] [--rate N] "
-                   "-o BOOK.epub"),
+    QStringLiteral(
+        "book TEXT.txt|TEXT.md (--audio A | --say) [--face PHOTO|PROJECT] [--lang zh-Hant|zh-Hans|en] "
+        "[--title T] [--author A] [--highlight sentence|syllable] [--face-as svg|video] [--style NAME] [--rate N] "
+        "-o BOOK.epub"),
     runBook, true});
 
 } // namespace

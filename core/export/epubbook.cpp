@@ -491,8 +491,8 @@ BookResult exportBook(const BookRequest &request, const BookProgressFn &progress
         if (copied.status == SoundCopyStatus::Cancelled)
             return cancelled();
         if (!copied.ok())
-            return failed(copied.status == SoundCopyStatus::BadInput ? BookStatus::BadInput : BookStatus::Failed,
-                copied.error);
+            return failed(
+                copied.status == SoundCopyStatus::BadInput ? BookStatus::BadInput : BookStatus::Failed, copied.error);
         const double seconds = copied.seconds;
         const bool english = book.script.language == Language::English;
         const double fastest = english ? kFastestWordsPerSecond : kFastestSyllablesPerSecond;

@@ -106,8 +106,8 @@ using BookProgressFn = std::function<void(double fraction, const QString &stage)
 // SMIL-animated SVG inline, or a video of the page read aloud) beside the text, whose sentences
 // a Media Overlay ties to the sound (MP3: the recording re-encoded, or the voice's chapters).
 // Long texts stream: the recording is re-encoded a block at a time and each chapter is spoken,
-// drawn and written into the archive before the next one. The book appears only when it is whole: it is written beside the target under a hidden
-// name and renamed at the end; a failed or cancelled export leaves nothing.
+// drawn and written into the archive before the next one. The book appears only when it is whole: it is written beside
+// the target under a hidden name and renamed at the end; a failed or cancelled export leaves nothing.
 BookResult exportBook(
     const BookRequest &request, const BookProgressFn &progress = {}, const std::atomic_bool *cancel = nullptr);
 

@@ -201,8 +201,8 @@ public:
         else if (suffix == QLatin1String("m4a") || suffix == QLatin1String("aac"))
             m_codec = avcodec_find_encoder(AV_CODEC_ID_AAC);
         else
-            return fail(error,
-                SoundText::tr("unknown sound format '.%1' (use wav, flac, mp3, ogg, opus or m4a)").arg(suffix));
+            return fail(
+                error, SoundText::tr("unknown sound format '.%1' (use wav, flac, mp3, ogg, opus or m4a)").arg(suffix));
         if (!m_codec)
             return fail(error, SoundText::tr("this FFmpeg has no encoder for .%1").arg(suffix));
         if (inRate <= 0)

@@ -11,8 +11,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include <csignal>
 #include <cmath>
+#include <csignal>
 
 namespace {
 
@@ -157,8 +157,8 @@ private Q_SLOTS:
             {QStringLiteral("book"), textPath, QStringLiteral("--audio"), wav, QStringLiteral("-o"), out},
             "reading the recording: ");
         QCOMPARE(run.code, 130);
-        QVERIFY2(run.err.contains(u"reading the recording: 10 %") && run.err.contains(u"interrupted"),
-            qPrintable(run.err));
+        QVERIFY2(
+            run.err.contains(u"reading the recording: 10 %") && run.err.contains(u"interrupted"), qPrintable(run.err));
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden),
             QStringList({QStringLiteral("long.wav"), QStringLiteral("t.txt")}));
     }

@@ -665,9 +665,15 @@ private Q_SLOTS:
             QVERIFY(info->hasAudio);
             // Within a frame (25 fps) and the AAC encoder's last frame.
             QVERIFY2(std::abs(info->videoDurationS * 1000 - double(overlayMs)) <= 41,
-                qPrintable(QStringLiteral("%1: %2 s of video, %3 ms read").arg(videoHref).arg(info->videoDurationS).arg(overlayMs)));
+                qPrintable(QStringLiteral("%1: %2 s of video, %3 ms read")
+                               .arg(videoHref)
+                               .arg(info->videoDurationS)
+                               .arg(overlayMs)));
             QVERIFY2(std::abs(info->audioDurationS * 1000 - double(overlayMs)) <= 70,
-                qPrintable(QStringLiteral("%1: %2 s of sound, %3 ms read").arg(videoHref).arg(info->audioDurationS).arg(overlayMs)));
+                qPrintable(QStringLiteral("%1: %2 s of sound, %3 ms read")
+                               .arg(videoHref)
+                               .arg(info->audioDurationS)
+                               .arg(overlayMs)));
         }
         QCOMPARE(pages, r.pages);
 

@@ -494,7 +494,8 @@ private Q_SLOTS:
         QCOMPARE(r.keptFrames->count(), frames);
         // Compressed well below the raw pictures.
         const qint64 raw = qint64(frames) * exportFrameSize(r).width() * exportFrameSize(r).height() * 4;
-        QVERIFY2(r.keptFrames->bytes() < raw / 4, qPrintable(QStringLiteral("%1 of %2").arg(r.keptFrames->bytes()).arg(raw)));
+        QVERIFY2(r.keptFrames->bytes() < raw / 4,
+            qPrintable(QStringLiteral("%1 of %2").arg(r.keptFrames->bytes()).arg(raw)));
 
         r.outputPath = QDir(dir).filePath(QStringLiteral("again/"));
         const ExportResult again = exportAnimation(r);
