@@ -187,6 +187,7 @@ private Q_SLOTS:
         QVERIFY2(checkerPixels() < 50, qPrintable(QString::number(checkerPixels())));
 
         m_window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
         QTest::keyClick(m_window.get(), Qt::Key_B, Qt::ControlModifier | Qt::ShiftModifier);
         QVERIFY(transparent->isChecked());
         QVERIFY(preview->renderer()->isTransparent());

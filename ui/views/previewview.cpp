@@ -9,6 +9,7 @@
 #include "views/themedicon.h"
 
 #include <QAction>
+#include <QKeySequence>
 #include <QMouseEvent>
 #include <QPaintEvent>
 #include <QPainter>
