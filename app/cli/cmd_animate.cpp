@@ -287,8 +287,8 @@ int runAnimate(const Command &self, const QStringList &args)
     exportRequest.background = backdrop;
     exportRequest.start = startS;
     exportRequest.duration = durationS;
-    TenthsProgress tenths;
-    const auto report = [&tenths](double fraction) { tenths(fraction, Cli::tr("exporting")); };
+    StageProgress lines;
+    const auto report = [&lines](double fraction) { lines(fraction, Cli::tr("exporting")); };
     const ExportResult result = chosenPreset ? exportWithPreset(exportRequest, *chosenPreset, report, interruption())
                                              : exportAnimation(exportRequest, report, interruption());
     if (result.status == ExportStatus::Cancelled)

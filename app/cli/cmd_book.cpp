@@ -93,7 +93,7 @@ int runBook(const Command &self, const QStringList &args)
     request.faceMedia = faceMedia == QLatin1StringView("video") ? BookFaceMedia::Video : BookFaceMedia::Svg;
     request.outputPath = parser.value(output);
 
-    TenthsProgress report;
+    StageProgress report;
     const BookResult result = exportBook(
         request, [&report](double fraction, const QString &stage) { report(fraction, stage); }, interruption());
     switch (result.status) {

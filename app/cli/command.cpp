@@ -106,12 +106,16 @@ void progress(const QString &message)
         QTextStream(stderr) << "toonface-cli: " << message << Qt::endl;
 }
 
-void TenthsProgress::operator()(double fraction, const QString &stage)
+void StageProgress::operator()(double fraction, const QString &stage)
 {
-    const int tenth = int(std::clamp(fraction, 0.0, 1.0) * 10);
-    if (tenth > m_last)
-        progress(Cli::tr("%1: %2 %").arg(stage).arg(tenth * 10));
-    m_last = std::max(m_last, tenth);
+    const int percent = int(std::clamp(fraction, 0.0, 1.0) * 100);
+    const bool newStage = stage != m_stage;
+    if (!newStage && (percent <= m_percent || (percent < 100 && m_clock.isValid() && m_clock.elapsed() < 1000)))
+        return;
+    progress(Cli::tr("%1: %2 %").arg(stage).arg(percent));
+    m_stage = stage;
+    m_percent = percent;
+    m_clock.start();
 }
 
 bool parseArguments(QCommandLineParser &parser, const Command &command, const QStringList &args, bool *helped)

@@ -2,6 +2,7 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QElapsedTimer>
 #include <QString>
 #include <QStringList>
 
@@ -87,15 +88,18 @@ int fail(int code, const QString &message);
 void warn(const QString &message);
 // Prints a progress line on stderr (only when stderr is a terminal or --progress was given).
 void progress(const QString &message);
-// A long job's progress as lines "<stage>: N %", one each time its fraction done passes
-// another tenth (a job of an hour prints ten lines, not thousands).
-class TenthsProgress
+// A long job's progress as lines "<stage>: N %" (progress()): one when a stage begins, then as
+// the whole percent rises, at most one a second (an hour-long job prints a line a second, not
+// thousands), and at 100 %.
+class StageProgress
 {
 public:
     void operator()(double fraction, const QString &stage);
 
 private:
-    int m_last = 0;
+    QString m_stage;
+    int m_percent = -1;
+    QElapsedTimer m_clock;
 };
 
 // Parses `args` for `command` with `parser` (options already added). On failure prints the

@@ -48,7 +48,7 @@ int buildSpeechTrack(const SpeechRequest &request, SpeechTrack *out)
         if (!script.ok())
             return fail(ExitBadInput, script.error);
         // A recording of an hour aligns for minutes: it shows how far it is and stops on Ctrl+C.
-        TenthsProgress report;
+        StageProgress report;
         const LipsyncOutcome outcome = lipsyncRecording(
             request.audioPath, script.script, request.scriptPath,
             [&report](double fraction, const QString &stage) { report(fraction, stage); }, interruption());
