@@ -8,6 +8,7 @@
 #include "render/style.h"
 #include "views/displaynames.h"
 #include "views/photoview.h"
+#include "views/previewview.h"
 #include "views/themedicon.h"
 #include "window/detectionstepsui.h"
 #include "window/questions.h"
