@@ -14,6 +14,8 @@
 #include <cmath>
 #include <csignal>
 
+using namespace toonface;
+
 namespace {
 
 struct Run
