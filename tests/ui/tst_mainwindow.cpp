@@ -178,11 +178,16 @@ private Q_SLOTS:
             }
             return n;
         };
-        const auto cornerAlpha = [&] { return qAlpha(preview->renderer()->current().image.pixel(0, 0)); };
+        // The picture shown now, brought up to date.
+        const auto cornerAlpha = [&] {
+            preview->image();
+            return qAlpha(preview->renderer()->current().image.pixel(0, 0));
+        };
         const auto centreAlpha = [&] {
             const QImage &image = preview->renderer()->current().image;
             return qAlpha(image.pixel(image.width() / 2, image.height() / 2));
         };
+        QVERIFY(!preview->image().isNull() && !preview->renderer()->current().image.isNull());
         QCOMPARE(cornerAlpha(), 255);
         QVERIFY2(checkerPixels() < 50, qPrintable(QString::number(checkerPixels())));
 
