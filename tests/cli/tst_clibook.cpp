@@ -65,6 +65,7 @@ Run interruptedAt(const QStringList &args, const QByteArray &stage)
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert(QStringLiteral("TOONFACE_PROGRESS"), QStringLiteral("1"));
     p.setProcessEnvironment(env);
+    p.setReadChannel(QProcess::StandardError); // what waitForReadyRead() waits for
     p.start(QStringLiteral(TOONFACE_CLI_PATH), args);
     if (!p.waitForStarted())
         return {};
