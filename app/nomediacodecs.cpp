@@ -25,10 +25,10 @@ AudioResult decodeWithFfmpeg(const QString &path, const AudioSink &, const Speec
     return r;
 }
 
-bool encodeWithFfmpeg(const QString &path, const Audio &, QString *error)
+std::unique_ptr<AudioFileWriter> openFfmpegAudioWriter(const QString &path, int, QString *error)
 {
     *error = withProblem(path, needsFullProgram());
-    return false;
+    return nullptr;
 }
 
 } // namespace toonface::detail

@@ -97,7 +97,7 @@ QString bookText(bool chinese, double minutes)
 }
 
 // Makes the book of `text`, read by the voice or from `recording`; its figures.
-QJsonObject makeBook(const QString &text, const QString &recording)
+QJsonObject makeBook(const QString &text, const QString &recording, BookFaceMedia faceMedia = BookFaceMedia::Svg)
 {
     QTemporaryDir dir;
     const QString textPath = dir.filePath(QStringLiteral("book.md"));
@@ -112,6 +112,7 @@ QJsonObject makeBook(const QString &text, const QString &recording)
     request.outputPath = dir.filePath(QStringLiteral("book.epub"));
     request.face = averageFace(QRectF(106, 130, 300, 330), QSize(512, 512));
     request.style = Style::preset(QStringLiteral("normal"));
+    request.faceMedia = faceMedia;
     std::map<QString, double> stages;
     QElapsedTimer clock;
     QString stage = QStringLiteral("start");
@@ -155,18 +156,76 @@ QJsonObject benchSayChinese()
     return makeBook(bookText(true, 10), {});
 }
 
+// The face as a video per page: every frame drawn and encoded (two minutes: its cost grows with
+// the reading time; secondsPerTenMinutes scales it).
+QJsonObject benchSayEnglishVideo()
+{
+    return makeBook(bookText(false, 2), {}, BookFaceMedia::Video);
+}
+
+// The text of `text` as the voice reads it: headings without their marks.
+QString spokenText(const QString &text)
+{
+    QString spoken;
+    for (const QString &line : text.split(QLatin1Char('\n'))) {
+        if (!line.trimmed().isEmpty())
+            spoken += (line.startsWith(QLatin1Char('#')) ? line.mid(line.indexOf(QLatin1Char(' ')) + 1) : line)
+                + QLatin1Char('\n');
+    }
+    return spoken;
+}
+
+// An hour-long --audio through toonface-cli book, against ten minutes of the same: the process's
+// peak memory and CPU time. The recording is ten minutes of the voice reading the 10-minute text
+// repeated (FLAC, written a block at a time), the text the same repeated.
+QJsonObject benchRecordedHour()
+{
+    const QString ten = bookText(false, 10);
+    const ScriptParse script = parseScript(spokenText(ten), Language::English);
+    TtsResult spoken = synthesize(script.script);
+    if (!spoken.ok())
+        return {{QStringLiteral("error"), spoken.error}};
+    QTemporaryDir dir;
+    QJsonObject out;
+    for (const int repeats : {1, 6}) {
+        const QString name = QStringLiteral("%1min").arg(repeats * 10);
+        const QString flac = dir.filePath(name + QStringLiteral(".flac"));
+        const QString textPath = dir.filePath(name + QStringLiteral(".md"));
+        QString error;
+        std::unique_ptr<AudioFileWriter> writer = openAudioFileWriter(flac, spoken.audio.sampleRate, &error);
+        for (int k = 0; writer && k < repeats; ++k) {
+            if (!writer->write(spoken.audio.samples.constData(), spoken.audio.samples.size(), &error))
+                writer.reset();
+        }
+        QFile f(textPath);
+        if (!writer || !writer->finish(&error) || !f.open(QIODevice::WriteOnly))
+            return {{QStringLiteral("error"), error.isEmpty() ? f.errorString() : error}};
+        f.write(ten.repeated(repeats).toUtf8());
+        f.close();
+        const bench::ChildRun run = bench::runMeasured(QStringLiteral(TOONFACE_CLI_PATH),
+            {QStringLiteral("book"), textPath, QStringLiteral("--audio"), flac, QStringLiteral("-o"),
+                dir.filePath(name + QStringLiteral(".epub"))},
+            {QStringLiteral("QT_QPA_PLATFORM=offscreen")}, true);
+        if (!run.ok) {
+            out.insert(name, QJsonObject {{QStringLiteral("error"), QString::fromUtf8(run.stderrText)}});
+            continue;
+        }
+        out.insert(name,
+            QJsonObject {{QStringLiteral("wallMs"), qRound(run.wallMs)}, {QStringLiteral("cpuMs"), qRound(run.cpuMs)},
+                {QStringLiteral("peakMb"), qRound(run.peakMb)},
+                {QStringLiteral("recordingMb"), std::round(double(QFileInfo(flac).size()) / 1e5) / 10.0},
+                {QStringLiteral("bookMb"),
+                    std::round(double(QFileInfo(dir.filePath(name + QStringLiteral(".epub"))).size()) / 1e5) / 10.0}});
+    }
+    return out;
+}
+
 // A recording of the text (the voice's, written to a file first) aligned to it.
 QJsonObject benchRecorded()
 {
     const QString text = bookText(false, 10);
     QTemporaryDir dir;
-    QString spokenText;
-    for (const QString &line : text.split(QLatin1Char('\n'))) {
-        if (!line.trimmed().isEmpty())
-            spokenText += (line.startsWith(QLatin1Char('#')) ? line.mid(line.indexOf(QLatin1Char(' ')) + 1) : line)
-                + QLatin1Char('\n');
-    }
-    const ScriptParse script = parseScript(spokenText, Language::English);
+    const ScriptParse script = parseScript(spokenText(text), Language::English);
     const TtsResult spoken = synthesize(script.script);
     const QString wav = dir.filePath(QStringLiteral("reading.wav"));
     QString error;
@@ -181,3 +240,6 @@ QJsonObject benchRecorded()
 TOONFACE_BENCHMARK("book.say10minEnglish", benchSayEnglish);
 TOONFACE_BENCHMARK("book.say10minChinese", benchSayChinese);
 TOONFACE_BENCHMARK("book.recorded10minEnglish", benchRecorded);
+TOONFACE_BENCHMARK("book.say2minEnglishVideo", benchSayEnglishVideo);
+// Streaming: an hour-long recording's peak memory and time against ten minutes' (issue 29).
+TOONFACE_BENCHMARK("book.recordedHour", benchRecordedHour);

@@ -1,5 +1,8 @@
 #include "benchmark.h"
 
+#include "export/animationexport.h"
+#include "export/exportpreset.h"
+#include "face/averageface.h"
 #include "media/mediareader.h"
 
 #include <QDir>
@@ -9,6 +12,8 @@
 #include <QTemporaryDir>
 
 #include <cmath>
+
+#include <sys/resource.h>
 
 using namespace toonface;
 
@@ -93,6 +98,56 @@ QJsonObject benchStickers()
     return r;
 }
 
+double cpuMs()
+{
+    rusage u {};
+    getrusage(RUSAGE_SELF, &u);
+    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1000.0
+        + double(u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1000.0;
+}
+
+// A sticker over its size limit: the preset's tries at lower quality encode the frames its first
+// try drew. A 3-second 512-pixel talking face (the average face, mouth shapes changing every
+// 0.15 s, blinks, a head shake) whose limit is 40 % of its first try's size: the CPU time of one
+// try (drawing and encoding) against the whole preset export, its tries and the frames drawn.
+QJsonObject benchStickerRetries()
+{
+    ExportRequest r;
+    r.face = averageFace(QRectF(106, 130, 300, 330), QSize(512, 512));
+    r.style = Style::preset(QStringLiteral("normal"));
+    QVector<MouthCue> cues;
+    for (int i = 0; i < 20; ++i)
+        cues.append({i * 0.15, (i + 1) * 0.15, kAllMouthShapes[size_t(i) % kAllMouthShapes.size()]});
+    r.timeline.setFrameRate(30);
+    r.timeline.addMouthCues(cues);
+    r.timeline.generateBlinks(29, 3.0);
+    r.timeline.addShake(0.2, 2.6, 10.0, 1.5);
+    ExportPreset preset = *exportPresetNamed(QStringLiteral("telegram-sticker"));
+    QTemporaryDir dir;
+    ExportRequest first = withPreset(r, preset);
+    first.outputPath = dir.filePath(QStringLiteral("first.webm"));
+    first.vp9Crf = 30; // the preset's first try
+    const double before = cpuMs();
+    const ExportResult one = exportAnimation(first);
+    const double oneTry = cpuMs() - before;
+    if (!one.ok())
+        return {{QStringLiteral("error"), one.error}};
+    preset.maxBytes = QFileInfo(first.outputPath).size() * 4 / 10;
+    r.outputPath = dir.filePath(QStringLiteral("sticker.webm"));
+    const double start = cpuMs();
+    const ExportResult fitted = exportWithPreset(r, preset);
+    const double all = cpuMs() - start;
+    if (!fitted.ok())
+        return {{QStringLiteral("error"), fitted.error}};
+    return {{QStringLiteral("frames"), exportFrameCount(withPreset(r, preset))},
+        {QStringLiteral("limitKb"), std::round(double(preset.maxBytes) / 102.4) / 10.0},
+        {QStringLiteral("kb"), std::round(double(QFileInfo(r.outputPath).size()) / 102.4) / 10.0},
+        {QStringLiteral("encodings"), fitted.encodings}, {QStringLiteral("framesDrawn"), fitted.framesDrawn},
+        {QStringLiteral("cpuMsOneTry"), qRound(oneTry)}, {QStringLiteral("cpuMsPreset"), qRound(all)},
+        {QStringLiteral("cpuMsIfEveryTryDrew"), qRound(oneTry * fitted.encodings)}};
+}
+
 } // namespace
 
 TOONFACE_BENCHMARK("export.stickers", benchStickers);
+TOONFACE_BENCHMARK("export.stickerRetries", benchStickerRetries);

@@ -287,13 +287,8 @@ int runAnimate(const Command &self, const QStringList &args)
     exportRequest.background = backdrop;
     exportRequest.start = startS;
     exportRequest.duration = durationS;
-    int lastTenth = 0;
-    const auto report = [&lastTenth](double fraction) {
-        const int tenth = int(fraction * 10);
-        if (tenth > lastTenth)
-            progress(Cli::tr("exporting: %1 %").arg(tenth * 10));
-        lastTenth = std::max(lastTenth, tenth);
-    };
+    StageProgress lines;
+    const auto report = [&lines](double fraction) { lines(fraction, Cli::tr("exporting")); };
     const ExportResult result = chosenPreset ? exportWithPreset(exportRequest, *chosenPreset, report, interruption())
                                              : exportAnimation(exportRequest, report, interruption());
     if (result.status == ExportStatus::Cancelled)

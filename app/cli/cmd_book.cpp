@@ -5,8 +5,6 @@
 
 #include <QFileInfo>
 
-#include <algorithm>
-
 namespace toonface::cli {
 
 namespace {
@@ -30,13 +28,17 @@ int runBook(const Command &self, const QStringList &args)
     const QCommandLineOption highlight(QStringLiteral("highlight"),
         Cli::tr("What reading systems highlight as it is read: sentence or syllable (a character or word)."),
         QStringLiteral("sentence|syllable"), QStringLiteral("sentence"));
+    const QCommandLineOption faceAs(QStringLiteral("face-as"),
+        Cli::tr("How the face moves on the pages: svg (an animated drawing) or video (a video of each page read "
+                "aloud, for reading systems without read-aloud or SVG animation)."),
+        QStringLiteral("svg|video"), QStringLiteral("svg"));
     const QCommandLineOption style(QStringLiteral("style"),
         Cli::tr("Drawing style: %1.").arg(Style::presetNames().join(QStringLiteral(", "))), QStringLiteral("NAME"));
     const QCommandLineOption rate(QStringLiteral("rate"), Cli::tr("With --say: words per minute (80-450)."),
         QStringLiteral("N"), QStringLiteral("175"));
     const QCommandLineOption output(
         QStringList {QStringLiteral("o"), QStringLiteral("output")}, Cli::tr("The book."), QStringLiteral("BOOK.epub"));
-    parser.addOptions({audio, say, face, lang, title, author, highlight, style, rate, output});
+    parser.addOptions({audio, say, face, lang, title, author, highlight, faceAs, style, rate, output});
     parser.addPositionalArgument(QStringLiteral("TEXT"),
         Cli::tr("The text: plain UTF-8 (.txt) or Markdown (.md), whose headings make chapters."));
     bool helped = false;
@@ -56,6 +58,9 @@ int runBook(const Command &self, const QStringList &args)
     const QString highlighted = parser.value(highlight);
     if (highlighted != QLatin1StringView("sentence") && highlighted != QLatin1StringView("syllable"))
         return fail(ExitUsage, Cli::tr("--highlight takes sentence or syllable, not '%1'").arg(highlighted));
+    const QString faceMedia = parser.value(faceAs);
+    if (faceMedia != QLatin1StringView("svg") && faceMedia != QLatin1StringView("video"))
+        return fail(ExitUsage, Cli::tr("--face-as takes svg or video, not '%1'").arg(faceMedia));
     bool rateOk = false;
     const int wordsPerMinute = parser.value(rate).toInt(&rateOk);
     if (!rateOk || wordsPerMinute < 80 || wordsPerMinute > 450)
@@ -85,18 +90,12 @@ int runBook(const Command &self, const QStringList &args)
     request.layerFiles = input.layerPaths;
     request.highlight
         = highlighted == QLatin1StringView("syllable") ? BookHighlight::Syllable : BookHighlight::Sentence;
+    request.faceMedia = faceMedia == QLatin1StringView("video") ? BookFaceMedia::Video : BookFaceMedia::Svg;
     request.outputPath = parser.value(output);
 
-    int lastTenth = 0;
+    StageProgress report;
     const BookResult result = exportBook(
-        request,
-        [&lastTenth](double fraction, const QString &stage) {
-            const int tenth = int(fraction * 10);
-            if (tenth > lastTenth)
-                progress(Cli::tr("%1: %2 %").arg(stage).arg(tenth * 10));
-            lastTenth = std::max(lastTenth, tenth);
-        },
-        interruption());
+        request, [&report](double fraction, const QString &stage) { report(fraction, stage); }, interruption());
     switch (result.status) {
     case BookStatus::Done: break;
     case BookStatus::Cancelled:
@@ -117,8 +116,10 @@ const CommandRegistrar registrar({QStringLiteral("book"),
     QString::fromUtf8(QT_TRANSLATE_NOOP("toonface::cli::Cli",
         "Make a read-aloud EPUB 3 book of a text: each page a paragraph beside the talking face, its sentences "
         "highlighted as the recording or the built-in voice reads them.")),
-    QStringLiteral("book TEXT.txt|TEXT.md (--audio A | --say) [--face PHOTO|PROJECT] [--lang zh-Hant|zh-Hans|en] "
-                   "[--title T] [--author A] [--highlight sentence|syllable] [--style NAME] [--rate N] -o BOOK.epub"),
+    QStringLiteral(
+        "book TEXT.txt|TEXT.md (--audio A | --say) [--face PHOTO|PROJECT] [--lang zh-Hant|zh-Hans|en] "
+        "[--title T] [--author A] [--highlight sentence|syllable] [--face-as svg|video] [--style NAME] [--rate N] "
+        "-o BOOK.epub"),
     runBook, true});
 
 } // namespace

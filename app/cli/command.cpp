@@ -3,6 +3,7 @@
 #include <QSaveFile>
 #include <QTextStream>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -103,6 +104,18 @@ void progress(const QString &message)
 {
     if (isatty(fileno(stderr)) || qEnvironmentVariableIsSet("TOONFACE_PROGRESS"))
         QTextStream(stderr) << "toonface-cli: " << message << Qt::endl;
+}
+
+void StageProgress::operator()(double fraction, const QString &stage)
+{
+    const int percent = int(std::clamp(fraction, 0.0, 1.0) * 100);
+    const bool newStage = stage != m_stage;
+    if (!newStage && (percent <= m_percent || (percent < 100 && m_clock.isValid() && m_clock.elapsed() < 1000)))
+        return;
+    progress(Cli::tr("%1: %2 %").arg(stage).arg(percent));
+    m_stage = stage;
+    m_percent = percent;
+    m_clock.start();
 }
 
 bool parseArguments(QCommandLineParser &parser, const Command &command, const QStringList &args, bool *helped)

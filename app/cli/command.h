@@ -2,6 +2,7 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QElapsedTimer>
 #include <QString>
 #include <QStringList>
 
@@ -87,6 +88,19 @@ int fail(int code, const QString &message);
 void warn(const QString &message);
 // Prints a progress line on stderr (only when stderr is a terminal or --progress was given).
 void progress(const QString &message);
+// A long job's progress as lines "<stage>: N %" (progress()): one when a stage begins, then as
+// the whole percent rises, at most one a second (an hour-long job prints a line a second, not
+// thousands), and at 100 %.
+class StageProgress
+{
+public:
+    void operator()(double fraction, const QString &stage);
+
+private:
+    QString m_stage;
+    int m_percent = -1;
+    QElapsedTimer m_clock;
+};
 
 // Parses `args` for `command` with `parser` (options already added). On failure prints the
 // error and returns false; the caller returns ExitUsage. `--help` prints help and sets *helped.

@@ -47,7 +47,13 @@ int buildSpeechTrack(const SpeechRequest &request, SpeechTrack *out)
         const ScriptParse script = readScriptFile(request.scriptPath, *language, &out->script);
         if (!script.ok())
             return fail(ExitBadInput, script.error);
-        const LipsyncOutcome outcome = lipsyncRecording(request.audioPath, script.script, request.scriptPath);
+        // A recording of an hour aligns for minutes: it shows how far it is and stops on Ctrl+C.
+        StageProgress report;
+        const LipsyncOutcome outcome = lipsyncRecording(
+            request.audioPath, script.script, request.scriptPath,
+            [&report](double fraction, const QString &stage) { report(fraction, stage); }, interruption());
+        if (outcome.status == LipsyncStatus::Cancelled)
+            return fail(ExitInterrupted, Cli::tr("%1: interrupted; nothing was written").arg(request.audioPath));
         if (!outcome.ok())
             return fail(outcome.status == LipsyncStatus::CannotAlign ? ExitCannotAlign : ExitBadInput, outcome.error);
         result = outcome.result;

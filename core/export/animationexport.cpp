@@ -2,6 +2,7 @@
 
 #include "export/framerenderer.h"
 #include "export/htmlplayer.h"
+#include "export/keptframes.h"
 #include "export/partfiles.h"
 #include "export/smilexport.h"
 #include "export/videoencoder.h"
@@ -362,8 +363,28 @@ ExportResult exportFrames(const ExportRequest &request, const SvgFace &face, con
     frameOptions.count = count;
     frameOptions.cancel = cancel;
     frameOptions.progress = [&](int delivered, int total) { progress(total > 0 ? double(delivered) / total : 1.0); };
-    const bool rendered = renderFrames(
-        renderer, [&](int, const QImage &image) { return writer.addFrame(image, &error); }, frameOptions);
+    // The frames come from those an earlier try drew, or are drawn (and kept for the next try).
+    KeptFrames *kept = request.keptFrames.get();
+    int drawn = 0;
+    bool rendered = true;
+    if (kept && kept->holds(size, first, count)) {
+        for (int i = 0; i < count && rendered; ++i) {
+            rendered = !isCancelled(cancel) && writer.addFrame(kept->frame(i), &error);
+            progress(double(i + 1) / count);
+        }
+    } else {
+        if (kept)
+            kept->restart(size, first, count);
+        rendered = renderFrames(
+            renderer,
+            [&](int, const QImage &image) {
+                ++drawn;
+                if (kept)
+                    kept->add(image);
+                return writer.addFrame(image, &error);
+            },
+            frameOptions);
+    }
     if (isCancelled(cancel)) {
         writer.cancel();
         return result(ExportStatus::Cancelled, out, QStringLiteral("cancelled"));
@@ -381,7 +402,7 @@ ExportResult exportFrames(const ExportRequest &request, const SvgFace &face, con
             return result(ExportStatus::Failed, out, problem);
     }
     progress.finish();
-    return {ExportStatus::Done, {}};
+    return {ExportStatus::Done, {}, drawn, 1};
 }
 
 } // namespace

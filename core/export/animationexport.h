@@ -14,10 +14,12 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <optional>
 
 namespace toonface {
 
+class KeptFrames;
 struct Project;
 
 // What an animation is exported as.
@@ -85,6 +87,10 @@ struct ExportRequest
     bool silent = false;
     // WebM: VP9's constant quality, 0 (best) .. 63; -1: the encoder's default for stickers.
     int vp9Crf = -1;
+    // Raster formats: when set, the frames are taken from it if it holds this export's frames
+    // (their size, first frame and count), else drawn and kept in it for the next export of
+    // the same request at another quality (keptframes.h).
+    std::shared_ptr<KeptFrames> keptFrames;
 
     FaceModel face;
     Style style;
@@ -125,6 +131,10 @@ struct ExportResult
     // Names the file and the problem: "<output>: cancelled", "<layer.svg>: ...", "<out.mp4>:
     // cannot write: ...".
     QString error;
+    // Raster formats: the frames drawn, and the times they were encoded (a preset's size limit
+    // encodes the frames drawn once again at lower qualities).
+    int framesDrawn = 0;
+    int encodings = 0;
     bool ok() const { return status == ExportStatus::Done; }
 };
 

@@ -1,13 +1,14 @@
 #include "export/epubbook.h"
 
 #include "anim/timeline.h"
+#include "export/bookvideo.h"
 #include "export/epubdocs.h"
 #include "export/epubtext.h"
 #include "export/epubzip.h"
 #include "export/partfiles.h"
 #include "export/smilexport.h"
 #include "i18n/coretext.h"
-#include "media/mediareader.h"
+#include "media/soundcopy.h"
 #include "media/userfile.h"
 #include "render/svgface.h"
 
@@ -26,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 namespace toonface {
 
@@ -219,6 +221,8 @@ public:
     QVector<epub::ManifestItem> manifest;
     QStringList spine;
     QVector<epub::NavEntry> nav;
+    // The pages' videos (BookFaceMedia::Video), or null: the face is an animated SVG.
+    PageVideoWriter *videos = nullptr;
 
 private:
     bool fail(BookStatus status, const QString &error)
@@ -334,30 +338,44 @@ bool BookWriter::writePage(int page, int first, int last, const QVector<epub::Pa
     timeline.addMouthCues(mouthCues(spoken, duration));
     timeline.generateBlinks(quint32(page) * 2654435761u, duration);
 
-    AnimationExportOptions options;
-    options.audio = ExportAudio::None;
-    options.frame = headFrame(m_request.face);
-    options.layerFiles = m_request.layerFiles;
-    options.cancel = cancel;
-    QString error;
-    const std::optional<SmilElement> face
-        = exportSmilElement(m_request.face, m_request.style, timeline, m_request.mouthShapes, options, &error);
-    if (isCancelled(cancel))
-        return fail(
-            BookStatus::Cancelled, QStringLiteral("%1: %2").arg(m_request.outputPath, QStringLiteral("cancelled")));
-    if (!face)
-        return fail(BookStatus::BadInput, error);
-
+    const QString pageName = numbered("p", page + 1, ".xhtml");
     epub::PageDocument doc;
+    QString error;
+    if (videos) {
+        ExportStatus status = ExportStatus::Failed;
+        const QString video = videos->write(timeline, beginMs, endMs, cancel, &status, &error);
+        if (status == ExportStatus::Cancelled)
+            return fail(BookStatus::Cancelled, withProblem(m_request.outputPath, QStringLiteral("cancelled")));
+        const QString href = numbered("video/p", page + 1, ".mp4");
+        if (video.isEmpty() || !m_zip.addFile(kPackageDir + href, video))
+            return fail(BookStatus::Failed, video.isEmpty() ? error : m_zip.errorString());
+        manifest.append({numbered("video-p", page + 1, ""), href, QStringLiteral("video/mp4"), {}, {}});
+        doc.faceVideoHref = QStringLiteral("../") + href;
+        doc.posterHref = QStringLiteral("../images/cover.png");
+        doc.videoWidth = PageVideoWriter::frameSize().width();
+        doc.videoHeight = PageVideoWriter::frameSize().height();
+    } else {
+        AnimationExportOptions options;
+        options.audio = ExportAudio::None;
+        options.frame = headFrame(m_request.face);
+        options.layerFiles = m_request.layerFiles;
+        options.cancel = cancel;
+        const std::optional<SmilElement> face
+            = exportSmilElement(m_request.face, m_request.style, timeline, m_request.mouthShapes, options, &error);
+        if (isCancelled(cancel))
+            return fail(BookStatus::Cancelled, withProblem(m_request.outputPath, QStringLiteral("cancelled")));
+        if (!face)
+            return fail(BookStatus::BadInput, error);
+        doc.faceSvg = face->svg;
+    }
+
     doc.language = m_result.language;
     const int chapter = m_book.sentences[first].chapter;
     doc.title = m_book.chapterTitles[chapter].isEmpty() ? m_request.title : m_book.chapterTitles[chapter];
     doc.headingLevel = m_book.sentences[first].heading ? m_book.pageHeadingLevel[page] : 0;
     doc.sentences = sentences;
-    doc.faceSvg = face->svg;
     doc.stylesheetHref = QStringLiteral("../book.css");
 
-    const QString pageName = numbered("p", page + 1, ".xhtml");
     const QString overlayName = numbered("p", page + 1, ".smil");
     const QString pageId = numbered("p", page + 1, "");
     const QString overlayId = numbered("mo", page + 1, "");
@@ -369,7 +387,7 @@ bool BookWriter::writePage(int page, int first, int last, const QVector<epub::Pa
             true))
         return fail(BookStatus::Failed, m_zip.errorString());
     manifest.append({pageId, QStringLiteral("text/") + pageName, QStringLiteral("application/xhtml+xml"),
-        QStringLiteral("svg"), overlayId});
+        videos ? QString() : QStringLiteral("svg"), overlayId});
     manifest.append({overlayId, QStringLiteral("smil/") + overlayName, QStringLiteral("application/smil+xml"), {}, {},
         endMs - beginMs});
     spine.append(pageId);
@@ -465,11 +483,17 @@ BookResult exportBook(const BookRequest &request, const BookProgressFn &progress
     if (!request.audioPath.isEmpty()) {
         if (const QString irregular = irregularFileProblem(request.audioPath); !irregular.isEmpty())
             return failed(BookStatus::BadInput, withProblem(request.audioPath, irregular));
-        report(0, ExportText::tr("reading the recording"));
-        std::optional<QVector<float>> samples = readAudio(request.audioPath, kBookSampleRate, &problem);
-        if (!samples)
-            return failed(BookStatus::BadInput, problem);
-        const double seconds = double(samples->size()) / kBookSampleRate;
+        // Re-encoded a block at a time: an hour-long recording is never held whole.
+        recordingFile = temporary.filePath(QStringLiteral("book.mp3"));
+        const SoundCopy copied = copySound(
+            request.audioPath, recordingFile, kBookSampleRate,
+            [&](double f) { report(0.1 * f, ExportText::tr("reading the recording")); }, cancel);
+        if (copied.status == SoundCopyStatus::Cancelled)
+            return cancelled();
+        if (!copied.ok())
+            return failed(
+                copied.status == SoundCopyStatus::BadInput ? BookStatus::BadInput : BookStatus::Failed, copied.error);
+        const double seconds = copied.seconds;
         const bool english = book.script.language == Language::English;
         const double fastest = english ? kFastestWordsPerSecond : kFastestSyllablesPerSecond;
         const qsizetype units = book.script.syllables.size();
@@ -485,17 +509,12 @@ BookResult exportBook(const BookRequest &request, const BookProgressFn &progress
                         .arg(units)
                         .arg(double(units) / fastest, 0, 'f', 1)
                         .arg(fastest)));
-        recordingFile
-            = encodedSound(temporary, QStringLiteral("book.mp3"), Audio {*samples, kBookSampleRate}, &problem);
-        samples.reset();
-        if (recordingFile.isEmpty())
-            return failed(BookStatus::Failed, problem);
         if (isCancelled(cancel))
             return cancelled();
-        report(0.05, ExportText::tr("aligning the recording with the text"));
+        report(0.1, ExportText::tr("aligning the recording with the text"));
         const LipsyncOutcome aligned = lipsyncRecording(
             request.audioPath, book.script, request.textPath,
-            [&](double f, const QString &stage) { report(0.05 + 0.45 * f, stage); }, cancel);
+            [&](double f, const QString &stage) { report(0.1 + 0.4 * f, stage); }, cancel);
         if (aligned.status == LipsyncStatus::Cancelled)
             return cancelled();
         if (!aligned.ok())
@@ -535,10 +554,18 @@ BookResult exportBook(const BookRequest &request, const BookProgressFn &progress
         zip.addFile(kPackageDir + QStringLiteral("audio/book.mp3"), recordingFile);
     if (!zip.isOpen())
         return failed(BookStatus::Failed, zip.errorString());
-    if (!recordingFile.isEmpty())
-        QFile::remove(recordingFile);
 
     BookWriter writer(meta, book, zip, result);
+    std::optional<PageVideoWriter> videos;
+    if (request.faceMedia == BookFaceMedia::Video) {
+        videos.emplace(meta, temporary.path());
+        writer.videos = &*videos;
+        // The pages' videos are cut from the recording as the book reads it.
+        if (!recordingFile.isEmpty() && !videos->openSound(recordingFile, &problem))
+            return failed(BookStatus::Failed, problem);
+    }
+    if (!recordingFile.isEmpty() && !videos)
+        QFile::remove(recordingFile);
     writer.manifest = {
         {QStringLiteral("nav"), QStringLiteral("nav.xhtml"), QStringLiteral("application/xhtml+xml"),
             QStringLiteral("nav"), {}},
@@ -619,12 +646,15 @@ BookResult exportBook(const BookRequest &request, const BookProgressFn &progress
             return failed(BookStatus::Failed, problem);
         if (!zip.addFile(kPackageDir + audioHref, file))
             return failed(BookStatus::Failed, zip.errorString());
-        QFile::remove(file);
         writer.manifest.append({numbered("audio-c", c + 1, ""), audioHref, QStringLiteral("audio/mpeg"), {}, {}});
+        // The chapter's pages' videos are cut from its sound as the book reads it.
+        if (videos && !videos->openSound(file, &problem))
+            return failed(BookStatus::Failed, problem);
         const auto pages
             = [&](double f) { report(from + (to - from) * (0.6 + 0.4 * f), ExportText::tr("drawing the pages")); };
         if (!writer.writeChapter(c, audioHref, 0, toMs(timed.duration), pages, cancel))
             return failed(result.status, result.error);
+        QFile::remove(file);
     }
 
     // The navigation and the package document, now that every page is known.

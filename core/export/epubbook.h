@@ -20,6 +20,16 @@ namespace toonface {
 // character; an English word) within its sentence (a nested <seq epub:textref> per sentence).
 enum class BookHighlight { Sentence, Syllable };
 
+// How the talking face moves on the pages.
+enum class BookFaceMedia {
+    // A SMIL-animated SVG inline, timed from the page's first sentence: reading systems that
+    // animate SVG move it as the overlay reads.
+    Svg,
+    // A video (MP4: H.264 and AAC) per page of the face reading the page aloud with its sound,
+    // for reading systems without media overlays or SVG animation: the reader presses play.
+    Video,
+};
+
 // Everything a read-aloud book needs, by value (run it on any thread).
 struct BookRequest
 {
@@ -41,6 +51,7 @@ struct BookRequest
     QStringList layerFiles;
 
     BookHighlight highlight = BookHighlight::Sentence;
+    BookFaceMedia faceMedia = BookFaceMedia::Svg;
     QString outputPath; // BOOK.epub
     QDateTime modified; // dcterms:modified and the archive's times; invalid: now
 };
@@ -91,12 +102,12 @@ struct BookResult
 using BookProgressFn = std::function<void(double fraction, const QString &stage)>;
 
 // Makes the EPUB 3 book of `request`: a cover (the cartoon), a navigation document with a
-// chapter per heading, and a page per paragraph with the talking face (a SMIL-animated SVG
-// inline, timed from the page's first sentence) beside the text, whose sentences a Media
-// Overlay ties to the sound (MP3: the recording re-encoded, or the voice's chapters).
-// Long texts stream: each chapter is spoken, drawn and written into the archive before the next
-// one. The book appears only when it is whole: it is written beside the target under a hidden
-// name and renamed at the end; a failed or cancelled export leaves nothing.
+// chapter per heading, and a page per paragraph with the talking face (request.faceMedia: a
+// SMIL-animated SVG inline, or a video of the page read aloud) beside the text, whose sentences
+// a Media Overlay ties to the sound (MP3: the recording re-encoded, or the voice's chapters).
+// Long texts stream: the recording is re-encoded a block at a time and each chapter is spoken,
+// drawn and written into the archive before the next one. The book appears only when it is whole: it is written beside
+// the target under a hidden name and renamed at the end; a failed or cancelled export leaves nothing.
 BookResult exportBook(
     const BookRequest &request, const BookProgressFn &progress = {}, const std::atomic_bool *cancel = nullptr);
 

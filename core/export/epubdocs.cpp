@@ -64,7 +64,16 @@ QByteArray pageXhtml(const PageDocument &page)
 {
     QByteArray out = htmlStart(page.language, page.title, page.stylesheetHref);
     out += "<body>\n<section class=\"tf-page\">\n<div class=\"tf-face\">\n";
-    out += page.faceSvg;
+    if (page.faceVideoHref.isEmpty()) {
+        out += page.faceSvg;
+    } else {
+        // Played by the reader's press (no autoplay: a reading system with media overlays reads
+        // the page itself); the poster, the cartoon, is the fallback content.
+        out += "<video src=\"" + esc(page.faceVideoHref) + "\" controls=\"controls\" preload=\"none\" poster=\""
+            + esc(page.posterHref) + "\" width=\"" + QByteArray::number(page.videoWidth) + "\" height=\""
+            + QByteArray::number(page.videoHeight) + "\"><img src=\"" + esc(page.posterHref) + "\" alt=\""
+            + esc(page.title) + "\"/></video>";
+    }
     out += "\n</div>\n<div class=\"tf-text\">\n";
     qsizetype first = 0;
     if (page.headingLevel > 0 && !page.sentences.isEmpty()) {
@@ -138,7 +147,7 @@ QByteArray stylesheet()
     return QByteArray("body { margin: 0.5em; }\n"
                       ".tf-page { display: flex; flex-direction: row; align-items: flex-start; }\n"
                       ".tf-face { flex: 0 0 38%; max-width: 38%; margin-right: 1em; }\n"
-                      ".tf-face svg { display: block; width: 100%; height: auto; }\n"
+                      ".tf-face svg, .tf-face video, .tf-face img { display: block; width: 100%; height: auto; }\n"
                       ".tf-text { flex: 1 1 auto; font-size: 1.25em; line-height: 1.7; }\n"
                       ".tf-text h1, .tf-text h2, .tf-text h3, .tf-text h4, .tf-text h5, .tf-text h6 "
                       "{ margin-top: 0; line-height: 1.3; }\n"

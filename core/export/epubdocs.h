@@ -42,6 +42,13 @@ struct PageDocument
     int headingLevel = 0; // the first sentence is the chapter's heading when > 0
     QVector<PageSentence> sentences;
     QByteArray faceSvg; // the <svg> element of the talking face
+    // Or, when not empty, the face's video of the page reading itself aloud (relative to the
+    // page), shown with controls at its size over `posterHref` until it is played; the poster
+    // stands in for it where video does not play.
+    QString faceVideoHref;
+    QString posterHref;
+    int videoWidth = 0;
+    int videoHeight = 0;
     QString stylesheetHref; // relative to the page
 };
 

@@ -1,5 +1,6 @@
 #include "export/exportpreset.h"
 
+#include "export/keptframes.h"
 #include "i18n/coretext.h"
 
 #include <QCoreApplication>
@@ -115,14 +116,18 @@ ExportResult exportWithPreset(const ExportRequest &base, const ExportPreset &pre
         return exportAnimation(request, progress, cancel);
 
     // Each try is written under a hidden name and measured; the one that fits replaces the target.
+    // The frames are drawn once, by the first try, and kept: later tries only encode them again.
     int crf = request.vp9Crf >= 0 ? request.vp9Crf : kFirstCrf;
+    request.keptFrames = std::make_shared<KeptFrames>();
     double done = 0;
+    int framesDrawn = 0;
     for (int attempt = 0;; ++attempt) {
         const QString path = attemptPath(out, attempt);
         ExportRequest tryRequest = request;
         tryRequest.outputPath = path;
         tryRequest.vp9Crf = crf;
-        // Each try fills half of what is left of the bar.
+        // The first try (drawing and encoding) fills half the bar, each later one (encoding
+        // only) half of what is left.
         const double from = done;
         const double to = done + (1.0 - done) / 2;
         const ExportResult r = exportAnimation(
@@ -133,6 +138,7 @@ ExportResult exportWithPreset(const ExportRequest &base, const ExportPreset &pre
             },
             cancel);
         done = to;
+        framesDrawn += r.framesDrawn;
         if (!r.ok()) {
             QFile::remove(path);
             ExportResult named = r;
@@ -154,7 +160,7 @@ ExportResult exportWithPreset(const ExportRequest &base, const ExportPreset &pre
             }
             if (progress)
                 progress(1.0);
-            return {ExportStatus::Done, {}};
+            return {ExportStatus::Done, {}, framesDrawn, attempt + 1};
         }
         QFile::remove(path);
         if (crf >= kLastCrf)
@@ -163,7 +169,8 @@ ExportResult exportWithPreset(const ExportRequest &base, const ExportPreset &pre
                     ExportText::tr("at the lowest quality the file is %1 KB, the %2 preset allows %3 KB (%4 KB "
                                    "over): export a shorter stretch or a lower frame rate")
                         .arg(kilobytes(bytes), preset.name, kilobytes(preset.maxBytes),
-                            kilobytes(bytes - preset.maxBytes)))};
+                            kilobytes(bytes - preset.maxBytes))),
+                framesDrawn, attempt + 1};
         // VP9's files roughly halve every 6 steps of crf: aim just under the limit.
         const double over = std::log2(double(bytes) / double(preset.maxBytes));
         crf = std::min(kLastCrf, crf + std::max(2, int(std::ceil(6.0 * over)) + 1));

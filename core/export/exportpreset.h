@@ -45,7 +45,9 @@ QString presetProblem(const ExportRequest &request, const ExportPreset &preset);
 
 // Exports `request` under `preset` (withPreset() applied here). With a size limit, lowers the
 // quality (VP9's crf, step by step) until the file fits, and gives up with status OverLimit
-// and a message saying by how much the smallest file is over. The file appears only when it
+// and a message saying by how much the smallest file is over. The frames are drawn once: the
+// later tries encode the first one's kept frames again (the result's framesDrawn and
+// encodings say so). The file appears only when it
 // meets every limit; otherwise nothing is written (a file of the same name is kept as it was).
 // Progress and cancel as exportAnimation().
 ExportResult exportWithPreset(const ExportRequest &request, const ExportPreset &preset,

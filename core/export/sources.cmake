@@ -8,6 +8,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   export/alphasink.cpp
   export/exportbackground.h export/exportbackground.cpp
   export/exportpreset.h export/exportpreset.cpp
+  export/keptframes.h export/keptframes.cpp
   export/smilexport.h export/smilexport.cpp export/smilutil.h
   export/smilchannels.h export/smilchannels.cpp
   export/smilkeys.h export/smilkeys.cpp
@@ -17,4 +18,5 @@ list(APPEND TOONFACE_CORE_SOURCES
   export/svgxml.h export/svgxml.cpp
   export/htmlplayer.h export/htmlplayer.cpp
   export/epubbook.h export/epubbook.cpp export/epubdocs.h export/epubdocs.cpp
-  export/epubtext.h export/epubtext.cpp export/epubzip.h export/epubzip.cpp)
+  export/epubtext.h export/epubtext.cpp export/epubzip.h export/epubzip.cpp
+  export/bookvideo.h export/bookvideo.cpp)

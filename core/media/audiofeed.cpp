@@ -61,6 +61,19 @@ bool AudioFeed::open(const AudioSource &source, QString *error)
 
 bool AudioFeed::readAll(QVector<float> *out, QString *error)
 {
+    out->clear();
+    QVector<float> block;
+    while (true) {
+        if (!readBlock(&block, error))
+            return false;
+        if (block.isEmpty())
+            return true;
+        out->append(block);
+    }
+}
+
+bool AudioFeed::readBlock(QVector<float> *out, QString *error)
+{
     out->fill(0.0f, qsizetype(m_silenceBefore));
     m_silenceBefore = 0;
     while (true) {
@@ -72,11 +85,19 @@ bool AudioFeed::readAll(QVector<float> *out, QString *error)
         out->append(QVector<float>(m_buffer.begin() + qsizetype(m_buffered), m_buffer.end()));
         m_buffer.clear();
         m_buffered = 0;
-        if (m_ended)
+        if (!out->isEmpty() || m_ended)
             return true;
         if (!decodeMore(error))
             return false;
     }
+}
+
+double AudioFeed::fractionRead() const
+{
+    if (!m_input || !m_input->pb)
+        return 0;
+    const int64_t size = avio_size(m_input->pb);
+    return size > 0 ? std::clamp(double(avio_tell(m_input->pb)) / double(size), 0.0, 1.0) : 0.0;
 }
 
 bool AudioFeed::start(int rate, QString *error)

@@ -23,6 +23,14 @@ public:
     // Everything the source has left (offset applied), up to its end.
     bool readAll(QVector<float> *out, QString *error);
 
+    // Replaces *out with the next samples the source gives (offset applied; a block of the
+    // decoder's, not a fixed count); *out empty: the source has ended. requires: start().
+    bool readBlock(QVector<float> *out, QString *error);
+
+    // How far into the source file the reading is, 0..1 (by its bytes; 0 for samples in memory
+    // or a file of unknown size).
+    double fractionRead() const;
+
     // Starts resampling to `rate`.
     bool start(int rate, QString *error);
 

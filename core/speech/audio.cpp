@@ -281,7 +281,13 @@ bool writeAudio(const QString &path, const Audio &audio, QString *error)
     const QString suffix = QFileInfo(path).suffix().toLower();
     if (suffix == QLatin1String("wav"))
         return writeWav(path, audio, error);
-    return encodeWithFfmpeg(path, audio, error);
+    std::unique_ptr<AudioFileWriter> writer = openAudioFileWriter(path, audio.sampleRate, error);
+    return writer && writer->write(audio.samples.constData(), audio.samples.size(), error) && writer->finish(error);
+}
+
+std::unique_ptr<AudioFileWriter> openAudioFileWriter(const QString &path, int sampleRate, QString *error)
+{
+    return detail::openFfmpegAudioWriter(path, sampleRate, error);
 }
 
 } // namespace toonface

@@ -78,4 +78,22 @@ private:
 // nearest rate the codec allows. False with *error naming the file on failure.
 bool writeAudio(const QString &path, const Audio &audio, QString *error);
 
+// A sound file written a block at a time, so that a long recording need never be held whole.
+// The file is whole only after finish(); a writer destroyed before it leaves a partial file
+// for the caller to remove. Not thread-safe.
+class AudioFileWriter
+{
+public:
+    virtual ~AudioFileWriter() = default;
+    // Encodes mono samples in [-1, 1] at the rate the writer was opened with.
+    virtual bool write(const float *samples, qsizetype count, QString *error) = 0;
+    // Flushes the encoder and closes the file; the writer is closed after it either way.
+    virtual bool finish(QString *error) = 0;
+};
+
+// Opens `path` for mono sound at `sampleRate`, the format chosen by the suffix as writeAudio
+// does (.flac, .mp3, .ogg, .opus, .m4a/.aac; not .wav). Null with *error naming the file on
+// failure.
+std::unique_ptr<AudioFileWriter> openAudioFileWriter(const QString &path, int sampleRate, QString *error);
+
 } // namespace toonface

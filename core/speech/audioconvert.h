@@ -59,6 +59,8 @@ AudioResult decodePlainWav(const QString &path, const PlainWav &wav, const Audio
 // FFmpeg's decoding of any sound or video file, and its encoders (audioffmpeg.cpp).
 AudioResult decodeWithFfmpeg(
     const QString &path, const AudioSink &sink, const SpeechProgressFn &progress, const std::atomic_bool *cancel);
-bool encodeWithFfmpeg(const QString &path, const Audio &audio, QString *error);
+// FFmpeg's encoders, by the path's suffix (flac, mp3, ogg, opus, m4a/aac); null with *error
+// naming the file on failure.
+std::unique_ptr<AudioFileWriter> openFfmpegAudioWriter(const QString &path, int sampleRate, QString *error);
 
 } // namespace toonface::detail

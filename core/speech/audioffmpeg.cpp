@@ -178,127 +178,202 @@ AudioResult decodeWithFfmpeg(
     return sound.finish(path, progress);
 }
 
-bool encodeWithFfmpeg(const QString &path, const Audio &audio, QString *error)
+namespace {
+
+// Writes mono float samples at `inRate` to a file through an FFmpeg encoder as they come: they
+// are converted to the encoder's format and rate, gathered into its frame size and encoded.
+class FfmpegAudioWriter : public AudioFileWriter
 {
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    quietFfmpegLog();
-    auto fail = [&](const QString &what) {
-        *error = SoundText::tr("cannot write %1: %2").arg(path, what);
-        return false;
-    };
-    const AVCodec *codec = nullptr;
-    if (suffix == QLatin1String("flac"))
-        codec = avcodec_find_encoder(AV_CODEC_ID_FLAC);
-    else if (suffix == QLatin1String("mp3"))
-        codec = avcodec_find_encoder(AV_CODEC_ID_MP3);
-    else if (suffix == QLatin1String("ogg"))
-        codec = avcodec_find_encoder_by_name("libvorbis");
-    else if (suffix == QLatin1String("opus"))
-        codec = avcodec_find_encoder_by_name("libopus");
-    else if (suffix == QLatin1String("m4a") || suffix == QLatin1String("aac"))
-        codec = avcodec_find_encoder(AV_CODEC_ID_AAC);
-    else
-        return fail(SoundText::tr("unknown sound format '.%1' (use wav, flac, mp3, ogg, opus or m4a)").arg(suffix));
-    if (!codec)
-        return fail(SoundText::tr("this FFmpeg has no encoder for .%1").arg(suffix));
+public:
+    bool open(const QString &path, int inRate, QString *error)
+    {
+        m_path = path;
+        const QString suffix = QFileInfo(path).suffix().toLower();
+        quietFfmpegLog();
+        if (suffix == QLatin1String("flac"))
+            m_codec = avcodec_find_encoder(AV_CODEC_ID_FLAC);
+        else if (suffix == QLatin1String("mp3"))
+            m_codec = avcodec_find_encoder(AV_CODEC_ID_MP3);
+        else if (suffix == QLatin1String("ogg"))
+            m_codec = avcodec_find_encoder_by_name("libvorbis");
+        else if (suffix == QLatin1String("opus"))
+            m_codec = avcodec_find_encoder_by_name("libopus");
+        else if (suffix == QLatin1String("m4a") || suffix == QLatin1String("aac"))
+            m_codec = avcodec_find_encoder(AV_CODEC_ID_AAC);
+        else
+            return fail(
+                error, SoundText::tr("unknown sound format '.%1' (use wav, flac, mp3, ogg, opus or m4a)").arg(suffix));
+        if (!m_codec)
+            return fail(error, SoundText::tr("this FFmpeg has no encoder for .%1").arg(suffix));
+        if (inRate <= 0)
+            return fail(error, SoundText::tr("invalid sample rate %1").arg(inRate));
 
-    const QByteArray local = QFile::encodeName(path);
-    AVFormatContext *rawOut = nullptr;
-    if (avformat_alloc_output_context2(&rawOut, nullptr, nullptr, local.constData()) < 0 || !rawOut)
-        return fail(SoundText::tr("no container for .%1").arg(suffix));
-    std::unique_ptr<AVFormatContext, FormatOutputDeleter> oc(rawOut);
-    av::CodecPtr enc(avcodec_alloc_context3(codec));
-    enc->sample_fmt = codec->sample_fmts ? codec->sample_fmts[0] : AV_SAMPLE_FMT_FLTP;
-    int rate = audio.sampleRate;
-    if (codec->supported_samplerates) {
-        int best = 0;
-        for (const int *r = codec->supported_samplerates; *r; ++r) {
-            if (best == 0 || (std::abs(*r - rate) < std::abs(best - rate)) || (*r >= rate && best < rate))
-                best = *r;
+        const QByteArray local = QFile::encodeName(path);
+        AVFormatContext *rawOut = nullptr;
+        if (avformat_alloc_output_context2(&rawOut, nullptr, nullptr, local.constData()) < 0 || !rawOut)
+            return fail(error, SoundText::tr("no container for .%1").arg(suffix));
+        m_out.reset(rawOut);
+        m_enc.reset(avcodec_alloc_context3(m_codec));
+        AVCodecContext *enc = m_enc.get();
+        enc->sample_fmt = m_codec->sample_fmts ? m_codec->sample_fmts[0] : AV_SAMPLE_FMT_FLTP;
+        int rate = inRate;
+        if (m_codec->supported_samplerates) {
+            int best = 0;
+            for (const int *r = m_codec->supported_samplerates; *r; ++r) {
+                if (best == 0 || (std::abs(*r - rate) < std::abs(best - rate)) || (*r >= rate && best < rate))
+                    best = *r;
+            }
+            rate = best;
         }
-        rate = best;
-    }
-    enc->sample_rate = rate;
-    AVChannelLayout mono = AV_CHANNEL_LAYOUT_MONO;
-    av_channel_layout_copy(&enc->ch_layout, &mono);
-    enc->time_base = AVRational {1, rate};
-    if (suffix != QLatin1String("flac"))
-        enc->bit_rate = 64000;
-    if (oc->oformat->flags & AVFMT_GLOBALHEADER)
-        enc->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
-    int rc = avcodec_open2(enc.get(), codec, nullptr);
-    if (rc < 0)
-        return fail(SoundText::tr("cannot open the %1 encoder (%2)").arg(QString::fromUtf8(codec->name), avError(rc)));
-    AVStream *st = avformat_new_stream(oc.get(), nullptr);
-    if (!st || avcodec_parameters_from_context(st->codecpar, enc.get()) < 0)
-        return fail(SoundText::tr("cannot add a sound stream"));
-    st->time_base = enc->time_base;
-    if (!(oc->oformat->flags & AVFMT_NOFILE) && (rc = avio_open(&oc->pb, local.constData(), AVIO_FLAG_WRITE)) < 0)
-        return fail(avError(rc));
-    if ((rc = avformat_write_header(oc.get(), nullptr)) < 0)
-        return fail(avError(rc));
+        m_rate = rate;
+        enc->sample_rate = rate;
+        av_channel_layout_copy(&enc->ch_layout, &m_mono);
+        enc->time_base = AVRational {1, rate};
+        if (suffix != QLatin1String("flac"))
+            enc->bit_rate = 64000;
+        if (m_out->oformat->flags & AVFMT_GLOBALHEADER)
+            enc->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+        int rc = avcodec_open2(enc, m_codec, nullptr);
+        if (rc < 0)
+            return fail(error,
+                SoundText::tr("cannot open the %1 encoder (%2)").arg(QString::fromUtf8(m_codec->name), avError(rc)));
+        m_stream = avformat_new_stream(m_out.get(), nullptr);
+        if (!m_stream || avcodec_parameters_from_context(m_stream->codecpar, enc) < 0)
+            return fail(error, SoundText::tr("cannot add a sound stream"));
+        m_stream->time_base = enc->time_base;
+        if (!(m_out->oformat->flags & AVFMT_NOFILE)
+            && (rc = avio_open(&m_out->pb, local.constData(), AVIO_FLAG_WRITE)) < 0)
+            return fail(error, avError(rc));
+        if ((rc = avformat_write_header(m_out.get(), nullptr)) < 0)
+            return fail(error, avError(rc));
 
-    // All samples in the encoder's format and rate at once (mono: planar = packed).
-    SwrContext *rawSwr = nullptr;
-    if (swr_alloc_set_opts2(
-            &rawSwr, &mono, enc->sample_fmt, rate, &mono, AV_SAMPLE_FMT_FLT, audio.sampleRate, 0, nullptr)
-            < 0
-        || swr_init(rawSwr) < 0) {
-        swr_free(&rawSwr);
-        return fail(SoundText::tr("cannot convert the samples"));
+        SwrContext *rawSwr = nullptr;
+        if (swr_alloc_set_opts2(&rawSwr, &m_mono, enc->sample_fmt, rate, &m_mono, AV_SAMPLE_FMT_FLT, inRate, 0, nullptr)
+                < 0
+            || swr_init(rawSwr) < 0) {
+            swr_free(&rawSwr);
+            return fail(error, SoundText::tr("cannot convert the samples"));
+        }
+        m_swr.reset(rawSwr);
+        m_bytesPerSample = av_get_bytes_per_sample(enc->sample_fmt);
+        m_frameSize = enc->frame_size > 0 ? enc->frame_size : 1024;
+        m_frame.reset(av_frame_alloc());
+        m_packet.reset(av_packet_alloc());
+        return true;
     }
-    SwrPtr swr(rawSwr);
-    const int bytesPerSample = av_get_bytes_per_sample(enc->sample_fmt);
-    const int capacity = int(av_rescale_rnd(audio.samples.size(), rate, audio.sampleRate, AV_ROUND_UP)) + 256;
-    QByteArray converted(qsizetype(capacity) * bytesPerSample, Qt::Uninitialized);
-    uint8_t *dst = reinterpret_cast<uint8_t *>(converted.data());
-    const uint8_t *src = reinterpret_cast<const uint8_t *>(audio.samples.constData());
-    int total = swr_convert(swr.get(), &dst, capacity, &src, int(audio.samples.size()));
-    if (total >= 0) {
-        uint8_t *tail = dst + qsizetype(total) * bytesPerSample;
-        const int more = swr_convert(swr.get(), &tail, capacity - total, nullptr, 0);
-        total += std::max(more, 0);
-    }
-    if (total < 0)
-        return fail(SoundText::tr("cannot convert the samples"));
 
-    av::FramePtr frame(av_frame_alloc());
-    av::PacketPtr pkt(av_packet_alloc());
-    const int frameSize = enc->frame_size > 0 ? enc->frame_size : 1024;
-    auto writePackets = [&]() -> bool {
-        while (avcodec_receive_packet(enc.get(), pkt.get()) >= 0) {
-            av_packet_rescale_ts(pkt.get(), enc->time_base, st->time_base);
-            pkt->stream_index = st->index;
-            if (av_interleaved_write_frame(oc.get(), pkt.get()) < 0)
+    bool write(const float *samples, qsizetype count, QString *error) override
+    {
+        if (!m_swr)
+            return fail(error, SoundText::tr("the writer is closed"));
+        // In chunks: the converted samples of one wait in m_pending until they fill frames.
+        constexpr qsizetype kChunk = 1 << 15;
+        for (qsizetype at = 0; at < count; at += kChunk) {
+            const int n = int(std::min(kChunk, count - at));
+            const uint8_t *in = reinterpret_cast<const uint8_t *>(samples + at);
+            if (!convert(&in, n) || !encodeFrames(false))
+                return fail(error, SoundText::tr("encoding failed"));
+        }
+        return true;
+    }
+
+    bool finish(QString *error) override
+    {
+        if (!m_swr)
+            return fail(error, SoundText::tr("the writer is closed"));
+        const bool ok = convert(nullptr, 0) && encodeFrames(true) && avcodec_send_frame(m_enc.get(), nullptr) >= 0
+            && writePackets() && av_write_trailer(m_out.get()) >= 0;
+        m_swr.reset();
+        m_out.reset(); // closes the file
+        return ok || fail(error, SoundText::tr("encoding failed"));
+    }
+
+private:
+    bool fail(QString *error, const QString &what)
+    {
+        m_swr.reset();
+        *error = SoundText::tr("cannot write %1: %2").arg(m_path, what);
+        return false;
+    }
+
+    // Appends what the resampler gives for `in` (null: its flush) to m_pending.
+    bool convert(const uint8_t **in, int n)
+    {
+        const int capacity = swr_get_out_samples(m_swr.get(), n) + 256;
+        const qsizetype used = m_pending.size();
+        m_pending.resize(used + qsizetype(capacity) * m_bytesPerSample);
+        uint8_t *dst = reinterpret_cast<uint8_t *>(m_pending.data() + used);
+        const int got = swr_convert(m_swr.get(), &dst, capacity, in, n);
+        m_pending.resize(used + qsizetype(std::max(got, 0)) * m_bytesPerSample);
+        return got >= 0;
+    }
+
+    // Encodes every whole frame of m_pending, and at the end (`last`) what is left.
+    bool encodeFrames(bool last)
+    {
+        const qsizetype frameBytes = qsizetype(m_frameSize) * m_bytesPerSample;
+        qsizetype at = 0;
+        for (; m_pending.size() - at >= frameBytes || (last && m_pending.size() > at); at += frameBytes) {
+            const int n = int(std::min<qsizetype>(m_frameSize, (m_pending.size() - at) / m_bytesPerSample));
+            av_frame_unref(m_frame.get());
+            // Encoders with a fixed frame size want full frames: the last one is padded with
+            // silence unless the encoder takes a short last frame (the file keeps its length).
+            const int frameSamples
+                = (m_codec->capabilities & (AV_CODEC_CAP_VARIABLE_FRAME_SIZE | AV_CODEC_CAP_SMALL_LAST_FRAME))
+                ? n
+                : m_frameSize;
+            m_frame->nb_samples = frameSamples;
+            m_frame->format = m_enc->sample_fmt;
+            m_frame->sample_rate = m_rate;
+            av_channel_layout_copy(&m_frame->ch_layout, &m_mono);
+            if (av_frame_get_buffer(m_frame.get(), 0) < 0)
+                return false;
+            memset(m_frame->data[0], 0, size_t(frameSamples) * size_t(m_bytesPerSample));
+            memcpy(m_frame->data[0], m_pending.constData() + at, size_t(n) * size_t(m_bytesPerSample));
+            m_frame->pts = m_written;
+            m_written += n;
+            if (avcodec_send_frame(m_enc.get(), m_frame.get()) < 0 || !writePackets())
+                return false;
+        }
+        m_pending.remove(0, std::min(at, m_pending.size()));
+        return true;
+    }
+
+    bool writePackets()
+    {
+        while (avcodec_receive_packet(m_enc.get(), m_packet.get()) >= 0) {
+            av_packet_rescale_ts(m_packet.get(), m_enc->time_base, m_stream->time_base);
+            m_packet->stream_index = m_stream->index;
+            if (av_interleaved_write_frame(m_out.get(), m_packet.get()) < 0)
                 return false;
         }
         return true;
-    };
-    for (int at = 0; at < total; at += frameSize) {
-        const int n = std::min(frameSize, total - at);
-        av_frame_unref(frame.get());
-        // Encoders with a fixed frame size want full frames: the last one is padded with silence
-        // unless the encoder takes a short last frame (then the file keeps its exact length).
-        const int frameSamples
-            = (codec->capabilities & (AV_CODEC_CAP_VARIABLE_FRAME_SIZE | AV_CODEC_CAP_SMALL_LAST_FRAME)) ? n
-                                                                                                         : frameSize;
-        frame->nb_samples = frameSamples;
-        frame->format = enc->sample_fmt;
-        frame->sample_rate = rate;
-        av_channel_layout_copy(&frame->ch_layout, &mono);
-        if (av_frame_get_buffer(frame.get(), 0) < 0)
-            return fail(SoundText::tr("out of memory"));
-        memset(frame->data[0], 0, size_t(frameSamples) * size_t(bytesPerSample));
-        memcpy(
-            frame->data[0], converted.constData() + qsizetype(at) * bytesPerSample, size_t(n) * size_t(bytesPerSample));
-        frame->pts = at;
-        if (avcodec_send_frame(enc.get(), frame.get()) < 0 || !writePackets())
-            return fail(SoundText::tr("encoding failed"));
     }
-    avcodec_send_frame(enc.get(), nullptr);
-    if (!writePackets() || av_write_trailer(oc.get()) < 0)
-        return fail(SoundText::tr("encoding failed"));
-    return true;
+
+    QString m_path;
+    const AVCodec *m_codec = nullptr;
+    AVChannelLayout m_mono = AV_CHANNEL_LAYOUT_MONO;
+    std::unique_ptr<AVFormatContext, FormatOutputDeleter> m_out;
+    av::CodecPtr m_enc;
+    AVStream *m_stream = nullptr;
+    SwrPtr m_swr;
+    av::FramePtr m_frame;
+    av::PacketPtr m_packet;
+    int m_rate = 0;
+    int m_bytesPerSample = 4;
+    int m_frameSize = 1024;
+    int64_t m_written = 0; // samples sent to the encoder
+    QByteArray m_pending; // converted samples not yet encoded
+};
+
+} // namespace
+
+std::unique_ptr<AudioFileWriter> openFfmpegAudioWriter(const QString &path, int sampleRate, QString *error)
+{
+    auto writer = std::make_unique<FfmpegAudioWriter>();
+    if (!writer->open(path, sampleRate, error))
+        return nullptr;
+    return writer;
 }
 
 } // namespace toonface::detail

@@ -678,6 +678,22 @@
         <source>Mixing the recordings…</source>
         <translation>正在混合录音…</translation>
     </message>
+    <message>
+        <source>An animated drawing</source>
+        <translation>一张动画图</translation>
+    </message>
+    <message>
+        <source>A video of each page</source>
+        <translation>每一页的视频</translation>
+    </message>
+    <message>
+        <source>A video of each page read aloud plays in reading systems that neither read aloud nor animate drawings; it takes longer to make</source>
+        <translation>每一页朗读的视频可在既不会朗读、也不会播放动画图的阅读器中播放；制作需要较长时间</translation>
+    </message>
+    <message>
+        <source>&amp;Face:</source>
+        <translation>脸(&amp;F)：</translation>
+    </message>
 </context>
 <context>
     <name>toonface::CameraFeed</name>
@@ -1372,6 +1388,10 @@
     <message>
         <source>cannot start the %1 encoder: %2</source>
         <translation>无法启动 %1 编码器：%2</translation>
+    </message>
+    <message>
+        <source>no sound to cut the page&apos;s video from</source>
+        <translation>没有可剪出该页视频的声音</translation>
     </message>
 </context>
 <context>
@@ -3659,6 +3679,14 @@ The points are unchanged.</source>
         <source>Drawing the cartoon…</source>
         <translation>正在绘制卡通…</translation>
     </message>
+    <message>
+        <source>&amp;Transparent Background</source>
+        <translation>透明背景(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Show the cartoon without its background, over a checkerboard, as a transparent sticker exports it</source>
+        <translation>把卡通画在棋盘格上、不含背景，就像导出的透明贴纸</translation>
+    </message>
 </context>
 <context>
     <name>toonface::Problem</name>
@@ -4553,10 +4581,6 @@ The points are unchanged.</source>
         <translation>无法转换采样</translation>
     </message>
     <message>
-        <source>out of memory</source>
-        <translation>内存不足</translation>
-    </message>
-    <message>
         <source>encoding failed</source>
         <translation>编码失败</translation>
     </message>
@@ -4591,6 +4615,10 @@ The points are unchanged.</source>
     <message>
         <source>the sound of several or trimmed recordings can only be embedded, not referenced</source>
         <translation>多段或经修剪的录音只能内嵌，不能以引用方式使用</translation>
+    </message>
+    <message>
+        <source>the writer is closed</source>
+        <translation>写入器已关闭</translation>
     </message>
 </context>
 <context>
@@ -5236,10 +5264,6 @@ The points are unchanged.</source>
         <translation>正在将 %1 秒的动画导出到 %2</translation>
     </message>
     <message>
-        <source>exporting: %1 %</source>
-        <translation>正在导出：%1 %</translation>
-    </message>
-    <message>
         <source>The cartoon SVG to write.</source>
         <translation>要写入的卡通 SVG。</translation>
     </message>
@@ -5642,6 +5666,18 @@ Every job of the editor, with no display.</source>
     <message>
         <source>Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF, WebM, MOV, APNG, WebP or PNG frames).</source>
         <translation>让照片或项目中的脸说话，并导出动画（SVG、HTML、MP4、GIF、WebM、MOV、APNG、WebP 或 PNG 帧）。</translation>
+    </message>
+    <message>
+        <source>exporting</source>
+        <translation>正在导出</translation>
+    </message>
+    <message>
+        <source>How the face moves on the pages: svg (an animated drawing) or video (a video of each page read aloud, for reading systems without read-aloud or SVG animation).</source>
+        <translation>页面上的脸如何动：svg（动画图）或 video（每一页朗读的视频，供不支持朗读或 SVG 动画的阅读器使用）。</translation>
+    </message>
+    <message>
+        <source>--face-as takes svg or video, not &apos;%1&apos;</source>
+        <translation>--face-as 需要 svg 或 video，而不是“%1”</translation>
     </message>
 </context>
 </TS>

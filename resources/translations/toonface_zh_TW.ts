@@ -678,6 +678,22 @@
         <source>Mixing the recordings…</source>
         <translation>正在混合錄音…</translation>
     </message>
+    <message>
+        <source>An animated drawing</source>
+        <translation>一張動畫圖</translation>
+    </message>
+    <message>
+        <source>A video of each page</source>
+        <translation>每一頁的影片</translation>
+    </message>
+    <message>
+        <source>A video of each page read aloud plays in reading systems that neither read aloud nor animate drawings; it takes longer to make</source>
+        <translation>每一頁朗讀的影片可在既不會朗讀、也不會播放動畫圖的閱讀器中播放；製作需要較長時間</translation>
+    </message>
+    <message>
+        <source>&amp;Face:</source>
+        <translation>臉(&amp;F)：</translation>
+    </message>
 </context>
 <context>
     <name>toonface::CameraFeed</name>
@@ -1372,6 +1388,10 @@
     <message>
         <source>cannot start the %1 encoder: %2</source>
         <translation>無法啟動 %1 編碼器：%2</translation>
+    </message>
+    <message>
+        <source>no sound to cut the page&apos;s video from</source>
+        <translation>沒有可剪出該頁影片的聲音</translation>
     </message>
 </context>
 <context>
@@ -3659,6 +3679,14 @@ The points are unchanged.</source>
         <source>Drawing the cartoon…</source>
         <translation>正在繪製卡通…</translation>
     </message>
+    <message>
+        <source>&amp;Transparent Background</source>
+        <translation>透明背景(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Show the cartoon without its background, over a checkerboard, as a transparent sticker exports it</source>
+        <translation>把卡通畫在棋盤格上、不含背景，就像匯出的透明貼圖</translation>
+    </message>
 </context>
 <context>
     <name>toonface::Problem</name>
@@ -4553,10 +4581,6 @@ The points are unchanged.</source>
         <translation>無法轉換取樣</translation>
     </message>
     <message>
-        <source>out of memory</source>
-        <translation>記憶體不足</translation>
-    </message>
-    <message>
         <source>encoding failed</source>
         <translation>編碼失敗</translation>
     </message>
@@ -4591,6 +4615,10 @@ The points are unchanged.</source>
     <message>
         <source>the sound of several or trimmed recordings can only be embedded, not referenced</source>
         <translation>多段或經修剪的錄音只能內嵌，不能以參照方式使用</translation>
+    </message>
+    <message>
+        <source>the writer is closed</source>
+        <translation>寫入器已關閉</translation>
     </message>
 </context>
 <context>
@@ -5236,10 +5264,6 @@ The points are unchanged.</source>
         <translation>正在將 %1 秒的動畫匯出到 %2</translation>
     </message>
     <message>
-        <source>exporting: %1 %</source>
-        <translation>正在匯出：%1 %</translation>
-    </message>
-    <message>
         <source>The cartoon SVG to write.</source>
         <translation>要寫入的卡通 SVG。</translation>
     </message>
@@ -5642,6 +5666,18 @@ Every job of the editor, with no display.</source>
     <message>
         <source>Make the face of a photo or project talk, and export the animation (SVG, HTML, MP4, GIF, WebM, MOV, APNG, WebP or PNG frames).</source>
         <translation>讓照片或專案中的臉說話，並匯出動畫（SVG、HTML、MP4、GIF、WebM、MOV、APNG、WebP 或 PNG 影格）。</translation>
+    </message>
+    <message>
+        <source>exporting</source>
+        <translation>正在匯出</translation>
+    </message>
+    <message>
+        <source>How the face moves on the pages: svg (an animated drawing) or video (a video of each page read aloud, for reading systems without read-aloud or SVG animation).</source>
+        <translation>頁面上的臉如何動：svg（動畫圖）或 video（每一頁朗讀的影片，供不支援朗讀或 SVG 動畫的閱讀器使用）。</translation>
+    </message>
+    <message>
+        <source>--face-as takes svg or video, not &apos;%1&apos;</source>
+        <translation>--face-as 需要 svg 或 video，而不是「%1」</translation>
     </message>
 </context>
 </TS>

@@ -6,6 +6,7 @@
 #include "export/epubtext.h"
 #include "export/epubzip.h"
 #include "face/averageface.h"
+#include "media/mediareader.h"
 #include "shareddata.h"
 #include "speech/audio.h"
 #include "speech/lipsync.h"
@@ -547,6 +548,138 @@ private Q_SLOTS:
         if (epubcheckJar().isEmpty() || QStandardPaths::findExecutable(QStringLiteral("java")).isEmpty())
             return;
         const QString problems = epubcheckProblems(out);
+        QVERIFY2(problems.isEmpty(), qPrintable(problems));
+    }
+
+    // The recording reaches the book whole, re-encoded a block at a time with progress, and a
+    // cancel while it is read leaves nothing.
+    void recordingStreamsIntoTheBook()
+    {
+        QTemporaryDir dir;
+        const QString text = writeText(dir, QStringLiteral("story.md"), kEnglish);
+        QString spokenText;
+        for (const QString &line : kEnglish.split(QLatin1Char('\n'))) {
+            if (!line.trimmed().isEmpty())
+                spokenText += (line.startsWith(QLatin1Char('#')) ? line.mid(line.indexOf(QLatin1Char(' ')) + 1) : line)
+                    + QLatin1Char('\n');
+        }
+        const ScriptParse script = parseScript(spokenText, Language::English);
+        const TtsResult spoken = synthesize(script.script);
+        QVERIFY2(spoken.ok(), qPrintable(spoken.error));
+        const QString wav = dir.filePath(QStringLiteral("reading.wav"));
+        QString error;
+        QVERIFY2(writeAudio(wav, spoken.audio, &error), qPrintable(error));
+
+        BookRequest req = request(text, dir.filePath(QStringLiteral("r.epub")));
+        req.audioPath = wav;
+        std::atomic_bool cancel = false;
+        const BookResult stopped = exportBook(
+            req,
+            [&](double, const QString &stage) {
+                if (stage == QLatin1StringView("reading the recording"))
+                    cancel = true;
+            },
+            &cancel);
+        QCOMPARE(stopped.status, BookStatus::Cancelled);
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden),
+            (QStringList {QStringLiteral("reading.wav"), QStringLiteral("story.md")}));
+
+        QVector<double> reading;
+        const BookResult r = exportBook(req, [&](double f, const QString &stage) {
+            if (stage == QLatin1StringView("reading the recording"))
+                reading.append(f);
+        });
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        QVERIFY(!reading.isEmpty() && std::is_sorted(reading.begin(), reading.end()));
+        const QString mp3 = dir.filePath(QStringLiteral("book.mp3"));
+        QFile f(mp3);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(readBook(req.outputPath).entry(QStringLiteral("OEBPS/audio/book.mp3")));
+        f.close();
+        const std::optional<MediaInfo> info = probeMedia(mp3, &error);
+        QVERIFY2(info, qPrintable(error));
+        QCOMPARE(info->audioCodec, QStringLiteral("mp3"));
+        QCOMPARE(info->audioSampleRate, 24000);
+        QVERIFY2(std::abs(info->audioDurationS - spoken.audio.duration()) < 0.1,
+            qPrintable(QStringLiteral("%1 s of %2 s").arg(info->audioDurationS).arg(spoken.audio.duration())));
+    }
+
+    // The face as a video per page (for reading systems without media overlays): each page shows
+    // its video, which the package lists as video/mp4 and which holds the face (H.264) reading
+    // the page (AAC) for as long as the page's overlay reads it; epubcheck finds nothing to say.
+    void videoFaceBook()
+    {
+        QTemporaryDir dir;
+        BookRequest req
+            = request(writeText(dir, QStringLiteral("story.md"), kEnglish), dir.filePath(QStringLiteral("v.epub")));
+        req.faceMedia = BookFaceMedia::Video;
+        const BookResult r = exportBook(req);
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        const Book b = readBook(req.outputPath);
+        const Node opf = xml(b.entry(QStringLiteral("OEBPS/package.opf")));
+        std::map<QString, const Node *> items;
+        for (const Node *item : all(opf, QStringLiteral("item")))
+            items[item->attribute(QStringLiteral("href"))] = item;
+        const QRegularExpression videoRe(QStringLiteral("<video src=\"../(video/p\\d{5}\\.mp4)\""));
+        int pages = 0;
+        for (const Node *ref : all(opf, QStringLiteral("itemref"))) {
+            const Node *page = nullptr;
+            for (const auto &[href, item] : items) {
+                if (item->attribute(QStringLiteral("id")) == ref->attribute(QStringLiteral("idref")))
+                    page = item;
+            }
+            QVERIFY(page);
+            const QString pageHref = page->attribute(QStringLiteral("href"));
+            if (!pageHref.startsWith(QLatin1StringView("text/")))
+                continue; // the cover
+            ++pages;
+            QCOMPARE(page->attribute(QStringLiteral("properties")), QString()); // no SVG in it
+            const QByteArray pageData = b.entry(QStringLiteral("OEBPS/") + pageHref);
+            const Node pageXml = xml(pageData);
+            QCOMPARE(all(pageXml, QStringLiteral("svg")).size(), 0);
+            QCOMPARE(all(pageXml, QStringLiteral("video")).size(), 1);
+            const QRegularExpressionMatch m = videoRe.match(QString::fromUtf8(pageData));
+            QVERIFY2(m.hasMatch(), pageData.constData());
+            const QString videoHref = m.captured(1);
+            QVERIFY(items.count(videoHref));
+            QCOMPARE(items[videoHref]->attribute(QStringLiteral("media-type")), QStringLiteral("video/mp4"));
+
+            qint64 overlayMs = 0;
+            for (const auto &[href, item] : items) {
+                if (item->attribute(QStringLiteral("id")) == page->attribute(QStringLiteral("media-overlay"))) {
+                    for (const Clip &c : clipsOf(xml(b.entry(QStringLiteral("OEBPS/") + href))))
+                        overlayMs += c.end - c.begin;
+                }
+            }
+            QVERIFY(overlayMs > 0);
+            const QString video = dir.filePath(QStringLiteral("page.mp4"));
+            QFile f(video);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(b.entry(QStringLiteral("OEBPS/") + videoHref));
+            f.close();
+            QString error;
+            const std::optional<MediaInfo> info = probeMedia(video, &error);
+            QVERIFY2(info, qPrintable(error));
+            QCOMPARE(info->videoCodec, QStringLiteral("h264"));
+            QCOMPARE(QSize(info->width, info->height), QSize(320, 320));
+            QVERIFY(info->hasAudio);
+            // Within a frame (25 fps) and the AAC encoder's last frame.
+            QVERIFY2(std::abs(info->videoDurationS * 1000 - double(overlayMs)) <= 41,
+                qPrintable(QStringLiteral("%1: %2 s of video, %3 ms read")
+                               .arg(videoHref)
+                               .arg(info->videoDurationS)
+                               .arg(overlayMs)));
+            QVERIFY2(std::abs(info->audioDurationS * 1000 - double(overlayMs)) <= 70,
+                qPrintable(QStringLiteral("%1: %2 s of sound, %3 ms read")
+                               .arg(videoHref)
+                               .arg(info->audioDurationS)
+                               .arg(overlayMs)));
+        }
+        QCOMPARE(pages, r.pages);
+
+        if (epubcheckJar().isEmpty() || QStandardPaths::findExecutable(QStringLiteral("java")).isEmpty())
+            return;
+        const QString problems = epubcheckProblems(req.outputPath);
         QVERIFY2(problems.isEmpty(), qPrintable(problems));
     }
 

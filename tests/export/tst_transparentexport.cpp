@@ -3,6 +3,7 @@
 
 #include "export/animationexport.h"
 #include "export/exportpreset.h"
+#include "export/keptframes.h"
 #include "media/mediareader.h"
 #include "render/style.h"
 
@@ -470,6 +471,52 @@ private Q_SLOTS:
         QVERIFY2(bytes <= preset.maxBytes && bytes > 0,
             qPrintable(QStringLiteral("%1 of %2 (first try %3)").arg(bytes).arg(preset.maxBytes).arg(firstBytes)));
         QCOMPARE(entries(dir), QStringList {u"fits.webm"_qs});
+        // Encoded more than once, drawn once.
+        QVERIFY2(result.encodings >= 2, qPrintable(QString::number(result.encodings)));
+        QCOMPARE(result.framesDrawn, exportFrameCount(withPreset(r, preset)));
+        QString error;
+        const std::optional<MediaInfo> info = probeMedia(r.outputPath, &error);
+        QVERIFY2(info && info->hasAlpha, qPrintable(error));
+        QCOMPARE(info->frameCount, exportFrameCount(withPreset(r, preset)));
+    }
+
+    // Frames kept by one export are encoded by the next without being drawn again, pixel for
+    // pixel the same; a request of another size draws them anew.
+    void keptFramesAreEncodedAgain()
+    {
+        const QString dir = newFolder(QStringLiteral("kept"));
+        ExportRequest r = request(AnimationFormat::PngSequence, QDir(dir).filePath(QStringLiteral("drawn/")));
+        r.keptFrames = std::make_shared<KeptFrames>();
+        const ExportResult drawn = exportAnimation(r);
+        QVERIFY2(drawn.ok(), qPrintable(drawn.error));
+        const int frames = exportFrameCount(r);
+        QCOMPARE(drawn.framesDrawn, frames);
+        QCOMPARE(r.keptFrames->count(), frames);
+        // Compressed well below the raw pictures.
+        const qint64 raw = qint64(frames) * exportFrameSize(r).width() * exportFrameSize(r).height() * 4;
+        QVERIFY2(r.keptFrames->bytes() < raw / 4,
+            qPrintable(QStringLiteral("%1 of %2").arg(r.keptFrames->bytes()).arg(raw)));
+
+        r.outputPath = QDir(dir).filePath(QStringLiteral("again/"));
+        const ExportResult again = exportAnimation(r);
+        QVERIFY2(again.ok(), qPrintable(again.error));
+        QCOMPARE(again.framesDrawn, 0);
+        const QStringList names = entries(QDir(dir).filePath(QStringLiteral("drawn")));
+        QCOMPARE(names.size(), frames);
+        QCOMPARE(entries(QDir(dir).filePath(QStringLiteral("again"))), names);
+        for (const QString &name : names) {
+            const QImage a(QDir(dir).filePath(QStringLiteral("drawn/") + name));
+            const QImage b(QDir(dir).filePath(QStringLiteral("again/") + name));
+            QVERIFY(!a.isNull() && a.hasAlphaChannel());
+            QCOMPARE(b, a);
+        }
+
+        r.size = 64;
+        r.outputPath = QDir(dir).filePath(QStringLiteral("smaller/"));
+        const ExportResult smaller = exportAnimation(r);
+        QVERIFY2(smaller.ok(), qPrintable(smaller.error));
+        QCOMPARE(smaller.framesDrawn, frames);
+        QCOMPARE(QImage(QDir(dir).filePath(QStringLiteral("smaller/") + names.first())).size(), exportFrameSize(r));
     }
 
     // A size no quality reaches: the quality is lowered first, then the export gives up
@@ -488,6 +535,8 @@ private Q_SLOTS:
             qPrintable(result.error));
         QVERIFY(std::is_sorted(reported.begin(), reported.end()));
         QCOMPARE(entries(dir), QStringList());
+        QVERIFY(result.encodings >= 2);
+        QCOMPARE(result.framesDrawn, exportFrameCount(withPreset(r, tiny)));
 
         // The wrong output type for the preset.
         r.outputPath = QDir(dir).filePath(QStringLiteral("sticker.gif"));

@@ -15,6 +15,7 @@
 #include <QDir>
 #include <QFile>
 #include <QLineEdit>
+#include <QProgressBar>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -68,6 +69,40 @@ private Q_SLOTS:
         QCOMPARE(dialog.exportedPath(), out);
         QVERIFY(QFileInfo(out).size() > 0);
         QVERIFY(!dialog.status()->isError());
+    }
+
+    // "Face: A video of each page", chosen with the keyboard, makes a book whose page shows a
+    // video; the dialog shows the stage it is at while it works.
+    void videoFaceIsChosenInTheDialog()
+    {
+        QTemporaryDir dir;
+        BookDialog dialog(base());
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        dialog.textEdit()->setText(writeText(dir, QStringLiteral("t.txt"), QStringLiteral("Hello there.\n")));
+        dialog.sourceBox()->setCurrentIndex(1);
+        const QString out = dir.filePath(QStringLiteral("v.epub"));
+        dialog.outputEdit()->setText(out);
+        QCOMPARE(dialog.request().faceMedia, BookFaceMedia::Svg);
+        dialog.faceMediaBox()->setFocus();
+        QTest::keyClick(dialog.faceMediaBox(), Qt::Key_Down);
+        QCOMPARE(dialog.request().faceMedia, BookFaceMedia::Video);
+        QSignalSpy finished(&dialog, &BookDialog::finished);
+        QVERIFY(dialog.start());
+        auto *bar = dialog.status()->findChild<QProgressBar *>();
+        QVERIFY(bar);
+        bool shown = false;
+        while (finished.isEmpty()) {
+            shown = shown || (bar->isVisible() && bar->value() > 0);
+            if (!finished.wait(20) && !dialog.isRunning())
+                break;
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 120000);
+        QVERIFY2(dialog.lastResult().ok(), qPrintable(dialog.lastResult().error));
+        QVERIFY2(shown, "no progress shown");
+        QFile book(out);
+        QVERIFY(book.open(QIODevice::ReadOnly));
+        QVERIFY(book.readAll().contains("OEBPS/video/p00001.mp4"));
     }
 
     void badTextShowsItsError()

@@ -191,6 +191,65 @@ private Q_SLOTS:
         QTRY_VERIFY(m_window->previewView()->svg() != shut);
     }
 
+    // View > Transparent Background (Ctrl+Shift+B) draws the cartoon without its background
+    // over a checkerboard, as a sticker exports it; the next window starts as this one ended.
+    void transparentViewIsRemembered()
+    {
+        makeWindow();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        openProject();
+        PreviewView *preview = m_window->previewView();
+        QAction *transparent = preview->transparentAction();
+        QMenu *view = nullptr;
+        for (QAction *a : m_window->menuBar()->actions()) {
+            if (a->text() == QStringLiteral("&View"))
+                view = a->menu();
+        }
+        QVERIFY(view && view->actions().contains(transparent));
+        QVERIFY(!transparent->isChecked());
+        // Pixels of the checkerboard's grey in the view, and the picture's corner alpha.
+        const auto checkerPixels = [&] {
+            const QImage shown = preview->image().convertToFormat(QImage::Format_RGB32);
+            int n = 0;
+            for (int y = 0; y < shown.height(); ++y) {
+                const auto *row = reinterpret_cast<const QRgb *>(shown.constScanLine(y));
+                for (int x = 0; x < shown.width(); ++x)
+                    n += row[x] == qRgb(204, 204, 204);
+            }
+            return n;
+        };
+        // The picture shown now, brought up to date.
+        const auto cornerAlpha = [&] {
+            preview->image();
+            return qAlpha(preview->renderer()->current().image.pixel(0, 0));
+        };
+        const auto centreAlpha = [&] {
+            const QImage &image = preview->renderer()->current().image;
+            return qAlpha(image.pixel(image.width() / 2, image.height() / 2));
+        };
+        QVERIFY(!preview->image().isNull() && !preview->renderer()->current().image.isNull());
+        QCOMPARE(cornerAlpha(), 255);
+        QVERIFY2(checkerPixels() < 50, qPrintable(QString::number(checkerPixels())));
+
+        m_window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+        QTest::keyClick(m_window.get(), Qt::Key_B, Qt::ControlModifier | Qt::ShiftModifier);
+        QVERIFY(transparent->isChecked());
+        QVERIFY(preview->renderer()->isTransparent());
+        QTRY_COMPARE(cornerAlpha(), 0);
+        QCOMPARE(centreAlpha(), 255); // the face stays opaque
+        QVERIFY2(checkerPixels() > 1000, qPrintable(QString::number(checkerPixels())));
+        QCOMPARE(Settings().transparentPreview(), true);
+
+        tearDown();
+        makeWindow();
+        QVERIFY(m_window->previewView()->transparentAction()->isChecked());
+        QVERIFY(m_window->previewView()->renderer()->isTransparent());
+        m_window->previewView()->transparentAction()->trigger();
+        QCOMPARE(Settings().transparentPreview(), false);
+        QVERIFY(!m_window->previewView()->renderer()->isTransparent());
+    }
+
     void windowGeometryPersists()
     {
         makeWindow();

@@ -51,11 +51,13 @@ private Q_SLOTS:
         Settings settings;
         QCOMPARE(settings.autosaveInterval(), 60);
         QCOMPARE(settings.showPointIds(), false);
+        QCOMPARE(settings.transparentPreview(), false);
         QCOMPARE(settings.lastDirectory(), QDir::homePath());
         QVERIFY(settings.windowGeometry().isEmpty());
 
         settings.setAutosaveInterval(15);
         settings.setShowPointIds(true);
+        settings.setTransparentPreview(true);
         settings.setLastDirectory(QStringLiteral("/photos"));
         settings.setWindowGeometry(QByteArray("geometry"));
         settings.setWindowState(QByteArray("state"));
@@ -64,6 +66,7 @@ private Q_SLOTS:
         Settings reread;
         QCOMPARE(reread.autosaveInterval(), 15);
         QCOMPARE(reread.showPointIds(), true);
+        QCOMPARE(reread.transparentPreview(), true);
         QCOMPARE(reread.lastDirectory(), QStringLiteral("/photos"));
         QCOMPARE(reread.windowGeometry(), QByteArray("geometry"));
         QCOMPARE(reread.windowState(), QByteArray("state"));

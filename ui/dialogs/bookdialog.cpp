@@ -67,6 +67,14 @@ BookDialog::BookDialog(const BookRequest &base, QWidget *parent)
     m_highlight->addItem(tr("Each character or word"));
     m_highlight->setCurrentIndex(base.highlight == BookHighlight::Syllable ? 1 : 0);
     form->addRow(tr("&Highlight:"), m_highlight);
+    m_faceMedia = new QComboBox;
+    m_faceMedia->setObjectName(QStringLiteral("bookFaceMedia"));
+    m_faceMedia->addItem(tr("An animated drawing"), int(BookFaceMedia::Svg));
+    m_faceMedia->addItem(tr("A video of each page"), int(BookFaceMedia::Video));
+    m_faceMedia->setCurrentIndex(base.faceMedia == BookFaceMedia::Video ? 1 : 0);
+    m_faceMedia->setToolTip(tr("A video of each page read aloud plays in reading systems that neither read "
+                               "aloud nor animate drawings; it takes longer to make"));
+    form->addRow(tr("&Face:"), m_faceMedia);
     m_output = new QLineEdit(base.outputPath);
     m_output->setObjectName(QStringLiteral("bookOutput"));
     form->addRow(tr("&Book:"), row(m_output, nullptr, tr("EPUB book (*.epub)"), true));
@@ -173,6 +181,7 @@ BookRequest BookDialog::request() const
     r.title = m_title->text().trimmed();
     r.author = m_author->text().trimmed();
     r.highlight = m_highlight->currentIndex() == 1 ? BookHighlight::Syllable : BookHighlight::Sentence;
+    r.faceMedia = BookFaceMedia(m_faceMedia->currentData().toInt());
     r.outputPath = m_output->text().trimmed();
     return r;
 }

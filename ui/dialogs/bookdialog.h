@@ -22,7 +22,8 @@ class Document;
 class JobStatus;
 
 // Export Read-aloud Book…: a text (plain or Markdown) read by a recording of it or by the
-// built-in voice, its language, title and author, what is highlighted, and the book's file; the
+// built-in voice, its language, title and author, what is highlighted, how the face moves (an
+// animated drawing or a video of each page), and the book's file; the
 // book is made in the background (exportBook through QtConcurrent) with progress and Cancel, and
 // nothing is left behind when it is cancelled or fails.
 //
@@ -67,6 +68,7 @@ public:
     QLineEdit *audioEdit() const { return m_audio; }
     QLineEdit *outputEdit() const { return m_output; }
     QComboBox *sourceBox() const { return m_source; }
+    QComboBox *faceMediaBox() const { return m_faceMedia; }
     JobStatus *status() const { return m_status; }
 
 Q_SIGNALS:
@@ -89,6 +91,7 @@ private:
     QLineEdit *m_title;
     QLineEdit *m_author;
     QComboBox *m_highlight;
+    QComboBox *m_faceMedia;
     QLineEdit *m_output;
     JobStatus *m_status;
     QDialogButtonBox *m_buttons;

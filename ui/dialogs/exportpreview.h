@@ -28,7 +28,4 @@ private:
     QImage m_frame;
 };
 
-// The checkerboard behind transparent pixels: `cell`-pixel squares of two light greys.
-void paintCheckerboard(QPainter *painter, const QRect &rect, int cell = 8);
-
 } // namespace toonface

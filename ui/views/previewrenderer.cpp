@@ -67,6 +67,15 @@ void PreviewRenderer::setImageSize(QSize pixels)
     schedule();
 }
 
+void PreviewRenderer::setTransparent(bool transparent)
+{
+    if (transparent == m_transparent)
+        return;
+    m_transparent = transparent;
+    m_pictureStale = true;
+    schedule();
+}
+
 void PreviewRenderer::onDocumentChanged(ChangeFlags what)
 {
     if (what & (Change::Face | Change::Photo))
@@ -135,11 +144,11 @@ void PreviewRenderer::rebuildScene()
 }
 
 QImage PreviewRenderer::renderPose(
-    const SvgFace &face, const QRectF &frame, QSize size, const Pose &pose, QByteArray *svg)
+    const SvgFace &face, const QRectF &frame, QSize size, const Pose &pose, QByteArray *svg, QColor background)
 {
     const QByteArray drawn = face.svg(pose);
     QImage image(size, QImage::Format_ARGB32_Premultiplied);
-    image.fill(Qt::white);
+    image.fill(background);
     QSvgRenderer renderer(drawn);
     if (renderer.isValid() && !frame.isEmpty()) {
         QSizeF fitted = frame.size();
@@ -159,16 +168,18 @@ QImage PreviewRenderer::renderPose(
 
 PreviewRenderer::Frame PreviewRenderer::render(const std::shared_ptr<const SvgFace> &face,
     const std::shared_ptr<const TimelineEvaluator> &evaluator, const QRectF &frame, QSize size, double time,
-    quint64 scene, int extraCostMs)
+    quint64 scene, int extraCostMs, bool transparent)
 {
     Frame out;
     out.time = time;
     out.scene = scene;
+    out.transparent = transparent;
     if (!face || size.isEmpty())
         return out;
     if (evaluator)
         out.pose = evaluator->evaluate(time);
-    out.image = renderPose(*face, frame, size, out.pose, &out.svg);
+    out.image
+        = renderPose(*face, frame, size, out.pose, &out.svg, transparent ? QColor(Qt::transparent) : QColor(Qt::white));
     if (extraCostMs > 0)
         QThread::msleep(ulong(extraCostMs));
     return out;
@@ -191,7 +202,8 @@ void PreviewRenderer::update()
     }
     QElapsedTimer clock;
     clock.start();
-    Frame frame = render(m_face, m_evaluator, m_frame, m_imageSize, time(), m_sceneSerial, m_extraCostMs);
+    Frame frame
+        = render(m_face, m_evaluator, m_frame, m_imageSize, time(), m_sceneSerial, m_extraCostMs, m_transparent);
     m_pictureStale = false;
     show(std::move(frame), clock.nsecsElapsed() / 1e6, false);
 }
@@ -204,8 +216,8 @@ void PreviewRenderer::startJob()
     m_jobScene = m_sceneSerial;
     m_jobSize = m_imageSize;
     m_jobClock.start();
-    m_watcher.setFuture(QtConcurrent::run(
-        &PreviewRenderer::render, m_face, m_evaluator, m_frame, m_imageSize, m_jobTime, m_jobScene, m_extraCostMs));
+    m_watcher.setFuture(QtConcurrent::run(&PreviewRenderer::render, m_face, m_evaluator, m_frame, m_imageSize,
+        m_jobTime, m_jobScene, m_extraCostMs, m_transparent));
 }
 
 void PreviewRenderer::onJobFinished()
@@ -246,7 +258,8 @@ void PreviewRenderer::flush()
         return;
     QElapsedTimer clock;
     clock.start();
-    Frame frame = render(m_face, m_evaluator, m_frame, m_imageSize, time(), m_sceneSerial, m_extraCostMs);
+    Frame frame
+        = render(m_face, m_evaluator, m_frame, m_imageSize, time(), m_sceneSerial, m_extraCostMs, m_transparent);
     m_pictureStale = false;
     show(std::move(frame), clock.nsecsElapsed() / 1e6, false);
 }

@@ -4,6 +4,7 @@
 #include "face/pose.h"
 
 #include <QByteArray>
+#include <QColor>
 #include <QElapsedTimer>
 #include <QFutureWatcher>
 #include <QImage>
@@ -47,12 +48,20 @@ public:
     // One drawn picture.
     struct Frame
     {
-        QImage image; // imageSize(), the drawing fitted (aspect kept) on white; null without a face
+        // imageSize(), the drawing fitted (aspect kept) on white, or on nothing (alpha 0) when
+        // transparent; null without a face
+        QImage image;
+        bool transparent = false;
         QByteArray svg;
         Pose pose;
         double time = 0;
         quint64 scene = 0; // the scene it was drawn from (sceneSerial())
     };
+
+    // Whether the pictures leave out the background (alpha 0 around the face), as a transparent
+    // sticker exports it; changing it draws the picture again.
+    void setTransparent(bool transparent);
+    bool isTransparent() const { return m_transparent; }
 
     // The device-pixel size of the pictures (the widget's drawing area).
     void setImageSize(QSize pixels);
@@ -90,15 +99,16 @@ public:
     // (for tests and benchmarks of the dropping path).
     void setExtraRenderCost(int ms) { m_extraCostMs = ms; }
 
-    // Draws `pose` of `face` showing `frame` (photo pixels) fitted (aspect kept) on white in an
-    // image of `size`; *svg receives the SVG drawn when not null. Runs on any thread.
-    static QImage renderPose(
-        const SvgFace &face, const QRectF &frame, QSize size, const Pose &pose, QByteArray *svg = nullptr);
+    // Draws `pose` of `face` showing `frame` (photo pixels) fitted (aspect kept) on `background`
+    // (transparent: nothing) in an image of `size`; *svg receives the SVG drawn when not null.
+    // Runs on any thread.
+    static QImage renderPose(const SvgFace &face, const QRectF &frame, QSize size, const Pose &pose,
+        QByteArray *svg = nullptr, QColor background = Qt::white);
 
     // Draws one picture from a scene; runs on any thread.
     static Frame render(const std::shared_ptr<const SvgFace> &face,
         const std::shared_ptr<const TimelineEvaluator> &evaluator, const QRectF &frame, QSize size, double time,
-        quint64 scene, int extraCostMs = 0);
+        quint64 scene, int extraCostMs = 0, bool transparent = false);
 
 Q_SIGNALS:
     // current() changed.
@@ -119,6 +129,7 @@ private:
     Document *m_document;
     QPointer<Playhead> m_playhead;
     QSize m_imageSize {512, 512};
+    bool m_transparent = false;
 
     std::shared_ptr<const SvgFace> m_face;
     std::shared_ptr<const TimelineEvaluator> m_evaluator;

@@ -4,10 +4,12 @@
 #include "face/pose.h"
 #include "playback/playhead.h"
 #include "render/svgface.h"
+#include "views/checkerboard.h"
 #include "views/posekeydrag.h"
 #include "views/themedicon.h"
 
 #include <QAction>
+#include <QKeySequence>
 #include <QMouseEvent>
 #include <QPaintEvent>
 #include <QPainter>
@@ -69,6 +71,14 @@ PreviewView::PreviewView(Document *document, Playhead *playhead, QWidget *parent
         unsetCursor();
         update();
     });
+    m_transparentAction = new QAction(tr("&Transparent Background"), this);
+    m_transparentAction->setObjectName(QStringLiteral("transparentPreviewAction"));
+    m_transparentAction->setCheckable(true);
+    m_transparentAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_B));
+    m_transparentAction->setToolTip(
+        tr("Show the cartoon without its background, over a checkerboard, as a transparent sticker exports it"));
+    m_transparentAction->setStatusTip(m_transparentAction->toolTip());
+    connect(m_transparentAction, &QAction::toggled, m_renderer, &PreviewRenderer::setTransparent);
     if (m_playhead) {
         connect(m_playhead, &Playhead::playingChanged, this, [this] {
             m_hovered = -1;
@@ -169,6 +179,8 @@ void PreviewView::paintCard(QPainter &painter, const QRect &area) const
         return;
     }
     painter.fillRect(target.translated(2, 3), QColor(0, 0, 0, 40));
+    if (frame.transparent)
+        paintCheckerboard(&painter, target.toRect());
     // While a resize waits for its picture, the last one is stretched over the card.
     painter.setRenderHint(QPainter::SmoothPixmapTransform, frame.image.size() != m_renderer->imageSize());
     painter.drawImage(target, frame.image);

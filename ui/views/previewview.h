@@ -27,6 +27,9 @@ class PoseKeyDrag;
 // With "Edit Pose" on (editPoseAction()), the control points a pose key frame moves (mouth
 // corners and lips, lids, brows, the chin for the jaw) show as handles; dragging one sets a pose
 // key at the playhead's time (thesis 2.2.4), one drag one undo step.
+//
+// With "Transparent Background" on (transparentAction()), the cartoon is drawn without its
+// background over a checkerboard, as a transparent sticker or WebM exports it.
 class PreviewView : public QWidget
 {
     Q_OBJECT
@@ -49,6 +52,8 @@ public:
 
     // A checkable action toggling the pose handles.
     QAction *editPoseAction() const { return m_editPoseAction; }
+    // A checkable action toggling the transparent view (off at first; the window remembers it).
+    QAction *transparentAction() const { return m_transparentAction; }
     // Whether the handles are shown: "Edit Pose" on, a face, and the playhead not playing.
     bool isEditingPose() const;
     // Where the handle of point `id` ("8.4", "2.1", ...) is drawn now, in widget coordinates;
@@ -79,6 +84,7 @@ private:
     QPointer<Playhead> m_playhead;
     PreviewRenderer *m_renderer;
     QAction *m_editPoseAction;
+    QAction *m_transparentAction;
     std::unique_ptr<PoseKeyDrag> m_drag;
     QPointF m_dragStart; // the press, in photo pixels before head motion
     QTransform m_dragHead; // photoToWidget() at the press

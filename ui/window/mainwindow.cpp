@@ -161,6 +161,7 @@ void MainWindow::restoreSettings()
         m_layout->firstRun();
     m_splitter->restoreState(settings.splitterState());
     m_showIdsAction->setChecked(settings.showPointIds());
+    m_previewView->transparentAction()->setChecked(settings.transparentPreview());
 }
 
 void MainWindow::saveSettings()

@@ -8,6 +8,7 @@
 #include "render/style.h"
 #include "views/displaynames.h"
 #include "views/photoview.h"
+#include "views/previewview.h"
 #include "views/themedicon.h"
 #include "window/detectionstepsui.h"
 #include "window/questions.h"
@@ -130,6 +131,8 @@ void MainWindow::createActions()
         m_photoView->setShowPointIds(show);
         Settings().setShowPointIds(show);
     });
+    connect(m_previewView->transparentAction(), &QAction::toggled, this,
+        [](bool transparent) { Settings().setTransparentPreview(transparent); });
 
     m_aboutAction = make(QStringLiteral("actionAbout"), tr("&About Toonface"));
     m_aboutAction->setMenuRole(QAction::AboutRole);
@@ -174,6 +177,7 @@ void MainWindow::createMenus()
     view->addAction(m_zoomFaceAction);
     view->addSeparator();
     view->addAction(m_showIdsAction);
+    view->addAction(m_previewView->transparentAction());
     view->addSeparator();
     m_stepsUi->install(view);
 

@@ -21,6 +21,7 @@ const QString recentFiles = QStringLiteral("files/recent");
 const QString lastDirectory = QStringLiteral("files/lastDirectory");
 const QString autosaveInterval = QStringLiteral("autosave/intervalSeconds");
 const QString showPointIds = QStringLiteral("view/showPointIds");
+const QString transparentPreview = QStringLiteral("view/transparentPreview");
 const QString detectionMethod = QStringLiteral("detection/method");
 const QString overlayOpacity = QStringLiteral("view/overlayOpacity");
 const QString cameraDescription = QStringLiteral("capture/camera");
@@ -132,6 +133,16 @@ bool Settings::showPointIds() const
 void Settings::setShowPointIds(bool show)
 {
     m_settings.setValue(key::showPointIds, show);
+}
+
+bool Settings::transparentPreview() const
+{
+    return m_settings.value(key::transparentPreview, false).toBool();
+}
+
+void Settings::setTransparentPreview(bool transparent)
+{
+    m_settings.setValue(key::transparentPreview, transparent);
 }
 
 QString Settings::detectionMethod() const

@@ -44,6 +44,10 @@ public:
     bool showPointIds() const;
     void setShowPointIds(bool show);
 
+    // Whether the cartoon preview leaves out the background (over a checkerboard); default off.
+    bool transparentPreview() const;
+    void setTransparentPreview(bool transparent);
+
     // The method the editor detects faces with: "auto" (default), "classic" or "landmarks"
     // (detectionMethodName()); an unknown stored name reads as "auto".
     QString detectionMethod() const;
