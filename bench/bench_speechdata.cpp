@@ -75,9 +75,8 @@ QStringList heldOutSentences()
             QStringLiteral("老李很少给小马打电话。"), QStringLiteral("一个人不是一座孤岛。")};
 }
 
-// A synthetic recording: the script spoken in `v`, with leading and trailing silence, a pause
-// the script does not mark, and white noise at 20 dB SNR; `truth` gets its syllable onsets.
-Audio syntheticRecording(const Script &script, const Voice &v, quint32 seed, std::vector<double> *truth)
+Audio syntheticRecording(
+    const Script &script, const Voice &v, quint32 seed, std::vector<double> *truth, double snrDb, int *pausedBefore)
 {
     TtsOptions o;
     o.voice = QString::fromLatin1(v.voice);
@@ -89,6 +88,8 @@ Audio syntheticRecording(const Script &script, const Voice &v, quint32 seed, std
     const double lead = 0.3 + 0.6 * rng.generateDouble(), trail = 0.2 + 0.5 * rng.generateDouble();
     const int pauseAfter = 1 + int(rng.bounded(std::max(1, int(script.syllables.size()) - 2)));
     const double pause = 0.25 + 0.3 * rng.generateDouble();
+    if (pausedBefore)
+        *pausedBefore = pauseAfter;
     const double cut = r.units[pauseAfter].start;
     Audio out;
     out.samples.fill(0.0f, qsizetype(lead * kSpeechSampleRate));
@@ -101,7 +102,7 @@ Audio syntheticRecording(const Script &script, const Voice &v, quint32 seed, std
     for (float s : spoken.samples)
         power += double(s) * s;
     power /= std::max<qsizetype>(spoken.samples.size(), 1);
-    const double sigma = std::sqrt(power / 100.0); // 20 dB
+    const double sigma = std::sqrt(power / std::pow(10.0, snrDb / 10));
     for (float &s : out.samples) {
         // Box-Muller
         const double u1 = std::max(rng.generateDouble(), 1e-12), u2 = rng.generateDouble();

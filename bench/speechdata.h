@@ -73,8 +73,10 @@ extern const Voice kHeldOutVoices[6];
 QStringList heldOutSentences();
 
 // A synthetic recording: the script spoken in `v`, with leading and trailing silence, a pause
-// the script does not mark, and white noise at 20 dB SNR; `truth` gets its syllable onsets.
-Audio syntheticRecording(const Script &script, const Voice &v, quint32 seed, std::vector<double> *truth);
+// the script does not mark, and white noise `snrDb` under the speech; `truth` gets its syllable
+// onsets, `pausedBefore` (when given) the syllable the pause comes before.
+Audio syntheticRecording(const Script &script, const Voice &v, quint32 seed, std::vector<double> *truth,
+    double snrDb = 20, int *pausedBefore = nullptr);
 
 Script mandarin(const QString &text);
 

@@ -6,21 +6,42 @@
 #include <QStringList>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 namespace toonface {
 
 namespace {
 
-// Whether a syllable begins with a long noise: a fricative, an affricate or an aspirated stop.
-bool hasNoisyInitial(const QString &pinyin)
+// Whether a syllable begins with a voiceless initial: a fricative, an affricate or a stop
+// (Mandarin's b, d, g are voiceless too; their closure after a pause is silence).
+bool hasVoicelessInitial(const QString &pinyin)
 {
     const std::optional<PinyinParts> parts = splitPinyinSyllable(pinyin);
-    static const QStringList noisy
-        = {QStringLiteral("h"), QStringLiteral("f"), QStringLiteral("s"), QStringLiteral("sh"), QStringLiteral("x"),
-            QStringLiteral("c"), QStringLiteral("ch"), QStringLiteral("q"), QStringLiteral("k"), QStringLiteral("p"),
-            QStringLiteral("t"), QStringLiteral("j"), QStringLiteral("z"), QStringLiteral("zh")};
-    return parts && noisy.contains(parts->initial);
+    static const QStringList voiceless = {QStringLiteral("h"), QStringLiteral("f"), QStringLiteral("s"),
+        QStringLiteral("sh"), QStringLiteral("x"), QStringLiteral("c"), QStringLiteral("ch"), QStringLiteral("q"),
+        QStringLiteral("k"), QStringLiteral("p"), QStringLiteral("t"), QStringLiteral("j"), QStringLiteral("z"),
+        QStringLiteral("zh"), QStringLiteral("b"), QStringLiteral("d"), QStringLiteral("g")};
+    return parts && voiceless.contains(parts->initial);
+}
+
+// How far above the quiet frames' energy (ln units: 4.3 dB) a frame before the vowel's rise
+// counts as the initial's heard noise. (1.0 and 2.0 gave the same onsets but one, on the
+// held-out voices at 45 dB and on every real file; 1.0 kept AISHELL's first onset nearer.)
+constexpr float kHeardAboveQuiet = 1.0f;
+
+// The first frame from `from` on whose voicing, averaged over three frames, is half or more,
+// looking at most `frames` on (-1 when none).
+int voicedFrom(const SpeechFeatures &a, int from, int frames)
+{
+    for (int t = from; t <= from + frames && t + 2 < a.frames; ++t) {
+        double voiced = 0;
+        for (int d = 0; d < 3; ++d)
+            voiced += a.voicing[size_t(t + d)] / 3.0;
+        if (voiced >= 0.5)
+            return t;
+    }
+    return -1;
 }
 
 } // namespace
@@ -28,14 +49,13 @@ bool hasNoisyInitial(const QString &pinyin)
 void moveOnsetsOfHiddenInitials(const SpeechFeatures &a, const OnsetSignals &sig, const Script &script,
     const TtsResult &reference, double pace, AlignResult *r)
 {
-    // Only noise within 30 dB of the speech (6.9 ln units) can hide such an initial: in a
-    // cleaner recording its noise is heard, and a pause before it is silence.
-    if (a.speechLevel - a.noiseFloor >= 6.9f)
-        return;
+    // Noise within 30 dB of the speech (6.9 ln units) can hide a whole initial; in a cleaner
+    // recording its noise is heard, though not in the mid band the pauses are found by.
+    const bool noisy = a.speechLevel - a.noiseFloor < 6.9f;
     for (qsizetype k = 0; k < r->syllables.size(); ++k) {
         AlignedSyllable &s = r->syllables[k];
         const TtsUnit &u = reference.units[k];
-        if (!hasNoisyInitial(script.syllables[k].pinyin) || u.phonemes.size() < 2)
+        if (!hasVoicelessInitial(script.syllables[k].pinyin) || u.phonemes.size() < 2)
             continue;
         const int onset = a.frameAt(s.start + 0.5 * SpeechFeatures::kHop);
         int pauseEnd = -1;
@@ -46,19 +66,39 @@ void moveOnsetsOfHiddenInitials(const SpeechFeatures &a, const OnsetSignals &sig
             }
         if (pauseEnd < 0)
             continue;
-        double voiced = 0;
-        for (int t = pauseEnd + 1; t <= pauseEnd + 3; ++t)
-            voiced += a.voicing[size_t(std::clamp(t, 0, a.frames - 1))] / 3.0;
-        if (voiced < 0.5)
+        // The initial's length in the reference at the speaker's pace.
+        const double initial = std::min((u.phonemes[1].start - u.start) * pace, 0.25);
+        const int initialFrames = int(std::ceil(initial / SpeechFeatures::kHop));
+        const double earliestAfterPrevious = k > 0 ? r->syllables[k - 1].start + kShortestSyllable : 0.0;
+        if (!noisy) {
+            // A fricative's or an affricate's noise lies mostly above the mid band (x, q, j,
+            // ch, h): the pause seems to run up to the vowel, and the onset lands there, late
+            // by the noise (50-80 ms on the held-out voices at 45 dB, the first syllable of a
+            // sentence most of all). The whole band's energy hears it: the onset moves back
+            // over the frames before it that stand above the quiet ones, at most the initial's
+            // length.
+            int t = onset - 1;
+            const int stop = std::max(onset - initialFrames - 3, 0);
+            while (t >= stop && a.logEnergy[size_t(t)] > a.noiseFloor + kHeardAboveQuiet)
+                --t;
+            const double heard = a.time(t + 1) - 0.5 * SpeechFeatures::kHop;
+            s.start = std::min(s.start, std::max(heard, earliestAfterPrevious));
+            continue;
+        }
+        // In noise, the vowel's start is what is heard: the first voiced stretch from the
+        // pause's end on. Voiced right away, the whole initial is hidden in the pause (an h of
+        // 150 ms in a slow voice); voiced later, only the initial's loudest part was heard (an
+        // affricate's or a fricative's end, a stop's burst) and the onset lands the rest late
+        // (30-75 ms on the held-out voices, first syllables and those after a pause). The
+        // onset moves to the initial's length before the vowel, never before the pause began.
+        const int vowel = voicedFrom(a, pauseEnd + 1, initialFrames + 3);
+        if (vowel < 0)
             continue;
         int pauseStart = pauseEnd;
         while (pauseStart > 0 && sig.isPause(pauseStart - 1))
             --pauseStart;
-        const double initial = std::min((u.phonemes[1].start - u.start) * pace, 0.25);
-        const double earliest = std::max(a.time(pauseStart) - 0.5 * SpeechFeatures::kHop,
-            k > 0 ? r->syllables[k - 1].start + kShortestSyllable : 0.0);
-        const double moved
-            = std::max(std::min(s.start, a.time(pauseEnd + 1) - 0.5 * SpeechFeatures::kHop) - initial, earliest);
+        const double earliest = std::max(a.time(pauseStart) - 0.5 * SpeechFeatures::kHop, earliestAfterPrevious);
+        const double moved = std::max(a.time(vowel) - 0.5 * SpeechFeatures::kHop - initial, earliest);
         s.start = std::min(s.start, moved);
     }
 }

@@ -8,15 +8,16 @@
 
 namespace toonface {
 
-// The aligner's correction for initials it cannot hear. A fricative, affricate or aspirated
-// initial after a pause is 20 dB or more quieter than its vowel: in a noisy recording (noise
-// within 30 dB of the speech) its noise is lost in the pause's, the pause seems to run up to
-// the vowel, and the onset lands on the vowel's rise, late by the whole initial (an h of 150 ms
-// in a slow voice). Where the sound right after such an onset is already voiced, the initial
-// lies hidden in the pause: the onset moves back by the initial's length in the reference at
-// the speaker's pace, never before the pause begins. Where the initial's noise is heard, the
-// pause ends at it and the sound after the onset is voiceless; in a cleaner recording the
-// pause is silence: nothing moves.
+// The aligner's correction for the initials it cannot hear after a pause. A voiceless
+// initial (a fricative, an affricate, a stop) after a pause is far quieter than its vowel, and
+// its noise lies mostly above the mid band the pauses are found by: the pause seems to run up
+// to the vowel, or to the initial's loudest part, and the onset lands late by the rest (50-100
+// ms for the first syllable of a sentence; an h of 150 ms in a slow voice). In a noisy
+// recording (noise within 30 dB of the speech) the vowel's start is what is heard: the onset
+// moves to the initial's length in the reference, at the speaker's pace, before the first
+// voiced frame, never before the pause begins. In a cleaner recording the initial's noise
+// stands above the quiet in the whole band: the onset moves back over the frames that do, at
+// most the initial's length.
 // `pace` is the recording's speech over the reference's; `reference` is the script's rendering
 // the recording `a` (its signals `sig`) was aligned against, one unit per syllable of `r`.
 void moveOnsetsOfHiddenInitials(const SpeechFeatures &a, const OnsetSignals &sig, const Script &script,

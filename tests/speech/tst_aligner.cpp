@@ -512,6 +512,50 @@ private Q_SLOTS:
         QVERIFY2(std::abs(error) <= 80, qPrintable(QStringLiteral("很 off by %1 ms").arg(error)));
     }
 
+    // The first syllable of a recording and the one after a pause the script does not mark,
+    // each with a voiceless initial: its noise lies above the mid band the pauses are found by
+    // (and under the noise of a noisy recording), so the pause seemed to run up to the vowel
+    // and the onset landed there, 40-105 ms late (a mouth late after every pause). Voices the
+    // held-out figures are not measured on, in a noisy (20 dB) and a clean (45 dB) recording.
+    void voicelessInitialAfterAPause_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("voice");
+        QTest::addColumn<int>("rate");
+        QTest::addColumn<double>("snrDb");
+        const QString question = QStringLiteral("这个问题很难回答，请你再说一遍。");
+        QTest::newRow("zh f2 noisy") << question << QStringLiteral("cmn-latn-pinyin+f2") << 140 << 20.0;
+        QTest::newRow("zh klatt noisy") << question << QStringLiteral("cmn-latn-pinyin+klatt") << 120 << 20.0;
+        QTest::newRow("q, t f4 noisy") << QStringLiteral("请你再说一遍，这个问题很难回答。")
+                                       << QStringLiteral("cmn-latn-pinyin+f4") << 180 << 20.0;
+        QTest::newRow("ch m3 noisy") << QStringLiteral("春眠不觉晓，处处闻啼鸟。")
+                                     << QStringLiteral("cmn-latn-pinyin+m3") << 230 << 20.0;
+        QTest::newRow("ch f2 clean") << QStringLiteral("春眠不觉晓，处处闻啼鸟。")
+                                     << QStringLiteral("cmn-latn-pinyin+f2") << 140 << 45.0;
+        const QString morning = QStringLiteral("小明每天早上六点起床，然后去学校上课。");
+        QTest::newRow("x, h f4 clean") << morning << QStringLiteral("cmn-latn-pinyin+f4") << 180 << 45.0;
+        QTest::newRow("x, h klatt clean") << morning << QStringLiteral("cmn-latn-pinyin+klatt") << 120 << 45.0;
+    }
+    void voicelessInitialAfterAPause()
+    {
+        QFETCH(QString, text);
+        QFETCH(QString, voice);
+        QFETCH(int, rate);
+        QFETCH(double, snrDb);
+        const Script script = mandarin(text);
+        std::vector<double> truth;
+        int paused = 0;
+        const Audio rec = recording(script, {rate, 50, 50, voice}, snrDb, 3, &truth, &paused);
+        const AlignResult r = alignScript(rec, script);
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        for (const int k : {0, paused}) {
+            const double error = (r.syllables[k].start - truth[size_t(k)]) * 1000;
+            QVERIFY2(std::abs(error) <= 35,
+                qPrintable(
+                    QStringLiteral("%1 (syllable %2) off by %3 ms").arg(script.syllables[k].text).arg(k).arg(error)));
+        }
+    }
+
     // A pause the script does not mark with a loud breath in it (noise 10 dB under the
     // speech, 0.2 s, between two quiet stretches), the phrase before it spoken as a phrase's
     // end: the breath belongs to the pause. Counted as speech, it split the pause and drew the
