@@ -4,8 +4,10 @@
 #include "anim/timelineevaluator.h"
 #include "export/smilaudio.h"
 #include "export/smilchannels.h"
+#include "export/smilhidden.h"
 #include "export/smilkeys.h"
 #include "export/smilreduce.h"
+#include "export/smilscale.h"
 #include "export/smilutil.h"
 #include "export/svgnumbers.h"
 #include "export/svgxml.h"
@@ -16,6 +18,7 @@
 
 #include <QHash>
 #include <QMap>
+#include <QSet>
 
 #include <algorithm>
 #include <functional>
@@ -47,13 +50,18 @@ void appendTiming(QByteArray &out, const std::optional<Timing> &timing)
     appendFixed(out, y2, 3);
 }
 
-// The animation element of one channel's keys, or an empty array when it never moves.
+bool moves(const ChannelKeys &k)
+{
+    return k.times.size() > 2 || (k.timings.size() == 1 && k.timings.first());
+}
+
+// The animation element of one channel's keys, or an empty array when it never moves. `c`'s
+// decimals are those its values are written with (one fewer on an element in tenths).
 QByteArray animationElement(const Channel &c, const ChannelKeys &k, const Grid &grid, const QByteArray &dur)
 {
     QByteArray out;
-    const bool moves = k.times.size() > 2 || (k.timings.size() == 1 && k.timings.first());
     const bool head = c.part < 0;
-    if (!moves && !head)
+    if (!moves(k) && !head)
         return out;
     if (head) {
         out += "<animateTransform attributeName=\"transform\" type=\"";
@@ -64,7 +72,7 @@ QByteArray animationElement(const Channel &c, const ChannelKeys &k, const Grid &
         out += "<animate attributeName=\"" + c.attribute.toLatin1() + "\" additive=\"sum\"";
     }
     out += " dur=\"" + dur + "\" fill=\"freeze\"";
-    if (!moves) {
+    if (!moves(k)) {
         out += " values=\"";
         appendValue(out, c, k.values.constData());
         out += "\"/>";
@@ -158,17 +166,29 @@ bool smilDocument(const Drawing &d, const TimelineEvaluator &evaluator, const Ti
         }
         forEachParallel(
             keys.size(), [&](qsizetype i) { reduceKeys(d.channels[keys[i].channel], options.reduction, &keys[i]); });
+        dropHiddenKeys(d.channels, keys);
     }
+
+    // The moving parts drawn in tenths of a pixel, their values whole numbers (smilscale.h).
+    XmlNode document = d.document;
+    QSet<int> animated;
+    for (const ChannelKeys &k : keys) {
+        if (d.channels[k.channel].part >= 0 && moves(k))
+            animated.insert(d.channels[k.channel].part);
+    }
+    const QSet<int> inTenths = writeInTenths(document, d.parts, d.channels, animated);
 
     QHash<QByteArray, QByteArray> animations; // element id -> its animation elements
     QByteArray head;
     bool headMoves = false;
     for (const ChannelKeys &k : keys) {
-        const Channel &c = d.channels[k.channel];
+        Channel c = d.channels[k.channel];
+        if (inTenths.contains(c.part))
+            --c.decimals;
         const QByteArray element = animationElement(c, k, grid, dur);
         if (c.part < 0) {
             head += element;
-            headMoves = headMoves || k.times.size() > 2 || (k.timings.size() == 1 && k.timings.first());
+            headMoves = headMoves || moves(k);
         } else if (!element.isEmpty()) {
             animations[d.parts[c.part].id.toLatin1()] += element;
         }
@@ -190,7 +210,7 @@ bool smilDocument(const Drawing &d, const TimelineEvaluator &evaluator, const Ti
     const bool withPlayer = standalone && !audio.uri.isEmpty() && duration > 0;
     if (standalone)
         *out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-    const XmlNode *root = &d.document;
+    const XmlNode *root = &document;
     writeXml(*out, *root, [&](const XmlNode &n, QByteArray *first, QByteArray *last) {
         if (&n == root) {
             if (standalone)

@@ -116,6 +116,51 @@ private Q_SLOTS:
         QVERIFY(implicit > 0);
     }
 
+    // The moving parts are drawn in tenths of a pixel (smilscale.h): a path or circle that
+    // moves carries scale(.1) and its values are whole numbers, except a part that a clip path
+    // uses (the eye outline clips the eyeball: the clip would take the scale too), which keeps
+    // its pixels and decimals. The rebuilt poses (poseRebuiltFromSmilMatchesEvaluator) and the
+    // browser's frames (tst_browser) show that the drawing is the same.
+    void movingPartsAreDrawnInTenths()
+    {
+        const Node doc = document(exported());
+        QSet<QString> referenced;
+        for (const Node *use : all(doc, "use"))
+            referenced.insert(use->attribute(QStringLiteral("xlink:href")).mid(1));
+        QVERIFY(referenced.contains(QStringLiteral("eye-left")));
+        static const QRegularExpression decimal(QStringLiteral("\\d\\.|\\.\\d"));
+        int inTenths = 0, inPixels = 0;
+        for (const char *name : {"path", "circle"}) {
+            for (const Node *n : all(doc, name)) {
+                const QString id = n->attribute(QStringLiteral("id"));
+                QStringList values;
+                for (const Node &c : n->children) {
+                    if (c.name == QLatin1StringView("animate"))
+                        values.append(c.attribute(QStringLiteral("values")));
+                }
+                const QString transform = n->attribute(QStringLiteral("transform"));
+                if (values.isEmpty()) {
+                    QVERIFY2(transform.isEmpty(), qPrintable(id)); // still parts stay as they are
+                    continue;
+                }
+                if (referenced.contains(id)) {
+                    QVERIFY2(transform.isEmpty(), qPrintable(id));
+                    QVERIFY2(decimal.match(values.join(QLatin1Char(';'))).hasMatch(), qPrintable(id));
+                    ++inPixels;
+                    continue;
+                }
+                QCOMPARE(transform, QStringLiteral("scale(.1)"));
+                for (const QString &v : values)
+                    QVERIFY2(!decimal.match(v).hasMatch(), qPrintable(id + QLatin1Char(' ') + v.left(200)));
+                ++inTenths;
+            }
+        }
+        QVERIFY(findId(doc, QStringLiteral("mouth-upper-lip"))->attribute(QStringLiteral("transform"))
+            == QLatin1StringView("scale(.1)"));
+        QVERIFY(inTenths >= 5);
+        QVERIFY(inPixels >= 2);
+    }
+
     // The drawing without its animations is SvgFace's drawing of the pose at time 0.
     void drawingIsSvgFacesAtTimeZero_data()
     {
@@ -139,9 +184,37 @@ private Q_SLOTS:
             QCOMPARE(staticGot->children[i].name, staticWant->children[i].name);
             QCOMPARE(staticGot->children[i].attributes, staticWant->children[i].attributes);
         }
-        // The whole document too, element for element.
+        // The whole document too, element for element; an element drawn in tenths of a pixel
+        // (its transform scale(.1)) has the same geometry and stroke width, ten times larger.
         std::function<void(const Node &, const Node &)> same = [&](const Node &a, const Node &b) {
             QCOMPARE(a.name, b.name);
+            QString why;
+            const double scale = ownScale(a, &why);
+            QVERIFY2(why.isEmpty(), qPrintable(why));
+            if (scale != 1) {
+                QCOMPARE(scale, 0.1);
+                QCOMPARE(a.attributes.size(), b.attributes.size() + 1);
+                for (const auto &[key, value] : b.attributes) {
+                    const QString got = a.attribute(key);
+                    if (key == QLatin1StringView("d")) {
+                        const auto gotPath = rawPath(got), wantPath = rawPath(value);
+                        QVERIFY(gotPath && wantPath);
+                        QCOMPARE(gotPath->commands, wantPath->commands);
+                        QVector<double> scaled = gotPath->numbers;
+                        for (double &x : scaled)
+                            x *= scale;
+                        QVERIFY2(maxDifference(scaled, wantPath->numbers) < 1e-6, qPrintable(key + got));
+                    } else if (QStringList {QStringLiteral("stroke-width"), QStringLiteral("cx"), QStringLiteral("cy"),
+                                   QStringLiteral("r"), QStringLiteral("rx"), QStringLiteral("ry")}
+                                   .contains(key)) {
+                        QVERIFY2(std::abs(got.toDouble() * scale - value.toDouble()) < 1e-6, qPrintable(key + got));
+                    } else {
+                        QCOMPARE(got, value);
+                    }
+                }
+                QCOMPARE(a.children.size(), b.children.size());
+                return;
+            }
             QCOMPARE(a.attributes, b.attributes);
             QCOMPARE(a.children.size(), b.children.size());
             for (qsizetype i = 0; i < a.children.size(); ++i)
