@@ -164,9 +164,17 @@ bool smilDocument(const Drawing &d, const TimelineEvaluator &evaluator, const Ti
                 return false;
             report(options, 0.9 * double(g + 1) / double(groups.size()));
         }
-        forEachParallel(
-            keys.size(), [&](qsizetype i) { reduceKeys(d.channels[keys[i].channel], options.reduction, &keys[i]); });
+        // The radii first: where a circle hides follows from its radius' keys as written; its
+        // position's keys there go before the reduction, which then has fewer to look at.
+        auto reduce = [&](bool radii) {
+            forEachParallel(keys.size(), [&](qsizetype i) {
+                if (isRadius(d.channels[keys[i].channel]) == radii)
+                    reduceKeys(d.channels[keys[i].channel], options.reduction, &keys[i]);
+            });
+        };
+        reduce(true);
         dropHiddenKeys(d.channels, keys);
+        reduce(false);
     }
 
     // The moving parts drawn in tenths of a pixel, their values whole numbers (smilscale.h).

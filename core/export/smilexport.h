@@ -87,7 +87,10 @@ struct AnimationExportOptions
 // SvgFace::parts(evaluate(t)) at all t; then the keys that their neighbours' interpolation
 // gives within `reduction` are dropped (their intervals merged under one fitted keySpline,
 // whose x control points may then differ from 1/3 and 2/3). Numbers are written to 0.1 px
-// (angles 0.01 degree, scales 0.0001), key times to at most 0.1 ms.
+// (angles 0.01 degree, scales 0.0001), key times to at most 0.1 ms. A moving path or circle
+// that neither clips nor is clipped is drawn in tenths of a pixel: transform="scale(.1)", its
+// geometry and stroke width ten times larger, its values whole numbers (smilscale.h). The
+// position of a circle is not keyed while its radius is 0 (smilhidden.h).
 //
 // With sound, <metadata> also holds
 //   <tf:audio href="URI" offset="s" duration="s"/>

@@ -4,6 +4,13 @@
 
 namespace toonface::smil {
 
+bool isRadius(const Channel &c)
+{
+    return c.part >= 0 && c.kind == ChannelKind::Number
+        && (c.attribute == QLatin1StringView("r") || c.attribute == QLatin1StringView("rx")
+            || c.attribute == QLatin1StringView("ry"));
+}
+
 QVector<std::pair<qint64, qint64>> zeroSpans(const Channel &radius, const ChannelKeys &keys)
 {
     // Between two keys the value stays between theirs (keySplines' progress is within [0, 1]),
@@ -28,19 +35,17 @@ void dropHiddenKeys(const QVector<Channel> &channels, QVector<ChannelKeys> &keys
     QHash<int, QVector<std::pair<qint64, qint64>>> hiddenOf; // part -> where it draws nothing
     for (const ChannelKeys &k : keys) {
         const Channel &c = channels[k.channel];
-        if (c.part >= 0 && c.kind == ChannelKind::Number
-            && (c.attribute == QLatin1StringView("r") || c.attribute == QLatin1StringView("rx")
-                || c.attribute == QLatin1StringView("ry")))
+        if (isRadius(c))
             hiddenOf[c.part] += zeroSpans(c, k);
     }
     for (ChannelKeys &k : keys) {
         const Channel &c = channels[k.channel];
         const auto found = hiddenOf.constFind(c.part);
-        if (c.part < 0 || found == hiddenOf.constEnd() || c.attribute == QLatin1StringView("r")
-            || c.attribute == QLatin1StringView("rx") || c.attribute == QLatin1StringView("ry"))
+        if (c.part < 0 || found == hiddenOf.constEnd() || isRadius(c))
             continue;
         auto inside = [&](qint64 a, qint64 b) {
-            return std::any_of(found->cbegin(), found->cend(), [&](const auto &s) { return s.first <= a && b <= s.second; });
+            return std::any_of(
+                found->cbegin(), found->cend(), [&](const auto &s) { return s.first <= a && b <= s.second; });
         };
         // Key i goes when the interval from the last key kept to key i + 1 is all hidden; the
         // interval that then ends at the next key kept is linear (its shape is never seen).

@@ -12,8 +12,11 @@ namespace toonface::smil {
 // of such a part's other channels (cx, cy) whose intervals on both sides lie where a radius
 // channel ("r", "rx" or "ry") of the same part is 0 or less throughout, so that a merged
 // interval never reaches a time at which the part shows; the keys kept keep their values and
-// times. `keys` holds the keys of every channel (buildGroup, reduceKeys).
+// times. `keys` holds the keys of every channel (buildGroup), the radii's already reduced.
 void dropHiddenKeys(const QVector<Channel> &channels, QVector<ChannelKeys> &keys);
+
+// Whether the channel is the radius of a circle or ellipse ("r", "rx", "ry").
+bool isRadius(const Channel &c);
 
 // The spans of grid time (from, to) over which channel `radius` keyed as `keys` is 0 or less.
 QVector<std::pair<qint64, qint64>> zeroSpans(const Channel &radius, const ChannelKeys &keys);

@@ -399,7 +399,14 @@ inline double worstDistance(const Node &doc, const QVector<FacePart> &parts, dou
             *where = QStringLiteral("%1 is missing").arg(p.id);
             return std::numeric_limits<double>::infinity();
         }
+        // A circle of radius 0 draws nothing: where it is then does not matter (smilhidden.h),
+        // only that its radius is 0.
+        static const QStringList radii {QStringLiteral("r"), QStringLiteral("rx"), QStringLiteral("ry")};
+        const bool hidden = std::any_of(radii.cbegin(), radii.cend(),
+            [&](const QString &r) { return p.geometry.contains(r) && numbersOf(p.geometry.value(r)).value(0) <= 0; });
         for (auto it = p.geometry.cbegin(); it != p.geometry.cend(); ++it) {
+            if (hidden && !radii.contains(it.key()))
+                continue;
             const QVector<double> want = it.key() == QLatin1StringView("d")
                 ? absolute(rawPath(it.value()).value_or(RawPath {})).numbers
                 : numbersOf(it.value());
