@@ -55,8 +55,7 @@ bool moves(const ChannelKeys &k)
     return k.times.size() > 2 || (k.timings.size() == 1 && k.timings.first());
 }
 
-// The animation element of one channel's keys, or an empty array when it never moves. `c`'s
-// decimals are those its values are written with (one fewer on an element in tenths).
+// The animation element of one channel's keys, or an empty array when it never moves.
 QByteArray animationElement(const Channel &c, const ChannelKeys &k, const Grid &grid, const QByteArray &dur)
 {
     QByteArray out;
@@ -108,6 +107,7 @@ struct Drawing
     XmlNode document; // SvgFace::svg() at time 0
     QVector<FacePart> parts; // at time 0
     QVector<Channel> channels;
+    QSet<int> inFifths; // parts drawn in fifths of a pixel where they move (smilscale.h)
 };
 
 bool prepareDrawing(const Timeline &timeline, const MouthShapeSet &shapes, const TimelineEvaluator &evaluator,
@@ -127,6 +127,15 @@ bool prepareDrawing(const Timeline &timeline, const MouthShapeSet &shapes, const
         return false;
     }
     d->channels = makeChannels(d->parts, neutralHead, viewBoxOf(d->document));
+    // Their values are whole fifths of a pixel: rounded so from the start (the keys' values in
+    // tenths, every other one).
+    d->inFifths = partsInFifths(d->document, d->parts, d->channels);
+    for (Channel &c : d->channels) {
+        if (d->inFifths.contains(c.part)) {
+            Q_ASSERT(c.decimals == 1);
+            c.grain = 10 / kUnitsPerPixel;
+        }
+    }
     findTracks(d->channels, d->svg, timeline, shapes);
     if (timeline.headKeys().isEmpty()) {
         for (Channel &c : d->channels) {
@@ -177,23 +186,32 @@ bool smilDocument(const Drawing &d, const TimelineEvaluator &evaluator, const Ti
         reduce(false);
     }
 
-    // The moving parts drawn in tenths of a pixel, their values whole numbers (smilscale.h).
+    // The moving parts drawn in fifths of a pixel, their values whole numbers (smilscale.h).
     XmlNode document = d.document;
-    QSet<int> animated;
+    QSet<int> inFifths;
     for (const ChannelKeys &k : keys) {
-        if (d.channels[k.channel].part >= 0 && moves(k))
-            animated.insert(d.channels[k.channel].part);
+        if (d.inFifths.contains(d.channels[k.channel].part) && moves(k))
+            inFifths.insert(d.channels[k.channel].part);
     }
-    const QSet<int> inTenths = writeInTenths(document, d.parts, d.channels, animated);
+    writeInFifths(document, d.parts, d.channels, inFifths);
 
     QHash<QByteArray, QByteArray> animations; // element id -> its animation elements
     QByteArray head;
     bool headMoves = false;
     for (const ChannelKeys &k : keys) {
-        Channel c = d.channels[k.channel];
-        if (inTenths.contains(c.part))
-            --c.decimals;
-        const QByteArray element = animationElement(c, k, grid, dur);
+        const Channel &c = d.channels[k.channel];
+        QByteArray element;
+        if (inFifths.contains(c.part)) {
+            // Tenths of a pixel, every other one: whole fifths.
+            Channel fifths = c;
+            fifths.decimals = 0;
+            ChannelKeys whole = k;
+            for (qint64 &v : whole.values)
+                v /= c.grain;
+            element = animationElement(fifths, whole, grid, dur);
+        } else {
+            element = animationElement(c, k, grid, dur);
+        }
         if (c.part < 0) {
             head += element;
             headMoves = headMoves || moves(k);
@@ -454,7 +472,7 @@ struct Prepared
 std::optional<Prepared> prepare(const FaceModel &face, const Style &style, const Timeline &timeline,
     const MouthShapeSet &shapes, const AnimationExportOptions &options, QString *error)
 {
-    Prepared p {TimelineEvaluator(timeline, face, shapes), {SvgFace(face, style), {}, {}, {}}, {}};
+    Prepared p {TimelineEvaluator(timeline, face, shapes), {SvgFace(face, style), {}, {}, {}, {}}, {}};
     // Browsers clip the eyeballs by the eye outline: the skin covers for renderers that cannot
     // (SvgFace) would only add two animated paths. The frame mode is for old players: it keeps them.
     p.drawing.svg.setEyeCovers(options.mode == AnimationExportOptions::Mode::Frames);

@@ -40,98 +40,108 @@ QSet<QByteArray> referencedIds(const XmlNode &root)
     return ids;
 }
 
-void elementsById(XmlNode &n, QHash<QByteArray, XmlNode *> *out)
+template<class Node>
+void elementsById(Node &n, QHash<QByteArray, Node *> *out)
 {
     if (const QByteArray id = n.attribute("id"); !id.isEmpty())
         out->insert(id, &n);
-    for (XmlNode &c : n.children)
+    for (auto &c : n.children)
         elementsById(c, out);
 }
 
-// The attribute as ten times larger text; false when it is not one number.
-bool timesTen(const QByteArray &text, QByteArray *out)
+const Channel *channelOf(const QVector<Channel> &channels, int part, const QByteArray &attribute)
+{
+    for (const Channel &c : channels) {
+        if (c.part == part && c.attribute == QLatin1StringView(attribute))
+            return &c;
+    }
+    return nullptr;
+}
+
+// The attribute as one number; false when it is not one.
+bool oneNumber(const QByteArray &text, double *out)
 {
     QVector<double> numbers;
     QByteArray letters;
     parseNumbers(text, &numbers, &letters);
     if (numbers.size() != 1 || !letters.isEmpty())
         return false;
-    out->clear();
-    appendFixed(*out, quantize(numbers[0] * 10, 3), 3);
+    *out = numbers[0];
     return true;
+}
+
+bool drawsTheSameInFifths(const XmlNode &e, int part, const FacePart &p, const QVector<Channel> &channels)
+{
+    if (e.name != "path" && e.name != "circle" && e.name != "ellipse")
+        return false;
+    bool strokeWidth = false; // the element's own, or it strokes nothing
+    for (const auto &[key, value] : e.attributes) {
+        double number = 0;
+        if (key == "id")
+            continue;
+        if (const Channel *c = channelOf(channels, part, key)) {
+            if (c->kind != ChannelKind::Path && c->kind != ChannelKind::Number)
+                return false;
+        } else if (p.geometry.contains(QString::fromLatin1(key))) {
+            return false; // geometry that is not a channel would stay unscaled
+        } else if (key == "stroke-width") {
+            if (!oneNumber(value, &number))
+                return false;
+            strokeWidth = true;
+        } else if (plainPaint(key) && !value.contains("url(")) {
+            strokeWidth = strokeWidth || (key == "stroke" && value == "none");
+        } else {
+            return false;
+        }
+    }
+    // A stroke without a width of its own draws with the inherited one, which would shrink.
+    return strokeWidth;
 }
 
 } // namespace
 
-QSet<int> writeInTenths(
-    XmlNode &document, const QVector<FacePart> &parts, const QVector<Channel> &channels, const QSet<int> &animated)
+QSet<int> partsInFifths(const XmlNode &document, const QVector<FacePart> &parts, const QVector<Channel> &channels)
 {
     const QSet<QByteArray> referenced = referencedIds(document);
+    QHash<QByteArray, const XmlNode *> byId;
+    elementsById(document, &byId);
+    QSet<int> out;
+    for (qsizetype p = 0; p < parts.size(); ++p) {
+        const QByteArray id = parts[p].id.toLatin1();
+        const XmlNode *e = byId.value(id);
+        if (e && !referenced.contains(id) && drawsTheSameInFifths(*e, int(p), parts[p], channels))
+            out.insert(int(p));
+    }
+    return out;
+}
+
+void writeInFifths(
+    XmlNode &document, const QVector<FacePart> &parts, const QVector<Channel> &channels, const QSet<int> &which)
+{
     QHash<QByteArray, XmlNode *> byId;
     elementsById(document, &byId);
-    QHash<int, QVector<const Channel *>> channelsOf;
-    for (const Channel &c : channels) {
-        if (c.part >= 0)
-            channelsOf[c.part].append(&c);
-    }
-
-    QSet<int> done;
-    for (const int p : animated) {
-        const QByteArray id = parts[p].id.toLatin1();
-        XmlNode *e = byId.value(id);
-        if (!e || referenced.contains(id) || (e->name != "path" && e->name != "circle" && e->name != "ellipse"))
-            continue;
-        // The new text of every attribute, or nothing when the element must stay as it is.
-        std::vector<std::pair<QByteArray, QByteArray>> rewritten;
-        bool ok = true;
-        bool strokeWidth = false; // the element's own, or it strokes nothing
-        for (const auto &[key, value] : e->attributes) {
-            if (key == "id")
-                continue;
-            const auto channel = std::find_if(channelsOf[p].cbegin(), channelsOf[p].cend(),
-                [&](const Channel *c) { return c->attribute == QLatin1StringView(key); });
-            if (channel != channelsOf[p].cend()) {
-                // The geometry as the channel read it at time 0, ten times larger (to 0.001 px).
-                const Channel &c = **channel;
-                QVector<qint64> q;
-                for (double x : c.base)
-                    q.append(quantize(x * 10, 2));
-                QByteArray text;
-                if (c.kind == ChannelKind::Path)
-                    appendAbsolutePath(text, c.commands, q.constData(), 2);
-                else if (c.kind == ChannelKind::Number)
-                    appendFixed(text, q.value(0), 2);
-                else
-                    ok = false;
-                rewritten.push_back({key, text});
-            } else if (parts[p].geometry.contains(QString::fromLatin1(key))) {
-                ok = false; // geometry that is not a channel would stay unscaled
-            } else if (key == "stroke-width") {
-                QByteArray text;
-                ok = ok && timesTen(value, &text);
-                rewritten.push_back({key, text});
-                strokeWidth = true;
-            } else if (plainPaint(key) && !value.contains("url(")) {
-                strokeWidth = strokeWidth || (key == "stroke" && value == "none");
-            } else {
-                ok = false;
-            }
-            if (!ok)
-                break;
-        }
-        // A stroke without a width of its own draws with the inherited one, which would shrink.
-        if (!ok || !strokeWidth)
+    for (const int p : which) {
+        XmlNode *e = byId.value(parts[p].id.toLatin1());
+        if (!e)
             continue;
         for (auto &[key, value] : e->attributes) {
-            for (const auto &[k, v] : rewritten) {
-                if (k == key)
-                    value = v;
+            if (const Channel *c = channelOf(channels, p, key)) {
+                // The geometry as the channel read it at time 0, five times larger.
+                QVector<qint64> q;
+                for (double x : c->base)
+                    q.append(quantize(x * kUnitsPerPixel, 2));
+                value.clear();
+                if (c->kind == ChannelKind::Path)
+                    appendAbsolutePath(value, c->commands, q.constData(), 2);
+                else
+                    appendFixed(value, q.value(0), 2);
+            } else if (double width = 0; key == "stroke-width" && oneNumber(value, &width)) {
+                value.clear();
+                appendFixed(value, quantize(width * kUnitsPerPixel, 3), 3);
             }
         }
-        e->attributes.push_back({"transform", "scale(.1)"});
-        done.insert(p);
+        e->attributes.push_back({"transform", "scale(.2)"});
     }
-    return done;
 }
 
 } // namespace toonface::smil

@@ -294,8 +294,8 @@ inline Mix mixAt(const Animation &a, double t)
     return {i, i + 1, a.splines.isEmpty() ? x : splineAt(a.splines[i], x)};
 }
 
-// The uniform scale an element's own transform draws it at (an element written in tenths of a
-// pixel carries scale(.1)); 1 without one. Sets *why for any other transform, which the export
+// The uniform scale an element's own transform draws it at (an element written in fifths of a
+// pixel carries scale(.2)); 1 without one. Sets *why for any other transform, which the export
 // never writes on a part.
 inline double ownScale(const Node &e, QString *why)
 {
