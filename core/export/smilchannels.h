@@ -33,6 +33,9 @@ struct Channel
     QVector<double> base;
     int size = 0; // numbers
     int decimals = 1; // written to 10^-decimals
+    // Values are multiples of `grain` units of 10^-decimals: 2 on a part drawn in fifths of a
+    // pixel, whose values are written as whole fifths (smilscale.h).
+    int grain = 1;
     double weight = 1; // pixels per unit of its numbers
     Tracks tracks;
 };

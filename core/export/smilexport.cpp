@@ -4,8 +4,10 @@
 #include "anim/timelineevaluator.h"
 #include "export/smilaudio.h"
 #include "export/smilchannels.h"
+#include "export/smilhidden.h"
 #include "export/smilkeys.h"
 #include "export/smilreduce.h"
+#include "export/smilscale.h"
 #include "export/smilutil.h"
 #include "export/svgnumbers.h"
 #include "export/svgxml.h"
@@ -16,6 +18,7 @@
 
 #include <QHash>
 #include <QMap>
+#include <QSet>
 
 #include <algorithm>
 #include <functional>
@@ -47,13 +50,17 @@ void appendTiming(QByteArray &out, const std::optional<Timing> &timing)
     appendFixed(out, y2, 3);
 }
 
+bool moves(const ChannelKeys &k)
+{
+    return k.times.size() > 2 || (k.timings.size() == 1 && k.timings.first());
+}
+
 // The animation element of one channel's keys, or an empty array when it never moves.
 QByteArray animationElement(const Channel &c, const ChannelKeys &k, const Grid &grid, const QByteArray &dur)
 {
     QByteArray out;
-    const bool moves = k.times.size() > 2 || (k.timings.size() == 1 && k.timings.first());
     const bool head = c.part < 0;
-    if (!moves && !head)
+    if (!moves(k) && !head)
         return out;
     if (head) {
         out += "<animateTransform attributeName=\"transform\" type=\"";
@@ -64,7 +71,7 @@ QByteArray animationElement(const Channel &c, const ChannelKeys &k, const Grid &
         out += "<animate attributeName=\"" + c.attribute.toLatin1() + "\" additive=\"sum\"";
     }
     out += " dur=\"" + dur + "\" fill=\"freeze\"";
-    if (!moves) {
+    if (!moves(k)) {
         out += " values=\"";
         appendValue(out, c, k.values.constData());
         out += "\"/>";
@@ -100,6 +107,7 @@ struct Drawing
     XmlNode document; // SvgFace::svg() at time 0
     QVector<FacePart> parts; // at time 0
     QVector<Channel> channels;
+    QSet<int> inFifths; // parts drawn in fifths of a pixel where they move (smilscale.h)
 };
 
 bool prepareDrawing(const Timeline &timeline, const MouthShapeSet &shapes, const TimelineEvaluator &evaluator,
@@ -119,6 +127,15 @@ bool prepareDrawing(const Timeline &timeline, const MouthShapeSet &shapes, const
         return false;
     }
     d->channels = makeChannels(d->parts, neutralHead, viewBoxOf(d->document));
+    // Their values are whole fifths of a pixel: rounded so from the start (the keys' values in
+    // tenths, every other one).
+    d->inFifths = partsInFifths(d->document, d->parts, d->channels);
+    for (Channel &c : d->channels) {
+        if (d->inFifths.contains(c.part)) {
+            Q_ASSERT(c.decimals == 1);
+            c.grain = 10 / kUnitsPerPixel;
+        }
+    }
     findTracks(d->channels, d->svg, timeline, shapes);
     if (timeline.headKeys().isEmpty()) {
         for (Channel &c : d->channels) {
@@ -156,19 +173,48 @@ bool smilDocument(const Drawing &d, const TimelineEvaluator &evaluator, const Ti
                 return false;
             report(options, 0.9 * double(g + 1) / double(groups.size()));
         }
-        forEachParallel(
-            keys.size(), [&](qsizetype i) { reduceKeys(d.channels[keys[i].channel], options.reduction, &keys[i]); });
+        // The radii first: where a circle hides follows from its radius' keys as written; its
+        // position's keys there go before the reduction, which then has fewer to look at.
+        auto reduce = [&](bool radii) {
+            forEachParallel(keys.size(), [&](qsizetype i) {
+                if (isRadius(d.channels[keys[i].channel]) == radii)
+                    reduceKeys(d.channels[keys[i].channel], options.reduction, &keys[i]);
+            });
+        };
+        reduce(true);
+        dropHiddenKeys(d.channels, keys);
+        reduce(false);
     }
+
+    // The moving parts drawn in fifths of a pixel, their values whole numbers (smilscale.h).
+    XmlNode document = d.document;
+    QSet<int> inFifths;
+    for (const ChannelKeys &k : keys) {
+        if (d.inFifths.contains(d.channels[k.channel].part) && moves(k))
+            inFifths.insert(d.channels[k.channel].part);
+    }
+    writeInFifths(document, d.parts, d.channels, inFifths);
 
     QHash<QByteArray, QByteArray> animations; // element id -> its animation elements
     QByteArray head;
     bool headMoves = false;
     for (const ChannelKeys &k : keys) {
         const Channel &c = d.channels[k.channel];
-        const QByteArray element = animationElement(c, k, grid, dur);
+        QByteArray element;
+        if (inFifths.contains(c.part)) {
+            // Tenths of a pixel, every other one: whole fifths.
+            Channel fifths = c;
+            fifths.decimals = 0;
+            ChannelKeys whole = k;
+            for (qint64 &v : whole.values)
+                v /= c.grain;
+            element = animationElement(fifths, whole, grid, dur);
+        } else {
+            element = animationElement(c, k, grid, dur);
+        }
         if (c.part < 0) {
             head += element;
-            headMoves = headMoves || k.times.size() > 2 || (k.timings.size() == 1 && k.timings.first());
+            headMoves = headMoves || moves(k);
         } else if (!element.isEmpty()) {
             animations[d.parts[c.part].id.toLatin1()] += element;
         }
@@ -190,7 +236,7 @@ bool smilDocument(const Drawing &d, const TimelineEvaluator &evaluator, const Ti
     const bool withPlayer = standalone && !audio.uri.isEmpty() && duration > 0;
     if (standalone)
         *out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-    const XmlNode *root = &d.document;
+    const XmlNode *root = &document;
     writeXml(*out, *root, [&](const XmlNode &n, QByteArray *first, QByteArray *last) {
         if (&n == root) {
             if (standalone)
@@ -426,7 +472,7 @@ struct Prepared
 std::optional<Prepared> prepare(const FaceModel &face, const Style &style, const Timeline &timeline,
     const MouthShapeSet &shapes, const AnimationExportOptions &options, QString *error)
 {
-    Prepared p {TimelineEvaluator(timeline, face, shapes), {SvgFace(face, style), {}, {}, {}}, {}};
+    Prepared p {TimelineEvaluator(timeline, face, shapes), {SvgFace(face, style), {}, {}, {}, {}}, {}};
     // Browsers clip the eyeballs by the eye outline: the skin covers for renderers that cannot
     // (SvgFace) would only add two animated paths. The frame mode is for old players: it keeps them.
     p.drawing.svg.setEyeCovers(options.mode == AnimationExportOptions::Mode::Frames);

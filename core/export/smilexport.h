@@ -53,12 +53,13 @@ struct AnimationExportOptions
     QStringList layerFiles;
 
     // How far, in pixels, an interpolated coordinate may stray from the renderer's geometry at
-    // any time between key times; coordinates are written to 0.1 px, which adds up to 0.05.
+    // any time between key times; coordinates are written to 0.1 px, which adds up to 0.05,
+    // and those of moving paths and circles to 0.2 px (smilscale.h), up to 0.1.
     double tolerance = 0.08;
     // How much farther, in pixels, a coordinate may stray where keys are dropped: a key that
     // the interpolation between the keys around it gives within this of the animation above is
     // dropped, and timings are written to as few decimals as keep it (smilreduce.h). With the
-    // defaults no coordinate strays more than 0.08 + 0.05 + 0.3 = 0.43 px; 0 keeps every key.
+    // defaults no coordinate strays more than 0.08 + 0.1 + 0.3 = 0.48 px; 0 keeps every key.
     double reduction = 0.3;
 
     // Called now and then on the calling thread with the fraction done (0..1).
@@ -87,7 +88,10 @@ struct AnimationExportOptions
 // SvgFace::parts(evaluate(t)) at all t; then the keys that their neighbours' interpolation
 // gives within `reduction` are dropped (their intervals merged under one fitted keySpline,
 // whose x control points may then differ from 1/3 and 2/3). Numbers are written to 0.1 px
-// (angles 0.01 degree, scales 0.0001), key times to at most 0.1 ms.
+// (angles 0.01 degree, scales 0.0001), key times to at most 0.1 ms. A moving path or circle
+// that neither clips nor is clipped is drawn in fifths of a pixel: transform="scale(.2)", its
+// geometry and stroke width five times larger, its values whole numbers (smilscale.h). The
+// position of a circle is not keyed while its radius is 0 (smilhidden.h).
 //
 // With sound, <metadata> also holds
 //   <tf:audio href="URI" offset="s" duration="s"/>

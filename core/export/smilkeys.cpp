@@ -391,7 +391,9 @@ bool buildGroup(const QVector<int> &which, const QVector<Channel> &channels, con
         auto quantized = [&](qint64 n, QVector<qint64> *out) {
             const double *row = table.row(n) + starts[c];
             for (int j = 0; j < channel.size; ++j)
-                out->append(quantize(row[j] - (channel.base.isEmpty() ? 0.0 : channel.base[j]), channel.decimals));
+                out->append(channel.grain
+                    * quantize(
+                        (row[j] - (channel.base.isEmpty() ? 0.0 : channel.base[j])) / channel.grain, channel.decimals));
         };
         QVector<qint64> end;
         k.times.append(0);

@@ -13,6 +13,8 @@ list(APPEND TOONFACE_CORE_SOURCES
   export/smilchannels.h export/smilchannels.cpp
   export/smilkeys.h export/smilkeys.cpp
   export/smilreduce.h export/smilreduce.cpp
+  export/smilscale.h export/smilscale.cpp
+  export/smilhidden.h export/smilhidden.cpp
   export/smilaudio.h export/smilaudio.cpp
   export/svgnumbers.h export/svgnumbers.cpp
   export/svgxml.h export/svgxml.cpp

@@ -294,6 +294,22 @@ inline Mix mixAt(const Animation &a, double t)
     return {i, i + 1, a.splines.isEmpty() ? x : splineAt(a.splines[i], x)};
 }
 
+// The uniform scale an element's own transform draws it at (an element written in fifths of a
+// pixel carries scale(.2)); 1 without one. Sets *why for any other transform, which the export
+// never writes on a part.
+inline double ownScale(const Node &e, QString *why)
+{
+    const QString text = e.attribute(QStringLiteral("transform"));
+    if (text.isEmpty())
+        return 1;
+    const QTransform m = transformOf(text);
+    if (m.type() != QTransform::TxScale || m.m11() != m.m22()) {
+        *why = QStringLiteral("%1 has transform %2").arg(e.attribute(QStringLiteral("id")), text);
+        return 1;
+    }
+    return m.m11();
+}
+
 // The numbers of attribute `name` of element `e` at time t, with its animations applied;
 // paths in absolute coordinates. Sets *why when the values do not fit together.
 inline QVector<double> numbersAt(const Node &e, const QString &name, double t, QString *why)
@@ -332,7 +348,11 @@ inline QVector<double> numbersAt(const Node &e, const QString &name, double t, Q
             value->numbers[j] = a.additive ? value->numbers[j] + v : v;
         }
     }
-    return path ? absolute(*value).numbers : value->numbers;
+    QVector<double> out = path ? absolute(*value).numbers : value->numbers;
+    const double scale = ownScale(e, why);
+    for (double &x : out)
+        x *= scale;
+    return out;
 }
 
 inline QTransform headAt(const Node &head, double t)
@@ -379,7 +399,14 @@ inline double worstDistance(const Node &doc, const QVector<FacePart> &parts, dou
             *where = QStringLiteral("%1 is missing").arg(p.id);
             return std::numeric_limits<double>::infinity();
         }
+        // A circle of radius 0 draws nothing: where it is then does not matter (smilhidden.h),
+        // only that its radius is 0.
+        static const QStringList radii {QStringLiteral("r"), QStringLiteral("rx"), QStringLiteral("ry")};
+        const bool hidden = std::any_of(radii.cbegin(), radii.cend(),
+            [&](const QString &r) { return p.geometry.contains(r) && numbersOf(p.geometry.value(r)).value(0) <= 0; });
         for (auto it = p.geometry.cbegin(); it != p.geometry.cend(); ++it) {
+            if (hidden && !radii.contains(it.key()))
+                continue;
             const QVector<double> want = it.key() == QLatin1StringView("d")
                 ? absolute(rawPath(it.value()).value_or(RawPath {})).numbers
                 : numbersOf(it.value());
