@@ -329,12 +329,11 @@ bool refineFace(const QImage &image, bool withDebugImages, PlacedFace *out,
             || (g == PointGroup::Ears && out->head.earUsable[leftEar ? 0 : 1]))
             out->refined.setPoint(i, fromRegions.point(i));
     }
-    // Long hair the outline's searches stopped short of: the outline follows the parse's fall;
-    // a fringe: the hairline lies where the forehead's skin ends (hairoutline.h). The outline read
-    // whole from the parse (outlineHairFromParse) is not used yet: on a drawn talking face the
-    // classic tracker lost the mouth with it (tst_tracker).
+    // The hair outline and the hairline from the parse of the head where it sees the whole
+    // head (long hair to the shoulders, a fringe, a wide head of curls); elsewhere the search's
+    // outline stays, its lower ends following the parse's fall (hairoutline.h).
     const HeadParse parse = parseHead(image, out->refined);
-    followHairFall(&out->refined, parse);
+    outlineHairFromParse(&out->refined, parse);
     placeHairlineFromParse(&out->refined, parse);
     // The seed for tracking: the regions' thresholds and colours, the geometry of the points,
     // and the edge thresholds of the classic method's square around them (thesis 6.3).

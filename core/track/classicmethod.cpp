@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 namespace toonface {
@@ -149,13 +150,7 @@ public:
 
         // The head's motion since the neutral frame, from the eyeballs (thesis 6.4: the face
         // moves with them); the reserved regions are carried along.
-        std::array<QPointF, kPointCount> now = m_neutralPoints;
-        now[pt::idx("3.6")] = m_eyes[0];
-        now[pt::idx("3.5")] = m_eyes[1];
-        std::array<QPointF, kPointCount> eyesAt = m_neutralPoints;
-        eyesAt[pt::idx("3.6")] = m_neutralEyes[0];
-        eyesAt[pt::idx("3.5")] = m_neutralEyes[1];
-        const HeadMotion head = fitHeadMotion(eyesAt, now, m_stable);
+        const HeadMotion head = motionTo(m_eyes[0], m_eyes[1]);
         const double scale = head.scale();
 
         double openness[2] = {1.0, 1.0};
@@ -229,49 +224,58 @@ public:
     }
 
 private:
-    // 6.2 steps 2-5: B1' (dark: I <= t1) around each old eyeball, the regions grown from it, the
-    // eyeballs in them; step 4: the pair must still look like the eye pair (distance, tilt, a
-    // small step from the pair before), else the old pair stands in.
+    // 6.2 steps 2-3 for eye k: B1' (dark: I <= t1) around `guess`, the dark region nearest it
+    // (within 0.15 d), the eyeball in that region near the guess. Nothing where none is (a shut
+    // eye leaves the lashes' line: no eyeball in it).
+    std::optional<QPointF> findEyeball(const QImage &frame, int k, QPointF guess) const
+    {
+        const double d = m_d;
+        const Window w = intensityWindow(frame, QRectF(guess.x() - 0.3 * d, guess.y() - 0.2 * d, 0.6 * d, 0.4 * d));
+        if (w.rect.width() < 3 || w.rect.height() < 3)
+            return std::nullopt;
+        Mask dark {w.I.size, std::vector<std::uint8_t>(w.I.values.size(), 0)};
+        for (size_t i = 0; i < dark.values.size(); ++i)
+            dark.values[i] = w.I.values[i] <= m_seed.t1 ? 1 : 0;
+        std::vector<int> labels;
+        const std::vector<Region> regions = growRegions(dark, 1, &labels);
+        const QPointF seed = guess - QPointF(w.rect.topLeft());
+        int best = -1;
+        double bestDistance = 0.15 * d;
+        for (int i = 0; i < int(regions.size()); ++i) {
+            const double dist = QLineF(regions[i].centroid, seed).length();
+            if (regions[i].area >= 3 && dist < bestDistance) {
+                bestDistance = dist;
+                best = i;
+            }
+        }
+        if (best < 0)
+            return std::nullopt;
+        Mask region {dark.size, std::vector<std::uint8_t>(dark.values.size(), 0)};
+        for (size_t i = 0; i < labels.size(); ++i)
+            region.values[i] = labels[i] == best + 1 ? 1 : 0;
+        // The eyeball is searched for near the old one only: a region merged with a brow or
+        // a rim would otherwise cost a search over all of it.
+        const double r = m_radius[k];
+        const QRect near = QRectF(seed.x() - 1.5 * r, seed.y() - 1.5 * r, 3 * r, 3 * r).toAlignedRect();
+        const Eyeball ball = detectEyeball(region, regions[best].box.intersected(near), 0.8);
+        if (ball.radius < 0.5 * r)
+            return std::nullopt;
+        return ball.centre + QPointF(w.rect.topLeft()) + QPointF(0.5, 0.5);
+    }
+
+    // 6.2 steps 2-5: the eyeballs near the old ones (findEyeball); step 4: the pair must still
+    // look like the eye pair (distance, tilt, a small step from the pair before), else the old
+    // pair stands in.
     void trackEyePair(const QImage &frame)
     {
         QPointF found[2];
         bool ok[2] = {false, false};
         const double d = m_d;
         for (int k = 0; k < 2; ++k) {
-            const Window w
-                = intensityWindow(frame, QRectF(m_eyes[k].x() - 0.3 * d, m_eyes[k].y() - 0.2 * d, 0.6 * d, 0.4 * d));
-            if (w.rect.width() < 3 || w.rect.height() < 3)
-                continue;
-            Mask dark {w.I.size, std::vector<std::uint8_t>(w.I.values.size(), 0)};
-            for (size_t i = 0; i < dark.values.size(); ++i)
-                dark.values[i] = w.I.values[i] <= m_seed.t1 ? 1 : 0;
-            std::vector<int> labels;
-            const std::vector<Region> regions = growRegions(dark, 1, &labels);
-            const QPointF seed = m_eyes[k] - QPointF(w.rect.topLeft());
-            int best = -1;
-            double bestDistance = 0.15 * d;
-            for (int i = 0; i < int(regions.size()); ++i) {
-                const double dist = QLineF(regions[i].centroid, seed).length();
-                if (regions[i].area >= 3 && dist < bestDistance) {
-                    bestDistance = dist;
-                    best = i;
-                }
+            if (const std::optional<QPointF> ball = findEyeball(frame, k, m_eyes[k])) {
+                found[k] = *ball;
+                ok[k] = true;
             }
-            if (best < 0)
-                continue;
-            Mask region {dark.size, std::vector<std::uint8_t>(dark.values.size(), 0)};
-            for (size_t i = 0; i < labels.size(); ++i)
-                region.values[i] = labels[i] == best + 1 ? 1 : 0;
-            // The eyeball is searched for near the old one only: a region merged with a brow or
-            // a rim would otherwise cost a search over all of it.
-            const double r = m_radius[k];
-            const QRect near = QRectF(seed.x() - 1.5 * r, seed.y() - 1.5 * r, 3 * r, 3 * r).toAlignedRect();
-            const Eyeball ball = detectEyeball(region, regions[best].box.intersected(near), 0.8);
-            // A shut eye leaves the lashes' line: no eyeball in it.
-            if (ball.radius < 0.5 * r)
-                continue;
-            found[k] = ball.centre + QPointF(w.rect.topLeft()) + QPointF(0.5, 0.5);
-            ok[k] = true;
         }
         m_pairFound = false;
         if (ok[0] && ok[1]) {
@@ -307,18 +311,56 @@ private:
     }
 
     // A lost face may come back anywhere and at another size: where its look is found, the eyes
-    // are searched for next (they stay where they were when it is not).
+    // are searched for next (they stay where they were when it is not). The look, a small grey
+    // picture, may prefer a size a step off (a mouth opened since the neutral frame stretches the
+    // face), and the eyes put by a wrong size lie a tenth of d off: the pair's distance would be
+    // wrong on every later frame and the mouth looked for in the wrong place. So the eyes decide:
+    // at each size whose look is still the face's (kLostLikeness) the eyeballs are looked for
+    // around where that size puts them, and of the pairs found the one under which the face's
+    // look (the full grid, as on every frame) is likest the neutral's is taken; where no size
+    // finds both eyeballs, the best look's place.
     void searchFace(const QImage &frame)
     {
         if (!m_search || !m_search->isValid())
             return;
-        const FaceSearchHit hit = m_search->find(frame);
-        if (hit.likeness < kSearchLikeness)
+        const std::vector<FaceSearchHit> hits = m_search->findEachSize(frame);
+        const auto best = std::max_element(
+            hits.begin(), hits.end(), [](const auto &a, const auto &b) { return a.likeness < b.likeness; });
+        if (best == hits.end() || best->likeness < kSearchLikeness)
             return;
         const QRectF neutral = lookBox();
-        const double s = hit.box.width() / neutral.width();
+        auto eyesOf = [&](const FaceSearchHit &hit, int k) {
+            const double s = hit.box.width() / neutral.width();
+            return hit.box.topLeft() + (m_neutralEyes[k] - neutral.topLeft()) * s;
+        };
         for (int k = 0; k < 2; ++k)
-            m_eyes[k] = hit.box.topLeft() + (m_neutralEyes[k] - neutral.topLeft()) * s;
+            m_eyes[k] = eyesOf(*best, k);
+        double bestLook = kLostLikeness;
+        for (const FaceSearchHit &hit : hits) {
+            if (hit.likeness < kLostLikeness)
+                continue;
+            const std::optional<QPointF> l = findEyeball(frame, 0, eyesOf(hit, 0)),
+                                         r = findEyeball(frame, 1, eyesOf(hit, 1));
+            if (!l || !r || !(r->x() > l->x()))
+                continue;
+            const double look = likeness(appearance(frame, motionTo(*l, *r)), m_appearance);
+            if (look > bestLook) {
+                bestLook = look;
+                m_eyes[0] = *l;
+                m_eyes[1] = *r;
+            }
+        }
+    }
+
+    // The head's motion that carries the neutral eyeballs to `left` and `right`.
+    HeadMotion motionTo(QPointF left, QPointF right) const
+    {
+        std::array<QPointF, kPointCount> from = m_neutralPoints, to = m_neutralPoints;
+        from[pt::idx("3.6")] = m_neutralEyes[0];
+        from[pt::idx("3.5")] = m_neutralEyes[1];
+        to[pt::idx("3.6")] = left;
+        to[pt::idx("3.5")] = right;
+        return fitHeadMotion(from, to, m_stable);
     }
 
     // The face's look: the grey levels on a grid over the eyes and the mouth of the neutral

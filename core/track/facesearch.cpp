@@ -51,10 +51,18 @@ bool FaceSearch::isValid() const
 
 FaceSearchHit FaceSearch::find(const QImage &frame) const
 {
-    if (!m_look || frame.isNull())
-        return {};
     FaceSearchHit best;
-    best.likeness = -1;
+    for (const FaceSearchHit &hit : findEachSize(frame))
+        if (hit.likeness > best.likeness)
+            best = hit;
+    return best;
+}
+
+std::vector<FaceSearchHit> FaceSearch::findEachSize(const QImage &frame) const
+{
+    std::vector<FaceSearchHit> hits;
+    if (!m_look || frame.isNull())
+        return hits;
     // The frame shrunk once for the smallest size (the largest picture needed), then further
     // for the others.
     const double largest = std::min(1.0, m_look->factor / kSizes[0]);
@@ -78,14 +86,10 @@ FaceSearchHit FaceSearch::find(const QImage &frame) const
         double top = 0;
         cv::Point at;
         cv::minMaxLoc(scores, nullptr, &top, nullptr, &at);
-        if (std::isfinite(top) && top > best.likeness) {
-            best.likeness = top;
-            best.box = QRectF(at.x / f, at.y / f, m_look->picture.cols / f, m_look->picture.rows / f);
-        }
+        if (std::isfinite(top))
+            hits.push_back({QRectF(at.x / f, at.y / f, m_look->picture.cols / f, m_look->picture.rows / f), top});
     }
-    if (best.box.isEmpty())
-        best.likeness = 0;
-    return best;
+    return hits;
 }
 
 } // namespace toonface

@@ -9,6 +9,7 @@
 #include <QRectF>
 
 #include <memory>
+#include <vector>
 
 namespace toonface {
 
@@ -31,6 +32,10 @@ public:
     // The best place of the face in `frame`, at sizes from 0.8 to 1.25 of the neutral's; an empty
     // box when the frame is smaller than the face.
     FaceSearchHit find(const QImage &frame) const;
+    // The best place at each of those sizes, smallest first (sizes the frame cannot hold left
+    // out): the look alone may prefer a wrong size by a little (a mouth opened since the neutral
+    // frame stretches the face), the caller may check each.
+    std::vector<FaceSearchHit> findEachSize(const QImage &frame) const;
 
 private:
     struct Look;

@@ -1,3 +1,4 @@
+#include "detect/detector.h"
 #include "detect/hairoutline.h"
 #include "detect/headparse.h"
 #include "drawnface.h"
@@ -360,6 +361,43 @@ private Q_SLOTS:
         outlineHairFromParse(&face, parse);
         for (int k = pt::idx("h.5"); k <= pt::idx("h.15"); ++k)
             QCOMPARE(face.point(k), before.point(k));
+    }
+
+    // The detector reads the outline from the parse (refineFace): a head found by detectFace
+    // (the classic method, which finds drawn faces) has the drawn hair's outline, a wide head of
+    // curls as wide as it is and long hair down to its ends, not the search's estimate.
+    void detectorDrawsTheParsedOutline_data()
+    {
+        QTest::addColumn<int>("kind");
+        QTest::newRow("curly, wide") << int(Hairdo::Curly);
+        QTest::newRow("long") << int(Hairdo::Long);
+        QTest::newRow("short") << int(Hairdo::Short);
+    }
+    void detectorDrawsTheParsedOutline()
+    {
+        QFETCH(int, kind);
+        const FaceModel drawn = styled(Hairdo(kind));
+        const QImage photo = testing::drawnFace({}, drawn);
+        DetectOptions options;
+        options.method = DetectionMethod::Classic;
+        const DetectionResult r = detectFace(photo, options);
+        QCOMPARE(r.status, DetectStatus::Ok);
+        const FaceModel &face = r.face;
+        const double es0 = es0Of(drawn);
+        const QPolygonF edge = headOf(drawn).toFillPolygon();
+        for (int k = 0; k < 19; ++k) {
+            const double off = distanceToEdge(face.point(pt::idx("h.1") + k), edge);
+            QVERIFY2(off < es0 / 4,
+                qPrintable(QStringLiteral("h.%1 lies %2 ES0 from the drawn head's edge")
+                               .arg(k + 1)
+                               .arg(off / es0, 0, 'f', 2)));
+        }
+        const double chin = drawn.point("2.1").y();
+        QPainterPath aboveChin;
+        aboveChin.addRect(QRectF(0, 0, photo.width(), chin));
+        const double iou
+            = overlap(headOf(drawn).intersected(aboveChin), headOf(face).intersected(aboveChin), photo.size());
+        QVERIFY2(iou > 0.9, qPrintable(QStringLiteral("overlap %1").arg(iou, 0, 'f', 3)));
     }
 
     void invalidInput()

@@ -70,6 +70,40 @@ private Q_SLOTS:
             std::abs(hit.box.width() / expected.width() - 1.0) < 0.1, qPrintable(QString::number(hit.box.width())));
     }
 
+    // The best place at each size the search tries, smallest first, each box that size of the
+    // look; the best of them is find()'s answer (the classic tracker checks the eyes at each).
+    void eachSizeHasItsPlace()
+    {
+        if (!QFileInfo::exists(kPortrait))
+            QSKIP("astronaut.png is not installed (package python3-skimage)");
+        const testing::TalkingFace talking {QImage(kPortrait)};
+        QVERIFY(talking.isValid());
+        const QImage portrait = talking.frame(0, 1);
+        const QPointF l = talking.face().point("3.6"), r = talking.face().point("3.5");
+        const double d = QLineF(l, r).length();
+        const QPointF mid = (l + r) / 2;
+        const QRectF look(mid.x() - 0.8 * d, mid.y() - 0.35 * d, 1.6 * d, 1.7 * d);
+        const FaceSearch search(portrait, look);
+        const std::vector<FaceSearchHit> hits = search.findEachSize(portrait);
+        QCOMPARE(hits.size(), size_t(5));
+        const FaceSearchHit best = search.find(portrait);
+        double widest = 0, top = -1;
+        for (const FaceSearchHit &hit : hits) {
+            QVERIFY(hit.box.width() > widest);
+            widest = hit.box.width();
+            top = std::max(top, hit.likeness);
+        }
+        QCOMPARE(best.likeness, top);
+        QVERIFY2(std::abs(hits.front().box.width() / look.width() - 0.8) < 0.05,
+            qPrintable(QString::number(hits.front().box.width())));
+        QVERIFY2(std::abs(hits.back().box.width() / look.width() - 1.25) < 0.05,
+            qPrintable(QString::number(hits.back().box.width())));
+        // A frame only as large as the look holds no larger size.
+        const QImage tight = portrait.copy(look.toAlignedRect());
+        QVERIFY(search.findEachSize(tight).size() < hits.size());
+        QVERIFY(search.findEachSize(QImage()).empty());
+    }
+
     void findsNoFaceInAWall()
     {
         if (!QFileInfo::exists(kPortrait))
