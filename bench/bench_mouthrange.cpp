@@ -3,6 +3,7 @@
 #include "media/mediareader.h"
 #include "track/clipsilence.h"
 #include "track/mouthrange.h"
+#include "track/neutralchoice.h"
 #include "track/trackaccuracy.h"
 #include "track/trackvideo.h"
 
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <optional>
 #include <set>
 
@@ -21,6 +23,13 @@ using namespace toonface;
 namespace {
 
 constexpr int kSoundRate = 16000;
+
+double processCpuMs()
+{
+    timespec t {};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
+}
 
 double rounded(double v)
 {
@@ -172,8 +181,8 @@ std::pair<int, int> speechSpan(const QVector<bool> &silent)
 // room to the voice from 0.1 to 0.9, where the leading silence ends and the trailing one starts
 // (frames), against the word times where the clip has them (swwp2s.align: the error in frames
 // at either end), so that the share is chosen over all clips; and at the chosen share the
-// shapes snapped in the leading silence without and with it, and the whole clip's agreement
-// with the sound.
+// shapes snapped in the leading silence without and with it, the whole clip's agreement
+// with the sound, and the neutral frame Import Video would choose with its CPU time.
 QJsonObject benchClipSilence()
 {
     QJsonObject out;
@@ -232,9 +241,17 @@ QJsonObject benchClipSilence()
         row.insert(QStringLiteral("leadingSilenceWith"), leadWith);
         row.insert(QStringLiteral("without"), describe(without, *sound, period));
         row.insert(QStringLiteral("with"), describe(with, *sound, period));
+        // The Import Video dialog's search for a frame at rest (track/neutralchoice.h): the
+        // frame it chooses, and what it costs in CPU time (every thread of the process).
+        const double cpuBefore = processCpuMs();
+        const NeutralChoice choice = chooseNeutralFrame(path);
+        row.insert(QStringLiteral("neutralChoiceCpuMs"), rounded(processCpuMs() - cpuBefore));
+        row.insert(QStringLiteral("neutralChoiceFrame"), choice.found ? choice.frame : -1);
+        row.insert(QStringLiteral("neutralChoiceSilent"), choice.silent);
         rows.append(row);
     }
     out.insert(QStringLiteral("share"), kSilenceShare);
+    out.insert(QStringLiteral("load"), bench::loadAverage());
     out.insert(QStringLiteral("clips"), rows);
     return out;
 }
