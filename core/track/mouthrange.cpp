@@ -86,11 +86,15 @@ double widestMouthOpeningEs0(const Tracker &tracker)
     return widest;
 }
 
-void snapClipMouth(QVector<TrackedFrame> *frames, const Tracker &tracker, const MouthRange &range)
+void snapClipMouth(
+    QVector<TrackedFrame> *frames, const Tracker &tracker, const MouthRange &range, const QVector<bool> &silent)
 {
     MouthShape held = MouthShape::M;
-    for (TrackedFrame &f : *frames) {
-        if (!f.lost) {
+    for (qsizetype i = 0; i < frames->size(); ++i) {
+        TrackedFrame &f = (*frames)[i];
+        if (i < silent.size() && silent[i]) {
+            held = MouthShape::M;
+        } else if (!f.lost) {
             std::array<QPointF, 4> m = mouthOf(f);
             for (int k = 0; k < 4; ++k)
                 m[k] = (m[k] - range.closedEs0[k]) * range.gain;

@@ -62,8 +62,11 @@ double widestMouthOpeningEs0(const Tracker &tracker);
 // tracker's shapes (as Tracker::nearestMouthShape()), after carrying it into the table's terms:
 // its displacement from `range.closedEs0`, times `range.gain`. Each frame's mouthShape is set
 // and its mouth controls' displacements become the shape's (relative to `m`, as a snapping
-// tracker sets them); lost frames hold the shape before them (`m` before any). The frames'
-// points and mouthOpenEs0 stay as measured.
-void snapClipMouth(QVector<TrackedFrame> *frames, const Tracker &tracker, const MouthRange &range);
+// tracker sets them); lost frames hold the shape before them (`m` before any). Frames marked
+// in `silent` (track/clipsilence.h; empty: none) are `m`, the mouth at rest, however the lips
+// stand: a speaker's lips apart in a pause read as an open vowel. The frames' points and
+// mouthOpenEs0 stay as measured.
+void snapClipMouth(
+    QVector<TrackedFrame> *frames, const Tracker &tracker, const MouthRange &range, const QVector<bool> &silent = {});
 
 } // namespace toonface

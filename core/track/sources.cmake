@@ -9,6 +9,8 @@ list(APPEND TOONFACE_CORE_SOURCES
   track/tracker.h track/tracker.cpp
   track/trackvideo.h track/trackvideo.cpp
   track/mouthrange.h track/mouthrange.cpp
+  track/clipsilence.h track/clipsilence.cpp
+  track/neutralchoice.h track/neutralchoice.cpp
   track/retarget.h track/retarget.cpp
   track/livepose.h track/livepose.cpp
   track/trackaccuracy.h track/trackaccuracy.cpp)

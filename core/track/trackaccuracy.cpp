@@ -3,6 +3,7 @@
 #include "detect/landmarkfit.h"
 #include "detect/landmarkmap.h"
 #include "i18n/coretext.h"
+#include "track/clipsilence.h"
 #include "track/retarget.h"
 #include "track/videofilesource.h"
 
@@ -129,13 +130,9 @@ SoundAgreement mouthSoundAgreement(const QVector<TrackedFrame> &frames, const QV
     for (const TrackedFrame &f : frames) {
         const auto &d = f.motion.displacementEs0;
         parting.append(d[pt::idx("8.2")].y() - d[pt::idx("8.9")].y());
-        const auto from = std::clamp<qsizetype>(qsizetype(f.time * sampleRate), 0, samples.size());
-        const auto to = std::clamp<qsizetype>(qsizetype((f.time + period) * sampleRate), from, samples.size());
-        double sum = 0;
-        for (qsizetype i = from; i < to; ++i)
-            sum += double(samples[i]) * samples[i];
-        loudness.append(to > from ? std::sqrt(sum / double(to - from)) : 0.0);
     }
+    for (double db : frameLevelsDb(frames, samples, sampleRate, period))
+        loudness.append(db > -120.0 ? std::pow(10.0, db / 20.0) : 0.0); // the RMS
     SoundAgreement a;
     a.correlationInSync = pearson(parting, loudness);
     a.correlation = a.correlationInSync;

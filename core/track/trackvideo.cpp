@@ -2,12 +2,15 @@
 
 #include "i18n/coretext.h"
 #include "io/facejson.h"
+#include "media/mediareader.h"
+#include "track/clipsilence.h"
 #include "track/mouthrange.h"
 #include "track/videofilesource.h"
 
 #include <QElapsedTimer>
 #include <QJsonArray>
 
+#include <algorithm>
 #include <condition_variable>
 #include <ctime>
 #include <deque>
@@ -189,7 +192,19 @@ TrackResult trackVideo(const QString &path, const TrackVideoOptions &options,
         return result;
     if (options.tracker.snapMouth) {
         result.mouthRange = measureMouthRange(result.frames, widestMouthOpeningEs0(tracker));
-        snapClipMouth(&result.frames, tracker, *result.mouthRange);
+        if (result.hasAudio) {
+            QString soundError;
+            const std::optional<QVector<float>> sound = readAudio(path, kSilenceSampleRate, &soundError);
+            if (sound) {
+                result.silentFrames
+                    = silentFrames(result.frames, *sound, kSilenceSampleRate, result.fps > 0 ? 1.0 / result.fps : 0.04);
+            } else {
+                result.warnings << VideoText::tr("%1: its sound could not be read (%2): the mouth is not closed "
+                                                 "in its silences")
+                                       .arg(path, soundError);
+            }
+        }
+        snapClipMouth(&result.frames, tracker, *result.mouthRange, result.silentFrames);
     }
     if (!source.error().isEmpty())
         result.warnings << VideoText::tr("%1 (tracked the %2 frames before)")
@@ -239,6 +254,8 @@ QJsonObject trackToJson(const TrackResult &track)
         range.insert(QStringLiteral("closed"), closed);
         range.insert(QStringLiteral("wideOpening"), round(track.mouthRange->wideOpeningEs0, 5));
         range.insert(QStringLiteral("gain"), round(track.mouthRange->gain, 4));
+        range.insert(QStringLiteral("silentFrames"),
+            int(std::count(track.silentFrames.cbegin(), track.silentFrames.cend(), true)));
         json.insert(QStringLiteral("mouthRange"), range);
     }
 

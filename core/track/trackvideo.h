@@ -44,6 +44,9 @@ struct TrackResult
     // With options.tracker.snapMouth: the clip's mouth range its frames were snapped with
     // (track/mouthrange.h), over the whole clip rather than frame by frame.
     std::optional<MouthRange> mouthRange;
+    // With a snapped mouth and the clip's sound: the frames in its silences, snapped to `m`
+    // (track/clipsilence.h); empty without sound.
+    QVector<bool> silentFrames;
     double trackingMs = 0; // decoding and tracking, the neutral's detection excluded (wall clock)
     double trackingCpuMs = 0; // the same in CPU time of the process (every thread): what it costs
 };
@@ -52,7 +55,8 @@ struct TrackResult
 // neutral one. Decoding runs on a thread of its own beside the tracking. `progress(done, total)`
 // is called from the calling thread after each frame (total -1 when the file does not say);
 // `cancel` is polled every frame. With options.tracker.snapMouth the mouth is snapped once the
-// whole clip is tracked, from its own closed mouth and range (snapClipMouth()). Meant for a
+// whole clip is tracked, from its own closed mouth and range, and closed where its sound is
+// silent (snapClipMouth()). Meant for a
 // worker thread (QtConcurrent); no Qt event loop needed.
 TrackResult trackVideo(const QString &path, const TrackVideoOptions &options,
     const std::function<void(int, int)> &progress = {}, const std::atomic_bool *cancel = nullptr);
@@ -61,7 +65,8 @@ TrackResult trackVideo(const QString &path, const TrackVideoOptions &options,
 // fps, frames}, neutralFrame, method, neutral (a face object), units ("ES0") and es0, and frames
 // [{time, lost, confidence, points: [{id, x, y}], displacements: {ID: [dx, dy]}, eyes
 // {left, right}, head {rotation, x, y, scale}, gaze [x, y], mouthOpen, mouthShape}]; with a snapped
-// mouth, mouthRange {closed: {ID: [dx, dy]}, wideOpening, gain} (ES0).
+// mouth, mouthRange {closed: {ID: [dx, dy]}, wideOpening, gain, silentFrames} (ES0; silentFrames
+// counts the frames closed for the clip's silence).
 QJsonObject trackToJson(const TrackResult &track);
 inline constexpr const char *kTrackFormat = "toonface.track/1";
 

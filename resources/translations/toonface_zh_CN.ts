@@ -1989,6 +1989,30 @@
         <source>It plays over %1: &amp;replace it (else both sound together)</source>
         <translation>会与 %1 重叠播放：替换它（否则两者一起发声）(&amp;R)</translation>
     </message>
+    <message>
+        <source>Looking for a frame at rest in the first seconds…</source>
+        <translation>正在开头几秒中寻找静止的一帧…</translation>
+    </message>
+    <message>
+        <source>No face was found in the first seconds: choose a frame that shows one.</source>
+        <translation>开头几秒中找不到脸：请选一帧有脸的画面。</translation>
+    </message>
+    <message>
+        <source>mouth closed, eyes open, in a silence</source>
+        <translation>嘴闭着、眼睁开、无人说话</translation>
+    </message>
+    <message>
+        <source>mouth closed, eyes open</source>
+        <translation>嘴闭着、眼睁开</translation>
+    </message>
+    <message>
+        <source>Frame %1 looks at rest (%2); your choice is kept.</source>
+        <translation>第 %1 帧看来是静止的（%2）；保留您的选择。</translation>
+    </message>
+    <message>
+        <source>Frame %1 was chosen: %2. Pick another if it is not at rest.</source>
+        <translation>已选第 %1 帧：%2。若不是静止的，请另选一帧。</translation>
+    </message>
 </context>
 <context>
     <name>toonface::LanguageBox</name>
@@ -5129,6 +5153,10 @@ The points are unchanged.</source>
     <message>
         <source>not a readable sound or video file (%1)</source>
         <translation>不是可读取的声音或视频文件（%1）</translation>
+    </message>
+    <message>
+        <source>%1: its sound could not be read (%2): the mouth is not closed in its silences</source>
+        <translation>%1：无法读取其声音（%2）：静音处的嘴不会闭上</translation>
     </message>
 </context>
 <context>

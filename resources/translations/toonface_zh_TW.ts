@@ -1989,6 +1989,30 @@
         <source>It plays over %1: &amp;replace it (else both sound together)</source>
         <translation>會與 %1 重疊播放：取代它（否則兩者一起發聲）(&amp;R)</translation>
     </message>
+    <message>
+        <source>Looking for a frame at rest in the first seconds…</source>
+        <translation>正在開頭幾秒中尋找靜止的影格…</translation>
+    </message>
+    <message>
+        <source>No face was found in the first seconds: choose a frame that shows one.</source>
+        <translation>開頭幾秒中找不到臉：請選一個有臉的影格。</translation>
+    </message>
+    <message>
+        <source>mouth closed, eyes open, in a silence</source>
+        <translation>嘴閉著、眼睜開、無人說話</translation>
+    </message>
+    <message>
+        <source>mouth closed, eyes open</source>
+        <translation>嘴閉著、眼睜開</translation>
+    </message>
+    <message>
+        <source>Frame %1 looks at rest (%2); your choice is kept.</source>
+        <translation>第 %1 影格看來是靜止的（%2）；保留您的選擇。</translation>
+    </message>
+    <message>
+        <source>Frame %1 was chosen: %2. Pick another if it is not at rest.</source>
+        <translation>已選第 %1 影格：%2。若不是靜止的，請另選一個。</translation>
+    </message>
 </context>
 <context>
     <name>toonface::LanguageBox</name>
@@ -5129,6 +5153,10 @@ The points are unchanged.</source>
     <message>
         <source>not a readable sound or video file (%1)</source>
         <translation>不是可讀取的聲音或影片檔案（%1）</translation>
+    </message>
+    <message>
+        <source>%1: its sound could not be read (%2): the mouth is not closed in its silences</source>
+        <translation>%1：無法讀取其聲音（%2）：靜音處的嘴不會閉上</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "dialogs/lipsyncdialog.h"
 #include "document/document.h"
 #include "shareddata.h"
 #include "speech/audio.h"
@@ -7,6 +8,8 @@
 #include <QAbstractButton>
 #include <QDir>
 #include <QFileInfo>
+#include <QPlainTextEdit>
+#include <QSignalSpy>
 #include <QString>
 #include <QTest>
 #include <QWidget>
@@ -50,6 +53,21 @@ inline bool click(QWidget *parent, const char *name)
         return false;
     QTest::mouseClick(button, Qt::LeftButton);
     return true;
+}
+
+// Puts `script` into the Lip Sync dialog's script box and waits until the dialog has checked
+// it (a moment after typing stops, once the dictionary has loaded): on the check itself, not
+// on a time, which a loaded machine overran.
+inline bool typeScript(LipSyncDialog *dialog, const QString &script)
+{
+    auto *text = dialog->findChild<QPlainTextEdit *>(QStringLiteral("script"));
+    if (!text)
+        return false;
+    text->selectAll();
+    QTest::keyClick(text, Qt::Key_Delete);
+    QSignalSpy checked(dialog, &LipSyncDialog::scriptChecked);
+    text->insertPlainText(script);
+    return checked.wait(60000);
 }
 
 // Saves the dialog as a PNG when TOONFACE_GRAB_DIR is set (to look at it).

@@ -4,6 +4,7 @@
 #include "videofixture.h"
 
 #include "capture/importvideodialog.h"
+#include "dialogs/jobstatus.h"
 #include "document/document.h"
 #include "media/mediareader.h"
 #include "track/retarget.h"
@@ -11,6 +12,7 @@
 #include <QCheckBox>
 #include <QDir>
 #include <QFile>
+#include <QLabel>
 #include <QLayout>
 #include <QPushButton>
 #include <QRadioButton>
@@ -126,6 +128,64 @@ private Q_SLOTS:
         QCOMPARE(doc.animation(), busyAnimation()); // looking changes nothing
     }
 
+    // The neutral frame is chosen for the user: not frame 0 when it catches the mouth open,
+    // nor a blink, but a frame with the lips closed and the eyes open, shown large.
+    void choosesAFrameAtRest()
+    {
+        if (m_talking.isEmpty())
+            QSKIP("astronaut.png is not installed (package python3-skimage)");
+        const testing::TalkingFace talking {QImage(kPortrait).scaled(320, 320)};
+        QVERIFY(talking.isValid());
+        // The mouth open over frames 0-5, the eyes shut on 6-7, at rest from 8.
+        const QString path = m_dir.filePath(QStringLiteral("opensmidword.mp4"));
+        QCOMPARE(writeClip(path, kTalkingFrames, false,
+                     [&](int i) { return talking.frame(i < 6 ? 1.0 : 0.0, i == 6 || i == 7 ? 0.0 : 1.0); }),
+            QString());
+        Document doc;
+        ImportVideoDialog dialog(&doc, 0.0);
+        dialog.show();
+        QSignalSpy suggested(&dialog, &ImportVideoDialog::neutralSuggested);
+        QVERIFY(dialog.openClip(path));
+        QVERIFY(suggested.wait(kTrackTimeoutMs));
+        const int chosen = suggested.first().first().toInt();
+        QVERIFY2(chosen >= 8, qPrintable(QString::number(chosen)));
+        QCOMPARE(dialog.neutralFrame(), chosen);
+        QVERIFY(waitForFrame(dialog, chosen));
+        QVERIFY(!child<QLabel>(dialog, "neutralNote")->text().isEmpty());
+        grab(&dialog, QStringLiteral("importvideo-neutral-chosen"));
+
+        // Importing from it: frame 0's open mouth is an opening, not the rest.
+        QSignalSpy applied(&dialog, &ImportVideoDialog::applied);
+        QVERIFY(click(&dialog, "start"));
+        QVERIFY(applied.wait(kTrackTimeoutMs));
+        const auto lowerLip
+            = [&](int frame) { return doc.timeline().poseKeys()[frame].offsetsEs0.value(QStringLiteral("8.2")).y(); };
+        QVERIFY2(lowerLip(0) > lowerLip(12) + 0.05,
+            qPrintable(QStringLiteral("%1 vs %2").arg(lowerLip(0)).arg(lowerLip(12))));
+    }
+
+    // A frame the user picked before the search ended is kept.
+    void keepsTheUsersNeutralFrame()
+    {
+        if (m_talking.isEmpty())
+            QSKIP("astronaut.png is not installed (package python3-skimage)");
+        Document doc;
+        ImportVideoDialog dialog(&doc, 0.0);
+        dialog.show();
+        QSignalSpy suggested(&dialog, &ImportVideoDialog::neutralSuggested);
+        QVERIFY(dialog.openClip(m_talking));
+        child<QSlider>(dialog, "neutralSlider")->setValue(10);
+        QVERIFY(suggested.wait(kTrackTimeoutMs));
+        QCOMPARE(dialog.neutralFrame(), 10);
+        QVERIFY(waitForFrame(dialog, 10));
+        // Opened again, the search chooses anew; on a clip without a face it says so.
+        QVERIFY(dialog.openClip(m_grey));
+        suggested.clear();
+        QVERIFY(suggested.wait(kTrackTimeoutMs));
+        QCOMPARE(suggested.first().first().toInt(), -1);
+        QCOMPARE(dialog.neutralFrame(), 0);
+    }
+
     // At its smallest (as it opens on a laptop's screen) every row has its own place: the
     // neutral frame's slider was drawn over the bottom of the picture, the dialog narrower than
     // its text was laid out for.
@@ -150,6 +210,58 @@ private Q_SLOTS:
             qPrintable(QStringLiteral("picture to %1, slider from %2").arg(box(view).bottom()).arg(box(slider).top())));
         QVERIFY(box(slider).bottom() < box(method).top());
         QVERIFY(view->height() >= view->minimumHeight());
+    }
+
+    // A long error (a deep path has no spaces to wrap at) keeps to a few lines under the form
+    // at the dialog's smallest size, cut in the middle with "…", and is whole in its tooltip: it pushed the
+    // neutral frame's slider over the picture, and a path widened the dialog past the screen.
+    void aLongErrorKeepsToItsLinesAtTheSmallestSize()
+    {
+        Document doc;
+        ImportVideoDialog dialog(&doc, 0.0);
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        QString deep = m_dir.path();
+        for (int i = 0; i < 12; ++i)
+            deep += QStringLiteral("/a_folder_with_a_long_name_%1").arg(i);
+        const QString missing = deep + QStringLiteral("/clip.mp4");
+        QVERIFY(!dialog.openClip(missing));
+        const QString error = dialog.message();
+        QVERIFY2(error.contains(QStringLiteral("clip.mp4")), qPrintable(error)); // the whole text
+        dialog.resize(dialog.minimumSize());
+        QTRY_COMPARE(dialog.size(), dialog.minimumSize());
+        QVERIFY2(dialog.width() <= 800, qPrintable(QString::number(dialog.width())));
+        const auto *view = dialog.findChild<QWidget *>(QStringLiteral("neutralView"));
+        const auto *slider = child<QSlider>(dialog, "neutralSlider");
+        const auto *method = dialog.findChild<QWidget *>(QStringLiteral("method"));
+        const auto *message = dialog.findChild<QLabel *>(QStringLiteral("message"));
+        const auto *start = dialog.findChild<QWidget *>(QStringLiteral("start"));
+        QVERIFY(view && method && message && start);
+        auto box = [&](const QWidget *w) { return QRect(w->mapTo(&dialog, QPoint(0, 0)), w->size()); };
+        QVERIFY2(box(view).bottom() < box(slider).top(),
+            qPrintable(QStringLiteral("picture to %1, slider from %2").arg(box(view).bottom()).arg(box(slider).top())));
+        QVERIFY(box(slider).bottom() < box(method).top());
+        QVERIFY(box(method).bottom() < box(message).top());
+        QVERIFY(box(message).bottom() < box(start).top());
+        QVERIFY(view->height() >= view->minimumHeight());
+        // Shown in at most kMessageLines lines that fit the label, the rest in the tooltip.
+        const QStringList lines = message->text().split(QLatin1Char('\n'));
+        QVERIFY2(lines.size() <= kMessageLines, qPrintable(message->text()));
+        QVERIFY(message->height() >= int(lines.size()) * message->fontMetrics().lineSpacing());
+        for (const QString &line : lines)
+            QVERIFY2(
+                message->fontMetrics().horizontalAdvance(line) <= message->contentsRect().width(), qPrintable(line));
+        QVERIFY(message->text().contains(QStringLiteral("…")));
+        // Cut in the middle: the end, which says the problem, stays.
+        QVERIFY2(error.endsWith(lines.last().section(QStringLiteral("…"), -1)), qPrintable(lines.last()));
+        QCOMPARE(message->toolTip(), error);
+        grab(&dialog, QStringLiteral("importvideo-long-error"));
+
+        // A short one is shown whole, with no tooltip.
+        QVERIFY(!dialog.openClip(m_dir.filePath(QStringLiteral("gone.mp4"))));
+        QTRY_VERIFY(!message->text().contains(QStringLiteral("…")));
+        QCOMPARE(message->text().simplified(), dialog.message().simplified());
+        QVERIFY(message->toolTip().isEmpty());
     }
 
     void importsTheMotionAsOneUndoStep()
@@ -453,11 +565,15 @@ private Q_SLOTS:
         QVERIFY(!doc.hasFace());
         ImportVideoDialog dialog(&doc, 0.0);
         dialog.show();
+        QSignalSpy suggested(&dialog, &ImportVideoDialog::neutralSuggested);
         QVERIFY(dialog.openClip(clip));
         QVERIFY(child<QCheckBox>(dialog, "usePhoto")->isVisible());
         QVERIFY(child<QCheckBox>(dialog, "usePhoto")->isChecked());
         QVERIFY(child<QCheckBox>(dialog, "useSound")->isChecked());
-        QVERIFY(waitForFrame(dialog, 0));
+        // The frame at rest it finds (in a silence: the lips closed) is the one shown.
+        QVERIFY(suggested.wait(kTrackTimeoutMs));
+        QCOMPARE(dialog.neutralFrame(), suggested.first().first().toInt());
+        QVERIFY(waitForFrame(dialog, dialog.neutralFrame()));
         dialog.adjustSize();
         dialog.layout()->activate();
         QTest::qWait(50);

@@ -53,11 +53,7 @@ void fillIn(LipSyncDialog &dialog, const QString &recording, const QString &scri
     auto *path = dialog.findChild<QLineEdit *>(QStringLiteral("recording"));
     path->clear();
     QTest::keyClicks(path, recording);
-    auto *text = dialog.findChild<QPlainTextEdit *>(QStringLiteral("script"));
-    text->selectAll();
-    QTest::keyClick(text, Qt::Key_Delete);
-    text->insertPlainText(script);
-    QTest::qWait(300); // the script is checked a moment after typing stops
+    QVERIFY(typeScript(&dialog, script));
 }
 
 } // namespace

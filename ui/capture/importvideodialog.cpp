@@ -25,6 +25,7 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 
 namespace toonface {
 
@@ -66,6 +67,7 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     , m_slider(new QSlider(Qt::Horizontal, this))
     , m_spin(new QSpinBox(this))
     , m_neutralTime(new QLabel(this))
+    , m_neutralNote(new QLabel(this))
     , m_method(new QComboBox(this))
     , m_snap(new QRadioButton(tr("Snap to the nine mouth &shapes (mouth keys)"), this))
     , m_continuous(new QRadioButton(tr("Keep the &continuous motion (pose keys)"), this))
@@ -117,6 +119,11 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     neutralRow->addWidget(m_spin);
     neutralRow->addWidget(m_neutralTime);
     m_slider->setToolTip(tr("The frame whose face is at rest: mouth closed, eyes open, looking ahead"));
+    m_neutralNote->setObjectName(QStringLiteral("neutralNote"));
+    // One line, its room kept: the rows below do not jump when the note comes.
+    m_neutralNote->setMinimumHeight(m_neutralNote->fontMetrics().lineSpacing());
+    // As wide as the dialog, never wider (the whole text is its tooltip too).
+    m_neutralNote->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
 
     m_method->setObjectName(QStringLiteral("method"));
     m_method->addItem(tr("Automatic"), int(DetectionMethod::Auto));
@@ -182,6 +189,7 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     layout->addLayout(clipForm);
     layout->addWidget(m_frame, 1);
     layout->addLayout(neutralRow);
+    layout->addWidget(m_neutralNote);
     layout->addLayout(form);
     layout->addWidget(m_status);
     layout->addWidget(m_buttons);
@@ -201,6 +209,8 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     connect(m_slider, &QSlider::valueChanged, m_spin, &QSpinBox::setValue);
     connect(m_spin, &QSpinBox::valueChanged, m_slider, &QSlider::setValue);
     connect(m_spin, &QSpinBox::valueChanged, this, [this](int index) {
+        if (!m_suggesting)
+            m_neutralChosenByUser = true;
         updateNeutralLabel();
         m_decoder->request(index);
     });
@@ -224,6 +234,9 @@ bool ImportVideoDialog::openClip(const QString &path)
 {
     m_status->clear();
     m_decoder->close();
+    m_neutralSearch.drop();
+    m_neutralChosenByUser = false;
+    m_neutralNote->clear();
     const QSignalBlocker blockSlider(m_slider);
     const QSignalBlocker blockSpin(m_spin);
     m_slider->setRange(0, 0);
@@ -258,6 +271,15 @@ bool ImportVideoDialog::openClip(const QString &path)
                                     .arg(m_decoder->hasAudio() ? tr("with sound") : tr("no sound")));
             m_frame->setText(tr("Decoding…"));
             m_decoder->request(0);
+            // A frame at rest, looked for off the GUI thread while the user looks at frame 0.
+            m_neutralNote->setText(tr("Looking for a frame at rest in the first seconds…"));
+            const auto cancelFlag = m_neutralSearch.newCancelFlag();
+            m_neutralSearch.watch(
+                QtConcurrent::run([absolute, cancelFlag] { return chooseNeutralFrame(absolute, cancelFlag.get()); }),
+                {}, [this](const QFuture<NeutralChoice> &done, bool cancelled) {
+                    if (!cancelled && done.resultCount() > 0)
+                        suggestNeutral(done.result());
+                });
         }
     }
     m_useSound->setEnabled(ok && m_decoder->hasAudio());
@@ -266,6 +288,27 @@ bool ImportVideoDialog::openClip(const QString &path)
     updateNeutralLabel();
     updateButtons();
     return ok;
+}
+
+void ImportVideoDialog::suggestNeutral(const NeutralChoice &choice)
+{
+    if (!choice.found) {
+        m_neutralNote->setText(tr("No face was found in the first seconds: choose a frame that shows one."));
+        Q_EMIT neutralSuggested(-1);
+        return;
+    }
+    const QString why = choice.silent ? tr("mouth closed, eyes open, in a silence") : tr("mouth closed, eyes open");
+    if (m_neutralChosenByUser || m_task->isRunning()) {
+        m_neutralNote->setText(tr("Frame %1 looks at rest (%2); your choice is kept.").arg(choice.frame).arg(why));
+    } else {
+        m_suggesting = true;
+        m_spin->setValue(choice.frame);
+        m_suggesting = false;
+        m_neutralNote->setText(
+            tr("Frame %1 was chosen: %2. Pick another if it is not at rest.").arg(choice.frame).arg(why));
+    }
+    m_neutralNote->setToolTip(m_neutralNote->text());
+    Q_EMIT neutralSuggested(choice.frame);
 }
 
 void ImportVideoDialog::updateSoundChoice()

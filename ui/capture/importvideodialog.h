@@ -1,6 +1,8 @@
 #pragma once
 
+#include "track/neutralchoice.h"
 #include "track/trackvideo.h"
+#include "window/backgroundjob.h"
 
 #include <QDialog>
 
@@ -75,6 +77,9 @@ Q_SIGNALS:
     void cancelled();
     // The large view shows the frame `index`.
     void frameShown(int index);
+    // The search for a frame at rest is over: `frame` is the one found (-1: no face found in
+    // the clip's first seconds); it became the neutral frame unless the user had chosen one.
+    void neutralSuggested(int frame);
 
 private:
     void browse();
@@ -85,6 +90,7 @@ private:
     void setRunning(bool running);
     void updateButtons();
     void updateNeutralLabel();
+    void suggestNeutral(const NeutralChoice &choice);
     // Says which recordings the clip's sound would play over where it starts, and offers to
     // replace them.
     void updateSoundChoice();
@@ -99,6 +105,7 @@ private:
     QSlider *m_slider;
     QSpinBox *m_spin;
     QLabel *m_neutralTime;
+    QLabel *m_neutralNote;
     QComboBox *m_method;
     QRadioButton *m_snap;
     QRadioButton *m_continuous;
@@ -113,6 +120,9 @@ private:
     QPushButton *m_cancelButton;
     QList<QWidget *> m_inputs;
     int m_shownIndex = -1;
+    BackgroundJob<NeutralChoice> m_neutralSearch {this};
+    bool m_neutralChosenByUser = false;
+    bool m_suggesting = false; // the neutral frame is being set to the suggestion
     QStringList m_warnings;
     // What the running job was started with.
     QString m_runPath;

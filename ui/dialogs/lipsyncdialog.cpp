@@ -165,12 +165,15 @@ void LipSyncDialog::checkScript()
     m_scriptCheck->stop();
     const QString text = m_script->toPlainText();
     m_scriptOk = false;
-    if (text.trimmed().isEmpty()) {
-        m_scriptState->setText(tr("Type or open the script the recording speaks."));
-        m_scriptState->setStyleSheet(QString());
-    } else if (!m_dictionary->ready()) {
+    if (!text.trimmed().isEmpty() && !m_dictionary->ready()) {
         // Checked again when the dictionary has loaded.
         m_scriptState->setText(tr("Loading the character dictionary…"));
+        m_scriptState->setStyleSheet(QString());
+        updateButtons();
+        return;
+    }
+    if (text.trimmed().isEmpty()) {
+        m_scriptState->setText(tr("Type or open the script the recording speaks."));
         m_scriptState->setStyleSheet(QString());
     } else {
         const ScriptParse parse = parseScript(text, m_language->language());
@@ -188,6 +191,7 @@ void LipSyncDialog::checkScript()
         }
     }
     updateButtons();
+    Q_EMIT scriptChecked();
 }
 
 bool LipSyncDialog::canStart() const

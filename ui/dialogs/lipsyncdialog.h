@@ -38,6 +38,12 @@ public:
     // cannot be read.
     bool openScript(const QString &path);
 
+Q_SIGNALS:
+    // The script as it stands now was checked (its state is shown and Start is enabled or not);
+    // not emitted while the check waits for the dictionary to load. The script is checked a
+    // moment after typing stops.
+    void scriptChecked();
+
 protected:
     std::optional<SpeechTask::Job> prepare() override;
     bool apply(const LipsyncResult &result) override;
