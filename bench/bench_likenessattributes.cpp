@@ -96,6 +96,7 @@ void measure(Labelled *row, const QImage &photo, const FaceModel &face)
     m["crownSeen"] = !f.crownCut && !(f.topCut && f.headHeight < AppearanceFindings::kMinHeadHeight) ? 1.0 : 0.0;
     m["headHeight"] = f.headHeight;
     m["scalpReach"] = f.scalpReach;
+    m["crownCut"] = f.crownCut ? 1.0 : 0.0;
     m["hairSeen"] = f.hairSeen ? 1.0 : 0.0;
     m["hairFall"] = f.hairFall;
     m["templeHairSeen"] = f.templeHairSeen ? 1.0 : 0.0;
@@ -556,6 +557,35 @@ QJsonObject attributes()
                   .arg(bench::spearman(drawn, cheeks), 0, 'f', 3)
                   .arg(bench::quantile(diff, 0.5), 0, 'f', 1)
                   .arg(bench::quantile(diff, 0.9), 0, 'f', 1);
+    // ... and against the labels' skin tone, which no sample of ours decides: the drawn L*'s
+    // median per label, its rank correlation with dark < medium < light, and the faces labelled
+    // dark drawn lighter than the median face labelled medium (a dark skin drawn pale).
+    {
+        std::map<QString, std::vector<double>> byTone;
+        std::vector<double> order, drawnAll;
+        for (size_t i : detected) {
+            const int rank = rows[i].skin == QLatin1String("dark") ? 0
+                : rows[i].skin == QLatin1String("medium")          ? 1
+                : rows[i].skin == QLatin1String("light")           ? 2
+                                                                   : -1;
+            if (rank < 0)
+                continue;
+            byTone[rows[i].skin].push_back(rows[i].drawnL);
+            order.push_back(rank);
+            drawnAll.push_back(rows[i].drawnL);
+        }
+        const double mediumMedian = bench::quantile(byTone[QStringLiteral("medium")], 0.5);
+        const auto paleDark = std::count_if(byTone[QStringLiteral("dark")].begin(),
+            byTone[QStringLiteral("dark")].end(), [&](double l) { return l > mediumMedian; });
+        report << QStringLiteral("skin L* drawn by label: dark %1 medium %2 light %3 (medians); rank correlation "
+                                 "with dark<medium<light %4; labelled dark drawn lighter than the medium median %5/%6")
+                      .arg(bench::quantile(byTone[QStringLiteral("dark")], 0.5), 0, 'f', 1)
+                      .arg(mediumMedian, 0, 'f', 1)
+                      .arg(bench::quantile(byTone[QStringLiteral("light")], 0.5), 0, 'f', 1)
+                      .arg(bench::spearman(drawnAll, order), 0, 'f', 3)
+                      .arg(paleDark)
+                      .arg(byTone[QStringLiteral("dark")].size());
+    }
     // Hair colour: the drawn hair's L* by label (where hair is drawn), light hair (blond, grey)
     // drawn light (L* from 40) and dark hair drawn dark, and the rank correlation of L* with
     // black < brown < blond < grey.
