@@ -137,7 +137,8 @@ double percentile(std::vector<double> v, double q);
 // Glasses (a frame's rims and bridge, glassesfind.cpp) and facial hair (facialhairfind.cpp) on a
 // face upright in `px`; both read out->evidence, measured before.
 void findGlasses(const Pixels &px, const FaceModel &face, double es0, double skinLuma, AppearanceFindings *out);
-void findFacialHair(
-    const Pixels &px, const FaceModel &face, double es0, double skinLuma, bool colourless, AppearanceFindings *out);
+// `skin` (the skin's colour) is what the facial hair's colour is read against.
+void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double skinLuma, bool colourless,
+    const QColor &skin, AppearanceFindings *out);
 
 } // namespace toonface
