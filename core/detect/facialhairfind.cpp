@@ -121,7 +121,7 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
         out->facialHair = out->lightFacialHair ? median(hair) : darkest(hair, 0.5);
     // The colour to draw it in: the strands unlike the skin between them, told as a shade like
     // the head's hair (the darker half above is a shadow's colour on a grey or white beard).
-    out->facialHairReading = readHairColour(hair, skin);
+    out->facialHairReading = readFacialHairColour(hair, skin);
 }
 
 } // namespace toonface

@@ -20,6 +20,9 @@ constexpr double kLikeSkin = 8.0;
 constexpr double kLikeRoom = 8.0;
 constexpr double kMinKept = 0.3;
 constexpr int kMinPixels = 12;
+// A facial hair's strand has at most this share of the skin's chroma (a blend of strands and the
+// skin between them has more).
+constexpr double kStrandChroma = 0.75;
 // Of the pixels kept, the strands' colour is the median of those between these quantiles of L*:
 // darker are the shadows between strands, lighter a shine or glint.
 constexpr double kLowQuantile = 0.2, kHighQuantile = 0.8;
@@ -118,6 +121,25 @@ HairColourReading readHairColour(const std::vector<QRgb> &sample, const QColor &
     out.hair = {median(l), median(a), median(b)};
     out.pixels = int(kept.size());
     out.valid = true;
+    return out;
+}
+
+HairColourReading readFacialHairColour(const std::vector<QRgb> &sample, const QColor &skin)
+{
+    if (!skin.isValid())
+        return {};
+    const HairLab skinLab = hairLabOf(skin);
+    const double skinChroma = std::hypot(skinLab.a, skinLab.b);
+    std::vector<QRgb> strands;
+    for (QRgb p : sample) {
+        const HairLab c = hairLabOf(QColor(p));
+        if (distance(c, skinLab) >= kLikeSkin && std::hypot(c.a, c.b) < kStrandChroma * skinChroma)
+            strands.push_back(p);
+    }
+    if (strands.size() < size_t(kMinPixels) || double(strands.size()) < kMinKept * double(sample.size()))
+        return readHairColour(sample, skin);
+    HairColourReading out = readHairColour(strands, skin);
+    out.kept = double(strands.size()) / double(sample.size());
     return out;
 }
 
