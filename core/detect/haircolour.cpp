@@ -30,10 +30,11 @@ constexpr double kLowQuantile = 0.2, kHighQuantile = 0.8;
 // chroma, in degrees of hue.
 constexpr double kSureL = 10.0, kSureChroma = 5.0, kSureHue = 10.0;
 constexpr double kPushFrom = 0.5;
-// The shades' own look, toward which a sure call pushes the drawn colour (house style: the
-// medians `toonface-bench likeness.attributes` prints per labelled shade, rounded): grey and
-// white hair is drawn without colour and at least this light; red hair with at least this chroma
-// at a copper hue; blond at least this light and coloured; black at most this dark.
+// The shades' own look, toward which a sure call pushes the drawn colour: grey and white hair is
+// drawn without colour and at least this light; red hair with at least this chroma at a copper
+// hue; blond at least this light and coloured; black at most this dark. These are drawing
+// choices (a cartoon's typical grey, copper, blond), set by eye, not fitted: they act only past
+// kPushFrom, and the shade called is what the labelled faces decide.
 constexpr double kGreyDrawnL = 58.0;
 constexpr double kRedDrawnChroma = 30.0, kRedDrawnHue = 48.0;
 constexpr double kBlondDrawnL = 62.0, kBlondDrawnChroma = 22.0, kBlondDrawnHue = 75.0;
