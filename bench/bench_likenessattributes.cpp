@@ -1,6 +1,7 @@
 #include "benchmark.h"
 #include "crossvalidation.h"
 #include "facecache.h"
+#include "haircolourreport.h"
 
 #include "detect/appearance.h"
 #include "detect/detector.h"
@@ -43,6 +44,7 @@ struct Labelled
     double drawnL = 0, cheekL = 0;
     QString hairColour; // the label: black, brown, blond, red, grey, none or ?
     QColor drawnHair, drawnSkin, parsedHair;
+    bench::HairColourRow hair; // the hair's and the facial hair's colour (haircolourreport.h)
 };
 
 // CIE L* (D65) of an sRGB colour.
@@ -81,6 +83,17 @@ void measure(Labelled *row, const QImage &photo, const FaceModel &face)
     row->drawnHair = style.components.value(QStringLiteral("hair")).fill;
     row->drawnSkin = style.components.value(QStringLiteral("face")).fill;
     row->parsedHair = f.parsedHair;
+    bench::HairColourRow &hair = row->hair;
+    hair.shade = bench::hairShadeOfLabel(row->hairColour);
+    hair.reading = f.hairReading;
+    hair.skin = row->drawnSkin;
+    hair.hairDrawn = !style.appearance.bald && !style.appearance.hat;
+    hair.drawn = row->drawnHair;
+    hair.before = f.parsedHair.isValid() ? f.parsedHair : row->drawnHair;
+    hair.bearded = (row->beard || row->moustache || row->goatee)
+        && (style.appearance.beard || style.appearance.moustache || style.appearance.goatee);
+    hair.beardBefore = f.facialHair;
+    hair.beardDrawn = style.components.value(QStringLiteral("beard")).fill;
     auto &m = row->m;
     m["glassesScore"] = f.glassesScore;
     m["bridgedDark"] = f.bridgedDark;
@@ -626,6 +639,12 @@ QJsonObject attributes()
                       .arg(counted)
                       .arg(bench::spearman(order, lightness), 0, 'f', 3);
     }
+    {
+        std::vector<bench::HairColourRow> hair;
+        for (size_t i : detected)
+            hair.push_back(rows[i].hair);
+        report << bench::hairColourReport(hair);
+    }
     // Which measures are evidence of what: the ROC area of each, per label.
     const std::vector<std::pair<QString, std::function<bool(const Labelled &)>>> labels {
         {QStringLiteral("facialHair"), [](const Labelled &r) { return r.beard || r.moustache || r.goatee; }},
@@ -672,6 +691,11 @@ QJsonObject attributes()
             o.insert(QStringLiteral("drawnHair"), r.drawnHair.name());
             o.insert(QStringLiteral("drawnSkin"), r.drawnSkin.name());
             o.insert(QStringLiteral("parsedHair"), r.parsedHair.isValid() ? r.parsedHair.name() : QString());
+            if (r.hair.reading.valid)
+                o.insert(QStringLiteral("hairReading"),
+                    QJsonArray {r.hair.reading.hair.l, r.hair.reading.hair.a, r.hair.reading.hair.b,
+                        r.hair.reading.skin.l, r.hair.reading.kept});
+            o.insert(QStringLiteral("beardDrawn"), r.hair.beardDrawn.name());
         }
         perFace.append(o);
     }

@@ -280,11 +280,11 @@ AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, co
         const Pixels levelPx(level->photo);
         out.evidence = measureEvidence(level->photo, level->face);
         findGlasses(levelPx, level->face, es0, skinLuma, &out);
-        findFacialHair(levelPx, level->face, es0, skinLuma, colourless(skin), &out);
+        findFacialHair(levelPx, level->face, es0, skinLuma, colourless(skin), skin, &out);
     } else {
         out.evidence = measureEvidence(photo, face);
         findGlasses(px, face, es0, skinLuma, &out);
-        findFacialHair(px, face, es0, skinLuma, colourless(skin), &out);
+        findFacialHair(px, face, es0, skinLuma, colourless(skin), skin, &out);
     }
     const HeadParse parse = parseHead(photo, face);
     if (parse.valid) {
@@ -297,8 +297,10 @@ AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, co
         out.templeHairSeen = parse.templeHairSeen;
         out.fallCut = parse.fallCut;
         out.cover = measureCover(parse);
-        if (parse.hairSeen || parse.templeHairSeen)
+        if (parse.hairSeen || parse.templeHairSeen) {
             out.parsedHair = parse.hair;
+            out.hairReading = readHairColour(parse);
+        }
     }
     findHead(px, face, es0, skin, &out);
     // What lies over the forehead in the parse, where the crown's rules saw no hat (a tight crop

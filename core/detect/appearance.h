@@ -1,6 +1,7 @@
 #pragma once
 
 #include "detect/appearanceevidence.h"
+#include "detect/haircolour.h"
 #include "detect/headcover.h"
 #include "face/appearance.h"
 #include "face/facemodel.h"
@@ -29,6 +30,7 @@ struct AppearanceFindings
     QColor glassesFrame; // the rims' colour
     bool tintedLenses = false; // lenses clearly darker than the skin around them
     QColor facialHair;
+    HairColourReading facialHairReading; // the facial hair's strands (haircolour.h)
     bool lightFacialHair = false; // grey or white, found by its strands alone (a full growth, not stubble)
     QColor hat;
 
@@ -69,6 +71,7 @@ struct AppearanceFindings
     // colour the parse sampled over the forehead (invalid when it saw none).
     HeadCover cover;
     QColor parsedHair;
+    HairColourReading hairReading; // the same sample read as strands unlike the skin and the room
     double hatScore = 0; // the crown's hue outside hair's hues, in degrees, times its saturation
     AppearanceEvidence evidence; // measured against the cheeks in L*a*b*
     HairLength hairLength = HairLength::Short;

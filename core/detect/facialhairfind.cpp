@@ -20,8 +20,8 @@ double darkShare(const std::vector<QRgb> &px, double skinLuma)
 
 } // namespace
 
-void findFacialHair(
-    const Pixels &px, const FaceModel &face, double es0, double skinLuma, bool colourless, AppearanceFindings *out)
+void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double skinLuma, bool colourless,
+    const QColor &skin, AppearanceFindings *out)
 {
     auto p = [&](const char *id) { return face.point(id); };
     const Fapu f = face.fapu();
@@ -119,6 +119,9 @@ void findFacialHair(
         = out->appearance.moustache && !darkMoustache && !out->appearance.beard && !out->appearance.goatee;
     if (!hair.empty())
         out->facialHair = out->lightFacialHair ? median(hair) : darkest(hair, 0.5);
+    // The colour to draw it in: the strands unlike the skin between them, told as a shade like
+    // the head's hair (the darker half above is a shadow's colour on a grey or white beard).
+    out->facialHairReading = readFacialHairColour(hair, skin);
 }
 
 } // namespace toonface

@@ -181,6 +181,7 @@ void measureHairFall(HeadParse *parse, const cv::Mat &rgb, const cv::Mat &lab, d
         const cv::Vec3b p = rgb.at<cv::Vec3b>(y, x);
         for (size_t k = 0; k < 3; ++k)
             sampleRgb[k].push_back(p[int(k)]);
+        out.hairSample.push_back(qRgb(p[0], p[1], p[2]));
     };
     for (int y = std::max(0, int(browTop - kHairSampleHigh * d)); y <= int(browTop - kHairSampleLow * d); ++y)
         for (int x = int(mid - kHairSampleHalf * d); x <= int(mid + kHairSampleHalf * d); ++x)
@@ -195,14 +196,17 @@ void measureHairFall(HeadParse *parse, const cv::Mat &rgb, const cv::Mat &lab, d
             c.clear();
         for (auto &c : sampleRgb)
             c.clear();
+        out.hairSample.clear();
         for (int y = std::max(0, int(browTop - kTempleHigh * d)); y <= int(eyeY); ++y)
             for (int x = 0; x < out.size.width(); ++x) {
                 const double off = std::abs(x - mid) / d;
                 if (off >= kTempleNear && off <= kTempleFar && out.at(x, y) == HeadParse::Other)
                     take(x, y);
             }
-        if (sample[0].size() < size_t(kMinHairSample * d * d))
+        if (sample[0].size() < size_t(kMinHairSample * d * d)) {
+            out.hairSample.clear();
             return;
+        }
         fromTemples = true;
     }
     const Lab hair {medianOf(sample[0]), medianOf(sample[1]), medianOf(sample[2])};

@@ -59,6 +59,9 @@ struct HeadParse
     // below the photo's edge.
     QImage work;
     QColor cheeks, hair;
+    // The pixels (photo colours, 0xffRRGGBB) the hair's colour was taken from: the person's
+    // pixels other than skin over the forehead or beside the temples (haircolour.h reads them).
+    std::vector<QRgb> hairSample;
     std::vector<QPointF> brows;
     double browTop = 0;
     std::vector<QPoint> foreheadTop;

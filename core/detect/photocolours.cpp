@@ -127,6 +127,13 @@ QColor medianColour(const std::vector<QColor> &colours)
     return medianColour(px);
 }
 
+// Hair read as strands (haircolour.h) is drawn in its shade's look as far as its call is sure;
+// `seen` (the finder's plain median) where it read nothing.
+QColor drawnHair(const HairColourReading &reading, const QColor &seen)
+{
+    return reading.valid ? drawnHairColour(reading, classifyHair(reading)) : seen;
+}
+
 QColor mix(QColor a, QColor b, double t)
 {
     return QColor::fromRgbF(float(a.redF() + (b.redF() - a.redF()) * t),
@@ -390,7 +397,8 @@ void sampleColours(const QImage &original, const FaceModel &face, Style *style, 
         setHair(hair);
     }
     if (found.parsedHair.isValid() && !appearance.bald && !appearance.hat && !lightBesideTemples) {
-        hair = monochrome ? hairFromGrey(qGray(found.parsedHair.rgb())) : found.parsedHair;
+        hair
+            = monochrome ? hairFromGrey(qGray(found.parsedHair.rgb())) : drawnHair(found.hairReading, found.parsedHair);
         hairOk = true;
         setHair(hair);
     }
@@ -438,12 +446,20 @@ void sampleColours(const QImage &original, const FaceModel &face, Style *style, 
     if (found.facialHair.isValid()) {
         // In the person's hair colour where the hair was seen; stubble (not much darker than the
         // skin) is drawn see-through, grey or white hair as full as it is.
-        const QColor seen = monochrome ? hairFromGrey(qGray(found.facialHair.rgb())) : found.facialHair;
+        const QColor seen = monochrome ? hairFromGrey(qGray(found.facialHair.rgb()))
+                                       : drawnHair(found.facialHairReading, found.facialHair);
         // Evened out with the head's hair when it is of a kind with it; a hair colour far from
         // it is another person's hair (a grey beard under dark hair) or the room the hair
-        // outline strayed into around a shaved head, and is left out.
-        QColor fill = hairOk && rgbDistance(seen, hair) < kSameHair ? mix(seen, hair, 0.5) : seen;
-        const bool stubble = !found.lightFacialHair && qGray(found.facialHair.rgb()) > 0.55 * qGray(skin.rgb());
+        // outline strayed into around a shaved head, and is left out. Where both were read as
+        // strands, of a kind means of one shade (a grey beard stays grey under brown hair).
+        const bool bothRead = !monochrome && found.facialHairReading.valid && found.hairReading.valid;
+        const bool sameShade
+            = !bothRead || classifyHair(found.facialHairReading).shade == classifyHair(found.hairReading).shade;
+        QColor fill = hairOk && sameShade && rgbDistance(seen, hair) < kSameHair ? mix(seen, hair, 0.5) : seen;
+        const bool greyRead
+            = found.facialHairReading.valid && classifyHair(found.facialHairReading).shade == HairShade::Grey;
+        const bool stubble
+            = !found.lightFacialHair && !greyRead && qGray(found.facialHair.rgb()) > 0.55 * qGray(skin.rgb());
         const QColor stroke = fill.darker(140);
         if (stubble)
             fill.setAlpha(150);

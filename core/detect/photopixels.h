@@ -134,10 +134,15 @@ QColor darkest(std::vector<QRgb> px, double share);
 QRectF around(QPointF c, double rx, double ry);
 double percentile(std::vector<double> v, double q);
 
+// haircolour.h's reading of facial hair, whose strands lie over the skin: of the pixels unlike the skin, those with
+// less chroma than it (hair is less red than the skin it grows from; a pixel of strands blended
+// with the skin between them is not), else as the head's hair.
+HairColourReading readFacialHairColour(const std::vector<QRgb> &sample, const QColor &skin);
 // Glasses (a frame's rims and bridge, glassesfind.cpp) and facial hair (facialhairfind.cpp) on a
 // face upright in `px`; both read out->evidence, measured before.
 void findGlasses(const Pixels &px, const FaceModel &face, double es0, double skinLuma, AppearanceFindings *out);
-void findFacialHair(
-    const Pixels &px, const FaceModel &face, double es0, double skinLuma, bool colourless, AppearanceFindings *out);
+// `skin` (the skin's colour) is what the facial hair's colour is read against.
+void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double skinLuma, bool colourless,
+    const QColor &skin, AppearanceFindings *out);
 
 } // namespace toonface

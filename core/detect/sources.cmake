@@ -7,6 +7,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   detect/colourbalance.h detect/colourbalance.cpp
   detect/photopixels.h detect/photopixels.cpp detect/glassesfind.cpp detect/facialhairfind.cpp
   detect/headparse.h detect/headparse.cpp
+  detect/haircolour.h detect/haircolour.cpp
   detect/hairoutline.h detect/hairoutline.cpp
   detect/headcover.h detect/headcover.cpp
   detect/skintone.h detect/skintone.cpp

@@ -36,6 +36,7 @@ struct DrawnFaceOptions
     int grain = 3; // the noise over the whole photo, in 8-bit levels either way
     bool hat = false;
     bool bald = false;
+    QColor background; // invalid: a wall of several colours with edges
     double browWidth = 0.07; // in ES0
     QColor browColour; // invalid: the hair's, a little darker (a bald head's a dark brown)
     // The frame: its rims' width in ES0 (0: 0.03 ES0, at least two pixels) and colour (invalid:
@@ -135,7 +136,8 @@ inline QImage drawnFace(const DrawnFaceOptions &o, const FaceModel &face = drawn
     QPainter p(&img);
     const QColor wall[] = {QColor(120, 150, 190), QColor(200, 200, 190), QColor(90, 120, 80), QColor(180, 120, 90)};
     for (int i = 0; i < 10; ++i)
-        p.fillRect(QRect(i * img.width() / 10, 0, img.width() / 10 + 1, img.height()), wall[i % 4]);
+        p.fillRect(QRect(i * img.width() / 10, 0, img.width() / 10 + 1, img.height()),
+            o.background.isValid() ? o.background : wall[i % 4]);
     p.setRenderHint(QPainter::Antialiasing);
     p.setPen(Qt::NoPen);
     auto P = [&](const char *id) { return face.point(id); };
