@@ -197,16 +197,25 @@ int runAnimate(const Command &self, const QStringList &args)
         addTrackToTimeline(track.frames, track.fps, &timeline);
         const double period = track.fps > 0 ? 1.0 / track.fps : 1.0 / frameRate;
         speech.duration = track.frames.isEmpty() ? 0.0 : track.frames.last().time + period;
-        const AudioResult sound = track.hasAudio ? loadAudio(clipPath) : AudioResult {};
+        // The clip's sound is copied a block at a time: an hour-long clip's sound is never held whole.
+        const QString soundPath = workDir + QLatin1Char('/') + outputBase + QStringLiteral("-sound.wav");
+        if (track.hasAudio && !QDir().mkpath(workDir)) // a frame folder not made yet
+            return fail(ExitFailed, Cli::tr("cannot create the folder %1").arg(workDir));
+        StageProgress soundLines;
+        const AudioResult sound = track.hasAudio
+            ? copyAudio(
+                clipPath, soundPath, [&](double f, const QString &) { soundLines(f, Cli::tr("copying the sound")); },
+                interruption())
+            : AudioResult {};
+        if (sound.status == AudioStatus::Cancelled)
+            return fail(ExitInterrupted, Cli::tr("%1: interrupted; nothing was written").arg(parser.value(output)));
+        if (sound.status == AudioStatus::Unwritable)
+            return fail(ExitFailed, sound.error);
         if (sound.ok()) {
-            speech.audioPath = workDir + QLatin1Char('/') + outputBase + QStringLiteral("-sound.wav");
-            QString error;
-            if (!QDir().mkpath(workDir)) // a frame folder not made yet
-                return fail(ExitFailed, Cli::tr("cannot create the folder %1").arg(workDir));
-            if (!writeAudio(speech.audioPath, sound.audio, &error))
-                return fail(ExitFailed, error);
-            speech.duration = std::max(speech.duration, sound.audio.duration());
-            timeline.setAudioClips({AudioClip {speech.audioPath, 0.0, sound.audio.duration()}});
+            speech.audioPath = soundPath;
+            const double seconds = double(sound.sampleCount) / kSpeechSampleRate;
+            speech.duration = std::max(speech.duration, seconds);
+            timeline.setAudioClips({AudioClip {speech.audioPath, 0.0, seconds}});
         } else {
             warn(track.hasAudio ? Cli::tr("%1: the animation is silent").arg(sound.error)
                                 : Cli::tr("%1: the clip has no sound; the animation is silent").arg(clipPath));

@@ -13,6 +13,7 @@
 #include "media/audiosource.h"
 #include "media/mediareader.h"
 #include "media/pngframes.h"
+#include "media/soundcheck.h"
 #include "media/userfile.h"
 #include "render/svgface.h"
 #include "speech/progress.h"
@@ -167,12 +168,9 @@ std::optional<ExportResult> checkRequest(const ExportRequest &request, SvgFace *
         // the user hands on (a shared project may name any file as its sound).
         if (const QString problem = irregularFileProblem(sound); !problem.isEmpty())
             return result(ExportStatus::BadInput, sound, problem);
-        QString why;
-        const std::optional<MediaInfo> media = probeMedia(sound, &why);
-        if (!media)
-            return ExportResult {ExportStatus::BadInput, why};
-        if (!media->hasAudio)
-            return result(ExportStatus::BadInput, sound, SoundText::tr("holds no sound"));
+        // Its header and a few sampled packets: an hour of sound is not decoded twice.
+        if (const SoundCheck check = checkSound(sound); !check.ok())
+            return ExportResult {ExportStatus::BadInput, check.error};
     }
     const QFileInfo target(QDir::cleanPath(out));
     if (!target.absoluteDir().exists())

@@ -229,65 +229,167 @@ Audio resampled(const Audio &audio, int rate)
 
 namespace {
 
-bool writeWav(const QString &path, const Audio &audio, QString *error)
+// 16-bit PCM WAV written a block at a time: the header's lengths are filled in at finish().
+// QSaveFile writes beside the target, so the file appears whole or not at all.
+class WavFileWriter final : public AudioFileWriter
 {
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly)) {
-        *error = SoundText::tr("cannot write %1: %2").arg(path, f.errorString());
+public:
+    WavFileWriter(const QString &path, int sampleRate)
+        : m_file(path)
+        , m_sampleRate(sampleRate)
+    { }
+
+    bool open(QString *error)
+    {
+        if (m_sampleRate <= 0) {
+            *error = withProblem(m_file.fileName(), SoundText::tr("invalid sample rate %1").arg(m_sampleRate));
+            return false;
+        }
+        if (!m_file.open(QIODevice::WriteOnly)) {
+            *error = SoundText::tr("cannot write %1: %2").arg(m_file.fileName(), m_file.errorString());
+            return false;
+        }
+        return writeOut(header(0), error);
+    }
+
+    bool write(const float *samples, qsizetype count, QString *error) override
+    {
+        if (!m_file.isOpen()) {
+            *error = withProblem(m_file.fileName(), SoundText::tr("the writer is closed"));
+            return false;
+        }
+        // The data chunk's length is 32 bits: at 16 kHz that is 37 hours of sound.
+        if (m_dataBytes + 2 * count > kMaxDataBytes) {
+            *error = withProblem(m_file.fileName(), SoundText::tr("too long for a WAV file"));
+            m_file.cancelWriting();
+            return false;
+        }
+        QByteArray pcm(2 * count, Qt::Uninitialized);
+        for (qsizetype i = 0; i < count; ++i) {
+            const float s = std::clamp(samples[i], -1.0f, 1.0f);
+            const qint16 v = qint16(std::lround(s * 32767.0f));
+            pcm[2 * i] = char(v & 0xff);
+            pcm[2 * i + 1] = char((v >> 8) & 0xff);
+        }
+        m_dataBytes += pcm.size();
+        return writeOut(pcm, error);
+    }
+
+    bool finish(QString *error) override
+    {
+        if (!m_file.isOpen()) {
+            *error = withProblem(m_file.fileName(), SoundText::tr("the writer is closed"));
+            return false;
+        }
+        if (!m_file.seek(0) || !writeOut(header(m_dataBytes), error))
+            return false;
+        if (!m_file.commit()) {
+            *error = SoundText::tr("cannot write %1: %2").arg(m_file.fileName(), writeProblem(m_file));
+            return false;
+        }
+        return true;
+    }
+
+private:
+    static constexpr qint64 kMaxDataBytes = 0xffffffffLL - 36;
+
+    QByteArray header(qint64 dataBytes) const
+    {
+        QByteArray h;
+        auto u32 = [&](quint32 v) {
+            for (int k = 0; k < 4; ++k)
+                h.append(char((v >> (8 * k)) & 0xff));
+        };
+        auto u16 = [&](quint16 v) {
+            h.append(char(v & 0xff));
+            h.append(char(v >> 8));
+        };
+        h.append("RIFF");
+        u32(quint32(36 + dataBytes));
+        h.append("WAVEfmt ");
+        u32(16);
+        u16(1); // PCM
+        u16(1); // mono
+        u32(quint32(m_sampleRate));
+        u32(quint32(m_sampleRate * 2));
+        u16(2);
+        u16(16);
+        h.append("data");
+        u32(quint32(dataBytes));
+        return h;
+    }
+
+    bool writeOut(const QByteArray &bytes, QString *error)
+    {
+        if (m_file.write(bytes) == bytes.size())
+            return true;
+        *error = SoundText::tr("cannot write %1: %2").arg(m_file.fileName(), writeProblem(m_file));
+        m_file.cancelWriting();
         return false;
     }
-    const quint32 dataBytes = quint32(audio.samples.size() * 2);
-    QByteArray h;
-    auto u32 = [&](quint32 v) {
-        for (int k = 0; k < 4; ++k)
-            h.append(char((v >> (8 * k)) & 0xff));
-    };
-    auto u16 = [&](quint16 v) {
-        h.append(char(v & 0xff));
-        h.append(char(v >> 8));
-    };
-    h.append("RIFF");
-    u32(36 + dataBytes);
-    h.append("WAVEfmt ");
-    u32(16);
-    u16(1); // PCM
-    u16(1); // mono
-    u32(quint32(audio.sampleRate));
-    u32(quint32(audio.sampleRate * 2));
-    u16(2);
-    u16(16);
-    h.append("data");
-    u32(dataBytes);
-    QByteArray pcm(qsizetype(dataBytes), Qt::Uninitialized);
-    for (qsizetype i = 0; i < audio.samples.size(); ++i) {
-        const float s = std::clamp(audio.samples[i], -1.0f, 1.0f);
-        const qint16 v = qint16(std::lround(s * 32767.0f));
-        pcm[2 * i] = char(v & 0xff);
-        pcm[2 * i + 1] = char((v >> 8) & 0xff);
-    }
-    f.write(h);
-    f.write(pcm);
-    if (!f.commit()) {
-        *error = SoundText::tr("cannot write %1: %2").arg(path, writeProblem(f));
-        return false;
-    }
-    return true;
+
+    QSaveFile m_file;
+    int m_sampleRate;
+    qint64 m_dataBytes = 0;
+};
+
+bool isWav(const QString &path)
+{
+    return QFileInfo(path).suffix().toLower() == QLatin1String("wav");
 }
 
 } // namespace
 
 bool writeAudio(const QString &path, const Audio &audio, QString *error)
 {
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix == QLatin1String("wav"))
-        return writeWav(path, audio, error);
     std::unique_ptr<AudioFileWriter> writer = openAudioFileWriter(path, audio.sampleRate, error);
     return writer && writer->write(audio.samples.constData(), audio.samples.size(), error) && writer->finish(error);
 }
 
 std::unique_ptr<AudioFileWriter> openAudioFileWriter(const QString &path, int sampleRate, QString *error)
 {
+    if (isWav(path)) {
+        auto wav = std::make_unique<WavFileWriter>(path, sampleRate);
+        return wav->open(error) ? std::move(wav) : nullptr;
+    }
     return detail::openFfmpegAudioWriter(path, sampleRate, error);
+}
+
+AudioResult copyAudio(
+    const QString &source, const QString &target, const SpeechProgressFn &progress, const std::atomic_bool *cancel)
+{
+    QString error;
+    std::unique_ptr<AudioFileWriter> writer = openAudioFileWriter(target, kSpeechSampleRate, &error);
+    if (!writer) {
+        AudioResult r;
+        r.status = AudioStatus::Unwritable;
+        r.error = error;
+        return r;
+    }
+    // Decoding stops at the first block the writer refuses, or when *cancel becomes true.
+    std::atomic_bool stop = false;
+    bool written = true;
+    AudioResult r = streamAudio(
+        source,
+        [&](const float *samples, qsizetype count) {
+            if (isCancelled(cancel) || !written || !writer->write(samples, count, &error)) {
+                written = written && isCancelled(cancel);
+                stop = true;
+            }
+        },
+        progress, &stop);
+    if (!written) {
+        r.status = AudioStatus::Unwritable;
+        r.error = error;
+    } else if (r.ok() && !writer->finish(&error)) {
+        r.status = AudioStatus::Unwritable;
+        r.error = error;
+    }
+    if (!r.ok()) {
+        writer.reset();
+        QFile::remove(target);
+    }
+    return r;
 }
 
 } // namespace toonface

@@ -23,7 +23,14 @@ struct Audio
     bool isEmpty() const { return samples.isEmpty(); }
 };
 
-enum class AudioStatus { Ok, Unreadable, Empty, Silent, Cancelled };
+enum class AudioStatus {
+    Ok,
+    Unreadable,
+    Empty,
+    Silent,
+    Cancelled,
+    Unwritable, // copyAudio: the target cannot be written
+};
 
 struct AudioResult
 {
@@ -49,6 +56,14 @@ using AudioSink = std::function<void(const float *samples, qsizetype count)>;
 // them (a long recording need never be held whole): the result's `audio` stays empty and
 // `sampleCount` counts them. The same errors as loadAudio.
 AudioResult streamAudio(const QString &path, const AudioSink &sink, const SpeechProgressFn &progress = {},
+    const std::atomic_bool *cancel = nullptr);
+
+// Decodes like loadAudio and writes the samples to `target` (at kSpeechSampleRate, the format
+// chosen by the suffix as writeAudio does) as they come, never holding the sound whole: the
+// same file as loadAudio followed by writeAudio. The same errors as loadAudio, and the
+// target's (status Unwritable); on any failure or cancel (Cancelled) no target is left. The result's
+// `audio` stays empty.
+AudioResult copyAudio(const QString &source, const QString &target, const SpeechProgressFn &progress = {},
     const std::atomic_bool *cancel = nullptr);
 
 // Resamples `audio` to `rate` (FFmpeg's resampler). Returns `audio` unchanged at that rate.
@@ -92,7 +107,7 @@ public:
 };
 
 // Opens `path` for mono sound at `sampleRate`, the format chosen by the suffix as writeAudio
-// does (.flac, .mp3, .ogg, .opus, .m4a/.aac; not .wav). Null with *error naming the file on
+// does (.wav as 16-bit PCM, .flac, .mp3, .ogg, .opus, .m4a/.aac). Null with *error naming the file on
 // failure.
 std::unique_ptr<AudioFileWriter> openAudioFileWriter(const QString &path, int sampleRate, QString *error);
 

@@ -158,8 +158,8 @@ OnsetSignals::OnsetSignals(const SpeechFeatures &f)
     m_sumNucleus = prefix(m_nucleus);
     m_sumSpeech = prefix(speech);
     m_sumPause = prefix(m_pause);
-    m_maxNucleus = sparseMax(m_nucleus);
-    m_maxLoud = sparseMax(m_loud);
+    m_maxNucleus = RangeMax(m_nucleus);
+    m_maxLoud = RangeMax(m_loud);
     m_nextPause.assign(n + 1, int(n));
     for (int t = int(n) - 1; t >= 0; --t)
         m_nextPause[size_t(t)] = m_pause[size_t(t)] > 0.5f ? t : m_nextPause[size_t(t) + 1];

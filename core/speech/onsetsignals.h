@@ -1,6 +1,7 @@
 #pragma once
 
 #include "speech/features.h"
+#include "speech/rangemax.h"
 #include "speech/script.h"
 
 #include <algorithm>
@@ -75,28 +76,11 @@ public:
     }
 
 private:
-    using SparseMax = std::vector<std::vector<float>>;
-    static SparseMax sparseMax(const std::vector<float> &v)
-    {
-        SparseMax table {v};
-        for (size_t len = 2; len <= v.size(); len *= 2) {
-            const auto &prev = table.back();
-            std::vector<float> next(v.size() - len + 1);
-            for (size_t i = 0; i + len <= v.size(); ++i)
-                next[i] = std::max(prev[i], prev[i + len / 2]);
-            table.push_back(std::move(next));
-        }
-        return table;
-    }
-    double rangeMax(const SparseMax &table, int from, int to) const
+    double rangeMax(const RangeMax &table, int from, int to) const
     {
         from = std::max(from, 0);
         to = std::min(to, m_frames);
-        if (to <= from)
-            return 0;
-        const int k = std::bit_width(unsigned(to - from)) - 1;
-        const auto &row = table[size_t(k)];
-        return std::max(row[size_t(from)], row[size_t(to - (1 << k))]);
+        return to <= from ? 0.0 : double(table(from, to));
     }
 
     static std::vector<double> prefix(const std::vector<float> &v)
@@ -139,7 +123,7 @@ private:
     int m_frames;
     std::vector<float> m_ln, m_lnVoiced, m_voicing, m_loud, m_nucleus, m_pause;
     std::vector<double> m_sumLoud, m_sumNucleus, m_sumSpeech, m_sumPause;
-    SparseMax m_maxNucleus, m_maxLoud;
+    RangeMax m_maxNucleus, m_maxLoud;
     std::vector<int> m_nextPause, m_nextSpeech;
     std::vector<int> m_firstValley; // per frame: the first valley at or after it
     struct Valley

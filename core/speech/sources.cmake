@@ -16,6 +16,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   speech/localnorm.h speech/localnorm.cpp
   speech/dtw.h speech/dtw.cpp
   speech/onsetsignals.h speech/onsetsignals.cpp
+  speech/rangemax.h
   speech/samplerelay.h speech/samplerelay.cpp
   speech/referencefeatures.h speech/referencefeatures.cpp
   speech/syllablesearch.h speech/syllablesearch.cpp

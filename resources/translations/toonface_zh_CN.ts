@@ -4644,6 +4644,18 @@ The points are unchanged.</source>
         <source>the writer is closed</source>
         <translation>写入器已关闭</translation>
     </message>
+    <message>
+        <source>no samples in %1 packets</source>
+        <translation>%1 个数据包中没有任何样本</translation>
+    </message>
+    <message>
+        <source>the sound does not decode at %1 s: %2</source>
+        <translation>声音在 %1 秒处无法解码：%2</translation>
+    </message>
+    <message>
+        <source>too long for a WAV file</source>
+        <translation>对 WAV 文件来说太长</translation>
+    </message>
 </context>
 <context>
     <name>toonface::SpeechDialog</name>
@@ -5706,6 +5718,10 @@ Every job of the editor, with no display.</source>
     <message>
         <source>--face-as takes svg or video, not &apos;%1&apos;</source>
         <translation>--face-as 需要 svg 或 video，而不是“%1”</translation>
+    </message>
+    <message>
+        <source>copying the sound</source>
+        <translation>正在复制声音</translation>
     </message>
 </context>
 </TS>

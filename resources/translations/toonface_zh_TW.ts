@@ -4644,6 +4644,18 @@ The points are unchanged.</source>
         <source>the writer is closed</source>
         <translation>寫入器已關閉</translation>
     </message>
+    <message>
+        <source>no samples in %1 packets</source>
+        <translation>%1 個封包中沒有任何樣本</translation>
+    </message>
+    <message>
+        <source>the sound does not decode at %1 s: %2</source>
+        <translation>聲音在 %1 秒處無法解碼：%2</translation>
+    </message>
+    <message>
+        <source>too long for a WAV file</source>
+        <translation>對 WAV 檔案來說太長</translation>
+    </message>
 </context>
 <context>
     <name>toonface::SpeechDialog</name>
@@ -5706,6 +5718,10 @@ Every job of the editor, with no display.</source>
     <message>
         <source>--face-as takes svg or video, not &apos;%1&apos;</source>
         <translation>--face-as 需要 svg 或 video，而不是「%1」</translation>
+    </message>
+    <message>
+        <source>copying the sound</source>
+        <translation>正在複製聲音</translation>
     </message>
 </context>
 </TS>

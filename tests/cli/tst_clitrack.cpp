@@ -14,6 +14,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace toonface;
@@ -160,7 +161,19 @@ private Q_SLOTS:
             QStringLiteral("--snap-mouth"), QStringLiteral("-o"), out});
         QVERIFY2(r.code == 0, r.err.constData());
         QVERIFY(QFileInfo(out).size() > 1000);
-        QVERIFY(QFileInfo::exists(m_dir.filePath(QStringLiteral("driven-sound.wav"))));
+        // The clip's sound, copied a block at a time: what decoding it whole gives, to the
+        // 16-bit WAV file's rounding and scale (written times 32767, read back over 32768).
+        const AudioResult copied = loadAudio(m_dir.filePath(QStringLiteral("driven-sound.wav")));
+        QVERIFY2(copied.ok(), qPrintable(copied.error));
+        const AudioResult whole = loadAudio(kGrid);
+        QVERIFY2(whole.ok(), qPrintable(whole.error));
+        QCOMPARE(copied.audio.samples.size(), whole.audio.samples.size());
+        // A WAV file holds [-1, 1]: louder samples are clipped.
+        for (qsizetype i = 0; i < whole.audio.samples.size(); ++i) {
+            const float expected = std::clamp(whole.audio.samples[i], -1.0f, 1.0f);
+            QVERIFY2(std::abs(copied.audio.samples[i] - expected) <= 2.0f / 32768,
+                qPrintable(QStringLiteral("sample %1: %2, not %3").arg(i).arg(copied.audio.samples[i]).arg(expected)));
+        }
     }
 
     // PNG frames into a folder that does not exist yet: made, with the clip's sound beside them.
