@@ -1,6 +1,7 @@
 #include "benchmark.h"
 #include "crossvalidation.h"
 #include "facecache.h"
+#include "likenessage.h"
 
 #include "detect/appearance.h"
 #include "detect/detector.h"
@@ -43,6 +44,7 @@ struct Labelled
     double drawnL = 0, cheekL = 0;
     QString hairColour; // the label: black, brown, blond, red, grey, none or ?
     QColor drawnHair, drawnSkin, parsedHair;
+    AgeEvidence ageEvidence;
 };
 
 // CIE L* (D65) of an sRGB colour.
@@ -81,6 +83,7 @@ void measure(Labelled *row, const QImage &photo, const FaceModel &face)
     row->drawnHair = style.components.value(QStringLiteral("hair")).fill;
     row->drawnSkin = style.components.value(QStringLiteral("face")).fill;
     row->parsedHair = f.parsedHair;
+    row->ageEvidence = f.ageEvidence;
     auto &m = row->m;
     m["glassesScore"] = f.glassesScore;
     m["bridgedDark"] = f.bridgedDark;
@@ -545,6 +548,12 @@ QJsonObject attributes()
         onChildren += rows[i].age == QLatin1String("child");
     }
     report << QStringLiteral("facial hair drawn on women %1, on children %2").arg(onWomen).arg(onChildren);
+    {
+        std::vector<bench::AgeRow> ages;
+        for (size_t i : detected)
+            ages.push_back({rows[i].age, rows[i].ageEvidence, rows[i].shipped.age});
+        report << bench::ageReport(ages);
+    }
     // Skin lightness.
     std::vector<double> drawn, cheeks, diff;
     for (size_t i : detected) {
