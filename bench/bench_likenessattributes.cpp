@@ -4,6 +4,7 @@
 #include "likenessage.h"
 
 #include "detect/appearance.h"
+#include "detect/browlook.h"
 #include "detect/detector.h"
 #include "detect/photocolours.h"
 #include "face/fapu.h"
@@ -45,6 +46,7 @@ struct Labelled
     QString hairColour; // the label: black, brown, blond, red, grey, none or ?
     QColor drawnHair, drawnSkin, parsedHair;
     AgeEvidence ageEvidence;
+    BrowLook brows;
 };
 
 // CIE L* (D65) of an sRGB colour.
@@ -84,6 +86,7 @@ void measure(Labelled *row, const QImage &photo, const FaceModel &face)
     row->drawnSkin = style.components.value(QStringLiteral("face")).fill;
     row->parsedHair = f.parsedHair;
     row->ageEvidence = f.ageEvidence;
+    row->brows = measureBrows(photo, face);
     auto &m = row->m;
     m["glassesScore"] = f.glassesScore;
     m["bridgedDark"] = f.bridgedDark;
@@ -551,8 +554,10 @@ QJsonObject attributes()
     {
         std::vector<bench::AgeRow> ages;
         for (size_t i : detected)
-            ages.push_back({rows[i].age, rows[i].ageEvidence, rows[i].shipped.age});
+            ages.push_back({rows[i].age, rows[i].ageEvidence, rows[i].shipped.age, rows[i].sex, rows[i].brows.thickness,
+                rows[i].brows.contrast});
         report << bench::ageReport(ages);
+        report << bench::browReport(ages);
     }
     // Skin lightness.
     std::vector<double> drawn, cheeks, diff;

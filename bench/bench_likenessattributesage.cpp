@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 
 // The age group models (detect/agegroup.h): class-balanced logistic regressions with an L2
 // penalty of 1 on standardised features (the penalty keeps five weights fitted on 21 children
@@ -249,6 +250,49 @@ QStringList ageReport(const std::vector<AgeRow> &rows)
     out << QStringLiteral("age group — fitted on all %1 faces: child {%2}; elderly {%3}")
                .arg(scored.size())
                .arg(list(all.child), list(all.elderly));
+    return out;
+}
+
+QStringList browReport(const std::vector<AgeRow> &rows)
+{
+    auto line = [&](const QString &group, const std::function<bool(const AgeRow &)> &in, bool percentiles) {
+        std::vector<double> t, c;
+        for (const AgeRow &r : rows)
+            if (in(r)) {
+                t.push_back(r.browThickness);
+                c.push_back(r.browContrast);
+            }
+        if (t.empty())
+            return QString();
+        if (!percentiles)
+            return QStringLiteral("  %1 (n %2): thickness %3, contrast %4")
+                .arg(group)
+                .arg(t.size())
+                .arg(quantile(t, 0.5), 0, 'f', 3)
+                .arg(quantile(c, 0.5), 0, 'f', 1);
+        return QStringLiteral("  %1 (n %2): thickness (ES0) %3 / %4 / %5, contrast (L*) %6 / %7 / %8")
+            .arg(group)
+            .arg(t.size())
+            .arg(quantile(t, 0.1), 0, 'f', 3)
+            .arg(quantile(t, 0.5), 0, 'f', 3)
+            .arg(quantile(t, 0.9), 0, 'f', 3)
+            .arg(quantile(c, 0.1), 0, 'f', 1)
+            .arg(quantile(c, 0.5), 0, 'f', 1)
+            .arg(quantile(c, 0.9), 0, 'f', 1);
+    };
+    QStringList out {QStringLiteral("brows — measured (browlook.h), 10th / 50th / 90th percentile, then medians "
+                                    "by group:")};
+    out << line(
+        QStringLiteral("all"), [](const AgeRow &) { return true; }, true);
+    for (const char *g : {"child", "young", "adult", "elderly"})
+        out << line(
+            QStringLiteral("age %1").arg(QLatin1StringView(g)),
+            [g](const AgeRow &r) { return r.label == QLatin1StringView(g); }, false);
+    for (const char *g : {"m", "f"})
+        out << line(
+            QStringLiteral("sex %1").arg(QLatin1StringView(g)),
+            [g](const AgeRow &r) { return r.sex == QLatin1StringView(g); }, false);
+    out.removeAll(QString());
     return out;
 }
 

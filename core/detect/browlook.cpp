@@ -110,7 +110,7 @@ void applyBrowLook(const BrowLook &look, const QColor &skinDrawn, ComponentStyle
     if (!look.seen || !skinDrawn.isValid())
         return;
     brows->strokeWidth = std::clamp(kBrowWidth * look.thickness / kMedianBrowThickness, kBrowWidths[0], kBrowWidths[1]);
-    const double target = std::max(5.0, labOf(skinDrawn).l - look.contrast);
+    const double target = std::max(5.0, labOf(skinDrawn).l - std::max(look.contrast, kMinBrowContrast));
     const QColor base = brows->stroke.isValid() ? brows->stroke : brows->fill;
     if (!base.isValid())
         return;

@@ -38,6 +38,10 @@ BrowLook measureBrows(const QImage &photo, const FaceModel &face);
 inline constexpr double kMedianBrowThickness = 0.146;
 inline constexpr double kBrowWidth = 4.5; // ES0/100, Style::baseComponents()' eyebrows
 inline constexpr double kBrowWidths[2] = {1.5, 8.0};
+// Drawn brows lie at least this far (L*) below the drawn skin, however faint the photo's: a
+// cartoon's brow that does not read against the skin is no brow (the 10th percentile of the
+// measured contrast over faces-attributes is 14.6, its median 29).
+inline constexpr double kMinBrowContrast = 20.0;
 void applyBrowLook(const BrowLook &look, const QColor &skinDrawn, ComponentStyle *brows);
 
 } // namespace toonface

@@ -9,7 +9,7 @@ namespace {
 // A child's brow: at most this line weight (ES0/100; the base brow is 4.5) ...
 constexpr double kChildBrowWidth = 2.2;
 // ... and this share of the way from its colour to the skin's.
-constexpr double kChildBrowToSkin = 0.45;
+constexpr double kChildBrowToSkin = 0.3;
 
 QColor mix(const QColor &a, const QColor &b, double t)
 {

@@ -47,12 +47,13 @@ QImage wrinkled(QImage photo, const FaceModel &face, const QColor &skin)
     const double es0 = QLineF(face.point("3.6"), face.point("3.5")).length();
     p.setPen(QPen(skin.darker(135), std::max(1.0, 0.012 * es0)));
     QRandomGenerator rng(25);
+    auto between = [&](double lo, double hi) { return lo + rng.bounded(hi - lo); };
     for (bool left : {true, false}) {
         const QPointF eye = face.point(left ? "3.6" : "3.5");
         const double out = left ? -1 : 1;
         for (int k = 0; k < 40; ++k) {
-            const QPointF a = eye + QPointF(out * es0 * rng.bounded(0.05, 0.75), es0 * rng.bounded(0.12, 0.8));
-            p.drawLine(a, a + QPointF(out * es0 * 0.12, es0 * rng.bounded(-0.03, 0.05)));
+            const QPointF a = eye + QPointF(out * es0 * between(0.05, 0.75), es0 * between(0.12, 0.8));
+            p.drawLine(a, a + QPointF(out * es0 * 0.12, es0 * between(-0.03, 0.05)));
         }
         for (int k = 0; k < 4; ++k) {
             const QPointF a = face.point(left ? "3.12" : "3.7") + QPointF(out * 0.05 * es0, (k - 1.5) * 0.05 * es0);
