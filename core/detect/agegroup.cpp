@@ -91,12 +91,13 @@ AgeModels shippedAgeModels()
     // model on the 140 not labelled child), by `toonface-bench likeness.attributes`, which prints
     // the coefficients and the held-out figures. The thresholds chosen by 5-fold stratified
     // cross-validation over 10 random splits, precision first: held out, child 0.8 gives precision
-    // 0.79 and recall 0.79 (0.9: 0.80, 0.66); elderly 0.75 gives 0.74 and 0.48 (0.5: 0.55, 0.67).
+    // 0.78 and recall 0.76 (0.9: 0.79, 0.64; 0.5: 0.71, 0.91); elderly 0.75 gives 0.73 and 0.48
+    // (0.85: 0.78, 0.35; 0.5: 0.56, 0.69).
     // The child model says a short lower face, a short nose, a round face and smooth skin; the
     // elderly one textured cheeks and under-eyes, a wide nose and narrow eyes.
     AgeModels m;
-    m.child = {13.55, -12.354, -16.724, 5.9202, -252.18, -173.03};
-    m.elderly = {15.934, 188.03, 92.076, 0.69925, -48.078};
+    m.child = {13.5461, -12.4282, -16.6038, 5.88195, -247.96, -173.603};
+    m.elderly = {15.9473, 188.072, 94.1785, 0.655381, -48.088};
     m.childThreshold = 0.8;
     m.elderlyThreshold = 0.75;
     return m;

@@ -34,13 +34,13 @@ BrowLook measureBrows(const QImage &photo, const FaceModel &face);
 // so light brows on pale skin stay light and dark ones dark. An unseen look leaves it as it is.
 // kMedianBrowThickness is the median over the 161 detected faces of faces-attributes (every age,
 // sex and skin tone; `toonface-bench likeness.attributes` prints the measures' percentiles by
-// group): 10th to 90th percentile 0.083 to 0.198 ES0, drawn 2.6 to 6.1.
-inline constexpr double kMedianBrowThickness = 0.146;
+// group): 10th to 90th percentile 0.083 to 0.188 ES0, drawn 2.8 to 6.3.
+inline constexpr double kMedianBrowThickness = 0.135;
 inline constexpr double kBrowWidth = 4.5; // ES0/100, Style::baseComponents()' eyebrows
 inline constexpr double kBrowWidths[2] = {1.5, 8.0};
 // Drawn brows lie at least this far (L*) below the drawn skin, however faint the photo's: a
 // cartoon's brow that does not read against the skin is no brow (the 10th percentile of the
-// measured contrast over faces-attributes is 14.6, its median 29).
+// measured contrast over faces-attributes is 11.4, its median 28.6).
 inline constexpr double kMinBrowContrast = 20.0;
 void applyBrowLook(const BrowLook &look, const QColor &skinDrawn, ComponentStyle *brows);
 

@@ -574,7 +574,7 @@ private Q_SLOTS:
         double widths[2];
         for (int k = 0; k < 2; ++k) {
             DrawnFaceOptions o;
-            o.browWidth = k == 0 ? 0.09 : 0.2; // about the 10th and 90th percentiles of faces-attributes
+            o.browWidth = k == 0 ? 0.09 : 0.2; // near the 10th and 90th percentiles of faces-attributes
             Style style = Style::preset(QStringLiteral("normal"));
             sampleColours(testing::drawnFace(o), testing::drawnFaceModel(), &style);
             widths[k] = style.components.value(QStringLiteral("eyebrows")).strokeWidth;
