@@ -2,8 +2,10 @@
 #include "crossvalidation.h"
 #include "facecache.h"
 #include "haircolourreport.h"
+#include "likenessage.h"
 
 #include "detect/appearance.h"
+#include "detect/browlook.h"
 #include "detect/detector.h"
 #include "detect/photocolours.h"
 #include "face/fapu.h"
@@ -45,6 +47,8 @@ struct Labelled
     QString hairColour; // the label: black, brown, blond, red, grey, none or ?
     QColor drawnHair, drawnSkin, parsedHair;
     bench::HairColourRow hair; // the hair's and the facial hair's colour (haircolourreport.h)
+    AgeEvidence ageEvidence;
+    BrowLook brows;
 };
 
 // CIE L* (D65) of an sRGB colour.
@@ -94,6 +98,8 @@ void measure(Labelled *row, const QImage &photo, const FaceModel &face)
         && (style.appearance.beard || style.appearance.moustache || style.appearance.goatee);
     hair.beardBefore = f.facialHair;
     hair.beardDrawn = style.components.value(QStringLiteral("beard")).fill;
+    row->ageEvidence = f.ageEvidence;
+    row->brows = measureBrows(photo, face);
     auto &m = row->m;
     m["glassesScore"] = f.glassesScore;
     m["bridgedDark"] = f.bridgedDark;
@@ -559,6 +565,14 @@ QJsonObject attributes()
         onChildren += rows[i].age == QLatin1String("child");
     }
     report << QStringLiteral("facial hair drawn on women %1, on children %2").arg(onWomen).arg(onChildren);
+    {
+        std::vector<bench::AgeRow> ages;
+        for (size_t i : detected)
+            ages.push_back({rows[i].age, rows[i].ageEvidence, rows[i].shipped.age, rows[i].sex, rows[i].brows.thickness,
+                rows[i].brows.contrast});
+        report << bench::ageReport(ages);
+        report << bench::browReport(ages);
+    }
     // Skin lightness.
     std::vector<double> drawn, cheeks, diff;
     for (size_t i : detected) {

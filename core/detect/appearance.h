@@ -1,5 +1,6 @@
 #pragma once
 
+#include "detect/agegroup.h"
 #include "detect/appearanceevidence.h"
 #include "detect/haircolour.h"
 #include "detect/headcover.h"
@@ -78,6 +79,9 @@ struct AppearanceFindings
     // How far down the hair outline's lower ends reach: from the eyes' line (0) to the chin's point (1).
     double hairDrop = 0;
     AppearanceConfidence confidence;
+    // How old the person looks (agegroup.h): the measures and the decision, with its confidence.
+    AgeEvidence ageEvidence;
+    AgeDecision age;
 
     // The decisions' thresholds on the evidence (appearanceevidence.h), each chosen by 5-fold
     // stratified cross-validation over the 160 detected faces of faces-attributes, maximising

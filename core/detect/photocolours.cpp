@@ -1,6 +1,7 @@
 #include "detect/photocolours.h"
 
 #include "detect/appearance.h"
+#include "detect/browlook.h"
 #include "detect/colourbalance.h"
 #include "detect/labcolour.h"
 #include "face/facemodel.h"
@@ -376,7 +377,10 @@ void sampleColours(const QImage &original, const FaceModel &face, Style *style, 
     }
 
     // What the person wears or grows, found on the balanced photo against its own skin.
-    const AppearanceFindings found = findAppearance(photo, face, skin);
+    AppearanceFindings found = findAppearance(photo, face, skin);
+    found.ageEvidence = measureAgeEvidence(photo, face);
+    found.age = decideAge(found.ageEvidence);
+    found.appearance.age = found.age.group;
     if (findings)
         *findings = found;
     appearance = found.appearance;
@@ -437,6 +441,9 @@ void sampleColours(const QImage &original, const FaceModel &face, Style *style, 
             brow = brow.darker(int(std::ceil(100.0 * qGray(brow.rgb()) / std::max(1.0, most))));
         setBrows(brow);
     }
+    // How thick and how dark the brows are against this photo's skin (browlook.h): over the run
+    // measured above, which is only kept where the brows do not show clearly.
+    applyBrowLook(measureBrows(photo, face), skinUsed, &components[QStringLiteral("eyebrows")]);
     if (found.glassesFrame.isValid()) {
         const QColor frame = monochrome
             ? QColor(qGray(found.glassesFrame.rgb()), qGray(found.glassesFrame.rgb()), qGray(found.glassesFrame.rgb()))

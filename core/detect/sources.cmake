@@ -13,6 +13,9 @@ list(APPEND TOONFACE_CORE_SOURCES
   detect/skintone.h detect/skintone.cpp
   detect/appearanceevidence.h detect/appearanceevidence.cpp
   detect/appearancerating.cpp
+  detect/agegroup.h detect/agegroup.cpp
+  detect/levelface.h detect/levelface.cpp
+  detect/browlook.h detect/browlook.cpp
   detect/hairsearch.h detect/hairsearch.cpp
   detect/labcolour.h detect/labcolour.cpp
   detect/headregions.h detect/headregions.cpp

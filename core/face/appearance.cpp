@@ -24,4 +24,25 @@ bool glassesShapeFromName(const QString &name, GlassesShape *v)
     return false;
 }
 
+QString ageGroupName(AgeGroup v)
+{
+    switch (v) {
+    case AgeGroup::Adult: return QStringLiteral("adult");
+    case AgeGroup::Child: return QStringLiteral("child");
+    case AgeGroup::Elderly: return QStringLiteral("elderly");
+    }
+    return {};
+}
+
+bool ageGroupFromName(const QString &name, AgeGroup *v)
+{
+    for (AgeGroup g : {AgeGroup::Adult, AgeGroup::Child, AgeGroup::Elderly}) {
+        if (ageGroupName(g) == name) {
+            *v = g;
+            return true;
+        }
+    }
+    return false;
+}
+
 } // namespace toonface

@@ -6,6 +6,11 @@ namespace toonface {
 
 enum class GlassesShape { None, Round, Rectangular, Rimless };
 
+// How old the person looks, as far as the drawing cares: a child is drawn with thin light brows,
+// lips of the skin's own colour, a rounder jaw and larger eyes (render/agestyle.h); an elderly
+// person with a few fine age lines; an adult as the style says.
+enum class AgeGroup { Adult, Child, Elderly };
+
 // What a photo shows of the person beyond the 72 points: things worn and kinds of hair that the
 // drawing adds as layers of their own (SVG ids "glasses", "moustache", "beard" (a beard or a goatee), "hat" and
 // "hat-wrap"), each only
@@ -35,11 +40,14 @@ struct Appearance
     // The hat wraps the head's sides and falls past the chin (a headscarf, a hood): drawn around
     // the face in the hat's colour, no hair showing.
     bool wrap = false;
+    AgeGroup age = AgeGroup::Adult;
 
     bool operator==(const Appearance &) const = default;
 };
 
 QString glassesShapeName(GlassesShape v); // "none", "round", "rectangular", "rimless"
 bool glassesShapeFromName(const QString &name, GlassesShape *v);
+QString ageGroupName(AgeGroup v); // "adult", "child", "elderly"
+bool ageGroupFromName(const QString &name, AgeGroup *v);
 
 } // namespace toonface

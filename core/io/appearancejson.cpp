@@ -26,6 +26,7 @@ QJsonObject appearanceToJson(const Style &style, const AppearanceFindings &findi
     out.insert(QStringLiteral("beard"), a.beard);
     out.insert(QStringLiteral("goatee"), a.goatee);
     out.insert(QStringLiteral("glasses"), glassesShapeName(a.glasses));
+    out.insert(QStringLiteral("ageGroup"), ageGroupName(a.age));
     const AppearanceConfidence &c = findings.confidence;
     auto unit = [](double v) { return std::clamp(v, 0.0, 1.0); };
     QJsonObject confidence;
@@ -36,6 +37,9 @@ QJsonObject appearanceToJson(const Style &style, const AppearanceFindings &findi
     confidence.insert(QStringLiteral("beard"), unit(c.beard));
     confidence.insert(QStringLiteral("goatee"), unit(c.goatee));
     confidence.insert(QStringLiteral("glasses"), unit(c.glasses));
+    // The age group's: the probability of the group drawn (1 - it when the user chose another).
+    const double age = findings.age.group == a.age ? findings.age.confidence : 1.0 - findings.age.confidence;
+    confidence.insert(QStringLiteral("ageGroup"), unit(age));
     out.insert(QStringLiteral("confidence"), confidence);
     return out;
 }

@@ -34,6 +34,7 @@ constexpr std::array<EyebrowVariant, 3> kEyebrowVariants
 constexpr std::array<NoseVariant, 3> kNoseVariants = {NoseVariant::Full, NoseVariant::Simple, NoseVariant::Tip};
 constexpr std::array<GlassesShape, 4> kGlassesShapes
     = {GlassesShape::None, GlassesShape::Round, GlassesShape::Rectangular, GlassesShape::Rimless};
+constexpr std::array<AgeGroup, 3> kAgeGroups = {AgeGroup::Adult, AgeGroup::Child, AgeGroup::Elderly};
 
 template<typename Enum, std::size_t N>
 bool enumFromJson(
@@ -146,6 +147,7 @@ QJsonObject styleToJson(const Style &style)
     look.insert(QStringLiteral("hat"), style.appearance.hat);
     look.insert(QStringLiteral("wrap"), style.appearance.wrap);
     look.insert(QStringLiteral("bald"), style.appearance.bald);
+    look.insert(QStringLiteral("age"), ageGroupName(style.appearance.age));
     if (const GlassesFit &lens = style.appearance.lens; lens.isSet())
         look.insert(QStringLiteral("lens"),
             QJsonObject {{QStringLiteral("halfWidth"), lens.halfWidth}, {QStringLiteral("halfHeight"), lens.halfHeight},
@@ -196,6 +198,10 @@ bool styleFromJson(const JsonField &field, Style *style, QString *error)
             return false;
         // Added later: without it, no goatee.
         if (const JsonField goatee = look.member("goatee"); !goatee.isMissing() && !goatee.toBool(&a.goatee, error))
+            return false;
+        // Added later: without it, an adult.
+        if (const JsonField age = look.member("age");
+            !age.isMissing() && !enumFromJson(kAgeGroups, &ageGroupName, age, &a.age, error))
             return false;
         // Added later: without it the lenses keep the shape's usual proportions.
         if (const JsonField lens = look.member("lens"); !lens.isMissing()) {

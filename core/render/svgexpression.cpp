@@ -24,8 +24,8 @@ double clamp01(double v)
     return std::clamp(v, 0.0, 1.0);
 }
 
-// A tapered line from a to b bowed by `bow` toward `side` at its middle: a lens `halfWidth`
-// thick in the middle; with halfWidth 0 it has no area.
+} // namespace
+
 QByteArray lens(QPointF a, QPointF b, QPointF side, double bow, double halfWidth)
 {
     const QPointF n = unit(side);
@@ -38,6 +38,8 @@ QByteArray lens(QPointF a, QPointF b, QPointF side, double bow, double halfWidth
         .close();
     return d.data();
 }
+
+namespace {
 
 void addCrease(std::vector<Part> *out, const char *id, QPointF a, QPointF b, QPointF side, double bow, double w)
 {

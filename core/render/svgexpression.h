@@ -27,6 +27,10 @@ struct CueStrengths
 };
 CueStrengths cueStrengths(const Pt &P, const Pt &N, const Pt &R, double es0);
 
+// A tapered line from a to b bowed by `bow` toward `side` at its middle (path data): a lens
+// `halfWidth` thick in the middle; with halfWidth 0 it has no area.
+QByteArray lens(QPointF a, QPointF b, QPointF side, double bow, double halfWidth);
+
 // Dynamic parts, drawn over the jaw and under the mouth: "blush-left/right" (style key "blush"),
 // "crease-cheek-left/right", "crease-frown-left/right", "crease-nostril-left/right" (flared
 // nostrils), "crease-worry-left/right",

@@ -5,6 +5,7 @@
 #include "face/restingface.h"
 #include "i18n/coretext.h"
 #include "media/userfile.h"
+#include "render/agestyle.h"
 #include "render/curves.h"
 #include "render/svgbody.h"
 #include "render/svgexpression.h"
@@ -84,7 +85,8 @@ std::array<QPointF, kPointCount> styleRuleOffsets(const FaceModel &original, con
 {
     // First the caricature (the person's own proportions, exaggerated), then the cute rules on it.
     std::array<QPointF, kPointCount> off = caricatureOffsets(original, style.caricature);
-    if (!style.cute)
+    const double k = childRules(style); // all of the cute rules, a child's share of them, or none
+    if (k <= 0)
         return off;
     FaceModel face = original;
     for (int i = 0; i < kPointCount; ++i)
@@ -93,19 +95,19 @@ std::array<QPointF, kPointCount> styleRuleOffsets(const FaceModel &original, con
     const Fapu f = face.fapu();
     // A shorter, rounder jaw: the chin comes up, and the lower jaw points move onto the quarter
     // ellipses from the jaw sides (2.14, 2.13) to the raised chin.
-    const QPointF chin = P("2.1") + QPointF(0, -kCuteChinRaise * f.jawH);
+    const QPointF chin = P("2.1") + QPointF(0, -k * kCuteChinRaise * f.jawH);
     off[pt::idx("2.1")] += chin - P("2.1");
     const double c = std::cos(std::numbers::pi / 4);
     for (const auto &[lower, side] : {std::pair {"2.12", "2.14"}, std::pair {"2.11", "2.13"}}) {
         const QPointF s = P(side);
         const QPointF centre(chin.x(), s.y());
         const QPointF onEllipse = centre + QPointF((s.x() - chin.x()) * c, (chin.y() - s.y()) * c);
-        off[pt::idx(lower)] += onEllipse - P(lower);
+        off[pt::idx(lower)] += (onEllipse - P(lower)) * k;
     }
     // A smaller nose, shrunk about its tip.
     const QPointF tip = P("9.15");
     for (const char *id : {"9.6", "9.7", "9.14", "9.13", "9.2", "9.1", "9.4", "9.5"})
-        off[pt::idx(id)] += (P(id) - tip) * (kCuteNoseScale - 1.0);
+        off[pt::idx(id)] += (P(id) - tip) * (k * (kCuteNoseScale - 1.0));
     return off;
 }
 
@@ -115,13 +117,15 @@ void applyStyleRules(Points &p, const SvgFaceGeometry &g, const Style &style)
 {
     for (int i = 0; i < kPointCount; ++i)
         p[i] += g.ruleOffset[i];
-    if (!style.cute)
+    const double k = childRules(style);
+    if (k <= 0)
         return;
+    const double eyeScale = 1.0 + k * (kCuteEyeScale - 1.0);
     for (const auto &ids :
         {std::array {"3.12", "3.8", "3.2", "3.4", "3.6"}, std::array {"3.11", "3.7", "3.1", "3.3", "3.5"}}) {
         const QPointF mid = (p[pt::idx(ids[0])] + p[pt::idx(ids[1])]) / 2.0;
         for (const char *id : ids)
-            p[pt::idx(id)] = mid + (p[pt::idx(id)] - mid) * kCuteEyeScale;
+            p[pt::idx(id)] = mid + (p[pt::idx(id)] - mid) * eyeScale;
     }
 }
 
@@ -481,7 +485,7 @@ SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
     // static face and the moving jaw always join smoothly.
     g.jawStartTangent = unit(P("2.12") - P("5.2"));
     g.jawEndTangent = unit(P("5.1") - P("2.11"));
-    g.eyeballRadius = kEyeballRadius * g.es0 * (style.cute ? kCuteEyeballScale : 1.0);
+    g.eyeballRadius = kEyeballRadius * g.es0 * (1.0 + childRules(style) * (kCuteEyeballScale - 1.0));
 
     auto visible = [&](const char *key) { return componentStyle(style.components, key).visible; };
     const Appearance &look = style.appearance;
@@ -549,6 +553,8 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
     else if (look.goatee)
         parts.push_back(makeGoatee(P, g.es0));
     makeExpressionCues(P, Pt {g.neutral}, Pt {g.rest}, g.es0, &parts);
+    if (look.age == AgeGroup::Elderly)
+        makeAgeLines(P, g.es0, &parts);
     makeMouth(P, &parts);
     if (look.moustache)
         parts.push_back(makeMoustache(P, g.es0));
@@ -621,6 +627,7 @@ struct SvgFace::Geometry
 {
     SvgFaceGeometry g;
     QVector<FacePart> staticParts; // g.staticParts that are visible, for parts()
+    Style drawn; // the style as drawn for the face's age (agestyle.h); style() stays the one given
 };
 
 SvgFace::SvgFace(const FaceModel &face, const Style &style)
@@ -628,9 +635,10 @@ SvgFace::SvgFace(const FaceModel &face, const Style &style)
     , m_style(style)
 {
     auto geometry = std::make_shared<Geometry>();
-    geometry->g = buildGeometry(face, style);
+    geometry->drawn = agedStyle(style);
+    geometry->g = buildGeometry(face, geometry->drawn);
     for (const Part &p : geometry->g.staticParts) {
-        if (componentStyle(style.components, p.styleKey).visible)
+        if (componentStyle(geometry->drawn.components, p.styleKey).visible)
             geometry->staticParts.append(facePart(p, geometry->g));
     }
     m_geometry = std::move(geometry);
@@ -667,7 +675,7 @@ void SvgFace::addLayer(const QByteArray &svgContent)
 QVector<FacePart> SvgFace::parts(const Pose &pose) const
 {
     const SvgFaceGeometry &g = m_geometry->g;
-    const std::vector<Part> posed = buildParts(g, m_face, m_style, pose, m_eyeCovers, false);
+    const std::vector<Part> posed = buildParts(g, m_face, m_geometry->drawn, pose, m_eyeCovers, false);
     QVector<FacePart> out = m_geometry->staticParts;
     out.reserve(out.size() + qsizetype(posed.size()));
     for (const Part &p : posed)
@@ -677,7 +685,7 @@ QVector<FacePart> SvgFace::parts(const Pose &pose) const
 
 std::vector<SvgFace::PartGeometry> SvgFace::posedGeometry(const Pose &pose) const
 {
-    std::vector<Part> posed = buildParts(m_geometry->g, m_face, m_style, pose, m_eyeCovers, false);
+    std::vector<Part> posed = buildParts(m_geometry->g, m_face, m_geometry->drawn, pose, m_eyeCovers, false);
     std::vector<PartGeometry> out;
     out.reserve(posed.size());
     for (Part &p : posed)
@@ -738,7 +746,7 @@ QString SvgFace::headTransform(const HeadPose &head) const
 QByteArray SvgFace::svg(const Pose &pose) const
 {
     const SvgFaceGeometry &g = m_geometry->g;
-    const std::vector<Part> parts = buildParts(g, m_face, m_style, pose, m_eyeCovers);
+    const std::vector<Part> parts = buildParts(g, m_face, m_geometry->drawn, pose, m_eyeCovers);
     const QRectF box = frame();
     QByteArray out;
     out.reserve(12000);

@@ -430,6 +430,30 @@
         <source>Hair on the chin only (drawn when there is no beard)</source>
         <translation>只在下巴上的胡子（没有胡须时才画出）</translation>
     </message>
+    <message>
+        <source>A child is drawn with thin light brows, unpainted lips, a rounder jaw and larger eyes; an elderly person with fine age lines</source>
+        <translation>儿童画成细淡的眉毛、不涂色的嘴唇、较圆的下颌和较大的眼睛；老人画上细细的皱纹</translation>
+    </message>
+    <message>
+        <source>Adult</source>
+        <translation>成人</translation>
+    </message>
+    <message>
+        <source>Child</source>
+        <translation>儿童</translation>
+    </message>
+    <message>
+        <source>Elderly</source>
+        <translation>老人</translation>
+    </message>
+    <message>
+        <source>Age:</source>
+        <translation>年龄：</translation>
+    </message>
+    <message>
+        <source>Age</source>
+        <translation>年龄</translation>
+    </message>
 </context>
 <context>
     <name>toonface::ApplyDetection</name>

@@ -430,6 +430,30 @@
         <source>Hair on the chin only (drawn when there is no beard)</source>
         <translation>只在下巴上的鬍子（沒有鬍鬚時才畫出）</translation>
     </message>
+    <message>
+        <source>A child is drawn with thin light brows, unpainted lips, a rounder jaw and larger eyes; an elderly person with fine age lines</source>
+        <translation>兒童畫成細淡的眉毛、不塗色的嘴唇、較圓的下顎和較大的眼睛；長者畫上細細的皺紋</translation>
+    </message>
+    <message>
+        <source>Adult</source>
+        <translation>成人</translation>
+    </message>
+    <message>
+        <source>Child</source>
+        <translation>兒童</translation>
+    </message>
+    <message>
+        <source>Elderly</source>
+        <translation>長者</translation>
+    </message>
+    <message>
+        <source>Age:</source>
+        <translation>年齡：</translation>
+    </message>
+    <message>
+        <source>Age</source>
+        <translation>年齡</translation>
+    </message>
 </context>
 <context>
     <name>toonface::ApplyDetection</name>

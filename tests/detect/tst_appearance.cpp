@@ -1,6 +1,8 @@
 #include "detect/appearance.h"
+#include "detect/browlook.h"
 #include "detect/detector.h"
 #include "detect/hairsearch.h"
+#include "detect/labcolour.h"
 #include "detect/landmarkmap.h"
 #include "detect/photocolours.h"
 #include "drawnface.h"
@@ -565,18 +567,22 @@ private Q_SLOTS:
         QVERIFY2(std::abs(lens.halfWidth - o.lensHalfWidth) <= 0.06, what.constData());
     }
 
-    // Brows are drawn as thick as they are: a heavy brow heavier than a fine one.
+    // Brows are drawn in proportion to how thick they are (browlook.h: the median photo's brows at
+    // the base style's weight): a heavy brow heavier than a fine one.
     void browThickness()
     {
         double widths[2];
         for (int k = 0; k < 2; ++k) {
             DrawnFaceOptions o;
-            o.browWidth = k == 0 ? 0.035 : 0.075; // within the drawn range, 2.5..8 hundredths
+            o.browWidth = k == 0 ? 0.09 : 0.2; // near the 10th and 90th percentiles of faces-attributes
             Style style = Style::preset(QStringLiteral("normal"));
             sampleColours(testing::drawnFace(o), testing::drawnFaceModel(), &style);
             widths[k] = style.components.value(QStringLiteral("eyebrows")).strokeWidth;
+            const double expected = kBrowWidth * o.browWidth / kMedianBrowThickness;
             // Within a pixel and a half (antialiased edges) at this face's size.
-            QVERIFY2(std::abs(widths[k] - o.browWidth * 100) < 2.5, qPrintable(QString::number(widths[k])));
+            const double pixel = kBrowWidth / kMedianBrowThickness / testing::drawnFaceModel().fapu().es0;
+            QVERIFY2(std::abs(widths[k] - expected) < 1.5 * pixel + 0.1,
+                qPrintable(QStringLiteral("%1, expected %2").arg(widths[k]).arg(expected)));
         }
         QVERIFY(widths[1] > widths[0] + 2);
     }
@@ -758,7 +764,9 @@ private Q_SLOTS:
             // derived from a "hair" band on the yellow backdrop).
             const QColor brows = style.components.value(QStringLiteral("eyebrows")).fill;
             const QColor skin = style.components.value(QStringLiteral("face")).fill;
-            QVERIFY2(qGray(brows.rgb()) <= 0.65 * qGray(skin.rgb()),
+            // (At least kMinBrowContrast below the skin in L*; lighter brows than the old fixed
+            // ratio to the skin's grey where the photo's are light.)
+            QVERIFY2(labOf(skin).l - labOf(brows).l >= kMinBrowContrast - 0.5,
                 qPrintable(QStringLiteral("face at %1,%2: brows %3 on skin %4")
                                .arg(at.x())
                                .arg(at.y())

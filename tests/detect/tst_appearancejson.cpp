@@ -36,8 +36,11 @@ QString schemaProblem(const QJsonObject &a)
         QStringLiteral("none"), QStringLiteral("round"), QStringLiteral("rectangular"), QStringLiteral("rimless")};
     if (!glasses.contains(a.value(QLatin1StringView("glasses")).toString()))
         return QStringLiteral("glasses: expected none or its kind");
+    const QStringList ages {QStringLiteral("adult"), QStringLiteral("child"), QStringLiteral("elderly")};
+    if (!ages.contains(a.value(QLatin1StringView("ageGroup")).toString()))
+        return QStringLiteral("ageGroup: expected adult, child or elderly");
     const QJsonObject confidence = a.value(QLatin1StringView("confidence")).toObject();
-    for (const char *key : {"hairLength", "bald", "headwear", "moustache", "beard", "goatee", "glasses"}) {
+    for (const char *key : {"hairLength", "bald", "headwear", "moustache", "beard", "goatee", "glasses", "ageGroup"}) {
         const QJsonValue c = confidence.value(QLatin1StringView(key));
         if (!c.isDouble() || c.toDouble() < 0 || c.toDouble() > 1)
             return QStringLiteral("confidence.%1: expected a number in 0..1").arg(QLatin1StringView(key));
@@ -47,7 +50,7 @@ QString schemaProblem(const QJsonObject &a)
             ? kind.toString() != QLatin1StringView("hat") && kind.toString() != QLatin1StringView("wrap")
             : !kind.isNull())
         return QStringLiteral("headwearKind: expected hat or wrap with headwear, null without");
-    if (a.size() != 11 || confidence.size() != 7)
+    if (a.size() != 12 || confidence.size() != 8)
         return QStringLiteral("unexpected keys");
     return {};
 }

@@ -52,6 +52,8 @@ private Q_SLOTS:
         style.appearance = {GlassesShape(glasses), flags, flags, flags, flags, flags, {}};
         if (flags)
             style.appearance.lens = {0.46, 0.31, 0.04, 0.12};
+        // The age group the user chose (or the photo's) is kept.
+        style.appearance.age = flags ? AgeGroup::Child : caricature > 0.8 ? AgeGroup::Elderly : AgeGroup::Adult;
         // A layer that follows the head (or not) keeps doing so.
         StyleLayer layer;
         layer.name = QStringLiteral("hat.svg");
@@ -113,6 +115,10 @@ private Q_SLOTS:
             << QByteArray(R"({"glasses":"round","moustache":false,"beard":false,"hat":false,"bald":false,)"
                           R"("lens":{"halfWidth":0.4,"outward":0,"down":0}})")
             << QStringLiteral("style.appearance.lens.halfHeight: ");
+        QTest::newRow("age group")
+            << QStringLiteral("appearance")
+            << QByteArray(R"({"glasses":"none","moustache":false,"beard":false,"hat":false,"bald":false,"age":"teen"})")
+            << QStringLiteral("style.appearance.age: expected one of \"adult\"");
         QTest::newRow("appearance array") << QStringLiteral("appearance") << QByteArray("[]")
                                           << QStringLiteral("style.appearance: expected an object");
     }

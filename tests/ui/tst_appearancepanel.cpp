@@ -117,6 +117,27 @@ private Q_SLOTS:
         QVERIFY(!goatee->isChecked() && !doc.style().appearance.goatee);
     }
 
+    // The age group drawn is the user's to choose: one step, shown back, undone.
+    void ageChoice()
+    {
+        Document doc;
+        fixture::fill(doc);
+        AppearancePanel panel(&doc);
+        auto *age = panel.findChild<QComboBox *>(QStringLiteral("age"));
+        QVERIFY(age);
+        QCOMPARE(age->count(), 3);
+        QCOMPARE(age->currentData().toInt(), int(doc.style().appearance.age));
+        const AgeGroup before = doc.style().appearance.age;
+        const AgeGroup chosen = before == AgeGroup::Child ? AgeGroup::Elderly : AgeGroup::Child;
+        age->setCurrentIndex(age->findData(int(chosen)));
+        Q_EMIT age->activated(age->currentIndex());
+        QCOMPARE(doc.undoStack()->count(), 1);
+        QCOMPARE(doc.style().appearance.age, chosen);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.style().appearance.age, before);
+        QCOMPARE(age->currentData().toInt(), int(before));
+    }
+
     void disabledWithoutAFace()
     {
         Document doc;

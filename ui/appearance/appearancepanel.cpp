@@ -112,6 +112,14 @@ AppearancePanel::AppearancePanel(Document *document, QWidget *parent)
     m_hat->setObjectName(QStringLiteral("hat"));
     m_bald = new QCheckBox(tr("Bald head"));
     m_bald->setObjectName(QStringLiteral("bald"));
+    m_age = new QComboBox;
+    m_age->setObjectName(QStringLiteral("age"));
+    m_age->setToolTip(tr("A child is drawn with thin light brows, unpainted lips, a rounder jaw and larger eyes; "
+                         "an elderly person with fine age lines"));
+    m_age->addItem(tr("Adult"), int(AgeGroup::Adult));
+    m_age->addItem(tr("Child"), int(AgeGroup::Child));
+    m_age->addItem(tr("Elderly"), int(AgeGroup::Elderly));
+    wornForm->addRow(tr("Age:"), m_age);
     wornForm->addRow(tr("Glasses:"), m_glasses);
     for (QCheckBox *box : {m_moustache, m_beard, m_goatee, m_hat, m_bald})
         wornForm->addRow(QString(), box);
@@ -145,6 +153,9 @@ AppearancePanel::AppearancePanel(Document *document, QWidget *parent)
     connect(m_caricature, &QSlider::sliderReleased, this, caricatureChanged);
     connect(m_glasses, &QComboBox::activated, this, [this](int i) {
         change(tr("Glasses"), [&](Style &s) { s.appearance.glasses = GlassesShape(m_glasses->itemData(i).toInt()); });
+    });
+    connect(m_age, &QComboBox::activated, this, [this](int i) {
+        change(tr("Age"), [&](Style &s) { s.appearance.age = AgeGroup(m_age->itemData(i).toInt()); });
     });
     const std::pair<QCheckBox *, bool Appearance::*> flags[]
         = {{m_moustache, &Appearance::moustache}, {m_beard, &Appearance::beard}, {m_goatee, &Appearance::goatee},
@@ -266,6 +277,7 @@ void AppearancePanel::sync()
     }
     m_caricatureValue->setText(QString::number(s.caricature, 'f', 2));
     m_glasses->setCurrentIndex(m_glasses->findData(int(s.appearance.glasses)));
+    m_age->setCurrentIndex(m_age->findData(int(s.appearance.age)));
     m_moustache->setChecked(s.appearance.moustache);
     m_beard->setChecked(s.appearance.beard);
     m_goatee->setChecked(s.appearance.goatee);

@@ -44,6 +44,7 @@ private:
     QSlider *m_caricature;
     QLabel *m_caricatureValue;
     QComboBox *m_glasses;
+    QComboBox *m_age; // the age group drawn (render/agestyle.h): the photo's guess until the user picks
     QCheckBox *m_moustache;
     QCheckBox *m_beard;
     QCheckBox *m_goatee;
