@@ -37,7 +37,7 @@ constexpr double kPushFrom = 0.5;
 // kPushFrom, and the shade called is what the labelled faces decide.
 constexpr double kGreyDrawnL = 58.0;
 constexpr double kRedDrawnChroma = 30.0, kRedDrawnHue = 48.0;
-constexpr double kBlondDrawnL = 62.0, kBlondDrawnChroma = 22.0, kBlondDrawnHue = 75.0;
+constexpr double kBlondDrawnL = 62.0, kBlondDrawnChroma = 22.0;
 constexpr double kBlackDrawnL = 16.0;
 
 double distance(const HairLab &x, const HairLab &y)
@@ -224,8 +224,8 @@ QColor drawnHairColour(const HairColourReading &reading, const HairShadeCall &ca
         break;
     case HairShade::Blond:
         c.l = toward(c.l, std::max(c.l, kBlondDrawnL));
-        setChroma(toward(reading.chroma(), std::max(reading.chroma(), kBlondDrawnChroma)),
-            toward(reading.hue(), kBlondDrawnHue));
+        // (Its hue is kept as read: blond runs from ash to golden and strawberry, all blond.)
+        setChroma(toward(reading.chroma(), std::max(reading.chroma(), kBlondDrawnChroma)), reading.hue());
         break;
     case HairShade::Black: c.l = toward(c.l, std::min(c.l, kBlackDrawnL)); break;
     case HairShade::Brown: break;

@@ -66,7 +66,9 @@ SoundCheck checkSound(const QString &path)
     AVFormatContext *raw = nullptr;
     int r = avformat_open_input(&raw, localPath(path).constData(), nullptr, nullptr);
     if (r < 0) {
-        check.error = withProblem(path, SoundText::tr("cannot read the audio: %1").arg(avError(r)));
+        // The same words as when the sound is read in full (audioffmpeg.cpp): a text, a key or an
+        // image named as the sound is no sound file at all.
+        check.error = withProblem(path, SoundText::tr("not a readable sound or video file (%1)").arg(avError(r)));
         return check;
     }
     InputPtr input(raw);
