@@ -1,5 +1,6 @@
 #include "detect/browlook.h"
 
+#include "detect/haircolour.h"
 #include "detect/labcolour.h"
 #include "detect/levelface.h"
 #include "face/facemodel.h"
@@ -66,18 +67,13 @@ std::pair<double, double> browDip(const LevelFace &f, QPointF m, double half)
     return {double(bottom - top + 1) * step, contrast};
 }
 
+// `c` at the lightness `targetL`, in CIE L*a*b*: it keeps its colourfulness (a*, b*) and only its
+// lightness moves. (Scaled in RGB it would keep its HSV saturation: a near-black brown raised to
+// a mid lightness turns a vivid orange.)
 QColor withLightness(const QColor &c, double targetL)
 {
-    float h = 0, s = 0, v = 0;
-    c.getHsvF(&h, &s, &v);
-    if (h < 0)
-        h = 0;
-    double lo = 0, hi = 1;
-    for (int i = 0; i < 14; ++i) {
-        const double mid = (lo + hi) / 2.0;
-        (labOf(QColor::fromHsvF(h, s, float(mid))).l < targetL ? lo : hi) = mid;
-    }
-    return QColor::fromHsvF(h, s, float((lo + hi) / 2.0));
+    const HairLab lab = hairLabOf(c);
+    return colourOfLab(HairLab {targetL, lab.a, lab.b});
 }
 
 } // namespace

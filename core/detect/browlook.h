@@ -30,8 +30,8 @@ BrowLook measureBrows(const QImage &photo, const FaceModel &face);
 // Draws `brows` (the "eyebrows" component) as the look says: its line weight in proportion to the
 // measured thickness, the median person's brows at the base style's weight (kBrowWidth; a
 // cartoon's brows are drawn thinner than a photo's, whose median is kMedianBrowThickness), within
-// kBrowWidths; and its colour's L* the measured contrast below the drawn skin's (its hue kept),
-// so light brows on pale skin stay light and dark ones dark. An unseen look leaves it as it is.
+// kBrowWidths; and its colour's L* the measured contrast below the drawn skin's (its hue and
+// colourfulness kept), so light brows on pale skin stay light and dark ones dark. An unseen look leaves it as it is.
 // kMedianBrowThickness is the median over the 161 detected faces of faces-attributes (every age,
 // sex and skin tone; `toonface-bench likeness.attributes` prints the measures' percentiles by
 // group): 10th to 90th percentile 0.083 to 0.188 ES0, drawn 2.8 to 6.3.
