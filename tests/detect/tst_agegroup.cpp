@@ -143,22 +143,13 @@ private Q_SLOTS:
     // are toonface-bench likeness.attributes'.
     void labelledFaces()
     {
-        const QString dir = QDir(testing::sharedDataDir()).filePath(QStringLiteral("faces-attributes"));
-        QFile tsv(QDir(dir).filePath(QStringLiteral("labels.tsv")));
-        if (!tsv.open(QIODevice::ReadOnly | QIODevice::Text))
-            QSKIP("the labelled faces are not here (../shared/data/faces-attributes)");
-        QTextStream in(&tsv);
-        const QStringList header = in.readLine().split(QLatin1Char('\t'));
-        const int fileColumn = int(header.indexOf(QStringLiteral("file")));
-        const int ageColumn = int(header.indexOf(QStringLiteral("age_group")));
-        QVERIFY(fileColumn >= 0 && ageColumn >= 0);
+        const QList<testing::LabelledFace> labelled = testing::labelledFaces();
+        if (labelled.isEmpty())
+            QSKIP(testing::kNoLabelledFaces);
         std::map<QString, std::map<AgeGroup, int>> decided; // by label
-        while (!in.atEnd()) {
-            const QStringList c = in.readLine().split(QLatin1Char('\t'));
-            if (c.size() < header.size())
-                continue;
-            const QImage photo(QDir(dir).filePath(c[fileColumn]));
-            QVERIFY2(!photo.isNull(), qPrintable(c[fileColumn]));
+        for (const testing::LabelledFace &row : labelled) {
+            const QImage photo(row.photoPath);
+            QVERIFY2(!photo.isNull(), qPrintable(row.photoPath));
             const DetectionResult r = detectFace(photo);
             if (r.status == DetectStatus::ModelMissing)
                 QSKIP("the landmark model is not installed");
@@ -166,7 +157,7 @@ private Q_SLOTS:
                 continue;
             Style style = Style::preset(QStringLiteral("normal"));
             sampleColours(photo, r.face, &style);
-            ++decided[c[ageColumn]][style.appearance.age];
+            ++decided[row["age_group"]][style.appearance.age];
         }
         auto count = [&](const char *label, AgeGroup g) { return decided[QLatin1StringView(label)][g]; };
         auto total = [&](AgeGroup g) {

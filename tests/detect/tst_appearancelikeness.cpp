@@ -170,20 +170,13 @@ private Q_SLOTS:
     // toonface-bench likeness.attributes'.
     void labelledFaces()
     {
-        const QString dir = QDir(testing::sharedDataDir()).filePath(QStringLiteral("faces-attributes"));
-        QFile tsv(QDir(dir).filePath(QStringLiteral("labels.tsv")));
-        if (!tsv.open(QIODevice::ReadOnly | QIODevice::Text))
-            QSKIP("the labelled faces are not here (../shared/data/faces-attributes)");
-        QTextStream in(&tsv);
-        const QStringList header = in.readLine().split(QLatin1Char('\t'));
-        auto col = [&](const char *name) { return header.indexOf(QLatin1StringView(name)); };
+        const QList<testing::LabelledFace> labelled = testing::labelledFaces();
+        if (labelled.isEmpty())
+            QSKIP(testing::kNoLabelledFaces);
         int onWomenOrChildren = 0, hairDrawn = 0, hairRight = 0, glassesDrawn = 0, glassesRight = 0, faces = 0;
-        while (!in.atEnd()) {
-            const QStringList c = in.readLine().split(QLatin1Char('\t'));
-            if (c.size() < header.size())
-                continue;
-            const QImage photo(QDir(dir).filePath(c[col("file")]));
-            QVERIFY2(!photo.isNull(), qPrintable(c[col("file")]));
+        for (const testing::LabelledFace &row : labelled) {
+            const QImage photo(row.photoPath);
+            QVERIFY2(!photo.isNull(), qPrintable(row.photoPath));
             const DetectionResult r = detectFace(photo);
             if (r.status == DetectStatus::ModelMissing)
                 QSKIP("the landmark model is not installed");
@@ -193,17 +186,15 @@ private Q_SLOTS:
             Style style = Style::preset(QStringLiteral("normal"));
             sampleColours(photo, r.face, &style);
             const Appearance &a = style.appearance;
-            auto flag = [&](const char *name) { return c[col(name)] == QLatin1String("1"); };
-            const bool hair = flag("beard") || flag("moustache") || flag("goatee");
+            const bool hair = row.flag("beard") || row.flag("moustache") || row.flag("goatee");
             if (a.moustache || a.beard || a.goatee) {
                 ++hairDrawn;
                 hairRight += hair;
-                onWomenOrChildren
-                    += c[col("sex")] == QLatin1String("f") || c[col("age_group")] == QLatin1String("child");
+                onWomenOrChildren += row["sex"] == QLatin1String("f") || row["age_group"] == QLatin1String("child");
             }
             if (a.glasses != GlassesShape::None) {
                 ++glassesDrawn;
-                glassesRight += flag("glasses");
+                glassesRight += row.flag("glasses");
             }
         }
         QVERIFY(faces > 100);

@@ -176,24 +176,19 @@ private Q_SLOTS:
     // sought against the skin's own level, and before a mouth under the eyes gave way to them).
     void sharedDarkFaces()
     {
-        const QString dir = QDir(testing::sharedDataDir()).filePath(QStringLiteral("faces-attributes"));
-        QFile tsv(QDir(dir).filePath(QStringLiteral("labels.tsv")));
-        if (!tsv.open(QIODevice::ReadOnly | QIODevice::Text))
-            QSKIP("the labelled faces are not here (../shared/data/faces-attributes)");
-        QTextStream in(&tsv);
-        const QStringList header = in.readLine().split(QLatin1Char('\t'));
-        const int fileCol = header.indexOf(QStringLiteral("file")), skinCol = header.indexOf(QStringLiteral("skin"));
+        const QList<testing::LabelledFace> labelled = testing::labelledFaces();
+        if (labelled.isEmpty())
+            QSKIP(testing::kNoLabelledFaces);
         const QColor backgrounds[] = {QColor(40, 160, 200), QColor(150, 150, 150), QColor(190, 200, 210)};
         const QString debug = qEnvironmentVariable("TOONFACE_CLASSIC_DEBUG");
         int faces = 0, right = 0, k = 0;
         QStringList missed;
-        while (!in.atEnd()) {
-            const QStringList c = in.readLine().split(QLatin1Char('\t'));
-            if (c.size() < header.size() || c[skinCol] != QLatin1String("dark"))
+        for (const testing::LabelledFace &row : labelled) {
+            if (row["skin"] != QLatin1String("dark"))
                 continue;
-            const QImage frame = onPlainBackground(QImage(QDir(dir).filePath(c[fileCol])), backgrounds[k++ % 3]);
+            const QImage frame = onPlainBackground(QImage(row.photoPath), backgrounds[k++ % 3]);
             if (!debug.isEmpty())
-                frame.save(debug + QLatin1Char('/') + QFileInfo(c[fileCol]).baseName() + QStringLiteral(".png"));
+                frame.save(debug + QLatin1Char('/') + QFileInfo(row.photoPath).baseName() + QStringLiteral(".png"));
             const DetectionResult truth = detectFace(frame);
             if (truth.status == DetectStatus::ModelMissing)
                 QSKIP("the landmark model (libdlib-data) is not installed");
@@ -207,7 +202,7 @@ private Q_SLOTS:
                 && QLineF(got.eyeballs[1].centre, r).length() <= 0.25 * d;
             right += ok;
             if (!ok)
-                missed << QFileInfo(c[fileCol]).baseName();
+                missed << QFileInfo(row.photoPath).baseName();
         }
         qInfo("%d of %d dark-skinned faces' eyes found (missed: %s)", right, faces, qPrintable(missed.join(u' ')));
         QVERIFY(faces >= 20);

@@ -241,24 +241,17 @@ private Q_SLOTS:
     // held-out ones are toonface-bench likeness.attributes').
     void labelledFacesByShade()
     {
-        const QString dir = QDir(testing::sharedDataDir()).filePath(QStringLiteral("faces-attributes"));
-        QFile tsv(QDir(dir).filePath(QStringLiteral("labels.tsv")));
-        if (!tsv.open(QIODevice::ReadOnly | QIODevice::Text))
-            QSKIP("the labelled faces are not here (../shared/data/faces-attributes)");
-        QTextStream in(&tsv);
-        const QStringList header = in.readLine().split(QLatin1Char('\t'));
-        auto col = [&](const char *key) { return header.indexOf(QLatin1StringView(key)); };
+        const QList<testing::LabelledFace> labelled = testing::labelledFaces();
+        if (labelled.isEmpty())
+            QSKIP(testing::kNoLabelledFaces);
         std::map<QString, std::pair<int, int>> byShade; // label: (right, drawn)
-        while (!in.atEnd()) {
-            const QStringList c = in.readLine().split(QLatin1Char('\t'));
-            if (c.size() < header.size())
-                continue;
-            const QString label = c[col("hair_colour")];
+        for (const testing::LabelledFace &row : labelled) {
+            const QString label = row["hair_colour"];
             if (label != QLatin1String("red") && label != QLatin1String("blond") && label != QLatin1String("grey")
                 && !(label == QLatin1String("black") && byShade[label].second < 12))
                 continue;
-            const QImage photo(QDir(dir).filePath(c[col("file")]));
-            QVERIFY2(!photo.isNull(), qPrintable(c[col("file")]));
+            const QImage photo(row.photoPath);
+            QVERIFY2(!photo.isNull(), qPrintable(row.photoPath));
             const DetectionResult r = detectFace(photo);
             if (r.status == DetectStatus::ModelMissing)
                 QSKIP("the landmark model is not installed");
