@@ -108,7 +108,8 @@ private Q_SLOTS:
             QCOMPARE(got.values[i], before[0].values[at]);
         }
         // At most the first and the last key inside each hidden span stay.
-        for (const auto &[from, to] : hidden) {
+        for (const auto &span : hidden) {
+            const qint64 from = span.first, to = span.second;
             const auto within
                 = std::count_if(got.times.cbegin(), got.times.cend(), [&](qint64 n) { return from < n && n < to; });
             QVERIFY2(within <= 2, qPrintable(QStringLiteral("%1 keys in %2-%3").arg(within).arg(from).arg(to)));
