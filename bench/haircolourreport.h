@@ -45,8 +45,8 @@ inline HairColourReading readingOf(const QColor &colour, const QColor &skin)
     HairColourReading r;
     r.valid = colour.isValid();
     if (r.valid) {
-        r.hair = hairLabOf(colour);
-        r.skin = skin.isValid() ? hairLabOf(skin) : HairLab {};
+        r.hair = labOf(colour);
+        r.skin = skin.isValid() ? labOf(skin) : LabColour {};
     }
     return r;
 }

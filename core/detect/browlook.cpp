@@ -1,6 +1,5 @@
 #include "detect/browlook.h"
 
-#include "detect/haircolour.h"
 #include "detect/labcolour.h"
 #include "detect/levelface.h"
 #include "face/facemodel.h"
@@ -72,8 +71,8 @@ std::pair<double, double> browDip(const LevelFace &f, QPointF m, double half)
 // a mid lightness turns a vivid orange.)
 QColor withLightness(const QColor &c, double targetL)
 {
-    const HairLab lab = hairLabOf(c);
-    return colourOfLab(HairLab {targetL, lab.a, lab.b});
+    const LabColour lab = labOf(c);
+    return colourOfLab(LabColour {targetL, lab.a, lab.b});
 }
 
 } // namespace

@@ -40,7 +40,7 @@ constexpr double kRedDrawnChroma = 30.0, kRedDrawnHue = 48.0;
 constexpr double kBlondDrawnL = 62.0, kBlondDrawnChroma = 22.0;
 constexpr double kBlackDrawnL = 16.0;
 
-double distance(const HairLab &x, const HairLab &y)
+double distance(const LabColour &x, const LabColour &y)
 {
     return std::hypot(x.l - y.l, x.a - y.a, x.b - y.b);
 }
@@ -57,12 +57,6 @@ double clamp01(double v)
 }
 
 } // namespace
-
-HairLab hairLabOf(const QColor &c)
-{
-    const LabColour lab = labOf(c);
-    return {lab.l, lab.a, lab.b};
-}
 
 QString hairShadeName(HairShade shade)
 {
@@ -96,13 +90,13 @@ HairColourReading readHairColour(const std::vector<QRgb> &sample, const QColor &
     HairColourReading out;
     if (sample.size() < size_t(kMinPixels) || !skin.isValid())
         return out;
-    out.skin = hairLabOf(skin);
+    out.skin = labOf(skin);
     const bool roomSeen = room.isValid();
-    const HairLab roomLab = roomSeen ? hairLabOf(room) : HairLab {};
-    std::vector<HairLab> all, kept;
+    const LabColour roomLab = roomSeen ? labOf(room) : LabColour {};
+    std::vector<LabColour> all, kept;
     all.reserve(sample.size());
     for (QRgb p : sample) {
-        const HairLab c = hairLabOf(QColor(p));
+        const LabColour c = labOf(QColor(p));
         all.push_back(c);
         if (distance(c, out.skin) >= kLikeSkin && (!roomSeen || distance(c, roomLab) >= kLikeRoom))
             kept.push_back(c);
@@ -110,7 +104,7 @@ HairColourReading readHairColour(const std::vector<QRgb> &sample, const QColor &
     if (kept.size() < size_t(kMinPixels) || double(kept.size()) < kMinKept * double(all.size()))
         kept = all;
     out.kept = double(kept.size()) / double(all.size());
-    std::sort(kept.begin(), kept.end(), [](const HairLab &x, const HairLab &y) { return x.l < y.l; });
+    std::sort(kept.begin(), kept.end(), [](const LabColour &x, const LabColour &y) { return x.l < y.l; });
     const size_t from = size_t(double(kept.size()) * kLowQuantile);
     const size_t to = std::max(from + 1, size_t(double(kept.size()) * kHighQuantile));
     std::vector<double> l, a, b;
@@ -129,11 +123,11 @@ HairColourReading readFacialHairColour(const std::vector<QRgb> &sample, const QC
 {
     if (!skin.isValid())
         return {};
-    const HairLab skinLab = hairLabOf(skin);
+    const LabColour skinLab = labOf(skin);
     const double skinChroma = std::hypot(skinLab.a, skinLab.b);
     std::vector<QRgb> strands;
     for (QRgb p : sample) {
-        const HairLab c = hairLabOf(QColor(p));
+        const LabColour c = labOf(QColor(p));
         if (distance(c, skinLab) >= kLikeSkin && std::hypot(c.a, c.b) < kStrandChroma * skinChroma)
             strands.push_back(p);
     }
@@ -204,7 +198,7 @@ QColor drawnHairColour(const HairColourReading &reading, const HairShadeCall &ca
     // Pushed only past kPushFrom of confidence: nearer a threshold the shade is a guess (a quarter
     // of black heads read as grey strands, see HairShadeRules::fitted) and the colour stays as read.
     const double t = clamp01((call.confidence - kPushFrom) / (1.0 - kPushFrom));
-    HairLab c = reading.hair;
+    LabColour c = reading.hair;
     auto toward = [t](double from, double to) { return from + (to - from) * t; };
     // Sets the chroma and hue (degrees) of `c`, keeping its L*.
     auto setChroma = [&c](double chroma, double hue) {
@@ -231,24 +225,6 @@ QColor drawnHairColour(const HairColourReading &reading, const HairShadeCall &ca
     case HairShade::Brown: break;
     }
     return colourOfLab(c);
-}
-
-QColor colourOfLab(const HairLab &lab)
-{
-    // CIE Lab (D65) to XYZ to linear sRGB to sRGB.
-    const double fy = (lab.l + 16.0) / 116.0, fx = fy + lab.a / 500.0, fz = fy - lab.b / 200.0;
-    auto inverse
-        = [](double f) { return f > 6.0 / 29.0 ? f * f * f : 3.0 * (6.0 / 29.0) * (6.0 / 29.0) * (f - 4.0 / 29.0); };
-    const double x = 0.95047 * inverse(fx), y = inverse(fy), z = 1.08883 * inverse(fz);
-    const double lin[3] = {3.2404542 * x - 1.5371385 * y - 0.4985314 * z,
-        -0.9692660 * x + 1.8760108 * y + 0.0415560 * z, 0.0556434 * x - 0.2040259 * y + 1.0572252 * z};
-    int rgb[3];
-    for (int k = 0; k < 3; ++k) {
-        const double v = std::clamp(lin[k], 0.0, 1.0);
-        const double s = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
-        rgb[k] = int(std::lround(255.0 * s));
-    }
-    return QColor(rgb[0], rgb[1], rgb[2]);
 }
 
 } // namespace toonface

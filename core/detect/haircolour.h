@@ -9,6 +9,8 @@
 // fitted on the labelled faces); the drawn colour keeps what was read and is pushed toward the
 // shade's own look (grey without colour, red with it) only as far as the call is sure.
 
+#include "detect/labcolour.h"
+
 #include <QColor>
 #include <QString>
 
@@ -18,22 +20,14 @@ namespace toonface {
 
 struct HeadParse;
 
-// A colour in CIE L*a*b* (D65): L* 0..100, a* and b* about 0 (labcolour.h's, without OpenCV's
-// headers, which the hair's users need not see).
-struct HairLab
-{
-    double l = 0, a = 0, b = 0;
-};
-HairLab hairLabOf(const QColor &c);
-
 enum class HairShade { Black, Brown, Red, Blond, Grey };
 QString hairShadeName(HairShade shade); // "black", "brown", "red", "blond", "grey"
 
 struct HairColourReading
 {
     bool valid = false;
-    HairLab hair; // the strands' colour (L* 0..100)
-    HairLab skin; // the skin it was told from
+    LabColour hair; // the strands' colour (L* 0..100)
+    LabColour skin; // the skin it was told from
     double kept = 0; // share of the sample kept as hair (the rest was like the skin or the room)
     int pixels = 0; // how many pixels were kept
 
@@ -75,8 +69,5 @@ HairShadeCall classifyHair(const HairColourReading &reading, const HairShadeRule
 // sure (grey loses its chroma and is drawn at least mid-grey, red keeps a copper's chroma, blond
 // a blond's lightness, black is drawn dark); a brown stays as read.
 QColor drawnHairColour(const HairColourReading &reading, const HairShadeCall &call);
-
-// Lab (L* 0..100) back to sRGB, clipped to the gamut.
-QColor colourOfLab(const HairLab &lab);
 
 } // namespace toonface

@@ -1,5 +1,7 @@
 #include "detect/labcolour.h"
 
+#include <opencv2/core/mat.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -86,6 +88,24 @@ LabColour labOf(const QColor &c)
     rgbToLab8(rgb, lab);
     const cv::Vec3b v = lab.at<cv::Vec3b>(0, 0);
     return {v[0] * 100.0 / 255.0, v[1] - 128.0, v[2] - 128.0};
+}
+
+QColor colourOfLab(const LabColour &lab)
+{
+    // CIE Lab (D65) to XYZ to linear sRGB to sRGB.
+    const double fy = (lab.l + 16.0) / 116.0, fx = fy + lab.a / 500.0, fz = fy - lab.b / 200.0;
+    auto inverse
+        = [](double f) { return f > 6.0 / 29.0 ? f * f * f : 3.0 * (6.0 / 29.0) * (6.0 / 29.0) * (f - 4.0 / 29.0); };
+    const double x = 0.95047 * inverse(fx), y = inverse(fy), z = 1.08883 * inverse(fz);
+    const double lin[3] = {3.2404542 * x - 1.5371385 * y - 0.4985314 * z,
+        -0.9692660 * x + 1.8760108 * y + 0.0415560 * z, 0.0556434 * x - 0.2040259 * y + 1.0572252 * z};
+    int rgb[3];
+    for (int k = 0; k < 3; ++k) {
+        const double v = std::clamp(lin[k], 0.0, 1.0);
+        const double s = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+        rgb[k] = int(std::lround(255.0 * s));
+    }
+    return QColor(rgb[0], rgb[1], rgb[2]);
 }
 
 } // namespace toonface

@@ -8,7 +8,9 @@
 
 #include <QColor>
 
-#include <opencv2/core/mat.hpp>
+namespace cv {
+class Mat;
+}
 
 namespace toonface {
 
@@ -22,5 +24,7 @@ struct LabColour
     double l = 0, a = 0, b = 0;
 };
 LabColour labOf(const QColor &c);
+// ... and back to sRGB (exactly, not through the 8-bit tables), clipped to the gamut.
+QColor colourOfLab(const LabColour &lab);
 
 } // namespace toonface

@@ -36,7 +36,7 @@ std::vector<QRgb> pixelsNear(const QColor &c, int n, int spread, quint32 seed)
     return out;
 }
 
-double labDistance(const HairLab &a, const HairLab &b)
+double labDistance(const LabColour &a, const LabColour &b)
 {
     return std::hypot(a.l - b.l, a.a - b.a, a.b - b.b);
 }
@@ -45,8 +45,8 @@ HairShade shadeOfColour(const QColor &c, const QColor &skin)
 {
     HairColourReading r;
     r.valid = true;
-    r.hair = hairLabOf(c);
-    r.skin = hairLabOf(skin);
+    r.hair = labOf(c);
+    r.skin = labOf(skin);
     return classifyHair(r).shade;
 }
 
@@ -74,7 +74,7 @@ private Q_SLOTS:
         sample.insert(sample.end(), hair.begin(), hair.end());
         const HairColourReading r = readHairColour(sample, kSkin, room);
         QVERIFY(r.valid);
-        QVERIFY2(labDistance(r.hair, hairLabOf(grey)) < 4.0, qPrintable(r.colour().name()));
+        QVERIFY2(labDistance(r.hair, labOf(grey)) < 4.0, qPrintable(r.colour().name()));
         QVERIFY(r.kept < 0.5);
         QCOMPARE(classifyHair(r).shade, HairShade::Grey);
     }
@@ -90,7 +90,7 @@ private Q_SLOTS:
         sample.insert(sample.end(), shine.begin(), shine.end());
         const HairColourReading r = readHairColour(sample, kSkin);
         QVERIFY(r.valid);
-        QVERIFY2(std::abs(r.hair.l - hairLabOf(blond).l) < 5.0, qPrintable(r.colour().name()));
+        QVERIFY2(std::abs(r.hair.l - labOf(blond).l) < 5.0, qPrintable(r.colour().name()));
     }
 
     void tooFewPixelsReadNothing()
@@ -139,7 +139,7 @@ private Q_SLOTS:
         const HairShadeCall call = classifyHair(r);
         const QColor drawn = drawnHairColour(r, call);
         QCOMPARE(name(shadeOfColour(drawn, kSkin)), name(call.shade));
-        const HairLab d = hairLabOf(drawn);
+        const LabColour d = labOf(drawn);
         const double chroma = std::hypot(d.a, d.b);
         switch (call.shade) {
         case HairShade::Grey: QVERIFY2(chroma < r.chroma(), qPrintable(drawn.name())); break;
@@ -155,7 +155,7 @@ private Q_SLOTS:
     void labRoundTrip()
     {
         for (const QColor &c : {QColor(10, 10, 10), QColor(200, 120, 60), QColor(240, 240, 235), QColor(60, 90, 160)}) {
-            const QColor back = colourOfLab(hairLabOf(c));
+            const QColor back = colourOfLab(labOf(c));
             QVERIFY2(std::abs(back.red() - c.red()) <= 2 && std::abs(back.green() - c.green()) <= 2
                     && std::abs(back.blue() - c.blue()) <= 2,
                 qPrintable(c.name() + QLatin1Char(' ') + back.name()));
