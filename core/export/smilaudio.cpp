@@ -7,6 +7,7 @@
 #include "i18n/coretext.h"
 #include "media/audiomix.h"
 #include "media/mediareader.h"
+#include "media/soundcheck.h"
 #include "media/userfile.h"
 #include "speech/audio.h"
 
@@ -110,10 +111,13 @@ bool resolveAudio(
         out->uri = "data:" + mime + ";base64," + bytes.toBase64();
         return true;
     }
-    const std::optional<MediaInfo> media = probeMedia(path, &problem);
-    if (!media || !media->hasAudio) {
-        *error = SoundText::tr("the sound cannot be used: %1")
-                     .arg(media ? withProblem(path, SoundText::tr("holds no sound")) : problem);
+    // A referenced sound is checked, not decoded: its header and a few packets (checkSound),
+    // then every packet's length without decoding (mediaDamage), so an hour-long recording costs
+    // milliseconds and a copy cut short is still refused.
+    const SoundCheck check = checkSound(path);
+    const QString damage = check.ok() ? mediaDamage(path) : QString();
+    if (!check.ok() || !damage.isEmpty()) {
+        *error = SoundText::tr("the sound cannot be used: %1").arg(check.ok() ? damage : check.error);
         return false;
     }
     const QFileInfo info(path);

@@ -6,6 +6,7 @@
 #include "io/pointsjson.h"
 #include "io/syllablesjson.h"
 #include "media/mediareader.h"
+#include "media/soundcheck.h"
 #include "media/userfile.h"
 
 #include <QDir>
@@ -599,8 +600,15 @@ std::optional<Project> loadProject(const QString &path, QString *error)
         QString unreadable;
         if (clip.duration > 0 || !irregularFileProblem(clip.path).isEmpty())
             continue;
-        if (const std::optional<MediaInfo> media = probeMedia(clip.path, &unreadable); media && media->hasAudio)
-            clip.duration = std::min(media->audioDurationS, Timeline::kMaxSeconds - std::max(0.0, clip.offset));
+        // The header's length when it has one (an hour of sound is not decoded to open a
+        // project); only a container that does not say is decoded to be measured.
+        double seconds = 0;
+        if (const SoundCheck check = checkSound(clip.path); check.ok() && check.seconds > 0)
+            seconds = check.seconds;
+        else if (const std::optional<MediaInfo> media = probeMedia(clip.path, &unreadable); media && media->hasAudio)
+            seconds = media->audioDurationS;
+        if (seconds > 0)
+            clip.duration = std::min(seconds, Timeline::kMaxSeconds - std::max(0.0, clip.offset));
     }
     project->timeline.setAudioClips(clips);
     return project;

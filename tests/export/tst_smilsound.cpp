@@ -140,6 +140,38 @@ private Q_SLOTS:
         QCOMPARE(audio.first()->attribute(QStringLiteral("href")), QStringLiteral("../sound%20files/voice%20one.wav"));
     }
 
+    // A referenced sound is checked without being decoded; a copy cut short (its header promises
+    // more than it holds) or a file that is no sound is still refused, naming the file.
+    void damagedReferencedSoundIsRefused_data()
+    {
+        QTest::addColumn<bool>("cutShort");
+        QTest::newRow("cut short") << true;
+        QTest::newRow("not a sound") << false;
+    }
+
+    void damagedReferencedSoundIsRefused()
+    {
+        QFETCH(bool, cutShort);
+        QTemporaryDir out;
+        const QString wav = out.filePath(QStringLiteral("damaged voice.wav"));
+        QFile in(m_wav);
+        QVERIFY(in.open(QIODevice::ReadOnly));
+        const QByteArray whole = in.readAll();
+        QFile damaged(wav);
+        QVERIFY(damaged.open(QIODevice::WriteOnly));
+        damaged.write(cutShort ? whole.left(whole.size() * 6 / 10) : QByteArray("these are words, not sound\n"));
+        damaged.close();
+        AnimationExportOptions o;
+        o.audio = ExportAudio::Reference;
+        o.outputDir = out.path();
+        o.audioPath = wav;
+        QString error;
+        const QByteArray svg = exportSmilSvg(m_face, Style(), timeline(), m_shapes, o, &error);
+        QVERIFY(svg.isEmpty());
+        QVERIFY2(error.contains(QStringLiteral("damaged voice.wav")), qPrintable(error));
+        QVERIFY2(!cutShort || error.contains(QStringLiteral("short")), qPrintable(error));
+    }
+
     void silentExportHasNoPlayer()
     {
         const QByteArray svg = exported(silent());
