@@ -152,6 +152,30 @@ private Q_SLOTS:
         }
     }
 
+    // Hair is never violet, blue or green: strands read so carry the room's colour (a grey head
+    // before a mauve wall, black hair under a blue light). Such a reading is not red hair, and is
+    // drawn without that colour, at the lightness read.
+    void roomColouredStrandsAreDrawnWithoutTheirColour_data()
+    {
+        QTest::addColumn<QColor>("hair");
+        QTest::newRow("mauve-grey") << QColor(190, 160, 200);
+        QTest::newRow("blue-grey") << QColor(140, 160, 205);
+        QTest::newRow("violet-black") << QColor(48, 20, 60);
+        QTest::newRow("olive-grey") << QColor(150, 160, 100);
+        QTest::newRow("teal-black") << QColor(20, 60, 60);
+    }
+    void roomColouredStrandsAreDrawnWithoutTheirColour()
+    {
+        QFETCH(QColor, hair);
+        const HairColourReading r = readHairColour(pixelsNear(hair, 200, 3, 9), kSkin);
+        QVERIFY(r.valid);
+        QVERIFY2(r.chroma() > 10.0, qPrintable(r.colour().name()));
+        const HairShadeCall call = classifyHair(r);
+        QVERIFY2(call.shade != HairShade::Red, qPrintable(r.colour().name()));
+        const LabColour d = labOf(drawnHairColour(r, call));
+        QVERIFY2(std::hypot(d.a, d.b) < 4.0, qPrintable(colourOfLab(d).name()));
+    }
+
     void labRoundTrip()
     {
         for (const QColor &c : {QColor(10, 10, 10), QColor(200, 120, 60), QColor(240, 240, 235), QColor(60, 90, 160)}) {
