@@ -696,6 +696,9 @@ QJsonObject attributes()
         o.insert(QStringLiteral("age"), r.age);
         o.insert(QStringLiteral("sex"), r.sex);
         if (r.detected) {
+            const AgeDecision age = decideAge(r.ageEvidence);
+            o.insert(QStringLiteral("ageChild"), age.child);
+            o.insert(QStringLiteral("ageElderly"), age.elderly);
             QJsonObject m;
             for (const auto &[key, value] : r.m)
                 m.insert(QString::fromStdString(key), value);

@@ -38,6 +38,16 @@ constexpr double kBrowContrast = 0.6; // a brow is drawn at most this share of t
 // grey) light and dark hair dark: held out 0.835 right, against 0.759 drawing every sample
 // (`toonface-bench likeness.attributes` prints the drawn hair's lightness by label).
 constexpr double kTempleHairLighter = 17.0;
+// Grey or white hair is drawn only on a face the age models (agegroup.h) take for no child's and
+// give at least this chance of being elderly (of not being a child): on the younger, strands
+// read grey were a shine on dark hair or the wall through it (17 % of black-haired heads drawn
+// grey). Fitted by leave-one-out over the 25 labelled faces (of 126) whose strands were drawn grey
+// and decided no child: right on 21 held out against 14 without it (thresholds 0.27-0.30; the
+// age models are fitted on the same faces, so this is in-sample for them).
+constexpr double kGreyHairElderly = 0.287;
+// ... unless the strands read white: no dark head of those faces read lighter than L* 60 here
+// (the shine and the wall read mid-grey), white and silver hair 63 to 85.
+constexpr double kWhiteHairL = 65.0;
 
 double hueDistance(double a, double b)
 {
@@ -130,6 +140,11 @@ QColor medianColour(const std::vector<QColor> &colours)
 
 // Hair read as strands (haircolour.h) is drawn in its shade's look as far as its call is sure;
 // `seen` (the finder's plain median) where it read nothing.
+bool greyHairFits(const HairColourReading &reading, const AgeDecision &age)
+{
+    return reading.hair.l >= kWhiteHairL || (age.group != AgeGroup::Child && age.elderly >= kGreyHairElderly);
+}
+
 QColor drawnHair(const HairColourReading &reading, const QColor &seen)
 {
     return reading.valid ? drawnHairColour(reading, classifyHair(reading)) : seen;
@@ -393,16 +408,20 @@ void sampleColours(const QImage &original, const FaceModel &face, Style *style, 
     // brows are of their hair's colour), or the preset's.
     const bool lightBesideTemples
         = found.templeHairSeen && skinOk && labOf(found.parsedHair).l - labOf(skin).l > kTempleHairLighter;
+    const QColor browsOrPreset = !browSeen.isValid() ? Style::baseComponents().value(QStringLiteral("hair")).fill
+        : monochrome                                 ? hairFromGrey(qGray(browSeen.rgb()))
+                                                     : browSeen;
     if (lightBesideTemples) {
         hairOk = false;
-        hair = !browSeen.isValid() ? Style::baseComponents().value(QStringLiteral("hair")).fill
-            : monochrome           ? hairFromGrey(qGray(browSeen.rgb()))
-                                   : browSeen;
+        hair = browsOrPreset;
         setHair(hair);
     }
     if (found.parsedHair.isValid() && !appearance.bald && !appearance.hat && !lightBesideTemples) {
-        hair
-            = monochrome ? hairFromGrey(qGray(found.parsedHair.rgb())) : drawnHair(found.hairReading, found.parsedHair);
+        const bool greyTooYoung = !monochrome && found.hairReading.valid
+            && classifyHair(found.hairReading).shade == HairShade::Grey && !greyHairFits(found.hairReading, found.age);
+        hair = monochrome  ? hairFromGrey(qGray(found.parsedHair.rgb()))
+            : greyTooYoung ? browsOrPreset
+                           : drawnHair(found.hairReading, found.parsedHair);
         hairOk = true;
         setHair(hair);
     }
