@@ -178,6 +178,7 @@ QString PageVideoWriter::write(const Timeline &timeline, qint64 beginMs, qint64 
     const QString path = QDir(m_folder).filePath(QStringLiteral("page.mp4"));
     VideoOptions options;
     options.preset = QString::fromLatin1(kPreset);
+    options.mp4AudioRate = kSoundRate; // the speech as it was made, not resampled to 48 kHz
     VideoWriter writer;
     if (!writer.open(path, VideoFormat::Mp4, size, kFrameRate, AudioSource::fromSamples(std::move(sound), kSoundRate),
             error, options))

@@ -69,8 +69,13 @@ public:
                 cancel();
                 return fail(error, path, ExportText::tr("cannot write MP4: FFmpeg has no AAC encoder"));
             }
-            // The 44.1 kHz family stays in it; everything else becomes 48 kHz.
-            if (!openAudio(audio, aac, AV_SAMPLE_FMT_FLTP, {48000, 44100}, options.audioBitRate, error)) {
+            // The 44.1 kHz family stays in it; everything else becomes 48 kHz, unless the options
+            // name a rate.
+            const bool ownRate = options.mp4AudioRate > 0;
+            if (!openAudio(audio, aac, AV_SAMPLE_FMT_FLTP,
+                    ownRate ? std::initializer_list<int> {options.mp4AudioRate}
+                            : std::initializer_list<int> {48000, 44100},
+                    options.audioBitRate, error)) {
                 cancel();
                 return false;
             }

@@ -260,6 +260,11 @@ bool MuxedSink::openAudio(const AudioSource &audio, const AVCodec *codec, AVSamp
     a->time_base = {1, rate};
     if (m_fmt->oformat->flags & AVFMT_GLOBALHEADER)
         a->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+    // FFmpeg's own AAC encoder with its "fast" coder (its default until 2016) instead of the
+    // two-loop search: ten minutes of 48 kHz mono at 96 kb/s cost 5.0 CPU-s instead of 8.6, the
+    // largest share of a read-aloud book's video pages after the drawing.
+    if (codec->id == AV_CODEC_ID_AAC)
+        av_opt_set(a->priv_data, "aac_coder", "fast", 0);
     const int r = avcodec_open2(a, codec, nullptr);
     if (r < 0)
         return fail(error, m_path,

@@ -44,6 +44,10 @@ struct VideoOptions
     // Encoder threads; 0 lets the encoder use every core.
     int threads = 0;
     int audioBitRate = 96000;
+    // MP4's sound rate: 0 keeps 44.1 kHz for that family of rates and makes every other 48 kHz
+    // (what video editors expect); a rate here is used as it is (a book's speech at 24 kHz,
+    // whose encoding costs half).
+    int mp4AudioRate = 0;
     // VP9's constant quality (WebM): 0 (best) .. 63; higher makes smaller files.
     int vp9Crf = 32;
     // WebP's quality: 0 .. 100 (best); lower makes smaller files.

@@ -155,6 +155,8 @@ private Q_SLOTS:
         QVERIFY2(info, qPrintable(error));
         QCOMPARE(info->frameCount, int(writer.framesWritten()));
         QVERIFY(info->hasAudio);
+        // The speech keeps the rate it was made at (24 kHz), not resampled to 48 kHz.
+        QCOMPARE(info->audioSampleRate, 24000);
     }
 
     // A talking page: fewer pictures drawn than frames (the pauses and held shapes reuse
