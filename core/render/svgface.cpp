@@ -745,8 +745,19 @@ QString SvgFace::headTransform(const HeadPose &head) const
 
 QByteArray SvgFace::svg(const Pose &pose) const
 {
+    const std::vector<Part> parts = buildParts(m_geometry->g, m_face, m_geometry->drawn, pose, m_eyeCovers);
+    return document(parts, pose, Pass::Whole);
+}
+
+SvgFace::Passes SvgFace::svgPasses(const Pose &pose) const
+{
+    const std::vector<Part> parts = buildParts(m_geometry->g, m_face, m_geometry->drawn, pose, m_eyeCovers);
+    return {document(parts, pose, Pass::Under), document(parts, pose, Pass::Over)};
+}
+
+QByteArray SvgFace::document(const std::vector<Part> &parts, const Pose &pose, Pass pass) const
+{
     const SvgFaceGeometry &g = m_geometry->g;
-    const std::vector<Part> parts = buildParts(g, m_face, m_geometry->drawn, pose, m_eyeCovers);
     const QRectF box = frame();
     QByteArray out;
     out.reserve(12000);
@@ -767,26 +778,34 @@ QByteArray SvgFace::svg(const Pose &pose) const
     out += "\">\n";
 
     // Clip paths reuse the outline they clip by, so animating the outline animates the clip.
-    out += "<defs>";
-    for (const Part &p : parts) {
-        if (p.clipPath && std::strcmp(p.id, "eyeball-left") == 0)
-            out += QByteArray("<clipPath id=\"") + p.clipPath + "\"><use xlink:href=\"#eye-left\"/></clipPath>";
-        else if (p.clipPath && std::strcmp(p.id, "eyeball-right") == 0)
-            out += QByteArray("<clipPath id=\"") + p.clipPath + "\"><use xlink:href=\"#eye-right\"/></clipPath>";
+    // The eyes are in the dynamic layer: the under pass has nothing to clip.
+    if (pass != Pass::Under) {
+        out += "<defs>";
+        for (const Part &p : parts) {
+            if (p.clipPath && std::strcmp(p.id, "eyeball-left") == 0)
+                out += QByteArray("<clipPath id=\"") + p.clipPath + "\"><use xlink:href=\"#eye-left\"/></clipPath>";
+            else if (p.clipPath && std::strcmp(p.id, "eyeball-right") == 0)
+                out += QByteArray("<clipPath id=\"") + p.clipPath + "\"><use xlink:href=\"#eye-right\"/></clipPath>";
+        }
+        out += "</defs>\n";
     }
-    out += "</defs>\n";
 
-    if (!g.bodyParts.empty()) {
-        out += "<g id=\"body\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
-        for (const Part &p : g.bodyParts)
-            writePart(out, p, g);
-        out += "</g>\n";
+    if (pass != Pass::Over) {
+        if (!g.bodyParts.empty()) {
+            out += "<g id=\"body\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+            for (const Part &p : g.bodyParts)
+                writePart(out, p, g);
+            out += "</g>\n";
+        }
+        out += g.behind;
     }
-    out += g.behind;
     out += "<g id=\"head\" transform=\"" + headTransformText(g, pose.head)
         + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
-    out += g.headBehind;
+    if (pass != Pass::Over)
+        out += g.headBehind;
     for (bool dynamic : {false, true}) {
+        if (dynamic ? pass == Pass::Under : pass == Pass::Over)
+            continue;
         out += dynamic ? "<g id=\"dynamic-layer\">\n" : "<g id=\"static-layer\">\n";
         for (const Part &p : parts) {
             if (p.dynamic == dynamic)
@@ -794,17 +813,49 @@ QByteArray SvgFace::svg(const Pose &pose) const
         }
         out += "</g>\n";
     }
-    out += g.headFront;
+    if (pass != Pass::Under)
+        out += g.headFront;
     out += "</g>\n";
-    out += g.front;
-    for (qsizetype i = 0; i < m_layers.size(); ++i) {
-        out += "<g id=\"layer-" + QByteArray::number(i + 1) + "\">";
-        out += m_layers[i];
-        out += "</g>\n";
+    if (pass != Pass::Under) {
+        out += g.front;
+        for (qsizetype i = 0; i < m_layers.size(); ++i) {
+            out += "<g id=\"layer-" + QByteArray::number(i + 1) + "\">";
+            out += m_layers[i];
+            out += "</g>\n";
+        }
     }
     out += "</svg>\n";
     return out;
 }
+
+namespace {
+
+// Where rasterizeSvg() places a drawing of `renderer` on an image of `size`.
+QRectF placement(const QSvgRenderer &renderer, QSize size)
+{
+    QSizeF source = renderer.viewBoxF().size();
+    if (source.isEmpty())
+        source = renderer.defaultSize();
+    if (source.isEmpty())
+        source = size;
+    const QSizeF fitted = source.scaled(QSizeF(size), Qt::KeepAspectRatio);
+    return QRectF(QPointF((size.width() - fitted.width()) / 2.0, (size.height() - fitted.height()) / 2.0), fitted);
+}
+
+void draw(QSvgRenderer &renderer, QImage *image, const QRectF &target, const QColor *background)
+{
+    QPainter painter(image);
+    painter.setRenderHint(QPainter::Antialiasing);
+    if (background)
+        painter.fillRect(target, *background);
+    // As a browser does: nothing outside the viewBox (the shoulders and the user's layers may
+    // reach beyond it), which QSvgRenderer would draw.
+    painter.setClipRect(target);
+    renderer.render(&painter, target);
+    painter.end();
+}
+
+} // namespace
 
 QImage rasterizeSvg(const QByteArray &svg, QSize size, QColor background)
 {
@@ -813,25 +864,21 @@ QImage rasterizeSvg(const QByteArray &svg, QSize size, QColor background)
     QSvgRenderer renderer(svg);
     if (!renderer.isValid())
         return {};
-    QSizeF source = renderer.viewBoxF().size();
-    if (source.isEmpty())
-        source = renderer.defaultSize();
-    if (source.isEmpty())
-        source = size;
-    const QSizeF fitted = source.scaled(QSizeF(size), Qt::KeepAspectRatio);
-    const QRectF target(
-        QPointF((size.width() - fitted.width()) / 2.0, (size.height() - fitted.height()) / 2.0), fitted);
     QImage image(size, QImage::Format_ARGB32_Premultiplied);
     image.fill(Qt::transparent);
-    QPainter painter(&image);
-    painter.setRenderHint(QPainter::Antialiasing);
-    painter.fillRect(target, background);
-    // As a browser does: nothing outside the viewBox (the shoulders and the user's layers may
-    // reach beyond it), which QSvgRenderer would draw.
-    painter.setClipRect(target);
-    renderer.render(&painter, target);
-    painter.end();
+    draw(renderer, &image, placement(renderer, size), &background);
     return image;
+}
+
+bool drawSvg(const QByteArray &svg, QImage *image)
+{
+    if (image->isNull())
+        return false;
+    QSvgRenderer renderer(svg);
+    if (!renderer.isValid())
+        return false;
+    draw(renderer, image, placement(renderer, image->size()), nullptr);
+    return true;
 }
 
 } // namespace toonface
