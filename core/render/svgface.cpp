@@ -15,12 +15,14 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QHash>
 #include <QPainter>
 #include <QSvgRenderer>
 #include <QXmlStreamReader>
 #include <QXmlStreamWriter>
 
 #include <algorithm>
+#include <bitset>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -528,9 +530,16 @@ SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
     return g;
 }
 
-// The parts in drawing order; only those that depend on the pose unless `withStatic`.
+// What makes the parts that depend on the pose, in drawing order: each builder makes one or
+// more parts (the mouth five, an eye up to six). A set of them builds only some parts.
+enum class Builder { Eyebrows, Jaw, Beard, Cues, AgeLines, Mouth, Moustache, LeftEye, RightEye, Glasses, Count };
+using Builders = std::bitset<size_t(Builder::Count)>;
+
+// The parts in drawing order; only those that depend on the pose unless `withStatic`, and of
+// those only the ones `only` builds when it is given. `builders`, when given, receives each
+// part's builder (-1 for the still parts).
 std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, const Style &style, const Pose &pose,
-    bool eyeCovers, bool withStatic = true)
+    bool eyeCovers, bool withStatic = true, const Builders *only = nullptr, std::vector<int> *builders = nullptr)
 {
     Points posed = posedPoints(face, pose);
     applyStyleRules(posed, g, style);
@@ -544,25 +553,57 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
     parts.reserve(g.staticParts.size() + 24);
     if (withStatic)
         parts = g.staticParts;
-    if (drawn(g, "eyebrows"))
-        makeEyebrows(P, style, g.es0, &parts);
-    if (drawn(g, "jaw"))
-        parts.push_back(makeJaw(P, g));
-    if (look.beard)
-        parts.push_back(makeBeard(P, g.es0));
-    else if (look.goatee)
-        parts.push_back(makeGoatee(P, g.es0));
-    makeExpressionCues(P, Pt {g.neutral}, Pt {g.rest}, g.es0, &parts);
-    if (look.age == AgeGroup::Elderly)
-        makeAgeLines(P, g.es0, &parts);
-    makeMouth(P, &parts);
-    if (look.moustache)
-        parts.push_back(makeMoustache(P, g.es0));
-    makeEye(P, g, true, eyeCovers, &parts);
-    makeEye(P, g, false, eyeCovers, &parts);
-    if (look.glasses != GlassesShape::None)
-        parts.push_back(makeGlasses(P, look.glasses, look.lens, g.es0));
-    std::erase_if(parts, [&](const Part &p) { return !drawn(g, p.styleKey); });
+    std::vector<int> made(parts.size(), -1);
+    auto build = [&](Builder b, const auto &make) {
+        if (only && !only->test(size_t(b)))
+            return;
+        make();
+        made.resize(parts.size(), int(b));
+    };
+    build(Builder::Eyebrows, [&] {
+        if (drawn(g, "eyebrows"))
+            makeEyebrows(P, style, g.es0, &parts);
+    });
+    build(Builder::Jaw, [&] {
+        if (drawn(g, "jaw"))
+            parts.push_back(makeJaw(P, g));
+    });
+    build(Builder::Beard, [&] {
+        if (look.beard)
+            parts.push_back(makeBeard(P, g.es0));
+        else if (look.goatee)
+            parts.push_back(makeGoatee(P, g.es0));
+    });
+    build(Builder::Cues, [&] { makeExpressionCues(P, Pt {g.neutral}, Pt {g.rest}, g.es0, &parts); });
+    build(Builder::AgeLines, [&] {
+        if (look.age == AgeGroup::Elderly)
+            makeAgeLines(P, g.es0, &parts);
+    });
+    build(Builder::Mouth, [&] { makeMouth(P, &parts); });
+    build(Builder::Moustache, [&] {
+        if (look.moustache)
+            parts.push_back(makeMoustache(P, g.es0));
+    });
+    build(Builder::LeftEye, [&] { makeEye(P, g, true, eyeCovers, &parts); });
+    build(Builder::RightEye, [&] { makeEye(P, g, false, eyeCovers, &parts); });
+    build(Builder::Glasses, [&] {
+        if (look.glasses != GlassesShape::None)
+            parts.push_back(makeGlasses(P, look.glasses, look.lens, g.es0));
+    });
+    size_t kept = 0;
+    for (size_t i = 0; i < parts.size(); ++i) {
+        if (!drawn(g, parts[i].styleKey))
+            continue;
+        if (kept != i) {
+            parts[kept] = std::move(parts[i]);
+            made[kept] = made[i];
+        }
+        ++kept;
+    }
+    parts.resize(kept);
+    made.resize(kept);
+    if (builders)
+        *builders = std::move(made);
     return parts;
 }
 
@@ -628,6 +669,8 @@ struct SvgFace::Geometry
     SvgFaceGeometry g;
     QVector<FacePart> staticParts; // g.staticParts that are visible, for parts()
     Style drawn; // the style as drawn for the face's age (agestyle.h); style() stays the one given
+    // The builder of each posed part's id, with and without the eye covers, for posedGeometry().
+    QHash<QByteArray, int> builderOf;
 };
 
 SvgFace::SvgFace(const FaceModel &face, const Style &style)
@@ -640,6 +683,13 @@ SvgFace::SvgFace(const FaceModel &face, const Style &style)
     for (const Part &p : geometry->g.staticParts) {
         if (componentStyle(geometry->drawn.components, p.styleKey).visible)
             geometry->staticParts.append(facePart(p, geometry->g));
+    }
+    for (const bool covers : {true, false}) {
+        std::vector<int> builders;
+        const std::vector<Part> posed
+            = buildParts(geometry->g, m_face, geometry->drawn, Pose {}, covers, false, nullptr, &builders);
+        for (size_t i = 0; i < posed.size(); ++i)
+            geometry->builderOf.insert(QByteArray(posed[i].id), builders[i]);
     }
     m_geometry = std::move(geometry);
 }
@@ -683,9 +733,20 @@ QVector<FacePart> SvgFace::parts(const Pose &pose) const
     return out;
 }
 
-std::vector<SvgFace::PartGeometry> SvgFace::posedGeometry(const Pose &pose) const
+std::vector<SvgFace::PartGeometry> SvgFace::posedGeometry(const Pose &pose, const QVector<QByteArray> &ids) const
 {
-    std::vector<Part> posed = buildParts(m_geometry->g, m_face, m_geometry->drawn, pose, m_eyeCovers, false);
+    // Only the builders of the parts asked for; every one when a part is not known.
+    Builders only;
+    for (const QByteArray &id : ids) {
+        const auto it = m_geometry->builderOf.constFind(id);
+        if (it == m_geometry->builderOf.constEnd()) {
+            only.set();
+            break;
+        }
+        only.set(size_t(*it));
+    }
+    std::vector<Part> posed = buildParts(
+        m_geometry->g, m_face, m_geometry->drawn, pose, m_eyeCovers, false, ids.isEmpty() ? nullptr : &only);
     std::vector<PartGeometry> out;
     out.reserve(posed.size());
     for (Part &p : posed)

@@ -73,7 +73,9 @@ public:
         const char *id;
         std::vector<std::pair<const char *, QByteArray>> attributes;
     };
-    std::vector<PartGeometry> posedGeometry(const Pose &pose) const;
+    // With `ids`, only the parts made together with those (the mouth's five, an eye's parts):
+    // sampling one group of channels skips drawing the others. Parts not drawn are left out.
+    std::vector<PartGeometry> posedGeometry(const Pose &pose, const QVector<QByteArray> &ids = {}) const;
     // How many parts of parts() never move: those before the posed ones.
     qsizetype stillPartCount() const;
     QByteArray svg(const Pose &pose = {}) const;
