@@ -100,6 +100,14 @@ Timeline tenMinutesOfSpeech(double shortest, double longest, double length = 600
     return timeline;
 }
 
+// A CPU clock (CLOCK_PROCESS_CPUTIME_ID: all threads; CLOCK_THREAD_CPUTIME_ID: this one), ms.
+double clockMs(clockid_t clock)
+{
+    timespec t {};
+    clock_gettime(clock, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) / 1e6;
+}
+
 // Export of ten minutes at a speaker's pace (syllables of 0.14-0.30 s, about 4.5 a second).
 // `fast`: syllables of 0.08-0.18 s, about 10 mouth cues a second over the whole ten minutes.
 QJsonObject benchExport(bool fast)
@@ -112,11 +120,7 @@ QJsonObject benchExport(bool fast)
     options.audio = ExportAudio::None; // the figures are the drawing's; the sound adds its own size
 
     // The process's CPU time over the three writes (all threads), a third of it a write.
-    auto cpuMs = [] {
-        timespec t {};
-        clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-        return double(t.tv_sec) * 1e3 + double(t.tv_nsec) / 1e6;
-    };
+    auto cpuMs = [] { return clockMs(CLOCK_PROCESS_CPUTIME_ID); };
     QByteArray smil;
     const double cpuBefore = cpuMs();
     const double smilMs = bench::medianMs([&] { smil = exportSmilSvg(face, style, timeline, shapes, options); }, 3, 0);
@@ -198,14 +202,6 @@ QJsonObject benchExport(bool fast)
     return r;
 }
 
-// The thread's CPU time, ms.
-double threadCpuMs()
-{
-    timespec t {};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) / 1e6;
-}
-
 // Frames rendered for video: the first 20 s at 512x512, in parallel, delivered in order. Then
 // a frame's CPU time on one thread, drawn as video export draws it (the under pass reused,
 // svgface.h: svgPasses()) and plainly (its whole SVG rasterized), over the first 200 frames.
@@ -230,14 +226,14 @@ QJsonObject benchFrames()
         },
         3, 0);
     constexpr int kFrames = 200;
-    const double before = threadCpuMs();
+    const double before = clockMs(CLOCK_THREAD_CPUTIME_ID);
     for (int i = 0; i < kFrames; ++i)
         checksum += renderer.render(i).pixel(256, 256);
-    const double reusedMs = (threadCpuMs() - before) / kFrames;
-    const double plainBefore = threadCpuMs();
+    const double reusedMs = (clockMs(CLOCK_THREAD_CPUTIME_ID) - before) / kFrames;
+    const double plainBefore = clockMs(CLOCK_THREAD_CPUTIME_ID);
     for (int i = 0; i < kFrames; ++i)
         checksum += rasterizeSvg(renderer.svgAt(renderer.frameTime(i)), QSize(512, 512)).pixel(256, 256);
-    const double plainMs = (threadCpuMs() - plainBefore) / kFrames;
+    const double plainMs = (clockMs(CLOCK_THREAD_CPUTIME_ID) - plainBefore) / kFrames;
     QJsonObject r = bench::loadAverage();
     r.insert(QStringLiteral("frames"), options.count);
     r.insert(QStringLiteral("ms"), ms);
@@ -247,14 +243,6 @@ QJsonObject benchFrames()
     r.insert(QStringLiteral("cpuMsPerFramePlain"), plainMs);
     r.insert(QStringLiteral("checksum"), checksum != 0);
     return r;
-}
-
-// The process's CPU time (all threads), ms.
-double processCpuMs()
-{
-    timespec t {};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) / 1e6;
 }
 
 // x264's speed presets on the same 5 s of frames (512x512, the normal style, crf 20): the
@@ -283,11 +271,11 @@ QJsonObject benchMp4Presets()
         options.preset = QLatin1StringView(preset);
         const QString path = dir.filePath(QLatin1StringView(preset) + QStringLiteral(".mp4"));
         QString error;
-        const double before = processCpuMs();
+        const double before = clockMs(CLOCK_PROCESS_CPUTIME_ID);
         const bool ok = writeVideo(
             path, VideoFormat::Mp4, QSize(512, 512), renderer.frameRate(), int(frames.size()),
             [&](int i) { return frames[i]; }, {}, &error, options);
-        const double cpuMs = processCpuMs() - before;
+        const double cpuMs = clockMs(CLOCK_PROCESS_CPUTIME_ID) - before;
         if (!ok)
             return {{QStringLiteral("error"), error}};
         double squared = 0;
