@@ -3,9 +3,11 @@
 #include "anim/timeline.h"
 #include "export/framerenderer.h"
 #include "export/smilexport.h"
+#include "export/videoencoder.h"
 #include "face/averageface.h"
 #include "face/mouthshape.h"
 #include "io/project.h"
+#include "media/mediareader.h"
 #include "render/svgface.h"
 
 #include <QDir>
@@ -98,6 +100,14 @@ Timeline tenMinutesOfSpeech(double shortest, double longest, double length = 600
     return timeline;
 }
 
+// A CPU clock (CLOCK_PROCESS_CPUTIME_ID: all threads; CLOCK_THREAD_CPUTIME_ID: this one), ms.
+double clockMs(clockid_t clock)
+{
+    timespec t {};
+    clock_gettime(clock, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) / 1e6;
+}
+
 // Export of ten minutes at a speaker's pace (syllables of 0.14-0.30 s, about 4.5 a second).
 // `fast`: syllables of 0.08-0.18 s, about 10 mouth cues a second over the whole ten minutes.
 QJsonObject benchExport(bool fast)
@@ -110,11 +120,7 @@ QJsonObject benchExport(bool fast)
     options.audio = ExportAudio::None; // the figures are the drawing's; the sound adds its own size
 
     // The process's CPU time over the three writes (all threads), a third of it a write.
-    auto cpuMs = [] {
-        timespec t {};
-        clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-        return double(t.tv_sec) * 1e3 + double(t.tv_nsec) / 1e6;
-    };
+    auto cpuMs = [] { return clockMs(CLOCK_PROCESS_CPUTIME_ID); };
     QByteArray smil;
     const double cpuBefore = cpuMs();
     const double smilMs = bench::medianMs([&] { smil = exportSmilSvg(face, style, timeline, shapes, options); }, 3, 0);
@@ -196,7 +202,9 @@ QJsonObject benchExport(bool fast)
     return r;
 }
 
-// Frames rendered for video: the first 20 s at 512x512, in parallel, delivered in order.
+// Frames rendered for video: the first 20 s at 512x512, in parallel, delivered in order. Then
+// a frame's CPU time on one thread, drawn as video export draws it (the under pass reused,
+// svgface.h: svgPasses()) and plainly (its whole SVG rasterized), over the first 200 frames.
 QJsonObject benchFrames()
 {
     const FaceModel face = averageFace(QRectF(100, 100, 300, 360), QSize(512, 512));
@@ -217,12 +225,85 @@ QJsonObject benchFrames()
                 options);
         },
         3, 0);
-    QJsonObject r;
+    constexpr int kFrames = 200;
+    const double before = clockMs(CLOCK_THREAD_CPUTIME_ID);
+    for (int i = 0; i < kFrames; ++i)
+        checksum += renderer.render(i).pixel(256, 256);
+    const double reusedMs = (clockMs(CLOCK_THREAD_CPUTIME_ID) - before) / kFrames;
+    const double plainBefore = clockMs(CLOCK_THREAD_CPUTIME_ID);
+    for (int i = 0; i < kFrames; ++i)
+        checksum += rasterizeSvg(renderer.svgAt(renderer.frameTime(i)), QSize(512, 512)).pixel(256, 256);
+    const double plainMs = (clockMs(CLOCK_THREAD_CPUTIME_ID) - plainBefore) / kFrames;
+    QJsonObject r = bench::loadAverage();
     r.insert(QStringLiteral("frames"), options.count);
     r.insert(QStringLiteral("ms"), ms);
     r.insert(QStringLiteral("framesPerSecond"), options.count * 1000.0 / ms);
     r.insert(QStringLiteral("timesRealTime"), options.count / renderer.frameRate() * 1000.0 / ms);
+    r.insert(QStringLiteral("cpuMsPerFrame"), reusedMs);
+    r.insert(QStringLiteral("cpuMsPerFramePlain"), plainMs);
     r.insert(QStringLiteral("checksum"), checksum != 0);
+    return r;
+}
+
+// x264's speed presets on the same 5 s of frames (512x512, the normal style, crf 20): the
+// encoding's CPU time per minute of video, the file's size, and how close the decoded pictures
+// stay to the drawn ones (PSNR over RGB of every 10th frame, and the largest channel difference).
+QJsonObject benchMp4Presets()
+{
+    const FaceModel face = averageFace(QRectF(100, 100, 300, 360), QSize(512, 512));
+    const Timeline timeline = tenMinutesOfSpeech(0.14, 0.30, 60.0);
+    const FrameRenderer renderer(
+        SvgFace(face, Style::preset(QStringLiteral("normal"))), timeline, MouthShapeSet(), QSize(512, 512));
+    FrameRenderOptions frameOptions;
+    frameOptions.count = 125;
+    QVector<QImage> frames;
+    renderFrames(
+        renderer,
+        [&](int, const QImage &image) {
+            frames.append(image.convertToFormat(QImage::Format_RGB32));
+            return true;
+        },
+        frameOptions);
+    QTemporaryDir dir;
+    QJsonObject r = bench::loadAverage();
+    for (const char *preset : {"veryfast", "superfast", "ultrafast"}) {
+        VideoOptions options;
+        options.preset = QLatin1StringView(preset);
+        const QString path = dir.filePath(QLatin1StringView(preset) + QStringLiteral(".mp4"));
+        QString error;
+        const double before = clockMs(CLOCK_PROCESS_CPUTIME_ID);
+        const bool ok = writeVideo(
+            path, VideoFormat::Mp4, QSize(512, 512), renderer.frameRate(), int(frames.size()),
+            [&](int i) { return frames[i]; }, {}, &error, options);
+        const double cpuMs = clockMs(CLOCK_PROCESS_CPUTIME_ID) - before;
+        if (!ok)
+            return {{QStringLiteral("error"), error}};
+        double squared = 0;
+        qint64 samples = 0;
+        int largest = 0;
+        for (int i = 0; i < frames.size(); i += 10) {
+            const std::optional<QImage> decoded = readVideoFrame(path, i, &error);
+            if (!decoded)
+                return {{QStringLiteral("error"), error}};
+            for (int y = 0; y < 512; ++y) {
+                const QRgb *a = reinterpret_cast<const QRgb *>(frames[i].constScanLine(y));
+                const QRgb *b = reinterpret_cast<const QRgb *>(decoded->constScanLine(y));
+                for (int x = 0; x < 512; ++x) {
+                    for (int d : {qRed(a[x]) - qRed(b[x]), qGreen(a[x]) - qGreen(b[x]), qBlue(a[x]) - qBlue(b[x])}) {
+                        squared += d * d;
+                        largest = std::max(largest, std::abs(d));
+                    }
+                    samples += 3;
+                }
+            }
+        }
+        const double seconds = frames.size() / renderer.frameRate();
+        r.insert(QLatin1StringView(preset),
+            QJsonObject {{QStringLiteral("encodeCpuSecondsPerMinute"), cpuMs / 1000.0 * 60.0 / seconds},
+                {QStringLiteral("bytesPerMinute"), QFileInfo(path).size() * 60.0 / seconds},
+                {QStringLiteral("psnrDb"), 10 * std::log10(255.0 * 255.0 / (squared / double(samples)))},
+                {QStringLiteral("largestDifference"), largest}});
+    }
     return r;
 }
 
@@ -288,3 +369,4 @@ TOONFACE_BENCHMARK("export.videoFromProject", benchVideoFromProject);
 TOONFACE_BENCHMARK("export.tenMinutes", [] { return benchExport(false); });
 TOONFACE_BENCHMARK("export.tenMinutesFast", [] { return benchExport(true); });
 TOONFACE_BENCHMARK("export.frames512", benchFrames);
+TOONFACE_BENCHMARK("export.mp4Presets", benchMp4Presets);

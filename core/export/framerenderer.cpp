@@ -3,6 +3,8 @@
 #include "anim/timeline.h"
 
 #include <QFuture>
+#include <QMutex>
+#include <QMutexLocker>
 #include <QPainter>
 #include <QThread>
 #include <QtConcurrent/QtConcurrentMap>
@@ -11,6 +13,41 @@
 #include <numeric>
 
 namespace toonface {
+
+// Rasters of the under pass by its text. Threads render neighbouring frames, which mostly share
+// it; a few kept cover a batch's threads and a head that turns back and forth. Each is a frame
+// of pixels (1 MB at 512x512).
+class FrameRenderer::UnderPasses
+{
+public:
+    QImage raster(const QByteArray &svg, QSize size, const QColor &background)
+    {
+        {
+            const QMutexLocker lock(&m_mutex);
+            for (const Entry &e : m_entries) {
+                if (e.svg == svg)
+                    return e.image;
+            }
+        }
+        // Rasterized outside the lock, so threads missing at once each draw their own.
+        QImage image = rasterizeSvg(svg, size, background);
+        const QMutexLocker lock(&m_mutex);
+        if (m_entries.size() == kKept)
+            m_entries.removeFirst();
+        m_entries.append({svg, image});
+        return image;
+    }
+
+private:
+    static constexpr qsizetype kKept = 4;
+    struct Entry
+    {
+        QByteArray svg;
+        QImage image;
+    };
+    QMutex m_mutex;
+    QVector<Entry> m_entries;
+};
 
 FrameRenderer::FrameRenderer(const SvgFace &face, const Timeline &timeline, const MouthShapeSet &shapes, QSize size,
     QColor background, const QImage &backdrop)
@@ -21,6 +58,7 @@ FrameRenderer::FrameRenderer(const SvgFace &face, const Timeline &timeline, cons
     , m_backdrop(backdrop)
     , m_frameRate(timeline.frameRate() > 0 ? timeline.frameRate() : 25.0)
     , m_frameCount(std::max(1, timeline.frameCount()))
+    , m_under(std::make_shared<UnderPasses>())
 { }
 
 QByteArray FrameRenderer::svgAt(double t) const
@@ -30,11 +68,17 @@ QByteArray FrameRenderer::svgAt(double t) const
 
 QImage FrameRenderer::renderAt(double t) const
 {
+    // Over a backdrop the drawing is rasterized on transparency, then laid on it.
+    const QColor background = m_backdrop.isNull() ? m_background : QColor(Qt::transparent);
+    const SvgFace::Passes passes = m_face.svgPasses(m_evaluator.evaluate(t));
+    QImage drawing = m_under->raster(passes.under, m_size, background);
+    if (drawing.isNull() || !drawSvg(passes.over, &drawing))
+        return rasterizeSvg(svgAt(t), m_size, background); // as it was, whatever that gives
     if (m_backdrop.isNull())
-        return rasterizeSvg(svgAt(t), m_size, m_background);
+        return drawing;
     QImage image = m_backdrop.convertToFormat(QImage::Format_ARGB32_Premultiplied);
     QPainter painter(&image);
-    painter.drawImage(0, 0, rasterizeSvg(svgAt(t), m_size, Qt::transparent));
+    painter.drawImage(0, 0, drawing);
     painter.end();
     return image;
 }

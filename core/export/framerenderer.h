@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 
 namespace toonface {
 
@@ -20,8 +21,11 @@ class Timeline;
 // i / frameRate(), drawn by SvgFace::svg() (extra layers included) and rasterized by
 // QSvgRenderer (rasterizeSvg(): aspect kept, centred, `background` inside the drawing; a
 // transparent background leaves alpha 0 around the face) over `backdrop` when one is given (a
-// picture of `size`, such as backgroundPicture()).
-// Immutable after construction; render() may run on several threads at once.
+// picture of `size`, such as backgroundPicture()). A frame is drawn in two passes
+// (SvgFace::svgPasses()) whose under pass, the same for most frames, is rasterized once and
+// reused: the pixels are those of rasterizeSvg(svgAt(t)).
+// Immutable after construction but for that reuse, which copies share; render() may run on
+// several threads at once.
 class FrameRenderer
 {
 public:
@@ -42,6 +46,8 @@ public:
     const TimelineEvaluator &evaluator() const { return m_evaluator; }
 
 private:
+    class UnderPasses; // the last under passes rasterized, shared by the threads
+
     SvgFace m_face;
     TimelineEvaluator m_evaluator;
     QSize m_size;
@@ -49,6 +55,7 @@ private:
     QImage m_backdrop;
     double m_frameRate;
     int m_frameCount;
+    std::shared_ptr<UnderPasses> m_under;
 };
 
 struct FrameRenderOptions

@@ -67,6 +67,8 @@ Sampler::Sampler(const SvgFace &svg, const TimelineEvaluator &evaluator, const Q
     , m_still(svg.stillPartCount())
     , m_attribute(channels.size(), -1)
 {
+    for (const FacePart &p : parts)
+        m_ids.append(p.id.toLatin1());
     const std::vector<SvgFace::PartGeometry> posed = svg.posedGeometry(evaluator.evaluate(0));
     m_posed = qsizetype(posed.size());
     for (qsizetype i = 0; i < channels.size(); ++i) {
@@ -84,16 +86,22 @@ Sampler::Sampler(const SvgFace &svg, const TimelineEvaluator &evaluator, const Q
 
 bool Sampler::sample(double t, const QVector<int> &which, double *out) const
 {
+    if (m_still + m_posed != m_parts.size())
+        return false;
     const Pose pose = m_evaluator.evaluate(t);
-    bool needParts = false, needHead = false;
-    for (int c : which)
-        (m_channels[c].part < 0 ? needHead : needParts) = true;
-    std::vector<SvgFace::PartGeometry> posed;
-    if (needParts) {
-        posed = m_svg.posedGeometry(pose);
-        if (qsizetype(posed.size()) != m_posed || m_still + m_posed != m_parts.size())
-            return false;
+    bool needHead = false;
+    // The moving parts these channels read: only they (and those drawn with them) are drawn.
+    QVector<QByteArray> ids;
+    for (int c : which) {
+        const int part = m_channels[c].part;
+        if (part < 0)
+            needHead = true;
+        else if (part >= m_still && !ids.contains(m_ids[part]))
+            ids.append(m_ids[part]);
     }
+    std::vector<SvgFace::PartGeometry> posed;
+    if (!ids.isEmpty())
+        posed = m_svg.posedGeometry(pose, ids);
     QVector<double> head;
     if (needHead && !headNumbers(m_svg, pose.head, &head))
         return false;
@@ -103,12 +111,14 @@ bool Sampler::sample(double t, const QVector<int> &which, double *out) const
             if (!readChannel(c, m_parts, head, out))
                 return false;
         } else {
+            const QByteArray &id = m_ids[c.part];
+            const auto part = std::find_if(posed.cbegin(), posed.cend(),
+                [&](const SvgFace::PartGeometry &p) { return id == QByteArrayView(p.id); });
             const int a = m_attribute[i];
-            const SvgFace::PartGeometry &part = posed[size_t(c.part - m_still)];
-            // The same attribute as at time 0, or the structure changed.
-            if (a < 0 || size_t(a) >= part.attributes.size()
-                || c.attribute != QLatin1StringView(part.attributes[size_t(a)].first)
-                || !readChannelText(c, part.attributes[size_t(a)].second, out))
+            // The same part and attribute as at time 0, or the structure changed.
+            if (part == posed.cend() || a < 0 || size_t(a) >= part->attributes.size()
+                || c.attribute != QLatin1StringView(part->attributes[size_t(a)].first)
+                || !readChannelText(c, part->attributes[size_t(a)].second, out))
                 return false;
         }
         out += c.size;

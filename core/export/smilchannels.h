@@ -67,6 +67,7 @@ private:
     const QVector<FacePart> &m_parts;
     qsizetype m_still; // parts that never move: read from m_parts
     qsizetype m_posed; // parts that move: read from SvgFace::posedGeometry()
+    QVector<QByteArray> m_ids; // of m_parts
     // Per channel of a moving part, the index of its attribute in the part's posedGeometry()
     // attributes (-1 for the head and the still parts).
     QVector<int> m_attribute;

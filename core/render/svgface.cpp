@@ -15,12 +15,14 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QHash>
 #include <QPainter>
 #include <QSvgRenderer>
 #include <QXmlStreamReader>
 #include <QXmlStreamWriter>
 
 #include <algorithm>
+#include <bitset>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -528,9 +530,16 @@ SvgFaceGeometry buildGeometry(const FaceModel &face, const Style &style)
     return g;
 }
 
-// The parts in drawing order; only those that depend on the pose unless `withStatic`.
+// What makes the parts that depend on the pose, in drawing order: each builder makes one or
+// more parts (the mouth five, an eye up to six). A set of them builds only some parts.
+enum class Builder { Eyebrows, Jaw, Beard, Cues, AgeLines, Mouth, Moustache, LeftEye, RightEye, Glasses, Count };
+using Builders = std::bitset<size_t(Builder::Count)>;
+
+// The parts in drawing order; only those that depend on the pose unless `withStatic`, and of
+// those only the ones `only` builds when it is given. `builders`, when given, receives each
+// part's builder (-1 for the still parts).
 std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, const Style &style, const Pose &pose,
-    bool eyeCovers, bool withStatic = true)
+    bool eyeCovers, bool withStatic = true, const Builders *only = nullptr, std::vector<int> *builders = nullptr)
 {
     Points posed = posedPoints(face, pose);
     applyStyleRules(posed, g, style);
@@ -544,25 +553,57 @@ std::vector<Part> buildParts(const SvgFaceGeometry &g, const FaceModel &face, co
     parts.reserve(g.staticParts.size() + 24);
     if (withStatic)
         parts = g.staticParts;
-    if (drawn(g, "eyebrows"))
-        makeEyebrows(P, style, g.es0, &parts);
-    if (drawn(g, "jaw"))
-        parts.push_back(makeJaw(P, g));
-    if (look.beard)
-        parts.push_back(makeBeard(P, g.es0));
-    else if (look.goatee)
-        parts.push_back(makeGoatee(P, g.es0));
-    makeExpressionCues(P, Pt {g.neutral}, Pt {g.rest}, g.es0, &parts);
-    if (look.age == AgeGroup::Elderly)
-        makeAgeLines(P, g.es0, &parts);
-    makeMouth(P, &parts);
-    if (look.moustache)
-        parts.push_back(makeMoustache(P, g.es0));
-    makeEye(P, g, true, eyeCovers, &parts);
-    makeEye(P, g, false, eyeCovers, &parts);
-    if (look.glasses != GlassesShape::None)
-        parts.push_back(makeGlasses(P, look.glasses, look.lens, g.es0));
-    std::erase_if(parts, [&](const Part &p) { return !drawn(g, p.styleKey); });
+    std::vector<int> made(parts.size(), -1);
+    auto build = [&](Builder b, const auto &make) {
+        if (only && !only->test(size_t(b)))
+            return;
+        make();
+        made.resize(parts.size(), int(b));
+    };
+    build(Builder::Eyebrows, [&] {
+        if (drawn(g, "eyebrows"))
+            makeEyebrows(P, style, g.es0, &parts);
+    });
+    build(Builder::Jaw, [&] {
+        if (drawn(g, "jaw"))
+            parts.push_back(makeJaw(P, g));
+    });
+    build(Builder::Beard, [&] {
+        if (look.beard)
+            parts.push_back(makeBeard(P, g.es0));
+        else if (look.goatee)
+            parts.push_back(makeGoatee(P, g.es0));
+    });
+    build(Builder::Cues, [&] { makeExpressionCues(P, Pt {g.neutral}, Pt {g.rest}, g.es0, &parts); });
+    build(Builder::AgeLines, [&] {
+        if (look.age == AgeGroup::Elderly)
+            makeAgeLines(P, g.es0, &parts);
+    });
+    build(Builder::Mouth, [&] { makeMouth(P, &parts); });
+    build(Builder::Moustache, [&] {
+        if (look.moustache)
+            parts.push_back(makeMoustache(P, g.es0));
+    });
+    build(Builder::LeftEye, [&] { makeEye(P, g, true, eyeCovers, &parts); });
+    build(Builder::RightEye, [&] { makeEye(P, g, false, eyeCovers, &parts); });
+    build(Builder::Glasses, [&] {
+        if (look.glasses != GlassesShape::None)
+            parts.push_back(makeGlasses(P, look.glasses, look.lens, g.es0));
+    });
+    size_t kept = 0;
+    for (size_t i = 0; i < parts.size(); ++i) {
+        if (!drawn(g, parts[i].styleKey))
+            continue;
+        if (kept != i) {
+            parts[kept] = std::move(parts[i]);
+            made[kept] = made[i];
+        }
+        ++kept;
+    }
+    parts.resize(kept);
+    made.resize(kept);
+    if (builders)
+        *builders = std::move(made);
     return parts;
 }
 
@@ -628,6 +669,8 @@ struct SvgFace::Geometry
     SvgFaceGeometry g;
     QVector<FacePart> staticParts; // g.staticParts that are visible, for parts()
     Style drawn; // the style as drawn for the face's age (agestyle.h); style() stays the one given
+    // The builder of each posed part's id, with and without the eye covers, for posedGeometry().
+    QHash<QByteArray, int> builderOf;
 };
 
 SvgFace::SvgFace(const FaceModel &face, const Style &style)
@@ -640,6 +683,13 @@ SvgFace::SvgFace(const FaceModel &face, const Style &style)
     for (const Part &p : geometry->g.staticParts) {
         if (componentStyle(geometry->drawn.components, p.styleKey).visible)
             geometry->staticParts.append(facePart(p, geometry->g));
+    }
+    for (const bool covers : {true, false}) {
+        std::vector<int> builders;
+        const std::vector<Part> posed
+            = buildParts(geometry->g, m_face, geometry->drawn, Pose {}, covers, false, nullptr, &builders);
+        for (size_t i = 0; i < posed.size(); ++i)
+            geometry->builderOf.insert(QByteArray(posed[i].id), builders[i]);
     }
     m_geometry = std::move(geometry);
 }
@@ -683,9 +733,20 @@ QVector<FacePart> SvgFace::parts(const Pose &pose) const
     return out;
 }
 
-std::vector<SvgFace::PartGeometry> SvgFace::posedGeometry(const Pose &pose) const
+std::vector<SvgFace::PartGeometry> SvgFace::posedGeometry(const Pose &pose, const QVector<QByteArray> &ids) const
 {
-    std::vector<Part> posed = buildParts(m_geometry->g, m_face, m_geometry->drawn, pose, m_eyeCovers, false);
+    // Only the builders of the parts asked for; every one when a part is not known.
+    Builders only;
+    for (const QByteArray &id : ids) {
+        const auto it = m_geometry->builderOf.constFind(id);
+        if (it == m_geometry->builderOf.constEnd()) {
+            only.set();
+            break;
+        }
+        only.set(size_t(*it));
+    }
+    std::vector<Part> posed = buildParts(
+        m_geometry->g, m_face, m_geometry->drawn, pose, m_eyeCovers, false, ids.isEmpty() ? nullptr : &only);
     std::vector<PartGeometry> out;
     out.reserve(posed.size());
     for (Part &p : posed)
@@ -745,8 +806,19 @@ QString SvgFace::headTransform(const HeadPose &head) const
 
 QByteArray SvgFace::svg(const Pose &pose) const
 {
+    const std::vector<Part> parts = buildParts(m_geometry->g, m_face, m_geometry->drawn, pose, m_eyeCovers);
+    return document(parts, pose, Pass::Whole);
+}
+
+SvgFace::Passes SvgFace::svgPasses(const Pose &pose) const
+{
+    const std::vector<Part> parts = buildParts(m_geometry->g, m_face, m_geometry->drawn, pose, m_eyeCovers);
+    return {document(parts, pose, Pass::Under), document(parts, pose, Pass::Over)};
+}
+
+QByteArray SvgFace::document(const std::vector<Part> &parts, const Pose &pose, Pass pass) const
+{
     const SvgFaceGeometry &g = m_geometry->g;
-    const std::vector<Part> parts = buildParts(g, m_face, m_geometry->drawn, pose, m_eyeCovers);
     const QRectF box = frame();
     QByteArray out;
     out.reserve(12000);
@@ -767,26 +839,34 @@ QByteArray SvgFace::svg(const Pose &pose) const
     out += "\">\n";
 
     // Clip paths reuse the outline they clip by, so animating the outline animates the clip.
-    out += "<defs>";
-    for (const Part &p : parts) {
-        if (p.clipPath && std::strcmp(p.id, "eyeball-left") == 0)
-            out += QByteArray("<clipPath id=\"") + p.clipPath + "\"><use xlink:href=\"#eye-left\"/></clipPath>";
-        else if (p.clipPath && std::strcmp(p.id, "eyeball-right") == 0)
-            out += QByteArray("<clipPath id=\"") + p.clipPath + "\"><use xlink:href=\"#eye-right\"/></clipPath>";
+    // The eyes are in the dynamic layer: the under pass has nothing to clip.
+    if (pass != Pass::Under) {
+        out += "<defs>";
+        for (const Part &p : parts) {
+            if (p.clipPath && std::strcmp(p.id, "eyeball-left") == 0)
+                out += QByteArray("<clipPath id=\"") + p.clipPath + "\"><use xlink:href=\"#eye-left\"/></clipPath>";
+            else if (p.clipPath && std::strcmp(p.id, "eyeball-right") == 0)
+                out += QByteArray("<clipPath id=\"") + p.clipPath + "\"><use xlink:href=\"#eye-right\"/></clipPath>";
+        }
+        out += "</defs>\n";
     }
-    out += "</defs>\n";
 
-    if (!g.bodyParts.empty()) {
-        out += "<g id=\"body\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
-        for (const Part &p : g.bodyParts)
-            writePart(out, p, g);
-        out += "</g>\n";
+    if (pass != Pass::Over) {
+        if (!g.bodyParts.empty()) {
+            out += "<g id=\"body\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+            for (const Part &p : g.bodyParts)
+                writePart(out, p, g);
+            out += "</g>\n";
+        }
+        out += g.behind;
     }
-    out += g.behind;
     out += "<g id=\"head\" transform=\"" + headTransformText(g, pose.head)
         + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
-    out += g.headBehind;
+    if (pass != Pass::Over)
+        out += g.headBehind;
     for (bool dynamic : {false, true}) {
+        if (dynamic ? pass == Pass::Under : pass == Pass::Over)
+            continue;
         out += dynamic ? "<g id=\"dynamic-layer\">\n" : "<g id=\"static-layer\">\n";
         for (const Part &p : parts) {
             if (p.dynamic == dynamic)
@@ -794,17 +874,49 @@ QByteArray SvgFace::svg(const Pose &pose) const
         }
         out += "</g>\n";
     }
-    out += g.headFront;
+    if (pass != Pass::Under)
+        out += g.headFront;
     out += "</g>\n";
-    out += g.front;
-    for (qsizetype i = 0; i < m_layers.size(); ++i) {
-        out += "<g id=\"layer-" + QByteArray::number(i + 1) + "\">";
-        out += m_layers[i];
-        out += "</g>\n";
+    if (pass != Pass::Under) {
+        out += g.front;
+        for (qsizetype i = 0; i < m_layers.size(); ++i) {
+            out += "<g id=\"layer-" + QByteArray::number(i + 1) + "\">";
+            out += m_layers[i];
+            out += "</g>\n";
+        }
     }
     out += "</svg>\n";
     return out;
 }
+
+namespace {
+
+// Where rasterizeSvg() places a drawing of `renderer` on an image of `size`.
+QRectF placement(const QSvgRenderer &renderer, QSize size)
+{
+    QSizeF source = renderer.viewBoxF().size();
+    if (source.isEmpty())
+        source = renderer.defaultSize();
+    if (source.isEmpty())
+        source = size;
+    const QSizeF fitted = source.scaled(QSizeF(size), Qt::KeepAspectRatio);
+    return QRectF(QPointF((size.width() - fitted.width()) / 2.0, (size.height() - fitted.height()) / 2.0), fitted);
+}
+
+void draw(QSvgRenderer &renderer, QImage *image, const QRectF &target, const QColor *background)
+{
+    QPainter painter(image);
+    painter.setRenderHint(QPainter::Antialiasing);
+    if (background)
+        painter.fillRect(target, *background);
+    // As a browser does: nothing outside the viewBox (the shoulders and the user's layers may
+    // reach beyond it), which QSvgRenderer would draw.
+    painter.setClipRect(target);
+    renderer.render(&painter, target);
+    painter.end();
+}
+
+} // namespace
 
 QImage rasterizeSvg(const QByteArray &svg, QSize size, QColor background)
 {
@@ -813,25 +925,21 @@ QImage rasterizeSvg(const QByteArray &svg, QSize size, QColor background)
     QSvgRenderer renderer(svg);
     if (!renderer.isValid())
         return {};
-    QSizeF source = renderer.viewBoxF().size();
-    if (source.isEmpty())
-        source = renderer.defaultSize();
-    if (source.isEmpty())
-        source = size;
-    const QSizeF fitted = source.scaled(QSizeF(size), Qt::KeepAspectRatio);
-    const QRectF target(
-        QPointF((size.width() - fitted.width()) / 2.0, (size.height() - fitted.height()) / 2.0), fitted);
     QImage image(size, QImage::Format_ARGB32_Premultiplied);
     image.fill(Qt::transparent);
-    QPainter painter(&image);
-    painter.setRenderHint(QPainter::Antialiasing);
-    painter.fillRect(target, background);
-    // As a browser does: nothing outside the viewBox (the shoulders and the user's layers may
-    // reach beyond it), which QSvgRenderer would draw.
-    painter.setClipRect(target);
-    renderer.render(&painter, target);
-    painter.end();
+    draw(renderer, &image, placement(renderer, size), &background);
     return image;
+}
+
+bool drawSvg(const QByteArray &svg, QImage *image)
+{
+    if (image->isNull())
+        return false;
+    QSvgRenderer renderer(svg);
+    if (!renderer.isValid())
+        return false;
+    draw(renderer, image, placement(renderer, image->size()), nullptr);
+    return true;
 }
 
 } // namespace toonface

@@ -46,6 +46,10 @@ struct FacePart
 // The style's appearance adds the elements "glasses", "moustache", "beard" and "hat" only when
 // it has them (a bald head has no hair element: the face's outline runs over the skull), and
 // its caricature factor exaggerates the face's own proportions (face/caricature.h).
+namespace svgparts {
+struct Part;
+}
+
 class SvgFace
 {
 public:
@@ -69,10 +73,23 @@ public:
         const char *id;
         std::vector<std::pair<const char *, QByteArray>> attributes;
     };
-    std::vector<PartGeometry> posedGeometry(const Pose &pose) const;
+    // With `ids`, only the parts made together with those (the mouth's five, an eye's parts):
+    // sampling one group of channels skips drawing the others. Parts not drawn are left out.
+    std::vector<PartGeometry> posedGeometry(const Pose &pose, const QVector<QByteArray> &ids = {}) const;
     // How many parts of parts() never move: those before the posed ones.
     qsizetype stillPartCount() const;
     QByteArray svg(const Pose &pose = {}) const;
+    // svg(pose) as two documents that, drawn one over the other (rasterizeSvg() of `under`,
+    // then drawSvg() of `over` on it), give its pixels: `under` holds what lies beneath the
+    // dynamic layer (the body, the still layers behind, the head's static layer, in the head's
+    // transform), `over` the rest, both with svg()'s <svg> element, `over` with its <defs>.
+    // `under` changes only when the head or a brow moves, so video export rasterizes it once
+    // for many frames; its hair and hat outlines are the costliest strokes of a frame.
+    struct Passes
+    {
+        QByteArray under, over;
+    };
+    Passes svgPasses(const Pose &pose) const;
     // The transform attribute of <g id="head">: the head motion about the face centre, always
     // of the form "translate(x,y) rotate(a) scale(s) translate(-cx,-cy)".
     QString headTransform(const HeadPose &head) const;
@@ -92,6 +109,8 @@ public:
 
 private:
     struct Geometry; // what does not depend on the pose, computed once
+    enum class Pass { Whole, Under, Over }; // which elements a document holds (svgPasses())
+    QByteArray document(const std::vector<svgparts::Part> &parts, const Pose &pose, Pass pass) const;
 
     FaceModel m_face;
     Style m_style;
@@ -109,5 +128,8 @@ QRectF headFrame(const FaceModel &face, double aspect = 1.0);
 // Renders SVG content to an image of `size` (aspect kept, centred, transparent outside)
 // through QSvgRenderer. Returns a null image when the SVG does not parse.
 QImage rasterizeSvg(const QByteArray &svg, QSize size, QColor background = Qt::white);
+// Draws SVG content over `image` as rasterizeSvg() would draw it on an image of that size (the
+// same placement and clip, no background). Returns false when the SVG does not parse.
+bool drawSvg(const QByteArray &svg, QImage *image);
 
 } // namespace toonface

@@ -6,6 +6,7 @@
 #include "export/framerenderer.h"
 #include "render/svgface.h"
 
+#include <QPainter>
 #include <QTest>
 #include <QThread>
 
@@ -59,6 +60,67 @@ private Q_SLOTS:
         // The open mouth at the vowel is not the shut one.
         if (frame == 46)
             QVERIFY(image != r.renderAt(test::silenceTime()));
+    }
+
+    // Frames drawn in parallel, their under pass reused between them (svgface.h: svgPasses()),
+    // are each the plain rasterization of their SVG, pixel for pixel: through the head's shake
+    // and nod (the under pass moves), the emotions (the brows in it move) and the still
+    // stretches between, on a background colour and over a backdrop, with the hat, glasses and
+    // a layer in each place.
+    void reusedLayersGiveThePlainFrame_data()
+    {
+        QTest::addColumn<bool>("backdrop");
+        QTest::newRow("background colour") << false;
+        QTest::newRow("backdrop") << true;
+    }
+
+    void reusedLayersGiveThePlainFrame()
+    {
+        QFETCH(bool, backdrop);
+        Style style = Style::preset(QStringLiteral("normal"));
+        style.appearance.hat = true;
+        style.appearance.glasses = GlassesShape::Round;
+        const QByteArray square = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 10 10\">"
+                                  "<rect width=\"10\" height=\"10\" fill=\"#00ff00\"/></svg>";
+        for (const bool front : {false, true}) {
+            for (const bool follows : {false, true}) {
+                StyleLayer l;
+                l.svg = square;
+                l.offset = QPointF(front ? 1.2 : -1.2, follows ? -0.8 : 1.0);
+                l.width = 0.5;
+                l.front = front;
+                l.followsHead = follows;
+                style.layers.append(l);
+            }
+        }
+        const QSize size(120, 100);
+        QImage picture(size, QImage::Format_RGB32);
+        for (int y = 0; y < size.height(); ++y) {
+            for (int x = 0; x < size.width(); ++x)
+                picture.setPixel(x, y, qRgb(x * 2, y * 2, 90));
+        }
+        const FrameRenderer r(
+            SvgFace(m_face, style), m_timeline, m_shapes, size, QColor(250, 240, 200), backdrop ? picture : QImage());
+        int checked = 0;
+        const bool finished = renderFrames(r, [&](int frame, const QImage &image) {
+            QImage plain = rasterizeSvg(
+                r.svgAt(r.frameTime(frame)), size, backdrop ? QColor(Qt::transparent) : QColor(250, 240, 200));
+            if (backdrop) {
+                QImage under = picture.convertToFormat(QImage::Format_ARGB32_Premultiplied);
+                QPainter painter(&under);
+                painter.drawImage(0, 0, plain);
+                painter.end();
+                plain = under;
+            }
+            if (image != plain) {
+                qWarning("frame %d differs from its plain rasterization", frame);
+                return false;
+            }
+            ++checked;
+            return true;
+        });
+        QVERIFY(finished);
+        QCOMPARE(checked, r.frameCount());
     }
 
     void everyFrameArrivesInOrder_data()

@@ -22,7 +22,9 @@
 #include <QTransform>
 #include <QXmlStreamReader>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <thread>
 
 using namespace toonface;
@@ -429,6 +431,13 @@ private Q_SLOTS:
                 QCOMPARE(qsizetype(g.attributes.size()), parts[i].geometry.size());
                 for (const auto &[name, value] : g.attributes)
                     QCOMPARE(QString::fromLatin1(value), parts[i].geometry.value(QString::fromLatin1(name)));
+                // Asked for alone, a part comes the same, with fewer others (those drawn with it).
+                const std::vector<SvgFace::PartGeometry> alone = svgFace.posedGeometry(p, {g.id});
+                const auto it = std::find_if(alone.cbegin(), alone.cend(),
+                    [&](const SvgFace::PartGeometry &a) { return std::strcmp(a.id, g.id) == 0; });
+                QVERIFY(it != alone.cend());
+                QVERIFY(it->attributes == g.attributes);
+                QVERIFY(alone.size() < posed.size());
             }
         }
     }
