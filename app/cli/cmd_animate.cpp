@@ -316,7 +316,7 @@ const CommandRegistrar registrar({QStringLiteral("animate"),
         "APNG, WebP or PNG frames).")),
     QStringLiteral(
         "animate IMAGE|PROJECT|CLIP [--audio A --script S | --say TEXT | --video CLIP] [--method "
-        "auto|classic|landmarks] [--neutral-frame N] [--snap-mouth] [--emotion NAME] [--no-blink] [--fps N] "
+        "auto|classic|landmarks] [--neutral-frame N|auto] [--snap-mouth] [--emotion NAME] [--no-blink] [--fps N] "
         "[--style NAME] [--frame head|photo] [--background COLOUR|transparent|PHOTO] [--preset NAME] [--start S] "
         "[--duration S] [--project OUT.toonface] -o OUT.svg|OUT.html|OUT.mp4|OUT.gif|OUT.webm|OUT.mov|OUT.apng|"
         "OUT.webp|DIR/"),

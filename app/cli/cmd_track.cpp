@@ -38,7 +38,8 @@ int runTrack(const Command &self, const QStringList &args)
 const CommandRegistrar registrar({QStringLiteral("track"),
     QString::fromUtf8(QT_TRANSLATE_NOOP("toonface::cli::Cli",
         "Track the face of a video frame by frame and write its motion as JSON (toonface.track/1).")),
-    QStringLiteral("track VIDEO [--method auto|classic|landmarks] [--neutral-frame N] [--snap-mouth] [-o TRACK.json]"),
+    QStringLiteral(
+        "track VIDEO [--method auto|classic|landmarks] [--neutral-frame N|auto] [--snap-mouth] [-o TRACK.json]"),
     runTrack});
 
 } // namespace

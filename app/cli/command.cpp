@@ -100,6 +100,11 @@ void warn(const QString &message)
     QTextStream(stderr) << "toonface-cli: warning: " << printable(message) << Qt::endl;
 }
 
+void note(const QString &message)
+{
+    QTextStream(stderr) << "toonface-cli: " << printable(message) << Qt::endl;
+}
+
 void progress(const QString &message)
 {
     if (isatty(fileno(stderr)) || qEnvironmentVariableIsSet("TOONFACE_PROGRESS"))

@@ -86,6 +86,9 @@ constexpr int ExitInterrupted = 130;
 int fail(int code, const QString &message);
 // Prints "toonface-cli: warning: <message>" on stderr: the job goes on, differently from what was asked.
 void warn(const QString &message);
+// Prints "toonface-cli: <message>" on stderr: something the job chose for the user that they may
+// want to choose otherwise (always printed, unlike progress lines).
+void note(const QString &message);
 // Prints a progress line on stderr (only when stderr is a terminal or --progress was given).
 void progress(const QString &message);
 // A long job's progress as lines "<stage>: N %" (progress()): one when a stage begins, then as

@@ -2,6 +2,7 @@
 
 #include "cli/command.h"
 #include "media/mediareader.h"
+#include "track/neutralchoice.h"
 
 #include <QFileInfo>
 
@@ -11,17 +12,39 @@ int VideoTrackOptions::read(const QCommandLineParser &parser, TrackVideoOptions 
 {
     if (!detectionMethodFromName(parser.value(method), &out->tracker.method))
         return fail(ExitUsage, Cli::tr("unknown --method '%1' (auto, classic or landmarks)").arg(parser.value(method)));
-    bool ok = false;
-    out->neutralFrame = parser.value(neutralFrame).toInt(&ok);
-    if (!ok || out->neutralFrame < 0)
-        return fail(ExitUsage,
-            Cli::tr("--neutral-frame takes a frame number from 0, not '%1'").arg(parser.value(neutralFrame)));
+    if (parser.value(neutralFrame) == QLatin1StringView("auto")) {
+        out->neutralFrame = kChooseNeutralFrame;
+    } else {
+        bool ok = false;
+        out->neutralFrame = parser.value(neutralFrame).toInt(&ok);
+        if (!ok || out->neutralFrame < 0)
+            return fail(ExitUsage,
+                Cli::tr("--neutral-frame takes a frame number from 0 or auto, not '%1'")
+                    .arg(parser.value(neutralFrame)));
+    }
     out->tracker.snapMouth = parser.isSet(snapMouth);
     return ExitOk;
 }
 
-int trackClip(const QString &path, const TrackVideoOptions &options, TrackResult *out)
+int trackClip(const QString &path, const TrackVideoOptions &chosen, TrackResult *out)
 {
+    TrackVideoOptions options = chosen;
+    if (options.neutralFrame == kChooseNeutralFrame) {
+        progress(Cli::tr("looking for a frame at rest in %1").arg(QFileInfo(path).fileName()));
+        const NeutralChoice choice = chooseNeutralFrame(path, interruption());
+        if (interruption()->load())
+            return fail(ExitInterrupted, Cli::tr("%1: interrupted; nothing was written").arg(path));
+        options.neutralFrame = choice.found ? choice.frame : 0;
+        if (choice.found)
+            note(choice.silent
+                    ? Cli::tr("%1: neutral frame %2 (mouth closed, eyes open, in a silence; --neutral-frame N names "
+                              "another)")
+                          .arg(path)
+                          .arg(choice.frame)
+                    : Cli::tr("%1: neutral frame %2 (mouth closed, eyes open; --neutral-frame N names another)")
+                          .arg(path)
+                          .arg(choice.frame));
+    }
     int lastPercent = -1;
     *out = trackVideo(path, options, [&](int done, int total) {
         const int percent = total > 0 ? std::min(100, done * 100 / total) : -1;

@@ -5556,10 +5556,6 @@ The points are unchanged.</source>
         <translation>无法创建文件夹 %1</translation>
     </message>
     <message>
-        <source>--neutral-frame takes a frame number from 0, not &apos;%1&apos;</source>
-        <translation>--neutral-frame 需要从 0 开始的帧编号，而不是“%1”</translation>
-    </message>
-    <message>
         <source>tracking %1: %2 %</source>
         <translation>正在跟踪 %1：%2 %</translation>
     </message>
@@ -5746,6 +5742,22 @@ Every job of the editor, with no display.</source>
     <message>
         <source>copying the sound</source>
         <translation>正在复制声音</translation>
+    </message>
+    <message>
+        <source>--neutral-frame takes a frame number from 0 or auto, not &apos;%1&apos;</source>
+        <translation>--neutral-frame 需要从 0 起算的帧编号或 auto，而不是“%1”</translation>
+    </message>
+    <message>
+        <source>looking for a frame at rest in %1</source>
+        <translation>正在 %1 中寻找静止的一帧</translation>
+    </message>
+    <message>
+        <source>%1: neutral frame %2 (mouth closed, eyes open, in a silence; --neutral-frame N names another)</source>
+        <translation>%1：中性帧为第 %2 帧（嘴闭着、眼睁开、无人说话；用 --neutral-frame N 指定其他帧）</translation>
+    </message>
+    <message>
+        <source>%1: neutral frame %2 (mouth closed, eyes open; --neutral-frame N names another)</source>
+        <translation>%1：中性帧为第 %2 帧（嘴闭着、眼睁开；用 --neutral-frame N 指定其他帧）</translation>
     </message>
 </context>
 </TS>

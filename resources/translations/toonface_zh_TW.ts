@@ -5556,10 +5556,6 @@ The points are unchanged.</source>
         <translation>無法建立資料夾 %1</translation>
     </message>
     <message>
-        <source>--neutral-frame takes a frame number from 0, not &apos;%1&apos;</source>
-        <translation>--neutral-frame 需要從 0 起算的影格編號，而不是「%1」</translation>
-    </message>
-    <message>
         <source>tracking %1: %2 %</source>
         <translation>正在追蹤 %1：%2 %</translation>
     </message>
@@ -5746,6 +5742,22 @@ Every job of the editor, with no display.</source>
     <message>
         <source>copying the sound</source>
         <translation>正在複製聲音</translation>
+    </message>
+    <message>
+        <source>--neutral-frame takes a frame number from 0 or auto, not &apos;%1&apos;</source>
+        <translation>--neutral-frame 需要從 0 起算的影格編號或 auto，而不是「%1」</translation>
+    </message>
+    <message>
+        <source>looking for a frame at rest in %1</source>
+        <translation>正在 %1 中尋找靜止的影格</translation>
+    </message>
+    <message>
+        <source>%1: neutral frame %2 (mouth closed, eyes open, in a silence; --neutral-frame N names another)</source>
+        <translation>%1：中性影格為第 %2 個影格（嘴閉著、眼睜開、無人說話；以 --neutral-frame N 指定其他影格）</translation>
+    </message>
+    <message>
+        <source>%1: neutral frame %2 (mouth closed, eyes open; --neutral-frame N names another)</source>
+        <translation>%1：中性影格為第 %2 個影格（嘴閉著、眼睜開；以 --neutral-frame N 指定其他影格）</translation>
     </message>
 </context>
 </TS>

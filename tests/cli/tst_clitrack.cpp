@@ -2,6 +2,7 @@
 #include "speech/audio.h"
 #include "talkingface.h"
 #include "testmain.h"
+#include "track/neutralchoice.h"
 
 #include <QDir>
 #include <QFile>
@@ -81,6 +82,52 @@ private Q_SLOTS:
         const QString error = writeClip(m_drawn, 25,
             [&](int i) { return talking.frame(i >= 8 && i < 14 ? 1.0 : 0.0, i == 18 || i == 19 ? 0.0 : 1.0); });
         QVERIFY2(error.isEmpty(), qPrintable(error));
+        // A clip that opens mid-word: the lips apart for its first 6 frames.
+        m_openingMidWord = m_dir.filePath(QStringLiteral("midword.mp4"));
+        const QString midWordError
+            = writeClip(m_openingMidWord, 25, [&](int i) { return talking.frame(i < 6 ? 1.0 : 0.0, 1.0); });
+        QVERIFY2(midWordError.isEmpty(), qPrintable(midWordError));
+    }
+
+    // By default the neutral frame is the one the editor's Import Video chooses, and stderr names
+    // it; --neutral-frame N names another, and nothing is said of a frame the user named.
+    void trackChoosesTheNeutralFrame_data()
+    {
+        QTest::addColumn<QString>("clip");
+        QTest::addColumn<bool>("silent");
+        QTest::newRow("opening mid-word") << m_openingMidWord << false;
+        QTest::newRow("GRID") << kGrid << true;
+    }
+
+    void trackChoosesTheNeutralFrame()
+    {
+        QFETCH(QString, clip);
+        QFETCH(bool, silent);
+        if (m_openingMidWord.isEmpty())
+            QSKIP("astronaut.png is not installed (package python3-skimage)");
+        if (!QFileInfo::exists(clip))
+            QSKIP("the GRID clips of shared/data/video are absent");
+        const NeutralChoice choice = chooseNeutralFrame(clip);
+        QVERIFY2(choice.found, qPrintable(choice.error));
+        QCOMPARE(choice.silent, silent);
+        if (clip == m_openingMidWord)
+            QVERIFY2(choice.frame >= 6, qPrintable(QString::number(choice.frame))); // not a parted frame
+
+        for (const QStringList &extra :
+            {QStringList {}, QStringList {QStringLiteral("--neutral-frame"), QStringLiteral("auto")}}) {
+            const Run r = cli(QStringList {QStringLiteral("track"), clip} + extra);
+            QVERIFY2(r.code == 0, r.err.constData());
+            QCOMPARE(
+                QJsonDocument::fromJson(r.out).object().value(QStringLiteral("neutralFrame")).toInt(), choice.frame);
+            const QString said = QStringLiteral("toonface-cli: %1: neutral frame %2 (").arg(clip).arg(choice.frame);
+            QVERIFY2(QString::fromUtf8(r.err).contains(said), r.err.constData());
+            QCOMPARE(r.err.contains("in a silence"), silent);
+        }
+
+        const Run named = cli({QStringLiteral("track"), clip, QStringLiteral("--neutral-frame"), QStringLiteral("0")});
+        QVERIFY2(named.code == 0, named.err.constData());
+        QCOMPARE(QJsonDocument::fromJson(named.out).object().value(QStringLiteral("neutralFrame")).toInt(), 0);
+        QVERIFY2(!named.err.contains("neutral frame"), named.err.constData());
     }
 
     void trackWritesTheTrackJson()
@@ -209,6 +256,9 @@ private Q_SLOTS:
         QTest::newRow("negative frame") << QStringList {QStringLiteral("track"), missing,
             QStringLiteral("--neutral-frame"), QStringLiteral("-1")}
                                         << 2 << QStringLiteral("--neutral-frame");
+        QTest::newRow("neutral frame not a number")
+            << QStringList {QStringLiteral("track"), missing, QStringLiteral("--neutral-frame"), QStringLiteral("rest")}
+            << 2 << QStringLiteral("a frame number from 0 or auto, not 'rest'");
         QTest::newRow("method") << QStringList {QStringLiteral("track"), missing, QStringLiteral("--method"),
             QStringLiteral("magic")}
                                 << 2 << QStringLiteral("magic");
@@ -280,6 +330,7 @@ private Q_SLOTS:
 private:
     QTemporaryDir m_dir;
     QString m_drawn;
+    QString m_openingMidWord;
 };
 
 TOONFACE_TEST_GUILESS_MAIN(TestCliTrack)

@@ -2,11 +2,13 @@
 #include "uifixture.h"
 
 #include "document/changestylecommand.h"
+#include "document/companionfile.h"
 #include "document/document.h"
 #include "document/loadedfile.h"
 #include "document/movepointcommand.h"
 #include "io/project.h"
 
+#include <QDir>
 #include <QFile>
 #include <QLineF>
 #include <QSignalSpy>
@@ -472,6 +474,37 @@ private Q_SLOTS:
         QCOMPARE(doc.photo().size(), fixture::kPhotoSize);
         QCOMPARE(doc.displayName(), QStringLiteral("fresh.png"));
         QVERIFY(!doc.isModified());
+    }
+
+    // An export is offered beside the project, else beside its photo; where that folder cannot
+    // be written to (here: a card taken out since the photo was opened) in the user's folder.
+    void exportsAreOfferedWhereTheyCanBeWritten()
+    {
+        QTemporaryDir card, documents;
+        const QString photoPath = card.filePath(QStringLiteral("hopper.png"));
+        QVERIFY(fixture::photo().save(photoPath));
+        Document doc;
+        QString error;
+        QVERIFY2(doc.load(photoPath, &error), qPrintable(error));
+        QCOMPARE(exportFile(doc, QStringLiteral("mp4"), QStringLiteral("animation"), documents.path()),
+            card.filePath(QStringLiteral("hopper.mp4")));
+        QVERIFY(card.remove());
+        QCOMPARE(exportFile(doc, QStringLiteral("mp4"), QStringLiteral("animation"), documents.path()),
+            QDir(documents.path()).filePath(QStringLiteral("hopper.mp4")));
+        QCOMPARE(companionFile(doc, QStringLiteral("speech"), QStringLiteral("wav"), documents.path()),
+            QDir(documents.path()).filePath(QStringLiteral("hopper-speech.wav")));
+
+        // Saved as a project: beside the project.
+        const QString otherPhoto = m_dir.filePath(QStringLiteral("other.png"));
+        QVERIFY(fixture::photo().save(otherPhoto));
+        Document saved;
+        QVERIFY2(saved.load(otherPhoto, &error), qPrintable(error));
+        QVERIFY2(saved.save(m_dir.filePath(QStringLiteral("talk.toonface")), &error), qPrintable(error));
+        QCOMPARE(exportFile(saved, QStringLiteral("epub"), QStringLiteral("book"), documents.path()),
+            m_dir.filePath(QStringLiteral("talk.epub")));
+        // Neither: the untitled name in the user's folder.
+        QCOMPARE(exportFile(Document(), QStringLiteral("mp4"), QStringLiteral("animation"), documents.path()),
+            QDir(documents.path()).filePath(QStringLiteral("animation.mp4")));
     }
 };
 

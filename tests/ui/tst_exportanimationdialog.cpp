@@ -140,6 +140,7 @@ private Q_SLOTS:
         size->setCurrentIndex(size->findData(360));
         QSignalSpy finished(&dialog, &ExportAnimationDialog::finished);
         auto *exportButton = dialog.findChild<QPushButton *>(QStringLiteral("export"));
+        const QRect exportWhere = exportButton->geometry();
         QTest::mouseClick(exportButton, Qt::LeftButton);
         QVERIFY(dialog.isRunning());
         QVERIFY(!exportButton->isEnabled());
@@ -154,6 +155,15 @@ private Q_SLOTS:
             dialog.findChild<QProgressBar *>(QStringLiteral("progress"))->maximum());
         QVERIFY(dialog.findChild<QPushButton *>(QStringLiteral("showInFolder"))->isVisible());
         QCOMPARE(dialog.findChild<QPushButton *>(QStringLiteral("close"))->text(), QStringLiteral("Close"));
+        // Export stays where it was, with Show in Folder shown or hidden again by another format
+        // (once the layout has had the events that lay it out again).
+        QTest::qWait(50);
+        QCOMPARE(exportButton->geometry(), exportWhere);
+        choose(dialog.findChild<QComboBox *>(QStringLiteral("format")), AnimationFormat::HtmlPlayer);
+        QVERIFY(!dialog.findChild<QPushButton *>(QStringLiteral("showInFolder"))->isVisible());
+        QTest::qWait(50);
+        QCOMPARE(exportButton->geometry(), exportWhere);
+        choose(dialog.findChild<QComboBox *>(QStringLiteral("format")), AnimationFormat::Mp4);
 
         QString error;
         const std::optional<MediaInfo> info = probeMedia(mp4, &error);

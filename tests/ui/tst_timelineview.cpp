@@ -622,7 +622,8 @@ private Q_SLOTS:
 
     // Sets a sine of `amplitude` (of full scale) as the project's sound and returns how many
     // pixels of the waveform row are lit in the column at 1.5 s.
-    int waveformHeight(double amplitude, const QTemporaryDir &dir)
+    // Three seconds of a 220 Hz tone at `amplitude` of full scale.
+    static QString toneFile(double amplitude, const QTemporaryDir &dir)
     {
         const QString path = dir.filePath(QStringLiteral("tone%1.wav").arg(amplitude));
         Audio audio;
@@ -632,6 +633,12 @@ private Q_SLOTS:
         QString error;
         if (!writeAudio(path, audio, &error))
             qFatal("%s", qPrintable(error));
+        return path;
+    }
+
+    int waveformHeight(double amplitude, const QTemporaryDir &dir)
+    {
+        const QString path = toneFile(amplitude, dir);
         Animation a = m_doc->animation();
         a.timeline.setAudioClips({AudioClip {path, 0, 3}});
         m_doc->changeAnimation(a, QStringLiteral("sound"));
@@ -641,11 +648,12 @@ private Q_SLOTS:
         return litHeight();
     }
 
-    int litHeight()
+    // The waveform's lit pixels in the column at `time`.
+    int litHeight(double time = 1.5)
     {
         const QImage image = viewport()->grab().toImage();
         const QRect row = m_view->timelineLayout().rowRect(RowKind::Waveform, viewport()->width());
-        const int x = int(m_view->xOf(1.5));
+        const int x = int(m_view->xOf(time));
         int lit = 0;
         for (int y = row.top(); y <= row.bottom(); ++y)
             lit += qGreen(image.pixel(x, y)) > 150 ? 1 : 0;
@@ -671,6 +679,71 @@ private Q_SLOTS:
         QVERIFY2(quiet > rowHeight / 2, qPrintable(QStringLiteral("%1 of %2 px").arg(quiet).arg(rowHeight)));
         QVERIFY2(std::abs(quiet - loud) <= 2, qPrintable(QStringLiteral("%1 vs %2 px").arg(quiet).arg(loud)));
         QVERIFY(m_view->waveformGain() > 15);
+    }
+
+    // A quiet recording beside a loud clip (a video's sound put after a take): each is drawn at its
+    // own loudness, the quiet one not a flat line under the loud one's gain.
+    void eachRecordingIsDrawnAtItsOwnLoudness()
+    {
+        QTemporaryDir dir;
+        Animation a = m_doc->animation();
+        a.timeline.setAudioClips(
+            {AudioClip {toneFile(0.8, dir), 0, 3}, AudioClip {toneFile(std::pow(10.0, -26.5 / 20), dir), 3, 3}});
+        m_doc->changeAnimation(a, QStringLiteral("two sounds"));
+        for (int clip : {0, 1}) {
+            m_view->waveform(clip)->waitForFinished();
+            QVERIFY2(!m_view->waveform(clip)->peaks().isEmpty(), qPrintable(m_view->waveform(clip)->error()));
+        }
+        m_widget->timelineActions().zoomToFit->trigger();
+        QVERIFY(m_view->xOf(4.5) < viewport()->width());
+        const int rowHeight = m_view->timelineLayout().rowRect(RowKind::Waveform, viewport()->width()).height();
+        const int loud = litHeight(1.5), quiet = litHeight(4.5);
+        QVERIFY2(quiet > rowHeight / 2, qPrintable(QStringLiteral("%1 of %2 px").arg(quiet).arg(rowHeight)));
+        QVERIFY2(std::abs(quiet - loud) <= 2, qPrintable(QStringLiteral("%1 vs %2 px").arg(quiet).arg(loud)));
+        QVERIFY(m_view->waveformGain(1) > 15 * m_view->waveformGain(0));
+    }
+
+    // The gain under the Audio row's title: "+1 dB" said, "-0 dB" (a clip drawn all but as it
+    // is) not.
+    void gainIsSaidOnlyWhenItIsOne()
+    {
+        const auto labelInk = [&] {
+            const QImage image = viewport()->grab().toImage();
+            const QRect row = m_view->timelineLayout().rowRect(RowKind::Waveform, viewport()->width());
+            int ink = 0;
+            for (int y = row.top() + row.height() * 7 / 10; y < row.bottom(); ++y)
+                for (int x = 0; x < TimelineLayout::kLabelWidth - 2; ++x)
+                    ink += qGray(image.pixel(x, y)) > 100 ? 1 : 0;
+            return ink;
+        };
+        QTemporaryDir dir;
+        waveformHeight(0.8, dir); // drawn at 0.9 / 0.8: +1 dB
+        QVERIFY(labelInk() > 10);
+        waveformHeight(0.92, dir); // 0.9 / 0.92: -0.2 dB
+        QCOMPARE(labelInk(), 0);
+    }
+
+    // A clip over another: its title strip shows its own name only, not the one beneath it.
+    void titleOfAClipOverAnotherIsReadable()
+    {
+        QTemporaryDir dir;
+        AudioClip under {toneFile(0.8, dir), 0, 3};
+        under.script = QStringLiteral("a long script that runs on under the clip put over it");
+        const AudioClip over {toneFile(0.5, dir), 0.5, 2.5};
+        const auto titleOfOver = [&](const QVector<AudioClip> &clips) {
+            Animation a = m_doc->animation();
+            a.timeline.setAudioClips(clips);
+            m_doc->changeAnimation(a, QStringLiteral("sounds"));
+            m_view->setPixelsPerSecond(300, TimelineLayout::kLabelWidth);
+            const QRect row = m_view->timelineLayout().rowRect(RowKind::Waveform, viewport()->width());
+            // Past the start of its own name, to its end.
+            const QRect strip(int(m_view->xOf(over.start())) + 90, row.top() + 2,
+                int(m_view->xOf(over.end()) - m_view->xOf(over.start())) - 100, 10);
+            return viewport()->grab().toImage().copy(strip);
+        };
+        const QImage alone = titleOfOver({over});
+        const QImage overAnother = titleOfOver({under, over});
+        QCOMPARE(overAnother, alone);
     }
 
     void waveformZoomsVertically()

@@ -1,6 +1,7 @@
 #include "dialogs/bookdialog.h"
 
 #include "dialogs/jobstatus.h"
+#include "document/companionfile.h"
 #include "document/document.h"
 #include "export/animationexport.h"
 #include "media/audiomix.h"
@@ -127,12 +128,8 @@ QAction *BookDialog::createAction(QWidget *window, Document *document)
         base.mouthShapes = animation.mouthShapes;
         base.layerFiles = animation.layerFiles;
         base.audioPath = project.audioPath();
-        const QString from = !document->filePath().isEmpty() ? document->filePath() : project.photoPath;
-        const QFileInfo info(from);
-        base.outputPath = from.isEmpty()
-            ? QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation))
-                  .filePath(QStringLiteral("book.epub"))
-            : info.absoluteDir().filePath(info.completeBaseName() + QStringLiteral(".epub"));
+        base.outputPath = exportFile(*document, QStringLiteral("epub"), QStringLiteral("book"),
+            QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
         BookDialog dialog(base, window);
         dialog.setProjectTrack(project.timeline.audioClips());
         dialog.exec();

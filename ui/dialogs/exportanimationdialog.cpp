@@ -253,6 +253,11 @@ ExportAnimationDialog::ExportAnimationDialog(const ExportRequest &base, QWidget 
     m_show->setObjectName(QStringLiteral("showInFolder"));
     m_show->setIcon(style()->standardIcon(QStyle::SP_DirIcon));
     m_show->setVisible(false);
+    // Its room is kept while it is hidden: Export and Close stay where they are, so a second
+    // click where Export was never lands on Show in Folder (or on nothing).
+    QSizePolicy keepRoom = m_show->sizePolicy();
+    keepRoom.setRetainSizeWhenHidden(true);
+    m_show->setSizePolicy(keepRoom);
     QPushButton *close = m_buttons->addButton(QDialogButtonBox::Close);
     close->setObjectName(QStringLiteral("close"));
 

@@ -12,4 +12,11 @@ class Document;
 // (spoken sound, recorded takes, camera snapshots).
 QString companionFile(const Document &document, const QString &tag, const QString &extension, const QString &fallback);
 
+// Where an export of the document is offered by default: "<project or photo name>.<extension>"
+// (or "<untitledName>.<extension>") in the same folder as companionFile()'s, so a photo opened
+// from a folder the user cannot write to (the system's sample pictures, a read-only card) does
+// not make the export fail. An existing file is not avoided: exporting again replaces it.
+QString exportFile(
+    const Document &document, const QString &extension, const QString &untitledName, const QString &fallback);
+
 } // namespace toonface

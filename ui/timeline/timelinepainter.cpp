@@ -59,6 +59,33 @@ double majorStep(double pps, double fps, double minPixels, bool *frames)
     return 600;
 }
 
+// The gain every recording with a waveform is drawn at, when they share one (to a tenth of a
+// dB); none when they differ or none has a waveform yet.
+std::optional<double> sharedGain(const TimelineScene &s)
+{
+    std::optional<double> shared;
+    for (qsizetype i = 0; i < s.clipPeaks.size(); ++i) {
+        if (!s.clipPeaks[i] || s.clipPeaks[i]->isEmpty())
+            continue;
+        const double gain = s.clipGains.value(i, 1.0);
+        if (shared && std::abs(20 * std::log10(gain / *shared)) > 0.1)
+            return std::nullopt;
+        shared = gain;
+    }
+    return shared;
+}
+
+// A gain that rounds to 0 dB is not said ("-0 dB" over a clip drawn as it is).
+bool gainIsSaid(double gain)
+{
+    return std::abs(20 * std::log10(gain)) >= 0.5;
+}
+
+QString gainText(double gain)
+{
+    return QObject::tr("%1 dB").arg(QString::asprintf("%+.0f", 20 * std::log10(gain)));
+}
+
 void paintLabels(QPainter &p, const TimelineScene &s)
 {
     const TimelineLayout &l = *s.layout;
@@ -79,13 +106,11 @@ void paintLabels(QPainter &p, const TimelineScene &s)
         }
         p.setPen(s.focusRow == r.kind ? kText : kDimText);
         p.drawText(label.adjusted(10, 0, -4, 0), Qt::AlignVCenter | Qt::AlignLeft, rowTitle(r.kind));
-        const bool peaks = std::any_of(
-            s.clipPeaks.cbegin(), s.clipPeaks.cend(), [](const WaveformPeaks *w) { return w && !w->isEmpty(); });
-        if (r.kind == RowKind::Waveform && peaks && std::abs(s.waveformGain - 1) > 0.01) {
+        const std::optional<double> gain = sharedGain(s);
+        if (r.kind == RowKind::Waveform && gain && gainIsSaid(*gain)) {
             // How much the drawing is magnified, so a quiet recording is not taken for a loud one.
             p.setPen(kDimText);
-            p.drawText(label.adjusted(10, 0, -4, -3), Qt::AlignBottom | Qt::AlignLeft,
-                QObject::tr("%1 dB").arg(QString::asprintf("%+.0f", 20 * std::log10(s.waveformGain))));
+            p.drawText(label.adjusted(10, 0, -4, -3), Qt::AlignBottom | Qt::AlignLeft, gainText(*gain));
         }
         p.setPen(kGrid);
         p.drawLine(label.bottomLeft(), label.bottomRight());
@@ -159,12 +184,16 @@ void paintAudioClip(QPainter &p, const TimelineScene &s, int index, const QRect 
 {
     const AudioClip &clip = s.animation.timeline.audioClips()[index];
     const TimelineLayout &l = *s.layout;
+    const double gain = s.clipGains.value(index, 1.0);
     const QRectF box = geometry::spanRect(s, RowKind::Waveform, {clip.start(), clip.end()});
     const bool selected = s.selection && s.selection->contains({ItemKind::Audio, index});
     p.setPen(QPen(selected ? kSelection : kWave.darker(170), selected ? 2 : 1));
     p.setBrush(QColor(kWave.red(), kWave.green(), kWave.blue(), 28));
     p.drawRoundedRect(box.adjusted(0.5, 0.5, -0.5, -0.5), 3, 3);
     const QRectF title(box.left(), box.top(), box.width(), geometry::kAudioTitle);
+    // Opaque under its tint: a clip over another (a video's sound put on a recording) hides the
+    // title beneath instead of mixing the two names into one unreadable line.
+    p.fillRect(title.adjusted(1, 1, -1, 0), kBackground);
     p.fillRect(title.adjusted(1, 1, -1, 0), QColor(kWave.red(), kWave.green(), kWave.blue(), selected ? 110 : 70));
     if (box.width() > 24) {
         QFont small = p.font();
@@ -174,7 +203,18 @@ void paintAudioClip(QPainter &p, const TimelineScene &s, int index, const QRect 
         const QString name = QFileInfo(clip.path).fileName();
         const QString script = clip.script.simplified();
         const QString text = script.isEmpty() ? name : QStringLiteral("%1 — %2").arg(name, script);
-        const QRectF textRect = title.adjusted(4, 0, -3, 0);
+        QRectF textRect = title.adjusted(4, 0, -3, 0);
+        const bool hasPeaks = index < s.clipPeaks.size() && s.clipPeaks[index] && !s.clipPeaks[index]->isEmpty();
+        if (hasPeaks && !sharedGain(s) && gainIsSaid(gain)) {
+            // Recordings drawn at different gains: each says its own, at the title's end.
+            const QString said = gainText(gain);
+            const int width = p.fontMetrics().horizontalAdvance(said);
+            if (textRect.width() > 3 * width) {
+                p.setPen(kDimText);
+                p.drawText(textRect, Qt::AlignVCenter | Qt::AlignRight, said);
+                textRect.setRight(textRect.right() - width - 6);
+            }
+        }
         p.setPen(kText);
         p.drawText(textRect, Qt::AlignVCenter | Qt::AlignLeft,
             p.fontMetrics().elidedText(text, Qt::ElideRight, int(textRect.width())));
@@ -202,8 +242,8 @@ void paintAudioClip(QPainter &p, const TimelineScene &s, int index, const QRect 
     for (int x = x0; x <= x1; ++x) {
         const double a = l.timeAt(x) - clip.offset, b = l.timeAt(x + 1) - clip.offset;
         const auto [rawLo, rawHi] = peaks->range(a, b);
-        const double lo = std::clamp(rawLo * s.waveformGain, -1.0, 1.0);
-        const double hi = std::clamp(rawHi * s.waveformGain, -1.0, 1.0);
+        const double lo = std::clamp(rawLo * gain, -1.0, 1.0);
+        const double hi = std::clamp(rawHi * gain, -1.0, 1.0);
         lines.append(QLineF(x + 0.5, mid - hi * half, x + 0.5, mid - lo * half + 0.01));
     }
     p.drawLines(lines);

@@ -30,7 +30,9 @@ struct TimelineScene
     // when there are none ("Reading the sound…", an error naming the file).
     QVector<const WaveformPeaks *> clipPeaks;
     QStringList clipStatus;
-    double waveformGain = 1; // sample values are multiplied by this before drawing (clipped at full height)
+    // Each clip's sample values are multiplied by its gain before drawing (clipped at full height):
+    // every recording is drawn at its own loudness, a quiet one beside a loud one included.
+    QVector<double> clipGains;
     const MouthIcons *icons = nullptr;
     double playhead = 0;
     std::optional<RowKind> focusRow;

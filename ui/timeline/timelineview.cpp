@@ -107,7 +107,8 @@ TimelineScene TimelineView::scene() const
         s.clipPeaks.append(&w.peaks());
         s.clipStatus.append(w.isLoading() ? tr("Reading the sound…") : w.error());
     }
-    s.waveformGain = waveformGain();
+    for (qsizetype i = 0; i < s.clipPeaks.size(); ++i)
+        s.clipGains.append(waveformGain(int(i)));
     s.icons = &m_icons;
     s.playhead = m_playhead->time();
     s.focusRow = m_focusRow;
@@ -178,19 +179,13 @@ void TimelineView::setFocusRow(std::optional<RowKind> row)
     viewport()->update();
 }
 
-double TimelineView::waveformGain() const
+double TimelineView::waveformGain(int clip) const
 {
-    double loudness = 0;
-    bool any = false;
-    for (const auto &w : m_waveforms) {
-        if (w->peaks().isEmpty())
-            continue;
-        any = true;
-        loudness = std::max(loudness, w->loudness());
-    }
-    if (!any)
+    const WaveformSource *w
+        = clip >= 0 && size_t(clip) < m_waveforms.size() ? m_waveforms[size_t(clip)].get() : nullptr;
+    if (!w || w->peaks().isEmpty())
         return m_waveformZoom;
-    return m_waveformZoom * kWaveformFill / std::max(kQuietestShown, loudness);
+    return m_waveformZoom * kWaveformFill / std::max(kQuietestShown, w->loudness());
 }
 
 void TimelineView::setWaveformZoom(double zoom)

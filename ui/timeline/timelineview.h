@@ -52,10 +52,12 @@ public:
         return m_waveforms[std::clamp<size_t>(size_t(std::max(clip, 0)), 0, m_waveforms.size() - 1)].get();
     }
     const MouthIcons &mouthIcons() const { return m_icons; }
-    // The waveform's vertical zoom over the recordings' own loudness (1: the loud parts of the
-    // loudest fill the row). The gain is what sample values are multiplied by on screen.
+    // The waveform's vertical zoom over the recordings' own loudness (1: the loud parts of each
+    // recording fill the row). The gain is what clip `clip`'s sample values are multiplied by on
+    // screen: each recording has its own, so a quiet take beside a loud clip (a video's sound)
+    // is not drawn as a flat line.
     double waveformZoom() const { return m_waveformZoom; }
-    double waveformGain() const;
+    double waveformGain(int clip = 0) const;
 
     // Where an item is drawn, in viewport coordinates (what a click on it takes hold of).
     QRectF itemRect(const ItemRef &item) const;

@@ -13,6 +13,7 @@
 #include "dialogs/mouthshapesdialog.h"
 #include "dialogs/preferencesdialog.h"
 #include "dialogs/saytextdialog.h"
+#include "document/companionfile.h"
 #include "document/document.h"
 #include "export/animationexport.h"
 #include "playback/playbackcontroller.h"
@@ -229,12 +230,8 @@ void Studio::installPreferences()
 
 QString Studio::defaultExportPath(const QString &suffix) const
 {
-    const QString from = !m_document->filePath().isEmpty() ? m_document->filePath() : m_document->project().photoPath;
-    if (from.isEmpty())
-        return QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation))
-            .filePath(QStringLiteral("animation.") + suffix);
-    const QFileInfo info(from);
-    return info.absoluteDir().filePath(info.completeBaseName() + QLatin1Char('.') + suffix);
+    return exportFile(*m_document, suffix, QStringLiteral("animation"),
+        QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
 }
 
 void Studio::exportAnimation()
