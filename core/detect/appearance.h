@@ -89,7 +89,9 @@ struct AppearanceFindings
     // one left out); `toonface-bench likeness.attributes` fits them and prints the held-out
     // folds' figures; the values here are those it fits on all the faces.
     // Facial hair: the lip's colour distance from the cheeks (delta E*ab), a* units of redness
-    // lost against the cheeks, and the chin's texture ratio.
+    // lost against the cheeks, and the chin's texture ratio. (With the lip's colour distance in
+    // place of its redness loss, facial hair held out over 10 random 5-fold splits went from
+    // P 0.87 R 0.74 to P 0.89 R 0.81; as shipped P 1.00 R 0.80, none on women or children.)
     static constexpr double kLipColour = 10.22;
     static constexpr double kRedLossSure = 7.5;
     static constexpr double kChinRedLoss = 3.5;
