@@ -149,6 +149,7 @@ void measure(Labelled *row, const QImage &photo, const FaceModel &face)
     m["chinDL"] = e.chinDL;
     m["jawDL"] = e.jawDL;
     m["lipRedLoss"] = e.lipRedLoss;
+    m["lipColour"] = e.lipColour;
     m["chinRedLoss"] = e.chinRedLoss;
     m["jawRedLoss"] = e.jawRedLoss;
     m["bridgeLine"] = e.bridgeLine;
@@ -284,7 +285,7 @@ bool anyFacialHair(const Appearance &a)
 bool lipRule(const Labelled &r, const std::vector<double> &t)
 {
     const double lip = r.m.at("lipRedLoss"), chin = r.m.at("chinRedLoss");
-    return (lip >= t[0] && std::max(lip, chin) >= t[1]) || r.m.at("lipDL") <= -t[2];
+    return (r.m.at("lipColour") >= t[0] && std::max(lip, chin) >= t[1]) || r.m.at("lipDL") <= -t[2];
 }
 
 bool chinRule(const Labelled &r, const std::vector<double> &t)
@@ -300,7 +301,7 @@ std::vector<Decision> decisions()
     std::vector<Decision> d;
     // Facial hair (any) is the moustache's or the beard's rule: its held-out figures are theirs.
     d.push_back({QStringLiteral("moustache"), [](const Labelled &r) { return r.moustache; }, all,
-        [](const Labelled &r) { return r.shipped.moustache; }, {"lipRedLoss", "redLossSure", "-lipDL"}, lipRule,
+        [](const Labelled &r) { return r.shipped.moustache; }, {"lipColour", "redLossSure", "-lipDL"}, lipRule,
         QStringLiteral("f0.5")});
     d.push_back({QStringLiteral("beard (incl. goatee)"), [](const Labelled &r) { return r.beard; }, all,
         [](const Labelled &r) { return r.shipped.beard || r.shipped.goatee; }, {"chinRedLoss", "chinDetail", "-chinDL"},

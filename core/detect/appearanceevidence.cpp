@@ -137,17 +137,17 @@ AppearanceEvidence measureEvidence(const QImage &photo, const FaceModel &face)
     const double es0 = kEvidenceEs0, mw0 = f.mw0 * scale;
 
     // The cheeks under the eyes: the person's own skin, as lit, and its fine texture.
-    std::vector<double> cheekL, cheekDetail, cheekA;
+    std::vector<double> cheekL, cheekDetail, cheekA, cheekB;
     for (bool left : {true, false}) {
         const QPointF outer = p(left ? "3.12" : "3.7"), inner = p(left ? "3.8" : "3.11");
         const QPointF ball = p(left ? "3.6" : "3.5");
         lab.values(spanBox(QPointF(outer.x(), ball.y() + 0.45 * es0), QPointF(inner.x(), ball.y() + 0.65 * es0)),
-            &cheekL, &cheekDetail, &cheekA);
+            &cheekL, &cheekDetail, &cheekA, &cheekB);
     }
     if (cheekL.empty())
         return out;
     out.cheekL = medianOf(cheekL);
-    const double cheekRed = medianOf(cheekA);
+    const double cheekRed = medianOf(cheekA), cheekYellow = medianOf(cheekB);
     std::vector<double> deviation;
     for (double l : cheekL)
         deviation.push_back(std::abs(l - out.cheekL));
@@ -160,12 +160,12 @@ AppearanceEvidence measureEvidence(const QImage &photo, const FaceModel &face)
 
     struct Place
     {
-        double share = 0, detail = 0, dl = 0, redLoss = 0;
+        double share = 0, detail = 0, dl = 0, redLoss = 0, colour = 0;
     };
     auto hairIn = [&](const QRectF &box) {
         Place place;
-        std::vector<double> l, d, a;
-        lab.values(box, &l, &d, &a);
+        std::vector<double> l, d, a, b;
+        lab.values(box, &l, &d, &a, &b);
         if (l.empty())
             return place;
         const auto dark = std::count_if(l.begin(), l.end(), [&](double v) { return v < out.cheekL - darker; });
@@ -176,6 +176,7 @@ AppearanceEvidence measureEvidence(const QImage &photo, const FaceModel &face)
         place.share = double(dark) / double(l.size());
         place.dl = medianOf(l) - out.cheekL;
         place.redLoss = cheekRed - medianOf(a);
+        place.colour = std::hypot(place.dl, place.redLoss, cheekYellow - medianOf(b));
         return place;
     };
     // Upper lip: between the nose's bottom and the lip, the lip's middle half wide.
@@ -189,6 +190,7 @@ AppearanceEvidence measureEvidence(const QImage &photo, const FaceModel &face)
         out.lipDetail = lip.detail;
         out.lipDL = lip.dl;
         out.lipRedLoss = lip.redLoss;
+        out.lipColour = lip.colour;
     }
     // Chin: below the lower lip's shadow, above the chin's point.
     const double jawH = p("2.1").y() - p("8.2").y();

@@ -25,6 +25,12 @@ struct AppearanceEvidence
     // (a*) they are than the cheeks: hair is less red than the skin it grows from, where a
     // shadow on skin or a dark jaw line keeps the skin's redness (jaw: the side losing less).
     double lipDL = 0, chinDL = 0, jawDL = 0, lipRedLoss = 0, chinRedLoss = 0, jawRedLoss = 0;
+    // How unlike the cheeks the upper lip is as a whole: the distance (CIE76 delta E*ab) from the
+    // cheeks' median L*, a*, b* to the lip's. A moustache changes lightness, redness and
+    // yellowness together (grey or fair hair too, by a*, b*, where it hardly darkens); a shadow
+    // under the nose mostly darkens. On faces-attributes it ranks moustaches above the rest
+    // better than the redness loss alone (ROC area 0.91 against 0.85, bench likeness.attributes).
+    double lipColour = 0;
     // Glasses' bridge: over the nose's middle between the inner eye corners, the strongest thin
     // line (a dip or a ridge in L* across a few pixels) against the nose's own smooth run, in
     // L* units; and the same measured beside each eye's outer corner on vertical lines (a frame's

@@ -19,8 +19,10 @@ void judgeConfidence(AppearanceFindings *out)
     using A = AppearanceFindings;
     const AppearanceEvidence &e = out->evidence;
     constexpr double kRedUnit = 3.0, kDetailUnit = 0.3, kLUnit = 8.0, kLineUnit = 2.0;
+    // delta E*ab: the redness' unit over its three channels (sqrt 3 x 3, rounded).
+    constexpr double kColourUnit = 5.0;
     // A rule "a and b": the smaller margin; "x or y": the larger.
-    const double lip = std::max(std::min((e.lipRedLoss - A::kLipRedLoss) / kRedUnit,
+    const double lip = std::max(std::min((e.lipColour - A::kLipColour) / kColourUnit,
                                     (std::max(e.lipRedLoss, e.chinRedLoss) - A::kRedLossSure) / kRedUnit),
         (-e.lipDL - A::kLipDarker) / kLUnit);
     const double chin = std::max(

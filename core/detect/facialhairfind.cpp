@@ -95,7 +95,9 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
     // strands (speckle) are the only evidence.
     const AppearanceEvidence &e = out->evidence;
     // Hair far darker than any shadow on the face is hair, whatever its colour.
-    const bool hairyLip = (e.lipRedLoss >= AppearanceFindings::kLipRedLoss
+    // On the lip, the colour unlike the cheeks as a whole (lightness, redness, yellowness) is the
+    // evidence; some redness lost on the lip or the chin is asked too, as a shadow keeps it.
+    const bool hairyLip = (e.lipColour >= AppearanceFindings::kLipColour
                               && std::max(e.lipRedLoss, e.chinRedLoss) >= AppearanceFindings::kRedLossSure)
         || e.lipDL <= -AppearanceFindings::kLipDarker;
     const bool hairyChin

@@ -1,4 +1,5 @@
 #include "detect/appearance.h"
+#include "detect/labcolour.h"
 #include "drawnface.h"
 #include "face/averageface.h"
 #include "testmain.h"
@@ -54,7 +55,7 @@ QString describe(const AppearanceFindings &f)
     const AppearanceEvidence &e = f.evidence;
     return QStringLiteral("glasses %1, moustache %2, beard %3, goatee %4; bridge line %5, lower rims %6, side rims "
                           "%7, edges %8; lip dL %9 red loss %10, chin dL %11 red loss %12 detail %13, jaw red loss "
-                          "%14")
+                          "%14, lip colour %15")
         .arg(glassesShapeName(f.appearance.glasses))
         .arg(f.appearance.moustache)
         .arg(f.appearance.beard)
@@ -68,7 +69,8 @@ QString describe(const AppearanceFindings &f)
         .arg(e.chinDL, 0, 'f', 1)
         .arg(e.chinRedLoss, 0, 'f', 1)
         .arg(e.chinDetail, 0, 'f', 2)
-        .arg(e.jawRedLoss, 0, 'f', 1);
+        .arg(e.jawRedLoss, 0, 'f', 1)
+        .arg(e.lipColour, 0, 'f', 1);
 }
 
 // One row per skin and scale for each of `variants` (a name and the options on top of the skin).
@@ -219,6 +221,40 @@ private Q_SLOTS:
                 [](DrawnFaceOptions *o) { o->moustache = o->beard = o->jawShadow = o->lipShadow = true; }},
             {QStringLiteral("goatee"), [](DrawnFaceOptions *o) { o->goatee = true; }},
         });
+    }
+
+    // The lip's colour distance from the cheeks reads what is drawn there: a moustache unlike the
+    // skin in lightness, redness and yellowness together (a fair one: a little of each) measures
+    // its delta E*ab (mostly by yellowness, which the redness and lightness alone miss), where a
+    // shadow under the nose, the skin's own colour darkened, stays below
+    // what the moustache's rule asks.
+    void lipColourReadsTheLip_data()
+    {
+        rowsFor({
+            {QStringLiteral("fair moustache"),
+                [](DrawnFaceOptions *o) {
+                    o->moustache = true;
+                    const LabColour skin = labOf(o->skin);
+                    o->beardColour = colourOfLab({skin.l - 6, skin.a - 4, skin.b - 10});
+                }},
+            {QStringLiteral("shadow under the lip and nose"), [](DrawnFaceOptions *o) { o->lipShadow = true; }},
+        });
+    }
+
+    void lipColourReadsTheLip()
+    {
+        QFETCH(DrawnFaceOptions, options);
+        QFETCH(double, scale);
+        const AppearanceFindings f = findOn(options, scale);
+        if (options.moustache) {
+            const LabColour skin = labOf(options.skin), hair = labOf(options.beardColour);
+            const double drawn = std::hypot(skin.l - hair.l, skin.a - hair.a, skin.b - hair.b);
+            // (The photo's grain and the cheeks' median, read from 8-bit L*a*b*, move it a little.)
+            QVERIFY2(std::abs(f.evidence.lipColour - drawn) < 3.0,
+                qPrintable(QStringLiteral("drawn %1; %2").arg(drawn, 0, 'f', 1).arg(describe(f))));
+        } else {
+            QVERIFY2(f.evidence.lipColour < AppearanceFindings::kLipColour, qPrintable(describe(f)));
+        }
     }
 
     void facialHairFound()
