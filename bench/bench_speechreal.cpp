@@ -276,7 +276,7 @@ QJsonObject alignReal()
             "Mandarin onsets against references: real files (developed on / held out) and espeak-ng "
             "voices and tempi no constant was chosen on (20 dB noise, an unmarked pause; heldOutClean: 45 dB); "
             "afterAPause: the first syllable, the one after the unmarked pause, those after a marked "
-            "break; signed = "
+            "break (byInitial: their signed median and max by initial); signed = "
             "aligned - reference (positive: mouth late); offBy80MsFlagged: of the onsets > 80 ms off, "
             "how many had confidence < 0.5"));
     return out;
