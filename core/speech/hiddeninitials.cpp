@@ -25,12 +25,14 @@ bool hasVoicelessInitial(const QString &pinyin)
     return parts && voiceless.contains(parts->initial);
 }
 
-// Whether a syllable begins with a stop (aspirated or not): its closure is silence.
-bool hasStopInitial(const QString &pinyin)
+// Whether a syllable begins with a closure: a stop or an affricate (aspirated or not), whose
+// closure is silence.
+bool hasClosedInitial(const QString &pinyin)
 {
     const std::optional<PinyinParts> parts = splitPinyinSyllable(pinyin);
     static const QStringList stops = {QStringLiteral("b"), QStringLiteral("p"), QStringLiteral("d"),
-        QStringLiteral("t"), QStringLiteral("g"), QStringLiteral("k")};
+        QStringLiteral("t"), QStringLiteral("g"), QStringLiteral("k"), QStringLiteral("j"), QStringLiteral("q"),
+        QStringLiteral("z"), QStringLiteral("c"), QStringLiteral("zh"), QStringLiteral("ch")};
     return parts && stops.contains(parts->initial);
 }
 
@@ -114,14 +116,15 @@ void moveOnsetsOfHiddenInitials(const SpeechFeatures &a, const OnsetSignals &sig
             while (t >= stop && a.logEnergy[size_t(t)] > a.noiseFloor + kHeardAboveQuiet)
                 --t;
             double heard = a.time(t + 1) - 0.5 * SpeechFeatures::kHop;
-            // A stop's closure after a pause is as silent as the pause, and what is heard of
-            // it begins at the burst: the onset landed late by the closure (medians b +31, d +40,
-            // g +47, t +32 ms on the held-out espeak-ng voices at 45 dB), while the tongue or the lips had
-            // closed at its start. As in noise, the onset moves to the initial's length
-            // (closure, burst, aspiration) before the vowel, never before the pause began. The
-            // vowel is the first loud voiced frame: a closure voiced through (a murmur well
-            // under the vowel) is heard, and the onset found over it stays.
-            if (hasStopInitial(script.syllables[k].pinyin)) {
+            // A stop's or an affricate's closure after a pause is as silent as the pause, and
+            // what is heard of it begins at the burst: the onset landed late by the closure
+            // (medians b +31, d +40, g +47, t +32, j +32, q +26 ms on the held-out espeak-ng
+            // voices at 45 dB), while the tongue or the lips had closed at its start. As in
+            // noise, the onset moves to the initial's length (closure, burst, aspiration or
+            // frication) before the vowel, never before the pause began. The vowel is the
+            // first loud voiced frame: a closure voiced through (a murmur well under the
+            // vowel) is heard, and the onset found over it stays.
+            if (hasClosedInitial(script.syllables[k].pinyin)) {
                 const int vowel = vowelFrom(a, pauseEnd + 1, initialFrames + 3);
                 // Never further before the first sound heard than the reference's closure
                 // (its word's start to its initial's first sound, 40-45 ms in espeak-ng) at
