@@ -4,10 +4,12 @@
 #include "speech/aligner.h"
 #include "speech/audio.h"
 #include "speech/lipsync.h"
+#include "speech/pinyin.h"
 #include "speech/script.h"
 
 #include <QFile>
 #include <QJsonArray>
+#include <QMap>
 
 #include <algorithm>
 #include <cmath>
@@ -78,18 +80,47 @@ bool afterAPause(const Script &s, int k, int pausedBefore)
     return k == 0 || k == pausedBefore || s.syllables[k - 1].phraseBreakAfter;
 }
 
+// The onsets after a pause, all and by initial (a stop's closure is silent as the pause is;
+// a fricative's noise is heard): where the mouth starts late, which initials it is.
+struct AfterPause
+{
+    Errors all;
+    QMap<QString, Errors> byInitial;
+    void add(const QString &pinyin, double aligned, double truth, double confidence)
+    {
+        all.add(aligned, truth, confidence);
+        const std::optional<PinyinParts> parts = splitPinyinSyllable(pinyin);
+        const QString initial = parts && !parts->initial.isEmpty() ? parts->initial : QStringLiteral("(none)");
+        byInitial[initial].add(aligned, truth, confidence);
+    }
+    QJsonObject json() const
+    {
+        QJsonObject o = all.json();
+        QJsonObject by;
+        for (auto it = byInitial.begin(); it != byInitial.end(); ++it) {
+            QJsonObject e;
+            e.insert(QStringLiteral("onsets"), int(it->ms.size()));
+            e.insert(QStringLiteral("signedMedianMs"), std::round(Errors::quantileOf(it->signedMs, 0.5) * 10) / 10);
+            e.insert(QStringLiteral("maxMs"), std::round(it->quantile(1.0) * 10) / 10);
+            by.insert(it.key(), e);
+        }
+        o.insert(QStringLiteral("byInitial"), by);
+        return o;
+    }
+};
+
 // Adds an alignment of synthetic speech to `e` (and the syllables after a pause also to
 // `afterPause`, when given); the shortest syllable to `shortest`; the syllables more than
 // 50 ms off to `misses` (when given).
 void scoreSynthetic(const Script &s, const Audio &rec, const std::vector<double> &truth, Errors *e, double *shortest,
     const AlignOptions &options = {}, std::vector<Miss> *misses = nullptr, const QString &voice = {},
-    Errors *afterPause = nullptr, int pausedBefore = -1)
+    AfterPause *afterPause = nullptr, int pausedBefore = -1)
 {
     const LipsyncResult r = lipsyncResult(s, alignScript(rec, s, options), rec.duration());
     for (int k = 0; k < r.syllables.size() && size_t(k) < truth.size(); ++k) {
         e->add(r.syllables[k].start, truth[size_t(k)], r.syllables[k].confidence);
         if (afterPause && afterAPause(s, k, pausedBefore))
-            afterPause->add(r.syllables[k].start, truth[size_t(k)], r.syllables[k].confidence);
+            afterPause->add(s.syllables[k].pinyin, r.syllables[k].start, truth[size_t(k)], r.syllables[k].confidence);
         *shortest = std::min(*shortest, (r.syllables[k].end - r.syllables[k].start) * 1000);
         const double error = (r.syllables[k].start - truth[size_t(k)]) * 1000;
         if (!misses || std::abs(error) <= 50)
@@ -117,7 +148,8 @@ void scoreSynthetic(const Script &s, const Audio &rec, const std::vector<double>
 // by. The syllables after a pause apart.
 QJsonObject heldOutClean()
 {
-    Errors pooled, afterPause;
+    Errors pooled;
+    AfterPause afterPause;
     quint32 seed = 3000;
     double shortest = 1e9;
     for (const Voice &v : kHeldOutVoices) {
@@ -138,7 +170,8 @@ QJsonObject heldOutClean()
 // The held-out voices, sentence by sentence, and one of them reading them all for a minute.
 QJsonObject heldOutSynthetic()
 {
-    Errors pooled, unadapted, afterPause;
+    Errors pooled, unadapted;
+    AfterPause afterPause;
     AlignOptions noAdaptation;
     noAdaptation.adaptToSpeaker = false;
     QJsonArray perVoice;
@@ -243,7 +276,7 @@ QJsonObject alignReal()
             "Mandarin onsets against references: real files (developed on / held out) and espeak-ng "
             "voices and tempi no constant was chosen on (20 dB noise, an unmarked pause; heldOutClean: 45 dB); "
             "afterAPause: the first syllable, the one after the unmarked pause, those after a marked "
-            "break; signed = "
+            "break (byInitial: their signed median and max by initial); signed = "
             "aligned - reference (positive: mouth late); offBy80MsFlagged: of the onsets > 80 ms off, "
             "how many had confidence < 0.5"));
     return out;

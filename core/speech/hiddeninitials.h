@@ -17,7 +17,10 @@ namespace toonface {
 // moves to the initial's length in the reference, at the speaker's pace, before the first
 // voiced frame, never before the pause begins. In a cleaner recording the initial's noise
 // stands above the quiet in the whole band: the onset moves back over the frames that do, at
-// most the initial's length.
+// most the initial's length; a stop's or an affricate's (whose closure is as silent as the
+// pause) to the initial's length before the first loud voiced frame, at most the reference's
+// closure before the first sound heard. The onset is looked at when a pause ends within the
+// initial's length before it (at least 30 ms).
 // `pace` is the recording's speech over the reference's; `reference` is the script's rendering
 // the recording `a` (its signals `sig`) was aligned against, one unit per syllable of `r`.
 void moveOnsetsOfHiddenInitials(const SpeechFeatures &a, const OnsetSignals &sig, const Script &script,
