@@ -2,6 +2,7 @@ list(APPEND TOONFACE_CORE_SOURCES
   render/curves.h render/curves.cpp
   render/style.h render/style.cpp
   render/svgface.h render/svgface.cpp
+  render/svgfacebuild.h render/svgfacebuild.cpp
   render/svgparts.h
   render/svgfeatures.h render/svgfeatures.cpp
   render/svgexpression.h render/svgexpression.cpp

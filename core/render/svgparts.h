@@ -1,7 +1,8 @@
 #pragma once
 
-// The pieces SvgFace's part builders share (svgface.cpp, svgfeatures.cpp): compact SVG numbers
-// and path data, small vector helpers and the Part record. Internal to core/render.
+// The pieces SvgFace's part builders share (svgface.cpp, svgfacebuild.cpp, svgfeatures.cpp):
+// compact SVG numbers and path data, small vector helpers and the Part record. Internal to
+// core/render.
 
 #include "face/pointtable.h"
 #include "render/curves.h"
