@@ -68,6 +68,12 @@ struct AppearanceFindings
     // ... measured from the hair's colour beside the temples (a tight crop), and whether the
     // photo ends while the hair still falls.
     bool templeHairSeen = false, fallCut = false;
+    // ... whether that colour was the room's (HeadParse::roomFall), how much lighter than the
+    // cheeks it was, and the fall as its colour was followed.
+    bool roomFall = false;
+    double templeLighter = 0, measuredFall = 0;
+    // ... and the skin's share over the forehead and beside the temples (HeadParse::crownSkin).
+    double crownSkin = 0, templeSkin = 0;
     // What lies over the forehead and beside the face in the parse (headcover.h), and the hair's
     // colour the parse sampled over the forehead (invalid when it saw none).
     HeadCover cover;
