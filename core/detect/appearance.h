@@ -122,8 +122,9 @@ struct AppearanceFindings
     static constexpr double kFallLong = 0.16;
     // ... and where a tight crop showed the hair's colour only beside the temples, by hairFall
     // measured from there: cross-validated the same way on the 44 such faces (held-out 0.66; the
-    // outline's drop calls nearly all of them short). The two thresholds lie close: a crop cut at
-    // the chin seldom tells medium from long.
+    // outline's drop calls nearly all of them short; 0.73 since a sample far lighter than the
+    // skin is taken for the room, HeadParse::roomFall). The two thresholds lie close: a crop cut
+    // at the chin seldom tells medium from long.
     static constexpr double kTempleFallMedium = -0.554;
     static constexpr double kTempleFallLong = -0.508;
 
