@@ -18,6 +18,7 @@
 #include <QJsonDocument>
 #include <QTextStream>
 
+#include <algorithm>
 #include <map>
 #include <string>
 
@@ -121,6 +122,11 @@ void measure(Labelled *row, const QImage &photo, const FaceModel &face)
     m["templeHairSeen"] = f.templeHairSeen ? 1.0 : 0.0;
     m["noHairSeen"] = f.hairSeen || f.templeHairSeen ? 0.0 : 1.0;
     m["fallCut"] = f.fallCut ? 1.0 : 0.0;
+    m["roomFall"] = f.roomFall ? 1.0 : 0.0;
+    m["templeLighter"] = f.templeLighter;
+    m["measuredFall"] = f.measuredFall;
+    m["crownSkin"] = f.crownSkin;
+    m["templeSkin"] = f.templeSkin;
     m["hairLengthShipped"] = double(int(f.hairLength)); // 0 none, 1 short, 2 medium, 3 long
     m["hatScore"] = f.hatScore;
     m["crownToHair"] = f.crownToHair;
@@ -432,8 +438,10 @@ QStringList shippedHairLength(const std::vector<Labelled> &rows, const std::vect
     return out;
 }
 
+// With `lighter` (a tight crop's temple sample's L* over the cheeks', headparse.h), a third
+// threshold: from it the sample is the room and the face short-haired (HeadParse::roomFall).
 QStringList hairLength(const std::vector<Labelled> &rows, const std::vector<size_t> &detected, int k,
-    const char *measure, const char *onlyWhere)
+    const char *measure, const char *onlyWhere, const char *lighter = nullptr)
 {
     std::vector<size_t> scored;
     std::vector<int> label;
@@ -447,13 +455,23 @@ QStringList hairLength(const std::vector<Labelled> &rows, const std::vector<size
         return {};
     auto classOf = [&](size_t r, const std::vector<double> &t) {
         const double drop = rows[r].m.at(measure);
+        if (lighter && rows[r].m.at(lighter) >= t[2])
+            return 0;
         return drop < t[0] ? 0 : drop < t[1] ? 1 : 2;
     };
-    std::vector<double> v;
-    for (size_t i : scored)
+    std::vector<double> v, l;
+    for (size_t i : scored) {
         v.push_back(rows[i].m.at(measure));
+        if (lighter)
+            l.push_back(rows[i].m.at(lighter));
+    }
     // Counted as "right or not" (every face a positive): recall is the share right.
-    bench::Rule rule {{bench::thresholdsFrom(v, 24), bench::thresholdsFrom(v, 24)},
+    std::vector<std::vector<double>> candidates {bench::thresholdsFrom(v, 24), bench::thresholdsFrom(v, 24)};
+    if (lighter) { // (tried from the highest down: of thresholds equally right, the fewest faces called the room)
+        candidates.push_back(bench::thresholdsFrom(l, 24));
+        std::reverse(candidates.back().begin(), candidates.back().end());
+    }
+    bench::Rule rule {candidates,
         [&](size_t r, const std::vector<double> &t) { return classOf(r, t) == lengthClass(rows[r].hairLength); }};
     const std::vector<bool> truth(rows.size(), true);
     auto objective = [](const Counts &c) { return c.recall(); };
@@ -470,12 +488,15 @@ QStringList hairLength(const std::vector<Labelled> &rows, const std::vector<size
     const std::vector<double> all = bench::fitRule(rule, scored, truth, objective);
     const int right = confusion[0][0] + confusion[1][1] + confusion[2][2];
     QStringList out;
-    out << QStringLiteral("hair length — %4%5, held-out folds (%1-fold, objective accuracy; fitted on all: %2, %3):")
+    out << QStringLiteral("hair length — %4%5, held-out folds (%1-fold, objective accuracy; fitted on all: %2, %3%6):")
                .arg(k)
                .arg(all[0], 0, 'g', 4)
                .arg(all[1], 0, 'g', 4)
                .arg(QLatin1StringView(measure),
-                   onlyWhere ? QStringLiteral(" (where %1)").arg(QLatin1StringView(onlyWhere)) : QString());
+                   onlyWhere ? QStringLiteral(" (where %1)").arg(QLatin1StringView(onlyWhere)) : QString(),
+                   lighter
+                       ? QStringLiteral("; the room from %1 %2").arg(QLatin1StringView(lighter)).arg(all[2], 0, 'g', 4)
+                       : QString());
     out << QStringLiteral("  right %1 of %2 (%3); rows labelled short/medium/long, columns decided:")
                .arg(right)
                .arg(scored.size())
@@ -557,6 +578,7 @@ QJsonObject attributes()
     report << hairLength(rows, detected, k, "hairDrop", "noHairSeen");
     report << hairLength(rows, detected, k, "hairFall", "hairSeen");
     report << hairLength(rows, detected, k, "hairFall", "templeHairSeen");
+    report << hairLength(rows, detected, k, "measuredFall", "templeHairSeen", "templeLighter");
     // Facial hair drawn on women and children.
     int onWomen = 0, onChildren = 0;
     for (size_t i : detected) {

@@ -296,6 +296,11 @@ AppearanceFindings findAppearance(const QImage &photo, const FaceModel &face, co
         out.hairFall = parse.hairFall;
         out.templeHairSeen = parse.templeHairSeen;
         out.fallCut = parse.fallCut;
+        out.roomFall = parse.roomFall;
+        out.templeLighter = parse.templeLighter;
+        out.measuredFall = parse.measuredFall;
+        out.crownSkin = parse.crownSkin;
+        out.templeSkin = parse.templeSkin;
         out.cover = measureCover(parse);
         if (parse.hairSeen || parse.templeHairSeen) {
             out.parsedHair = parse.hair;

@@ -68,6 +68,12 @@ struct AppearanceFindings
     // ... measured from the hair's colour beside the temples (a tight crop), and whether the
     // photo ends while the hair still falls.
     bool templeHairSeen = false, fallCut = false;
+    // ... whether that colour was the room's (HeadParse::roomFall), how much lighter than the
+    // cheeks it was, and the fall as its colour was followed.
+    bool roomFall = false;
+    double templeLighter = 0, measuredFall = 0;
+    // ... and the skin's share over the forehead and beside the temples (HeadParse::crownSkin).
+    double crownSkin = 0, templeSkin = 0;
     // What lies over the forehead and beside the face in the parse (headcover.h), and the hair's
     // colour the parse sampled over the forehead (invalid when it saw none).
     HeadCover cover;
@@ -119,8 +125,9 @@ struct AppearanceFindings
     static constexpr double kFallLong = 0.16;
     // ... and where a tight crop showed the hair's colour only beside the temples, by hairFall
     // measured from there: cross-validated the same way on the 44 such faces (held-out 0.66; the
-    // outline's drop calls nearly all of them short). The two thresholds lie close: a crop cut at
-    // the chin seldom tells medium from long.
+    // outline's drop calls nearly all of them short; 0.73 since a sample far lighter than the
+    // skin is taken for the room, HeadParse::roomFall). The two thresholds lie close: a crop cut
+    // at the chin seldom tells medium from long.
     static constexpr double kTempleFallMedium = -0.554;
     static constexpr double kTempleFallLong = -0.508;
 

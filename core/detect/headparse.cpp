@@ -48,6 +48,7 @@ constexpr double kHairSampleLow = 0.3, kHairSampleHigh = 1.3, kHairSampleHalf = 
 constexpr double kSideGap = 0.05, kSideBand = 0.6, kHairWidth = 0.1, kFallGap = 0.25;
 constexpr double kHairColourDistance = 18.0; // L*a*b* units
 constexpr double kTempleNear = 0.75, kTempleFar = 1.5, kTempleHigh = 1.0;
+constexpr double kBaldSideFar = 1.3, kBaldSideHigh = 0.6;
 // The outline follows the fall (followHairFall) where it ends at least kMinFallGain ES0 lower
 // than the outline's end: the end and the kFallPoints points above it move onto the line from
 // there down to the fall's end.
@@ -164,8 +165,8 @@ QColor medianColour(const cv::Mat &rgb, const cv::Mat &inside, const std::vector
     return QColor(int(medianOf(channels[0])), int(medianOf(channels[1])), int(medianOf(channels[2])));
 }
 
-void measureHairFall(HeadParse *parse, const cv::Mat &rgb, const cv::Mat &lab, double browTop, double eyeY,
-    double chinY, const std::array<QPointF, 2> &leftCheek, const std::array<QPointF, 2> &rightCheek)
+void measureHairFall(HeadParse *parse, const cv::Mat &rgb, const cv::Mat &lab, double skinL, double browTop,
+    double eyeY, double chinY, const std::array<QPointF, 2> &leftCheek, const std::array<QPointF, 2> &rightCheek)
 {
     const double d = kParseEyeDistance;
     HeadParse &out = *parse;
@@ -212,6 +213,7 @@ void measureHairFall(HeadParse *parse, const cv::Mat &rgb, const cv::Mat &lab, d
     const Lab hair {medianOf(sample[0]), medianOf(sample[1]), medianOf(sample[2])};
     out.hairSeen = !fromTemples;
     out.templeHairSeen = fromTemples;
+    out.templeLighter = fromTemples ? hair.l - skinL : 0.0;
     // The median of the whole sample, shadows between the strands included: over the labelled
     // faces it orders black, brown, blond and grey hair better than the lit strands' median (the
     // 40th to 90th percentiles of luma, as the band inside the outline reads it) does, which
@@ -229,6 +231,12 @@ void measureHairFall(HeadParse *parse, const cv::Mat &rgb, const cv::Mat &lab, d
     const int gap = std::max(1, int(std::lround(kFallGap * d)));
     std::vector<double> falls;
     const QTransform toPhoto = out.toWork.inverted();
+    // (In a tight crop beside a short-haired head the temples show the room; a wall far lighter
+    // than the skin is seldom hair: over faces-attributes' 44 tight crops whose temples gave the
+    // colour, every long- or medium-haired one's sample lay darker than the cheeks, and
+    // `toonface-bench likeness.attributes` cross-validates kRoomLighter with the fall's two
+    // thresholds. Its fall is the wall's, and is left at the eyes' line.)
+    out.roomFall = fromTemples && out.templeLighter >= kRoomLighter;
     int side = 0;
     for (const auto &[cheek, outward] : {std::pair(leftCheek, -1.0), std::pair(rightCheek, 1.0)}) {
         int last = int(eyeY), misses = 0;
@@ -271,17 +279,24 @@ void measureHairFall(HeadParse *parse, const cv::Mat &rgb, const cv::Mat &lab, d
             }
         }
         falls.push_back((last - chinY) / d);
+        if (out.roomFall) {
+            last = int(eyeY);
+            lastOuter = sideLine(cheek, eyeY);
+            cut = false;
+        }
         out.fallEnds[side++] = toPhoto.map(QPointF(lastOuter, last));
         out.fallCut = out.fallCut || (cut && last >= int(chinY));
     }
-    out.hairFall = std::max(falls[0], falls[1]);
+    out.measuredFall = std::max(falls[0], falls[1]);
+    out.hairFall = out.roomFall ? (int(eyeY) - chinY) / d : out.measuredFall;
 }
 
 } // namespace
 
 bool followHairFall(FaceModel *face, const HeadParse &parse)
 {
-    if (!parse.valid || !(parse.hairSeen || parse.templeHairSeen) || !face->isValid())
+    // (A fall of the room's colour is no hair's: nothing to follow.)
+    if (!parse.valid || !(parse.hairSeen || parse.templeHairSeen) || parse.roomFall || !face->isValid())
         return false;
     const double es0 = QLineF(face->point("3.6"), face->point("3.5")).length();
     bool moved = false;
@@ -450,6 +465,26 @@ HeadParse parseHead(const QImage &photo, const FaceModel &face)
         }
     }
 
+    // The skin's share over the forehead's middle (kWalkHalf d either side, from kWalkStart d
+    // over the brows' top up to the head's top or the photo's edge) and beside the temples
+    // (kTempleNear..kBaldSideFar d out, up kBaldSideHigh d from the brows' top).
+    auto skinShare = [&](auto within) {
+        int n = 0, skinny = 0;
+        for (int y = 0; y < int(browTop - kWalkStart * d) && y < out.size.height(); ++y)
+            for (int x = 0; x < out.size.width(); ++x) {
+                const HeadParse::Label l = out.at(x, y);
+                if (within(std::abs(x - centre.x()) / d, (browTop - y) / d)
+                    && (l == HeadParse::Skin || l == HeadParse::Other)) {
+                    ++n;
+                    skinny += l == HeadParse::Skin;
+                }
+            }
+        return n > 0 ? double(skinny) / n : 0.0;
+    };
+    out.crownSkin = skinShare([](double off, double) { return off <= kWalkHalf; });
+    out.templeSkin = skinShare(
+        [](double off, double up) { return off >= kTempleNear && off <= kBaldSideFar && up <= kBaldSideHigh; });
+
     // Up each column from the brows: where the skin's run ends, and where the person's does (the
     // head's top), or the photo's edge.
     const int gap = std::max(1, int(std::lround(kWalkGap * d)));
@@ -501,7 +536,8 @@ HeadParse parseHead(const QImage &photo, const FaceModel &face)
         out.headHeight = medianOf(heights);
         out.scalpReach = medianOf(reaches);
     }
-    measureHairFall(&out, work, lab, browTop, w("3.4").y(), w("2.1").y(), {w("5.2"), w("2.14")}, {w("5.1"), w("2.13")});
+    measureHairFall(
+        &out, work, lab, skin.l, browTop, w("3.4").y(), w("2.1").y(), {w("5.2"), w("2.14")}, {w("5.1"), w("2.13")});
     out.valid = true;
     return out;
 }

@@ -43,6 +43,11 @@ struct HeadParse
     // stops most columns' skin; topCut: it stops most columns' head (hair or a hat may go on).
     bool crownCut = true, topCut = false;
     double headHeight = 0, scalpReach = 0;
+    // Evidence of a bald head in a crop that cuts the crown off (measured, not decided on: see
+    // the bench's bald report): the share of skin over the forehead's middle from the brows up
+    // to the photo's top edge or the head's (crownSkin), and beside the temples, from the brows
+    // up kTempleBand d (templeSkin); 0 where the photo shows none of it.
+    double crownSkin = 0, templeSkin = 0;
 
     // How far the hair falls beside the face: the lowest row (on the lower side) where a band
     // beside the cheeks still holds hair of the crown's colour, in eye distances below the chin's
@@ -51,6 +56,12 @@ struct HeadParse
     bool hairSeen = false, fallCut = false;
     bool templeHairSeen = false; // the crown showed none, the temples did (a tight crop): its colour came from there
     double hairFall = 0;
+    // A tight crop's temple sample far lighter than the cheeks (templeLighter, in L*, at least
+    // kRoomLighter) is the room beside a short-haired head, not hair: what falls in its colour
+    // beside the face is the wall, so the fall is left at the eyes' line (roomFall) and the
+    // outline does not follow it. measuredFall is the fall as its colour was followed.
+    bool roomFall = false;
+    double templeLighter = 0, measuredFall = 0;
     QPointF fallEnds[2]; // in the photo: where each side's fall ends, at the hair's outer edge (left, right)
 
     // What the parse measured in: the work frame's pixels (RGB), the cheeks' median colour, the
@@ -71,6 +82,15 @@ struct HeadParse
 };
 
 inline constexpr double kParseEyeDistance = 24.0;
+// L* by which a tight crop's temple sample outshines the skin when it is the room, or a shine, not
+// hair: its fall is not followed (HeadParse::roomFall) and its colour not drawn (photocolours.cpp).
+// Chosen for the colour by leave-one-out over the 79 crops of faces-attributes whose hair colour
+// is labelled, for drawing light hair (blond, grey) light and dark hair dark: held out 0.835
+// right, against 0.759 drawing every sample. For the hair's length the same rule holds out 0.73
+// right over the 44 crops whose temples gave the colour (the fall's two thresholds fitted per
+// fold; 0.66 without it), where fitting it afresh as a third threshold holds out 0.68 (too many
+// thresholds for 44 faces). `toonface-bench likeness.attributes` prints both.
+inline constexpr double kRoomLighter = 17.0;
 
 // Nothing (valid false) for an invalid face or a null photo.
 HeadParse parseHead(const QImage &photo, const FaceModel &face);

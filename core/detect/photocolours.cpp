@@ -32,12 +32,6 @@ constexpr double kBrowSampleRadius = 0.04; // ES0: the discs sampled along a bro
 constexpr double kBrowDark = 0.8; // a brow's pixel is darker than this share of the skin's grey
 constexpr double kBrowShown = 0.2; // share of the brow's samples that must be dark for its colour to be read
 constexpr double kBrowContrast = 0.6; // a brow is drawn at most this share of the skin's grey
-// L* by which hair seen only beside the temples may be lighter than the skin and still be drawn:
-// past it, the room or a shine (dark hair drawn white on dark skin). Chosen by leave-one-out over
-// the 79 crops of faces-attributes whose hair colour is labelled, for drawing light hair (blond,
-// grey) light and dark hair dark: held out 0.835 right, against 0.759 drawing every sample
-// (`toonface-bench likeness.attributes` prints the drawn hair's lightness by label).
-constexpr double kTempleHairLighter = 17.0;
 // Grey or white hair is drawn only on a face the age models (agegroup.h) take for no child's and
 // give at least this chance of being elderly (of not being a child): on the younger, strands
 // read grey were a shine on dark hair or the wall through it (17 % of black-haired heads drawn
@@ -402,12 +396,13 @@ void sampleColours(const QImage &original, const FaceModel &face, Style *style, 
     // The parse of the head saw the hair as a whole (the person's pixels other than skin over the
     // forehead, or beside the temples in a tight crop): its median is the hair's own colour, where
     // the band inside the outline may have caught the room or the skin.
-    // Seen only beside the temples (a tight crop) and far lighter than the skin, that "hair" is
+    // Seen only beside the temples (a tight crop) and far lighter than the skin (kRoomLighter,
+    // headparse.h: the parse leaves the fall of such a sample out too), that "hair" is
     // more often the room or a shine on dark skin than grey or blond hair, and the band inside the
     // outline read the same place: the hair is drawn in the brows' colour instead (most people's
     // brows are of their hair's colour), or the preset's.
     const bool lightBesideTemples
-        = found.templeHairSeen && skinOk && labOf(found.parsedHair).l - labOf(skin).l > kTempleHairLighter;
+        = found.templeHairSeen && skinOk && labOf(found.parsedHair).l - labOf(skin).l > kRoomLighter;
     const QColor browsOrPreset = !browSeen.isValid() ? Style::baseComponents().value(QStringLiteral("hair")).fill
         : monochrome                                 ? hairFromGrey(qGray(browSeen.rgb()))
                                                      : browSeen;

@@ -88,6 +88,9 @@ private Q_SLOTS:
         QCOMPARE(labelAt(p, QPointF(face.imageSize().width() - 5, 4)), HeadParse::Background);
         QVERIFY2(!p.crownCut, qPrintable(describe(p)));
         QVERIFY2(p.scalpReach < AppearanceFindings::kScalpReach, qPrintable(describe(p)));
+        // (The bald report's measure: hair over much of the forehead's middle above the brows.)
+        if (skin != kSkins[2])
+            QVERIFY2(p.crownSkin < 0.7, qPrintable(QString::number(p.crownSkin)));
         QVERIFY(!findAppearance(testing::drawnFace(o, face), face, skin).appearance.bald);
     }
 
@@ -112,6 +115,8 @@ private Q_SLOTS:
                 qPrintable(describe(p)));
             const AppearanceFindings f = findAppearance(photo, face, skin);
             QVERIFY2(f.appearance.bald, qPrintable(describe(p)));
+            QVERIFY2(p.crownSkin > 0.8, qPrintable(QString::number(p.crownSkin)));
+            QCOMPARE(f.crownSkin, p.crownSkin);
             QCOMPARE(f.scalpReach, p.scalpReach);
         }
     }
@@ -196,6 +201,74 @@ private Q_SLOTS:
         FaceModel shortHaired = face;
         followHairFall(&shortHaired, parseHead(testing::drawnFace(o, face), face));
         QVERIFY(shortHaired.point("h.1").y() < chin && shortHaired.point("h.19").y() < chin);
+    }
+
+    // A tight crop (from a little over the brows to under the chin, the cheeks' width and a
+    // little more) shows the hair's colour only beside the temples. Beside a short-haired head
+    // against a white wall that is the wall: the fall of its colour is not taken for long hair
+    // (roomFall), and the outline does not follow it. Long dark hair against the same wall still
+    // falls below the chin.
+    void tightCropRoom_data()
+    {
+        QTest::addColumn<bool>("longHair");
+        QTest::addColumn<QColor>("wall");
+        QTest::newRow("short hair, white wall") << false << QColor(250, 250, 250);
+        QTest::newRow("long hair, white wall") << true << QColor(250, 250, 250);
+        QTest::newRow("long hair, grey wall") << true << QColor(150, 150, 150);
+    }
+    void tightCropRoom()
+    {
+        QFETCH(bool, longHair);
+        QFETCH(QColor, wall);
+        FaceModel face = testing::drawnFaceModel();
+        const double es0 = QLineF(face.point("3.6"), face.point("3.5")).length();
+        const double chin = face.point("2.1").y();
+        for (int k = 0; k < 6; ++k) {
+            for (const int i : {pt::idx("h.1") + k, pt::idx("h.19") - k}) {
+                const QPointF temple = face.point(i < pt::idx("h.10") ? "11.2" : "11.3");
+                // Long: the three lowest points each side down below the chin; short: the sides
+                // cut to the temples (hair on the crown only, which the crop leaves out).
+                if (longHair && k < 3)
+                    face.setPoint(
+                        i, QPointF(face.point(i).x(), std::max(face.point(i).y(), chin + (1.0 - 0.45 * k) * es0)));
+                else if (!longHair)
+                    face.setPoint(i, temple);
+            }
+        }
+        DrawnFaceOptions o;
+        o.skin = kSkins[1];
+        o.hair = QColor(40, 30, 25);
+        o.background = wall;
+        const QImage whole = testing::drawnFace(o, face);
+        const QPointF mid = (face.point("3.6") + face.point("3.5")) / 2.0;
+        // (As wide as the tight crops of faces-attributes, a little wider where the hair falls.)
+        const double half = longHair ? 1.6 : 1.25;
+        const QRect crop = QRectF(QPointF(mid.x() - half * es0, face.point("4.1").y() - 0.3 * es0),
+            QPointF(mid.x() + half * es0, chin + 0.6 * es0))
+                               .toAlignedRect()
+                               .intersected(whole.rect());
+        const QImage photo = whole.copy(crop);
+        FaceModel moved = face;
+        moved.setImageSize(photo.size());
+        for (int i = 0; i < kPointCount; ++i)
+            moved.setPoint(i, face.point(i) - QPointF(crop.topLeft()), false);
+        const HeadParse p = parseHead(photo, moved);
+        const QString seen = QStringLiteral("temple sample seen %1, lighter %2, fall %3 (measured %4)")
+                                 .arg(p.templeHairSeen)
+                                 .arg(p.templeLighter, 0, 'f', 1)
+                                 .arg(p.hairFall, 0, 'f', 2)
+                                 .arg(p.measuredFall, 0, 'f', 2);
+        QVERIFY2(p.valid && p.templeHairSeen, qPrintable(seen));
+        QCOMPARE(p.roomFall, !longHair);
+        if (longHair) {
+            QVERIFY2(p.hairFall > 0, qPrintable(seen));
+            return;
+        }
+        QVERIFY2(p.hairFall < -1.0, qPrintable(seen));
+        // The outline's ends (the drawn short hair's, beside the cheeks) stay where they are.
+        FaceModel outline = moved;
+        QVERIFY(!followHairFall(&outline, p));
+        QCOMPARE(findAppearance(photo, moved, o.skin).hairLength, HairLength::Short);
     }
 
     void invalidInput()
