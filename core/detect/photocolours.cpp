@@ -42,6 +42,9 @@ constexpr double kGreyHairElderly = 0.287;
 // ... unless the strands read white: no dark head of those faces read lighter than L* 60 here
 // (the shine and the wall read mid-grey), white and silver hair 63 to 85.
 constexpr double kWhiteHairL = 65.0;
+// Such hair is dark: drawn in the brows' hue at most this light (L*), the median drawn for heads
+// labelled black (20.0) and brown (20.7) over the labelled faces; faint brows read mid-brown.
+constexpr double kDarkHairL = 21.0;
 
 double hueDistance(double a, double b)
 {
@@ -134,6 +137,13 @@ QColor medianColour(const std::vector<QColor> &colours)
 
 // Hair read as strands (haircolour.h) is drawn in its shade's look as far as its call is sure;
 // `seen` (the finder's plain median) where it read nothing.
+QColor darkHairOf(const QColor &c)
+{
+    LabColour lab = labOf(c);
+    lab.l = std::min(lab.l, kDarkHairL);
+    return colourOfLab(lab);
+}
+
 bool greyHairFits(const HairColourReading &reading, const AgeDecision &age)
 {
     return reading.hair.l >= kWhiteHairL || (age.group != AgeGroup::Child && age.elderly >= kGreyHairElderly);
@@ -415,7 +425,7 @@ void sampleColours(const QImage &original, const FaceModel &face, Style *style, 
         const bool greyTooYoung = !monochrome && found.hairReading.valid
             && classifyHair(found.hairReading).shade == HairShade::Grey && !greyHairFits(found.hairReading, found.age);
         hair = monochrome  ? hairFromGrey(qGray(found.parsedHair.rgb()))
-            : greyTooYoung ? browsOrPreset
+            : greyTooYoung ? darkHairOf(browsOrPreset)
                            : drawnHair(found.hairReading, found.parsedHair);
         hairOk = true;
         setHair(hair);
