@@ -422,10 +422,16 @@ void sampleColours(const QImage &original, const FaceModel &face, Style *style, 
         setHair(hair);
     }
     if (found.parsedHair.isValid() && !appearance.bald && !appearance.hat && !lightBesideTemples) {
-        const bool greyTooYoung = !monochrome && found.hairReading.valid
-            && classifyHair(found.hairReading).shade == HairShade::Grey && !greyHairFits(found.hairReading, found.age);
+        const bool greyRead
+            = !monochrome && found.hairReading.valid && classifyHair(found.hairReading).shade == HairShade::Grey;
+        const bool greyTooYoung = greyRead && !greyHairFits(found.hairReading, found.age);
+        // Grey strands on a face the age models take for an elderly one are grey hair, however
+        // near the colour's thresholds they read (grey hair over a dark room reads taupe): drawn
+        // as sure grey.
+        const bool greyOfAge = greyRead && found.age.group == AgeGroup::Elderly;
         hair = monochrome  ? hairFromGrey(qGray(found.parsedHair.rgb()))
             : greyTooYoung ? darkHairOf(browsOrPreset)
+            : greyOfAge    ? drawnHairColour(found.hairReading, HairShadeCall {HairShade::Grey, 1.0})
                            : drawnHair(found.hairReading, found.parsedHair);
         hairOk = true;
         setHair(hair);
