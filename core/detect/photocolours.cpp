@@ -135,8 +135,6 @@ QColor medianColour(const std::vector<QColor> &colours)
     return medianColour(px);
 }
 
-// Hair read as strands (haircolour.h) is drawn in its shade's look as far as its call is sure;
-// `seen` (the finder's plain median) where it read nothing.
 QColor darkHairOf(const QColor &c)
 {
     LabColour lab = labOf(c);
@@ -144,14 +142,29 @@ QColor darkHairOf(const QColor &c)
     return colourOfLab(lab);
 }
 
-bool greyHairFits(const HairColourReading &reading, const AgeDecision &age)
-{
-    return reading.hair.l >= kWhiteHairL || (age.group != AgeGroup::Child && age.elderly >= kGreyHairElderly);
-}
-
+// Hair read as strands (haircolour.h) is drawn in its shade's look as far as its call is sure;
+// `seen` (the finder's plain median) where it read nothing.
 QColor drawnHair(const HairColourReading &reading, const QColor &seen)
 {
     return reading.valid ? drawnHairColour(reading, classifyHair(reading)) : seen;
+}
+
+// The same for the head's hair, whose grey asks the face's age: grey strands on a face too young
+// for grey hair (kGreyHairElderly) that do not read white (kWhiteHairL) are dark hair, drawn in
+// `dark`'s hue (the brows'); on a face decided elderly they are grey hair, however near the
+// colour's thresholds they read (grey hair over a dark room reads taupe), drawn as sure grey.
+QColor drawnHeadHair(const HairColourReading &reading, const QColor &seen, const AgeDecision &age, const QColor &dark)
+{
+    if (!reading.valid)
+        return seen;
+    const HairShadeCall call = classifyHair(reading);
+    if (call.shade != HairShade::Grey)
+        return drawnHairColour(reading, call);
+    const bool ageFits
+        = reading.hair.l >= kWhiteHairL || (age.group != AgeGroup::Child && age.elderly >= kGreyHairElderly);
+    if (!ageFits)
+        return darkHairOf(dark);
+    return drawnHairColour(reading, age.group == AgeGroup::Elderly ? HairShadeCall {HairShade::Grey, 1.0} : call);
 }
 
 QColor mix(QColor a, QColor b, double t)
@@ -422,17 +435,8 @@ void sampleColours(const QImage &original, const FaceModel &face, Style *style, 
         setHair(hair);
     }
     if (found.parsedHair.isValid() && !appearance.bald && !appearance.hat && !lightBesideTemples) {
-        const bool greyRead
-            = !monochrome && found.hairReading.valid && classifyHair(found.hairReading).shade == HairShade::Grey;
-        const bool greyTooYoung = greyRead && !greyHairFits(found.hairReading, found.age);
-        // Grey strands on a face the age models take for an elderly one are grey hair, however
-        // near the colour's thresholds they read (grey hair over a dark room reads taupe): drawn
-        // as sure grey.
-        const bool greyOfAge = greyRead && found.age.group == AgeGroup::Elderly;
-        hair = monochrome  ? hairFromGrey(qGray(found.parsedHair.rgb()))
-            : greyTooYoung ? darkHairOf(browsOrPreset)
-            : greyOfAge    ? drawnHairColour(found.hairReading, HairShadeCall {HairShade::Grey, 1.0})
-                           : drawnHair(found.hairReading, found.parsedHair);
+        hair = monochrome ? hairFromGrey(qGray(found.parsedHair.rgb()))
+                          : drawnHeadHair(found.hairReading, found.parsedHair, found.age, browsOrPreset);
         hairOk = true;
         setHair(hair);
     }
