@@ -4,6 +4,7 @@
 #include "detect/photocolours.h"
 #include "drawnface.h"
 #include "render/style.h"
+#include "sampledfaces.h"
 #include "shareddata.h"
 #include "testmain.h"
 
@@ -143,20 +144,11 @@ private Q_SLOTS:
     // are toonface-bench likeness.attributes'.
     void labelledFaces()
     {
-        const QList<testing::LabelledFace> labelled = testing::labelledFaces();
-        if (labelled.isEmpty())
-            QSKIP(testing::kNoLabelledFaces);
+        TOONFACE_SAMPLED_FACES(sampled);
         std::map<QString, std::map<AgeGroup, int>> decided; // by label
-        for (const testing::LabelledFace &row : labelled) {
-            const QImage photo(row.photoPath);
-            QVERIFY2(!photo.isNull(), qPrintable(row.photoPath));
-            const DetectionResult r = detectFace(photo);
-            if (r.status == DetectStatus::ModelMissing)
-                QSKIP("the landmark model is not installed");
-            if (r.status != DetectStatus::Ok)
-                continue;
-            Style style = Style::preset(QStringLiteral("normal"));
-            sampleColours(photo, r.face, &style);
+        for (const testing::SampledFace &face : sampled.faces) {
+            const testing::LabelledFace &row = face.row;
+            const Style &style = face.style;
             ++decided[row["age_group"]][style.appearance.age];
         }
         auto count = [&](const char *label, AgeGroup g) { return decided[QLatin1StringView(label)][g]; };

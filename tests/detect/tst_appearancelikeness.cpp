@@ -3,6 +3,7 @@
 #include "detect/photocolours.h"
 #include "drawnface.h"
 #include "render/style.h"
+#include "sampledfaces.h"
 #include "shareddata.h"
 #include "testmain.h"
 
@@ -170,21 +171,12 @@ private Q_SLOTS:
     // toonface-bench likeness.attributes'.
     void labelledFaces()
     {
-        const QList<testing::LabelledFace> labelled = testing::labelledFaces();
-        if (labelled.isEmpty())
-            QSKIP(testing::kNoLabelledFaces);
+        TOONFACE_SAMPLED_FACES(sampled);
         int onWomenOrChildren = 0, hairDrawn = 0, hairRight = 0, glassesDrawn = 0, glassesRight = 0, faces = 0;
-        for (const testing::LabelledFace &row : labelled) {
-            const QImage photo(row.photoPath);
-            QVERIFY2(!photo.isNull(), qPrintable(row.photoPath));
-            const DetectionResult r = detectFace(photo);
-            if (r.status == DetectStatus::ModelMissing)
-                QSKIP("the landmark model is not installed");
-            if (r.status != DetectStatus::Ok)
-                continue;
+        for (const testing::SampledFace &face : sampled.faces) {
+            const testing::LabelledFace &row = face.row;
             ++faces;
-            Style style = Style::preset(QStringLiteral("normal"));
-            sampleColours(photo, r.face, &style);
+            const Style &style = face.style;
             const Appearance &a = style.appearance;
             const bool hair = row.flag("beard") || row.flag("moustache") || row.flag("goatee");
             if (a.moustache || a.beard || a.goatee) {

@@ -5,6 +5,7 @@
 #include "detect/photocolours.h"
 #include "drawnface.h"
 #include "render/style.h"
+#include "sampledfaces.h"
 #include "shareddata.h"
 #include "testmain.h"
 
@@ -266,24 +267,14 @@ private Q_SLOTS:
     // held-out ones are toonface-bench likeness.attributes').
     void labelledFacesByShade()
     {
-        const QList<testing::LabelledFace> labelled = testing::labelledFaces();
-        if (labelled.isEmpty())
-            QSKIP(testing::kNoLabelledFaces);
+        TOONFACE_SAMPLED_FACES(sampled);
         std::map<QString, std::pair<int, int>> byShade; // label: (right, drawn)
-        for (const testing::LabelledFace &row : labelled) {
-            const QString label = row["hair_colour"];
+        for (const testing::SampledFace &face : sampled.faces) {
+            const QString label = face.row["hair_colour"];
             if (label != QLatin1String("red") && label != QLatin1String("blond") && label != QLatin1String("grey")
                 && !(label == QLatin1String("black") && byShade[label].second < 12))
                 continue;
-            const QImage photo(row.photoPath);
-            QVERIFY2(!photo.isNull(), qPrintable(row.photoPath));
-            const DetectionResult r = detectFace(photo);
-            if (r.status == DetectStatus::ModelMissing)
-                QSKIP("the landmark model is not installed");
-            if (r.status != DetectStatus::Ok)
-                continue;
-            Style style = Style::preset(QStringLiteral("normal"));
-            sampleColours(photo, r.face, &style);
+            const Style &style = face.style;
             if (style.appearance.bald || style.appearance.hat)
                 continue;
             const HairShade drawn = shadeOfColour(style.components.value(QStringLiteral("hair")).fill,
@@ -303,23 +294,14 @@ private Q_SLOTS:
     // before, 8 after.
     void elderlyGreyHeadsAreDrawnGrey()
     {
-        const QList<testing::LabelledFace> labelled = testing::labelledFaces();
-        if (labelled.isEmpty())
-            QSKIP(testing::kNoLabelledFaces);
+        TOONFACE_SAMPLED_FACES(sampled);
         int heads = 0, drawnGrey = 0;
         QStringList other;
-        for (const testing::LabelledFace &row : labelled) {
+        for (const testing::SampledFace &face : sampled.faces) {
+            const testing::LabelledFace &row = face.row;
             if (row["age_group"] != QLatin1String("elderly") || row["hair_colour"] != QLatin1String("grey"))
                 continue;
-            const QImage photo(row.photoPath);
-            QVERIFY2(!photo.isNull(), qPrintable(row.photoPath));
-            const DetectionResult r = detectFace(photo);
-            if (r.status == DetectStatus::ModelMissing)
-                QSKIP("the landmark model is not installed");
-            if (r.status != DetectStatus::Ok)
-                continue;
-            Style style = Style::preset(QStringLiteral("normal"));
-            sampleColours(photo, r.face, &style);
+            const Style &style = face.style;
             if (style.appearance.bald || style.appearance.hat)
                 continue;
             const LabColour drawn = labOf(style.components.value(QStringLiteral("hair")).fill);
@@ -342,24 +324,15 @@ private Q_SLOTS:
     // before, all after.
     void greyHairBesideTheTemplesIsDrawnGrey()
     {
-        const QList<testing::LabelledFace> labelled = testing::labelledFaces();
-        if (labelled.isEmpty())
-            QSKIP(testing::kNoLabelledFaces);
+        TOONFACE_SAMPLED_FACES(sampled);
         int heads = 0;
         QStringList dark;
-        for (const testing::LabelledFace &row : labelled) {
+        for (const testing::SampledFace &face : sampled.faces) {
+            const testing::LabelledFace &row = face.row;
             if (row["hair_colour"] != QLatin1String("grey"))
                 continue;
-            const QImage photo(row.photoPath);
-            QVERIFY2(!photo.isNull(), qPrintable(row.photoPath));
-            const DetectionResult r = detectFace(photo);
-            if (r.status == DetectStatus::ModelMissing)
-                QSKIP("the landmark model is not installed");
-            if (r.status != DetectStatus::Ok)
-                continue;
-            Style style = Style::preset(QStringLiteral("normal"));
-            AppearanceFindings found;
-            sampleColours(photo, r.face, &style, &found);
+            const Style &style = face.style;
+            const AppearanceFindings &found = face.found;
             if (!found.templeHairSeen || found.templeLighter <= kRoomLighter || style.appearance.bald
                 || style.appearance.hat)
                 continue;
@@ -381,25 +354,16 @@ private Q_SLOTS:
     // 50 and of little colour (a dark taupe is dark hair).
     void youngDarkHeadsAreNotDrawnGrey()
     {
-        const QList<testing::LabelledFace> labelled = testing::labelledFaces();
-        if (labelled.isEmpty())
-            QSKIP(testing::kNoLabelledFaces);
+        TOONFACE_SAMPLED_FACES(sampled);
         int children = 0, young = 0, greyChildren = 0, greyYoung = 0;
         QStringList grey;
-        for (const testing::LabelledFace &row : labelled) {
+        for (const testing::SampledFace &face : sampled.faces) {
+            const testing::LabelledFace &row = face.row;
             const QString age = row["age_group"], hair = row["hair_colour"];
             if ((age != QLatin1String("child") && age != QLatin1String("young"))
                 || (hair != QLatin1String("black") && hair != QLatin1String("brown") && hair != QLatin1String("red")))
                 continue;
-            const QImage photo(row.photoPath);
-            QVERIFY2(!photo.isNull(), qPrintable(row.photoPath));
-            const DetectionResult r = detectFace(photo);
-            if (r.status == DetectStatus::ModelMissing)
-                QSKIP("the landmark model is not installed");
-            if (r.status != DetectStatus::Ok)
-                continue;
-            Style style = Style::preset(QStringLiteral("normal"));
-            sampleColours(photo, r.face, &style);
+            const Style &style = face.style;
             const LabColour drawn = labOf(style.components.value(QStringLiteral("hair")).fill);
             const bool drawnGrey = !style.appearance.bald && !style.appearance.hat && drawn.l >= 50.0
                 && std::hypot(drawn.a, drawn.b) < 15.0;
