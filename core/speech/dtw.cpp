@@ -42,6 +42,21 @@ Level fromSequence(const DtwSequence &s, int dim, const std::vector<int> &channe
     return l;
 }
 
+// Frame i of `from` halved (the mean of its frames 2i and 2i + 1) into frame i of `to`, which
+// may be `from` itself when frames are halved in increasing order: frames 2i and 2i + 1 are
+// then not yet overwritten.
+void halveFrame(const Level &from, Level &to, int i, int dim)
+{
+    const int a = 2 * i, b = std::min(2 * i + 1, from.frames - 1);
+    for (int d = 0; d < dim; ++d)
+        to.vectors[size_t(i) * size_t(dim) + size_t(d)] = 0.5f
+            * (from.vectors[size_t(a) * size_t(dim) + size_t(d)] + from.vectors[size_t(b) * size_t(dim) + size_t(d)]);
+    to.silence[size_t(i)] = 0.5f * (from.silence[size_t(a)] + from.silence[size_t(b)]);
+    to.pause[size_t(i)] = 0.5f * (from.pause[size_t(a)] + from.pause[size_t(b)]);
+    // A boundary in either half is a boundary of the coarser frame.
+    to.pauseAt[size_t(i)] = std::max(from.pauseAt[size_t(a)], from.pauseAt[size_t(b)]);
+}
+
 Level halve(const Level &l, int dim)
 {
     Level h;
@@ -50,33 +65,17 @@ Level halve(const Level &l, int dim)
     h.silence.assign(size_t(h.frames), 0.0f);
     h.pause.assign(size_t(h.frames), 0.0f);
     h.pauseAt.assign(size_t(h.frames), 0.0f);
-    for (int i = 0; i < h.frames; ++i) {
-        const int a = 2 * i, b = std::min(2 * i + 1, l.frames - 1);
-        for (int d = 0; d < dim; ++d)
-            h.vectors[size_t(i) * size_t(dim) + size_t(d)] = 0.5f
-                * (l.vectors[size_t(a) * size_t(dim) + size_t(d)] + l.vectors[size_t(b) * size_t(dim) + size_t(d)]);
-        h.silence[size_t(i)] = 0.5f * (l.silence[size_t(a)] + l.silence[size_t(b)]);
-        h.pause[size_t(i)] = 0.5f * (l.pause[size_t(a)] + l.pause[size_t(b)]);
-        // A boundary in either half is a boundary of the coarser frame.
-        h.pauseAt[size_t(i)] = std::max(l.pauseAt[size_t(a)], l.pauseAt[size_t(b)]);
-    }
+    for (int i = 0; i < h.frames; ++i)
+        halveFrame(l, h, i, dim);
     return h;
 }
 
-// halve() in place, to the same numbers: frame i of the result reads frames 2i and 2i + 1 of
-// `l`, which no earlier frame of the result has overwritten.
+// halve() in place, to the same numbers.
 void halveInPlace(Level &l, int dim)
 {
     const int frames = (l.frames + 1) / 2;
-    for (int i = 0; i < frames; ++i) {
-        const int a = 2 * i, b = std::min(2 * i + 1, l.frames - 1);
-        for (int d = 0; d < dim; ++d)
-            l.vectors[size_t(i) * size_t(dim) + size_t(d)] = 0.5f
-                * (l.vectors[size_t(a) * size_t(dim) + size_t(d)] + l.vectors[size_t(b) * size_t(dim) + size_t(d)]);
-        l.silence[size_t(i)] = 0.5f * (l.silence[size_t(a)] + l.silence[size_t(b)]);
-        l.pause[size_t(i)] = 0.5f * (l.pause[size_t(a)] + l.pause[size_t(b)]);
-        l.pauseAt[size_t(i)] = std::max(l.pauseAt[size_t(a)], l.pauseAt[size_t(b)]);
-    }
+    for (int i = 0; i < frames; ++i)
+        halveFrame(l, l, i, dim);
     l.frames = frames;
     l.vectors.resize(size_t(frames) * size_t(dim));
     l.vectors.shrink_to_fit();

@@ -2,6 +2,7 @@
 // through a minimal overlay player (tests/data/export/overlayplayer.html) and the highlight it
 // logs follows the overlay's clips, in the audio's own clock.
 
+#include "chromium.h"
 #include "export/epubbook.h"
 #include "export/epubzip.h"
 #include "face/averageface.h"
@@ -14,7 +15,6 @@
 #include <QFile>
 #include <QProcess>
 #include <QRegularExpression>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUrl>
@@ -44,21 +44,6 @@ struct Par
     QString audio;
     double begin = 0, end = 0;
 };
-
-void collect(const Node &n, const QString &name, QList<const Node *> *out)
-{
-    if (n.name == name)
-        out->append(&n);
-    for (const Node &c : n.children)
-        collect(c, name, out);
-}
-
-QList<const Node *> all(const Node &n, const QString &name)
-{
-    QList<const Node *> out;
-    collect(n, name, &out);
-    return out;
-}
 
 // The clock values the book writes ("12.345s").
 double seconds(const QString &v)
@@ -131,9 +116,7 @@ class TestEpubHighlight : public QObject
 private Q_SLOTS:
     void initTestCase()
     {
-        m_chromium = QStandardPaths::findExecutable(QStringLiteral("chromium"));
-        if (m_chromium.isEmpty())
-            m_chromium = QStandardPaths::findExecutable(QStringLiteral("chromium-browser"));
+        m_chromium = test::chromiumPath();
         if (m_chromium.isEmpty())
             QSKIP("Chromium is not installed (Debian package chromium): no browser to play the book in");
     }
@@ -200,11 +183,11 @@ private Q_SLOTS:
         Node opf;
         QVERIFY(test::parseXml(opfText.toUtf8(), &opf, &error));
         std::map<QString, const Node *> items;
-        for (const Node *item : all(opf, QStringLiteral("item")))
+        for (const Node *item : test::elementsNamed(opf, QStringLiteral("item")))
             items[item->attribute(QStringLiteral("id"))] = item;
         QVector<Par> pars;
         QStringList pages;
-        for (const Node *ref : all(opf, QStringLiteral("itemref"))) {
+        for (const Node *ref : test::elementsNamed(opf, QStringLiteral("itemref"))) {
             const Node *item = items[ref->attribute(QStringLiteral("idref"))];
             const QString overlay = item->attribute(QStringLiteral("media-overlay"));
             if (overlay.isEmpty())
@@ -213,7 +196,7 @@ private Q_SLOTS:
             const QString smilHref = items[overlay]->attribute(QStringLiteral("href"));
             Node smil;
             QVERIFY(test::parseXml(files[base + smilHref], &smil, &error));
-            for (const Node *par : all(smil, QStringLiteral("par"))) {
+            for (const Node *par : test::elementsNamed(smil, QStringLiteral("par"))) {
                 Par p;
                 p.page = pages.last();
                 for (const Node &c : par->children) {
