@@ -42,6 +42,21 @@ Level fromSequence(const DtwSequence &s, int dim, const std::vector<int> &channe
     return l;
 }
 
+// Frame i of `from` halved (the mean of its frames 2i and 2i + 1) into frame i of `to`, which
+// may be `from` itself when frames are halved in increasing order: frames 2i and 2i + 1 are
+// then not yet overwritten.
+void halveFrame(const Level &from, Level &to, int i, int dim)
+{
+    const int a = 2 * i, b = std::min(2 * i + 1, from.frames - 1);
+    for (int d = 0; d < dim; ++d)
+        to.vectors[size_t(i) * size_t(dim) + size_t(d)] = 0.5f
+            * (from.vectors[size_t(a) * size_t(dim) + size_t(d)] + from.vectors[size_t(b) * size_t(dim) + size_t(d)]);
+    to.silence[size_t(i)] = 0.5f * (from.silence[size_t(a)] + from.silence[size_t(b)]);
+    to.pause[size_t(i)] = 0.5f * (from.pause[size_t(a)] + from.pause[size_t(b)]);
+    // A boundary in either half is a boundary of the coarser frame.
+    to.pauseAt[size_t(i)] = std::max(from.pauseAt[size_t(a)], from.pauseAt[size_t(b)]);
+}
+
 Level halve(const Level &l, int dim)
 {
     Level h;
@@ -50,17 +65,34 @@ Level halve(const Level &l, int dim)
     h.silence.assign(size_t(h.frames), 0.0f);
     h.pause.assign(size_t(h.frames), 0.0f);
     h.pauseAt.assign(size_t(h.frames), 0.0f);
-    for (int i = 0; i < h.frames; ++i) {
-        const int a = 2 * i, b = std::min(2 * i + 1, l.frames - 1);
-        for (int d = 0; d < dim; ++d)
-            h.vectors[size_t(i) * size_t(dim) + size_t(d)] = 0.5f
-                * (l.vectors[size_t(a) * size_t(dim) + size_t(d)] + l.vectors[size_t(b) * size_t(dim) + size_t(d)]);
-        h.silence[size_t(i)] = 0.5f * (l.silence[size_t(a)] + l.silence[size_t(b)]);
-        h.pause[size_t(i)] = 0.5f * (l.pause[size_t(a)] + l.pause[size_t(b)]);
-        // A boundary in either half is a boundary of the coarser frame.
-        h.pauseAt[size_t(i)] = std::max(l.pauseAt[size_t(a)], l.pauseAt[size_t(b)]);
-    }
+    for (int i = 0; i < h.frames; ++i)
+        halveFrame(l, h, i, dim);
     return h;
+}
+
+// halve() in place, to the same numbers.
+void halveInPlace(Level &l, int dim)
+{
+    const int frames = (l.frames + 1) / 2;
+    for (int i = 0; i < frames; ++i)
+        halveFrame(l, l, i, dim);
+    l.frames = frames;
+    l.vectors.resize(size_t(frames) * size_t(dim));
+    l.vectors.shrink_to_fit();
+    for (std::vector<float> *v : {&l.silence, &l.pause, &l.pauseAt}) {
+        v->resize(size_t(frames));
+        v->shrink_to_fit();
+    }
+}
+
+// Level `level` (>= 1) of the finest level `l0`: halved that many times, the same numbers as
+// halving level by level, with only one coarser level held at a time.
+Level levelOf(const Level &l0, int level, int dim)
+{
+    Level l = halve(l0, dim);
+    for (int k = 1; k < level; ++k)
+        halveInPlace(l, dim);
+    return l;
 }
 
 using Path = std::vector<std::pair<int, int>>;
@@ -311,9 +343,21 @@ std::vector<std::pair<int, int>> dtwPath(
         const long band = 2L * (long(options.band) >> (as.size() - 1)) + 1;
         return options.band > 0 ? std::min(long(bs.back().frames), band) : long(bs.back().frames);
     };
+    // Of the levels between the finest and the coarsest none is held: each is made again from
+    // the finest when its turn to be refined comes (the coarser levels together are as large as
+    // the finest; an hour's recording and reference: 45 MB).
     while (long(as.back().frames) * width() > options.maxFullCells && as.back().frames > 8 && bs.back().frames > 8) {
-        as.push_back(halve(as.back(), dim));
-        bs.push_back(halve(bs.back(), dim));
+        if (as.size() == 1) {
+            as.push_back(halve(as.back(), dim));
+            bs.push_back(halve(bs.back(), dim));
+            continue;
+        }
+        for (std::vector<Level> *levels : {&as, &bs}) {
+            Level coarser = std::move(levels->back());
+            halveInPlace(coarser, dim);
+            levels->back() = Level {};
+            levels->push_back(std::move(coarser));
+        }
     }
     int level = int(as.size()) - 1;
     const Level &ca = as[size_t(level)], &cb = bs[size_t(level)];
@@ -351,6 +395,14 @@ std::vector<std::pair<int, int>> dtwPath(
     while (level > 0 && !path.empty()) {
         const int radius = level == coarsest ? std::max(options.radius, options.coarseRadius) : options.radius;
         --level;
+        // The coarser levels are done with once their path is known: freed before the finer
+        // level's corridor is searched.
+        as.resize(size_t(level) + 1);
+        bs.resize(size_t(level) + 1);
+        if (level > 0 && as[size_t(level)].frames == 0) {
+            as[size_t(level)] = levelOf(as[0], level, dim);
+            bs[size_t(level)] = levelOf(bs[0], level, dim);
+        }
         const Level &fa = as[size_t(level)];
         const Level &fb = bs[size_t(level)];
         std::vector<int> flo(size_t(fa.frames), std::numeric_limits<int>::max()), fhi(size_t(fa.frames), -1);

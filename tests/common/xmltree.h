@@ -76,4 +76,20 @@ inline const Node *findId(const Node &n, const QString &id)
     return nullptr;
 }
 
+// Every element named `name` (qualified) in `n`, `n` included, in document order.
+inline void collectNamed(const Node &n, const QString &name, QList<const Node *> *out)
+{
+    if (n.name == name)
+        out->append(&n);
+    for (const Node &c : n.children)
+        collectNamed(c, name, out);
+}
+
+inline QList<const Node *> elementsNamed(const Node &n, const QString &name)
+{
+    QList<const Node *> out;
+    collectNamed(n, name, &out);
+    return out;
+}
+
 } // namespace toonface::test

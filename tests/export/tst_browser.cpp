@@ -1,4 +1,5 @@
 #include "animationfixture.h"
+#include "chromium.h"
 #include "imagedifference.h"
 #include "testmain.h"
 
@@ -16,7 +17,6 @@
 #include <QImage>
 #include <QProcess>
 #include <QRegularExpression>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUrl>
@@ -134,9 +134,7 @@ private:
 private Q_SLOTS:
     void initTestCase()
     {
-        m_chromium = QStandardPaths::findExecutable(QStringLiteral("chromium"));
-        if (m_chromium.isEmpty())
-            m_chromium = QStandardPaths::findExecutable(QStringLiteral("chromium-browser"));
+        m_chromium = test::chromiumPath();
         if (m_chromium.isEmpty())
             QSKIP("Chromium is not installed (Debian package chromium): the browser cannot start");
         QVERIFY(m_dir.isValid());

@@ -94,21 +94,6 @@ Node xml(const QByteArray &data)
     return root;
 }
 
-void collect(const Node &n, const QString &name, QList<const Node *> *out)
-{
-    if (n.name == name)
-        out->append(&n);
-    for (const Node &c : n.children)
-        collect(c, name, out);
-}
-
-QList<const Node *> all(const Node &n, const QString &name)
-{
-    QList<const Node *> out;
-    collect(n, name, &out);
-    return out;
-}
-
 qint64 clipMs(const QString &value)
 {
     static const QRegularExpression re(QStringLiteral("^(\\d+)\\.(\\d{3})s$"));
@@ -137,7 +122,7 @@ struct Clip
 QVector<Clip> clipsOf(const Node &smil)
 {
     QVector<Clip> clips;
-    for (const Node *par : all(smil, QStringLiteral("par"))) {
+    for (const Node *par : test::elementsNamed(smil, QStringLiteral("par"))) {
         Clip c;
         for (const Node &child : par->children) {
             if (child.name == QLatin1StringView("text"))
@@ -360,21 +345,22 @@ private Q_SLOTS:
 
         // Container -> package document.
         const Node container = xml(b.entry(QStringLiteral("META-INF/container.xml")));
-        const QString opfPath
-            = all(container, QStringLiteral("rootfile")).value(0)->attribute(QStringLiteral("full-path"));
+        const QString opfPath = test::elementsNamed(container, QStringLiteral("rootfile"))
+                                    .value(0)
+                                    ->attribute(QStringLiteral("full-path"));
         const QString base = opfPath.left(opfPath.lastIndexOf(QLatin1Char('/')) + 1);
         const Node opf = xml(b.entry(opfPath));
         QCOMPARE(opf.attribute(QStringLiteral("version")), QStringLiteral("3.0"));
-        QCOMPARE(all(opf, QStringLiteral("dc:language")).size(), 1);
-        QCOMPARE(all(opf, QStringLiteral("dc:title")).size(), 1);
-        QCOMPARE(all(opf, QStringLiteral("dc:creator")).size(), 1);
+        QCOMPARE(test::elementsNamed(opf, QStringLiteral("dc:language")).size(), 1);
+        QCOMPARE(test::elementsNamed(opf, QStringLiteral("dc:title")).size(), 1);
+        QCOMPARE(test::elementsNamed(opf, QStringLiteral("dc:creator")).size(), 1);
         QVERIFY(b.entry(opfPath).contains("<dc:language>" + language.toUtf8() + "</dc:language>"));
         QVERIFY(b.entry(opfPath).contains("<dc:creator id=\"tf-author\">A. Writer</dc:creator>"));
         QVERIFY(b.entry(opfPath).contains("<dc:title>" + text.section(QLatin1Char('\n'), 0, 0).mid(2).toUtf8()));
         QVERIFY(b.entry(opfPath).contains("2026-01-02T03:04:05Z"));
 
         std::map<QString, const Node *> items;
-        for (const Node *item : all(opf, QStringLiteral("item"))) {
+        for (const Node *item : test::elementsNamed(opf, QStringLiteral("item"))) {
             items[item->attribute(QStringLiteral("id"))] = item;
             QVERIFY2(b.has(base + item->attribute(QStringLiteral("href"))),
                 qPrintable(item->attribute(QStringLiteral("href"))));
@@ -406,7 +392,7 @@ private Q_SLOTS:
             qPrintable(QStringLiteral("%1 ms of overlays, %2 s of sound").arg(total).arg(r.duration)));
 
         // The spine's pages: each with its overlay, whose clips tile its stretch of the sound.
-        const QList<const Node *> spine = all(opf, QStringLiteral("itemref"));
+        const QList<const Node *> spine = test::elementsNamed(opf, QStringLiteral("itemref"));
         QCOMPARE(spine.size(), r.pages + 1); // the cover first
         std::map<QString, qint64> audioEnd; // how far each audio file has been read
         int sentenceIndex = 0;
@@ -418,8 +404,8 @@ private Q_SLOTS:
             const QString pageHref = page->attribute(QStringLiteral("href"));
             const QByteArray pageData = b.entry(base + pageHref);
             const Node pageXml = xml(pageData);
-            QCOMPARE(all(pageXml, QStringLiteral("svg")).size(), 1);
-            QVERIFY(!all(pageXml, QStringLiteral("animate")).isEmpty());
+            QCOMPARE(test::elementsNamed(pageXml, QStringLiteral("svg")).size(), 1);
+            QVERIFY(!test::elementsNamed(pageXml, QStringLiteral("animate")).isEmpty());
             const QString smilHref = items[overlayId]->attribute(QStringLiteral("href"));
             const QVector<Clip> clips = clipsOf(xml(b.entry(base + smilHref)));
             QVERIFY(!clips.isEmpty());
@@ -478,13 +464,13 @@ private Q_SLOTS:
 
         // The navigation: one entry per chapter heading, nested by level, each on its first page.
         const Node nav = xml(b.entry(base + QStringLiteral("nav.xhtml")));
-        const QList<const Node *> links = all(nav, QStringLiteral("a"));
+        const QList<const Node *> links = test::elementsNamed(nav, QStringLiteral("a"));
         QCOMPARE(links.size(), r.chapters);
         QCOMPARE(r.chapters, int(text.count(QRegularExpression(QStringLiteral("(^|\\n)#")))));
         for (const Node *a : links)
             QVERIFY(b.has(base + a->attribute(QStringLiteral("href"))));
         if (text.contains(QLatin1StringView("## Night")))
-            QCOMPARE(all(nav, QStringLiteral("ol")).size(), 2);
+            QCOMPARE(test::elementsNamed(nav, QStringLiteral("ol")).size(), 2);
     }
 
     // A recording of the shared data, made into a book by toonface-cli: every clip of the
@@ -548,7 +534,7 @@ private Q_SLOTS:
         // A sentence's highlight (its <seq>) starts with its first syllable.
         if (text.contains(QStringLiteral("？"))) {
             const Node smil = xml(b.entry(QStringLiteral("OEBPS/smil/p00001.smil")));
-            QCOMPARE(all(smil, QStringLiteral("seq")).size(), 2);
+            QCOMPARE(test::elementsNamed(smil, QStringLiteral("seq")).size(), 2);
         }
 
         if (epubcheckJar().isEmpty() || QStandardPaths::findExecutable(QStringLiteral("java")).isEmpty())
@@ -624,11 +610,11 @@ private Q_SLOTS:
         const Book b = readBook(req.outputPath);
         const Node opf = xml(b.entry(QStringLiteral("OEBPS/package.opf")));
         std::map<QString, const Node *> items;
-        for (const Node *item : all(opf, QStringLiteral("item")))
+        for (const Node *item : test::elementsNamed(opf, QStringLiteral("item")))
             items[item->attribute(QStringLiteral("href"))] = item;
         const QRegularExpression videoRe(QStringLiteral("<video src=\"../(video/p\\d{5}\\.mp4)\""));
         int pages = 0;
-        for (const Node *ref : all(opf, QStringLiteral("itemref"))) {
+        for (const Node *ref : test::elementsNamed(opf, QStringLiteral("itemref"))) {
             const Node *page = nullptr;
             for (const auto &[href, item] : items) {
                 if (item->attribute(QStringLiteral("id")) == ref->attribute(QStringLiteral("idref")))
@@ -642,8 +628,8 @@ private Q_SLOTS:
             QCOMPARE(page->attribute(QStringLiteral("properties")), QString()); // no SVG in it
             const QByteArray pageData = b.entry(QStringLiteral("OEBPS/") + pageHref);
             const Node pageXml = xml(pageData);
-            QCOMPARE(all(pageXml, QStringLiteral("svg")).size(), 0);
-            QCOMPARE(all(pageXml, QStringLiteral("video")).size(), 1);
+            QCOMPARE(test::elementsNamed(pageXml, QStringLiteral("svg")).size(), 0);
+            QCOMPARE(test::elementsNamed(pageXml, QStringLiteral("video")).size(), 1);
             const QRegularExpressionMatch m = videoRe.match(QString::fromUtf8(pageData));
             QVERIFY2(m.hasMatch(), pageData.constData());
             const QString videoHref = m.captured(1);
