@@ -148,6 +148,19 @@ double overlap(const QPainterPath &a, const QPainterPath &b, QSize size)
     return either > 0 ? double(both) / double(either) : 0.0;
 }
 
+// The skins and hair colours the drawn heads are painted in.
+const QColor kLight(240, 205, 185), kMedium(196, 140, 105);
+const QColor kBrown(70, 48, 34), kBlond(200, 165, 95), kBlack(25, 22, 22);
+
+// A drawn photo of a head (styled()), in these colours.
+QImage photoOf(const FaceModel &drawn, QColor skin, QColor hair)
+{
+    DrawnFaceOptions o;
+    o.skin = skin;
+    o.hair = hair;
+    return testing::drawnFace(o, drawn);
+}
+
 } // namespace
 
 class TestHairOutline : public QObject
@@ -160,17 +173,15 @@ private Q_SLOTS:
         QTest::addColumn<int>("kind");
         QTest::addColumn<QColor>("skin");
         QTest::addColumn<QColor>("hair");
-        const QColor light(240, 205, 185), medium(196, 140, 105);
-        const QColor brown(70, 48, 34), blond(200, 165, 95), black(25, 22, 22);
-        QTest::newRow("short, brown") << int(Hairdo::Short) << light << brown;
-        QTest::newRow("long, brown") << int(Hairdo::Long) << light << brown;
-        QTest::newRow("curly, blond") << int(Hairdo::Curly) << light << blond;
-        QTest::newRow("long, black") << int(Hairdo::Long) << medium << black;
-        QTest::newRow("fringe") << int(Hairdo::Fringe) << light << brown;
-        QTest::newRow("tied back") << int(Hairdo::TiedBack) << light << brown;
-        QTest::newRow("tied back, black") << int(Hairdo::TiedBack) << medium << black;
-        QTest::newRow("curly, wide") << int(Hairdo::Curly) << light << brown;
-        QTest::newRow("curly, black") << int(Hairdo::Curly) << medium << black;
+        QTest::newRow("short, brown") << int(Hairdo::Short) << kLight << kBrown;
+        QTest::newRow("long, brown") << int(Hairdo::Long) << kLight << kBrown;
+        QTest::newRow("curly, blond") << int(Hairdo::Curly) << kLight << kBlond;
+        QTest::newRow("long, black") << int(Hairdo::Long) << kMedium << kBlack;
+        QTest::newRow("fringe") << int(Hairdo::Fringe) << kLight << kBrown;
+        QTest::newRow("tied back") << int(Hairdo::TiedBack) << kLight << kBrown;
+        QTest::newRow("tied back, black") << int(Hairdo::TiedBack) << kMedium << kBlack;
+        QTest::newRow("curly, wide") << int(Hairdo::Curly) << kLight << kBrown;
+        QTest::newRow("curly, black") << int(Hairdo::Curly) << kMedium << kBlack;
     }
 
     // Starting from the average head's outline (what the search gives where it sees nothing),
@@ -183,10 +194,7 @@ private Q_SLOTS:
         QFETCH(QColor, skin);
         QFETCH(QColor, hair);
         const FaceModel drawn = styled(Hairdo(kind));
-        DrawnFaceOptions o;
-        o.skin = skin;
-        o.hair = hair;
-        const QImage photo = testing::drawnFace(o, drawn);
+        const QImage photo = photoOf(drawn, skin, hair);
         FaceModel face = testing::drawnFaceModel();
         const double es0 = es0Of(face);
         const HeadParse parse = parseHead(photo, face);
@@ -349,27 +357,22 @@ private Q_SLOTS:
     void cutCrownFollowsTheSides_data()
     {
         QTest::addColumn<int>("kind");
-        QTest::addColumn<QColor>("hair");
         QTest::addColumn<QColor>("skin");
-        const QColor light(240, 205, 185), medium(196, 140, 105);
-        const QColor brown(70, 48, 34), black(25, 22, 22);
+        QTest::addColumn<QColor>("hair");
         // (Brown long hair on a light skin is left out: the crop's parse loses the image-left
         // curtain, which the whole head's parse follows, and that side ends at the eyes.)
-        QTest::newRow("long, black") << int(Hairdo::Long) << black << light;
-        QTest::newRow("long, black, medium skin") << int(Hairdo::Long) << black << medium;
-        QTest::newRow("short") << int(Hairdo::Short) << brown << light;
-        QTest::newRow("tied back") << int(Hairdo::TiedBack) << black << light;
+        QTest::newRow("long, black") << int(Hairdo::Long) << kLight << kBlack;
+        QTest::newRow("long, black, medium skin") << int(Hairdo::Long) << kMedium << kBlack;
+        QTest::newRow("short") << int(Hairdo::Short) << kLight << kBrown;
+        QTest::newRow("tied back") << int(Hairdo::TiedBack) << kLight << kBlack;
     }
     void cutCrownFollowsTheSides()
     {
         QFETCH(int, kind);
-        QFETCH(QColor, hair);
         QFETCH(QColor, skin);
+        QFETCH(QColor, hair);
         const FaceModel drawn = styled(Hairdo(kind));
-        DrawnFaceOptions o;
-        o.hair = hair;
-        o.skin = skin;
-        const QImage whole = testing::drawnFace(o, drawn);
+        const QImage whole = photoOf(drawn, skin, hair);
         const double es0 = es0Of(drawn);
         const int top = int(drawn.point("4.1").y() - 0.6 * es0);
         const QImage cropped = whole.copy(0, top, whole.width(), whole.height() - top);
