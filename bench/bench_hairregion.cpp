@@ -28,7 +28,8 @@
 // - against the labelled hair of the faces that have a label map (masks/, CelebAMask-HQ), and
 // - against the parse's hair (headparse.h: the person's pixels that are not skin, above the
 //   brows all of them, beside the face those of the crown's hair colour), on the faces whose
-//   parse saw the crown's hair and the whole head (no headwear labelled).
+//   parse saw the crown's hair and the whole head (no headwear labelled), and apart on the tight
+//   crops that cut the crown off, within the photo (the hair beside the face).
 // TOONFACE_FACE_CACHE=DIR reads the faces from there (a cache filled by another build of the
 // detector measures that build's outlines: before and after a change, on the same photos).
 
@@ -123,8 +124,8 @@ QJsonObject hairRegion()
     const int lengthCol = int(header.indexOf(QStringLiteral("hair_length")));
     std::clock_t cpu = 0;
     QStringList report;
-    std::vector<double> parsedIou;
-    std::map<QString, std::vector<double>> byLength;
+    std::vector<double> parsedIou, cropIou;
+    std::map<QString, std::vector<double>> byLength, cropByLength;
     QJsonArray labelled;
     int faces = 0;
     while (!in.atEnd()) {
@@ -157,16 +158,23 @@ QJsonObject hairRegion()
             labelled.append(QJsonObject {{QStringLiteral("file"), file}, {QStringLiteral("iou"), v}});
             report << QStringLiteral("%1: IoU with the labelled hair %2").arg(file).arg(v, 0, 'f', 3);
         }
-        // Against the parse's hair, where it saw the crown's hair and the whole head.
+        // Against the parse's hair, where it saw the crown's hair and the whole head; and, apart,
+        // on the tight crops that cut the crown off (the hair beside the face, in the colour the
+        // temples gave, below the photo's top edge: what the crop shows).
         const HeadParse parse = parseHead(photo, *face);
-        if (parse.valid && parse.hairSeen && !parse.crownCut && !parse.topCut && c[hatCol] != QLatin1String("1")) {
+        const bool whole = parse.hairSeen && !parse.crownCut && !parse.topCut;
+        const bool crop = parse.crownCut && parse.templeHairSeen && !parse.roomFall;
+        if (parse.valid && (whole || crop) && c[hatCol] != QLatin1String("1")) {
             cv::Mat inside(parse.size.height(), parse.size.width(), CV_8UC1);
             for (int y = 0; y < inside.rows; ++y)
                 for (int x = 0; x < inside.cols; ++x)
                     inside.at<std::uint8_t>(y, x) = parse.at(x, y) == HeadParse::Outside ? 0 : 255;
             const double v = iou(drawnHair(*face, parse.toWork, parse.size), parsedHair(parse, *face), inside);
-            parsedIou.push_back(v);
-            byLength[c[lengthCol]].push_back(v);
+            (whole ? parsedIou : cropIou).push_back(v);
+            if (whole)
+                byLength[c[lengthCol]].push_back(v);
+            else
+                cropByLength[c[lengthCol]].push_back(v);
         }
         cpu += std::clock() - start;
     }
@@ -184,6 +192,11 @@ QJsonObject hairRegion()
                   .arg(faces)
                   .arg(parsedIou.empty() ? QStringLiteral("none") : summary(parsedIou));
     for (const auto &[length, v] : byLength)
+        report << QStringLiteral("  labelled %1: %2").arg(length, summary(v));
+    report << QStringLiteral(
+        "tight crops (crown cut off): IoU of the drawn hair with the parse's hair below the edge: %1")
+                  .arg(cropIou.empty() ? QStringLiteral("none") : summary(cropIou));
+    for (const auto &[length, v] : cropByLength)
         report << QStringLiteral("  labelled %1: %2").arg(length, summary(v));
     report << QStringLiteral("CPU seconds measuring (detection not counted): %1")
                   .arg(double(cpu) / CLOCKS_PER_SEC, 0, 'f', 1);

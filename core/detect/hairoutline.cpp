@@ -110,7 +110,13 @@ std::vector<QPointF> resample(const std::vector<QPointF> &line, int count)
 HairSilhouette hairSilhouette(const HeadParse &parse)
 {
     HairSilhouette out;
-    if (!parse.valid || !parse.hairSeen || parse.crownCut || parse.work.isNull())
+    // A tight crop cuts the crown off (the forehead's skin runs to the photo's top edge): the hair
+    // beside the face is still seen below that edge, in the colour the temples gave (unless that
+    // sample was the room, HeadParse::roomFall). Its sides are read from the edge down; above the
+    // edge the search's outline stays (outlineHairFromParse), as where hair runs up to the edge.
+    const bool cropped = parse.crownCut;
+    if (!parse.valid || parse.work.isNull() || (!parse.hairSeen && !(cropped && parse.templeHairSeen))
+        || (cropped && parse.roomFall))
         return out;
     const int width = parse.size.width(), height = parse.size.height();
     const QImage rgb = parse.work.convertToFormat(QImage::Format_RGB888);
@@ -127,7 +133,14 @@ HairSilhouette hairSilhouette(const HeadParse &parse)
     };
     const double mid = width / 2.0;
     const double eyeY = (parse.sideCheeks[0][0].y() + parse.sideCheeks[1][0].y()) / 2.0;
-    const int top = std::clamp(int(std::lround(parse.browTop - parse.headHeight * d)), 0, height - 1);
+    int top = std::clamp(int(std::lround(parse.browTop - parse.headHeight * d)), 0, height - 1);
+    if (cropped) { // the photo's top edge over the midline
+        top = 0;
+        while (top < height - 1 && parse.at(int(width / 2), top) == HeadParse::Outside)
+            ++top;
+        if (top >= parse.browTop)
+            return out;
+    }
     const int browRow = int(std::ceil(parse.browTop));
     const int gap = std::max(1, int(std::lround(kGap * d)));
     const int fallGap = std::max(1, int(std::lround(kFallGap * d)));
@@ -173,8 +186,10 @@ HairSilhouette hairSilhouette(const HeadParse &parse)
             // The head or its hair goes on beyond the photo's side above the eyes: how wide it
             // is, is not seen (the search's outline stays). A few rows cut are the photo's top
             // edge, slanting across the rows of a tilted head; below the eyes the fall goes on
-            // along the edge.
-            if (cut && y < eyeY && ++cutRows > kMaxCutRows * d)
+            // along the edge. A tight crop's hair runs off its sides more often than not (long
+            // hair, curls): it is drawn as wide as the photo shows it, no wider (kMaxSpread still
+            // bounds it, outlineHairFromParse).
+            if (cut && y < eyeY && !cropped && ++cutRows > kMaxCutRows * d)
                 return out;
             const bool hairy = head ? last >= 0 : found >= kMinHair * d;
             if (hairy) {
@@ -208,7 +223,7 @@ HairSilhouette hairSilhouette(const HeadParse &parse)
     for (int y = top; y <= lastRow[1]; ++y)
         out.right.emplace_back(extent[1][size_t(y - top)], y);
     out.top = top;
-    out.topCut = parse.topCut;
+    out.topCut = parse.topCut || cropped;
     return out;
 }
 
