@@ -2039,7 +2039,7 @@
     </message>
     <message>
         <source>Off: the project has a sound already (%1). Tick to add the clip&apos;s as well.</source>
-        <translation>未勾选：项目已有声音（%1）。勾选即可一并加入视频的声音。</translation>
+        <translation>未勾选：项目已有声音（%1）。勾选即可一并加入片段的声音。</translation>
     </message>
 </context>
 <context>

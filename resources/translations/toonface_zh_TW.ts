@@ -2039,7 +2039,7 @@
     </message>
     <message>
         <source>Off: the project has a sound already (%1). Tick to add the clip&apos;s as well.</source>
-        <translation>未勾選：專案已有聲音（%1）。勾選即可一併加入影片的聲音。</translation>
+        <translation>未勾選：專案已有聲音（%1）。勾選即可一併加入片段的聲音。</translation>
     </message>
 </context>
 <context>

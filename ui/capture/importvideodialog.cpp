@@ -176,8 +176,10 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     m_replaceOverlap->setVisible(false);
     m_soundNote->setObjectName(QStringLiteral("soundNote"));
     m_soundNote->setVisible(false);
-    // As wide as the dialog, never wider (the whole text is its tooltip too).
-    m_soundNote->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    // Wrapped (the recordings' names can be long), its two lines' room kept while shown: the
+    // layout does not grow the dialog for a wrapped label's lines.
+    m_soundNote->setWordWrap(true);
+    m_soundNote->setMinimumHeight(2 * m_soundNote->fontMetrics().lineSpacing());
     form->addRow(tr("Sound:"), soundBox);
     form->addRow(tr("Starts:"), placeBox);
     if (!document->hasFace())
