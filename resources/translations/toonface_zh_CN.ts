@@ -807,10 +807,6 @@
         <translation>检测步骤(&amp;S)</translation>
     </message>
     <message>
-        <source>Detection Steps</source>
-        <translation>检测步骤</translation>
-    </message>
-    <message>
         <source>Step:</source>
         <translation>步骤：</translation>
     </message>
@@ -1035,6 +1031,10 @@
     <message>
         <source>Untitled</source>
         <translation>未命名</translation>
+    </message>
+    <message>
+        <source>Untitled project</source>
+        <translation>未命名项目</translation>
     </message>
 </context>
 <context>
@@ -2036,6 +2036,10 @@
     <message>
         <source>Frame %1 was chosen: %2. Pick another if it is not at rest.</source>
         <translation>已选第 %1 帧：%2。若不是静止的，请另选一帧。</translation>
+    </message>
+    <message>
+        <source>Off: the project has a sound already (%1). Tick to add the clip&apos;s as well.</source>
+        <translation>未勾选：项目已有声音（%1）。勾选即可一并加入片段的声音。</translation>
     </message>
 </context>
 <context>

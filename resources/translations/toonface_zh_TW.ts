@@ -807,10 +807,6 @@
         <translation>偵測步驟(&amp;S)</translation>
     </message>
     <message>
-        <source>Detection Steps</source>
-        <translation>偵測步驟</translation>
-    </message>
-    <message>
         <source>Step:</source>
         <translation>步驟：</translation>
     </message>
@@ -1035,6 +1031,10 @@
     <message>
         <source>Untitled</source>
         <translation>未命名</translation>
+    </message>
+    <message>
+        <source>Untitled project</source>
+        <translation>未命名專案</translation>
     </message>
 </context>
 <context>
@@ -2036,6 +2036,10 @@
     <message>
         <source>Frame %1 was chosen: %2. Pick another if it is not at rest.</source>
         <translation>已選第 %1 影格：%2。若不是靜止的，請另選一個。</translation>
+    </message>
+    <message>
+        <source>Off: the project has a sound already (%1). Tick to add the clip&apos;s as well.</source>
+        <translation>未勾選：專案已有聲音（%1）。勾選即可一併加入片段的聲音。</translation>
     </message>
 </context>
 <context>

@@ -344,7 +344,12 @@ private Q_SLOTS:
         auto *useSound = child<QCheckBox>(dialog, "useSound");
         auto *replace = child<QCheckBox>(dialog, "replaceOverlap");
         QVERIFY(useSound->isEnabled()); // the clip has sound
-        QVERIFY(useSound->isChecked()); // a new clip: it replaces nothing
+        // Off, since the project has a sound; the user ticks it to have both.
+        QVERIFY(!useSound->isChecked());
+        QVERIFY(!replace->isVisible());
+        clickBox(useSound);
+        QVERIFY(useSound->isChecked());
+        QVERIFY(!child<QLabel>(dialog, "soundNote")->isVisible());
         // It would play over the recording: the dialog says so, and replaces it only on request.
         QVERIFY(replace->isVisible());
         QVERIFY(!replace->isChecked());
@@ -359,6 +364,42 @@ private Q_SLOTS:
         QCOMPARE(clips.size(), 2);
         QVERIFY(clips.contains(recording));
         QVERIFY(std::any_of(clips.begin(), clips.end(), [&](const AudioClip &c) { return c.path == m_talking; }));
+    }
+
+    // The clip's sound is on when the project has none, off (and the dialog says why) when it
+    // has one: both would play at once.
+    void soundDefaultsToOffWhenTheProjectHasOne_data()
+    {
+        QTest::addColumn<bool>("projectHasSound");
+        QTest::newRow("no sound yet") << false;
+        QTest::newRow("a recording") << true;
+    }
+
+    void soundDefaultsToOffWhenTheProjectHasOne()
+    {
+        QFETCH(bool, projectHasSound);
+        if (m_talking.isEmpty())
+            QSKIP("astronaut.png is not installed (package python3-skimage)");
+        Document doc;
+        fillBusy(doc);
+        if (projectHasSound) {
+            Animation a = doc.animation();
+            a.timeline.setAudioClips({AudioClip {m_dir.filePath(QStringLiteral("take one.wav")), 4.0, 2.0}});
+            doc.changeAnimation(a, QStringLiteral("sound"));
+        }
+        ImportVideoDialog dialog(&doc, 0.0);
+        dialog.show();
+        QVERIFY(dialog.openClip(m_talking));
+        auto *useSound = child<QCheckBox>(dialog, "useSound");
+        auto *note = child<QLabel>(dialog, "soundNote");
+        QVERIFY(useSound->isEnabled());
+        QCOMPARE(useSound->isChecked(), !projectHasSound);
+        QCOMPARE(note->isVisible(), projectHasSound);
+        if (projectHasSound) {
+            QVERIFY2(note->text().contains(QStringLiteral("take one.wav")), qPrintable(note->text()));
+            clickBox(useSound); // the user's choice: the note has said its piece
+            QVERIFY(!note->isVisible());
+        }
     }
 
     void snappedMouthGivesMouthKeys()

@@ -33,6 +33,34 @@ private Q_SLOTS:
         QCOMPARE(action("actionRedo")->text(), QStringLiteral("&Redo Move Upper lip, left peak"));
     }
 
+    // The title names the document as a desktop editor does: the project, never the photo (which
+    // is not written), with the modified mark; before a save it is "Untitled project".
+    void titleNamesTheProject()
+    {
+        makeWindow();
+        Document *doc = m_window->document();
+        fixture::fill(*doc, m_photoPath); // a photo opened and detected: not saved yet
+        const auto shown = [this] { return m_window->windowHandle()->title(); };
+        QCOMPARE(m_window->windowTitle(), QStringLiteral("Untitled project[*] — Toonface"));
+        QCOMPARE(shown(), QStringLiteral("Untitled project — Toonface"));
+        doc->movePoint(pt::idx("8.9"), QPointF(190, 320), true);
+        QCOMPARE(shown(), QStringLiteral("Untitled project* — Toonface"));
+        QVERIFY(!shown().contains(QStringLiteral("portrait.png")));
+
+        const QTemporaryDir folder; // apart from the suite's folder, whose files others count
+        const QString first = folder.filePath(QStringLiteral("talk.toonface"));
+        QVERIFY(m_window->saveTo(first));
+        QCOMPARE(shown(), QStringLiteral("talk.toonface — Toonface"));
+        doc->movePoint(pt::idx("8.9"), QPointF(192, 322), true);
+        QCOMPARE(shown(), QStringLiteral("talk.toonface* — Toonface"));
+
+        // Save As: the title follows the new file.
+        const QString second = folder.filePath(QStringLiteral("talk take two.toonface"));
+        QVERIFY(m_window->saveTo(second));
+        QCOMPARE(shown(), QStringLiteral("talk take two.toonface — Toonface"));
+        QCOMPARE(m_window->windowFilePath(), second);
+    }
+
     void openRecentListsAndOpensPersistedFiles()
     {
         Settings().addRecentFile(m_projectPath);

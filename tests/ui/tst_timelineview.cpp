@@ -25,6 +25,8 @@
 
 using namespace toonface;
 
+Q_DECLARE_METATYPE(QVector<toonface::Span>)
+
 namespace {
 
 constexpr double kPps = 300; // pixels per second in these tests: 3 s in 900 pixels
@@ -735,15 +737,114 @@ private Q_SLOTS:
             a.timeline.setAudioClips(clips);
             m_doc->changeAnimation(a, QStringLiteral("sounds"));
             m_view->setPixelsPerSecond(300, TimelineLayout::kLabelWidth);
-            const QRect row = m_view->timelineLayout().rowRect(RowKind::Waveform, viewport()->width());
+            const QRectF box = m_view->itemRect({ItemKind::Audio, int(clips.indexOf(over))});
             // Past the start of its own name, to its end.
-            const QRect strip(int(m_view->xOf(over.start())) + 90, row.top() + 2,
-                int(m_view->xOf(over.end()) - m_view->xOf(over.start())) - 100, 10);
+            const QRect strip(int(box.left()) + 90, int(box.top()) + 2, int(box.width()) - 100, 10);
             return viewport()->grab().toImage().copy(strip);
         };
         const QImage alone = titleOfOver({over});
         const QImage overAnother = titleOfOver({under, over});
         QCOMPARE(overAnother, alone);
+    }
+
+    void stackInLanes_data()
+    {
+        QTest::addColumn<QVector<Span>>("spans");
+        QTest::addColumn<QVector<int>>("lanes");
+        QTest::newRow("apart") << QVector<Span> {{0, 1}, {1.5, 2}} << QVector<int> {0, 0};
+        QTest::newRow("touching") << QVector<Span> {{0, 1}, {1, 2}} << QVector<int> {0, 0};
+        QTest::newRow("overlapping") << QVector<Span> {{0, 2}, {1, 3}} << QVector<int> {0, 1};
+        QTest::newRow("a lane freed") << QVector<Span> {{0, 1}, {0.5, 2}, {1.5, 3}} << QVector<int> {0, 1, 0};
+        QTest::newRow("three at once") << QVector<Span> {{0, 3}, {1, 2}, {1.5, 2.5}} << QVector<int> {0, 1, 2};
+        QTest::newRow("given out of order") << QVector<Span> {{1, 3}, {0, 2}} << QVector<int> {1, 0};
+    }
+
+    void stackInLanes()
+    {
+        QFETCH(QVector<Span>, spans);
+        QFETCH(QVector<int>, lanes);
+        QCOMPARE(toonface::stackInLanes(spans), lanes);
+    }
+
+    // The rows shrink, all in proportion, from comfortable to compact before they scroll.
+    void rowsShrinkToCompactBeforeScrolling()
+    {
+        TimelineLayout layout;
+        const int comfortable = layout.comfortableHeight(), compact = layout.compactHeight();
+        QVERIFY(compact < comfortable);
+        layout.fitRows(10000);
+        QCOMPARE(layout.contentHeight(), comfortable);
+        layout.fitRows((compact + comfortable) / 2);
+        QVERIFY(layout.contentHeight() <= (compact + comfortable) / 2);
+        QVERIFY(layout.contentHeight() > compact);
+        for (const int room : {compact, compact / 2}) {
+            layout.fitRows(room);
+            QCOMPARE(layout.contentHeight(), compact);
+            for (const TimelineRow &r : layout.rows())
+                QCOMPARE(r.height, r.compact);
+        }
+        // A second lane adds a compact lane's height (or a comfortable one's, given room).
+        layout.setItemLanes(RowKind::Emotion, {0, 1});
+        QCOMPARE(layout.compactHeight(), compact + layout.row(RowKind::Emotion).compact);
+        QCOMPARE(layout.contentHeight(), compact + layout.row(RowKind::Emotion).compact);
+    }
+
+    // Issue 26: overlapping clips of one track stack in lanes (the row grows), so that each
+    // one's title and body are seen and taken by the pointer, none hidden under another; apart
+    // again, the row shrinks back to one lane.
+    void overlappingClipsStackInLanes_data()
+    {
+        QTest::addColumn<int>("kind");
+        QTest::newRow("audio") << int(ItemKind::Audio);
+        QTest::newRow("emotion") << int(ItemKind::Emotion);
+    }
+
+    void overlappingClipsStackInLanes()
+    {
+        QFETCH(int, kind);
+        const ItemKind item = ItemKind(kind);
+        const RowKind row = rowOf(item);
+        const auto rowRect = [&](RowKind r) { return m_view->timelineLayout().rowRect(r, viewport()->width()); };
+        const TimelineLayout &layout = m_view->timelineLayout();
+        QCOMPARE(layout.row(row).lanes, 1);
+        QTemporaryDir dir;
+        Animation a = m_doc->animation();
+        if (item == ItemKind::Audio)
+            a.timeline.setAudioClips({AudioClip {toneFile(0.8, dir), 0, 3}, AudioClip {toneFile(0.5, dir), 0.5, 2.5}});
+        else
+            a.timeline.setEmotionClips({EmotionClip {0.2, 2.6, Emotion::Smile, 1.0, 0.3, 0.3},
+                EmotionClip {0.8, 2.2, Emotion::Sad, 1.0, 0.3, 0.3}});
+        m_doc->changeAnimation(a, QStringLiteral("overlapping clips"));
+        m_view->setPixelsPerSecond(kPps, TimelineLayout::kLabelWidth);
+
+        const QRectF first = m_view->itemRect({item, 0}), second = m_view->itemRect({item, 1});
+        QVERIFY2(!first.intersects(second),
+            qPrintable(QStringLiteral("(%1, %2) and (%3, %4)")
+                           .arg(first.top())
+                           .arg(first.bottom())
+                           .arg(second.top())
+                           .arg(second.bottom())));
+        QCOMPARE(layout.row(row).lanes, 2);
+        QCOMPARE(rowRect(row).height(), 2 * layout.row(row).laneHeight);
+        for (const QRectF &r : {first, second}) {
+            QVERIFY(QRectF(rowRect(row)).contains(r));
+            QVERIFY(r.bottom() <= rowRect(RowKind(int(row) + 1)).top()); // the next row moved down
+        }
+        // Over the span both play in, each one's title takes that one.
+        const int x = int(m_view->xOf(1.5));
+        for (int i : {0, 1}) {
+            const QRectF r = m_view->itemRect({item, i});
+            const TimelineHit hit = m_view->hitAt(QPoint(x, int(r.top()) + 5));
+            QCOMPARE(hit.item, (std::optional<ItemRef>(ItemRef {item, i})));
+            QCOMPARE(hit.part, HitPart::Body);
+        }
+        // A click on the second's title selects it, not the first.
+        QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, QPoint(x, int(second.top()) + 5));
+        QCOMPARE(m_view->selection(), (Selection {{item, 1}}));
+
+        m_doc->undoStack()->undo();
+        QCOMPARE(layout.row(row).lanes, 1);
+        QCOMPARE(rowRect(row).height(), layout.row(row).laneHeight);
     }
 
     void waveformZoomsVertically()

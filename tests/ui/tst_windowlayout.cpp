@@ -1,8 +1,10 @@
 // The main window's arrangement on a laptop's screen, its dock toggles and its keys.
 #include "testmain.h"
+#include "timelinefixture.h"
 #include "uifixture.h"
 
 #include "dialogs/shortcutsdialog.h"
+#include "document/document.h"
 #include "timeline/timelineview.h"
 #include "timeline/timelinewidget.h"
 #include "views/photoview.h"
@@ -100,6 +102,38 @@ private Q_SLOTS:
         if (!qEnvironmentVariableIsEmpty("TOONFACE_GRAB_DIR"))
             m_window->grab().save(
                 qEnvironmentVariable("TOONFACE_GRAB_DIR") + QStringLiteral("/layout-%1.png").arg(size.width()));
+    }
+
+    // Issue 26: on a 1280 x 720 screen, with a photo and a recording open, every row of the
+    // timeline shows without scrolling (compact if need be), the photo still the work.
+    void everyTimelineRowShowsAt720()
+    {
+        const QSize size(1280, 720 - 60); // a desktop's panel and the title bar take the rest
+        m_window->resize(size);
+        Document *doc = m_window->document();
+        fixture::fill(*doc);
+        Animation a = fixture::talkingAnimation();
+        a.timeline.setAudioClips({AudioClip {m_dir.filePath(QStringLiteral("talk.wav")), 0, fixture::kTalkDuration}});
+        doc->changeAnimation(a, QStringLiteral("Lip Sync"));
+        QTest::qWait(50);
+        m_window->findChild<QAction *>(QStringLiteral("actionResetLayout"))->trigger();
+        QTest::qWait(100);
+        auto *view = m_window->findChild<TimelineWidget *>()->view();
+        const QRect viewport = view->viewport()->rect();
+        for (const TimelineRow &row : view->timelineLayout().rows()) {
+            const QRect r = view->timelineLayout().rowRect(row.kind, viewport.width());
+            QVERIFY2(viewport.contains(r),
+                qPrintable(QStringLiteral("%1: rows %2-%3, viewport %4 high")
+                               .arg(rowTitle(row.kind))
+                               .arg(r.top())
+                               .arg(r.bottom())
+                               .arg(viewport.height())));
+        }
+        QCOMPARE(view->verticalScrollBar()->maximum(), 0);
+        auto *photo = m_window->findChild<PhotoView *>(QStringLiteral("photoView"));
+        QVERIFY2(photo->height() >= size.height() * 0.4, qPrintable(QString::number(photo->height())));
+        if (!qEnvironmentVariableIsEmpty("TOONFACE_GRAB_DIR"))
+            m_window->grab().save(qEnvironmentVariable("TOONFACE_GRAB_DIR") + QStringLiteral("/rows-720.png"));
     }
 
     void viewTogglesTheDocks()

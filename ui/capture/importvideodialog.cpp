@@ -73,6 +73,7 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     , m_continuous(new QRadioButton(tr("Keep the &continuous motion (pose keys)"), this))
     , m_useSound(new QCheckBox(tr("Use the clip's s&ound (a new clip on the audio track)"), this))
     , m_replaceOverlap(new QCheckBox(this))
+    , m_soundNote(new QLabel(this))
     , m_atPlayhead(new QRadioButton(tr("At the &playhead (%1)").arg(seconds(playheadTime)), this))
     , m_atStart(new QRadioButton(tr("At the s&tart (0 s)"), this))
     , m_usePhoto(new QCheckBox(tr("Use the neutral frame as the p&hoto (a new project with its face)"), this))
@@ -170,8 +171,15 @@ ImportVideoDialog::ImportVideoDialog(Document *document, double playheadTime, QW
     auto *soundBox = new QVBoxLayout;
     soundBox->addWidget(m_useSound);
     soundBox->addWidget(m_replaceOverlap);
+    soundBox->addWidget(m_soundNote);
     m_replaceOverlap->setObjectName(QStringLiteral("replaceOverlap"));
     m_replaceOverlap->setVisible(false);
+    m_soundNote->setObjectName(QStringLiteral("soundNote"));
+    m_soundNote->setVisible(false);
+    // Wrapped (the recordings' names can be long), its two lines' room kept while shown: the
+    // layout does not grow the dialog for a wrapped label's lines.
+    m_soundNote->setWordWrap(true);
+    m_soundNote->setMinimumHeight(2 * m_soundNote->fontMetrics().lineSpacing());
     form->addRow(tr("Sound:"), soundBox);
     form->addRow(tr("Starts:"), placeBox);
     if (!document->hasFace())
@@ -283,7 +291,9 @@ bool ImportVideoDialog::openClip(const QString &path)
         }
     }
     m_useSound->setEnabled(ok && m_decoder->hasAudio());
-    m_useSound->setChecked(ok && m_decoder->hasAudio());
+    // A project that has a sound keeps it alone: both would play at once, which is seldom
+    // wanted; the note below the box says so and the user may tick it.
+    m_useSound->setChecked(ok && m_decoder->hasAudio() && m_document->timeline().audioClips().isEmpty());
     updateSoundChoice();
     updateNeutralLabel();
     updateButtons();
@@ -325,6 +335,17 @@ void ImportVideoDialog::updateSoundChoice()
         m_replaceOverlap->setChecked(false);
     m_replaceOverlap->setText(
         tr("It plays over %1: &replace it (else both sound together)").arg(names.join(QStringLiteral(", "))));
+
+    QStringList recordings;
+    for (const AudioClip &clip : timeline.audioClips())
+        recordings << QFileInfo(clip.path).fileName();
+    recordings.removeDuplicates();
+    const bool left = m_useSound->isEnabled() && !m_useSound->isChecked() && !recordings.isEmpty();
+    m_soundNote->setText(left ? tr("Off: the project has a sound already (%1). Tick to add the clip's as well.")
+                                    .arg(recordings.join(QStringLiteral(", ")))
+                              : QString());
+    m_soundNote->setToolTip(m_soundNote->text());
+    m_soundNote->setVisible(left);
 }
 
 int ImportVideoDialog::neutralFrame() const

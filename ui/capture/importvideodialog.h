@@ -29,10 +29,11 @@ class TrackTask;
 // the clip and its neutral frame (a slider and a spin box, the frame shown large, decoded off the
 // GUI thread), the tracking method, whether the mouth snaps to the nine shapes (mouth keys) or
 // keeps its continuous motion (pose keys), whether the clip's sound becomes a clip on the audio
-// track, and where the clip starts (the playhead or 0). The sound goes where the motion does:
-// when other recordings play there, the dialog says which, and they are kept (sounding
-// together with it) unless the user ticks to replace them. Tracking runs in the background with progress
-// and Cancel. The result lands as ONE undo step: the pose, blink, gaze and head tracks (and the
+// track (by default only when the project has no sound yet, which the dialog says), and where
+// the clip starts (the playhead or 0). The sound goes where the motion does: when other
+// recordings play there, the dialog says which, and they are kept (sounding together with it)
+// unless the user ticks to replace them. Tracking runs in the background with progress and
+// Cancel. The result lands as ONE undo step: the pose, blink, gaze and head tracks (and the
 // mouth keys when snapped), the clip's sound, and the clip itself (shown beside the cartoon).
 // With no face in the project yet, the neutral frame can become the photo (a new project whose
 // face is the neutral frame's). A clip that cannot be read, or whose neutral frame shows no face,
@@ -92,7 +93,7 @@ private:
     void updateNeutralLabel();
     void suggestNeutral(const NeutralChoice &choice);
     // Says which recordings the clip's sound would play over where it starts, and offers to
-    // replace them.
+    // replace them; says why the sound is off when the project has one already.
     void updateSoundChoice();
 
     Document *m_document;
@@ -111,6 +112,7 @@ private:
     QRadioButton *m_continuous;
     QCheckBox *m_useSound;
     QCheckBox *m_replaceOverlap;
+    QLabel *m_soundNote;
     QRadioButton *m_atPlayhead;
     QRadioButton *m_atStart;
     QCheckBox *m_usePhoto;

@@ -97,6 +97,11 @@ QString Document::displayName() const
     return tr("Untitled");
 }
 
+QString Document::projectName() const
+{
+    return m_filePath.isEmpty() ? tr("Untitled project") : QFileInfo(m_filePath).fileName();
+}
+
 bool Document::isModified() const
 {
     return !m_undoStack->isClean();

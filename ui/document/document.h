@@ -75,8 +75,11 @@ public:
     // this document opened or last saved it: its time or size on disk differ from then. The
     // window asks before overwriting such a file.
     bool changedOnDisk() const;
-    // The name for the title bar: the project file's name, else the photo's, else "Untitled".
+    // What messages about the face name: the project file's name, else the photo's, else "Untitled".
     QString displayName() const;
+    // The document's name for the title bar: the project file's name, else "Untitled project"
+    // (a photo is never written, so it is not what the title names).
+    QString projectName() const;
     bool isModified() const;
     // Marks the document as modified although its history is clean (a restored recovery file
     // holds edits the file on disk does not).

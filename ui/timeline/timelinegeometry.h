@@ -18,17 +18,31 @@ inline constexpr double kHandleRadius = 4.5;
 inline constexpr double kClipHandlesMinWidth = 30; // narrower clips show no handles (nor name)
 inline constexpr double kAudioTitle = 14; // an audio clip's title strip, which moves it
 
+// A row's band, where its items are drawn (a row with one lane; see laneBand()).
 inline QRectF rowBand(const TimelineScene &s, RowKind row)
 {
     const QRect r = s.layout->rowRect(row, s.width);
     return QRectF(r).adjusted(0, kRowInset, 0, -kRowInset);
 }
 
-inline QRectF spanRect(const TimelineScene &s, RowKind row, const Span &span)
+// One lane of a row whose overlapping clips stack (audio, emotion).
+inline QRectF laneBand(const TimelineScene &s, RowKind row, int lane)
 {
-    const QRectF band = rowBand(s, row);
+    const QRect r = s.layout->laneRect(row, lane, s.width);
+    return QRectF(r).adjusted(0, kRowInset, 0, -kRowInset);
+}
+
+inline QRectF spanRect(const TimelineScene &s, RowKind row, const Span &span, int lane = 0)
+{
+    const QRectF band = laneBand(s, row, lane);
     const double x0 = s.layout->xOf(span.start), x1 = s.layout->xOf(span.end);
     return QRectF(x0, band.top(), std::max(1.0, x1 - x0), band.height());
+}
+
+// Span item `index` of its row, in its lane.
+inline QRectF itemSpanRect(const TimelineScene &s, RowKind row, int index, const Span &span)
+{
+    return spanRect(s, row, span, s.layout->laneOf(row, index));
 }
 
 inline QRectF keyRect(const TimelineScene &s, RowKind row, double t)
@@ -45,9 +59,10 @@ struct ClipHandles
     QPointF fadeOut;
 };
 
-inline ClipHandles clipHandles(const TimelineScene &s, const EmotionClip &c)
+// Emotion clip `index` (`c`), in its lane.
+inline ClipHandles clipHandles(const TimelineScene &s, int index, const EmotionClip &c)
 {
-    const QRectF r = spanRect(s, RowKind::Emotion, {c.start, c.end});
+    const QRectF r = itemSpanRect(s, RowKind::Emotion, index, {c.start, c.end});
     const double top = r.top() + 12; // room for the name above full intensity
     const double y = r.bottom() - (r.bottom() - top) * std::clamp(c.intensity, 0.0, 1.0);
     const double length = std::max(1e-9, c.end - c.start);

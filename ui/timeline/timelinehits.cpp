@@ -29,7 +29,9 @@ void hitSpans(const TimelineScene &s, RowKind row, ItemKind kind, QPointF pos, T
     const auto [first, last] = tracks::visibleRange(spans, hit->time - pad, hit->time + pad);
     double best = kEdgeGrip + 1;
     for (qsizetype i = first; i < last; ++i) {
-        const QRectF r = spanRect(s, row, spans[i]);
+        const QRectF r = itemSpanRect(s, row, int(i), spans[i]);
+        if (pos.y() < r.top() - kRowInset || pos.y() > r.bottom() + kRowInset)
+            continue; // another lane's
         const double grip = edgeGrip(r.width());
         const double toStart = std::abs(pos.x() - r.left()), toEnd = std::abs(pos.x() - r.right());
         if (toStart <= grip && toStart < best) {
@@ -46,7 +48,7 @@ void hitSpans(const TimelineScene &s, RowKind row, ItemKind kind, QPointF pos, T
     if (hit->item)
         return;
     for (qsizetype i = first; i < last; ++i) {
-        const QRectF r = spanRect(s, row, spans[i]);
+        const QRectF r = itemSpanRect(s, row, int(i), spans[i]);
         if (pos.x() >= r.left() && pos.x() <= r.right() && pos.y() >= r.top() && pos.y() <= r.bottom()) {
             hit->item = ItemRef {kind, int(i)};
             hit->part = HitPart::Body;
@@ -68,11 +70,11 @@ bool hitEmotionHandles(const TimelineScene &s, QPointF pos, TimelineHit *hit)
 {
     const QVector<EmotionClip> &clips = s.animation.timeline.emotionClips();
     for (qsizetype i = clips.size() - 1; i >= 0; --i) {
-        const QRectF r = spanRect(s, RowKind::Emotion, {clips[i].start, clips[i].end});
+        const QRectF r = itemSpanRect(s, RowKind::Emotion, int(i), {clips[i].start, clips[i].end});
         if (r.width() <= kClipHandlesMinWidth || pos.x() < r.left() - kHandleRadius
-            || pos.x() > r.right() + kHandleRadius)
+            || pos.x() > r.right() + kHandleRadius || pos.y() < r.top() - kRowInset || pos.y() > r.bottom() + kRowInset)
             continue;
-        const ClipHandles h = clipHandles(s, clips[i]);
+        const ClipHandles h = clipHandles(s, int(i), clips[i]);
         const double reach = kHandleRadius + 2;
         const ItemRef ref {ItemKind::Emotion, int(i)};
         if (QLineF(pos, h.fadeIn).length() <= reach) {
@@ -134,7 +136,7 @@ TimelineHit hitTest(const TimelineScene &s, QPoint point)
         hitMouthWeight(s, pos, &hit);
     // An audio clip moves by its title strip; the waveform below scrubs.
     if (*kind == ItemKind::Audio && hit.part == HitPart::Body
-        && pos.y() > rowBand(s, RowKind::Waveform).top() + kAudioTitle) {
+        && pos.y() > itemSpanRect(s, RowKind::Waveform, hit.item->index, {}).top() + kAudioTitle) {
         hit.item.reset();
         hit.part = HitPart::None;
     }
@@ -153,7 +155,8 @@ Selection itemsIn(const TimelineScene &s, const QRect &rect)
         const double pad = hasSpans(*kind) ? 0.0 : kKeySize / 2 / s.layout->pixelsPerSecond();
         const auto [first, last] = tracks::visibleRange(spans, t0 - pad, t1 + pad);
         for (qsizetype i = first; i < last; ++i) {
-            const QRectF r = hasSpans(*kind) ? spanRect(s, row.kind, spans[i]) : keyRect(s, row.kind, spans[i].start);
+            const QRectF r
+                = hasSpans(*kind) ? itemSpanRect(s, row.kind, int(i), spans[i]) : keyRect(s, row.kind, spans[i].start);
             if (r.intersects(QRectF(rect)))
                 selection.insert({*kind, int(i)});
         }

@@ -185,15 +185,12 @@ void paintAudioClip(QPainter &p, const TimelineScene &s, int index, const QRect 
     const AudioClip &clip = s.animation.timeline.audioClips()[index];
     const TimelineLayout &l = *s.layout;
     const double gain = s.clipGains.value(index, 1.0);
-    const QRectF box = geometry::spanRect(s, RowKind::Waveform, {clip.start(), clip.end()});
+    const QRectF box = geometry::itemSpanRect(s, RowKind::Waveform, index, {clip.start(), clip.end()});
     const bool selected = s.selection && s.selection->contains({ItemKind::Audio, index});
     p.setPen(QPen(selected ? kSelection : kWave.darker(170), selected ? 2 : 1));
     p.setBrush(QColor(kWave.red(), kWave.green(), kWave.blue(), 28));
     p.drawRoundedRect(box.adjusted(0.5, 0.5, -0.5, -0.5), 3, 3);
     const QRectF title(box.left(), box.top(), box.width(), geometry::kAudioTitle);
-    // Opaque under its tint: a clip over another (a video's sound put on a recording) hides the
-    // title beneath instead of mixing the two names into one unreadable line.
-    p.fillRect(title.adjusted(1, 1, -1, 0), kBackground);
     p.fillRect(title.adjusted(1, 1, -1, 0), QColor(kWave.red(), kWave.green(), kWave.blue(), selected ? 110 : 70));
     if (box.width() > 24) {
         QFont small = p.font();

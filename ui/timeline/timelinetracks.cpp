@@ -237,7 +237,7 @@ void paintEmotionRow(QPainter &p, const TimelineScene &s, double t0, double t1)
         const EmotionClip &c = clips[i];
         if (c.end < t0 || c.start > t1)
             continue;
-        const QRectF r = spanRect(s, RowKind::Emotion, {c.start, c.end});
+        const QRectF r = itemSpanRect(s, RowKind::Emotion, int(i), {c.start, c.end});
         const bool selected = s.selection->contains({ItemKind::Emotion, int(i)});
         const QColor color = emotionColor(c.emotion);
         const bool wide = r.width() > kClipHandlesMinWidth;
@@ -250,7 +250,7 @@ void paintEmotionRow(QPainter &p, const TimelineScene &s, double t0, double t1)
             // takes Qt's slow path (20 times slower; 60 clips zoomed out cost 4 ms).
             p.fillRect(r.toAlignedRect(), QColor(color.red(), color.green(), color.blue(), 45));
         }
-        const ClipHandles h = clipHandles(s, c);
+        const ClipHandles h = clipHandles(s, int(i), c);
         const QPointF envelope[] = {r.bottomLeft(), h.fadeIn, h.fadeOut, r.bottomRight()};
         p.setPen(wide ? QPen(color.lighter(120), 1.5) : Qt::NoPen);
         p.setBrush(QColor(color.red(), color.green(), color.blue(), selected ? 170 : 130));

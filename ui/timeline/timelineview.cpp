@@ -74,6 +74,7 @@ TimelineView::TimelineView(Document *document, Playhead *playhead, QWidget *pare
     });
     m_waveforms.push_back(std::make_unique<WaveformSource>());
     connect(m_waveforms.back().get(), &WaveformSource::ready, viewport(), qOverload<>(&QWidget::update));
+    fitHeightToRows();
     onDocumentChanged(ChangeFlags(Change::Photo) | Change::Animation | Change::MouthShapes);
 }
 
@@ -81,7 +82,20 @@ TimelineView::~TimelineView() = default;
 
 QSize TimelineView::sizeHint() const
 {
-    return QSize(900, TimelineLayout::kRulerHeight + m_layout.contentHeight() + 18);
+    return QSize(900, TimelineLayout::kRulerHeight + m_layout.comfortableHeight() + 18);
+}
+
+int TimelineView::compactHeight() const
+{
+    return TimelineLayout::kRulerHeight + m_layout.compactHeight() + horizontalScrollBar()->sizeHint().height()
+        + 2 * frameWidth();
+}
+
+void TimelineView::fitHeightToRows()
+{
+    // No taller than its rows: the room below the last would be empty.
+    setMaximumHeight(sizeHint().height() + 2 * frameWidth());
+    updateGeometry();
 }
 
 QSize TimelineView::minimumSizeHint() const
@@ -124,6 +138,11 @@ void TimelineView::onDocumentChanged(ChangeFlags what)
     if (what & (Change::Animation | Change::Photo)) {
         m_mouthSpans = itemSpans(m_document->animation(), ItemKind::Mouth);
         const Animation a = m_document->animation();
+        // Overlapping clips stack in lanes (the row grows) so that none hides another's name.
+        const bool audioGrew = m_layout.setItemLanes(RowKind::Waveform, stackInLanes(itemSpans(a, ItemKind::Audio)));
+        const bool emotionGrew = m_layout.setItemLanes(RowKind::Emotion, stackInLanes(itemSpans(a, ItemKind::Emotion)));
+        if (audioGrew || emotionGrew)
+            fitHeightToRows();
         const Selection before = m_selection;
         m_selection.clip([&](ItemKind kind) { return itemCount(a, kind); });
         const QVector<AudioClip> &clips = m_document->timeline().audioClips();
@@ -209,7 +228,7 @@ QRectF TimelineView::itemRect(const ItemRef &item) const
     if (item.index < 0 || item.index >= spans.size())
         return {};
     if (hasSpans(item.kind))
-        return geometry::spanRect(s, rowOf(item.kind), spans[item.index]);
+        return geometry::itemSpanRect(s, rowOf(item.kind), item.index, spans[item.index]);
     return geometry::keyRect(s, rowOf(item.kind), spans[item.index].start);
 }
 
@@ -219,7 +238,7 @@ QPointF TimelineView::emotionHandle(int clip, HitPart part) const
     const QVector<EmotionClip> &clips = s.animation.timeline.emotionClips();
     if (clip < 0 || clip >= clips.size())
         return {};
-    const geometry::ClipHandles h = geometry::clipHandles(s, clips[clip]);
+    const geometry::ClipHandles h = geometry::clipHandles(s, clip, clips[clip]);
     if (part == HitPart::FadeIn)
         return h.fadeIn;
     if (part == HitPart::FadeOut)
@@ -287,6 +306,8 @@ void TimelineView::updateScrollBars()
     horizontalScrollBar()->setSingleStep(std::max(1, int(width / 20)));
     horizontalScrollBar()->setValue(int(std::lround(m_layout.scrollTime() * pps)));
     const int rows = viewport()->height() - TimelineLayout::kRulerHeight;
+    // The rows shrink to the viewport (down to their compact heights) before they scroll.
+    m_layout.fitRows(rows);
     verticalScrollBar()->setRange(0, std::max(0, m_layout.contentHeight() - rows));
     verticalScrollBar()->setPageStep(std::max(1, rows));
     verticalScrollBar()->setSingleStep(12);

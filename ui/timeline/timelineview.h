@@ -73,6 +73,8 @@ public:
 
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
+    // The height that shows every row at its compact height (the ruler and scroll bar included).
+    int compactHeight() const;
 
 public Q_SLOTS:
     void zoomIn();
@@ -146,6 +148,8 @@ private:
     TimelineScene scene() const;
     void onDocumentChanged(ChangeFlags what);
     void updateScrollBars();
+    // The view's maximum height follows its rows (which grow when clips overlap).
+    void fitHeightToRows();
     void syncScrollBars();
     void followPlayhead(double t);
     double snapped(double t, bool *toBoundary = nullptr) const;

@@ -72,6 +72,7 @@ TimelineWidget::TimelineWidget(Document *document, Playhead *playhead, QWidget *
     createActions();
 
     auto *bar = new QToolBar(this);
+    m_toolBar = bar;
     bar->setObjectName(QStringLiteral("timelineToolBar"));
     bar->setIconSize(QSize(20, 20));
     bar->addAction(m_actions.zoomOut);
@@ -98,8 +99,6 @@ TimelineWidget::TimelineWidget(Document *document, Playhead *playhead, QWidget *
     layout->setSpacing(0);
     layout->addWidget(bar);
     layout->addWidget(m_view, 1);
-    // No taller than its rows: the room below the last would be empty.
-    m_view->setMaximumHeight(m_view->sizeHint().height() + 2 * m_view->frameWidth());
     addActions(m_actions.all());
 
     m_shapes->setIcons(m_view->mouthIcons());
@@ -132,6 +131,11 @@ void TimelineWidget::showSelectedMouthKey()
     if (i + 1 < keys.size())
         end = std::min(end, keys[i + 1].time);
     m_playhead->setTime(keys[i].time + std::max(0.0, end - keys[i].time) / 2);
+}
+
+int TimelineWidget::compactHeight() const
+{
+    return m_toolBar->sizeHint().height() + m_view->compactHeight();
 }
 
 void TimelineWidget::editEmotionIntensity(int clip)

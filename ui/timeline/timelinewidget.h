@@ -11,6 +11,8 @@
 
 class QAction;
 
+class QToolBar;
+
 namespace toonface {
 
 class Document;
@@ -52,6 +54,9 @@ public:
     TimelineWidget(Document *document, Playhead *playhead, QWidget *parent = nullptr);
 
     TimelineView *view() const { return m_view; }
+    // The height that shows the tool bar and every row at its compact height: what a short
+    // screen gives the timeline at first.
+    int compactHeight() const;
     // Asks for an emotion clip's intensity in percent (dialog "emotionIntensityDialog") and
     // sets it as one undo step.
     void editEmotionIntensity(int clip);
@@ -67,6 +72,7 @@ private:
 
     Document *m_document;
     Playhead *m_playhead;
+    QToolBar *m_toolBar = nullptr;
     TimelineView *m_view;
     ShapePalette *m_shapes;
     EmotionPalette *m_emotions;

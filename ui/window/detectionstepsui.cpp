@@ -7,12 +7,13 @@
 
 #include <QActionGroup>
 #include <QComboBox>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QMainWindow>
 #include <QMenu>
 #include <QSignalBlocker>
 #include <QSlider>
-#include <QToolBar>
+#include <QStatusBar>
 
 #include <algorithm>
 #include <utility>
@@ -44,21 +45,25 @@ void DetectionStepsUi::install(QMenu *view)
     m_group = new QActionGroup(this);
     m_group->setExclusive(true);
 
-    // Below the views, beside the photo it acts on, where the main toolbar's width does not
-    // push it out of sight.
-    m_toolBar = new QToolBar(tr("Detection Steps"), m_window);
-    m_window->addToolBar(Qt::BottomToolBarArea, m_toolBar);
-    m_toolBar->setObjectName(QStringLiteral("detectionStepsToolBar"));
+    // In the status bar, below the views, where the main toolbar's width does not push it out
+    // of sight; not a tool bar row of its own, which took a short screen's last timeline row.
+    m_stepBar = new QWidget;
+    m_stepBar->setObjectName(QStringLiteral("detectionStepsBar"));
+    m_stepBar->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Preferred); // its controls side by side
+    auto *row = new QHBoxLayout(m_stepBar);
+    row->setContentsMargins(0, 0, 0, 0);
+    row->setSpacing(0);
+    m_window->statusBar()->insertPermanentWidget(0, m_stepBar);
     auto *stepLabel = new QLabel(tr("Step:") + QLatin1Char(' '));
-    m_toolBar->addWidget(stepLabel);
+    row->addWidget(stepLabel);
     m_combo = new QComboBox;
     m_combo->setObjectName(QStringLiteral("detectionStepCombo"));
     m_combo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     stepLabel->setBuddy(m_combo);
     connect(m_combo, &QComboBox::activated, this,
         [this](int index) { setOverlayStep(m_combo->itemData(index).toString()); });
-    m_toolBar->addWidget(m_combo);
-    m_toolBar->addWidget(new QLabel(QLatin1Char(' ') + tr("Opacity:") + QLatin1Char(' ')));
+    row->addWidget(m_combo);
+    row->addWidget(new QLabel(QLatin1Char(' ') + tr("Opacity:") + QLatin1Char(' ')));
     m_opacitySlider = new QSlider(Qt::Horizontal);
     m_opacitySlider->setObjectName(QStringLiteral("overlayOpacitySlider"));
     m_opacitySlider->setRange(0, kOpacitySteps);
@@ -71,7 +76,7 @@ void DetectionStepsUi::install(QMenu *view)
         m_photoView->setOverlayOpacity(double(value) / kOpacitySteps);
         Settings().setOverlayOpacity(double(value) / kOpacitySteps);
     });
-    m_toolBar->addWidget(m_opacitySlider);
+    row->addWidget(m_opacitySlider);
     rebuild();
 }
 

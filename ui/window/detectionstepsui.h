@@ -10,7 +10,7 @@ class QComboBox;
 class QMainWindow;
 class QMenu;
 class QSlider;
-class QToolBar;
+class QWidget;
 
 namespace toonface {
 
@@ -19,7 +19,7 @@ class PhotoView;
 class StepImageDialog;
 
 // How the user sees the detection's intermediate images: the View ▸ Detection Steps menu, the
-// "Step" tool bar below the views (which step covers the photo, and how strongly), and the
+// "Step" controls in the status bar (which step covers the photo, and how strongly), and the
 // close-ups in windows of their own. It follows DetectionSteps: a new detection's steps refill
 // the menu, and the step chosen before stays shown when the new run has it too.
 class DetectionStepsUi : public QObject
@@ -29,7 +29,7 @@ class DetectionStepsUi : public QObject
 public:
     DetectionStepsUi(DetectionSteps *steps, PhotoView *photoView, QMainWindow *window);
 
-    // Adds the Detection Steps submenu to `view` and the step tool bar to the window.
+    // Adds the Detection Steps submenu to `view` and the step controls to the status bar.
     void install(QMenu *view);
 
     // Shows step `name`: over the photo, or in a window of its own for a close-up; empty hides it.
@@ -52,7 +52,7 @@ private:
     QMainWindow *m_window;
     QMenu *m_menu = nullptr;
     QActionGroup *m_group = nullptr;
-    QToolBar *m_toolBar = nullptr;
+    QWidget *m_stepBar = nullptr; // the step and opacity controls, in the status bar
     QComboBox *m_combo = nullptr;
     QSlider *m_opacitySlider = nullptr;
     QString m_overlayStep; // the step drawn over the photo now

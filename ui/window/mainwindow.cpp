@@ -506,7 +506,7 @@ void MainWindow::onDocumentChanged(ChangeFlags what)
 
 void MainWindow::updateTitle()
 {
-    setWindowTitle(tr("%1[*] — Toonface").arg(m_document->displayName()));
+    setWindowTitle(tr("%1[*] — Toonface").arg(m_document->projectName()));
     setWindowFilePath(m_document->filePath());
     setWindowModified(m_document->isModified());
 }

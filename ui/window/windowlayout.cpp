@@ -1,6 +1,7 @@
 #include "window/windowlayout.h"
 
 #include "appearance/appearancepanel.h"
+#include "timeline/timelinewidget.h"
 
 #include <QAction>
 #include <QDockWidget>
@@ -24,8 +25,12 @@ constexpr double kScreenShare = 0.92;
 // The side docks never take more of the window's width than this, so that the photo and the
 // cartoon stay the work.
 constexpr double kSideDockShare = 0.26;
-// The timeline never takes more of the window's height than this at first (its rows scroll).
+// The timeline takes this share of the window's height at first, more when its rows need
+// more at their compact heights (a short screen), never more than its rows at their comfortable.
 constexpr double kBottomDockShare = 0.36;
+// Screens shorter than this start the window maximized: a share of 720 pixels left free costs
+// the timeline its last rows.
+constexpr int kShortScreen = 900;
 
 } // namespace
 
@@ -68,6 +73,8 @@ void WindowLayout::firstRun()
 {
     const QSize available = m_window->screen()->availableSize();
     m_window->resize(int(available.width() * kScreenShare), int(available.height() * kScreenShare));
+    if (available.height() < kShortScreen)
+        m_window->setWindowState(m_window->windowState() | Qt::WindowMaximized);
     // The docks' sizes need the window laid out at its size.
     QTimer::singleShot(0, this, &WindowLayout::applyDefaultSizes);
 }
@@ -83,10 +90,14 @@ void WindowLayout::applyDefaultSizes()
         const Qt::DockWidgetArea area = m_window->dockWidgetArea(dock);
         if (area == Qt::BottomDockWidgetArea || area == Qt::TopDockWidgetArea) {
             // As tall as its contents ask (the timeline: its rows), but leaving the photo and
-            // the cartoon most of a laptop's screen.
-            const int height
-                = std::min(dock->widget()->sizeHint().height(), int(m_window->height() * kBottomDockShare));
-            m_window->resizeDocks({dock}, {std::max(height, dock->widget()->minimumHeight())}, Qt::Vertical);
+            // the cartoon most of a laptop's screen; the timeline's rows all show, compact if
+            // need be. The dock's title bar comes on top of its contents.
+            const int title = std::max(0, dock->height() - dock->widget()->height());
+            int height = std::min(dock->widget()->sizeHint().height(), int(m_window->height() * kBottomDockShare));
+            if (const auto *timeline = qobject_cast<const TimelineWidget *>(dock->widget()))
+                height = std::max(height, timeline->compactHeight());
+            height = std::max(height, dock->widget()->minimumHeight());
+            m_window->resizeDocks({dock}, {height + title}, Qt::Vertical);
         } else {
             side.append(dock);
             widths.append(std::clamp(dock->widget()->minimumSizeHint().width(), 1, int(width * kSideDockShare)));
