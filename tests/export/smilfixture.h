@@ -20,6 +20,7 @@
 #include <QTransform>
 #include <QXmlStreamReader>
 
+#include <charconv>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -64,12 +65,68 @@ inline Node withoutAnimation(Node n)
 
 // ---- numbers, path data, transforms ----
 
-inline QVector<double> numbersOf(const QString &text)
+// The length of the number at text[i] (sign, digits, point, exponent), 0 when none starts there.
+inline qsizetype numberLength(QStringView text, qsizetype i)
 {
-    static const QRegularExpression re(QStringLiteral("[-+]?(?:[0-9]+\\.?[0-9]*|\\.[0-9]+)(?:[eE][-+]?[0-9]+)?"));
+    const qsizetype start = i;
+    auto digits = [&] {
+        const qsizetype from = i;
+        while (i < text.size() && text[i].isDigit())
+            ++i;
+        return i - from;
+    };
+    if (i < text.size() && (text[i] == QLatin1Char('-') || text[i] == QLatin1Char('+')))
+        ++i;
+    qsizetype mantissa = digits();
+    if (i < text.size() && text[i] == QLatin1Char('.')) {
+        ++i;
+        mantissa += digits();
+    }
+    if (mantissa == 0)
+        return 0;
+    if (i < text.size() && (text[i] == QLatin1Char('e') || text[i] == QLatin1Char('E'))) {
+        qsizetype e = i + 1;
+        if (e < text.size() && (text[e] == QLatin1Char('-') || text[e] == QLatin1Char('+')))
+            ++e;
+        const qsizetype afterSign = e;
+        while (e < text.size() && text[e].isDigit())
+            ++e;
+        if (e > afterSign)
+            i = e;
+    }
+    return i - start;
+}
+
+// The number numberLength() found, read with std::from_chars (locale-independent): QString's
+// conversion was most of the interpolator's time.
+inline double numberAt(QStringView text, qsizetype i, qsizetype n)
+{
+    char buffer[64];
+    if (text[i] == QLatin1Char('+')) {
+        ++i;
+        --n;
+    }
+    n = std::min<qsizetype>(n, qsizetype(sizeof buffer));
+    for (qsizetype k = 0; k < n; ++k)
+        buffer[k] = char(text[i + k].unicode());
+    double v = 0;
+    std::from_chars(buffer, buffer + n, v);
+    return v;
+}
+
+// Every number of `text`, in order; anything else separates them. A scanner rather than a
+// regular expression: the interpolator reads hundreds of thousands of paths per test.
+inline QVector<double> numbersOf(QStringView text)
+{
     QVector<double> out;
-    for (auto it = re.globalMatch(text); it.hasNext();)
-        out.append(it.next().captured().toDouble());
+    for (qsizetype i = 0; i < text.size();) {
+        if (const qsizetype n = numberLength(text, i)) {
+            out.append(numberAt(text, i, n));
+            i += n;
+        } else {
+            ++i;
+        }
+    }
     return out;
 }
 
@@ -96,21 +153,25 @@ struct RawPath
     QVector<double> numbers;
 };
 
-inline std::optional<RawPath> rawPath(const QString &d)
+inline std::optional<RawPath> rawPath(QStringView d)
 {
-    static const QRegularExpression token(
-        QStringLiteral("([A-Za-z])|([-+]?(?:[0-9]+\\.?[0-9]*|\\.[0-9]+)(?:[eE][-+]?[0-9]+)?)"));
     RawPath p;
     QChar current;
     int owed = 0;
-    for (auto it = token.globalMatch(d); it.hasNext();) {
-        const auto m = it.next();
-        if (!m.captured(1).isEmpty()) {
+    for (qsizetype i = 0; i < d.size();) {
+        const QChar c = d[i];
+        if ((c >= QLatin1Char('A') && c <= QLatin1Char('Z')) || (c >= QLatin1Char('a') && c <= QLatin1Char('z'))) {
             if (owed)
                 return std::nullopt;
-            current = m.captured(1)[0];
+            current = c;
             p.commands += current;
             owed = arity(current);
+            ++i;
+            continue;
+        }
+        const qsizetype n = numberLength(d, i);
+        if (n == 0) {
+            ++i; // a separator
             continue;
         }
         if (!owed) {
@@ -122,7 +183,8 @@ inline std::optional<RawPath> rawPath(const QString &d)
             p.commands += current;
             owed = arity(current);
         }
-        p.numbers.append(m.captured(2).toDouble());
+        p.numbers.append(numberAt(d, i, n));
+        i += n;
         --owed;
     }
     if (owed)
@@ -259,6 +321,16 @@ inline Animation &cachedAnimation(const Node &n)
     return *it;
 }
 
+// An attribute of an element: its value as written, its animation elements, and the scale
+// the element's own transform draws it at (ownScale(); scaleProblem: why that is not a scale).
+struct AnimatedAttribute
+{
+    std::optional<RawPath> value;
+    QVector<const Node *> animations;
+    double scale = 1;
+    QString scaleProblem;
+};
+
 // The progress of a keySplines curve at time fraction x (solving its x(s) = x by bisection).
 inline double splineAt(const std::array<double, 4> &c, double x)
 {
@@ -287,9 +359,9 @@ inline Mix mixAt(const Animation &a, double t)
     const double f = std::clamp(t / a.dur, 0.0, 1.0);
     if (f >= 1.0)
         return {int(a.values.size()) - 1, int(a.values.size()) - 1, 0};
-    int i = 0;
-    while (i + 2 < a.keyTimes.size() && a.keyTimes[i + 1] <= f)
-        ++i;
+    // The last key time at or before f (keyTimes ascend from 0), and never the last key.
+    const auto after = std::upper_bound(a.keyTimes.cbegin(), a.keyTimes.cend(), f);
+    const int i = int(std::max<qsizetype>(0, std::min(after - a.keyTimes.cbegin() - 1, a.keyTimes.size() - 2)));
     const double x = (f - a.keyTimes[i]) / (a.keyTimes[i + 1] - a.keyTimes[i]);
     return {i, i + 1, a.splines.isEmpty() ? x : splineAt(a.splines[i], x)};
 }
@@ -310,29 +382,41 @@ inline double ownScale(const Node &e, QString *why)
     return m.m11();
 }
 
-// The numbers of attribute `name` of element `e` at time t, with its animations applied;
-// paths in absolute coordinates. Sets *why when the values do not fit together.
-inline QVector<double> numbersAt(const Node &e, const QString &name, double t, QString *why)
+inline std::optional<RawPath> attributeNumbers(const QString &name, const QString &text)
 {
-    const bool path = name == QLatin1StringView("d");
-    auto parse = [&](const QString &text) -> std::optional<RawPath> {
-        if (path)
-            return rawPath(text);
-        return RawPath {QString(), numbersOf(text)};
-    };
-    std::optional<RawPath> value = parse(e.attribute(name));
+    if (name == QLatin1StringView("d"))
+        return rawPath(text);
+    return RawPath {QString(), numbersOf(text)};
+}
+
+inline AnimatedAttribute readAttribute(const Node &e, const QString &name)
+{
+    AnimatedAttribute read {attributeNumbers(name, e.attribute(name)), {}, 1, {}};
+    read.scale = ownScale(e, &read.scaleProblem);
+    for (const Node &c : e.children) {
+        if (c.name == QLatin1StringView("animate") && c.attribute(QStringLiteral("attributeName")) == name)
+            read.animations.append(&c);
+    }
+    return read;
+}
+
+// The numbers of attribute `name` of element `e` (read as `read`) at time t, with its
+// animations applied; paths in absolute coordinates. Sets *why when the values do not fit
+// together.
+inline QVector<double> numbersAt(
+    const Node &e, const QString &name, const AnimatedAttribute &read, double t, QString *why)
+{
+    std::optional<RawPath> value = read.value;
     if (!value) {
         *why = QStringLiteral("bad %1 of %2").arg(name, e.attribute(QStringLiteral("id")));
         return {};
     }
-    for (const Node &c : e.children) {
-        if (c.name != QLatin1StringView("animate") || c.attribute(QStringLiteral("attributeName")) != name)
-            continue;
-        Animation &a = cachedAnimation(c);
+    for (const Node *c : read.animations) {
+        Animation &a = cachedAnimation(*c);
         const Mix m = mixAt(a, t);
         if (a.parsed.isEmpty()) {
             for (const QString &v : a.values)
-                a.parsed.append(parse(v));
+                a.parsed.append(attributeNumbers(name, v));
         }
         const auto &from = a.parsed[m.from];
         const auto &to = a.parsed[m.to];
@@ -348,12 +432,48 @@ inline QVector<double> numbersAt(const Node &e, const QString &name, double t, Q
             value->numbers[j] = a.additive ? value->numbers[j] + v : v;
         }
     }
-    QVector<double> out = path ? absolute(*value).numbers : value->numbers;
-    const double scale = ownScale(e, why);
+    QVector<double> out = name == QLatin1StringView("d") ? absolute(*value).numbers : value->numbers;
+    if (!read.scaleProblem.isEmpty())
+        *why = read.scaleProblem;
     for (double &x : out)
-        x *= scale;
+        x *= read.scale;
     return out;
 }
+
+inline QVector<double> numbersAt(const Node &e, const QString &name, double t, QString *why)
+{
+    return numbersAt(e, name, readAttribute(e, name), t, why);
+}
+
+// A document read for the interpolator: its elements by id and their attributes, each read
+// once, since worstDistance() reads every part at thousands of times. It points into `doc`,
+// which must outlive it and stay unchanged.
+class SmilDocument
+{
+public:
+    explicit SmilDocument(const Node &doc) { index(doc); }
+    const Node *find(const QString &id) const { return m_ids.value(id); }
+    const AnimatedAttribute &attribute(const Node &e, const QString &name) const
+    {
+        auto it = m_attributes.find({&e, name});
+        if (it == m_attributes.end())
+            it = m_attributes.insert({&e, name}, readAttribute(e, name));
+        return *it;
+    }
+
+private:
+    void index(const Node &n)
+    {
+        const QString id = n.attribute(QStringLiteral("id"));
+        if (!id.isEmpty() && !m_ids.contains(id))
+            m_ids.insert(id, &n); // the first in document order, as findId()
+        for (const Node &c : n.children)
+            index(c);
+    }
+
+    QHash<QString, const Node *> m_ids;
+    mutable QHash<QPair<const Node *, QString>, AnimatedAttribute> m_attributes;
+};
 
 inline QTransform headAt(const Node &head, double t)
 {
@@ -390,11 +510,11 @@ inline double transformDistance(const QTransform &a, const QTransform &b)
 }
 
 // The worst distance between the geometry of `parts` and that of the document at time t.
-inline double worstDistance(const Node &doc, const QVector<FacePart> &parts, double t, QString *where)
+inline double worstDistance(const SmilDocument &doc, const QVector<FacePart> &parts, double t, QString *where)
 {
     double worst = 0;
     for (const FacePart &p : parts) {
-        const Node *e = findId(doc, p.id);
+        const Node *e = doc.find(p.id);
         if (!e) {
             *where = QStringLiteral("%1 is missing").arg(p.id);
             return std::numeric_limits<double>::infinity();
@@ -411,7 +531,7 @@ inline double worstDistance(const Node &doc, const QVector<FacePart> &parts, dou
                 ? absolute(rawPath(it.value()).value_or(RawPath {})).numbers
                 : numbersOf(it.value());
             QString why;
-            const QVector<double> got = numbersAt(*e, it.key(), t, &why);
+            const QVector<double> got = numbersAt(*e, it.key(), doc.attribute(*e, it.key()), t, &why);
             if (!why.isEmpty()) {
                 *where = why;
                 return std::numeric_limits<double>::infinity();
@@ -424,6 +544,11 @@ inline double worstDistance(const Node &doc, const QVector<FacePart> &parts, dou
         }
     }
     return worst;
+}
+
+inline double worstDistance(const Node &doc, const QVector<FacePart> &parts, double t, QString *where)
+{
+    return worstDistance(SmilDocument(doc), parts, t, where);
 }
 
 inline AnimationExportOptions silent()

@@ -265,10 +265,11 @@ private Q_SLOTS:
         }
         double worst = 0, worstHead = 0;
         QString where;
+        const SmilDocument read(doc);
         for (double time : times) {
             const Pose pose = evaluator.evaluate(time);
             QString here;
-            const double d = worstDistance(doc, svgFace.parts(pose), time, &here);
+            const double d = worstDistance(read, svgFace.parts(pose), time, &here);
             QVERIFY2(std::isfinite(d), qPrintable(here));
             if (d > worst) {
                 worst = d;
@@ -301,9 +302,10 @@ private Q_SLOTS:
         const TimelineEvaluator evaluator(t, m_face, m_shapes);
         double worst = 0;
         QString where;
+        const SmilDocument read(doc);
         for (double time = 0; time <= t.duration(); time += 0.037) {
             QString here;
-            const double d = worstDistance(doc, svgFace.parts(evaluator.evaluate(time)), time, &here);
+            const double d = worstDistance(read, svgFace.parts(evaluator.evaluate(time)), time, &here);
             if (d > worst) {
                 worst = d;
                 where = here;
