@@ -105,6 +105,11 @@ struct AppearanceFindings
     // L* below the cheeks' past which the lip's or the chin's median is hair, not a shadow.
     static constexpr double kLipDarker = 22.94;
     static constexpr double kChinDarker = 25;
+    // a* units the chin and the jaw lose against the less red of the cheeks and the forehead
+    // (AppearanceEvidence::lowerRedLoss): a beard too smooth at the measuring scale for the
+    // chin's texture rule (grey beards, beards on small crops). Fitted with the chin's three above by
+    // the bench's 10 x 5-fold cross-validation (12 candidates each).
+    static constexpr double kLowerRedLoss = 3.0;
     // Both jaw sides: a full beard, else a goatee (objective: balanced accuracy, among the chins
     // found hairy).
     static constexpr double kJawRedLoss = 2.5;
