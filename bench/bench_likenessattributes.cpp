@@ -233,9 +233,6 @@ struct Decision
     std::vector<std::string> ruleMeasures; // the measures the rule reads, in its parameters' order
     std::function<bool(const Labelled &, const std::vector<double> &)> rule;
     QString objective; // "f0.5" (precision first) or "accuracy"
-    // Candidate thresholds a parameter: fewer for a rule of four parameters that is to be
-    // cross-validated over all kSplits splits (12^4 grid points a fit, 16 times fewer than 24^4).
-    size_t candidates = 24;
 };
 
 double objectiveOf(const QString &name, const Counts &c)
@@ -300,8 +297,7 @@ bool lipRule(const Labelled &r, const std::vector<double> &t)
 
 bool chinRule(const Labelled &r, const std::vector<double> &t)
 {
-    return (r.m.at("chinRedLoss") >= t[0] && r.m.at("chinDetail") >= t[1]) || r.m.at("chinDL") <= -t[2]
-        || r.m.at("lowerRedLoss") >= t[3];
+    return (r.m.at("chinRedLoss") >= t[0] && r.m.at("chinDetail") >= t[1]) || r.m.at("chinDL") <= -t[2];
 }
 
 std::vector<Decision> decisions()
@@ -315,15 +311,15 @@ std::vector<Decision> decisions()
         [](const Labelled &r) { return r.shipped.moustache; }, {"lipColour", "redLossSure", "-lipDL"}, lipRule,
         QStringLiteral("f0.5")});
     d.push_back({QStringLiteral("beard (incl. goatee)"), [](const Labelled &r) { return r.beard; }, all,
-        [](const Labelled &r) { return r.shipped.beard || r.shipped.goatee; },
-        {"chinRedLoss", "chinDetail", "-chinDL", "lowerRedLoss"}, chinRule, QStringLiteral("f0.5"), 12});
+        [](const Labelled &r) { return r.shipped.beard || r.shipped.goatee; }, {"chinRedLoss", "chinDetail", "-chinDL"},
+        chinRule, QStringLiteral("f0.5")});
     d.push_back({QStringLiteral("facial hair"), [](const Labelled &r) { return r.beard || r.moustache || r.goatee; },
         all, [](const Labelled &r) { return anyFacialHair(r.shipped); }, {}, {}, QStringLiteral("f0.5")});
     // Among the chins found hairy: a full beard (the jaw's sides too) or a goatee.
     d.push_back(
         {QStringLiteral("full beard, of the chins found hairy"), [](const Labelled &r) { return r.beard && !r.goatee; },
             [](const Labelled &r) {
-                return chinRule(r, {A::kChinRedLoss, A::kChinDetail, A::kChinDarker, A::kLowerRedLoss});
+                return chinRule(r, {A::kChinRedLoss, A::kChinDetail, A::kChinDarker});
             },
             [](const Labelled &r) { return r.shipped.beard; }, {"jawRedLoss"},
             [m](const Labelled &r, const std::vector<double> &t) {
@@ -389,7 +385,7 @@ std::pair<std::vector<std::vector<bool>>, std::vector<double>> crossValidate(
         std::vector<double> v;
         for (size_t i : scored)
             v.push_back(negated ? -rows[i].m.at(measure) : rows[i].m.at(measure));
-        rule.candidates.push_back(bench::thresholdsFrom(v, d.candidates));
+        rule.candidates.push_back(bench::thresholdsFrom(v, 24));
     }
     rule.decide = [&](size_t r, const std::vector<double> &t) { return d.rule(rows[r], t); };
     auto objective = [&](const Counts &c) { return objectiveOf(d.objective, c); };
@@ -535,9 +531,9 @@ QJsonObject attributes()
         report << splits(
             rows, scored, [&](int, size_t i) { return d.shipped(rows[i]); }, [&](size_t i) { return d.truth(rows[i]); },
             accuracy);
-        // Pooled over kSplits fold splits; a rule of four thresholds with 24 candidates each (bald:
-        // 24^4 candidates a fit) over one, which alone takes as long as the others' ten.
-        const int repeats = d.ruleMeasures.size() <= 3 || d.candidates <= 12 ? kSplits : 1;
+        // Pooled over kSplits fold splits; a rule of four thresholds (bald: 24^4 candidates a fit)
+        // over one, which alone takes as long as the others' ten.
+        const int repeats = d.ruleMeasures.size() <= 3 ? kSplits : 1;
         auto [heldOut, fitted] = d.rule ? crossValidate(d, rows, scored, k, repeats)
                                         : std::pair<std::vector<std::vector<bool>>, std::vector<double>> {};
         if (!d.rule) {

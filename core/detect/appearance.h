@@ -105,16 +105,6 @@ struct AppearanceFindings
     // L* below the cheeks' past which the lip's or the chin's median is hair, not a shadow.
     static constexpr double kLipDarker = 22.94;
     static constexpr double kChinDarker = 25;
-    // a* units the chin and the jaw lose against the less red of the cheeks and the forehead
-    // (AppearanceEvidence::lowerRedLoss): a beard too smooth at the measuring scale for the
-    // chin's texture rule (grey beards, beards on small crops). Fitted with the chin's three above
-    // by the bench's cross-validation (f0.5, 12 candidates each): on all faces 2.25 with 2.5,
-    // 0.65, 19.8 for those; they are kept at their own earlier fit (24 candidates), which draws
-    // a beard on one face fewer here. Beard on faces-attributes, as shipped P 1.00 R 0.52 before,
-    // P 0.89 R 0.73 with it (the four others: moustached men, and one clean-shaven elderly man);
-    // held out over 10 x 5-fold splits P 0.84 R 0.63 (before P 0.90 R 0.58). No woman or child
-    // measures above 1.5.
-    static constexpr double kLowerRedLoss = 2.25;
     // Both jaw sides: a full beard, else a goatee (objective: balanced accuracy, among the chins
     // found hairy).
     static constexpr double kJawRedLoss = 2.5;

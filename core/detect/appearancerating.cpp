@@ -26,8 +26,8 @@ void judgeConfidence(AppearanceFindings *out)
                                     (std::max(e.lipRedLoss, e.chinRedLoss) - A::kRedLossSure) / kRedUnit),
         (-e.lipDL - A::kLipDarker) / kLUnit);
     const double chin = std::max(
-        {std::min((e.chinRedLoss - A::kChinRedLoss) / kRedUnit, (e.chinDetail - A::kChinDetail) / kDetailUnit),
-            (-e.chinDL - A::kChinDarker) / kLUnit, (e.lowerRedLoss - A::kLowerRedLoss) / kRedUnit});
+        std::min((e.chinRedLoss - A::kChinRedLoss) / kRedUnit, (e.chinDetail - A::kChinDetail) / kDetailUnit),
+        (-e.chinDL - A::kChinDarker) / kLUnit);
     const double jaw = std::max((e.jawRedLoss - A::kJawRedLoss) / kRedUnit, (-e.jawDL - A::kChinDarker) / kLUnit);
     const double frame = std::max(std::min((e.bridgeLine - A::kBridgeLine) / kLineUnit,
                                       std::max(e.lowerRims - A::kLowerRims, e.sideRims - A::kSideRims) / kLineUnit),

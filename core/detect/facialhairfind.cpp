@@ -102,7 +102,7 @@ void findFacialHair(const Pixels &px, const FaceModel &face, double es0, double 
         || e.lipDL <= -AppearanceFindings::kLipDarker;
     const bool hairyChin
         = (e.chinRedLoss >= AppearanceFindings::kChinRedLoss && e.chinDetail >= AppearanceFindings::kChinDetail)
-        || e.chinDL <= -AppearanceFindings::kChinDarker || e.lowerRedLoss >= AppearanceFindings::kLowerRedLoss;
+        || e.chinDL <= -AppearanceFindings::kChinDarker;
     out->appearance.moustache = hairyLip || (colourless && speckled);
     // A beard covers the jaw's sides too; hair on the chin alone is a goatee.
     out->appearance.beard
