@@ -157,6 +157,7 @@ void measure(Labelled *row, const QImage &photo, const FaceModel &face)
     m["lipRedLoss"] = e.lipRedLoss;
     m["lipColour"] = e.lipColour;
     m["chinRedLoss"] = e.chinRedLoss;
+    m["lowerRedLoss"] = e.lowerRedLoss;
     m["jawRedLoss"] = e.jawRedLoss;
     m["bridgeLine"] = e.bridgeLine;
     m["sideRims"] = e.sideRims;

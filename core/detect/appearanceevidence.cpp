@@ -213,6 +213,16 @@ AppearanceEvidence measureEvidence(const QImage &photo, const FaceModel &face)
         out.jawDetail = std::min(sides[0].detail, sides[1].detail);
         out.jawDL = std::max(sides[0].dl, sides[1].dl);
         out.jawRedLoss = std::min(sides[0].redLoss, sides[1].redLoss);
+        // The forehead between the brows, above the eyes' line; where the photo holds none of it
+        // the cheeks alone are the reference.
+        const double eyesY = (p("3.6").y() + p("3.5").y()) / 2.0;
+        const double eyesX = (p("3.8").x() + p("3.11").x()) / 2.0;
+        std::vector<double> foreheadL, foreheadA;
+        lab.values(
+            spanBox(QPointF(eyesX - 0.2 * es0, eyesY - 0.75 * es0), QPointF(eyesX + 0.2 * es0, eyesY - 0.45 * es0)),
+            &foreheadL, nullptr, &foreheadA);
+        const double flush = foreheadA.empty() ? 0.0 : std::max(0.0, cheekRed - medianOf(foreheadA));
+        out.lowerRedLoss = (out.chinRedLoss + out.jawRedLoss) / 2.0 - flush;
     }
 
     // Glasses: a frame's thin lines, where skin runs smooth: over the nose's middle between the

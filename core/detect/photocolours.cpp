@@ -143,16 +143,10 @@ QColor darkHairOf(const QColor &c)
 }
 
 // Hair read as strands (haircolour.h) is drawn in its shade's look as far as its call is sure;
-// `seen` (the finder's plain median) where it read nothing.
-QColor drawnHair(const HairColourReading &reading, const QColor &seen)
-{
-    return reading.valid ? drawnHairColour(reading, classifyHair(reading)) : seen;
-}
-
-// The same for the head's hair, whose grey asks the face's age: grey strands on a face too young
-// for grey hair (kGreyHairElderly) that do not read white (kWhiteHairL) are dark hair, drawn in
-// `dark`'s hue (the brows'); on a face decided elderly they are grey hair, however near the
-// colour's thresholds they read (grey hair over a dark room reads taupe), drawn as sure grey.
+// `seen` (the finder's plain median) where it read nothing. The head's hair's grey asks the
+// face's age: grey strands on a face too young for grey hair (kGreyHairElderly) that do not
+// read white (kWhiteHairL) are dark hair, drawn in `dark`'s hue (the brows'); on a face decided elderly they are grey
+// hair, however near the colour's thresholds they read (grey hair over a dark room reads taupe), drawn as sure grey.
 QColor drawnHeadHair(const HairColourReading &reading, const QColor &seen, const AgeDecision &age, const QColor &dark)
 {
     if (!reading.valid)
@@ -166,6 +160,10 @@ QColor drawnHeadHair(const HairColourReading &reading, const QColor &seen, const
         return darkHairOf(dark);
     return drawnHairColour(reading, age.group == AgeGroup::Elderly ? HairShadeCall {HairShade::Grey, 1.0} : call);
 }
+
+// How much of the skin's chroma a beard's strands keep at most to be grey on an elderly face
+// (photocolours.h, drawnFacialHair).
+constexpr double kBeardGreyChroma = 0.75;
 
 QColor mix(QColor a, QColor b, double t)
 {
@@ -285,6 +283,28 @@ QColor browColour(const PixelSampler &sampler, const FaceModel &face, const QCol
 }
 
 } // namespace
+
+QColor drawnFacialHair(
+    const HairColourReading &reading, const QColor &seen, const AgeDecision &age, const QColor &dark, bool *grey)
+{
+    *grey = false;
+    if (!reading.valid)
+        return seen;
+    const HairShadeCall call = classifyHair(reading);
+    const bool paleStrands = age.group == AgeGroup::Elderly && reading.hair.l >= HairShadeRules::fitted().greyL
+        && reading.chroma() < kBeardGreyChroma * std::hypot(reading.skin.a, reading.skin.b);
+    if (call.shade == HairShade::Grey && !paleStrands) {
+        // As the head's: grey strands on a face too young for grey hair that do not read white
+        // are dark stubble over the skin (a young man's dark beard on medium skin reads L* 40 and
+        // grey), drawn dark.
+        const bool ageFits
+            = reading.hair.l >= kWhiteHairL || (age.group != AgeGroup::Child && age.elderly >= kGreyHairElderly);
+        if (!ageFits)
+            return darkHairOf(dark);
+    }
+    *grey = call.shade == HairShade::Grey || paleStrands;
+    return drawnHairColour(reading, paleStrands ? HairShadeCall {HairShade::Grey, 1.0} : call);
+}
 
 void sampleColours(const QImage &original, const FaceModel &face, Style *style, AppearanceFindings *findings)
 {
@@ -493,18 +513,20 @@ void sampleColours(const QImage &original, const FaceModel &face, Style *style, 
     if (found.facialHair.isValid()) {
         // In the person's hair colour where the hair was seen; stubble (not much darker than the
         // skin) is drawn see-through, grey or white hair as full as it is.
-        const QColor seen = monochrome ? hairFromGrey(qGray(found.facialHair.rgb()))
-                                       : drawnHair(found.facialHairReading, found.facialHair);
+        bool greyRead = false;
+        const QColor seen = monochrome
+            ? hairFromGrey(qGray(found.facialHair.rgb()))
+            : drawnFacialHair(found.facialHairReading, found.facialHair, found.age, browsOrPreset, &greyRead);
+        if (monochrome)
+            greyRead = found.facialHairReading.valid && classifyHair(found.facialHairReading).shade == HairShade::Grey;
         // Evened out with the head's hair when it is of a kind with it; a hair colour far from
         // it is another person's hair (a grey beard under dark hair) or the room the hair
         // outline strayed into around a shaved head, and is left out. Where both were read as
         // strands, of a kind means of one shade (a grey beard stays grey under brown hair).
         const bool bothRead = !monochrome && found.facialHairReading.valid && found.hairReading.valid;
-        const bool sameShade
-            = !bothRead || classifyHair(found.facialHairReading).shade == classifyHair(found.hairReading).shade;
+        const HairShade beardShade = greyRead ? HairShade::Grey : classifyHair(found.facialHairReading).shade;
+        const bool sameShade = !bothRead || beardShade == classifyHair(found.hairReading).shade;
         QColor fill = hairOk && sameShade && rgbDistance(seen, hair) < kSameHair ? mix(seen, hair, 0.5) : seen;
-        const bool greyRead
-            = found.facialHairReading.valid && classifyHair(found.facialHairReading).shade == HairShade::Grey;
         const bool stubble
             = !found.lightFacialHair && !greyRead && qGray(found.facialHair.rgb()) > 0.55 * qGray(skin.rgb());
         const QColor stroke = fill.darker(140);

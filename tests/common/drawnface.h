@@ -50,6 +50,8 @@ struct DrawnFaceOptions
     // line along the chin.
     bool darkLids = false, browShadow = false, eyeBags = false;
     bool lipShadow = false, jawShadow = false;
+    // Cheeks flushed (a smile's or make-up's blush): redder than the rest of the face under the eyes.
+    bool flushedCheeks = false;
 };
 
 // A soft dark patch of `colour`: an ellipse at `c` with radii `rx`, `ry`, its darkness fading from
@@ -83,6 +85,10 @@ inline void drawConfounders(QPainter &p, const DrawnFaceOptions &o, const FaceMo
         const QPointF brow = P(left ? "4.4" : "4.3");
         const double half = QLineF(outer, inner).length() / 2.0;
         const double cx = (outer.x() + inner.x()) / 2.0;
+        if (o.flushedCheeks) // a soft red patch over the cheekbone, the chin and the forehead left as they are
+            drawShadow(p, QPointF(cx, bottom.y() + 0.45 * es0), 1.3 * half, 0.22 * es0,
+                QColor(std::min(255, o.skin.red() + 18), std::max(0, o.skin.green() - 14),
+                    std::max(0, o.skin.blue() - 6)));
         if (o.browShadow) // the whole socket under the brow in shade
             drawShadow(p, QPointF(cx, (brow.y() + top.y()) / 2.0 + 0.03 * es0), 1.25 * half,
                 0.55 * (top.y() - brow.y()) + 0.08 * es0, o.skin.darker(150));

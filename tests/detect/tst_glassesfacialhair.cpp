@@ -55,7 +55,7 @@ QString describe(const AppearanceFindings &f)
     const AppearanceEvidence &e = f.evidence;
     return QStringLiteral("glasses %1, moustache %2, beard %3, goatee %4; bridge line %5, lower rims %6, side rims "
                           "%7, edges %8; lip dL %9 red loss %10, chin dL %11 red loss %12 detail %13, jaw red loss "
-                          "%14, lip colour %15")
+                          "%14, lip colour %15, lower face red loss %16")
         .arg(glassesShapeName(f.appearance.glasses))
         .arg(f.appearance.moustache)
         .arg(f.appearance.beard)
@@ -70,7 +70,8 @@ QString describe(const AppearanceFindings &f)
         .arg(e.chinRedLoss, 0, 'f', 1)
         .arg(e.chinDetail, 0, 'f', 2)
         .arg(e.jawRedLoss, 0, 'f', 1)
-        .arg(e.lipColour, 0, 'f', 1);
+        .arg(e.lipColour, 0, 'f', 1)
+        .arg(e.lowerRedLoss, 0, 'f', 1);
 }
 
 // One row per skin and scale for each of `variants` (a name and the options on top of the skin).
@@ -255,6 +256,37 @@ private Q_SLOTS:
         } else {
             QVERIFY2(f.evidence.lipColour < AppearanceFindings::kLipColour, qPrintable(describe(f)));
         }
+    }
+
+    // The redness the chin and the jaw lose against the less red of the cheeks and the forehead
+    // reads a beard of any lightness, however smooth, and not flushed cheeks: a bare chin under
+    // cheeks redder than the forehead loses no redness against the forehead.
+    void lowerRedLossReadsTheBeard_data()
+    {
+        rowsFor({
+            {QStringLiteral("flushed cheeks, shadow under the lip and a dark jaw line"),
+                [](DrawnFaceOptions *o) { o->flushedCheeks = o->lipShadow = o->jawShadow = true; }},
+            {QStringLiteral("smooth grey full beard under flushed cheeks"),
+                [](DrawnFaceOptions *o) {
+                    o->moustache = o->beard = o->flushedCheeks = true;
+                    const LabColour skin = labOf(o->skin);
+                    o->beardColour = colourOfLab({std::max(skin.l + 10, 60.0), 0.5, 3.0});
+                }},
+        });
+    }
+
+    void lowerRedLossReadsTheBeard()
+    {
+        QFETCH(DrawnFaceOptions, options);
+        QFETCH(double, scale);
+        const AppearanceFindings f = findOn(options, scale);
+        // (No woman or child of faces-attributes measures above 1.5, and the beards this measure
+        // alone finds there 3 to 6.5; the bare chin here, under cheeks 13 to 16 a* redder than
+        // it, measures 0, and the grey beard, nearly colourless, loses most of the skin's redness.)
+        if (options.beard)
+            QVERIFY2(f.evidence.lowerRedLoss >= 5.0, qPrintable(describe(f)));
+        else
+            QVERIFY2(f.evidence.lowerRedLoss < 1.5, qPrintable(describe(f)));
     }
 
     void facialHairFound()

@@ -1,7 +1,9 @@
+#include "detect/agegroup.h"
 #include "detect/appearance.h"
 #include "detect/detector.h"
 #include "detect/haircolour.h"
 #include "detect/headparse.h"
+#include "detect/labcolour.h"
 #include "detect/photocolours.h"
 #include "drawnface.h"
 #include "render/style.h"
@@ -259,6 +261,85 @@ private Q_SLOTS:
             style.appearance.beard || style.appearance.moustache || style.appearance.goatee, "no facial hair found");
         const QColor drawn = style.components.value(QStringLiteral("beard")).fill;
         QCOMPARE(name(shadeOfColour(drawn, o.skin)), name(HairShade::Grey));
+    }
+
+    // A beard's grey strands read with the skin's warmth between them (chroma above the grey
+    // shade's): on a face decided elderly they are drawn grey, and never see-through; on a
+    // younger face the same reading keeps its fair shade. Dark stubble over medium skin reads
+    // mid-grey: on a young face it is drawn dark (photocolours.h, drawnFacialHair).
+    void beardGreyAsksTheAge_data()
+    {
+        QTest::addColumn<double>("l");
+        QTest::addColumn<double>("a");
+        QTest::addColumn<double>("b");
+        QTest::addColumn<int>("group");
+        QTest::addColumn<double>("elderly"); // the age model's chance of elderly
+        QTest::addColumn<bool>("grey");
+        // Chroma 18 over a skin of chroma 29: grey strands with the skin between them, as read.
+        QTest::newRow("warm grey, elderly") << 60.0 << 6.0 << 17.0 << int(AgeGroup::Elderly) << 0.8 << true;
+        QTest::newRow("warm grey, adult") << 60.0 << 6.0 << 17.0 << int(AgeGroup::Adult) << 0.1 << false;
+        QTest::newRow("warm grey, child") << 60.0 << 6.0 << 17.0 << int(AgeGroup::Child) << 0.0 << false;
+        // Chroma 5, L* 40: grey by the shade's rules.
+        QTest::newRow("mid grey, elderly") << 40.0 << 2.0 << 4.5 << int(AgeGroup::Elderly) << 0.8 << true;
+        QTest::newRow("mid grey, young") << 40.0 << 2.0 << 4.5 << int(AgeGroup::Adult) << 0.05 << false;
+        QTest::newRow("white, young") << 80.0 << 1.0 << 3.0 << int(AgeGroup::Adult) << 0.05 << true;
+    }
+    void beardGreyAsksTheAge()
+    {
+        QFETCH(double, l);
+        QFETCH(double, a);
+        QFETCH(double, b);
+        QFETCH(int, group);
+        QFETCH(double, elderly);
+        QFETCH(bool, grey);
+        HairColourReading reading;
+        reading.valid = true;
+        reading.hair = {l, a, b};
+        reading.skin = {62.0, 16.0, 24.0}; // chroma 29
+        reading.kept = 0.6;
+        reading.pixels = 200;
+        AgeDecision age;
+        age.group = AgeGroup(group);
+        age.elderly = elderly;
+        const QColor brows(60, 42, 30);
+        bool drawnGrey = false;
+        const LabColour drawn = labOf(drawnFacialHair(reading, QColor(), age, brows, &drawnGrey));
+        QCOMPARE(drawnGrey, grey);
+        // Grey: light and of little colour; else a fair shade or dark hair, as read.
+        const bool looksGrey = drawn.l >= 50.0 && std::hypot(drawn.a, drawn.b) < 10.0;
+        QVERIFY2(looksGrey == grey,
+            qPrintable(QStringLiteral("drawn L* %1 a* %2 b* %3").arg(drawn.l).arg(drawn.a).arg(drawn.b)));
+    }
+
+    // On the labelled faces (faces-attributes, research data read only here) of elderly men with
+    // grey hair and a beard found, the beard is drawn grey (light, of little colour, not
+    // see-through) on at least half: they were drawn fair, light brown or see-through stubble.
+    // The faces' age decision and the colour's thresholds are in-sample here.
+    void elderlyGreyBeardsAreDrawnGrey()
+    {
+        TOONFACE_SAMPLED_FACES(sampled);
+        int beards = 0, drawnGrey = 0;
+        QStringList other;
+        for (const testing::SampledFace &face : sampled.faces) {
+            const testing::LabelledFace &row = face.row;
+            if (row["age_group"] != QLatin1String("elderly") || row["hair_colour"] != QLatin1String("grey")
+                || !row.flag("beard"))
+                continue;
+            const Style &style = face.style;
+            if (!style.appearance.beard && !style.appearance.goatee && !style.appearance.moustache)
+                continue;
+            const QColor fill = style.components.value(QStringLiteral("beard")).fill;
+            const LabColour drawn = labOf(fill);
+            const bool grey = drawn.l >= 50.0 && std::hypot(drawn.a, drawn.b) < 15.0 && fill.alpha() == 255;
+            ++beards;
+            drawnGrey += grey;
+            if (!grey)
+                other << QStringLiteral("%1 %2").arg(row["file"], fill.name(QColor::HexArgb));
+        }
+        qInfo("grey-haired elderly men's beards drawn grey: %d of %d (not: %s)", drawnGrey, beards,
+            qPrintable(other.join(QLatin1String(", "))));
+        QVERIFY(beards > 0);
+        QVERIFY2(2 * drawnGrey >= beards, qPrintable(other.join(QLatin1String(", "))));
     }
 
     // On the labelled faces (faces-attributes, research data read only here) whose hair is red,
