@@ -36,10 +36,11 @@ constexpr double kBrowContrast = 0.6; // a brow is drawn at most this share of t
 // The iris's radius (ES0): a grown person's iris is about 11.7 mm across and the pupils 63 mm apart.
 constexpr double kIrisRadius = 0.093;
 constexpr double kIrisMinChroma = 0.1; // HSV saturation a light iris has at least (a white eye's is less)
-// How much of the light's colour, read off the white of the eye, is taken out of the iris's: of
-// 0.5, 0.75 and 1 over the 114 faces of faces-attributes whose irises could be labelled by eye,
-// 0.75 draws the most light irises cool (26 of 31, 20 before) for the fewest brown ones drawn
-// cool (3 of 73, 2 before); 1 takes the pink of a bloodshot white for a cast.
+// How much of the light's colour, read off the white of the eye, is taken out of the iris's. Of
+// 0.5, 0.75 and 1, compared on the 114 faces of faces-attributes whose irises could be labelled by
+// eye, read without the photo's balance (light irises read cool 24, 26, 27 of 31; brown ones
+// read cool 2, 3, 6 of 73): 0.75; 1 takes the pink of a bloodshot white for a cast. As shipped
+// (likeness.eyes): light irises drawn cool 26 of 31 (20 before), brown ones 2 of 73 (3 before).
 constexpr double kIrisAdaptation = 0.75;
 // Grey or white hair is drawn only on a face the age models (agegroup.h) take for no child's and
 // give at least this chance of being elderly (of not being a child): on the younger, strands
