@@ -42,6 +42,9 @@ constexpr double kIrisMinChroma = 0.1; // HSV saturation a light iris has at lea
 // read cool 2, 3, 6 of 73): 0.75; 1 takes the pink of a bloodshot white for a cast. As shipped
 // (likeness.eyes): light irises drawn cool 26 of 31 (20 before), brown ones 2 of 73 (3 before).
 constexpr double kIrisAdaptation = 0.75;
+constexpr double kLightIrisL = 50.0; // L*: a light iris drawn at least this light
+constexpr double kLightIrisChroma = 1.5; // ... its colour this much stronger
+constexpr double kLightIrisMaxChroma = 30.0; // ... up to this Lab chroma
 // Grey or white hair is drawn only on a face the age models (agegroup.h) take for no child's and
 // give at least this chance of being elderly (of not being a child): on the younger, strands
 // read grey were a shine on dark hair or the wall through it (17 % of black-haired heads drawn
@@ -233,6 +236,25 @@ bool plausibleIris(QColor c)
         return false;
     const double h = c.hsvHueF() * 360.0;
     return c.valueF() < 0.7 || (c.hsvSaturationF() > kIrisMinChroma && hueDistance(h, 25.0) > 45.0);
+}
+
+// How a light iris is drawn: a blue, green or grey iris reads in a photo as a dull mid grey (its
+// lit stroma beside the dark rim and the pupil's edge), which on a small cartoon eye reads as
+// dark; a cartoonist paints it light and clear. An iris that is neither near black nor brown (an
+// orange to yellow hue with some colour) is drawn at least kLightIrisL light with its colour
+// kLightIrisChroma times as strong (at most kLightIrisMaxChroma); a brown or dark one as it is.
+QColor drawnIris(const QColor &iris)
+{
+    LabColour lab = labOf(iris);
+    const double chroma = std::hypot(lab.a, lab.b);
+    const double hue = std::fmod(std::atan2(lab.b, lab.a) * 180.0 / std::numbers::pi + 360.0, 360.0);
+    if (lab.l < 30 || (chroma > 8 && hue >= 20 && hue <= 100))
+        return iris;
+    const double k = chroma > 1e-6 ? std::min(kLightIrisChroma, kLightIrisMaxChroma / chroma) : 1.0;
+    lab.a *= k;
+    lab.b *= k;
+    lab.l = std::max(lab.l, kLightIrisL);
+    return colourOfLab(lab);
 }
 
 // The iris's own colour. The eyeball point is the middle of the eye's six outline points, not of
@@ -624,7 +646,7 @@ void sampleColours(const QImage &original, const FaceModel &face, Style *style, 
     // Iris: a ring around each pupil, in white light (irisColour).
     const QColor iris = irisColour(sampler, face, es0);
     if (plausibleIris(iris))
-        components[QStringLiteral("eyeballs")].fill = iris;
+        components[QStringLiteral("eyeballs")].fill = drawnIris(iris); // judged as read, drawn lifted
 
     sampleClothes(sampler, face, es0, photo.height(), &components[QStringLiteral("body")]);
     // Expression lines are a shadow of the skin, so they show on every skin tone.

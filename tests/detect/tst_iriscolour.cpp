@@ -9,9 +9,9 @@
 
 using namespace toonface;
 
-// The iris's colour as sampleColours() draws it (detect/photocolours.cpp, irisColour): drawn
-// eyes of a known colour, looking aside (the eyeball point is the eye's middle, not the iris's),
-// in white and in warm or pink light.
+// The iris's colour as sampleColours() draws it (detect/photocolours.cpp, irisColour and
+// drawnIris): drawn eyes of a known colour, looking aside (the eyeball point is the eye's middle,
+// not the iris's), in white and in warm or pink light.
 
 namespace {
 
@@ -127,6 +127,9 @@ private Q_SLOTS:
                            .arg(hueOf(drawn), 0, 'f', 0)));
         // Read from the iris, not the pupil: nearly as light as the painted iris.
         QVERIFY2(lab.l > labOf(iris).l - 20, qPrintable(drawn.name()));
+        // A light iris is drawn light and clearly coloured, not the dull grey a photo shows.
+        if (cool)
+            QVERIFY2(lab.l >= 49.5 && chroma > 6, qPrintable(drawn.name()));
     }
 };
 
