@@ -240,15 +240,17 @@ bool plausibleIris(QColor c)
 
 // How a light iris is drawn: a blue, green or grey iris reads in a photo as a dull mid grey (its
 // lit stroma beside the dark rim and the pupil's edge), which on a small cartoon eye reads as
-// dark; a cartoonist paints it light and clear. An iris that is neither near black nor brown (an
-// orange to yellow hue with some colour) is drawn at least kLightIrisL light with its colour
+// dark; a cartoonist paints it light and clear. An iris that is neither near black nor of a brown
+// hue (orange to yellow) is drawn at least kLightIrisL light with its colour
 // kLightIrisChroma times as strong (at most kLightIrisMaxChroma); a brown or dark one as it is.
 QColor drawnIris(const QColor &iris)
 {
     LabColour lab = labOf(iris);
     const double chroma = std::hypot(lab.a, lab.b);
     const double hue = std::fmod(std::atan2(lab.b, lab.a) * 180.0 / std::numbers::pi + 360.0, 360.0);
-    if (lab.l < 30 || (chroma > 8 && hue >= 20 && hue <= 100))
+    // A warm grey (a brown hue, too faint to call) is left as read: lifted and strengthened it
+    // turns a light brown.
+    if (lab.l < 30 || (hue >= 20 && hue <= 100))
         return iris;
     const double k = chroma > 1e-6 ? std::min(kLightIrisChroma, kLightIrisMaxChroma / chroma) : 1.0;
     lab.a *= k;
