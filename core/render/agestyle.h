@@ -15,9 +15,11 @@ namespace toonface {
 Style agedStyle(const Style &style);
 
 // How much of the cute rules (a shorter, rounder jaw, larger eyes, a smaller nose; svgface.cpp)
-// the drawing takes: 1 for the cute preset, kChildRules for a child, else 0.
+// the drawing takes: 1 for the cute preset, kChildRules for a child, else 0. At 0.45 two blind
+// judges of 30 sheets each still read the children as middle-aged (an adult's chin and nose with
+// eyes a fifth larger); at 0.7 a child's eyes are a third larger, its nose a fifth smaller.
 double childRules(const Style &style);
-inline constexpr double kChildRules = 0.45;
+inline constexpr double kChildRules = 0.7;
 
 // The lips' colour for a child of this skin: the skin deepened and warmed a little.
 QColor childLips(const QColor &skin);

@@ -355,15 +355,19 @@ private Q_SLOTS:
         QVERIFY2(std::abs(skull.width() - normal.width()) <= 0.2 * es0, what.constData());
     }
 
-    // Caricature: nothing at 0 (and nothing for the average face itself); a face's differences
-    // from the average grow with the factor; two faces drawn further apart than their points.
+    // Caricature: nothing at 0 (and nothing but the eyes for the average face itself, whose
+    // cartoon eyes are larger than people's: tst_caricature); a face's differences from the
+    // average grow with the factor; two faces drawn further apart than their points.
     void caricature()
     {
         // The template in a square box is the average face itself (in a taller box it is a
         // longer face, which the caricature lengthens).
         const FaceModel average = averageFace(QRectF(50, 40, 300, 300), QSize(400, 400));
-        for (const QPointF &d : caricatureOffsets(average, 1.0))
-            QVERIFY(std::hypot(d.x(), d.y()) < 1e-6);
+        const auto averageOffsets = caricatureOffsets(average, 1.0);
+        for (int i = 0; i < kPointCount; ++i) {
+            if (pointTable()[i].group != PointGroup::Eyes)
+                QVERIFY(std::hypot(averageOffsets[i].x(), averageOffsets[i].y()) < 1e-6);
+        }
         const auto longer = caricatureOffsets(averageFace(QRectF(50, 40, 300, 360), QSize(400, 440)), 0.5);
         QVERIFY(longer[pt::idx("2.1")].y() > 1.0 && longer[pt::idx("11.1")].y() < -1.0);
         const FaceModel face = distinctFace();
