@@ -90,6 +90,13 @@ Pose restingFacePose(const FaceModel &face)
     const double target = std::clamp(lift, -kRestingCornerDrop, 0.0);
     for (const char *id : {"8.4", "8.3"})
         pose.offset[pt::idx(id)] += f.up * ((target - lift) * f.es0);
+    // A mouth stretched wider than people's at rest comes in, each corner half the way.
+    const double width = dot(at("8.3") - at("8.4"), f.along) / f.es0;
+    if (width > kRestingMouthWidthHigh) {
+        const QPointF half = f.along * ((width - kRestingMouthWidthHigh) / 2.0 * f.es0);
+        pose.offset[pt::idx("8.4")] += half;
+        pose.offset[pt::idx("8.3")] -= half;
+    }
     return pose;
 }
 

@@ -311,6 +311,39 @@ private Q_SLOTS:
         QVERIFY(smile.at("8.4").y() < face.point("8.4").y());
     }
 
+    // A mouth photographed stretched wider than people's at rest (a smile's width, whatever its
+    // corners' height) comes in to kRestingMouthWidthHigh at rest, so the neutral is not a
+    // flattened grin and surprise an O, not a laugh; a mouth within it keeps its width, and the
+    // smile keeps the photo's own.
+    void stretchedMouthComesIn_data()
+    {
+        QTest::addColumn<double>("width"); // ES0
+        QTest::newRow("a smile's width") << 1.05;
+        QTest::newRow("just over") << 0.95;
+        QTest::newRow("within") << 0.88;
+    }
+
+    void stretchedMouthComesIn()
+    {
+        QFETCH(double, width);
+        FaceModel face = testFace();
+        const double es0 = face.fapu().es0;
+        const double grow = (width * es0 - (face.point("8.3").x() - face.point("8.4").x())) / 2.0;
+        face.setPoint(pt::idx("8.4"), face.point("8.4") - QPointF(grow, 0), false);
+        face.setPoint(pt::idx("8.3"), face.point("8.3") + QPointF(grow, 0), false);
+        const Posed neutral = posed(face, stillEmotionPose(face, Emotion::Neutral, 1.0));
+        QVERIFY2(std::abs(neutral.mouthWidth() / es0 - std::min(width, kRestingMouthWidthHigh)) < 1e-6,
+            qPrintable(QString::number(neutral.mouthWidth() / es0)));
+        // Both corners come in alike: the mouth stays where it was.
+        QVERIFY(std::abs((neutral.at("8.3").x() + neutral.at("8.4").x()) / 2.0
+                    - (face.point("8.3").x() + face.point("8.4").x()) / 2.0)
+            < 1e-6 * es0);
+        const Posed surprise = posed(face, emotionPose(face, Emotion::Surprise, 1.0));
+        QVERIFY(surprise.mouthWidth() < std::min(width, kRestingMouthWidthHigh) * es0);
+        const Posed smile = posed(face, emotionPose(face, Emotion::Smile, 1.0));
+        QVERIFY(smile.mouthWidth() > width * es0);
+    }
+
     // Half intensity still reads: every move is three quarters of the full one, the same way
     // (the pose is the full one times emotionWeight); a quarter draws less, and the weight rises
     // from 0 to 1 without a step or a turn back.
